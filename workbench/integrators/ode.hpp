@@ -1,0 +1,41 @@
+#pragma once
+// The one narrow interface between models and integrators (issue 3). Integrators see vectors only.
+// Return-code contract of the right-hand side follows SUNDIALS: 0 ok, > 0 recoverable (the step is
+// retried smaller where the method allows: a contact point outside its table, a Newton iteration
+// that did not converge), < 0 fatal.
+#include <Eigen/Dense>
+#include <string>
+
+namespace rb::integ {
+
+class OdeSystem {
+ public:
+  virtual ~OdeSystem() = default;
+  virtual int size() const = 0;
+  // ydot = f(t, y). y and ydot have size() entries; ydot must be fully written on success.
+  virtual int rhs(double t, const double* y, double* ydot) = 0;
+  // Optional analytic Jacobian J = df/dy (dense, size() x size()).
+  virtual bool hasJacobian() const { return false; }
+  virtual int jacobian(double /*t*/, const double* /*y*/, const double* /*f*/,
+                       Eigen::Ref<Eigen::MatrixXd> /*J*/) {
+    return -1;
+  }
+  // Name of state component i for failure messages ("ws1.y"); default "y[i]".
+  virtual std::string componentName(int i) const { return "y[" + std::to_string(i) + "]"; }
+  // Human-readable reason for the last non-zero return of rhs(); empty if none.
+  virtual std::string lastError() const { return {}; }
+};
+
+// Index-reduced DAE F(t, y, yp) = 0 for IDA (embedding vs. DAE comparisons, issue 3/6).
+class DaeSystem {
+ public:
+  virtual ~DaeSystem() = default;
+  virtual int size() const = 0;
+  virtual int residual(double t, const double* y, const double* yp, double* r) = 0;
+  // Which components are differential (true) or algebraic (false); used for consistent ICs.
+  virtual bool isDifferential(int i) const = 0;
+  virtual std::string componentName(int i) const { return "y[" + std::to_string(i) + "]"; }
+  virtual std::string lastError() const { return {}; }
+};
+
+}  // namespace rb::integ

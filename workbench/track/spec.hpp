@@ -1,0 +1,72 @@
+#pragma once
+// Plain input structs for the track (built by workbench/scenario from Lua, consumed by
+// compileTrack()). SI units throughout. Each carries the SourceLoc of the Lua block it came from so
+// compile-time validation can report file:line.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "workbench/core/error.hpp"
+
+namespace rb::track {
+
+enum class SegmentKind { Tangent, Transition, Curve };
+enum class Side { Left, Right };
+
+// One track segment. Curvature, cant and gradient of a Transition change linearly in arc length
+// from the end values of the previous segment to the values given here (a clothoid with linear
+// cant ramp, paper section 5.2). A Tangent has zero curvature and zero cant. A Curve has constant
+// curvature 1/radius to the given side and constant cant.
+struct SegmentSpec {
+  SegmentKind kind = SegmentKind::Tangent;
+  double length = 0.0;  // [m] arc length along the centreline, > 0
+  double radius = 0.0;  // [m] end radius (Curve: required; Transition: 0 means ends straight)
+  Side side = Side::Left;  // direction of the curve (left = curvature centre on +Y side)
+  double cant = 0.0;       // [m] superelevation height of the outer rail at the segment end
+  double gradient = 0.0;   // [-] vertical gradient (rise/run, positive uphill) at the segment end
+  SourceLoc loc;
+};
+
+enum class IrregularitySource { None, Psd, Csv };
+
+// The four centreline irregularities of paper Fig. 3 (Eq. before (4)).
+enum class Channel { Alignment = 0, Vertical = 1, Gauge = 2, CrossLevel = 3 };
+inline constexpr int kChannels = 4;
+
+// A tabulated one-sided PSD G(Omega) [m^2/(rad/m)] for one channel (cross level in m^2/(rad/m) as
+// a height difference), interpolated log-log. Used for user PSDs given as Lua functions or tables.
+struct PsdTable {
+  std::vector<double> omega;  // [rad/m], strictly increasing, > 0
+  std::vector<double> value;  // [m^2/(rad/m)], >= 0
+};
+
+struct IrregularitySpec {
+  IrregularitySource source = IrregularitySource::None;
+  // Psd: named spectrum "ore_b176_low", "ore_b176_high", "fra_class_1" .. "fra_class_6", or "user".
+  std::string spectrum;
+  PsdTable user[kChannels];   // only for spectrum == "user"; an empty table disables the channel
+  bool enabled[kChannels] = {true, true, true, true};
+  double scale = 1.0;                    // [-] amplitude factor applied to every channel
+  std::uint64_t seed = 1;                // random phases; recorded in the output
+  double wavelength_min = 3.0;           // [m] synthesis band (EN 13848 D1+D2: 3..70 m)
+  double wavelength_max = 70.0;          // [m]
+  int components = 2000;                 // number of cosines per channel
+  double step = 0.1;                     // [m] spline sampling step (paper: 0.1 m)
+  // Csv: columns s, alignment, vertical, gauge, cross_level in metres (header line allowed).
+  std::string csv_path;  // resolved absolute path
+  SourceLoc loc;
+};
+
+struct TrackSpec {
+  std::vector<SegmentSpec> segments;
+  double step = 0.5;           // [m] centreline spline sampling step (paper: 0.5 m)
+  double cant_base = 1.5;      // [m] lateral distance over which cant height is measured
+  double gauge = 1.435;        // [m] nominal track gauge (recorded; rail positions use Lr)
+  double rail_lr = 0.7555;     // [m] Lr, rail profile frame lateral position (paper Table 1)
+  double rail_inclination = 1.0 / 40.0;  // [rad] beta (paper Table 1)
+  IrregularitySpec irregularities;
+  SourceLoc loc;
+};
+
+}  // namespace rb::track
