@@ -1,0 +1,166 @@
+// Scenario host: every class of bad input is reported as file:line: message (asserted exactly),
+// all problems at once, and the sandbox holds.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "workbench/scenario/scenario.hpp"
+
+using rb::scenario::loadScenario;
+using rb::scenario::LoadOptions;
+
+namespace {
+
+const std::string kBad = "tests/scenario/bad/";
+
+LoadOptions opts(std::vector<std::string> overrides = {}) {
+  LoadOptions o;
+  o.root = RB_SOURCE_DIR;
+  o.overrides = std::move(overrides);
+  return o;
+}
+
+// All diagnostics of a failing load, one per line.
+std::string errorsOf(const std::string& file, const LoadOptions& o = opts()) {
+  try {
+    loadScenario(file, o);
+  } catch (const rb::InputError& e) {
+    return e.what();
+  }
+  return "<no error>";
+}
+
+}  // namespace
+
+TEST(ScenarioErrors, SyntaxError) {
+  EXPECT_EQ(errorsOf(kBad + "syntax.lua"),
+            kBad + "syntax.lua:3: '}' expected (to close '{' at line 2) near 'step'");
+}
+
+TEST(ScenarioErrors, UnknownKeyWithHintAndMissingRequired) {
+  EXPECT_EQ(errorsOf(kBad + "unknown_key.lua"),
+            kBad + "unknown_key.lua:3: track.segments[1] (tangent): unknown key 'lenght' (did you mean 'length'?)\n" +
+                kBad + "unknown_key.lua:3: track.segments[1] (tangent): missing required key 'length'");
+}
+
+TEST(ScenarioErrors, WrongType) {
+  EXPECT_EQ(errorsOf(kBad + "wrong_type.lua"),
+            kBad + "wrong_type.lua:4: track.segments[2] (curve): length must be a number [m], got string \"forty\"");
+}
+
+TEST(ScenarioErrors, OutOfRange) {
+  EXPECT_EQ(errorsOf(kBad + "out_of_range.lua"),
+            kBad + "out_of_range.lua:1: track: step must be > 0 m, got -0.5\n" + kBad +
+                "out_of_range.lua:1: track: rail_inclination must be <= 0.1 rad, got 0.5");
+}
+
+TEST(ScenarioErrors, MissingFile) {
+  EXPECT_EQ(errorsOf(kBad + "missing_file.lua"),
+            kBad + "missing_file.lua:3: track.irregularities (measured): file: file 'nowhere.csv' not found (looked in the scenario's folder and the project root)");
+}
+
+TEST(ScenarioErrors, ConflictingOptions) {
+  EXPECT_EQ(errorsOf(kBad + "conflict.lua"),
+            kBad + "conflict.lua:2: solver: rtol has no effect with method 'rk4' (its options: step)");
+}
+
+TEST(ScenarioErrors, UnknownConstructorName) {
+  EXPECT_EQ(errorsOf(kBad + "unknown_name.lua"),
+            kBad + "unknown_name.lua:3: unknown name 'tangnet' (did you mean 'tangent'?)");
+}
+
+TEST(ScenarioErrors, NotATable) {
+  EXPECT_EQ(errorsOf(kBad + "not_a_table.lua"),
+            kBad + "not_a_table.lua:2: tangent expects one table of named values, e.g. tangent { ... }, got number");
+}
+
+TEST(ScenarioErrors, DuplicateBlock) {
+  EXPECT_EQ(errorsOf(kBad + "duplicate.lua"),
+            kBad + "duplicate.lua:2: track block given twice (first at " + kBad + "duplicate.lua:1)");
+}
+
+TEST(ScenarioErrors, ManyProblemsReportedAtOnce) {
+  EXPECT_EQ(errorsOf(kBad + "many.lua"),
+            kBad + "many.lua:2: track: unknown key 'stepp' (did you mean 'step'?)\n" +
+            kBad + "many.lua:4: track.segments[1] (tangent): length must be > 0 m, got 0\n" +
+            kBad + "many.lua:5: track.segments[2] (curve): unknown key 'raduis' (did you mean 'radius'?)\n" +
+            kBad + "many.lua:5: track.segments[2] (curve): missing required key 'radius'\n" +
+            kBad + "many.lua:9: solver: method: unknown value 'rk5' (did you mean 'rk4'?); valid: rk4, abm, dopri5, bdf, ida\n" +
+            kBad + "many.lua:10: run: distance must be >= 0 m, got -1");
+}
+
+TEST(ScenarioErrors, UserPsdFunctionMustBeNonNegative) {
+  std::string e = errorsOf(kBad + "user_psd_negative.lua");
+  EXPECT_EQ(e.rfind(kBad + "user_psd_negative.lua:3: track.irregularities (psd): alignment: PSD function returned -1e-07 at omega = ", 0), 0u) << e;
+}
+
+TEST(ScenarioErrors, UserPsdNeedsUserSpectrum) {
+  EXPECT_EQ(errorsOf(kBad + "user_psd_wrong_spectrum.lua"),
+            kBad + "user_psd_wrong_spectrum.lua:3: track.irregularities (psd): spectrum: unknown value 'ore_b176_lo' (did you mean 'ore_b176_low'?); valid: ore_b176_low, ore_b176_high, fra_class_1, fra_class_2, fra_class_3, fra_class_4, fra_class_5, fra_class_6, user\n" +
+            kBad + "user_psd_wrong_spectrum.lua:3: track.irregularities (psd): vertical gives a user PSD but spectrum is 'ore_b176_lo'; set spectrum = \"user\" or remove it");
+}
+
+TEST(ScenarioSandbox, NoOsNoIoNoEscapeByRequire) {
+  EXPECT_EQ(errorsOf(kBad + "sandbox_os.lua"), kBad + "sandbox_os.lua:1: unknown name 'os'");
+  EXPECT_FALSE(std::filesystem::exists("/tmp/railbench_sandbox_escape"));
+  EXPECT_EQ(errorsOf(kBad + "sandbox_io.lua"), kBad + "sandbox_io.lua:1: unknown name 'io'");
+  EXPECT_EQ(errorsOf(kBad + "sandbox_require.lua"),
+            kBad + "sandbox_require.lua:1: require \"../../../etc/passwd\": module names may contain only letters, digits, '_' and '.'");
+}
+
+TEST(ScenarioSandbox, EndlessLoopStopsWithBudgetError) {
+  LoadOptions o = opts();
+  o.instruction_limit = 5'000'000;
+  EXPECT_EQ(errorsOf(kBad + "endless.lua", o),
+            kBad + "endless.lua:2: scenario exceeded its budget of 5000000 Lua instructions (endless loop?)");
+}
+
+TEST(ScenarioErrors, MissingScenarioFile) {
+  EXPECT_EQ(errorsOf("tests/scenario/bad/does_not_exist.lua"),
+            "tests/scenario/bad/does_not_exist.lua: cannot open scenario file");
+}
+
+TEST(ScenarioOverrides, SetValuesAndReportBadOnes) {
+  auto spec = loadScenario("scenarios/tracks/manchester_r500_irregular.lua",
+                           opts({"track.irregularities.seed=7", "track.segments[3].length=200",
+                                 "solver.method=bdf", "solver.rtol=1e-5"}));
+  EXPECT_EQ(spec.track.irregularities.seed, 7u);
+  EXPECT_DOUBLE_EQ(spec.track.segments[2].length, 200.0);
+  EXPECT_TRUE(spec.has_solver);
+  EXPECT_EQ(spec.solver.method, "bdf");
+  EXPECT_DOUBLE_EQ(spec.solver.rtol, 1e-5);
+
+  EXPECT_EQ(errorsOf("scenarios/tracks/manchester_r500.lua",
+                     opts({"solver.stpe=1e-3", "trak.step=1", "track.segments[9].length=1",
+                           "track.step=abc", "nonsense"})),
+            "<command line>: --set trak.step=1: unknown block 'trak' (did you mean 'track'?)\n"
+            "<command line>: --set track.segments[9].length=1: list position 9 out of range 1..3\n"
+            "<command line>: --set nonsense: expected key=value, e.g. solver.step=5e-4\n"
+            "<command line>: track: step must be a number [m], got string \"abc\"\n"
+            "<command line>: solver: unknown key 'stpe' (did you mean 'step'?)");
+}
+
+TEST(ScenarioGood, UserPsdFunctionTableLoopsAndRequire) {
+  auto spec = loadScenario("tests/scenario/good/user_psd.lua", opts());
+  const auto& irr = spec.track.irregularities;
+  EXPECT_EQ(irr.spectrum, "user");
+  EXPECT_EQ(irr.seed, 3u);
+  ASSERT_EQ(irr.user[0].omega.size(), 400u);   // tabulated Lua function
+  ASSERT_EQ(irr.user[1].omega.size(), 21u);    // table of pairs
+  EXPECT_TRUE(irr.enabled[0] && irr.enabled[1] && !irr.enabled[2] && !irr.enabled[3]);
+  // The tabulated function reproduces the ORE formula it was written from.
+  double om = irr.user[0].omega[200], A = 2.119e-7, Oc = 0.8246, Or = 0.0206;
+  EXPECT_NEAR(irr.user[0].value[200], A * Oc * Oc / ((om * om + Or * Or) * (om * om + Oc * Oc)), 1e-20);
+  EXPECT_EQ(spec.solver.method, "bdf");
+  EXPECT_DOUBLE_EQ(spec.run.distance, 300.0);
+  EXPECT_DOUBLE_EQ(spec.run.output_every, 0.005);
+}
+
+TEST(ScenarioGood, ShippedTracksLoadThroughRequire) {
+  for (int R : {300, 500, 700, 900}) {
+    auto spec = loadScenario("scenarios/tracks/wheelset_validation_R" + std::to_string(R) + ".lua", opts());
+    ASSERT_EQ(spec.track.segments.size(), 3u);
+    EXPECT_DOUBLE_EQ(spec.track.segments[2].radius, R);
+    EXPECT_EQ(spec.track.irregularities.source, rb::track::IrregularitySource::None);
+  }
+}

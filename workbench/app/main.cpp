@@ -1,0 +1,82 @@
+// The `workbench` command line: run, check, help scenario, --version. Never prompts; every problem
+// is reported as file:line: message with a non-zero exit code.
+//   exit 0: ok; 1: bad input (scenario, options); 2: the run failed (results kept); 3: internal.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "railbench/version.hpp"
+#include "workbench/app/run.hpp"
+#include "workbench/core/error.hpp"
+#include "workbench/scenario/schema.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string defaultRoot() {
+  if (const char* env = std::getenv("RAILBENCH_ROOT")) return env;
+  return RB_SOURCE_DIR;
+}
+
+void printInputError(const rb::InputError& e) {
+  for (const auto& d : e.diagnostics()) std::cerr << d.str() << "\n";
+  std::cerr << e.diagnostics().size() << (e.diagnostics().size() == 1 ? " problem" : " problems")
+            << " found; nothing was run.\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"railbench workbench: scripted railway vehicle dynamics"};
+  app.set_version_flag("--version", std::string("railbench ") + rb::kVersion);
+  app.require_subcommand(1);
+  std::string root = defaultRoot();
+  app.add_option("--root", root, "project root holding scenarios/ and profiles/")->capture_default_str();
+
+  rb::app::RunOptions ro;
+  auto* run = app.add_subcommand("run", "run a scenario and write its HDF5 result");
+  run->add_option("scenario", ro.scenario, "scenario file (.lua)")->required();
+  run->add_option("--set", ro.overrides, "override a scenario value: block.key=value")->allow_extra_args(false);
+  run->add_option("--out", ro.out, "result file (default out/<scenario>.h5)");
+  run->add_flag("--quiet", ro.quiet, "no progress line");
+
+  rb::app::RunOptions co;
+  auto* check = app.add_subcommand("check", "validate a scenario without running it");
+  check->add_option("scenario", co.scenario, "scenario file (.lua)")->required();
+  check->add_option("--set", co.overrides, "override a scenario value: block.key=value")->allow_extra_args(false);
+
+  std::string topic;
+  auto* help = app.add_subcommand("help", "reference documentation");
+  help->add_option("topic", topic, "topic: scenario")->required()->check(CLI::IsMember({"scenario"}));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 1;
+  }
+
+  try {
+    if (*help) {
+      std::cout << rb::scenario::referenceText();
+      return 0;
+    }
+    if (*check) {
+      co.root = root;
+      rb::app::checkScenario(co);
+      std::cout << co.scenario << ": ok\n";
+      return 0;
+    }
+    ro.root = root;
+    return rb::app::runScenario(ro);
+  } catch (const rb::InputError& e) {
+    printInputError(e);
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 3;
+  }
+}

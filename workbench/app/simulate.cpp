@@ -1,0 +1,107 @@
+#include "workbench/app/simulate.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "workbench/integrators/registry.hpp"
+
+namespace rb::app {
+namespace {
+
+double wallNow() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::vector<double> outputTimes(const SimulationRequest& r) {
+  RB_CHECK(r.output_every > 0 && r.t_end > r.t0, "output interval and end time must be positive");
+  // Output times are t0 + k * every (k = 1..n), the last one clipped to t_end.
+  const long n = static_cast<long>(std::ceil((r.t_end - r.t0) / r.output_every - 1e-9));
+  std::vector<double> times;
+  times.reserve(static_cast<std::size_t>(n));
+  for (long k = 1; k <= n; ++k)
+    times.push_back(std::min(r.t0 + static_cast<double>(k) * r.output_every, r.t_end));
+  return times;
+}
+
+}  // namespace
+
+integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
+  RB_CHECK(r.system != nullptr, "no system to simulate");
+  auto integrator = integ::makeIntegrator(r.solver);
+  std::vector<double> times = outputTimes(r);
+
+  io::Series& time = f.series("/time", "s");
+  std::vector<io::Series*> series;
+  for (const auto& o : r.outputs) series.push_back(&f.series(o.path, o.units));
+  double lastFlush = wallNow();
+  double start = lastFlush;
+  double lastDistance = 0.0;
+
+  auto observer = [&](double t, const Eigen::VectorXd& y) {
+    time.append(t);
+    for (std::size_t i = 0; i < series.size(); ++i) series[i]->append(y[r.outputs[i].index]);
+    if (r.distance) lastDistance = r.distance(t, y);
+    double now = wallNow();
+    if (now - lastFlush > 1.0) {  // keep results on disk as the run goes
+      f.flush();
+      lastFlush = now;
+    }
+    return true;
+  };
+  double lastPrint = start;
+  bool printed = false;
+  auto progress = [&](double t, const integ::Stats& s) {
+    double now = wallNow();
+    if (!r.progress || now - start < 2.0 || now - lastPrint < 0.25) return;
+    lastPrint = now;
+    printed = true;
+    double rtf = (t - r.t0) / std::max(now - start, 1e-9);
+    std::fprintf(stderr, "\r  t = %8.3f s  s = %8.1f m  %6.1fx real time  %ld evaluations   ", t,
+                 lastDistance, rtf, s.rhs_evals + s.rhs_evals_jac);
+    std::fflush(stderr);
+  };
+  integ::RunResult res = integ::integrate(*r.system, *integrator, r.t0, r.y0, times, observer, progress);
+  if (printed) std::fprintf(stderr, "\n");
+  if (!res.ok) {
+    std::ostringstream os;
+    os << res.message;
+    if (r.distance) os << " (distance " << lastDistance << " m at the last output)";
+    res.message = os.str();
+  }
+  writeStats(f, res, std::string(integrator->name()));
+  f.flush();
+  return res;
+}
+
+void writeStats(io::ResultFile& f, const integ::RunResult& res, const std::string& method) {
+  const auto& s = res.stats;
+  f.attr("/stats", "status", std::string(res.ok ? "ok" : "failed"));
+  f.attr("/stats", "message", res.message);
+  f.attr("/stats", "method", method);
+  f.attr("/stats", "t_reached", res.t_reached);
+  f.attr("/stats", "cpu_time_s", s.cpu_time_s);
+  f.attr("/stats", "wall_time_s", s.wall_time_s);
+  f.attr("/stats", "rhs_evals", std::int64_t{s.rhs_evals});
+  f.attr("/stats", "rhs_evals_jac", std::int64_t{s.rhs_evals_jac});
+  f.attr("/stats", "steps", std::int64_t{s.steps});
+  f.attr("/stats", "rejected_steps", std::int64_t{s.rejected_steps});
+  f.attr("/stats", "jacobian_evals", std::int64_t{s.jacobian_evals});
+  f.attr("/stats", "nonlinear_iters", std::int64_t{s.nonlinear_iters});
+  f.attr("/stats", "nonlinear_conv_fails", std::int64_t{s.nonlinear_conv_fails});
+  f.attr("/stats", "recoverable_rhs_failures", std::int64_t{s.recoverable_rhs_failures});
+}
+
+std::string statsLine(const integ::RunResult& res, double simulated_s) {
+  const auto& s = res.stats;
+  std::ostringstream os;
+  os << (res.ok ? "ok" : "FAILED") << ": " << simulated_s << " s simulated in " << s.cpu_time_s
+     << " s CPU (" << (s.cpu_time_s > 0 ? simulated_s / s.cpu_time_s : 0.0) << "x real time), "
+     << s.rhs_evals << " rhs evaluations + " << s.rhs_evals_jac << " for Jacobians, " << s.steps
+     << " steps, " << s.rejected_steps << " rejected, " << s.jacobian_evals << " Jacobians, "
+     << s.nonlinear_iters << " Newton iterations (" << s.nonlinear_conv_fails << " failed)";
+  return os.str();
+}
+
+}  // namespace rb::app

@@ -1,0 +1,46 @@
+#pragma once
+// Running an ODE model into a result file: output series at fixed output times, a progress line,
+// /stats for every run, and failure as a result (issue 3): a failed run keeps every output
+// written so far, /stats/status = "failed" with the message, and the caller exits non-zero.
+#include <Eigen/Dense>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "workbench/integrators/integrator.hpp"
+#include "workbench/integrators/spec.hpp"
+#include "workbench/io/result_file.hpp"
+
+namespace rb::app {
+
+// One state component written as a time series: state[index] -> dataset `path` [units].
+struct StateOutput {
+  std::string path;   // "/bodies/ws1/y"
+  std::string units;  // "m"
+  int index = 0;
+};
+
+struct SimulationRequest {
+  integ::OdeSystem* system = nullptr;
+  integ::SolverSpec solver;
+  double t0 = 0.0;
+  Eigen::VectorXd y0;
+  double t_end = 0.0;          // [s]
+  double output_every = 0.01;  // [s]
+  std::vector<StateOutput> outputs;
+  // Distance travelled [m] at (t, y), for progress and failure messages; optional.
+  std::function<double(double, const Eigen::VectorXd&)> distance;
+  bool progress = false;  // progress line on stderr (the app enables it for terminals)
+};
+
+// Integrates and writes /time, the requested series and /stats into `file` (not finalized).
+// Throws InputError for inconsistent options (e.g. output interval not on a fixed-step grid).
+integ::RunResult simulate(const SimulationRequest& request, io::ResultFile& file);
+
+// /stats attributes of a run (architecture.md): status, message, times and counters.
+void writeStats(io::ResultFile& file, const integ::RunResult& result, const std::string& method);
+
+// One line summary of the statistics, printed at the end of a run.
+std::string statsLine(const integ::RunResult& result, double simulated_s);
+
+}  // namespace rb::app

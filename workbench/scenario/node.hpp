@@ -1,0 +1,35 @@
+#pragma once
+// A scenario as a plain tree of values, converted from Lua tables once the script has run. The
+// validator and spec builders work on this tree, so nothing below scenario/ sees Lua. A Lua
+// function value (e.g. a user PSD) is kept as a callable that evaluates it with one number.
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "workbench/core/error.hpp"
+
+namespace rb::scenario {
+
+struct Node {
+  enum class Type { Nil, Bool, Number, String, Table, Function };
+  Type type = Type::Nil;
+  bool boolean = false;
+  double number = 0.0;
+  std::string string;
+  std::vector<std::pair<std::string, Node>> fields;  // named entries, in a stable (sorted) order
+  std::vector<Node> items;                            // array part, Lua index 1..n
+  std::string kind;  // constructor that made this table ("track", "curve", ...); "" if plain
+  SourceLoc loc;     // where the constructor was called (plain tables inherit their parent's)
+  // For Type::Function: evaluates the Lua function with one number (throws InputError).
+  std::shared_ptr<std::function<double(double)>> function;
+
+  const Node* field(const std::string& name) const;
+  Node* field(const std::string& name);
+  Node& setField(const std::string& name, Node value);
+  static const char* typeName(Type t);
+  std::string describe() const;  // "number 3", "string \"abc\"", "table", ...
+};
+
+}  // namespace rb::scenario

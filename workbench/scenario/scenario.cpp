@@ -1,0 +1,517 @@
+#include "workbench/scenario/scenario.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "workbench/core/strings.hpp"
+#include "workbench/scenario/lua_host.hpp"
+#include "workbench/integrators/registry.hpp"
+#include "workbench/scenario/schema.hpp"
+
+namespace rb::scenario {
+namespace {
+
+const SourceLoc kCommandLine{"<command line>", 0};
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+// Typed, validated access to one block's keys, driven by its BlockSpec.
+class Reader {
+ public:
+  Reader(const Node& node, const BlockSpec& spec, std::string path, Diagnostics& d)
+      : node_(node), spec_(spec), path_(std::move(path)), d_(d) {
+    label_ = path_;
+    if (!node.kind.empty() && node.kind != path_) label_ += " (" + node.kind + ")";
+    for (const auto& [k, v] : node.fields) {
+      if (spec.key(k)) continue;
+      std::string msg = "unknown key '" + k + "'";
+      std::string hint = closestMatch(k, spec.keyNames());
+      if (!hint.empty()) msg += " (did you mean '" + hint + "'?)";
+      else msg += " (valid keys: " + join(spec.keyNames(), ", ") + ")";
+      error(v, msg);
+    }
+    if (!node.items.empty())
+      error(node, "expects named values (key = value), not a list of " +
+                      std::to_string(node.items.size()) + " entries");
+  }
+
+  const std::string& path() const { return path_; }
+  const SourceLoc& loc() const { return node_.loc; }
+  void error(const Node& at, const std::string& msg) { d_.add(at.loc, label_ + ": " + msg); }
+
+  const Node* value(const std::string& name) {
+    const KeySpec& k = key(name);
+    const Node* v = node_.field(name);
+    if (v && v->type == Node::Type::Nil) v = nullptr;
+    if (!v && k.required) error(node_, "missing required key '" + name + "'");
+    return v;
+  }
+
+  double number(const std::string& name) {
+    const KeySpec& k = key(name);
+    const Node* v = value(name);
+    if (!v) return k.num_default;
+    if (v->type != Node::Type::Number) {
+      error(*v, name + " must be a number" + unitText(k) + ", got " + v->describe());
+      return k.num_default;
+    }
+    checkRange(*v, k, v->number);
+    if (k.type == ValueType::Integer && v->number != std::floor(v->number))
+      error(*v, name + " must be a whole number, got " + fmt(v->number));
+    return v->number;
+  }
+
+  std::string choice(const std::string& name) {
+    const KeySpec& k = key(name);
+    const Node* v = value(name);
+    if (!v) return k.def;
+    if (v->type != Node::Type::String) {
+      error(*v, name + " must be one of " + join(k.choices, ", ") + "; got " + v->describe());
+      return k.def;
+    }
+    for (const auto& c : k.choices)
+      if (c == v->string) return c;
+    std::string msg = name + ": unknown value '" + v->string + "'";
+    std::string hint = closestMatch(v->string, k.choices);
+    if (!hint.empty()) msg += " (did you mean '" + hint + "'?)";
+    msg += "; valid: " + join(k.choices, ", ");
+    error(*v, msg);
+    return k.def;
+  }
+
+  std::string string(const std::string& name) {
+    const Node* v = value(name);
+    if (!v) return {};
+    if (v->type != Node::Type::String) {
+      error(*v, name + " must be a string, got " + v->describe());
+      return {};
+    }
+    return v->string;
+  }
+
+  bool pair(const std::string& name, double& a, double& b) {
+    const KeySpec& k = key(name);
+    const Node* v = value(name);
+    if (!v) return false;
+    if (v->type != Node::Type::Table || v->items.size() != 2 || !v->fields.empty() ||
+        v->items[0].type != Node::Type::Number || v->items[1].type != Node::Type::Number) {
+      error(*v, name + " must be a pair of numbers {min, max}" + unitText(k) + ", got " +
+                    v->describe());
+      return false;
+    }
+    a = v->items[0].number;
+    b = v->items[1].number;
+    checkRange(*v, k, a);
+    checkRange(*v, k, b);
+    if (!(a < b)) error(*v, name + " must be {min, max} with min < max, got {" + fmt(a) + ", " + fmt(b) + "}");
+    return true;
+  }
+
+  // A nested constructor block (kinds) or plain table (sub); nullptr if absent or wrong.
+  const Node* blockValue(const std::string& name) {
+    const KeySpec& k = key(name);
+    const Node* v = value(name);
+    if (!v) return nullptr;
+    if (v->type != Node::Type::Table) {
+      error(*v, name + " must be " + expected(k) + ", got " + v->describe());
+      return nullptr;
+    }
+    if (!k.kinds.empty() && !isKind(*v, k)) {
+      error(*v, name + " must be " + expected(k) + ", got " + v->describe());
+      return nullptr;
+    }
+    return v;
+  }
+
+  std::vector<const Node*> blockList(const std::string& name) {
+    const KeySpec& k = key(name);
+    const Node* v = value(name);
+    std::vector<const Node*> out;
+    if (!v) return out;
+    if (v->type != Node::Type::Table || !v->fields.empty()) {
+      error(*v, name + " must be a list of " + expected(k) + ", got " + v->describe());
+      return out;
+    }
+    if (v->items.empty()) error(*v, name + " must not be empty");
+    for (std::size_t i = 0; i < v->items.size(); ++i) {
+      const Node& item = v->items[i];
+      if (item.type != Node::Type::Table || !isKind(item, k)) {
+        error(item, name + "[" + std::to_string(i + 1) + "] must be " + expected(k) + ", got " +
+                        item.describe());
+        continue;
+      }
+      out.push_back(&item);
+    }
+    return out;
+  }
+
+  std::vector<std::string> stringList(const std::string& name) {
+    const KeySpec& k = key(name);
+    const Node* v = value(name);
+    std::vector<std::string> out;
+    if (!v) return k.choices;
+    if (v->type != Node::Type::Table || !v->fields.empty()) {
+      error(*v, name + " must be a list of names from: " + join(k.choices, ", "));
+      return out;
+    }
+    for (const auto& item : v->items) {
+      bool ok = item.type == Node::Type::String;
+      if (ok) {
+        ok = false;
+        for (const auto& c : k.choices) ok = ok || c == item.string;
+      }
+      if (!ok) {
+        std::string msg = name + ": unknown entry " + item.describe();
+        if (item.type == Node::Type::String) {
+          std::string hint = closestMatch(item.string, k.choices);
+          if (!hint.empty()) msg += " (did you mean '" + hint + "'?)";
+        }
+        error(item, msg + "; valid: " + join(k.choices, ", "));
+        continue;
+      }
+      out.push_back(item.string);
+    }
+    return out;
+  }
+
+  bool has(const std::string& name) const {
+    const Node* v = node_.field(name);
+    return v && v->type != Node::Type::Nil;
+  }
+
+ private:
+  const KeySpec& key(const std::string& name) const {
+    const KeySpec* k = spec_.key(name);
+    RB_CHECK(k != nullptr, "schema of '" + spec_.name + "' has no key '" + name + "'");
+    return *k;
+  }
+  static std::string unitText(const KeySpec& k) {
+    return (k.unit.empty() || k.unit == "-") ? std::string() : " [" + k.unit + "]";
+  }
+  static bool isKind(const Node& n, const KeySpec& k) {
+    for (const auto& kind : k.kinds)
+      if (n.kind == kind) return true;
+    return false;
+  }
+  static std::string expected(const KeySpec& k) {
+    if (k.kinds.empty()) return "a table { ... }";
+    std::string s;
+    for (std::size_t i = 0; i < k.kinds.size(); ++i)
+      s += (i ? (i + 1 == k.kinds.size() ? " or " : ", ") : "") + k.kinds[i] + "{...}";
+    return s;
+  }
+  void checkRange(const Node& at, const KeySpec& k, double x) {
+    std::string u = (k.unit.empty() || k.unit == "-") ? "" : " " + k.unit;
+    if (!std::isfinite(x)) {
+      error(at, k.name + " must be finite, got " + fmt(x));
+    } else if (k.min_exclusive ? !(x > k.min) : !(x >= k.min)) {
+      error(at, k.name + " must be " + (k.min_exclusive ? "> " : ">= ") + fmt(k.min) + u +
+                    ", got " + fmt(x));
+    } else if (!(x <= k.max)) {
+      error(at, k.name + " must be <= " + fmt(k.max) + u + ", got " + fmt(x));
+    }
+  }
+
+  const Node& node_;
+  const BlockSpec& spec_;
+  std::string path_;
+  std::string label_;
+  Diagnostics& d_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// --set overrides
+
+Node parseOverrideValue(const std::string& text) {
+  Node n;
+  n.loc = kCommandLine;
+  char* end = nullptr;
+  double v = std::strtod(text.c_str(), &end);
+  if (!text.empty() && end && *end == '\0') {
+    n.type = Node::Type::Number;
+    n.number = v;
+  } else if (text == "true" || text == "false") {
+    n.type = Node::Type::Bool;
+    n.boolean = text == "true";
+  } else {
+    n.type = Node::Type::String;
+    n.string = text;
+    if (n.string.size() >= 2 && (n.string.front() == '"' || n.string.front() == '\'') &&
+        n.string.back() == n.string.front())
+      n.string = n.string.substr(1, n.string.size() - 2);
+  }
+  return n;
+}
+
+void applyOverride(Node& root, const std::string& assignment, Diagnostics& d) {
+  auto fail = [&](const std::string& msg) { d.add(kCommandLine, "--set " + assignment + ": " + msg); };
+  auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) return fail("expected key=value, e.g. solver.step=5e-4");
+  std::string path = assignment.substr(0, eq);
+  std::string value = assignment.substr(eq + 1);
+  // Tokens: names and 1-based list positions, "a.b[2].c" or "a.b.2.c".
+  std::vector<std::string> tokens;
+  std::string cur;
+  for (char c : path) {
+    if (c == '.' || c == '[' || c == ']') {
+      if (!cur.empty()) tokens.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  if (!cur.empty()) tokens.push_back(cur);
+  if (tokens.size() < 2) return fail("the key must name a block and a key, e.g. solver.step");
+  const auto& tops = topLevelBlocks();
+  Node* node = root.field(tokens[0]);
+  if (!node) {
+    bool known = false;
+    for (const auto& t : tops) known = known || t == tokens[0];
+    if (!known) {
+      std::string hint = closestMatch(tokens[0], tops);
+      return fail("unknown block '" + tokens[0] + "'" +
+                  (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+    }
+    Node b;
+    b.type = Node::Type::Table;
+    b.kind = tokens[0];
+    b.loc = kCommandLine;
+    node = &root.setField(tokens[0], std::move(b));
+  }
+  for (std::size_t i = 1; i < tokens.size(); ++i) {
+    const std::string& t = tokens[i];
+    bool last = i + 1 == tokens.size();
+    bool isIndex = !t.empty() && t.find_first_not_of("0123456789") == std::string::npos;
+    if (node->type != Node::Type::Table)
+      return fail("'" + tokens[i - 1] + "' is not a table, cannot set '" + t + "' in it");
+    if (isIndex) {
+      std::size_t idx = std::stoul(t);
+      if (idx < 1 || idx > node->items.size())
+        return fail("list position " + t + " out of range 1.." + std::to_string(node->items.size()));
+      if (last) {
+        node->items[idx - 1] = parseOverrideValue(value);
+        return;
+      }
+      node = &node->items[idx - 1];
+    } else if (last) {
+      Node v = parseOverrideValue(value);
+      node->setField(t, std::move(v));
+      return;
+    } else {
+      Node* next = node->field(t);
+      if (!next) {
+        Node tbl;
+        tbl.type = Node::Type::Table;
+        tbl.loc = kCommandLine;
+        next = &node->setField(t, std::move(tbl));
+      }
+      node = next;
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Blocks -> Specs
+
+track::PsdTable readPsdInput(const Node& v, const std::string& path, Reader& r, double omegaMin,
+                             double omegaMax) {
+  track::PsdTable t;
+  if (v.type == Node::Type::Function) {
+    // Tabulate the user's function log-spaced over a band a little wider than the synthesis band.
+    const int n = 400;
+    double a = std::log(omegaMin / 2), b = std::log(omegaMax * 2);
+    for (int i = 0; i < n; ++i) {
+      double om = std::exp(a + (b - a) * i / (n - 1));
+      double g = 0;
+      try {
+        g = (*v.function)(om);
+      } catch (const InputError& e) {
+        r.error(v, path + ": " + e.diagnostics().front().message);
+        return {};
+      }
+      if (!std::isfinite(g) || g < 0) {
+        r.error(v, path + ": PSD function returned " + fmt(g) + " at omega = " + fmt(om) +
+                       " rad/m; it must be finite and >= 0");
+        return {};
+      }
+      t.omega.push_back(om);
+      t.value.push_back(g);
+    }
+    return t;
+  }
+  if (v.type == Node::Type::Table && v.fields.empty()) {
+    for (std::size_t i = 0; i < v.items.size(); ++i) {
+      const Node& p = v.items[i];
+      if (p.type != Node::Type::Table || p.items.size() != 2 || p.items[0].type != Node::Type::Number ||
+          p.items[1].type != Node::Type::Number) {
+        r.error(v, path + "[" + std::to_string(i + 1) + "] must be a pair {omega, G}");
+        return {};
+      }
+      t.omega.push_back(p.items[0].number);
+      t.value.push_back(p.items[1].number);
+    }
+    return t;
+  }
+  r.error(v, path + " must be a function of omega or a table of {omega, G} pairs, got " + v.describe());
+  return {};
+}
+
+void buildIrregularities(const Node& n, const std::string& path, LuaHost& host,
+                         track::IrregularitySpec& out, Diagnostics& d) {
+  out.loc = n.loc;
+  if (n.kind == "measured") {
+    Reader r(n, block("measured"), path, d);
+    out.source = track::IrregularitySource::Csv;
+    std::string file = r.string("file");
+    out.step = r.number("step");
+    if (!file.empty()) {
+      try {
+        out.csv_path = host.resolveDataFile(file, n.loc);
+      } catch (const InputError& e) {
+        r.error(n, "file: " + e.diagnostics().front().message);
+      }
+    }
+    return;
+  }
+  Reader r(n, block("psd"), path, d);
+  out.source = track::IrregularitySource::Psd;
+  out.spectrum = r.choice("spectrum");
+  out.seed = static_cast<std::uint64_t>(r.number("seed"));
+  out.components = static_cast<int>(r.number("components"));
+  out.step = r.number("step");
+  out.scale = r.number("scale");
+  r.pair("wavelengths", out.wavelength_min, out.wavelength_max);
+  std::vector<std::string> channels = r.stringList("channels");
+  static const char* names[track::kChannels] = {"alignment", "vertical", "gauge", "cross_level"};
+  for (int c = 0; c < track::kChannels; ++c) {
+    out.enabled[c] = false;
+    for (const auto& s : channels) out.enabled[c] = out.enabled[c] || s == names[c];
+  }
+  bool user = out.spectrum == "user";
+  bool anyUser = false;
+  for (int c = 0; c < track::kChannels; ++c) {
+    const Node* v = r.value(names[c]);
+    if (!v) continue;
+    anyUser = true;
+    if (!user) {
+      const Node* given = n.field("spectrum");
+      std::string named = given && given->type == Node::Type::String ? given->string : out.spectrum;
+      r.error(*v, std::string(names[c]) + " gives a user PSD but spectrum is '" + named +
+                      "'; set spectrum = \"user\" or remove it");
+      continue;
+    }
+    if (out.wavelength_min > 0 && out.wavelength_max > out.wavelength_min)
+      out.user[c] = readPsdInput(*v, std::string(names[c]), r, 2 * M_PI / out.wavelength_max,
+                                 2 * M_PI / out.wavelength_min);
+  }
+  if (user && !anyUser)
+    r.error(n, "spectrum = \"user\" needs at least one of alignment, vertical, gauge, cross_level");
+}
+
+void buildTrack(const Node& n, LuaHost& host, track::TrackSpec& t, Diagnostics& d) {
+  Reader r(n, block("track"), "track", d);
+  t.loc = n.loc;
+  t.step = r.number("step");
+  t.cant_base = r.number("cant_base");
+  t.gauge = r.number("gauge");
+  t.rail_lr = r.number("rail_lr");
+  t.rail_inclination = r.number("rail_inclination");
+  auto segs = r.blockList("segments");
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    const Node& s = *segs[i];
+    std::string path = "track.segments[" + std::to_string(i + 1) + "]";
+    Reader sr(s, block(s.kind), path, d);
+    track::SegmentSpec seg;
+    seg.loc = s.loc;
+    seg.kind = s.kind == "tangent"      ? track::SegmentKind::Tangent
+               : s.kind == "transition" ? track::SegmentKind::Transition
+                                        : track::SegmentKind::Curve;
+    seg.length = sr.number("length");
+    seg.gradient = sr.number("gradient");
+    if (seg.kind != track::SegmentKind::Tangent) {
+      seg.radius = sr.number("radius");
+      seg.side = sr.choice("side") == "right" ? track::Side::Right : track::Side::Left;
+      seg.cant = sr.number("cant");
+    }
+    t.segments.push_back(seg);
+  }
+  if (const Node* irr = r.blockValue("irregularities"))
+    buildIrregularities(*irr, "track.irregularities", host, t.irregularities, d);
+}
+
+void buildSolver(const Node& n, integ::SolverSpec& s, Diagnostics& d) {
+  Reader r(n, block("solver"), "solver", d);
+  s.loc = n.loc;
+  s.method = r.choice("method");
+  s.step = r.number("step");
+  s.rtol = r.number("rtol");
+  s.atol = r.number("atol");
+  s.max_step = r.number("max_step");
+  s.max_order = static_cast<int>(r.number("max_order"));
+  s.max_steps = static_cast<long>(r.number("max_steps"));
+  s.jacobian = r.choice("jacobian");
+  // Options that the chosen method does not use are conflicts, not silently ignored.
+  for (const auto& m : integ::methods()) {
+    if (m.name != s.method) continue;
+    for (const auto& [k, v] : n.fields) {
+      if (k == "method" || !block("solver").key(k)) continue;
+      bool used = false;
+      for (const auto& o : m.options) used = used || o.key == k;
+      if (!used) {
+        std::vector<std::string> valid;
+        for (const auto& o : m.options) valid.push_back(o.key);
+        r.error(v, k + " has no effect with method '" + s.method + "' (its options: " +
+                       join(valid, ", ") + ")");
+      }
+    }
+  }
+}
+
+void buildRun(const Node& n, RunSpec& run, Diagnostics& d) {
+  Reader r(n, block("run"), "run", d);
+  run.loc = n.loc;
+  run.distance = r.number("distance");
+  if (const Node* out = r.blockValue("output")) {
+    Reader o(*out, block("run.output"), "run.output", d);
+    run.output_every = o.number("every");
+  }
+}
+
+}  // namespace
+
+ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
+  ScenarioSpec spec;
+  spec.file = path;
+  spec.overrides = options.overrides;
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    spec.text = ss.str();
+  }
+  HostOptions ho;
+  ho.root = options.root;
+  ho.instruction_limit = options.instruction_limit;
+  LuaHost host(ho);
+  Node root = host.runFile(path);
+  Diagnostics d;
+  for (const auto& o : options.overrides) applyOverride(root, o, d);
+
+  if (const Node* t = root.field("track")) buildTrack(*t, host, spec.track, d);
+  else d.add({path, 0}, "scenario has no track { ... } block");
+  if (const Node* s = root.field("solver")) {
+    spec.has_solver = true;
+    buildSolver(*s, spec.solver, d);
+  }
+  if (const Node* r = root.field("run")) buildRun(*r, spec.run, d);
+  d.throwIfAny();
+  return spec;
+}
+
+}  // namespace rb::scenario

@@ -1,0 +1,37 @@
+#pragma once
+// Loading a scenario: run the Lua file, apply --set overrides, validate against the schema and
+// build the typed Specs the engine compiles (Spec -> Model -> State -> Workspace).
+#include <string>
+#include <vector>
+
+#include "workbench/integrators/spec.hpp"
+#include "workbench/track/spec.hpp"
+
+namespace rb::scenario {
+
+struct RunSpec {
+  double distance = 0.0;      // [m] 0 = the whole track
+  double output_every = 0.01; // [s]
+  SourceLoc loc;
+};
+
+struct ScenarioSpec {
+  std::string file;                    // as given by the user
+  std::string text;                    // full text of the scenario file (provenance)
+  std::vector<std::string> overrides;  // --set key=value, in order
+  track::TrackSpec track;
+  bool has_solver = false;
+  integ::SolverSpec solver;
+  RunSpec run;
+};
+
+struct LoadOptions {
+  std::string root;                    // project root (scenarios/, profiles/)
+  std::vector<std::string> overrides;  // "a.b[2].c=value"
+  long long instruction_limit = 2'000'000'000;  // Lua VM instructions before "endless loop?"
+};
+
+// Throws InputError listing every problem found, each as file:line: message.
+ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options);
+
+}  // namespace rb::scenario

@@ -1,0 +1,263 @@
+#include "workbench/scenario/schema.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+#include "workbench/integrators/registry.hpp"
+
+namespace rb::scenario {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+KeySpec num(std::string name, std::string unit, double def, std::string help, double min = -kInf,
+            double max = kInf, bool minExclusive = false) {
+  KeySpec k;
+  k.name = std::move(name);
+  k.type = ValueType::Number;
+  k.unit = std::move(unit);
+  std::ostringstream os;
+  os << def;
+  k.def = os.str();
+  k.num_default = def;
+  k.help = std::move(help);
+  k.min = min;
+  k.max = max;
+  k.min_exclusive = minExclusive;
+  return k;
+}
+
+KeySpec required(KeySpec k) {
+  k.required = true;
+  k.def.clear();
+  return k;
+}
+
+KeySpec integer(std::string name, double def, std::string help, double min, double max) {
+  KeySpec k = num(std::move(name), "-", def, std::move(help), min, max);
+  k.type = ValueType::Integer;
+  return k;
+}
+
+KeySpec choice(std::string name, std::vector<std::string> choices, std::string def, std::string help) {
+  KeySpec k;
+  k.name = std::move(name);
+  k.type = ValueType::Choice;
+  k.unit = "-";
+  k.choices = std::move(choices);
+  k.def = std::move(def);
+  k.help = std::move(help);
+  return k;
+}
+
+KeySpec blockKey(std::string name, ValueType t, std::vector<std::string> kinds, std::string help,
+                 std::string sub = {}) {
+  KeySpec k;
+  k.name = std::move(name);
+  k.type = t;
+  k.kinds = std::move(kinds);
+  k.sub = std::move(sub);
+  k.help = std::move(help);
+  return k;
+}
+
+std::vector<std::string> spectra() {
+  return {"ore_b176_low", "ore_b176_high", "fra_class_1", "fra_class_2", "fra_class_3",
+          "fra_class_4",  "fra_class_5",   "fra_class_6", "user"};
+}
+
+std::vector<BlockSpec> build() {
+  std::vector<BlockSpec> s;
+  const std::string gradientHelp =
+      "vertical gradient rise/run, positive uphill, at the segment end (slope angle = -atan)";
+  s.push_back({"track",
+               "Track centreline as a sequence of segments, preprocessed into cubic splines of "
+               "position and Euler angles versus arc length (paper Eq. 1-2, Fig. 4).",
+               {blockKey("segments", ValueType::BlockList, {"tangent", "transition", "curve"},
+                         "segments in running order (required)"),
+                num("step", "m", 0.5, "spline sampling step of the centreline (paper: 0.5 m)", 0,
+                    kInf, true),
+                num("cant_base", "m", 1.5, "lateral base over which cant height is measured", 0,
+                    kInf, true),
+                num("gauge", "m", 1.435, "nominal track gauge", 1.0, 2.0),
+                num("rail_lr", "m", 0.7555,
+                    "Lr: lateral position of the rail profile frames (paper Table 1)", 0.5, 1.0),
+                num("rail_inclination", "rad", 0.025, "beta: rail inclination (paper Table 1: 1/40)",
+                    0.0, 0.1),
+                blockKey("irregularities", ValueType::Block, {"psd", "measured"},
+                         "track irregularities; none if absent (costs nothing)")}});
+  s.push_back({"tangent",
+               "Straight segment: zero curvature and zero cant.",
+               {required(num("length", "m", 0, "arc length", 0, kInf, true)),
+                num("gradient", "-", 0, gradientHelp, -0.1, 0.1)}});
+  s.push_back(
+      {"transition",
+       "Clothoid: curvature, cant and gradient change linearly in arc length from the previous "
+       "segment's end values to the values given here.",
+       {required(num("length", "m", 0, "arc length", 0, kInf, true)),
+        num("radius", "m", 0, "radius at the end; 0 means the transition ends straight", 0),
+        choice("side", {"left", "right"}, "left", "direction of the curve at the end"),
+        num("cant", "m", 0, "superelevation height at the end", -0.3, 0.3),
+        num("gradient", "-", 0, gradientHelp, -0.1, 0.1)}});
+  s.push_back({"curve",
+               "Circular curve of constant radius and cant.",
+               {required(num("length", "m", 0, "arc length", 0, kInf, true)),
+                required(num("radius", "m", 0, "curve radius", 0, kInf, true)),
+                choice("side", {"left", "right"}, "left", "direction of the curve"),
+                num("cant", "m", 0, "superelevation height", -0.3, 0.3),
+                num("gradient", "-", 0, gradientHelp, -0.1, 0.1)}});
+  KeySpec wl;
+  wl.name = "wavelengths";
+  wl.type = ValueType::Pair;
+  wl.unit = "m";
+  wl.def = "{3, 70}";
+  wl.help = "synthesis band {shortest, longest} wavelength (EN 13848 D1+D2: 3..70 m)";
+  wl.min = 0;
+  wl.min_exclusive = true;
+  KeySpec channels;
+  channels.name = "channels";
+  channels.type = ValueType::StringList;
+  channels.unit = "-";
+  channels.choices = {"alignment", "vertical", "gauge", "cross_level"};
+  channels.def = "all four";
+  channels.help = "which irregularities to synthesise";
+  auto psdInput = [](const std::string& n) {
+    KeySpec k;
+    k.name = n;
+    k.type = ValueType::PsdInput;
+    k.unit = "m^2/(rad/m)";
+    k.help = "user PSD (spectrum = \"user\"): function(omega) or {{omega, G}, ...}, one-sided";
+    return k;
+  };
+  s.push_back(
+      {"psd",
+       "Irregularities synthesised from power spectral densities by a sum of cosines with random "
+       "phases (paper Fig. 3, 15). One-sided PSDs over spatial angular frequency.",
+       {required(choice("spectrum", spectra(), "",
+                        "named PSD (FRA values UNVERIFIED, see docs) or \"user\"")),
+        integer("seed", 1, "random seed of the phases (recorded in the output)", 0, 9.007199254740992e15),
+        wl, integer("components", 2000, "cosines per channel", 1, 1e6),
+        num("step", "m", 0.1, "spline sampling step (paper: 0.1 m)", 0, kInf, true),
+        num("scale", "-", 1, "amplitude factor on every channel", 0, 100), channels,
+        psdInput("alignment"), psdInput("vertical"), psdInput("gauge"), psdInput("cross_level")}});
+  KeySpec file;
+  file.name = "file";
+  file.type = ValueType::String;
+  file.required = true;
+  file.help =
+      "CSV with columns s, alignment, vertical, gauge, cross_level [m], relative to the scenario";
+  s.push_back({"measured",
+               "Measured irregularities from a CSV file.",
+               {file, num("step", "m", 0.1, "spline sampling step", 0, kInf, true)}});
+
+  std::vector<std::string> methodNames;
+  std::string methodHelp = "integrator:";
+  for (const auto& m : integ::methods()) {
+    methodNames.push_back(m.name);
+    methodHelp += " " + m.name + " = " + m.description + ";";
+  }
+  KeySpec jac = choice("jacobian", {"auto", "fd"}, "auto",
+                       "bdf: model's analytic Jacobian if it has one (auto) or finite differences");
+  s.push_back({"solver",
+               "Time integrator (paper section 4) and its options.",
+               {choice("method", methodNames, "abm", methodHelp),
+                num("step", "s", 1e-3, "fixed step (rk4, abm); initial step hint otherwise", 0,
+                    1.0, true),
+                num("rtol", "-", 1e-6, "relative tolerance (dopri5, bdf, ida)", 0, 1, true),
+                num("atol", "-", 1e-6, "absolute tolerance in state units (dopri5, bdf, ida)", 0,
+                    kInf, true),
+                num("max_step", "s", 0, "largest step, 0 = unlimited (dopri5, bdf, ida)", 0),
+                integer("max_order", 5, "maximum BDF order (bdf, ida)", 1, 5),
+                integer("max_steps", 0, "internal steps per output interval, 0 = default", 0, 1e12),
+                jac}});
+  s.push_back({"run",
+               "What to simulate and what to write.",
+               {num("distance", "m", 0, "distance to travel, 0 = the whole track", 0),
+                blockKey("output", ValueType::Block, {}, "output options", "run.output")}});
+  s.push_back({"run.output",
+               "Output options (a plain table inside run{}).",
+               {num("every", "s", 0.01, "output interval", 0, kInf, true)}});
+  return s;
+}
+
+}  // namespace
+
+const KeySpec* BlockSpec::key(const std::string& k) const {
+  for (const auto& ks : keys)
+    if (ks.name == k) return &ks;
+  return nullptr;
+}
+
+std::vector<std::string> BlockSpec::keyNames() const {
+  std::vector<std::string> out;
+  for (const auto& k : keys) out.push_back(k.name);
+  return out;
+}
+
+const std::vector<BlockSpec>& schema() {
+  static const std::vector<BlockSpec> s = build();
+  return s;
+}
+
+const BlockSpec& block(const std::string& name) {
+  for (const auto& b : schema())
+    if (b.name == name) return b;
+  throw std::logic_error("no schema block '" + name + "'");
+}
+
+namespace {
+const char* typeText(ValueType t) {
+  switch (t) {
+    case ValueType::Number: return "number";
+    case ValueType::Integer: return "integer";
+    case ValueType::String: return "string";
+    case ValueType::Choice: return "choice";
+    case ValueType::Bool: return "boolean";
+    case ValueType::Pair: return "{min, max}";
+    case ValueType::Block: return "block";
+    case ValueType::BlockList: return "list of blocks";
+    case ValueType::StringList: return "list of names";
+    case ValueType::PsdInput: return "function or table";
+  }
+  return "?";
+}
+}  // namespace
+
+std::string referenceText() {
+  std::ostringstream os;
+  os << "Scenario reference (generated from the schema the validator uses).\n"
+        "A scenario is a Lua 5.4 file of constructor calls with named tables; plain Lua\n"
+        "(locals, loops, arithmetic, require of shared files) is allowed. Units are SI.\n"
+        "Any value can be overridden with --set block.key=value (lists: block.list[2].key).\n";
+  for (const auto& b : schema()) {
+    os << "\n" << b.name << (b.name.find('.') == std::string::npos ? " { ... }" : " = { ... }")
+       << "\n  " << b.help << "\n";
+    for (const auto& k : b.keys) {
+      os << "  " << k.name << " (" << typeText(k.type);
+      if (!k.unit.empty() && k.unit != "-") os << ", " << k.unit;
+      os << ")";
+      if (k.required) os << " required";
+      else if (!k.def.empty()) os << " default " << k.def;
+      if (k.type == ValueType::Number || k.type == ValueType::Integer) {
+        if (k.min > -kInf || k.max < kInf) {
+          os << ", range " << (k.min_exclusive ? "(" : "[") << k.min << ", " << k.max
+             << (k.max < kInf ? "]" : ")");
+        }
+      }
+      os << "\n      " << k.help << "\n";
+      if (!k.choices.empty()) {
+        os << "      one of:";
+        for (const auto& c : k.choices) os << " " << c;
+        os << "\n";
+      }
+      if (!k.kinds.empty()) {
+        os << "      made by:";
+        for (const auto& c : k.kinds) os << " " << c << "{}";
+        os << "\n";
+      }
+    }
+  }
+  return os.str();
+}
+
+}  // namespace rb::scenario

@@ -1,0 +1,54 @@
+#pragma once
+// The scenario schema: every block, key, type, unit, range and default. The same tables drive
+// validation (reader.hpp) and the generated reference (`workbench help scenario`), in the manner
+// of Snort 3 / LOVE module schemas (architecture.md).
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace rb::scenario {
+
+enum class ValueType {
+  Number,     // real, SI unit in `unit`
+  Integer,    // whole number
+  String,     // free text (file names)
+  Choice,     // one of `choices`
+  Bool,
+  Pair,       // {a, b} of numbers, a < b
+  Block,      // a constructor call of one of `kinds`, or a plain table described by block `sub`
+  BlockList,  // a list of constructor calls of `kinds`
+  StringList, // a list of `choices`
+  PsdInput,   // a Lua function G(omega) or a table of {omega, G} pairs
+};
+
+struct KeySpec {
+  std::string name;
+  ValueType type = ValueType::Number;
+  std::string unit;  // SI unit, "-" for dimensionless
+  std::string def;   // default as shown in help; empty for required or "none"
+  std::string help;
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool min_exclusive = false;  // min < value rather than min <= value
+  bool required = false;
+  std::vector<std::string> choices;  // Choice, StringList
+  std::vector<std::string> kinds;    // constructors allowed for Block, BlockList
+  std::string sub;                   // Block given as a plain table: schema block name
+  double num_default = 0.0;          // numeric default used by the reader
+};
+
+struct BlockSpec {
+  std::string name;  // constructor name, or "run.output" for a plain sub-table
+  std::string help;
+  std::vector<KeySpec> keys;
+  const KeySpec* key(const std::string& k) const;
+  std::vector<std::string> keyNames() const;
+};
+
+const std::vector<BlockSpec>& schema();
+const BlockSpec& block(const std::string& name);  // throws std::logic_error if unknown
+
+// Reference text of every block and key (workbench help scenario).
+std::string referenceText();
+
+}  // namespace rb::scenario
