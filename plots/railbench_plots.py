@@ -1,0 +1,853 @@
+"""Report figures for railbench result files (HDF5 written by the C++ engine).
+
+Reading
+    load_result(path) -> Result          validated, in-memory copy of the groups we plot
+
+Figures (each returns a matplotlib Figure; nothing is written)
+    fig_track_plan(result)               plan view x-y, ticks at segment transition points
+    fig_curvature_cant(result)           curvature [1/km] and cant [mm] / cant angle vs s
+    fig_irregularities(result)           alignment, vertical, gauge, cross level [mm] vs s
+    fig_irregularity_psd(result)         Welch estimate vs target one-sided PSD, log-log
+
+Driver
+    FIGURES                              registry: (suffix, is_available(result), make(result))
+    make_figures(result, outdir, stem)   writes every available figure, returns the paths
+
+Signal processing
+    default_nperseg(n, ds, wavelength_max)   Welch segment length rule (documented there)
+    welch_segment_starts(n, nperseg)         segment starts (>= 50 % overlap, whole record)
+    welch_psd(x, ds, nperseg=None, ...)      one-sided PSD G(Omega) [units^2/(rad/m)]
+    interp_loglog(x_new, x, y)               log-log interpolation (target PSD onto bins)
+    octave_band_ratios(...)                  estimate/target averaged per octave band
+    fractional_octave_average(...)           1/3-octave band means (display)
+
+Conventions (docs: /work/shared/reference/track_irregularity_psd.md)
+    Omega = 2*pi/lambda [rad/m].  A one-sided PSD G(Omega) over Omega > 0 satisfies
+    variance = integral G dOmega.  With G_f the one-sided PSD in m^2/(cycle/m),
+    G_Omega = G_f / (2*pi).
+
+Adding figures for later groups (/time, /bodies, /contact, /stats): read them in load_result
+(or lazily with Result.read_group), write a fig_* function and append a FigureSpec to FIGURES
+whose is_available() checks for the group.  make_figures() and plot_run.py need no change.
+
+Only numpy, matplotlib (Agg) and h5py are used; no scipy.
+"""
+from __future__ import annotations
+
+import math
+import os
+import sys
+from dataclasses import dataclass, field
+from typing import Callable, Dict, List, Optional, Sequence, Tuple
+
+import numpy as np
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
+from matplotlib.ticker import NullLocator  # noqa: E402
+
+__all__ = [
+    "ResultFileError", "Result", "Track", "Irregularities", "load_result",
+    "default_nperseg", "welch_segment_starts", "welch_psd", "interp_loglog", "octave_band_ratios", "fractional_octave_average",
+    "fig_track_plan", "fig_curvature_cant", "fig_irregularities", "fig_irregularity_psd",
+    "FigureSpec", "FIGURES", "make_figures", "report_style",
+]
+
+# --------------------------------------------------------------------------------------------
+# Style
+# --------------------------------------------------------------------------------------------
+DPI = 150
+A4_WIDTH_IN = 6.5  # usable text width of an A4 page with ~2.3 cm margins
+
+SEGMENT_NAMES = {0: "tangent", 1: "transition", 2: "curve"}
+# Paper Fig. 17: white tangent, grey transition, blue curve.
+SEGMENT_FILL = {0: "#ffffff", 1: "#d9d9d9", 2: "#d6e6f5"}
+SEGMENT_LINE = {0: "#222222", 1: "#8c8c8c", 2: "#1f5fa8"}
+
+CHANNELS = ("alignment", "vertical", "gauge", "cross_level")
+CHANNEL_TITLES = {
+    "alignment": "Alignment",
+    "vertical": "Vertical profile",
+    "gauge": "Gauge variation",
+    "cross_level": "Cross level",
+}
+CHANNEL_COLORS = {
+    "alignment": "#1f5fa8",
+    "vertical": "#b2182b",
+    "gauge": "#1b7837",
+    "cross_level": "#6a3d9a",
+}
+
+_RC = {
+    "font.size": 8.5,
+    "axes.titlesize": 9,
+    "axes.labelsize": 8.5,
+    "legend.fontsize": 7.5,
+    "xtick.labelsize": 7.5,
+    "ytick.labelsize": 7.5,
+    "axes.grid": True,
+    "grid.color": "#b0b0b0",
+    "grid.linewidth": 0.4,
+    "grid.alpha": 0.6,
+    "axes.linewidth": 0.6,
+    "lines.linewidth": 1.0,
+    "xtick.direction": "in",
+    "ytick.direction": "in",
+    "xtick.major.width": 0.6,
+    "ytick.major.width": 0.6,
+    "legend.frameon": True,
+    "legend.framealpha": 0.9,
+    "legend.edgecolor": "#cccccc",
+    "savefig.dpi": DPI,
+    "figure.dpi": DPI,
+    "axes.axisbelow": True,
+}
+
+
+def report_style():
+    """Context manager with the report rcParams (use: `with report_style(): ...`)."""
+    return plt.rc_context(_RC)
+
+
+# --------------------------------------------------------------------------------------------
+# Reading
+# --------------------------------------------------------------------------------------------
+class ResultFileError(Exception):
+    """The file is missing, not HDF5, or lacks what the layout promises. Message is one line."""
+
+
+def _str(v) -> str:
+    """HDF5 string attributes arrive as str, bytes or numpy.bytes_ (fixed length)."""
+    if isinstance(v, np.ndarray) and v.shape == ():
+        v = v[()]
+    if isinstance(v, (bytes, np.bytes_)):
+        return v.decode("utf-8", "replace").rstrip("\x00")
+    return str(v)
+
+
+def _attrs(obj) -> Dict[str, object]:
+    out = {}
+    for k, v in obj.attrs.items():
+        if isinstance(v, (bytes, np.bytes_, str)):
+            out[k] = _str(v)
+        elif isinstance(v, np.ndarray) and v.size == 1:
+            out[k] = v.reshape(()).item()
+        elif isinstance(v, np.generic):
+            out[k] = v.item()
+        else:
+            out[k] = v
+    return out
+
+
+# Units the layout promises, with accepted spellings. A mismatch only warns (stderr): plotting
+# must not fail because someone wrote "1/m" as "m^-1", but a silent rescale would be worse.
+_UNIT_ALIASES = {
+    "m": {"m"},
+    "rad": {"rad"},
+    "1/m": {"1/m", "m^-1", "m-1", "rad/m"},
+    "-": {"-", "", "1"},
+    "rad/m": {"rad/m", "1/m"},
+    "m^2/(rad/m)": {"m^2/(rad/m)", "m2/(rad/m)", "m^2/(rad m^-1)", "m^3/rad", "m^2 m/rad"},
+}
+
+
+def _read_ds(group, name: str, where: str, units: Optional[str] = None) -> np.ndarray:
+    if name not in group:
+        raise ResultFileError(f"missing dataset {where}/{name}")
+    ds = group[name]
+    try:
+        a = np.asarray(ds[()], dtype=float).reshape(-1)
+    except (TypeError, ValueError) as e:
+        raise ResultFileError(f"dataset {where}/{name} is not numeric ({e})") from None
+    if units is not None and "units" in ds.attrs:
+        got = _str(ds.attrs["units"]).strip()
+        if got not in _UNIT_ALIASES.get(units, {units}):
+            print(f"railbench_plots: warning: {where}/{name} has units '{got}', expected '{units}'",
+                  file=sys.stderr)
+    return a
+
+
+@dataclass
+class Track:
+    attrs: Dict[str, object]
+    centreline: Dict[str, np.ndarray]  # s x y z heading slope cant_angle curvature cant
+    segments: Dict[str, np.ndarray]    # start length kind radius side cant
+
+    @property
+    def n_segments(self) -> int:
+        return int(self.segments["start"].size)
+
+    def segment_bounds(self) -> np.ndarray:
+        """Arc length of every segment boundary, start of the first to end of the last."""
+        st, ln = self.segments["start"], self.segments["length"]
+        if st.size == 0:
+            s = self.centreline["s"]
+            return np.array([s[0], s[-1]])
+        return np.append(st, st[-1] + ln[-1])
+
+
+@dataclass
+class Irregularities:
+    attrs: Dict[str, object]
+    data: Dict[str, np.ndarray]                 # s, alignment, vertical, gauge, cross_level, ...
+    target: Optional[Dict[str, np.ndarray]]     # omega + channels, or None (e.g. csv source)
+
+    @property
+    def step(self) -> float:
+        s = self.data["s"]
+        return float(np.median(np.diff(s))) if s.size > 1 else float("nan")
+
+    def band(self) -> Tuple[Optional[float], Optional[float]]:
+        lo, hi = self.attrs.get("wavelength_min"), self.attrs.get("wavelength_max")
+        lo = float(lo) if isinstance(lo, (int, float)) and lo > 0 else None
+        hi = float(hi) if isinstance(hi, (int, float)) and hi > 0 else None
+        return lo, hi
+
+    def describe(self) -> str:
+        a = self.attrs
+        src = a.get("source", "?")
+        if src == "psd":
+            txt = f"spectrum {a.get('spectrum', '?')}, seed {a.get('seed', '?')}"
+        else:
+            txt = f"source {src}"
+        lo, hi = self.band()
+        if lo and hi:
+            txt += f", λ = {lo:g}–{hi:g} m"
+        sc = a.get("scale")
+        if isinstance(sc, (int, float)) and sc != 1:
+            txt += f", scale {sc:g}"
+        return txt
+
+
+@dataclass
+class Result:
+    path: str
+    attrs: Dict[str, object]
+    groups: List[str]                    # top-level group/dataset names present in the file
+    track: Optional[Track] = None
+    irregularities: Optional[Irregularities] = None
+    extra: Dict[str, object] = field(default_factory=dict)  # room for /time, /bodies, ...
+
+    @property
+    def stem(self) -> str:
+        return os.path.splitext(os.path.basename(self.path))[0]
+
+    def read_group(self, group: str) -> Dict[str, np.ndarray]:
+        """All 1-D datasets directly under `group` (lazy reader for figures added later)."""
+        import h5py
+        with h5py.File(self.path, "r") as f:
+            if group not in f:
+                raise ResultFileError(f"missing group {group}")
+            g = f[group]
+            return {k: np.asarray(v[()], dtype=float) for k, v in g.items()
+                    if isinstance(v, h5py.Dataset)}
+
+
+_CENTRELINE = {"s": "m", "x": "m", "y": "m", "z": "m", "heading": "rad", "slope": "rad",
+               "cant_angle": "rad", "curvature": "1/m", "cant": "m"}
+_SEGMENTS = {"start": "m", "length": "m", "kind": "-", "radius": "m", "side": "-", "cant": "m"}
+_IRR = {"s": "m", "alignment": "m", "vertical": "m", "gauge": "m", "cross_level": "m"}
+_IRR_OPTIONAL = {"left_y": "m", "left_z": "m", "right_y": "m", "right_z": "m", "delta": "rad"}
+
+
+def load_result(path: str) -> Result:
+    """Open and validate a result file. Raises ResultFileError with a one-line message."""
+    import h5py
+
+    if not os.path.exists(path):
+        hint = " (a run still in progress writes '<name>.tmp')" if os.path.exists(path + ".tmp") \
+            else ""
+        raise ResultFileError(f"no such file: {path}{hint}")
+    if os.path.isdir(path):
+        raise ResultFileError(f"is a directory, not a result file: {path}")
+    try:
+        f = h5py.File(path, "r")
+    except OSError as e:
+        msg = str(e).splitlines()[0] if str(e) else type(e).__name__
+        raise ResultFileError(f"not a readable HDF5 file: {path} ({msg})") from None
+    try:
+        with f:
+            res = Result(path=path, attrs=_attrs(f), groups=sorted(f.keys()))
+            if "track" not in f:
+                raise ResultFileError(f"{path}: no /track group (not a railbench result file?)")
+            g = f["track"]
+            for sub in ("centreline", "segments"):
+                if sub not in g:
+                    raise ResultFileError(f"{path}: missing group /track/{sub}")
+            cl = {k: _read_ds(g["centreline"], k, "/track/centreline", u)
+                  for k, u in _CENTRELINE.items()}
+            n = cl["s"].size
+            if n < 2:
+                raise ResultFileError(f"{path}: /track/centreline/s has {n} sample(s)")
+            bad = [k for k, v in cl.items() if v.size != n]
+            if bad:
+                raise ResultFileError(f"{path}: /track/centreline datasets differ in length "
+                                      f"({', '.join(bad)} vs s={n})")
+            sg = {k: _read_ds(g["segments"], k, "/track/segments", u) for k, u in _SEGMENTS.items()}
+            m = sg["start"].size
+            if any(v.size != m for v in sg.values()):
+                raise ResultFileError(f"{path}: /track/segments datasets differ in length")
+            res.track = Track(attrs=_attrs(g), centreline=cl, segments=sg)
+
+            if "irregularities" in g:
+                ig = g["irregularities"]
+                data = {k: _read_ds(ig, k, "/track/irregularities", u) for k, u in _IRR.items()}
+                for k, u in _IRR_OPTIONAL.items():
+                    if k in ig:
+                        data[k] = _read_ds(ig, k, "/track/irregularities", u)
+                ni = data["s"].size
+                if any(data[k].size != ni for k in _IRR):
+                    raise ResultFileError(f"{path}: /track/irregularities datasets differ in length")
+                target = None
+                if "target_psd" in ig:
+                    tg = ig["target_psd"]
+                    target = {"omega": _read_ds(tg, "omega", "/track/irregularities/target_psd",
+                                                "rad/m")}
+                    for c in CHANNELS:
+                        if c in tg:
+                            target[c] = _read_ds(tg, c, "/track/irregularities/target_psd",
+                                                 "m^2/(rad/m)")
+                res.irregularities = Irregularities(attrs=_attrs(ig), data=data, target=target)
+            return res
+    except ResultFileError:
+        raise
+    except (OSError, KeyError, ValueError) as e:
+        raise ResultFileError(f"{path}: cannot read ({str(e).splitlines()[0] if str(e) else e!r})") \
+            from None
+
+
+# --------------------------------------------------------------------------------------------
+# PSD estimation
+# --------------------------------------------------------------------------------------------
+def default_nperseg(n: int, ds: float, wavelength_max: Optional[float] = None,
+                    cycles: float = 4.0) -> int:
+    """Welch segment length (samples).
+
+    A segment must hold several periods of the longest wavelength of interest so that its
+    frequency resolution df = 1/(nperseg*ds) puts Omega_min = 2*pi/lambda_max a few bins above
+    DC (the Hann main lobe is +-2 bins wide).  We ask for `cycles` = 4 periods, i.e.
+    4*lambda_max/ds samples, then take the largest power of two <= min(n, that); a power of two
+    below the request trades a little resolution (>= 2 periods still) for more averaged
+    segments.  Without lambda_max (e.g. measured irregularities from a csv file), a quarter of
+    the record is used (7 half-overlapping segments).  Never below 16 samples (or n if
+    shorter).
+    """
+    n = int(n)
+    if n < 2:
+        return max(n, 1)
+    want = cycles * wavelength_max / ds if (wavelength_max and ds > 0) else n / 4.0
+    cap = max(min(float(n), want), 16.0)
+    m = 1 << int(math.floor(math.log2(cap)))
+    return int(min(m, n))
+
+
+def welch_segment_starts(n: int, nperseg: int, overlap: float = 0.5) -> np.ndarray:
+    """Start indices of Welch segments: K = ceil((n-M)/hop)+1 segments, hop = M*(1-overlap),
+    spread evenly over [0, n-M] so the whole record is used (actual overlap >= `overlap`)."""
+    m = max(1, min(int(nperseg), int(n)))
+    if n <= m:
+        return np.array([0])
+    hop = max(1, int(round(m * (1.0 - overlap))))
+    k = int(math.ceil((n - m) / hop)) + 1
+    return np.round(np.linspace(0, n - m, k)).astype(int)
+
+
+def welch_psd(x: Sequence[float], ds: float, nperseg: Optional[int] = None,
+              overlap: float = 0.5, detrend: Optional[str] = "constant",
+              wavelength_max: Optional[float] = None) -> Tuple[np.ndarray, np.ndarray]:
+    """One-sided PSD of a spatial signal by Welch's method, in units^2/(rad/m) over Omega.
+
+    x       samples at constant spacing ds [m]
+    nperseg segment length; default_nperseg(len(x), ds, wavelength_max) if None
+    overlap minimum fractional overlap of consecutive segments (0.5).  The number of segments
+            K = ceil((N - M)/(M*(1-overlap))) + 1 and their starts are spread evenly over
+            [0, N-M], so no sample is dropped (the actual overlap is >= `overlap`).
+    detrend "constant" (remove segment mean), "linear", or None
+
+    Window: periodic Hann.  Scaling: per segment P_f = |FFT(w*x)|^2 * ds / sum(w^2) is the
+    two-sided density in units^2/(cycle/m); bins 1..M/2-1 are doubled for the one-sided G_f,
+    and G_Omega = G_f/(2*pi) at Omega = 2*pi*f.  Then sum(G_Omega)*dOmega equals the mean
+    windowed segment variance (Parseval), i.e. variance = integral G dOmega.
+
+    Returns (omega [rad/m], G [units^2/(rad/m)]), omega[0] = 0.
+    """
+    x = np.asarray(x, dtype=float).reshape(-1)
+    n = x.size
+    if n < 2 or not (ds > 0):
+        raise ValueError("welch_psd needs at least 2 samples and ds > 0")
+    m = int(nperseg) if nperseg else default_nperseg(n, ds, wavelength_max)
+    m = max(2, min(m, n))
+    starts = welch_segment_starts(n, m, overlap)
+    w = 0.5 - 0.5 * np.cos(2.0 * np.pi * np.arange(m) / m)  # periodic Hann
+    t = np.arange(m, dtype=float)
+    acc = np.zeros(m // 2 + 1)
+    for st in starts:
+        seg = x[st:st + m]
+        if detrend == "constant":
+            seg = seg - seg.mean()
+        elif detrend == "linear":
+            seg = seg - np.polyval(np.polyfit(t, seg, 1), t)
+        acc += np.abs(np.fft.rfft(w * seg)) ** 2
+    p = acc / len(starts) * ds / np.sum(w ** 2)  # two-sided, per cycle/m
+    p[1:] *= 2.0
+    if m % 2 == 0:
+        p[-1] /= 2.0  # Nyquist bin is not mirrored
+    f = np.fft.rfftfreq(m, ds)
+    return 2.0 * np.pi * f, p / (2.0 * np.pi)
+
+
+def interp_loglog(x_new: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """Interpolate y(x) linearly in log-log; zeros/negatives stay 0; NaN outside [x0, x-1]."""
+    x_new = np.asarray(x_new, float)
+    x, y = np.asarray(x, float), np.asarray(y, float)
+    ok = (x > 0) & (y > 0)
+    out = np.full(x_new.shape, np.nan)
+    if ok.sum() < 2:
+        if np.all(y == 0):
+            out[(x_new >= x.min()) & (x_new <= x.max())] = 0.0
+        return out
+    inside = (x_new >= x[ok].min()) & (x_new <= x[ok].max()) & (x_new > 0)
+    out[inside] = np.exp(np.interp(np.log(x_new[inside]), np.log(x[ok]), np.log(y[ok])))
+    return out
+
+
+def octave_band_ratios(omega: np.ndarray, g_est: np.ndarray, omega_t: np.ndarray,
+                       g_target: np.ndarray, wavelength_min: float, wavelength_max: float
+                       ) -> List[Tuple[float, float, float]]:
+    """Mean of G_est/G_target over each full octave inside [2pi/lambda_max, 2pi/lambda_min].
+
+    Octaves are stacked downwards from Omega_max = 2*pi/lambda_min; a remaining partial octave
+    at the long-wavelength end is not used.  Returns [(Omega_lo, Omega_hi, ratio), ...] from
+    short to long wavelengths; ratio is NaN if an octave holds no estimate bin.
+    """
+    o_lo, o_hi = 2 * np.pi / wavelength_max, 2 * np.pi / wavelength_min
+    tgt = interp_loglog(omega, omega_t, g_target)
+    out = []
+    hi = o_hi
+    while hi / 2.0 >= o_lo * (1 - 1e-12):
+        lo = hi / 2.0
+        sel = (omega >= lo) & (omega < hi) & np.isfinite(tgt) & (tgt > 0)
+        r = float(np.mean(g_est[sel] / tgt[sel])) if sel.any() else float("nan")
+        out.append((lo, hi, r))
+        hi = lo
+    return out
+
+
+def fractional_octave_average(omega: np.ndarray, g: np.ndarray, fraction: int = 3,
+                              omega_min: Optional[float] = None,
+                              omega_max: Optional[float] = None
+                              ) -> Tuple[np.ndarray, np.ndarray]:
+    """Mean of g over 1/`fraction`-octave bands (for display of a noisy estimate).
+
+    Band centres are 2**(k/fraction) rad/m (k integer) within [omega_min, omega_max]
+    (default: the positive range of omega); bands holding no bin are dropped.
+    Returns (band centre [rad/m], band mean)."""
+    omega, g = np.asarray(omega, float), np.asarray(g, float)
+    pos = omega > 0
+    lo = omega_min if omega_min else omega[pos].min()
+    hi = omega_max if omega_max else omega[pos].max()
+    k = np.arange(math.floor(math.log2(lo) * fraction), math.ceil(math.log2(hi) * fraction) + 1)
+    centres = 2.0 ** (k / fraction)
+    half = 2.0 ** (0.5 / fraction)
+    oc, gm = [], []
+    for c in centres:
+        sel = pos & (omega >= c / half) & (omega < c * half)
+        if sel.any() and lo <= c <= hi:
+            oc.append(c)
+            gm.append(float(np.mean(g[sel])))
+    return np.array(oc), np.array(gm)
+
+
+# --------------------------------------------------------------------------------------------
+# Figure helpers
+# --------------------------------------------------------------------------------------------
+def _shade_segments(ax, track: Track, alpha: float = 1.0):
+    st, ln, kd = track.segments["start"], track.segments["length"], track.segments["kind"]
+    for a, l, k in zip(st, ln, kd):
+        k = int(round(k))
+        if k != 0:  # tangent stays white
+            ax.axvspan(a, a + l, color=SEGMENT_FILL.get(k, "#eeeeee"), alpha=alpha, lw=0,
+                       zorder=0)
+    for b in track.segment_bounds():
+        ax.axvline(b, color="#9a9a9a", lw=0.5, zorder=0.5)
+
+
+def _segment_legend_handles(track: Track):
+    kinds = sorted({int(round(k)) for k in track.segments["kind"]})
+    return [Patch(facecolor=SEGMENT_FILL.get(k, "#eee"), edgecolor="#9a9a9a", lw=0.5,
+                  label=SEGMENT_NAMES.get(k, f"kind {k}")) for k in kinds]
+
+
+def _segment_label(track: Track, i: int) -> str:
+    sg = track.segments
+    k = int(round(sg["kind"][i]))
+    name = SEGMENT_NAMES.get(k, f"kind {k}")
+    txt = f"{name}, {sg['length'][i]:g} m"
+    r = sg["radius"][i]
+    side = "left" if sg["side"][i] > 0 else "right"
+    if k == 2 and r > 0:
+        txt += f"\nR = {r:g} m {side}"
+    elif k == 1:
+        txt += f"\nto R = {r:g} m {side}" if r > 0 else "\nto straight"
+    if k in (1, 2) and sg["cant"][i] != 0:
+        txt += f", cant {sg['cant'][i] * 1e3:g} mm"
+    return txt
+
+
+def _interp_pose(track: Track, s_q: np.ndarray):
+    cl = track.centreline
+    s = cl["s"]
+    hd = np.unwrap(cl["heading"])
+    return np.interp(s_q, s, cl["x"]), np.interp(s_q, s, cl["y"]), np.interp(s_q, s, hd)
+
+
+# --------------------------------------------------------------------------------------------
+# Figures
+# --------------------------------------------------------------------------------------------
+def fig_track_plan(result: Result):
+    """Plan view x-y (equal aspect), coloured by segment kind, with short lines perpendicular
+    to the track at the segment transition points (paper Fig. 16/18).  Boundary ticks carry
+    their arc length; segments are numbered on the outside of the curve and described in the
+    legend (by kind only when there are more than 12 segments)."""
+    from matplotlib.lines import Line2D
+
+    tr = result.track
+    cl = tr.centreline
+    s, x, y = cl["s"], cl["x"], cl["y"]
+    with report_style():
+        fig, ax = plt.subplots(figsize=(A4_WIDTH_IN, 3.7), layout="constrained")
+        ext = max(np.ptp(x), np.ptp(y), 1.0)
+        tick = 0.05 * ext
+        bounds = tr.segment_bounds()
+        nseg = tr.n_segments
+        detailed = nseg <= 12
+        handles = []
+        seen = set()
+        ax.plot(x, y, color="#bbbbbb", lw=0.8, zorder=1)
+        for i in range(nseg):
+            a, b = bounds[i], bounds[i + 1]
+            k = int(round(tr.segments["kind"][i]))
+            sel = (s > a) & (s < b)
+            xa, ya, _ = _interp_pose(tr, np.array([a, b]))
+            xs = np.concatenate([[xa[0]], x[sel], [xa[1]]])
+            ys = np.concatenate([[ya[0]], y[sel], [ya[1]]])
+            col = SEGMENT_LINE.get(k, "k")
+            ax.plot(xs, ys, color=col, lw=2.0, solid_capstyle="butt", zorder=2)
+            if detailed:
+                handles.append(Line2D([], [], color=col, lw=2.0,
+                                      label=f"{i + 1}: " + _segment_label(tr, i).replace("\n", ", ")))
+            elif k not in seen:
+                handles.append(Line2D([], [], color=col, lw=2.0,
+                                      label=SEGMENT_NAMES.get(k, f"kind {k}")))
+                seen.add(k)
+        # Outside of the curve = opposite to the net turning direction.
+        turn = np.unwrap(cl["heading"])[-1] - np.unwrap(cl["heading"])[0]
+        out_global = -1.0 if turn >= 0 else 1.0   # multiplies the left normal
+
+        def out_side(a, b):
+            """Outside of the curve over [a, b]: -sign(mean curvature), global if straight."""
+            sel = (s >= a) & (s <= b)
+            k = float(np.mean(cl["curvature"][sel])) if sel.any() else 0.0
+            return -float(np.sign(k)) if abs(k) > 1e-9 else out_global
+
+        bx, by, bh = _interp_pose(tr, bounds)
+        span = 0.25 * (bounds[-1] - bounds[0]) / max(nseg, 1)
+        for px, py, h, sb in zip(bx, by, bh, bounds):
+            nx, ny = -np.sin(h), np.cos(h)
+            out = out_side(sb - span, sb + span)
+            ax.plot([px - nx * tick / 2, px + nx * tick / 2],
+                    [py - ny * tick / 2, py + ny * tick / 2], color="k", lw=1.1, zorder=3)
+            # arc-length label continues the tick on the inside of the curve
+            ux, uy = -out * nx, -out * ny
+            ang = math.degrees(math.atan2(uy, ux))
+            ha = "left"
+            if ang > 100 or ang <= -80:  # keep text readable (a little past vertical is fine)
+                ang += 180 if ang <= -80 else -180
+                ha = "right"
+            lx, ly = px + ux * tick * 0.6, py + uy * tick * 0.6
+            # invisible points along the label so that legend loc="best" avoids it
+            ax.plot(lx + ux * tick * np.linspace(0, 1.6, 5), ly + uy * tick * np.linspace(0, 1.6, 5),
+                    ls="none", marker="", alpha=0)
+            ax.text(lx, ly, f"s = {sb:g} m", rotation=ang,
+                    rotation_mode="anchor", ha=ha, va="center", fontsize=6.5, color="#333333",
+                    zorder=4)
+        if detailed:
+            mids = 0.5 * (bounds[:-1] + bounds[1:])
+            mx, my, mh = _interp_pose(tr, mids)
+            for i, (px, py, h) in enumerate(zip(mx, my, mh)):
+                nx, ny = -np.sin(h), np.cos(h)
+                out = out_side(bounds[i], bounds[i + 1])
+                ax.plot([px + out * nx * tick * 0.75], [py + out * ny * tick * 0.75], ls="none",
+                        marker="", alpha=0)
+                ax.text(px + out * nx * tick * 0.75, py + out * ny * tick * 0.75, str(i + 1),
+                        ha="center", va="center", fontsize=7, zorder=5,
+                        bbox=dict(boxstyle="circle,pad=0.2", fc="white",
+                                  ec=SEGMENT_LINE.get(int(round(tr.segments["kind"][i])), "k"),
+                                  lw=0.8))
+        ax.plot(x[0], y[0], "o", ms=4.5, color="k", zorder=4)
+        handles.append(Line2D([], [], ls="none", marker="o", ms=4.5, color="k",
+                              label=f"start, s = {s[0]:g} m"))
+        ax.set_aspect("equal", adjustable="datalim")
+        pad = 0.1 * ext
+        ax.set_xlim(x.min() - pad, x.max() + pad)
+        ax.set_ylim(y.min() - pad, y.max() + pad)
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("y [m]")
+        L = tr.attrs.get("length", s[-1] - s[0])
+        ax.set_title(f"Track geometry, plan view: {float(L):g} m, {nseg} segment"
+                     f"{'s' if nseg != 1 else ''} (ticks at segment transition points)")
+        ax.legend(handles=handles, loc="best", handlelength=1.5, fontsize=7)
+    return fig
+
+
+def fig_curvature_cant(result: Result):
+    """Curvature [1/km] and cant [mm] (+ cant angle [mrad]) versus s, segments shaded."""
+    tr = result.track
+    cl = tr.centreline
+    s = cl["s"]
+    with report_style():
+        fig, (a1, a2) = plt.subplots(2, 1, figsize=(A4_WIDTH_IN, 4.6), sharex=True,
+                                     layout="constrained")
+        for ax in (a1, a2):
+            _shade_segments(ax, tr)
+        a1.plot(s, cl["curvature"] * 1e3, color="#1f5fa8", lw=1.3, label="curvature")
+        a1.set_ylabel("curvature [1/km]\n(+ left)")
+        a1.set_title("Track curvature and cant", loc="left")
+        a1.axhline(0, color="k", lw=0.5)
+        # Annotate radius of constant-curvature curves.
+        for i in range(tr.n_segments):
+            if int(round(tr.segments["kind"][i])) == 2 and tr.segments["radius"][i] > 0:
+                a, l = tr.segments["start"][i], tr.segments["length"][i]
+                kap = np.interp(a + 0.5 * l, s, cl["curvature"]) * 1e3
+                a1.annotate(f"R = {tr.segments['radius'][i]:g} m", (a + 0.5 * l, kap),
+                            xytext=(0, -11 if kap >= 0 else 4), textcoords="offset points",
+                            ha="center", fontsize=7, color="#1f5fa8")
+        h_seg = _segment_legend_handles(tr)
+        a1.legend(handles=h_seg, loc="lower right", bbox_to_anchor=(1.0, 1.0), ncol=len(h_seg),
+                  frameon=False, borderaxespad=0.2, handlelength=1.4, fontsize=7)
+        lo, hi = a1.get_ylim()
+        span = max(hi - lo, 1e-9)
+        a1.set_ylim(lo - 0.08 * span, hi + 0.15 * span)
+
+        c_mm = cl["cant"] * 1e3
+        l1, = a2.plot(s, c_mm, color="#b2182b", lw=1.3, label="cant [mm] (left axis)")
+        a2.set_ylabel("cant [mm]")
+        a2.set_xlabel("s [m]")
+        a2.axhline(0, color="k", lw=0.5)
+        lo, hi = min(c_mm.min(), 0.0), max(c_mm.max(), 0.0)
+        span = max(hi - lo, 1.0)
+        a2.set_ylim(lo - 0.08 * span, hi + 0.2 * span)
+        # Cant angle on a twin axis, scaled so that angle = asin(cant/cant_base) overlays the
+        # cant line exactly when the file is consistent (a visual check).
+        at = a2.twinx()
+        at.grid(False)
+        ang = cl["cant_angle"] * 1e3
+        l2, = at.plot(s, ang, color="#333333", lw=1.0, ls=(0, (4, 3)), label="cant angle [mrad] (right axis)")
+        base = tr.attrs.get("cant_base")
+        y0, y1 = a2.get_ylim()
+        if isinstance(base, (int, float)) and base > 0 and max(abs(y0), abs(y1)) < base * 1e3:
+            at.set_ylim(np.arcsin(y0 / 1e3 / base) * 1e3, np.arcsin(y1 / 1e3 / base) * 1e3)
+            note = f"cant base {base:g} m"
+        else:
+            note = None
+        at.set_ylabel("cant angle [mrad]")
+        # legend on the twin axes so that it is drawn above both lines
+        at.legend(handles=[l1, l2], loc="best", title=note, title_fontsize=7, alignment="left")
+        a2.set_xlim(s[0], s[-1])
+    return fig
+
+
+def fig_irregularities(result: Result):
+    """Four stacked panels: alignment, vertical profile, gauge variation, cross level [mm]."""
+    ir = result.irregularities
+    s = ir.data["s"]
+    with report_style():
+        fig, axes = plt.subplots(4, 1, figsize=(A4_WIDTH_IN, 7.2), sharex=True,
+                                 layout="constrained")
+        for ax, c in zip(axes, CHANNELS):
+            v = ir.data[c] * 1e3
+            ax.plot(s, v, color=CHANNEL_COLORS[c], lw=0.7)
+            ax.axhline(0, color="k", lw=0.4)
+            ax.set_ylabel(f"{CHANNEL_TITLES[c].lower()}\n[mm]")
+            peak = float(np.max(np.abs(v))) if v.size else 0.0
+            if peak == 0.0:
+                note = "channel disabled (all zeros)"
+                ax.set_ylim(-1.0, 1.0)
+            else:
+                rms = float(np.sqrt(np.mean(v ** 2)))
+                note = f"RMS {rms:.2f} mm, max |·| {peak:.2f} mm"
+                ax.set_ylim(-1.3 * peak, 1.3 * peak)
+            ax.text(0.995, 0.95, note, transform=ax.transAxes, ha="right", va="top", fontsize=7,
+                    bbox=dict(boxstyle="round,pad=0.2", fc="white", ec="#cccccc", lw=0.5,
+                              alpha=0.9))
+        axes[-1].set_xlabel("s [m]")
+        axes[-1].set_xlim(s[0], s[-1])
+        fig.suptitle(f"Track irregularities — {ir.describe()}", fontsize=9.5)
+    return fig
+
+
+def _band_rms(omega_t, g_t, o_lo, o_hi) -> float:
+    """sqrt(integral of G over [o_lo, o_hi]) with log-log interpolation of the target."""
+    o = np.geomspace(o_lo, o_hi, 4000)
+    gi = interp_loglog(o, omega_t, g_t)
+    gi = np.where(np.isfinite(gi), gi, 0.0)
+    return float(np.sqrt(np.sum(0.5 * (gi[1:] + gi[:-1]) * np.diff(o))))
+
+
+def fig_irregularity_psd(result: Result, nperseg: Optional[int] = None):
+    """Welch estimate vs target one-sided PSD G(Omega), one log-log panel per channel.
+
+    x range: a factor 4 beyond the synthesis band on both sides (capped at the Nyquist
+    wavenumber), or the target grid when no band is recorded.  The estimate falls by many
+    decades outside the band (nothing was synthesised there); the y range follows the target
+    and the in-band estimate so that this roll-off does not squash the plot.
+    """
+    from matplotlib.lines import Line2D
+
+    ir = result.irregularities
+    s = ir.data["s"]
+    ds = ir.step
+    lam_min, lam_max = ir.band()
+    m = int(nperseg or default_nperseg(s.size, ds, lam_max))
+    m = max(2, min(m, s.size))
+    nseg = len(welch_segment_starts(s.size, m))
+    o_nyq = np.pi / ds
+    with report_style():
+        fig, axes = plt.subplots(2, 2, figsize=(A4_WIDTH_IN, 5.8), layout="constrained")
+        any_target = False
+        for ax, c in zip(axes.flat, CHANNELS):
+            x = ir.data[c]
+            om, g = welch_psd(x, ds, nperseg=m)
+            om, g = om[1:], g[1:]
+            tgt = None
+            if ir.target is not None and c in ir.target:
+                ot, gt = ir.target["omega"], ir.target[c]
+                if np.any(gt > 0):
+                    tgt = (ot[ot > 0], gt[ot > 0])
+            have_signal = bool(np.any(x != 0))
+            if lam_min and lam_max:
+                xl = (0.25 * 2 * np.pi / lam_max, min(4 * 2 * np.pi / lam_min, o_nyq))
+            elif tgt is not None:
+                xl = (max(tgt[0].min(), om[0] * 0.5), min(tgt[0].max(), o_nyq))
+            else:
+                xl = (om[0], om[-1])
+            if lam_min and lam_max:
+                ax.axvspan(2 * np.pi / lam_max, 2 * np.pi / lam_min, color="#f0f0f0", lw=0,
+                           zorder=0)
+                for lam in (lam_max, lam_min):
+                    ax.axvline(2 * np.pi / lam, color="#555555", lw=0.8, ls="--", zorder=1)
+            ys = []
+            if tgt is not None:
+                any_target = True
+                ax.loglog(tgt[0], tgt[1], color="k", lw=1.3, zorder=3)
+                sel = (tgt[0] >= xl[0]) & (tgt[0] <= xl[1])
+                ys.append(tgt[1][sel])
+            if have_signal:
+                col = CHANNEL_COLORS[c]
+                ax.loglog(om, g, color=col, lw=0.7, alpha=0.45, zorder=2)
+                # 1/3-octave band means of the estimate: readable even with few segments
+                bo_lo = 2 * np.pi / lam_max if lam_max else None
+                bo_hi = 2 * np.pi / lam_min if lam_min else None
+                oc3, g3 = fractional_octave_average(om, g, 3, bo_lo, bo_hi)
+                ok = g3 > 0
+                ax.loglog(oc3[ok], g3[ok], color=col, lw=1.0, marker="o", ms=2.8, zorder=4)
+                inb = (om >= xl[0]) & (om <= xl[1])
+                if lam_min and lam_max:
+                    inb &= (om >= 2 * np.pi / lam_max) & (om <= 2 * np.pi / lam_min)
+                ys.append(g[inb])
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            ax.set_xlim(*xl)
+            yy = np.concatenate(ys) if ys else np.array([])
+            yy = yy[np.isfinite(yy) & (yy > 0)]
+            if yy.size:
+                top = yy.max() * 5.0
+                ax.set_ylim(max(yy.min() * 0.2, top * 1e-9), top)
+            rms = float(np.sqrt(np.mean((x - x.mean()) ** 2))) * 1e3
+            ttl = f"{CHANNEL_TITLES[c]}: RMS {rms:.2f} mm"
+            if not have_signal:
+                ax.text(0.5, 0.5, "channel disabled (all zeros)", transform=ax.transAxes,
+                        ha="center", va="center", fontsize=8, color="#555555",
+                        bbox=dict(boxstyle="round,pad=0.3", fc="white", ec="#cccccc", lw=0.5))
+                ttl = f"{CHANNEL_TITLES[c]}: disabled"
+                if tgt is None:
+                    ax.set_ylim(1e-12, 1e-4)
+            elif tgt is not None and lam_min and lam_max:
+                ttl += f" (target {_band_rms(tgt[0], tgt[1], 2 * np.pi / lam_max, 2 * np.pi / lam_min) * 1e3:.2f})"
+            ax.set_title(ttl, fontsize=8)
+            ax.set_xlabel("Ω [rad/m]")
+            ax.set_ylabel("G(Ω) [m²/(rad/m)]")
+            ax.grid(True, which="major", lw=0.4)
+            ax.grid(True, which="minor", lw=0.25, alpha=0.35)
+            sec = ax.secondary_xaxis("top", functions=(_om2lam, _om2lam))
+            sec.set_xlabel("λ [m]", fontsize=7, labelpad=1)
+            sec.tick_params(labelsize=6.5, direction="in")
+            sec.xaxis.set_minor_locator(NullLocator())  # minor ticks here cost ~1 s per figure
+        handles = [Line2D([], [], color="k", lw=1.3, label="target")] if any_target else []
+        handles.append(Line2D([], [], color="#777777", lw=0.7, alpha=0.6,
+                              label=f"Welch estimate (Hann, {nseg} × {m * ds:g} m)"))
+        handles.append(Line2D([], [], color="#777777", lw=1.0, marker="o", ms=2.8,
+                              label="1/3-octave means"))
+        if lam_min and lam_max:
+            handles.append(Patch(facecolor="#f0f0f0", edgecolor="#555555", ls="--", lw=0.8,
+                                 label=f"band {lam_min:g}–{lam_max:g} m"))
+        # (loc="outside ..." needs matplotlib >= 3.7; Debian 12 has 3.6: reserve a strip instead)
+        fig.get_layout_engine().set(rect=(0.0, 0.045, 1.0, 0.955))
+        fig.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 0.0),
+                   ncol=len(handles), fontsize=7, frameon=False, handlelength=1.8)
+        fig.suptitle(f"Irregularity PSD, one-sided in Ω: {ir.describe()}", fontsize=9.5)
+    return fig
+
+
+def _om2lam(v):
+    v = np.asarray(v, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(v > 0, 2 * np.pi / np.where(v > 0, v, 1.0), np.inf)
+
+
+# --------------------------------------------------------------------------------------------
+# Registry and driver
+# --------------------------------------------------------------------------------------------
+@dataclass
+class FigureSpec:
+    suffix: str                                  # file name: <stem>_<suffix>.png
+    is_available: Callable[[Result], bool]
+    make: Callable[[Result], "plt.Figure"]
+    description: str = ""
+
+
+FIGURES: List[FigureSpec] = [
+    FigureSpec("track_plan", lambda r: r.track is not None, fig_track_plan,
+               "plan view with segment transition ticks"),
+    FigureSpec("track_curvature_cant", lambda r: r.track is not None, fig_curvature_cant,
+               "curvature and cant versus s"),
+    FigureSpec("irregularities", lambda r: r.irregularities is not None, fig_irregularities,
+               "alignment, vertical, gauge, cross level versus s"),
+    FigureSpec("irregularity_psd",
+               lambda r: r.irregularities is not None and r.irregularities.data["s"].size >= 16,
+               fig_irregularity_psd, "Welch PSD estimate against target"),
+    # Later: FigureSpec("bodies_lateral", lambda r: "bodies" in r.groups, fig_bodies_lateral),
+    #        FigureSpec("stats", lambda r: "stats" in r.groups, fig_stats), ...
+]
+
+
+def make_figures(result: Result, outdir: Optional[str] = None, stem: Optional[str] = None,
+                 dpi: int = DPI, fmt: str = "png") -> List[str]:
+    """Write every figure the result's content allows; return the written paths."""
+    outdir = outdir or (os.path.dirname(os.path.abspath(result.path)))
+    stem = stem or result.stem
+    os.makedirs(outdir, exist_ok=True)
+    written = []
+    for spec in FIGURES:
+        if not spec.is_available(result):
+            continue
+        fig = spec.make(result)
+        path = os.path.join(outdir, f"{stem}_{spec.suffix}.{fmt}")
+        try:
+            fig.savefig(path, dpi=dpi)
+        finally:
+            plt.close(fig)
+        written.append(path)
+    return written

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# End-to-end checks of the workbench command line: shipped scenarios run and plot, bad input exits
+# 1 with file:line messages and writes nothing, help and --version work, nothing prompts.
+# usage: cli_test.sh WORKBENCH_BINARY   (run from the repository root)
+set -u
+WB="$1"
+PY=/usr/bin/python3
+TMP="$(mktemp -d)"
+trap 'rm -rf "$TMP"' EXIT
+pass=0; fail=0
+ok()  { pass=$((pass + 1)); echo "ok: $1"; }
+bad() { fail=$((fail + 1)); echo "FAILED: $1"; }
+
+# 1. Every shipped track scenario runs, writes HDF5, and the plots are drawn.
+for sc in scenarios/tracks/*.lua; do
+  [ "$(basename "$sc")" = lib.lua ] && continue
+  out="$TMP/$(basename "$sc" .lua).h5"
+  if "$WB" run "$sc" --out "$out" --quiet </dev/null >"$TMP/log" 2>&1 && [ -f "$out" ] && [ ! -f "$out.tmp" ]; then
+    ok "run $sc"
+  else
+    bad "run $sc: $(cat "$TMP/log")"; continue
+  fi
+  if "$PY" plots/plot_run.py "$out" >"$TMP/plog" 2>&1; then ok "plots $sc"; else bad "plots $sc: $(cat "$TMP/plog")"; fi
+done
+n=$(ls "$TMP"/manchester_r500_irregular_*.png 2>/dev/null | wc -l)
+[ "$n" -ge 4 ] && ok "irregular track gives >= 4 figures ($n)" || bad "irregular track gave $n figures"
+
+# 2. Bad input: exit code 1, the file:line message on stderr, no result file.
+out="$TMP/bad.h5"
+"$WB" run tests/scenario/bad/many.lua --out "$out" </dev/null >"$TMP/o" 2>"$TMP/e"; rc=$?
+[ $rc -eq 1 ] && ok "bad scenario exits 1" || bad "bad scenario exit code $rc"
+grep -q "^tests/scenario/bad/many.lua:5: track.segments\[2\] (curve): unknown key 'raduis' (did you mean 'radius'?)$" "$TMP/e" \
+  && ok "bad scenario message" || bad "bad scenario message: $(cat "$TMP/e")"
+grep -q "^6 problems found; nothing was run.$" "$TMP/e" && ok "problem count" || bad "problem count: $(cat "$TMP/e")"
+[ ! -e "$out" ] && [ ! -e "$out.tmp" ] && ok "no result for bad input" || bad "result written for bad input"
+
+"$WB" check scenarios/tracks/manchester_r500.lua --set track.step=-1 </dev/null >"$TMP/o" 2>"$TMP/e"; rc=$?
+[ $rc -eq 1 ] && grep -q "^<command line>: track: step must be > 0 m, got -1$" "$TMP/e" \
+  && ok "check with bad --set" || bad "check with bad --set ($rc): $(cat "$TMP/e")"
+"$WB" check scenarios/tracks/manchester_r500.lua </dev/null >"$TMP/o" 2>&1 && ok "check ok" || bad "check: $(cat "$TMP/o")"
+
+# 3. Help, version, usage errors.
+"$WB" help scenario >"$TMP/h" 2>&1 && grep -q "irregularities" "$TMP/h" && grep -q "rail_inclination (number, rad) default 0.025" "$TMP/h" \
+  && ok "help scenario" || bad "help scenario: $(head -5 "$TMP/h")"
+"$WB" --version 2>&1 | grep -q "^railbench [0-9]" && ok "--version" || bad "--version"
+"$WB" frobnicate </dev/null >/dev/null 2>&1; rc=$?
+[ $rc -ne 0 ] && ok "unknown command fails" || bad "unknown command exit $rc"
+
+echo "$pass passed, $fail failed"
+[ $fail -eq 0 ]
