@@ -53,6 +53,10 @@ struct IrregularitySpec {
   double wavelength_max = 70.0;          // [m]
   int components = 2000;                 // number of cosines per channel
   double step = 0.1;                     // [m] spline sampling step (paper: 0.1 m)
+  // (Added by the track module.) Draw each cosine's frequency uniformly inside its band of width
+  // dOmega (true), or put it at the band centre (false: the realisation then repeats every
+  // 2 pi / dOmega metres).
+  bool randomize_frequencies = true;
   // Csv: columns s, alignment, vertical, gauge, cross_level in metres (header line allowed).
   std::string csv_path;  // resolved absolute path
   SourceLoc loc;

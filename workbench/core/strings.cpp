@@ -1,0 +1,59 @@
+#include "workbench/core/strings.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+namespace rb {
+namespace {
+char lower(char c) {
+  return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+}
+}  // namespace
+
+int editDistance(std::string_view a, std::string_view b) {
+  const std::size_t n = a.size();
+  const std::size_t m = b.size();
+  // Three rows of the dynamic-programming table: i-2, i-1, i.
+  std::vector<int> prev2(m + 1), prev(m + 1), cur(m + 1);
+  for (std::size_t j = 0; j <= m; ++j) prev[j] = static_cast<int>(j);
+  for (std::size_t i = 1; i <= n; ++i) {
+    cur[0] = static_cast<int>(i);
+    for (std::size_t j = 1; j <= m; ++j) {
+      const int cost = lower(a[i - 1]) == lower(b[j - 1]) ? 0 : 1;
+      int d = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + cost});
+      if (i > 1 && j > 1 && lower(a[i - 1]) == lower(b[j - 2]) &&
+          lower(a[i - 2]) == lower(b[j - 1])) {
+        d = std::min(d, prev2[j - 2] + 1);
+      }
+      cur[j] = d;
+    }
+    std::swap(prev2, prev);
+    std::swap(prev, cur);
+  }
+  return prev[m];
+}
+
+std::string closestMatch(std::string_view word, const std::vector<std::string>& candidates) {
+  const int limit = std::max(1, static_cast<int>(word.size() / 3));
+  int best = limit + 1;
+  std::string match;
+  for (const auto& c : candidates) {
+    const int d = editDistance(word, c);
+    if (d < best) {
+      best = d;
+      match = c;
+    }
+  }
+  return match;
+}
+
+std::string join(const std::vector<std::string>& items, std::string_view sep) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) out += sep;
+    out += items[i];
+  }
+  return out;
+}
+
+}  // namespace rb

@@ -1,0 +1,21 @@
+#pragma once
+// Small string helpers shared by the modules: edit distance and "did you mean" suggestions for
+// error messages, joining lists of names.
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rb {
+
+// Optimal-string-alignment distance (Levenshtein plus adjacent transposition), ASCII
+// case-insensitive: editDistance("rk5", "rk4") == 1, editDistance("bfd", "bdf") == 1.
+int editDistance(std::string_view a, std::string_view b);
+
+// The candidate closest to `word` for a "did you mean" hint, or "" when none is close enough.
+// Close enough: distance <= max(1, word.size() / 3). Ties go to the earlier candidate.
+std::string closestMatch(std::string_view word, const std::vector<std::string>& candidates);
+
+// Items separated by `sep`: join({"a", "b"}) == "a, b".
+std::string join(const std::vector<std::string>& items, std::string_view sep = ", ");
+
+}  // namespace rb

@@ -1,0 +1,69 @@
+#pragma once
+// Plain input structs for a vehicle (built by workbench/scenario from the Lua vehicle{} block,
+// compiled by the vehicle module). SI units. Each carries the SourceLoc of its Lua block.
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "workbench/core/error.hpp"
+
+namespace rb::vehicle {
+
+enum class BodyKind { CarBody, Bogie, Wheelset };
+
+// A rigid body. Its coordinates (s, y, z, roll, pitch, yaw) are relative to its own body track
+// frame (paper Eq. 2-3, Fig. 2).
+struct BodySpec {
+  std::string name;           // unique, e.g. "car", "bogie1", "ws1"
+  BodyKind kind = BodyKind::CarBody;
+  double mass = 0.0;          // [kg]
+  Eigen::Vector3d inertia = Eigen::Vector3d::Zero();  // [kg m^2] Ixx (roll), Iyy (pitch), Izz (yaw)
+  double x = 0.0;             // [m] longitudinal position of the centre of mass relative to the
+                              //     vehicle reference point, positive forward (body s = s_vehicle + x)
+  double height = 0.0;        // [m] height of the centre of mass above the top of rail plane
+  SourceLoc loc;
+};
+
+enum class ElementKind {
+  SpringDamper,        // f = K d + D d_dot                                 (Appendix A)
+  SeriesSpringDamper,  // f_dot + (K_series / D) f = K_series d_dot; f is a state (Appendix A)
+  ShearSpring,         // f = K_shear d
+  BendingSpring,       // M = K_bend theta (relative rotation about `direction` axis)
+  Bumpstop,            // f = F(d) cubic spline through a table, zero inside the clearance
+};
+
+// How the deformation d of an element is measured (Eq. 27-31): along the line between the two
+// attachment points (Axial, Eq. 30 with undeformed length l0) or as one component of the relative
+// displacement of the attachment points in the master track frame (X, Y, Z: bushing-like
+// directional elements, as the per-direction stiffnesses of the paper's Table 4). For a
+// BendingSpring the direction is the rotation axis.
+enum class Direction { Axial, X, Y, Z };
+
+struct ElementSpec {
+  std::string name;
+  ElementKind kind = ElementKind::SpringDamper;
+  std::string body1, body2;  // body names; body1 is the master (its track frame is used)
+  Eigen::Vector3d point1 = Eigen::Vector3d::Zero();  // [m] attachment point in body1's frame
+  Eigen::Vector3d point2 = Eigen::Vector3d::Zero();  // [m] attachment point in body2's frame
+  Direction direction = Direction::Axial;
+  double stiffness = 0.0;         // [N/m] or [N m/rad] (bending)
+  double damping = 0.0;           // [N s/m]
+  double series_stiffness = 0.0;  // [N/m] (SeriesSpringDamper)
+  double length0 = 0.0;           // [m] undeformed length (Axial); directional: preload offset 0
+  double preload = 0.0;           // [N] force at zero deformation (e.g. to carry static weight)
+  std::vector<double> table_d;    // [m] bumpstop deformation table (|d| beyond clearance ...)
+  std::vector<double> table_f;    // [N] bumpstop force table
+  SourceLoc loc;
+};
+
+struct VehicleSpec {
+  std::string name;
+  std::vector<BodySpec> bodies;
+  std::vector<ElementSpec> elements;
+  double speed = 0.0;         // [m/s] constant forward velocity V
+  double wheel_radius = 0.46; // [m] nominal rolling radius r0 (wheelsets)
+  double start = 0.0;         // [m] arc length of the vehicle reference point at t = 0
+  SourceLoc loc;
+};
+
+}  // namespace rb::vehicle
