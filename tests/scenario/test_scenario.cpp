@@ -164,3 +164,37 @@ TEST(ScenarioGood, ShippedTracksLoadThroughRequire) {
     EXPECT_EQ(spec.track.irregularities.source, rb::track::IrregularitySource::None);
   }
 }
+
+TEST(ScenarioVehicle, VehicleFileThroughRequire) {
+  auto spec = loadScenario("tests/scenario/good/vehicle.lua", opts());
+  ASSERT_TRUE(spec.has_vehicle);
+  const auto& v = spec.vehicle;
+  EXPECT_EQ(v.name, "two_body");
+  EXPECT_DOUBLE_EQ(v.speed, 12.0);
+  ASSERT_EQ(v.bodies.size(), 2u);
+  EXPECT_EQ(v.bodies[0].kind, rb::vehicle::BodyKind::Frame);
+  EXPECT_EQ(v.bodies[1].kind, rb::vehicle::BodyKind::Wheelset);
+  EXPECT_DOUBLE_EQ(v.bodies[1].inertia[1], 112.0);
+  ASSERT_EQ(v.elements.size(), 4u);
+  EXPECT_EQ(v.elements[1].name, "primary_2");
+  EXPECT_DOUBLE_EQ(v.elements[1].point1[1], -1.0);
+  EXPECT_EQ(v.elements[1].direction, rb::vehicle::Direction::Z);
+  EXPECT_EQ(v.elements[2].kind, rb::vehicle::ElementKind::SeriesSpringDamper);
+  EXPECT_DOUBLE_EQ(v.elements[2].series_stiffness, 1e6);
+  EXPECT_EQ(v.elements[3].kind, rb::vehicle::ElementKind::Bumpstop);
+  EXPECT_EQ(v.elements[3].table_f, (std::vector<double>{0, 600}));
+  EXPECT_EQ(v.elements[0].loc.file, "tests/scenario/good/vehicles/two_body.lua");
+  EXPECT_EQ(v.elements[0].loc.line, 6);
+}
+
+TEST(ScenarioVehicle, BadVehicleReportsEveryProblem) {
+  const std::string f = kBad + "vehicle.lua";
+  EXPECT_EQ(errorsOf(f),
+            f + ":5: vehicle.bodies[1] (body): mass must be > 0 kg, got -1\n" +
+            f + ":5: vehicle.bodies[1] (body): inertia must be > 0 kg m^2 in every axis\n" +
+            f + ":6: vehicle.bodies[2] (body): kind: unknown value 'carbody'; valid: car, bogie, wheelset, frame\n" +
+            f + ":6: vehicle.bodies[2] (body): inertia must be {x, y, z} of numbers [kg m^2], got table\n" +
+            f + ":9: vehicle.elements[1] (spring_damper): unknown key 'stiffnes' (did you mean 'stiffness'?)\n" +
+            f + ":9: vehicle.elements[1] (spring_damper): direction: unknown value 'q' (did you mean 'x'?); valid: axial, x, y, z\n" +
+            f + ":10: vehicle.elements[2] (bumpstop): table[1] must be a pair of numbers {a, b}");
+}

@@ -17,13 +17,15 @@ namespace fs = std::filesystem;
 namespace rb::scenario {
 
 const std::vector<std::string>& topLevelBlocks() {
-  static const std::vector<std::string> names = {"track", "solver", "run"};
+  static const std::vector<std::string> names = {"track", "vehicle", "solver", "run"};
   return names;
 }
 
 const std::vector<std::string>& nestedConstructors() {
-  static const std::vector<std::string> names = {"tangent", "transition", "curve", "psd",
-                                                 "measured"};
+  static const std::vector<std::string> names = {
+      "tangent",      "transition",    "curve",        "psd",         "measured",
+      "body",         "spring_damper", "series_damper", "shear_spring", "bending_spring",
+      "bumpstop"};
   return names;
 }
 

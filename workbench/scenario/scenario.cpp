@@ -180,6 +180,58 @@ class Reader {
     return out;
   }
 
+  bool boolean(const std::string& name) {
+    const KeySpec& k = key(name);
+    const Node* v = value(name);
+    if (!v) return k.num_default != 0.0;
+    if (v->type != Node::Type::Bool) {
+      error(*v, name + " must be true or false, got " + v->describe());
+      return k.num_default != 0.0;
+    }
+    return v->boolean;
+  }
+
+  // {x, y, z}: true when present and well-formed (out stays zero otherwise).
+  bool vec3(const std::string& name, Eigen::Vector3d& out) {
+    const KeySpec& k = key(name);
+    const Node* v = value(name);
+    out.setZero();
+    if (!v) return false;
+    bool ok = v->type == Node::Type::Table && v->fields.empty() && v->items.size() == 3;
+    for (std::size_t i = 0; ok && i < 3; ++i) ok = v->items[i].type == Node::Type::Number;
+    if (!ok) {
+      error(*v, name + " must be {x, y, z} of numbers" + unitText(k) + ", got " + v->describe());
+      return false;
+    }
+    for (int i = 0; i < 3; ++i) out[i] = v->items[static_cast<std::size_t>(i)].number;
+    if (!out.allFinite()) {
+      error(*v, name + " must be finite");
+      return false;
+    }
+    return true;
+  }
+
+  // {{a, b}, ...}: fills a and b; false if absent or malformed.
+  bool pairList(const std::string& name, std::vector<double>& a, std::vector<double>& b) {
+    const Node* v = value(name);
+    if (!v) return false;
+    if (v->type != Node::Type::Table || !v->fields.empty() || v->items.empty()) {
+      error(*v, name + " must be a list of pairs {{a, b}, ...}, got " + v->describe());
+      return false;
+    }
+    for (std::size_t i = 0; i < v->items.size(); ++i) {
+      const Node& p = v->items[i];
+      if (p.type != Node::Type::Table || p.items.size() != 2 || !p.fields.empty() ||
+          p.items[0].type != Node::Type::Number || p.items[1].type != Node::Type::Number) {
+        error(*v, name + "[" + std::to_string(i + 1) + "] must be a pair of numbers {a, b}");
+        return false;
+      }
+      a.push_back(p.items[0].number);
+      b.push_back(p.items[1].number);
+    }
+    return true;
+  }
+
   bool has(const std::string& name) const {
     const Node* v = node_.field(name);
     return v && v->type != Node::Type::Nil;
@@ -386,6 +438,7 @@ void buildIrregularities(const Node& n, const std::string& path, LuaHost& host,
   out.components = static_cast<int>(r.number("components"));
   out.step = r.number("step");
   out.scale = r.number("scale");
+  out.randomize_frequencies = r.boolean("randomize_frequencies");
   r.pair("wavelengths", out.wavelength_min, out.wavelength_max);
   std::vector<std::string> channels = r.stringList("channels");
   static const char* names[track::kChannels] = {"alignment", "vertical", "gauge", "cross_level"};
@@ -443,6 +496,67 @@ void buildTrack(const Node& n, LuaHost& host, track::TrackSpec& t, Diagnostics& 
   }
   if (const Node* irr = r.blockValue("irregularities"))
     buildIrregularities(*irr, "track.irregularities", host, t.irregularities, d);
+}
+
+
+void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d) {
+  Reader r(n, block("vehicle"), "vehicle", d);
+  v.loc = n.loc;
+  v.name = r.string("name");
+  v.speed = r.number("speed");
+  v.wheel_radius = r.number("wheel_radius");
+  v.start = r.number("start");
+  auto bodies = r.blockList("bodies");
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const Node& b = *bodies[i];
+    Reader br(b, block("body"), "vehicle.bodies[" + std::to_string(i + 1) + "]", d);
+    vehicle::BodySpec body;
+    body.loc = b.loc;
+    body.name = br.string("name");
+    std::string kind = br.choice("kind");
+    body.kind = kind == "bogie"      ? vehicle::BodyKind::Bogie
+                : kind == "wheelset" ? vehicle::BodyKind::Wheelset
+                : kind == "frame"    ? vehicle::BodyKind::Frame
+                                     : vehicle::BodyKind::CarBody;
+    body.mass = br.number("mass");
+    if (br.vec3("inertia", body.inertia) && !(body.inertia.minCoeff() > 0))
+      br.error(b, "inertia must be > 0 kg m^2 in every axis");
+    body.x = br.number("x");
+    body.height = br.number("height");
+    v.bodies.push_back(body);
+  }
+  if (r.has("elements")) {
+    auto elements = r.blockList("elements");
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      const Node& e = *elements[i];
+      Reader er(e, block(e.kind), "vehicle.elements[" + std::to_string(i + 1) + "]", d);
+      vehicle::ElementSpec el;
+      el.loc = e.loc;
+      el.kind = e.kind == "series_damper"    ? vehicle::ElementKind::SeriesSpringDamper
+                : e.kind == "shear_spring"   ? vehicle::ElementKind::ShearSpring
+                : e.kind == "bending_spring" ? vehicle::ElementKind::BendingSpring
+                : e.kind == "bumpstop"       ? vehicle::ElementKind::Bumpstop
+                                             : vehicle::ElementKind::SpringDamper;
+      el.name = er.string("name");
+      el.body1 = er.string("from");
+      el.body2 = er.string("to");
+      er.vec3("at_from", el.point1);
+      er.vec3("at_to", el.point2);
+      std::string dir = er.choice("direction");
+      el.direction = dir == "x"   ? vehicle::Direction::X
+                     : dir == "y" ? vehicle::Direction::Y
+                     : dir == "z" ? vehicle::Direction::Z
+                                  : vehicle::Direction::Axial;
+      const BlockSpec& bs = block(e.kind);
+      if (bs.key("stiffness")) el.stiffness = er.number("stiffness");
+      if (bs.key("damping")) el.damping = er.number("damping");
+      if (bs.key("series_stiffness")) el.series_stiffness = er.number("series_stiffness");
+      if (bs.key("length0")) el.length0 = er.number("length0");
+      if (bs.key("preload")) el.preload = er.number("preload");
+      if (bs.key("table")) er.pairList("table", el.table_d, el.table_f);
+      v.elements.push_back(std::move(el));
+    }
+  }
 }
 
 void buildSolver(const Node& n, integ::SolverSpec& s, Diagnostics& d) {
@@ -505,6 +619,10 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
 
   if (const Node* t = root.field("track")) buildTrack(*t, host, spec.track, d);
   else d.add({path, 0}, "scenario has no track { ... } block");
+  if (const Node* v = root.field("vehicle")) {
+    spec.has_vehicle = true;
+    buildVehicle(*v, spec.vehicle, d);
+  }
   if (const Node* s = root.field("solver")) {
     spec.has_solver = true;
     buildSolver(*s, spec.solver, d);

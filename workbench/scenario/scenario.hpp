@@ -6,6 +6,7 @@
 
 #include "workbench/integrators/spec.hpp"
 #include "workbench/track/spec.hpp"
+#include "workbench/vehicle/spec.hpp"
 
 namespace rb::scenario {
 
@@ -20,6 +21,8 @@ struct ScenarioSpec {
   std::string text;                    // full text of the scenario file (provenance)
   std::vector<std::string> overrides;  // --set key=value, in order
   track::TrackSpec track;
+  bool has_vehicle = false;
+  vehicle::VehicleSpec vehicle;
   bool has_solver = false;
   integ::SolverSpec solver;
   RunSpec run;

@@ -50,6 +50,27 @@ KeySpec choice(std::string name, std::vector<std::string> choices, std::string d
   return k;
 }
 
+KeySpec boolean(std::string name, bool def, std::string help) {
+  KeySpec k;
+  k.name = std::move(name);
+  k.type = ValueType::Bool;
+  k.unit = "-";
+  k.def = def ? "true" : "false";
+  k.num_default = def ? 1.0 : 0.0;
+  k.help = std::move(help);
+  return k;
+}
+
+KeySpec typed(std::string name, ValueType t, std::string unit, std::string help, bool req = false) {
+  KeySpec k;
+  k.name = std::move(name);
+  k.type = t;
+  k.unit = std::move(unit);
+  k.help = std::move(help);
+  k.required = req;
+  return k;
+}
+
 KeySpec blockKey(std::string name, ValueType t, std::vector<std::string> kinds, std::string help,
                  std::string sub = {}) {
   KeySpec k;
@@ -139,6 +160,8 @@ std::vector<BlockSpec> build() {
         wl, integer("components", 2000, "cosines per channel", 1, 1e6),
         num("step", "m", 0.1, "spline sampling step (paper: 0.1 m)", 0, kInf, true),
         num("scale", "-", 1, "amplitude factor on every channel", 0, 100), channels,
+        boolean("randomize_frequencies", true,
+                "draw each cosine's frequency inside its band (false: band centres, periodic)"),
         psdInput("alignment"), psdInput("vertical"), psdInput("gauge"), psdInput("cross_level")}});
   KeySpec file;
   file.name = "file";
@@ -149,6 +172,66 @@ std::vector<BlockSpec> build() {
   s.push_back({"measured",
                "Measured irregularities from a CSV file.",
                {file, num("step", "m", 0.1, "spline sampling step", 0, kInf, true)}});
+
+
+  // Vehicle (issue 5): bodies in track-frame coordinates and suspension elements (Appendix A).
+  s.push_back(
+      {"vehicle",
+       "A vehicle: rigid bodies with coordinates relative to their own track frames (paper Eq. "
+       "2-3) joined by suspension elements (Appendix A, Eq. 27-31). Usually made by a vehicle file: "
+       "vehicle (require \"vehicles.manchester_wagon1\" { speed = 20 }).",
+       {typed("name", ValueType::String, "-", "vehicle name"),
+        required(num("speed", "m/s", 0, "constant forward velocity V", 0, 200)),
+        num("wheel_radius", "m", 0.46, "nominal rolling radius r0 of the wheelsets", 0.2, 0.7),
+        num("start", "m", 0, "arc length of the vehicle reference point at t = 0", 0),
+        required(blockKey("bodies", ValueType::BlockList, {"body"}, "rigid bodies")),
+        blockKey("elements", ValueType::BlockList,
+                 {"spring_damper", "series_damper", "shear_spring", "bending_spring", "bumpstop"},
+                 "suspension elements")}});
+  s.push_back({"body",
+               "A rigid body.",
+               {typed("name", ValueType::String, "-", "unique body name", true),
+                choice("kind", {"car", "bogie", "wheelset", "frame"}, "car",
+                       "car body, bogie frame, wheelset, or a frame that follows the track "
+                       "centreline kinematically"),
+                required(num("mass", "kg", 0, "mass", 0, kInf, true)),
+                typed("inertia", ValueType::Vec3, "kg m^2", "principal inertias {Ixx, Iyy, Izz}", true),
+                num("x", "m", 0, "longitudinal position of the centre of mass, positive forward"),
+                num("height", "m", 0, "height of the centre of mass above the top of rail", -1, 10)}});
+  auto elementKeys = [&](std::vector<KeySpec> extra) {
+    std::vector<KeySpec> keys = {
+        typed("name", ValueType::String, "-", "element name (for outputs)", true),
+        typed("from", ValueType::String, "-", "master body (its track frame is used, Eq. 28)", true),
+        typed("to", ValueType::String, "-", "second body", true),
+        typed("at_from", ValueType::Vec3, "m", "attachment point in the master body's frame"),
+        typed("at_to", ValueType::Vec3, "m", "attachment point in the second body's frame"),
+        choice("direction", {"axial", "x", "y", "z"}, "axial",
+               "axial: along the line between the points (Eq. 30); x/y/z: that component of the "
+               "relative displacement in the master track frame (bending: rotation axis)")};
+    for (auto& e : extra) keys.push_back(std::move(e));
+    return keys;
+  };
+  s.push_back({"spring_damper", "Spring and damper in parallel: f = K d + D d_dot (Appendix A).",
+               elementKeys({num("stiffness", "N/m", 0, "K", 0), num("damping", "N s/m", 0, "D", 0),
+                            num("length0", "m", 0, "undeformed length (axial)", 0),
+                            num("preload", "N", 0, "force at zero deformation")})});
+  s.push_back({"series_damper",
+               "Damper D in series with a spring K_series: f_dot + (K_series/D) f = K_series d_dot "
+               "(Appendix A); f is a state.",
+               elementKeys({required(num("damping", "N s/m", 0, "D", 0, kInf, true)),
+                            required(num("series_stiffness", "N/m", 0, "K_series", 0, kInf, true)),
+                            num("length0", "m", 0, "undeformed length (axial)", 0)})});
+  s.push_back({"shear_spring", "Shear spring: f = K_shear d (Appendix A).",
+               elementKeys({required(num("stiffness", "N/m", 0, "K_shear", 0)),
+                            num("preload", "N", 0, "force at zero deformation")})});
+  s.push_back({"bending_spring", "Bending spring: M = K_bend theta (Appendix A).",
+               elementKeys({required(num("stiffness", "N m/rad", 0, "K_bend", 0))})});
+  s.push_back({"bumpstop",
+               "Nonlinear bumpstop: force from a cubic spline through a table of deformation and "
+               "force (paper Table 4, Fig. 27), symmetric in the sign of d.",
+               elementKeys({typed("table", ValueType::PairList, "m, N",
+                                  "{{d, F}, ...} with d increasing, e.g. {{0.025, 0}, {0.030, 600}}",
+                                  true)})});
 
   std::vector<std::string> methodNames;
   std::string methodHelp = "integrator:";
@@ -218,6 +301,8 @@ const char* typeText(ValueType t) {
     case ValueType::BlockList: return "list of blocks";
     case ValueType::StringList: return "list of names";
     case ValueType::PsdInput: return "function or table";
+    case ValueType::Vec3: return "{x, y, z}";
+    case ValueType::PairList: return "{{a, b}, ...}";
   }
   return "?";
 }

@@ -19,6 +19,8 @@ enum class ValueType {
   BlockList,  // a list of constructor calls of `kinds`
   StringList, // a list of `choices`
   PsdInput,   // a Lua function G(omega) or a table of {omega, G} pairs
+  Vec3,       // {x, y, z} of numbers
+  PairList,   // {{a, b}, ...} of numbers
 };
 
 struct KeySpec {

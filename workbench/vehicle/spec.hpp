@@ -9,7 +9,9 @@
 
 namespace rb::vehicle {
 
-enum class BodyKind { CarBody, Bogie, Wheelset };
+// Frame: a massless-in-effect reference body that follows the track centreline kinematically
+// (e.g. the loading frame of the single-wheelset case); its coordinates are prescribed.
+enum class BodyKind { CarBody, Bogie, Wheelset, Frame };
 
 // A rigid body. Its coordinates (s, y, z, roll, pitch, yaw) are relative to its own body track
 // frame (paper Eq. 2-3, Fig. 2).
