@@ -83,6 +83,7 @@ void writeStats(io::ResultFile& f, const integ::RunResult& res, const std::strin
   f.attr("/stats", "t_reached", res.t_reached);
   f.attr("/stats", "cpu_time_s", s.cpu_time_s);
   f.attr("/stats", "wall_time_s", s.wall_time_s);
+  f.attr("/stats", "callback_wall_time_s", s.callback_wall_time_s);
   f.attr("/stats", "rhs_evals", std::int64_t{s.rhs_evals});
   f.attr("/stats", "rhs_evals_jac", std::int64_t{s.rhs_evals_jac});
   f.attr("/stats", "steps", std::int64_t{s.steps});

@@ -1,0 +1,158 @@
+#include <cvode/cvode.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include "workbench/integrators/sundials_common.hpp"
+#include "workbench/integrators/sundials_integrators.hpp"
+
+namespace rb::integ {
+namespace {
+
+std::string flagName(int flag) {
+  return detail::takeFlagName(CVodeGetReturnFlagName(flag));
+}
+
+std::string reasonFor(int flag, long max_steps, double tout, bool& rhs_related) {
+  rhs_related = false;
+  switch (flag) {
+    case CV_TOO_MUCH_WORK:
+      return "too much work: " + std::to_string(max_steps) +
+             " internal steps in one output interval without reaching t = " + detail::num(tout) +
+             " (raise solver.max_steps)";
+    case CV_TOO_MUCH_ACC:
+      return "the tolerances are too small for the machine precision";
+    case CV_ERR_FAILURE:
+      return "the error test failed repeatedly or with |h| = hmin";
+    case CV_CONV_FAILURE:
+      rhs_related = true;
+      return "the Newton iteration failed to converge repeatedly or with |h| = hmin";
+    case CV_LSETUP_FAIL:
+      rhs_related = true;
+      return "the linear solver setup failed (Jacobian failure or singular iteration matrix)";
+    case CV_LSOLVE_FAIL:
+      return "the linear solve failed";
+    case CV_RHSFUNC_FAIL:
+      rhs_related = true;
+      return "the right-hand side failed unrecoverably";
+    case CV_FIRST_RHSFUNC_ERR:
+      rhs_related = true;
+      return "the right-hand side failed at its first call";
+    case CV_REPTD_RHSFUNC_ERR:
+      rhs_related = true;
+      return "the right-hand side failed recoverably too many times in a row";
+    case CV_UNREC_RHSFUNC_ERR:
+      rhs_related = true;
+      return "the right-hand side failed recoverably and no recovery was possible";
+    case CV_TOO_CLOSE:
+      return "the output time is too close to t0";
+    default:
+      return "CVODE failed";
+  }
+}
+
+}  // namespace
+
+RunResult BdfIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::VectorXd& y0,
+                                const std::vector<double>& output_times, const Observer& observer,
+                                const Progress& progress) {
+  const long n = sys.size();
+  const SolverSpec& sp = spec();
+  const auto names = [&sys](int i) { return sys.componentName(i); };
+  detail::SunContext ctx;  // declared first: destroyed last
+  detail::OdeCallbackData cb;
+  cb.sys = &sys;
+  cb.n = n;
+  detail::SundialsMessages msgs;
+  detail::NVector y = detail::makeVector(n, ctx);
+  detail::NVector ewt = detail::makeVector(n, ctx);
+  detail::NVector ele = detail::makeVector(n, ctx);
+  detail::map(y.get(), n) = y0;
+  Eigen::VectorXd yout(n);
+  const auto nn = static_cast<sunindextype>(n);
+  detail::SunMatrix A(SUNDenseMatrix(nn, nn, ctx));
+  detail::SunLinSol LS(SUNLinSol_Dense(y.get(), A.get(), ctx));
+  if (!A || !LS) throw std::bad_alloc();
+
+  RunResult res;
+  res.t_reached = t0;
+  detail::SolverMem mem(CVodeCreate(CV_BDF, ctx), CVodeFree);  // freed before LS and A
+  if (!mem) throw std::bad_alloc();
+  const auto setup = [&](int flag, const char* call) {
+    return flag == CV_SUCCESS || detail::setupFailed(res, name(), t0, call, flagName(flag), msgs);
+  };
+  const bool analytic = sp.jacobian == "auto" && sys.hasJacobian();
+  if (!setup(CVodeSetErrHandlerFn(mem, detail::captureMessage, &msgs), "CVodeSetErrHandlerFn") ||
+      !setup(CVodeInit(mem, detail::odeRhs, t0, y.get()), "CVodeInit") ||
+      !setup(CVodeSetUserData(mem, &cb), "CVodeSetUserData") ||
+      !setup(CVodeSStolerances(mem, sp.rtol, sp.atol), "CVodeSStolerances") ||
+      !setup(CVodeSetLinearSolver(mem, LS.get(), A.get()), "CVodeSetLinearSolver") ||
+      (analytic && !setup(CVodeSetJacFn(mem, detail::odeJac), "CVodeSetJacFn")) ||
+      !setup(CVodeSetMaxOrd(mem, sp.max_order), "CVodeSetMaxOrd") ||
+      (sp.max_step > 0 && !setup(CVodeSetMaxStep(mem, sp.max_step), "CVodeSetMaxStep")) ||
+      (sp.step > 0 && !setup(CVodeSetInitStep(mem, sp.step), "CVodeSetInitStep")) ||
+      (sp.max_steps > 0 && !setup(CVodeSetMaxNumSteps(mem, sp.max_steps), "CVodeSetMaxNumSteps")))
+    return res;
+
+  const auto collect = [&] {
+    Stats& s = res.stats;
+    long netf = 0, nsf = 0;
+    CVodeGetNumSteps(mem, &s.steps);
+    CVodeGetNumRhsEvals(mem, &s.rhs_evals);
+    CVodeGetNumLinRhsEvals(mem, &s.rhs_evals_jac);
+    CVodeGetNumJacEvals(mem, &s.jacobian_evals);
+    CVodeGetNumNonlinSolvIters(mem, &s.nonlinear_iters);
+    CVodeGetNumNonlinSolvConvFails(mem, &s.nonlinear_conv_fails);
+    CVodeGetNumErrTestFails(mem, &netf);
+    CVodeGetNumStepSolveFails(mem, &nsf);
+    s.rejected_steps = netf + nsf;
+    s.recoverable_rhs_failures = cb.rec.recoverable;
+  };
+
+  if (!observer(t0, y0)) {
+    res.ok = res.stopped_by_observer = true;
+    res.message = "bdf: stopped by the observer at t = " + detail::num(t0);
+    return res;
+  }
+  for (double tout : output_times) {
+    double tret = tout;
+    const int flag = CVode(mem, tout, y.get(), &tret, CV_NORMAL);
+    if (cb.rec.exception) std::rethrow_exception(cb.rec.exception);
+    if (flag < 0) {
+      double tcur = res.t_reached;
+      CVodeGetCurrentTime(mem, &tcur);  // last accepted step (CVODE restores tn on failure)
+      res.t_reached = tcur;
+      detail::FailureReport f;
+      f.method = name();
+      f.t_reached = tcur;
+      bool rhs_related = false;
+      f.reason = reasonFor(flag, sp.max_steps > 0 ? sp.max_steps : 500, tout, rhs_related);
+      f.rhs_related = rhs_related;
+      f.flag_name = flagName(flag);
+      f.sundials_text = msgs.last_error;
+      if ((flag == CV_TOO_MUCH_WORK || flag == CV_ERR_FAILURE || flag == CV_CONV_FAILURE ||
+           flag == CV_TOO_MUCH_ACC) &&
+          CVodeGetErrWeights(mem, ewt.get()) == CV_SUCCESS &&
+          CVodeGetEstLocalErrors(mem, ele.get()) == CV_SUCCESS)
+        f.weighted_errors = detail::largestWeightedErrors(ele.get(), ewt.get(), n);
+      res.message = detail::buildFailure(f, cb.rec, names, res.offending_components);
+      res.ok = false;
+      res.t_fail = tcur;
+      collect();
+      return res;
+    }
+    collect();
+    yout = detail::map(y.get(), n);
+    res.t_reached = tout;
+    if (!observer(tout, yout)) {
+      res.ok = res.stopped_by_observer = true;
+      res.message = "bdf: stopped by the observer at t = " + detail::num(tout);
+      return res;
+    }
+    if (progress) progress(tout, res.stats);
+  }
+  collect();
+  res.ok = true;
+  return res;
+}
+
+}  // namespace rb::integ
