@@ -1,6 +1,7 @@
 #include "workbench/profiles/profile.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "workbench/core/error.hpp"
 
@@ -16,13 +17,19 @@ Profile::Profile(std::string name, ProfileKind kind, double s_min, double ds,
 }
 
 ProfilePoint Profile::at(double s) const {
-  return {spline_.value(s), spline_.deriv1(s), spline_.deriv2(s)};
+  // Mirror image: h_m(s) = h(-s), h_m'(s) = -h'(-s), h_m''(s) = h''(-s). Negation is exact.
+  const double x = mirror_ ? -s : s;
+  const double d1 = spline_.deriv1(x);
+  return {spline_.value(x), mirror_ ? -d1 : d1, spline_.deriv2(x)};
 }
 
-Profile Profile::mirrored() const {
-  std::vector<double> v = values();
-  std::vector<double> m(v.rbegin(), v.rend());
-  return Profile(name_ + " (mirrored)", kind_, -sMax(), ds_, m);
+Profile Profile::mirrored() const { return mirrored(name_ + " (mirrored)"); }
+
+Profile Profile::mirrored(std::string name) const {
+  Profile m = *this;
+  m.name_ = std::move(name);
+  m.mirror_ = !mirror_;
+  return m;
 }
 
 double Profile::curvature(double s) const {
@@ -33,14 +40,24 @@ double Profile::curvature(double s) const {
 std::vector<double> Profile::knots() const {
   std::vector<double> k;
   const auto& g = spline_.grid();
-  for (std::size_t i = 0; i < g.size(); ++i) k.push_back(g[i]);
+  k.reserve(g.size());
+  if (mirror_) {
+    for (std::size_t i = g.size(); i-- > 0;) k.push_back(-g[i]);
+  } else {
+    for (std::size_t i = 0; i < g.size(); ++i) k.push_back(g[i]);
+  }
   return k;
 }
 
 std::vector<double> Profile::values() const {
   std::vector<double> v;
   const auto& g = spline_.grid();
-  for (std::size_t i = 0; i < g.size(); ++i) v.push_back(spline_.value(g[i]));
+  v.reserve(g.size());
+  if (mirror_) {
+    for (std::size_t i = g.size(); i-- > 0;) v.push_back(spline_.value(g[i]));
+  } else {
+    for (std::size_t i = 0; i < g.size(); ++i) v.push_back(spline_.value(g[i]));
+  }
   return v;
 }
 

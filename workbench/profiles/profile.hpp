@@ -15,6 +15,8 @@
 //   profile frame, which sits at +-Lr and is rotated by +-beta + delta (Eq. 5). For the LEFT rail
 //   s_r > 0 points to the field side (+Y); the RIGHT rail is the mirror image, h_rr(s) = h_lr(-s).
 //   For 60E1 the origin is the crown top of the uninclined head (h(0) = 0).
+// - Mirroring is exact: a mirrored profile evaluates the same spline at -s, so
+//   right.at(-s).h == left.at(s).h bit for bit (and dh changes sign exactly).
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,6 +26,11 @@
 namespace rb::profiles {
 
 enum class ProfileKind { Wheel, Rail };
+
+// Which side of the wheelset / track (paper Fig. 5: the left side is at +Y).
+enum class Side { Left, Right };
+using WheelSide = Side;
+using RailSide = Side;
 
 struct ProfilePoint {
   double h = 0.0;    // [m] radius (wheel) or height (rail)
@@ -38,16 +45,19 @@ class Profile {
 
   const std::string& name() const { return name_; }
   ProfileKind kind() const { return kind_; }
-  double sMin() const { return spline_.grid().front(); }
-  double sMax() const { return spline_.grid().back(); }
+  double sMin() const { return mirror_ ? -spline_.grid().back() : spline_.grid().front(); }
+  double sMax() const { return mirror_ ? -spline_.grid().front() : spline_.grid().back(); }
+  double step() const { return ds_; }  // grid step ds [m]
+  bool isMirrored() const { return mirror_; }
   bool inside(double s) const { return s >= sMin() && s <= sMax(); }
   // Allocation-free; outside [sMin, sMax] the end cubics are extended (callers check inside()).
   ProfilePoint at(double s) const;
   // The mirror image h(-s) (left <-> right), same name with suffix " (mirrored)".
   Profile mirrored() const;
+  Profile mirrored(std::string name) const;  // same, with the given name
   // Signed curvature of the curve (s, h(s)): h'' / (1 + h'^2)^1.5 [1/m].
   double curvature(double s) const;
-  // Samples for output/plots.
+  // Samples for output/plots (knots in increasing s).
   std::vector<double> knots() const;
   std::vector<double> values() const;
 
@@ -56,6 +66,7 @@ class Profile {
   ProfileKind kind_;
   double ds_;
   CubicSpline spline_;
+  bool mirror_ = false;  // evaluate spline_ at -s (exact mirror image)
 };
 
 }  // namespace rb::profiles

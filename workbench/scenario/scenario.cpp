@@ -564,6 +564,8 @@ void buildSolver(const Node& n, integ::SolverSpec& s, Diagnostics& d) {
   s.loc = n.loc;
   s.method = r.choice("method");
   s.step = r.number("step");
+  // Adaptive methods estimate their own initial step unless the scenario gives one.
+  if (!r.has("step") && s.method != "rk4" && s.method != "abm") s.step = 0.0;
   s.rtol = r.number("rtol");
   s.atol = r.number("atol");
   s.max_step = r.number("max_step");

@@ -244,8 +244,10 @@ std::vector<BlockSpec> build() {
   s.push_back({"solver",
                "Time integrator (paper section 4) and its options.",
                {choice("method", methodNames, "abm", methodHelp),
-                num("step", "s", 1e-3, "fixed step (rk4, abm); initial step hint otherwise", 0,
-                    1.0, true),
+                num("step", "s", 1e-3,
+                    "fixed step (rk4, abm); for adaptive methods the initial step, automatic "
+                    "when not given",
+                    0, 1.0),
                 num("rtol", "-", 1e-6, "relative tolerance (dopri5, bdf, ida)", 0, 1, true),
                 num("atol", "-", 1e-6, "absolute tolerance in state units (dopri5, bdf, ida)", 0,
                     kInf, true),
