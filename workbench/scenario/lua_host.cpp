@@ -6,7 +6,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -61,9 +60,17 @@ bool readText(const fs::path& p, std::string& out) {
 
 // "file:line: message" -> Diagnostic; anything else keeps an empty location.
 Diagnostic parseLuaMessage(const std::string& msg, const std::string& fallbackFile) {
-  static const std::regex re(R"(^([^\n]*?):([0-9]+): ([\s\S]*)$)");
-  std::smatch m;
-  if (std::regex_match(msg, m, re)) return Diagnostic{{m[1].str(), std::stoi(m[2].str())}, m[3]};
+  // Lua prefixes positions as "<chunkname>:<line>: "; the chunk name may itself contain ':'.
+  for (std::size_t colon = msg.find(':'); colon != std::string::npos;
+       colon = msg.find(':', colon + 1)) {
+    std::size_t digits = colon + 1;
+    while (digits < msg.size() && std::isdigit(static_cast<unsigned char>(msg[digits]))) ++digits;
+    if (digits > colon + 1 && msg.compare(digits, 2, ": ") == 0 &&
+        msg.find('\n') > colon) {
+      return Diagnostic{{msg.substr(0, colon), std::stoi(msg.substr(colon + 1, digits - colon - 1))},
+                        msg.substr(digits + 2)};
+    }
+  }
   return Diagnostic{{fallbackFile, 0}, msg};
 }
 
