@@ -23,7 +23,9 @@ ProfilePoint Profile::at(double s) const {
   return {spline_.value(x), mirror_ ? -d1 : d1, spline_.deriv2(x)};
 }
 
-Profile Profile::mirrored() const { return mirrored(name_ + " (mirrored)"); }
+Profile Profile::mirrored() const {
+  return mirrored(name_ + " (mirrored)");
+}
 
 Profile Profile::mirrored(std::string name) const {
   Profile m = *this;

@@ -41,7 +41,8 @@ struct ProfilePoint {
 class Profile {
  public:
   // Samples h on a uniform grid over [s_min, s_max] (step ds) and splines it (not-a-knot).
-  Profile(std::string name, ProfileKind kind, double s_min, double ds, const std::vector<double>& h);
+  Profile(std::string name, ProfileKind kind, double s_min, double ds,
+          const std::vector<double>& h);
 
   const std::string& name() const { return name_; }
   ProfileKind kind() const { return kind_; }

@@ -1,0 +1,177 @@
+#include "workbench/profiles/conicity.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "workbench/core/error.hpp"
+
+namespace rb::profiles {
+
+RollingRadiusDifference::RollingRadiusDifference(std::vector<double> y, std::vector<double> dr)
+    : y_(std::move(y)), dr_(std::move(dr)) {
+  const std::size_t n = y_.size();
+  RB_CHECK(n >= 3 && dr_.size() == n, "a rolling radius difference needs >= 3 samples");
+  for (std::size_t i = 1; i < n; ++i) {
+    RB_CHECK(y_[i] > y_[i - 1], "rolling radius difference: y must be strictly increasing");
+  }
+  cum_.assign(n, 0.0);
+  for (std::size_t i = 1; i < n; ++i) {
+    cum_[i] = cum_[i - 1] + 0.5 * (dr_[i] + dr_[i - 1]) * (y_[i] - y_[i - 1]);
+  }
+  // Centre: global minimum of the (piecewise quadratic) integral. On a segment with dr crossing
+  // from - to +, the minimum is at the zero of the linear dr.
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (cum_[i] < best) {
+      best = cum_[i];
+      y0_ = y_[i];
+    }
+    if (i + 1 < n && dr_[i] < 0.0 && dr_[i + 1] > 0.0) {
+      const double t = -dr_[i] / (dr_[i + 1] - dr_[i]);
+      const double yz = y_[i] + t * (y_[i + 1] - y_[i]);
+      const double c = cum_[i] + 0.5 * dr_[i] * (yz - y_[i]);
+      if (c < best) {
+        best = c;
+        y0_ = yz;
+      }
+    }
+  }
+  // A flat minimum (dr = 0 over a range, e.g. a dead band between contact jumps): take the middle
+  // of the flat part, which does not change tan(gamma_e) but gives the natural centre.
+  {
+    double scale = 0.0;
+    for (const double c : cum_) scale = std::max(scale, std::abs(c - best));
+    const double tol = 1e-12 * scale;
+    double lo = y0_, hi = y0_;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (y_[i] < y0_ && cum_[i] <= best + tol) {
+        bool flat = true;  // every sample between y_i and y0 at the minimum too
+        for (std::size_t j = i; j < n && y_[j] < y0_; ++j) flat = flat && cum_[j] <= best + tol;
+        if (flat) lo = std::min(lo, y_[i]);
+      }
+    }
+    for (std::size_t i = n; i-- > 0;) {
+      if (y_[i] > y0_ && cum_[i] <= best + tol) {
+        bool flat = true;
+        for (std::size_t j = i + 1; j-- > 0 && y_[j] > y0_;) flat = flat && cum_[j] <= best + tol;
+        if (flat) hi = std::max(hi, y_[i]);
+      }
+    }
+    y0_ = 0.5 * (lo + hi);
+  }
+  RB_CHECK(y0_ > y_.front() && y0_ < y_.back(),
+           "rolling radius difference: no restoring zero crossing inside the data (dr must "
+           "increase through zero)");
+  i0_ = best;
+}
+
+std::size_t RollingRadiusDifference::segment(double y) const {
+  const auto it = std::upper_bound(y_.begin() + 1, y_.end() - 1, y);
+  return static_cast<std::size_t>(it - y_.begin()) - 1;
+}
+
+double RollingRadiusDifference::dr(double y) const {
+  y = std::clamp(y, y_.front(), y_.back());
+  const std::size_t i = segment(y);
+  const double t = (y - y_[i]) / (y_[i + 1] - y_[i]);
+  return dr_[i] + t * (dr_[i + 1] - dr_[i]);
+}
+
+double RollingRadiusDifference::potential(double y) const {
+  y = std::clamp(y, y_.front(), y_.back());
+  const std::size_t i = segment(y);
+  const double u = y - y_[i];
+  const double slope = (dr_[i + 1] - dr_[i]) / (y_[i + 1] - y_[i]);
+  return cum_[i] + dr_[i] * u + 0.5 * slope * u * u - i0_;
+}
+
+bool RollingRadiusDifference::oscillation(double yhat, Oscillation& out) const {
+  // The motion at level C stays in the connected part of {I < C} around y0. Its end points move
+  // outward monotonically with C, so y2 - y1 is monotone in C: bisection.
+  const std::size_t n = y_.size();
+  const std::size_t k0 = segment(y0_);  // y0 in [y_k0, y_k0+1]
+  // Crossing of I = C going left (dir -1) or right (+1) from y0; NaN if not within the data.
+  auto crossing = [&](double C, int dir) {
+    if (dir < 0) {
+      for (std::size_t i = k0 + 1; i-- > 0;) {
+        const double ya = y_[i];
+        if (potential(ya) >= C) {
+          double a = ya, b = std::min(y_[i + 1], y0_);
+          for (int it = 0; it < 200 && b - a > 1e-14 * (1.0 + std::abs(a)); ++it) {
+            const double m = 0.5 * (a + b);
+            (potential(m) >= C ? a : b) = m;
+          }
+          return 0.5 * (a + b);
+        }
+      }
+    } else {
+      for (std::size_t i = k0 + 1; i < n; ++i) {
+        const double yb = y_[i];
+        if (potential(yb) >= C) {
+          double a = std::max(y_[i - 1], y0_), b = yb;
+          for (int it = 0; it < 200 && b - a > 1e-14 * (1.0 + std::abs(b)); ++it) {
+            const double m = 0.5 * (a + b);
+            (potential(m) >= C ? b : a) = m;
+          }
+          return 0.5 * (a + b);
+        }
+      }
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+  };
+  // Highest level reachable on both sides.
+  double cmax = std::numeric_limits<double>::infinity();
+  {
+    double left = 0.0, right = 0.0;
+    for (std::size_t i = 0; i <= k0; ++i) left = std::max(left, potential(y_[i]));
+    for (std::size_t i = k0 + 1; i < n; ++i) right = std::max(right, potential(y_[i]));
+    cmax = std::min(left, right);
+  }
+  auto width = [&](double C) { return crossing(C, +1) - crossing(C, -1); };
+  if (!(cmax > 0.0) || !(width(cmax) >= 2.0 * yhat)) return false;
+  double lo = 0.0, hi = cmax;
+  for (int it = 0; it < 200; ++it) {
+    const double m = 0.5 * (lo + hi);
+    (width(m) < 2.0 * yhat ? lo : hi) = m;
+    if (hi - lo <= 1e-15 * hi) break;
+  }
+  out.level = hi;
+  out.y1 = crossing(hi, -1);
+  out.y2 = crossing(hi, +1);
+  return true;
+}
+
+double RollingRadiusDifference::tanGammaE(double yhat, int intervals) const {
+  RB_CHECK(yhat > 0.0 && intervals > 0, "tanGammaE needs yhat > 0");
+  Oscillation osc;
+  if (!oscillation(yhat, osc)) return std::numeric_limits<double>::quiet_NaN();
+  const double ym = 0.5 * (osc.y1 + osc.y2), a = 0.5 * (osc.y2 - osc.y1);
+  const double dth = std::numbers::pi / intervals;
+  double J = 0.0;
+  for (int k = 0; k < intervals; ++k) {
+    const double th = (k + 0.5) * dth;
+    const double q = osc.level - potential(ym - a * std::cos(th));
+    if (q > 0.0) J += a * std::sin(th) / std::sqrt(q);
+  }
+  J *= dth;
+  return std::pow(std::numbers::pi / J, 2);
+}
+
+double RollingRadiusDifference::tanGammaHarmonic(double yhat, int intervals) const {
+  RB_CHECK(yhat > 0.0 && intervals > 0, "tanGammaHarmonic needs yhat > 0");
+  if (y0_ - yhat < y_.front() || y0_ + yhat > y_.back()) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  const double dphi = 2.0 * std::numbers::pi / intervals;
+  double b1 = 0.0;
+  for (int k = 0; k < intervals; ++k) {
+    const double phi = (k + 0.5) * dphi;
+    b1 += dr(y0_ + yhat * std::sin(phi)) * std::sin(phi);
+  }
+  b1 *= dphi / std::numbers::pi;  // first Fourier sine coefficient of dr(y0 + yhat sin phi)
+  return b1 / (2.0 * yhat);
+}
+
+}  // namespace rb::profiles

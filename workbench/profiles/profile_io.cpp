@@ -1,0 +1,422 @@
+#include "workbench/profiles/profile_io.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string_view>
+#include <utility>
+
+#include "workbench/core/error.hpp"
+#include "workbench/profiles/sampling.hpp"
+#include "workbench/profiles/smoothing_spline.hpp"
+
+namespace rb::profiles {
+namespace {
+
+constexpr std::size_t kMinPoints = 10;
+constexpr double kMinWheelRadius = 0.2;  // [m]
+constexpr double kMaxWheelRadius = 0.7;  // [m]
+
+std::string num(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+std::string_view trim(std::string_view s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string_view::npos) return {};
+  const auto e = s.find_last_not_of(" \t\r\n");
+  return s.substr(b, e - b + 1);
+}
+
+// Removes a `!` comment (outside single or double quotes).
+std::string_view stripBang(std::string_view s) {
+  char quote = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (quote) {
+      if (c == quote) quote = 0;
+    } else if (c == '\'' || c == '"') {
+      quote = c;
+    } else if (c == '!') {
+      return s.substr(0, i);
+    }
+  }
+  return s;
+}
+
+std::vector<std::string_view> tokens(std::string_view s) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  auto sep = [](char c) { return c == ' ' || c == '\t' || c == ',' || c == ';' || c == '\r'; };
+  while (i < s.size()) {
+    while (i < s.size() && sep(s[i])) ++i;
+    const std::size_t b = i;
+    while (i < s.size() && !sep(s[i])) ++i;
+    if (i > b) out.push_back(s.substr(b, i - b));
+  }
+  return out;
+}
+
+bool parseNumber(std::string_view t, double& v) {
+  if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+  const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+  return r.ec == std::errc() && r.ptr == t.data() + t.size() && std::isfinite(v);
+}
+
+std::vector<std::string> readLines(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(SourceLoc{path, 0}, "cannot open profile file");
+  std::vector<std::string> lines;
+  std::string line;
+  while (std::getline(in, line)) lines.push_back(line);
+  return lines;
+}
+
+// Parses "y z [weight]"; on failure adds a diagnostic and returns false.
+bool parsePoint(std::string_view text, const SourceLoc& loc, Diagnostics& diags, double& y,
+                double& z, double& w) {
+  const auto tk = tokens(text);
+  double v[3] = {0.0, 0.0, 1.0};
+  for (std::size_t i = 0; i < tk.size() && i < 3; ++i) {
+    if (!parseNumber(tk[i], v[i])) {
+      diags.add(loc, "non-numeric profile data \"" + std::string(tk[i]) + "\"");
+      return false;
+    }
+  }
+  if (tk.size() < 2 || tk.size() > 3) {
+    diags.add(loc,
+              "expected \"y z\" or \"y z weight\", got " + std::to_string(tk.size()) + " value(s)");
+    return false;
+  }
+  if (!(v[2] > 0.0)) {
+    diags.add(loc, "point weight must be positive, got " + num(v[2]));
+    return false;
+  }
+  y = v[0];
+  z = v[1];
+  w = v[2];
+  return true;
+}
+
+std::string stem(const std::string& path) {
+  return std::filesystem::path(path).stem().string();
+}
+
+}  // namespace
+
+ProfilePoints readSimpackPoints(const std::string& path) {
+  const std::vector<std::string> lines = readLines(path);
+  ProfilePoints pts;
+  pts.file = path;
+  Diagnostics diags;
+  enum class Block { None, Header, Spline } block = Block::None;
+  int typeValue = -1, typeLine = 0, pointBegin = 0, pointEnd = 0;
+  double unitFactor = 1.0, mirrorY = 0.0, mirrorZ = 0.0;
+  double boundMin[2] = {1.0, 1.0}, boundMax[2] = {0.0, 0.0};
+  int unitLine = 0;
+  std::vector<double> ry, rz, rw;
+  std::vector<int> rl;
+  bool inPoints = false, unterminated = false;
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const int ln = static_cast<int>(k) + 1;
+    const SourceLoc loc{path, ln};
+    const std::string_view text = trim(stripBang(lines[k]));
+    if (text.empty()) continue;
+    if (inPoints) {
+      if (text == "point.end") {
+        inPoints = false;
+        pointEnd = ln;
+        continue;
+      }
+      if (text.ends_with(".end") || text.ends_with(".begin")) {
+        // Another block keyword inside the point block: point.end is missing.
+        inPoints = false;
+        unterminated = true;
+        block = text == "header.begin"   ? Block::Header
+                : text == "spline.begin" ? Block::Spline
+                                         : Block::None;
+        continue;
+      }
+      double y = 0, z = 0, w = 1;
+      if (parsePoint(text, loc, diags, y, z, w)) {
+        ry.push_back(y);
+        rz.push_back(z);
+        rw.push_back(w);
+        rl.push_back(ln);
+      }
+      continue;
+    }
+    if (text == "header.begin") {
+      block = Block::Header;
+    } else if (text == "spline.begin") {
+      block = Block::Spline;
+    } else if (text == "header.end" || text == "spline.end") {
+      block = Block::None;
+    } else if (text == "point.begin") {
+      if (pointBegin != 0) diags.add(loc, "a second point.begin block");
+      pointBegin = ln;
+      inPoints = true;
+    } else if (const auto eq = text.find('='); eq != std::string_view::npos) {
+      const std::string_view key = trim(text.substr(0, eq));
+      const std::string_view value = trim(text.substr(eq + 1));
+      auto number = [&](double& out) {
+        if (!parseNumber(value, out)) {
+          diags.add(loc, "non-numeric value for " + std::string(key) + ": \"" + std::string(value) +
+                             "\"");
+        }
+      };
+      double v = 0.0;
+      if (block == Block::Header && key == "type") {
+        number(v);
+        typeValue = static_cast<int>(v);
+        typeLine = ln;
+      } else if (block == Block::Spline) {
+        if (key == "units.len.f") {
+          number(unitFactor);
+          unitLine = ln;
+          if (!(unitFactor > 0.0)) diags.add(loc, "units.len.f must be positive");
+        } else if (key == "mirror.y") {
+          number(mirrorY);
+        } else if (key == "mirror.z") {
+          number(mirrorZ);
+        } else if (key == "shift.y" || key == "shift.z" || key == "rotate") {
+          number(v);
+          if (v != 0.0) {
+            diags.add(loc, std::string(key) + " = " + num(v) +
+                               " is not supported (only 0); transform the points with "
+                               "ProfileReadOptions instead");
+          }
+        } else if (key == "bound.y.min" || key == "bound.z.min") {
+          number(boundMin[key == "bound.y.min" ? 0 : 1]);
+        } else if (key == "bound.y.max" || key == "bound.z.max") {
+          number(boundMax[key == "bound.y.max" ? 0 : 1]);
+        }
+      }
+    }
+  }
+  const int lastLine = static_cast<int>(lines.size());
+  if (inPoints || unterminated) {
+    diags.add(SourceLoc{path, pointBegin}, "point.begin without point.end");
+  } else if (pointBegin == 0) {
+    diags.add(SourceLoc{path, lastLine}, "no point.begin ... point.end block with profile points");
+  }
+  for (int a = 0; a < 2; ++a) {
+    if (boundMin[a] < boundMax[a]) {
+      diags.add(SourceLoc{path, unitLine},
+                std::string(a == 0 ? "bound.y" : "bound.z") +
+                    " limits are not supported (set min > max to disable them)");
+    }
+  }
+  if (typeValue != 0 && typeValue != 1) {
+    const std::string ext = std::filesystem::path(path).extension().string();
+    if (typeLine == 0 && (ext == ".prw" || ext == ".prr")) {
+      typeValue = ext == ".prw" ? 1 : 0;
+    } else {
+      diags.add(SourceLoc{path, typeLine},
+                "header type must be 0 (rail profile) or 1 (wheel profile)");
+    }
+  }
+  diags.throwIfAny();
+  pts.kind = typeValue == 1 ? ProfileKind::Wheel : ProfileKind::Rail;
+  pts.endLine = pointEnd;
+  pts.kindLine = typeLine;
+  pts.unitsHint = "set units.len.f (1000 for millimetres)";
+  const double sy = mirrorY != 0.0 ? -1.0 : 1.0;
+  const double szFile = mirrorZ != 0.0 ? -1.0 : 1.0;
+  // Rail z is downward in SIMPACK files; the profile convention is z up.
+  const double sz = pts.kind == ProfileKind::Rail ? -szFile : szFile;
+  for (std::size_t i = 0; i < ry.size(); ++i) {
+    pts.y.push_back(sy * ry[i] / unitFactor);
+    pts.z.push_back(sz * rz[i] / unitFactor);
+    pts.w.push_back(rw[i]);
+    pts.line.push_back(rl[i]);
+  }
+  return pts;
+}
+
+ProfilePoints readTextPoints(const std::string& path, ProfileKind kind, LengthUnit units) {
+  const std::vector<std::string> lines = readLines(path);
+  ProfilePoints pts;
+  pts.file = path;
+  pts.kind = kind;
+  pts.unitsHint =
+      units == LengthUnit::Metre ? "the units argument says m" : "the units argument says mm";
+  const double f = units == LengthUnit::Metre ? 1.0 : 1e-3;
+  Diagnostics diags;
+  bool dataStarted = false;
+  for (std::size_t k = 0; k < lines.size(); ++k) {
+    const int ln = static_cast<int>(k) + 1;
+    std::string_view text = trim(lines[k]);
+    if (text.empty() || text.front() == '#' || text.front() == '!' || text.front() == '%' ||
+        text.substr(0, 2) == "//") {
+      continue;
+    }
+    text = trim(text.substr(0, std::min(text.find('#'), text.find('!'))));
+    if (text.empty()) continue;
+    const auto tk = tokens(text);
+    double first = 0.0;
+    if (!dataStarted && !parseNumber(tk.front(), first)) continue;  // header line
+    dataStarted = true;
+    double y = 0, z = 0, w = 1;
+    if (parsePoint(text, SourceLoc{path, ln}, diags, y, z, w)) {
+      pts.y.push_back(f * y);
+      pts.z.push_back(f * z);
+      pts.w.push_back(w);
+      pts.line.push_back(ln);
+      pts.endLine = ln;
+    }
+  }
+  diags.throwIfAny();
+  if (pts.endLine == 0) pts.endLine = static_cast<int>(lines.size());
+  return pts;
+}
+
+Profile profileFromPoints(const ProfilePoints& p, const ProfileReadOptions& opt, std::string name) {
+  const std::size_t n = p.y.size();
+  RB_CHECK(p.z.size() == n && p.line.size() == n && (p.w.empty() || p.w.size() == n),
+           "ProfilePoints arrays differ in size");
+  RB_CHECK(opt.ds > 0.0 && opt.maxSlope > 0.0 && opt.smoothingLength >= 0.0,
+           "ProfileReadOptions: ds > 0, maxSlope > 0, smoothingLength >= 0");
+  const bool wheel = p.kind == ProfileKind::Wheel;
+  auto at = [&](std::size_t i) { return SourceLoc{p.file, p.line[i]}; };
+  if (n < kMinPoints) {
+    throw InputError(SourceLoc{p.file, p.endLine}, "only " + std::to_string(n) +
+                                                       " profile points; at least " +
+                                                       std::to_string(kMinPoints) + " are needed");
+  }
+  // Plausibility of the length unit.
+  double extent = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (const double v : {p.y[i], p.z[i]}) {
+      if (std::abs(v) > 1.0) {
+        throw InputError(at(i), "coordinate " + num(v) +
+                                    " m is implausible for a profile (> 1 m): the data seem "
+                                    "to be in millimetres (" +
+                                    p.unitsHint + ")");
+      }
+      extent = std::max(extent, std::abs(v));
+    }
+  }
+  if (extent < 1e-3) {
+    throw InputError(at(0), "all coordinates are below 1 mm: the data seem to be in metres (" +
+                                p.unitsHint + ")");
+  }
+  if (wheel) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double r = opt.r0 + p.z[i];
+      if (r < kMinWheelRadius || r > kMaxWheelRadius) {
+        throw InputError(at(i), "wheel radius " + num(r) + " m (r0 " + num(opt.r0) + " + z " +
+                                    num(p.z[i]) +
+                                    ") is outside 0.2 .. 0.7 m: check r0 and the "
+                                    "units");
+      }
+    }
+  }
+  // y strictly monotone; decreasing files are reversed.
+  const double dir = p.y[1] > p.y[0] ? 1.0 : -1.0;
+  for (std::size_t i = 1; i < n; ++i) {
+    if (!(dir * (p.y[i] - p.y[i - 1]) > 0.0)) {
+      throw InputError(at(i), "profile y values must be strictly monotone: y = " + num(p.y[i]) +
+                                  " m follows y = " + num(p.y[i - 1]) + " m");
+    }
+  }
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = dir > 0 ? i : n - 1 - i;
+  // Longest run of consecutive points with |dz/dy| <= maxSlope.
+  std::size_t bestBegin = 0, bestLen = 1, runBegin = 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    const std::size_t a = order[k - 1], b = order[k];
+    const double slope = (p.z[b] - p.z[a]) / (p.y[b] - p.y[a]);
+    if (std::abs(slope) > opt.maxSlope) runBegin = k;
+    if (k - runBegin + 1 > bestLen) {
+      bestLen = k - runBegin + 1;
+      bestBegin = runBegin;
+    }
+  }
+  if (bestLen < kMinPoints) {
+    throw InputError(SourceLoc{p.file, p.endLine},
+                     "only " + std::to_string(bestLen) +
+                         " consecutive points with |dz/dy| <= " + num(opt.maxSlope) +
+                         "; at least " + std::to_string(kMinPoints) + " are needed");
+  }
+  std::vector<double> s, h, w;
+  std::vector<int> lines;
+  const double ca = std::cos(opt.rotate), sa = std::sin(opt.rotate);
+  const double my = opt.mirrorY ? -1.0 : 1.0;
+  for (std::size_t k = bestBegin; k < bestBegin + bestLen; ++k) {
+    const std::size_t i = order[k];
+    const double y = my * p.y[i], z = p.z[i];
+    s.push_back(y * ca - z * sa + opt.shiftS);
+    h.push_back(y * sa + z * ca + opt.shiftH + (wheel ? opt.r0 : 0.0));
+    w.push_back(p.w.empty() ? 1.0 : p.w[i]);
+    lines.push_back(p.line[i]);
+  }
+  if (opt.mirrorY) {
+    std::reverse(s.begin(), s.end());
+    std::reverse(h.begin(), h.end());
+    std::reverse(w.begin(), w.end());
+    std::reverse(lines.begin(), lines.end());
+  }
+  for (std::size_t k = 1; k < s.size(); ++k) {
+    if (!(s[k] > s[k - 1])) {
+      throw InputError(SourceLoc{p.file, lines[k]},
+                       "after the rotation by " + num(opt.rotate) +
+                           " rad the points are no longer ordered along y (lower maxSlope)");
+    }
+  }
+  const double lambda = SmoothingSpline::lambdaForLength(s, w, opt.smoothingLength);
+  const double s0 = s.front(), s1 = s.back();
+  const SmoothingSpline fit(std::move(s), h, std::move(w), lambda, SplineEnd::NotAKnot);
+  const UniformGrid g = alignedGrid(s0, s1, opt.ds);
+  std::vector<double> hv(g.n);
+  for (std::size_t i = 0; i < g.n; ++i) hv[i] = fit.value(g.at(i));
+  return Profile(std::move(name), p.kind, g.s0, g.ds, hv);
+}
+
+namespace {
+
+Profile simpackProfile(const ProfilePoints& pts, const ProfileReadOptions& options) {
+  if (pts.kind == ProfileKind::Wheel && !(options.r0 > 0.0)) {
+    throw InputError(SourceLoc{pts.file, pts.kindLine},
+                     "a SIMPACK wheel profile gives the radius increase: the tape-circle radius "
+                     "r0 is needed");
+  }
+  return profileFromPoints(pts, options, stem(pts.file));
+}
+
+const char* kindName(ProfileKind k) {
+  return k == ProfileKind::Wheel ? "wheel" : "rail";
+}
+
+}  // namespace
+
+Profile readSimpackProfile(const std::string& path, const ProfileReadOptions& options) {
+  return simpackProfile(readSimpackPoints(path), options);
+}
+
+Profile readTextProfile(const std::string& path, ProfileKind kind, LengthUnit units,
+                        const ProfileReadOptions& options) {
+  return profileFromPoints(readTextPoints(path, kind, units), options, stem(path));
+}
+
+Profile readProfileFile(const std::string& path, ProfileKind kind, LengthUnit units,
+                        const ProfileReadOptions& options) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".prw" || ext == ".prr") {
+    const ProfilePoints pts = readSimpackPoints(path);
+    if (pts.kind != kind) {
+      throw InputError(SourceLoc{path, pts.kindLine}, std::string("the file holds a ") +
+                                                          kindName(pts.kind) + " profile, a " +
+                                                          kindName(kind) + " profile is expected");
+    }
+    return simpackProfile(pts, options);
+  }
+  return readTextProfile(path, kind, units, options);
+}
+
+}  // namespace rb::profiles
