@@ -198,3 +198,25 @@ TEST(ScenarioVehicle, BadVehicleReportsEveryProblem) {
             f + ":9: vehicle.elements[1] (spring_damper): direction: unknown value 'q' (did you mean 'x'?); valid: axial, x, y, z\n" +
             f + ":10: vehicle.elements[2] (bumpstop): table[1] must be a pair of numbers {a, b}");
 }
+
+TEST(ScenarioContact, ProfilesAndContactBlocks) {
+  auto spec = loadScenario("tests/scenario/good/contact.lua", opts());
+  ASSERT_TRUE(spec.has_profiles && spec.has_contact);
+  EXPECT_EQ(spec.profiles.wheel, "s1002");
+  EXPECT_EQ(std::filesystem::path(spec.profiles.rail).filename(), "MBench_UIC60_v3.prr");
+  EXPECT_TRUE(std::filesystem::path(spec.profiles.rail).is_absolute());
+  EXPECT_DOUBLE_EQ(spec.profiles.lw, 0.7515);
+  EXPECT_DOUBLE_EQ(spec.profiles.r0, 0.457);
+  EXPECT_EQ(spec.contact.method, rb::dynamics::ContactMethod::Lut);
+  EXPECT_DOUBLE_EQ(spec.contact.flange_stiffness, 7.075e13);
+  EXPECT_DOUBLE_EQ(spec.contact.mu, 0.3);
+}
+
+TEST(ScenarioContact, ConflictsAndMissingProfileFile) {
+  const std::string f = kBad + "contact_conflicts.lua";
+  EXPECT_EQ(errorsOf(f),
+            f + ":2: profiles: rail: file 'missing.prr' not found (looked in the scenario's folder and the project root)\n" +
+            f + ":2: profiles: give either lr or gauge, not both (lr overrides the positioning)\n" +
+            f + ":2: profiles: rail position and inclination come from profiles{}; remove track.rail_lr / track.rail_inclination\n" +
+            f + ":3: contact: flange_stiffness applies to method 'lut' only (KEC treats the flange as a constraint)");
+}

@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 namespace rb::scenario {
 
 const std::vector<std::string>& topLevelBlocks() {
-  static const std::vector<std::string> names = {"track", "vehicle", "solver", "run"};
+  static const std::vector<std::string> names = {"track",   "profiles", "vehicle",
+                                                 "contact", "solver",   "run"};
   return names;
 }
 

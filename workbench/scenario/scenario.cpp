@@ -467,8 +467,10 @@ void buildIrregularities(const Node& n, const std::string& path, LuaHost& host,
     r.error(n, "spectrum = \"user\" needs at least one of alignment, vertical, gauge, cross_level");
 }
 
-void buildTrack(const Node& n, LuaHost& host, track::TrackSpec& t, Diagnostics& d) {
+void buildTrack(const Node& n, LuaHost& host, track::TrackSpec& t, bool& railsGiven,
+                Diagnostics& d) {
   Reader r(n, block("track"), "track", d);
+  railsGiven = r.has("rail_lr") || r.has("rail_inclination");
   t.loc = n.loc;
   t.step = r.number("step");
   t.cant_base = r.number("cant_base");
@@ -559,6 +561,63 @@ void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d) {
   }
 }
 
+
+std::string profileSource(Reader& r, const Node& n, const std::string& key, const std::string& builtin,
+                          LuaHost& host) {
+  std::string v = r.string(key);
+  if (v.empty() || v == builtin) return builtin;
+  try {
+    return host.resolveDataFile(v, n.loc);
+  } catch (const InputError& e) {
+    r.error(n, key + ": " + e.diagnostics().front().message);
+    return builtin;
+  }
+}
+
+void buildProfiles(const Node& n, LuaHost& host, dynamics::ProfilesSpec& p, Diagnostics& d) {
+  Reader r(n, block("profiles"), "profiles", d);
+  p.loc = n.loc;
+  p.wheel = profileSource(r, n, "wheel", "s1002", host);
+  p.rail = profileSource(r, n, "rail", "60e1", host);
+  p.back_to_back = r.number("back_to_back");
+  p.gauge = r.number("gauge");
+  p.r0 = r.number("r0");
+  p.inclination = r.number("inclination");
+  p.lw = r.number("lw");
+  p.lr = r.number("lr");
+  p.refined_tables = r.boolean("refined_tables");
+  if (r.has("lw") && r.has("back_to_back"))
+    r.error(n, "give either lw or back_to_back, not both (lw overrides the positioning)");
+  if (r.has("lr") && r.has("gauge"))
+    r.error(n, "give either lr or gauge, not both (lr overrides the positioning)");
+}
+
+void buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
+  Reader r(n, block("contact"), "contact", d);
+  c.loc = n.loc;
+  c.method = r.choice("method") == "lut" ? dynamics::ContactMethod::Lut : dynamics::ContactMethod::Kec;
+  c.kec_dhat = r.number("dhat");
+  c.kec_dbar = r.number("dbar");
+  c.flange_stiffness = r.number("flange_stiffness");
+  c.flange_damping = r.number("flange_damping");
+  std::string creep = r.choice("creep");
+  c.creep = creep == "kalker" ? dynamics::CreepModel::Kalker
+            : creep == "none" ? dynamics::CreepModel::None
+                              : dynamics::CreepModel::Polach;
+  c.mu = r.number("mu");
+  c.youngs_modulus = r.number("youngs_modulus");
+  c.poisson = r.number("poisson");
+  c.normal_forces = r.choice("normal_forces") == "consistent"
+                        ? dynamics::NormalForceCoupling::Consistent
+                        : dynamics::NormalForceCoupling::Lagged;
+  // Options that belong to the other method are conflicts, not silently ignored.
+  bool kec = c.method == dynamics::ContactMethod::Kec;
+  for (const char* k : {"flange_stiffness", "flange_damping"})
+    if (kec && r.has(k)) r.error(*n.field(k), std::string(k) + " applies to method 'lut' only (KEC treats the flange as a constraint)");
+  for (const char* k : {"dhat", "dbar"})
+    if (!kec && r.has(k)) r.error(*n.field(k), std::string(k) + " applies to method 'kec' only");
+}
+
 void buildSolver(const Node& n, integ::SolverSpec& s, Diagnostics& d) {
   Reader r(n, block("solver"), "solver", d);
   s.loc = n.loc;
@@ -619,8 +678,20 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   Diagnostics d;
   for (const auto& o : options.overrides) applyOverride(root, o, d);
 
-  if (const Node* t = root.field("track")) buildTrack(*t, host, spec.track, d);
+  if (const Node* t = root.field("track"))
+    buildTrack(*t, host, spec.track, spec.track_rails_given, d);
   else d.add({path, 0}, "scenario has no track { ... } block");
+  if (const Node* p = root.field("profiles")) {
+    spec.has_profiles = true;
+    buildProfiles(*p, host, spec.profiles, d);
+    if (spec.track_rails_given)
+      d.add(p->loc, "profiles: rail position and inclination come from profiles{}; remove "
+                    "track.rail_lr / track.rail_inclination");
+  }
+  if (const Node* c = root.field("contact")) {
+    spec.has_contact = true;
+    buildContact(*c, spec.contact, d);
+  }
   if (const Node* v = root.field("vehicle")) {
     spec.has_vehicle = true;
     buildVehicle(*v, spec.vehicle, d);

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "workbench/dynamics/spec.hpp"
 #include "workbench/integrators/spec.hpp"
 #include "workbench/track/spec.hpp"
 #include "workbench/vehicle/spec.hpp"
@@ -21,6 +22,11 @@ struct ScenarioSpec {
   std::string text;                    // full text of the scenario file (provenance)
   std::vector<std::string> overrides;  // --set key=value, in order
   track::TrackSpec track;
+  bool track_rails_given = false;  // track.rail_lr or track.rail_inclination set explicitly
+  bool has_profiles = false;
+  dynamics::ProfilesSpec profiles;
+  bool has_contact = false;
+  dynamics::ContactSpec contact;
   bool has_vehicle = false;
   vehicle::VehicleSpec vehicle;
   bool has_solver = false;

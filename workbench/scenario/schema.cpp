@@ -174,6 +174,47 @@ std::vector<BlockSpec> build() {
                {file, num("step", "m", 0.1, "spline sampling step", 0, kInf, true)}});
 
 
+
+  s.push_back(
+      {"profiles",
+       "Wheel and rail profiles and their positioning (paper Table 1). Built-in profiles: S1002 "
+       "wheel (EN 13715) and 60E1 rail (EN 13674-1); the paper's LB-140-Area rail has no public "
+       "geometry, so 60E1 at 1:40 is the default (docs/profiles.md).",
+       {typed("wheel", ValueType::String, "-",
+              "\"s1002\" or a wheel profile file (.prw or two-column text) below the scenario"),
+        typed("rail", ValueType::String, "-",
+              "\"60e1\" or a rail profile file (.prr or two-column text) below the scenario"),
+        num("back_to_back", "m", 1.36, "back-to-back distance B (Lw = B/2 + 70 mm for S1002)", 1.3,
+            1.5),
+        num("gauge", "m", 1.435, "track gauge G, 14 mm below the rail top (sets Lr)", 1.0, 2.0),
+        num("r0", "m", 0.46, "nominal rolling radius (Manchester vehicle 1: 0.46 m; paper Table 1: "
+            "0.457 m)", 0.2, 0.7),
+        num("inclination", "rad", 0.025, "rail inclination beta (1:40 = 0.025)", 0, 0.1),
+        num("lw", "m", 0, "explicit Lw, 0 = from back_to_back (paper Table 1: 0.7515)", 0, 1.0),
+        num("lr", "m", 0, "explicit Lr, 0 = from gauge (paper Table 1: 0.7555)", 0, 1.0),
+        boolean("refined_tables", false, "use the refined LUT/KEC grids of paper Tables 9-10")}});
+  s.push_back(
+      {"contact",
+       "Wheel/rail contact: constraint method (paper section 2.3-2.4), LUT flange Hertz contact "
+       "(Table 3, Eq. 20), tangential forces (section 2.5).",
+       {choice("method", {"kec", "lut"}, "kec",
+               "kec: knife-edge equivalent contact; lut: contact lookup table with Hertz flange"),
+        num("dhat", "m", 0.5e-3, "KEC tread-flange transition length on the flange side", 0, 0.01,
+            true),
+        num("dbar", "m", 1e-3, "KEC tread-flange transition length on the tread side", 0, 0.01,
+            true),
+        num("flange_stiffness", "N/m^1.5", 1e10, "LUT Hertz flange stiffness K (Table 3)", 0, 1e15,
+            true),
+        num("flange_damping", "N s/m^2", -1, "LUT flange damping D; default K/100 as in Table 3",
+            -1, 1e14),
+        choice("creep", {"polach", "kalker", "none"}, "polach",
+               "tangential force law (paper: Polach)"),
+        num("mu", "-", 0.2364, "friction coefficient (paper section 5.1)", 0, 1),
+        num("youngs_modulus", "Pa", 2.1e11, "Young's modulus of wheel and rail", 1e9, 1e12),
+        num("poisson", "-", 0.28, "Poisson ratio", 0, 0.5),
+        choice("normal_forces", {"lagged", "consistent"}, "lagged",
+               "normal forces for creep: previous step's (the paper) or solved together")}});
+
   // Vehicle (issue 5): bodies in track-frame coordinates and suspension elements (Appendix A).
   s.push_back(
       {"vehicle",
