@@ -35,13 +35,18 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
   io::Series& time = f.series("/time", "s");
   std::vector<io::Series*> series;
   for (const auto& o : r.outputs) series.push_back(&f.series(o.path, o.units));
+  RB_CHECK(r.outputs.empty() || r.sample, "output channels need a sampler");
+  std::vector<double> values(r.outputs.size());
   double lastFlush = wallNow();
   double start = lastFlush;
   double lastDistance = 0.0;
 
   auto observer = [&](double t, const Eigen::VectorXd& y) {
     time.append(t);
-    for (std::size_t i = 0; i < series.size(); ++i) series[i]->append(y[r.outputs[i].index]);
+    if (!series.empty()) {
+      r.sample(t, y, values.data());
+      for (std::size_t i = 0; i < series.size(); ++i) series[i]->append(values[i]);
+    }
     if (r.distance) lastDistance = r.distance(t, y);
     double now = wallNow();
     if (now - lastFlush > 1.0) {  // keep results on disk as the run goes

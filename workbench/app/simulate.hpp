@@ -13,12 +13,14 @@
 
 namespace rb::app {
 
-// One state component written as a time series: state[index] -> dataset `path` [units].
-struct StateOutput {
+// One output time series: dataset `path` [units].
+struct OutputChannel {
   std::string path;   // "/bodies/ws1/y"
   std::string units;  // "m"
-  int index = 0;
 };
+// Fills one value per channel at an output time (state y at time t). Called only at output
+// times, so what it computes costs nothing between outputs.
+using OutputSampler = std::function<void(double t, const Eigen::VectorXd& y, double* values)>;
 
 struct SimulationRequest {
   integ::OdeSystem* system = nullptr;
@@ -27,7 +29,8 @@ struct SimulationRequest {
   Eigen::VectorXd y0;
   double t_end = 0.0;          // [s]
   double output_every = 0.01;  // [s]
-  std::vector<StateOutput> outputs;
+  std::vector<OutputChannel> outputs;
+  OutputSampler sample;  // required when outputs is not empty
   // Distance travelled [m] at (t, y), for progress and failure messages; optional.
   std::function<double(double, const Eigen::VectorXd&)> distance;
   bool progress = false;  // progress line on stderr (the app enables it for terminals)
