@@ -4,8 +4,12 @@
 usage: /usr/bin/python3 plots/plot_run.py RESULT.h5 [--outdir DIR] [--dpi N]
 
 Writes <stem>_<figure>.png (default: next to RESULT.h5) for every figure the file's content
-allows and prints the written paths, one per line.  On a missing or invalid file it prints one
-line "plot_run: error: ..." to stderr and exits with status 1.
+allows and prints the written paths, one per line.  When the file has /stats, a one-line run
+summary starting with "stats: " is printed first (status, solver, CPU time, real-time factor
+t_reached / cpu_time_s, rhs evaluations, steps).  A failed run (/stats status "failed") is still
+plotted up to where it stopped, with "FAILED at t = ... s: <message>" in red above every figure's
+title.  On a missing or invalid file it prints one line "plot_run: error: ..." to stderr and
+exits with status 1.
 """
 import argparse
 import os
@@ -34,6 +38,9 @@ def main(argv=None) -> int:
         print(f"plot_run: error: {e.strerror or e}: {e.filename or ''}".rstrip(": "),
               file=sys.stderr)
         return 1
+    summary = rp.stats_summary(res)
+    if summary:
+        print(summary)
     for p in paths:
         print(p)
     if not paths:

@@ -8,9 +8,24 @@ Figures (each returns a matplotlib Figure; nothing is written)
     fig_curvature_cant(result)           curvature [1/km] and cant [mm] / cant angle vs s
     fig_irregularities(result)           alignment, vertical, gauge, cross level [mm] vs s
     fig_irregularity_psd(result)         Welch estimate vs target one-sided PSD, log-log
+    fig_wheelsets(result)                lateral displacement [mm] and yaw [mrad] of every
+                                         wheelset vs distance (paper Fig. 17, 19, 21)
+    fig_bodies_car(result)               the same for bogies and car body (Fig. 20, 22)
+    fig_kinematics(runs, names, title)   the same for any bodies, several runs overlaid
+    fig_contact_forces(result)           normal force Q, flange force / indentation, Y/Q per
+                                         wheelset and side vs distance (Fig. 24, 25)
+    fig_creep(result)                    creepages, spin and creep forces per wheelset
+
+Vehicle results
+    steady_state(result, fraction=0.2)   mean y [mm] and yaw [mrad] of every body over the
+                                         last 20 % of its distance (paper Tables 5, 6)
+    stats_summary(result)                one-line summary of /stats (None without /stats)
+    add_failure_banner(fig, text)        red "FAILED at t = ..." line above a figure's title
 
 Driver
     FIGURES                              registry: (suffix, is_available(result), make(result))
+    build_figure(result, spec)           make one figure, with the failure banner if the run
+                                         failed (/stats status "failed")
     make_figures(result, outdir, stem)   writes every available figure, returns the paths
 
 Signal processing
@@ -26,9 +41,13 @@ Conventions (docs: /work/shared/reference/track_irregularity_psd.md)
     variance = integral G dOmega.  With G_f the one-sided PSD in m^2/(cycle/m),
     G_Omega = G_f / (2*pi).
 
-Adding figures for later groups (/time, /bodies, /contact, /stats): read them in load_result
-(or lazily with Result.read_group), write a fig_* function and append a FigureSpec to FIGURES
-whose is_available() checks for the group.  make_figures() and plot_run.py need no change.
+Adding figures for later groups: read them in load_result (or lazily with Result.read_group),
+write a fig_* function and append a FigureSpec to FIGURES whose is_available() checks for the
+group.  make_figures() and plot_run.py need no change.
+
+Vehicle groups (/time, /bodies, /contact, /elements, /stats) are optional: a file holding only
+the track still loads.  Time series may be cut short (failed or interrupted run): every figure
+plots the samples it has and truncates x/y pairs to their common length.
 
 Only numpy, matplotlib (Agg) and h5py are used; no scipy.
 """
@@ -52,7 +71,10 @@ __all__ = [
     "ResultFileError", "Result", "Track", "Irregularities", "load_result",
     "default_nperseg", "welch_segment_starts", "welch_psd", "interp_loglog", "octave_band_ratios", "fractional_octave_average",
     "fig_track_plan", "fig_curvature_cant", "fig_irregularities", "fig_irregularity_psd",
-    "FigureSpec", "FIGURES", "make_figures", "report_style",
+    "Body", "WheelsetContact", "Contact",
+    "fig_wheelsets", "fig_bodies_car", "fig_kinematics", "fig_contact_forces", "fig_creep",
+    "steady_state", "stats_summary", "failure_text", "add_failure_banner", "body_title",
+    "FigureSpec", "FIGURES", "build_figure", "make_figures", "report_style",
 ]
 
 # --------------------------------------------------------------------------------------------
@@ -79,6 +101,15 @@ CHANNEL_COLORS = {
     "gauge": "#1b7837",
     "cross_level": "#6a3d9a",
 }
+
+# Overlaid runs (paper Fig. 17, 19-22: one colour per method); line styles keep them apart in
+# black-and-white print.
+RUN_COLORS = ("#1f5fa8", "#b2182b", "#1b7837", "#e08214", "#6a3d9a", "#555555")
+RUN_STYLES = ("-", (0, (5, 2.5)), (0, (1.2, 1.6)), (0, (6, 2, 1.2, 2)), (0, (3, 1.5)), "-")
+SIDE_STYLE = {"left": dict(color="#1f5fa8", ls="-"),
+              "right": dict(color="#b2182b", ls=(0, (5, 2.5)))}
+FAIL_COLOR = "#d00000"
+KINEMATIC_KINDS = ("wheelset", "bogie", "car")
 
 _RC = {
     "font.size": 8.5,
@@ -222,17 +253,102 @@ class Irregularities:
 
 
 @dataclass
+class Body:
+    name: str
+    kind: str                        # "car", "bogie", "wheelset", "frame" (or as the file says)
+    data: Dict[str, np.ndarray]      # s y z roll pitch yaw (+ rates etc.), SI units as stored
+
+    def has(self, *keys: str) -> bool:
+        return all(k in self.data and self.data[k].size > 0 for k in keys)
+
+    @property
+    def title(self) -> str:
+        return body_title(self.name)
+
+
+def body_title(name: str) -> str:
+    """Display name: "ws1" -> "wheelset 1", "bogie2" -> "bogie 2", "car" -> "car body"."""
+    import re
+    m = re.fullmatch(r"(ws|wheelset|bogie|car|carbody|car_body)[ _]?(\d*)", name, re.IGNORECASE)
+    if not m:
+        return name
+    word = {"ws": "wheelset", "carbody": "car body", "car_body": "car body",
+            "car": "car body"}.get(m.group(1).lower(), m.group(1).lower())
+    return f"{word} {m.group(2)}".strip()
+
+
+@dataclass
+class WheelsetContact:
+    name: str                                              # wheelset (body) name
+    sides: Dict[str, Dict[str, np.ndarray]]                # "left"/"right" -> datasets
+    data: Dict[str, np.ndarray]                            # y_over_q_left, y_over_q_right, ...
+
+    def side(self, side: str, key: str) -> Optional[np.ndarray]:
+        v = self.sides.get(side, {}).get(key)
+        return v if v is not None and v.size > 0 else None
+
+
+@dataclass
+class Contact:
+    attrs: Dict[str, object]
+    wheelsets: Dict[str, WheelsetContact]                  # in vehicle order
+
+    def has_any(self, keys: Sequence[str]) -> bool:
+        for wc in self.wheelsets.values():
+            for k in keys:
+                if any(wc.side(sd, k) is not None for sd in ("left", "right")):
+                    return True
+                if k in wc.data and wc.data[k].size:
+                    return True
+        return False
+
+
+@dataclass
 class Result:
     path: str
     attrs: Dict[str, object]
     groups: List[str]                    # top-level group/dataset names present in the file
     track: Optional[Track] = None
     irregularities: Optional[Irregularities] = None
-    extra: Dict[str, object] = field(default_factory=dict)  # room for /time, /bodies, ...
+    extra: Dict[str, object] = field(default_factory=dict)  # room for later groups
+    time: Optional[np.ndarray] = None                       # /time [s]
+    bodies: Dict[str, Body] = field(default_factory=dict)   # /bodies, in vehicle order
+    contact: Optional[Contact] = None                       # /contact
+    elements: Dict[str, Dict[str, np.ndarray]] = field(default_factory=dict)  # /elements
+    stats: Optional[Dict[str, object]] = None               # /stats attributes
 
     @property
     def stem(self) -> str:
         return os.path.splitext(os.path.basename(self.path))[0]
+
+    @property
+    def failed(self) -> bool:
+        return bool(self.stats) and str(self.stats.get("status", "ok")).strip().lower() == "failed"
+
+    @property
+    def contact_method(self) -> Optional[str]:
+        m = self.attrs.get("contact_method")
+        if not m and self.contact is not None:
+            m = self.contact.attrs.get("method")
+        return str(m).strip() if m else None
+
+    def label(self) -> str:
+        """Short run label for legends: contact method in capitals (KEC, LUT), else the stem."""
+        m = self.contact_method
+        return m.upper() if m else self.stem
+
+    def kinematic_bodies(self, kinds: Sequence[str] = KINEMATIC_KINDS) -> List[str]:
+        """Names of bodies of the given kinds that can be drawn against distance (have s)."""
+        return [n for n, b in self.bodies.items() if b.kind in kinds and b.has("s")]
+
+    def t_reached(self) -> Optional[float]:
+        t = self.stats.get("t_reached") if self.stats else None
+        if isinstance(t, (int, float)) and math.isfinite(t):
+            return float(t)
+        if self.time is not None and self.time.size:
+            ok = self.time[np.isfinite(self.time)]
+            return float(ok[-1]) if ok.size else None
+        return None
 
     def read_group(self, group: str) -> Dict[str, np.ndarray]:
         """All 1-D datasets directly under `group` (lazy reader for figures added later)."""
@@ -250,6 +366,110 @@ _CENTRELINE = {"s": "m", "x": "m", "y": "m", "z": "m", "heading": "rad", "slope"
 _SEGMENTS = {"start": "m", "length": "m", "kind": "-", "radius": "m", "side": "-", "cant": "m"}
 _IRR = {"s": "m", "alignment": "m", "vertical": "m", "gauge": "m", "cross_level": "m"}
 _IRR_OPTIONAL = {"left_y": "m", "left_z": "m", "right_y": "m", "right_z": "m", "delta": "rad"}
+
+# Vehicle groups.  Only these names are unit-checked; other 1-D numeric datasets (rates such as
+# y_dot, later additions) are read as they are and ignored by the figures.
+_BODY_DS = {"s": "m", "x": "m", "y": "m", "z": "m", "roll": "rad", "pitch": "rad", "yaw": "rad"}
+_CONTACT_DS = {"normal_force": "N", "creep_force_x": "N", "creep_force_y": "N", "creepage_x": "-",
+               "creepage_y": "-", "spin": "1/m", "wheel_s": "m", "rail_s": "m",
+               "flange_indentation": "m", "flange_force": "N", "regime": "-"}
+_CONTACT_WS_DS = {"y_over_q_left": "-", "y_over_q_right": "-"}
+
+
+def _guess_kind(name: str) -> str:
+    n = name.lower()
+    if n.startswith(("ws", "wheelset")):
+        return "wheelset"
+    if n.startswith("bogie"):
+        return "bogie"
+    if n.startswith("car"):
+        return "car"
+    return "other"
+
+
+def _names_attr(v) -> List[str]:
+    """A newline-separated string (or an array of strings) -> list of names."""
+    if isinstance(v, np.ndarray) and v.ndim == 1:
+        items = [_str(x) for x in v]
+    else:
+        items = _str(v).splitlines()
+    return [x.strip() for x in items if x.strip()]
+
+
+def _read_series(group, where: str, units: Dict[str, str]) -> Dict[str, np.ndarray]:
+    """All 1-D numeric datasets directly under `group` (others are skipped silently)."""
+    import h5py
+    out = {}
+    for k, d in group.items():
+        if not isinstance(d, h5py.Dataset) or d.dtype.kind not in "fiub" or d.ndim > 1:
+            continue
+        out[k] = _read_ds(group, k, where, units.get(k))
+    return out
+
+
+def _load_dynamics(f, res: Result) -> None:
+    """Optional groups /time, /bodies, /contact, /elements, /stats into `res`."""
+    import h5py
+    ragged: List[str] = []
+    n_t = None
+    if "time" in f and isinstance(f["time"], h5py.Dataset):
+        res.time = _read_ds(f, "time", "", "s")
+        n_t = res.time.size
+
+    def note_len(where, arrays):
+        if n_t is not None:
+            ragged.extend(f"{where}/{k}" for k, v in arrays.items() if v.size != n_t)
+
+    if "bodies" in f and isinstance(f["bodies"], h5py.Group):
+        g = f["bodies"]
+        present = [k for k, v in g.items() if isinstance(v, h5py.Group)]
+        names = _names_attr(g.attrs["names"]) if "names" in g.attrs else []
+        missing = [n for n in names if n not in present]
+        if missing:
+            print(f"railbench_plots: warning: {res.path}: /bodies names {', '.join(missing)} "
+                  f"without a group", file=sys.stderr)
+        order = [n for n in names if n in present] + [n for n in present if n not in names]
+        for n in order:
+            bg = g[n]
+            kind = _str(bg.attrs["kind"]).strip().lower() if "kind" in bg.attrs else _guess_kind(n)
+            data = _read_series(bg, f"/bodies/{n}", _BODY_DS)
+            note_len(f"/bodies/{n}", data)
+            res.bodies[n] = Body(name=n, kind=kind, data=data)
+        if res.bodies and not any("s" in b.data for b in res.bodies.values()):
+            print(f"railbench_plots: warning: {res.path}: no body has an 's' dataset (distance); "
+                  f"body figures skipped", file=sys.stderr)
+
+    if "contact" in f and isinstance(f["contact"], h5py.Group):
+        g = f["contact"]
+        wss = [k for k, v in g.items() if isinstance(v, h5py.Group)]
+        body_order = [n for n in res.bodies if n in wss]
+        wss = body_order + sorted(n for n in wss if n not in body_order)
+        cws = {}
+        for w in wss:
+            wg = g[w]
+            sides = {}
+            for side in ("left", "right"):
+                if side in wg and isinstance(wg[side], h5py.Group):
+                    sides[side] = _read_series(wg[side], f"/contact/{w}/{side}", _CONTACT_DS)
+                    note_len(f"/contact/{w}/{side}", sides[side])
+            data = _read_series(wg, f"/contact/{w}", _CONTACT_WS_DS)
+            note_len(f"/contact/{w}", data)
+            cws[w] = WheelsetContact(name=w, sides=sides, data=data)
+        res.contact = Contact(attrs=_attrs(g), wheelsets=cws)
+
+    if "elements" in f and isinstance(f["elements"], h5py.Group):
+        for k, v in f["elements"].items():
+            if isinstance(v, h5py.Group):
+                res.elements[k] = _read_series(v, f"/elements/{k}", {})
+                note_len(f"/elements/{k}", res.elements[k])
+
+    if "stats" in f:
+        res.stats = _attrs(f["stats"])
+
+    if ragged:
+        print(f"railbench_plots: warning: {res.path}: {len(ragged)} time series differ in length "
+              f"from /time ({n_t} samples; interrupted run?), e.g. {ragged[0]}; plotted up to "
+              f"their common length", file=sys.stderr)
 
 
 def load_result(path: str) -> Result:
@@ -310,6 +530,7 @@ def load_result(path: str) -> Result:
                             target[c] = _read_ds(tg, c, "/track/irregularities/target_psd",
                                                  "m^2/(rad/m)")
                 res.irregularities = Irregularities(attrs=_attrs(ig), data=data, target=target)
+            _load_dynamics(f, res)
             return res
     except ResultFileError:
         raise
@@ -808,6 +1029,468 @@ def _om2lam(v):
 
 
 # --------------------------------------------------------------------------------------------
+# Vehicle results: helpers
+# --------------------------------------------------------------------------------------------
+def _pair(x: np.ndarray, v: np.ndarray) -> Tuple[np.ndarray, np.ndarray]:
+    """x and v cut to their common length (a failed run may leave ragged series)."""
+    n = min(x.size, v.size)
+    return x[:n], v[:n]
+
+
+def _last_finite(x: np.ndarray, v: np.ndarray) -> Optional[Tuple[float, float]]:
+    ok = np.flatnonzero(np.isfinite(x) & np.isfinite(v))
+    return (float(x[ok[-1]]), float(v[ok[-1]])) if ok.size else None
+
+
+def _num(v) -> Optional[float]:
+    if isinstance(v, (bool, np.bool_)):
+        return None
+    if isinstance(v, (int, float, np.integer, np.floating)) and math.isfinite(float(v)):
+        return float(v)
+    return None
+
+
+def failure_text(result: Result) -> Optional[str]:
+    """'FAILED at t = 12.345 s: <message>' for a failed run (/stats status), else None."""
+    if not result.failed:
+        return None
+    t = result.t_reached()
+    head = f"FAILED at t = {t:.6g} s" if t is not None else "FAILED"
+    msg = " ".join(str(result.stats.get("message", "")).split())
+    return f"{head}: {msg}" if msg else head
+
+
+def add_failure_banner(fig, text: str, max_chars: Optional[int] = None, max_lines: int = 3):
+    """Red line(s) `text` at the very top of `fig`, above its suptitle (or axes title).
+
+    For constrained-layout figures the layout rectangle is lowered by the banner height and
+    an existing suptitle is moved just below the banner (its height reserved explicitly, since
+    constrained layout only reserves room for a suptitle at its automatic position)."""
+    import textwrap
+    fs = 8.5
+    if max_chars is None:  # bold DejaVu Sans: ~0.63 em per character on average
+        max_chars = max(20, int(fig.get_size_inches()[0] * 72 * 0.95 / (0.63 * fs)))
+    lines = textwrap.wrap(text, max_chars) or [text]
+    if len(lines) > max_lines:
+        lines = lines[:max_lines]
+        lines[-1] = lines[-1][:max_chars - 1].rstrip() + "…"
+    pad_in = 3.0 / 72
+    line_in = fs * 1.25 / 72
+    fig_h = fig.get_size_inches()[1]
+    banner_in = len(lines) * line_in + pad_in
+    reserve_in = banner_in + pad_in
+    sup = getattr(fig, "_suptitle", None)
+    if sup is not None and not sup.get_text():
+        sup = None
+    if sup is not None:
+        sup_in = (sup.get_text().count("\n") + 1) * sup.get_fontsize() * 1.25 / 72
+        reserve_in += sup_in + pad_in
+    eng = fig.get_layout_engine()
+    params = eng.get() if eng is not None else {}
+    if "rect" in params:
+        left, bottom, width, height = params["rect"]
+        top = bottom + height
+        eng.set(rect=(left, bottom, width, height - reserve_in / fig_h))
+    else:  # not constrained layout: plain subplots
+        top = 1.0
+        fig.subplots_adjust(top=min(fig.subplotpars.top, 1.0 - reserve_in / fig_h))
+    if sup is not None:
+        fig.suptitle(sup.get_text(), y=top - (banner_in + pad_in) / fig_h, va="top",
+                     fontsize=sup.get_fontsize(), fontweight=sup.get_fontweight(),
+                     color=sup.get_color())
+    fig.text(0.5, top - pad_in / fig_h, "\n".join(lines), ha="center", va="top", fontsize=fs,
+             color=FAIL_COLOR, fontweight="bold", linespacing=1.1)
+    return fig
+
+
+def _run_info(result: Result) -> str:
+    parts = [result.stem]
+    m = result.contact_method
+    if m:
+        parts.append(f"{m.upper()} contact")
+    sv = result.attrs.get("solver") or (result.stats or {}).get("method")
+    if sv:
+        parts.append(f"solver {sv}")
+    return ", ".join(parts)
+
+
+def _grid(n_items: int, n_quant: int, row_h: float, extra_h: float, max_cols: int = 4):
+    """Axes for n_items columns (bodies / wheelsets) x n_quant rows (quantities).
+
+    More than max_cols items wrap into further bands of n_quant rows.  All axes share x; every
+    band's bottom row keeps its x tick labels.  Returns (fig, cells, ncol), cells[i][q]."""
+    nb = max(1, math.ceil(n_items / max_cols))
+    ncol = max(1, math.ceil(n_items / nb))
+    nrows = nb * n_quant
+    fig_h = min(nrows * row_h + extra_h, 9.4)
+    fig, axes = plt.subplots(nrows, ncol, figsize=(A4_WIDTH_IN, fig_h), sharex=True,
+                             squeeze=False, layout="constrained")
+    cells = []
+    for i in range(nb * ncol):
+        b, c = divmod(i, ncol)
+        col = [axes[b * n_quant + q, c] for q in range(n_quant)]
+        if i >= n_items:
+            for ax in col:
+                ax.set_visible(False)
+            continue
+        col[-1].xaxis.set_tick_params(labelbottom=True)
+        cells.append(col)
+    return fig, cells, ncol
+
+
+def _share_rows(cells: List[List], keys: Sequence[str], ncol: int, labels: Sequence[str]):
+    """Share y within each quantity row between items with the same key (e.g. body kind); y
+    tick labels are dropped where the left neighbour already shows the same scale.  The first
+    column of every band gets the row labels `labels`."""
+    for q in range(len(cells[0]) if cells else 0):
+        first: Dict[str, object] = {}
+        for i, col in enumerate(cells):
+            ax = col[q]
+            if i % ncol == 0:
+                ax.set_ylabel(labels[q])
+            ref = first.get(keys[i])
+            if ref is None:
+                first[keys[i]] = ax
+                continue
+            ax.sharey(ref)
+            if i % ncol != 0 and keys[i - 1] == keys[i]:
+                ax.tick_params(labelleft=False)
+
+
+def _min_span(ax, span: float):
+    lo, hi = ax.get_ylim()
+    if hi - lo < span:
+        c = 0.5 * (lo + hi)
+        ax.set_ylim(c - span / 2, c + span / 2)
+
+
+def _bottom_legend(fig, groups: Sequence[Sequence], fig_h: float, max_per_row: int = 6):
+    """Legend in a strip below the axes (matplotlib 3.6: no loc="outside ...").
+
+    groups: lists of handles (e.g. runs, then segment kinds and markers).  They share one row
+    when they fit in `max_per_row` entries, else each group gets a row of its own (split if
+    longer), filled left to right."""
+    from matplotlib.lines import Line2D
+
+    groups = [list(g) for g in groups if g]
+    if not groups:
+        return
+    flat = [h for g in groups for h in g]
+    if len(flat) <= max_per_row:
+        rows = [flat]
+    else:
+        rows = []
+        for g in groups:
+            rows += [g[i:i + max_per_row] for i in range(0, len(g), max_per_row)]
+    ncol = max(len(r) for r in rows)
+    blank = lambda: Line2D([], [], ls="none", label=" ")  # noqa: E731
+    rows = [r + [blank() for _ in range(ncol - len(r))] for r in rows]
+    handles = [rows[r][c] for c in range(ncol) for r in range(len(rows))]  # column-major
+    strip = (0.1 + 0.17 * len(rows)) / fig_h
+    eng = fig.get_layout_engine()
+    left, bottom, width, height = eng.get()["rect"]
+    eng.set(rect=(left, bottom + strip, width, height - strip))
+    fig.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 0.0), ncol=ncol,
+               fontsize=7, frameon=False, handlelength=2.2, columnspacing=1.4)
+
+
+def _set_distance_range(ax, xmin: float, xmax: float, track: Optional[Track], to_end: bool):
+    """x limits from the data; ends within 5 % of the track length snap to the track ends, and
+    `to_end` (failed run) extends the range to the track end to show what is missing."""
+    if track is not None:
+        bounds = track.segment_bounds()
+        b0, b1 = float(bounds[0]), float(bounds[-1])
+        tol = 0.05 * (b1 - b0)
+        if to_end:
+            xmax = max(xmax, b1)
+        if np.isfinite(xmin) and abs(xmin - b0) < tol:
+            xmin = min(xmin, b0)
+        if np.isfinite(xmax) and abs(xmax - b1) < tol:
+            xmax = max(xmax, b1)
+    if np.isfinite(xmin) and np.isfinite(xmax) and xmax > xmin:
+        ax.set_xlim(xmin, xmax)
+
+
+def _fail_marker(ax, x, v):
+    p = _last_finite(x, v)
+    if p is not None:
+        ax.plot([p[0]], [p[1]], ls="none", marker="x", ms=5, mew=1.3, color=FAIL_COLOR, zorder=6)
+
+
+def _fail_handle(label="last output of a failed run"):
+    from matplotlib.lines import Line2D
+    return Line2D([], [], ls="none", marker="x", ms=5, mew=1.3, color=FAIL_COLOR, label=label)
+
+
+def _run_style(k: int) -> Dict[str, object]:
+    """Colour, dash pattern and width of run k (dotted lines a little wider to stay visible)."""
+    ls = RUN_STYLES[k % len(RUN_STYLES)]
+    dotted = isinstance(ls, tuple) and ls[1][0] < 2
+    return dict(color=RUN_COLORS[k % len(RUN_COLORS)], ls=ls, lw=1.3 if dotted else 1.0)
+
+
+# Rows of the kinematics figures: dataset, scale to display unit, y label, minimum y span.
+_KIN_ROWS = (
+    ("y", 1e3, "lateral displacement\ny [mm]", 1.0),
+    ("yaw", 1e3, "yaw angle\nψ [mrad]", 1.0),
+)
+
+
+def fig_kinematics(runs: Sequence[Tuple[Result, str]], names: Sequence[str], title: str):
+    """Lateral displacement y [mm] (top row) and yaw angle ψ [mrad] (bottom row) of the bodies
+    `names` (one column each, up to 4 per band) versus the travelled distance s of each body,
+    segments shaded as in paper Fig. 17 (white tangent, grey transition, blue curve).
+
+    runs: [(result, label), ...]; each run gets its own colour and line style (Fig. 19-22).
+    The track of the first run is shaded.  Bodies of the same kind share the y scale in a row.
+    A failed run ends with a red x at its last output; the x range then reaches the track end.
+    """
+    from matplotlib.lines import Line2D
+
+    if not names:
+        raise ValueError("fig_kinematics: no bodies to draw")
+    tr = runs[0][0].track
+    kinds = []
+    for n in names:
+        b = next((r.bodies[n] for r, _ in runs if n in r.bodies), None)
+        kinds.append(b.kind if b is not None else "?")
+    any_failed = any(r.failed for r, _ in runs)
+    with report_style():
+        fig, cells, ncol = _grid(len(names), len(_KIN_ROWS), row_h=1.55, extra_h=0.95)
+        _share_rows(cells, kinds, ncol, [row[2] for row in _KIN_ROWS])
+        fig_h = fig.get_size_inches()[1]
+        xmin, xmax = np.inf, -np.inf
+        for i, (n, col) in enumerate(zip(names, cells)):
+            for q, (key, scale, ylab, _) in enumerate(_KIN_ROWS):
+                ax = col[q]
+                if tr is not None:
+                    _shade_segments(ax, tr)
+                ax.axhline(0, color="k", lw=0.4, zorder=0.6)
+                for k, (r, _) in enumerate(runs):
+                    b = r.bodies.get(n)
+                    if b is None or not b.has("s", key):
+                        continue
+                    x, v = _pair(b.data["s"], b.data[key] * scale)
+                    ax.plot(x, v, zorder=2 + k, **_run_style(k))
+                    if r.failed:
+                        _fail_marker(ax, x, v)
+                    fin = x[np.isfinite(x)]
+                    if fin.size:
+                        xmin, xmax = min(xmin, fin.min()), max(xmax, fin.max())
+                if q == 0:
+                    ax.set_title(body_title(n), fontsize=8.5)
+                if q == len(_KIN_ROWS) - 1:
+                    ax.set_xlabel("distance s [m]")
+        for col in cells:
+            for q, row in enumerate(_KIN_ROWS):
+                _min_span(col[q], row[3])
+        _set_distance_range(cells[0][0], xmin, xmax, tr, any_failed)
+        handles = []
+        for k, (r, lab) in enumerate(runs):
+            handles.append(Line2D([], [], label=lab + (" (failed)" if r.failed else ""),
+                                  **_run_style(k)))
+        marks = _segment_legend_handles(tr) if tr is not None else []
+        if any_failed:
+            marks.append(_fail_handle())
+        _bottom_legend(fig, [handles, marks], fig_h)
+        fig.suptitle(title, fontsize=9.5)
+    return fig
+
+
+def fig_wheelsets(result: Result):
+    """Lateral displacement [mm] and yaw angle [mrad] of every wheelset vs distance (Fig. 19)."""
+    names = result.kinematic_bodies(("wheelset",))
+    return fig_kinematics([(result, result.label())], names,
+                          f"Wheelsets: lateral displacement and yaw angle — {_run_info(result)}")
+
+
+def fig_bodies_car(result: Result):
+    """The same for the bogies and the car body (Fig. 20), bogies first."""
+    names = result.kinematic_bodies(("bogie",)) + result.kinematic_bodies(("car",))
+    return fig_kinematics([(result, result.label())], names,
+                          f"Bogies and car body: lateral displacement and yaw angle — "
+                          f"{_run_info(result)}")
+
+
+# Rows of the contact figures: dataset (per side, or Y/Q per wheelset), scale, label, min span.
+_CONTACT_ROWS = (
+    ("normal_force", 1e-3, "normal force\nQ [kN]", 5.0),
+    ("flange_force", 1e-3, "flange force\n[kN]", 2.0),
+    ("flange_indentation", 1e3, "flange indent.\n[mm]", 0.05),
+    ("y_over_q", 1.0, "derailment\nquotient Y/Q [-]", 0.1),
+)
+_CREEP_ROWS = (
+    ("creepage_x", 1e3, "long. creepage\nξx [‰]", 0.5),
+    ("creepage_y", 1e3, "lat. creepage\nξy [‰]", 0.5),
+    ("spin", 1.0, "spin\nφ [1/m]", 0.02),
+    ("creep_force_x", 1e-3, "long. creep\nforce Fx [kN]", 1.0),
+    ("creep_force_y", 1e-3, "lat. creep\nforce Fy [kN]", 1.0),
+)
+
+
+def _contact_series(wc: WheelsetContact, key: str, side: str) -> Optional[np.ndarray]:
+    if key == "y_over_q":
+        v = wc.data.get(f"y_over_q_{side}")
+        return v if v is not None and v.size else None
+    return wc.side(side, key)
+
+
+def _contact_rows(result: Result, rows) -> list:
+    c = result.contact
+    if c is None:
+        return []
+    return [row for row in rows
+            if any(_contact_series(wc, row[0], sd) is not None
+                   for wc in c.wheelsets.values() for sd in ("left", "right"))]
+
+
+def _contact_figure(result: Result, rows, title: str):
+    """Rows = quantities, columns = wheelsets; left wheel solid blue, right wheel dashed red."""
+    from matplotlib.lines import Line2D
+
+    c = result.contact
+    tr = result.track
+    wss = list(c.wheelsets)
+    use_s = all(w in result.bodies and result.bodies[w].has("s") for w in wss)
+    if use_s:
+        xs = {w: result.bodies[w].data["s"] for w in wss}
+        xlabel = "distance s [m]"
+    elif result.time is not None:
+        xs = {w: result.time for w in wss}
+        xlabel = "time t [s]"
+    else:  # no abscissa at all: sample index
+        xs = {w: None for w in wss}
+        xlabel = "output sample"
+    with report_style():
+        fig, cells, ncol = _grid(len(wss), len(rows), row_h=1.3, extra_h=0.95)
+        _share_rows(cells, ["all"] * len(cells), ncol, [row[2] for row in rows])
+        fig_h = fig.get_size_inches()[1]
+        xmin, xmax = np.inf, -np.inf
+        for i, (w, col) in enumerate(zip(wss, cells)):
+            wc = c.wheelsets[w]
+            for q, (key, scale, ylab, _) in enumerate(rows):
+                ax = col[q]
+                if use_s and tr is not None:
+                    _shade_segments(ax, tr)
+                if key != "normal_force":  # Q stays near its static value: no zero line
+                    ax.axhline(0, color="k", lw=0.4, zorder=0.6)
+                shown = False
+                for side in ("left", "right"):
+                    v = _contact_series(wc, key, side)
+                    if v is None:
+                        continue
+                    x = xs[w] if xs[w] is not None else np.arange(v.size, dtype=float)
+                    x, v = _pair(x, v * scale)
+                    ax.plot(x, v, lw=0.9, zorder=3, **SIDE_STYLE[side])
+                    shown = True
+                    if result.failed:
+                        _fail_marker(ax, x, v)
+                    fin = x[np.isfinite(x)]
+                    if fin.size:
+                        xmin, xmax = min(xmin, fin.min()), max(xmax, fin.max())
+                if not shown:
+                    ax.text(0.5, 0.5, "not recorded", transform=ax.transAxes, ha="center",
+                            va="center", fontsize=7, color="#777777")
+                if q == 0:
+                    ax.set_title(body_title(w), fontsize=8.5)
+                if q == len(rows) - 1:
+                    ax.set_xlabel(xlabel)
+        for col in cells:
+            for q, row in enumerate(rows):
+                _min_span(col[q], row[3])
+        _set_distance_range(cells[0][0], xmin, xmax, tr if use_s else None, result.failed)
+        handles = [Line2D([], [], lw=0.9, label=f"{sd} wheel", **SIDE_STYLE[sd])
+                   for sd in ("left", "right")]
+        marks = _segment_legend_handles(tr) if (use_s and tr is not None) else []
+        if result.failed:
+            marks.append(_fail_handle("last output (run failed)"))
+        _bottom_legend(fig, [handles, marks], fig_h)
+        fig.suptitle(title, fontsize=9.5)
+    return fig
+
+
+def fig_contact_forces(result: Result):
+    """Normal force Q [kN] per wheel, flange force [kN] and indentation [mm] when recorded, and
+    the derailment quotient Y/Q, per wheelset versus distance (paper Fig. 24, 25)."""
+    rows = _contact_rows(result, _CONTACT_ROWS)
+    return _contact_figure(result, rows, f"Wheel–rail contact forces — {_run_info(result)}")
+
+
+def fig_creep(result: Result):
+    """Creepages [‰], spin [1/m] and creep forces [kN] per wheelset and wheel vs distance."""
+    rows = _contact_rows(result, _CREEP_ROWS)
+    return _contact_figure(result, rows, f"Creepages and creep forces — {_run_info(result)}")
+
+
+def steady_state(result: Result, fraction: float = 0.2,
+                 kinds: Sequence[str] = KINEMATIC_KINDS) -> List[Dict[str, object]]:
+    """Steady-curving values (paper Tables 5, 6): per body, the mean lateral displacement
+    [mm] and yaw angle [mrad] over the last `fraction` of the distance the body travelled
+    (s >= s_end - fraction * (s_end - s_start), NaN samples ignored).
+
+    Returns [{body, kind, y_mm, yaw_mrad, s_from_m, s_to_m, samples}, ...] in vehicle order."""
+    out = []
+    for n in result.kinematic_bodies(kinds):
+        b = result.bodies[n]
+        s = b.data["s"]
+        fin = s[np.isfinite(s)]
+        if not fin.size:
+            continue
+        s0, s1 = float(fin[0]), float(fin.max())
+        lo = s1 - fraction * (s1 - s0)
+        row = {"body": n, "kind": b.kind, "s_from_m": lo, "s_to_m": s1}
+        cnt = 0
+        for key, col in (("y", "y_mm"), ("yaw", "yaw_mrad")):
+            val = float("nan")
+            if b.has(key):
+                x, v = _pair(s, b.data[key])
+                sel = np.isfinite(x) & np.isfinite(v) & (x >= lo)
+                if sel.any():
+                    val = float(np.mean(v[sel])) * 1e3
+                    cnt = max(cnt, int(sel.sum()))
+            row[col] = val
+        row["samples"] = cnt
+        out.append(row)
+    return out
+
+
+def stats_summary(result: Result) -> Optional[str]:
+    """One line from /stats: status, solver, CPU time, real-time factor (t_reached / CPU
+    time), rhs evaluations, steps; None if the file has no /stats."""
+    st = result.stats
+    if st is None:
+        return None
+    status = str(st.get("status", "?")).strip() or "?"
+    parts = ["FAILED" if status.lower() == "failed" else status]
+    if st.get("method"):
+        parts.append(f"solver {st['method']}")
+    if result.contact_method:
+        parts.append(f"contact {result.contact_method.upper()}")
+    cpu = _num(st.get("cpu_time_s"))
+    wall = _num(st.get("wall_time_s"))
+    t = _num(st.get("t_reached"))
+    if t is not None:
+        parts.append(f"t = {t:.6g} s reached")
+    if cpu is not None:
+        parts.append(f"CPU {cpu:.4g} s" + (f" (wall {wall:.4g} s)" if wall is not None else ""))
+        if t is not None and cpu > 0:
+            parts.append(f"{t / cpu:.3g}x real time")
+    rhs, jac = _num(st.get("rhs_evals")), _num(st.get("rhs_evals_jac"))
+    if rhs is not None:
+        parts.append(f"{int(rhs)} rhs evaluations"
+                     + (f" (+ {int(jac)} for Jacobians)" if jac else ""))
+    steps, rej = _num(st.get("steps")), _num(st.get("rejected_steps"))
+    if steps is not None:
+        parts.append(f"{int(steps)} steps" + (f" ({int(rej)} rejected)" if rej else ""))
+    jev = _num(st.get("jacobian_evals"))
+    if jev:
+        parts.append(f"{int(jev)} Jacobians")
+    txt = "stats: " + ", ".join(parts)
+    msg = " ".join(str(st.get("message", "")).split())
+    return f"{txt} — {msg}" if msg else txt
+
+
+# --------------------------------------------------------------------------------------------
 # Registry and driver
 # --------------------------------------------------------------------------------------------
 @dataclass
@@ -828,9 +1511,31 @@ FIGURES: List[FigureSpec] = [
     FigureSpec("irregularity_psd",
                lambda r: r.irregularities is not None and r.irregularities.data["s"].size >= 16,
                fig_irregularity_psd, "Welch PSD estimate against target"),
-    # Later: FigureSpec("bodies_lateral", lambda r: "bodies" in r.groups, fig_bodies_lateral),
-    #        FigureSpec("stats", lambda r: "stats" in r.groups, fig_stats), ...
+    FigureSpec("wheelsets", lambda r: bool(r.kinematic_bodies(("wheelset",))), fig_wheelsets,
+               "wheelset lateral displacement and yaw versus distance"),
+    FigureSpec("bogies_car", lambda r: bool(r.kinematic_bodies(("bogie", "car"))), fig_bodies_car,
+               "bogie and car body lateral displacement and yaw versus distance"),
+    FigureSpec("contact_forces", lambda r: bool(_contact_rows(r, _CONTACT_ROWS)),
+               fig_contact_forces, "normal, flange forces, flange indentation, Y/Q"),
+    FigureSpec("creep", lambda r: bool(_contact_rows(r, _CREEP_ROWS)), fig_creep,
+               "creepages, spin and creep forces"),
+    # /stats is summarised in text (stats_summary, printed by plot_run.py), not drawn.
 ]
+
+
+def build_figure(result: Result, spec) -> "plt.Figure":
+    """Make the figure of `spec` (a FigureSpec or its suffix) for `result`; a failed run gets
+    the red failure banner (failure_text) above the title."""
+    if isinstance(spec, str):
+        match = [f for f in FIGURES if f.suffix == spec]
+        if not match:
+            raise KeyError(f"no figure '{spec}' (known: {', '.join(f.suffix for f in FIGURES)})")
+        spec = match[0]
+    fig = spec.make(result)
+    txt = failure_text(result)
+    if txt:
+        add_failure_banner(fig, txt)
+    return fig
 
 
 def make_figures(result: Result, outdir: Optional[str] = None, stem: Optional[str] = None,
@@ -843,7 +1548,7 @@ def make_figures(result: Result, outdir: Optional[str] = None, stem: Optional[st
     for spec in FIGURES:
         if not spec.is_available(result):
             continue
-        fig = spec.make(result)
+        fig = build_figure(result, spec)
         path = os.path.join(outdir, f"{stem}_{spec.suffix}.{fmt}")
         try:
             fig.savefig(path, dpi=dpi)

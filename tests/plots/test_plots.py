@@ -203,6 +203,195 @@ def d_not_hdf5_and_not_railbench():
     _one_line_error(run_cli(other), "no /track group")
 
 
+# ---- (e) vehicle results: /time, /bodies, /contact, /stats ---------------------------------------
+VEH = os.path.join(TMP, "veh.h5")            # KEC, contact, ok
+VEH_LUT = os.path.join(TMP, "veh_lut.h5")    # LUT, contact, ok
+VEH_FAIL = os.path.join(TMP, "veh_fail.h5")  # KEC, failed at t = 12.345 s, one ragged series
+VEH_BODIES = os.path.join(TMP, "veh_bodies.h5")  # no /contact
+VEHICLE_FIGS = ["wheelsets", "bogies_car", "contact_forces", "creep"]
+COMPARE = os.path.join(PLOTS, "compare_runs.py")
+
+
+def _ink(path):
+    """Fraction of non-white pixels of a PNG (a blank or nearly empty figure is ~0)."""
+    import matplotlib.image as mpimg
+    im = mpimg.imread(path)[..., :3]
+    return float(np.mean(np.any(im < 0.9, axis=-1)))
+
+
+def _vehicle_fixtures():
+    if not os.path.exists(VEH):
+        mf.make_fixture(VEH, irregularities=False, vehicle=True, method="kec")
+        mf.make_fixture(VEH_LUT, irregularities=False, vehicle=True, method="lut")
+        mf.make_fixture(VEH_FAIL, irregularities=False, vehicle=True, failed=True, ragged=True)
+        mf.make_fixture(VEH_BODIES, irregularities=False, vehicle=True, contact=False)
+
+
+@test
+def e_vehicle_figures_and_stats_line():
+    _vehicle_fixtures()
+    out = os.path.join(TMP, "veh_figs")
+    r = run_cli(VEH, "--outdir", out)
+    check(r.returncode == 0, f"exit {r.returncode}: {r.stderr.strip()}")
+    lines = [ln for ln in r.stdout.splitlines() if ln.strip()]
+    check(lines and lines[0].startswith("stats: ok, solver bdf"), f"first line {lines[:1]}")
+    rtf = 23.91 / 9.87
+    for part in ("contact KEC", "CPU 9.87 s", f"{rtf:.3g}x real time", "48213 rhs evaluations",
+                 "20417 steps"):
+        check(part in lines[0], f"'{part}' not in stats line {lines[0]!r}")
+    want = [os.path.join(out, f"veh_{n}.png") for n in
+            ["track_plan", "track_curvature_cant"] + VEHICLE_FIGS]
+    check(sorted(lines[1:]) == sorted(want), f"printed {lines[1:]}, want {want}")
+    import matplotlib.image as mpimg
+    for p in want[2:]:
+        check(_is_png(p), f"not a PNG: {p}")
+        h, w = mpimg.imread(p).shape[:2]
+        check(w == round(rp.A4_WIDTH_IN * rp.DPI), f"{os.path.basename(p)} is {w} px wide")
+        ink = _ink(p)
+        check(os.path.getsize(p) > 40_000 and ink > 0.15,
+              f"{os.path.basename(p)}: {os.path.getsize(p)} bytes, {ink:.0%} ink")
+    # one panel per wheelset and quantity, each with data
+    res = rp.load_result(VEH)
+    fig = rp.fig_wheelsets(res)
+    data_axes = [ax for ax in fig.axes if any(len(ln.get_xdata()) > 1000 for ln in ax.lines)]
+    rp.plt.close(fig)
+    check(len(data_axes) == 8, f"wheelset figure: {len(data_axes)} axes with data, want 2 x 4")
+    fig = rp.fig_contact_forces(res)
+    ylabels = " ".join(ax.get_ylabel() for ax in fig.axes)
+    rp.plt.close(fig)
+    for q in ("Q [kN]", "flange force", "indent", "Y/Q"):
+        check(q in ylabels, f"contact figure lacks a '{q}' row ({ylabels!r})")
+
+
+@test
+def e_steady_state_matches_synthetic_input():
+    _vehicle_fixtures()
+    rows = {row["body"]: row for row in rp.steady_state(rp.load_result(VEH))}
+    check(sorted(rows) == sorted(mf.STEADY["kec"]), f"bodies {sorted(rows)}")
+    bad = [f"{n}: {rows[n]['y_mm']:.3f}/{rows[n]['yaw_mrad']:.3f} vs {y}/{p}"
+           for n, (y, p) in mf.STEADY["kec"].items()
+           if abs(rows[n]["y_mm"] - y) > 0.1 or abs(rows[n]["yaw_mrad"] - p) > 0.1]
+    check(not bad, "; ".join(bad))
+
+
+@test
+def e_failed_run_still_plots_with_banner():
+    """In-process (one CLI run less): every available figure is drawn from the partial
+    results, with the red banner above the axes."""
+    import contextlib
+    import io
+    from matplotlib.colors import to_rgb
+    _vehicle_fixtures()
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err):
+        res = rp.load_result(VEH_FAIL)
+    check("differ in length" in err.getvalue(), f"no ragged-series warning: {err.getvalue()!r}")
+    check(res.failed, "result not flagged as failed")
+    line = rp.stats_summary(res)
+    check(line.startswith("stats: FAILED") and mf.FAIL_MESSAGE in line, f"stats line {line!r}")
+    out = os.path.join(TMP, "fail_figs")
+    os.makedirs(out)
+    done = []
+    for spec in rp.FIGURES:
+        if not spec.is_available(res):
+            continue
+        fig = rp.build_figure(res, spec)
+        p = os.path.join(out, f"{spec.suffix}.png")
+        fig.savefig(p)
+        banner = [t for t in fig.texts if t.get_text().startswith("FAILED at t = 12.345 s: CVODE")]
+        top = max((ax.get_tightbbox().y1 for ax in fig.axes if ax.get_visible()), default=0)
+        b_y0 = banner[0].get_window_extent().y0 if banner else 0
+        rp.plt.close(fig)
+        check(banner, f"{spec.suffix}: no FAILED banner")
+        rgb = to_rgb(banner[0].get_color())
+        check(rgb[0] > 0.7 and rgb[1] < 0.2, f"{spec.suffix}: banner colour {rgb}")
+        check(b_y0 >= top - 1, f"{spec.suffix}: banner overlaps the axes ({b_y0:.0f} < {top:.0f})")
+        check(os.path.getsize(p) > 30_000, f"{spec.suffix}: {os.path.getsize(p)} bytes")
+        done.append(spec.suffix)
+    for n in VEHICLE_FIGS:
+        check(n in done, f"{n} not drawn for the failed run ({done})")
+
+
+@test
+def e_bodies_only_no_contact_figures():
+    _vehicle_fixtures()
+    res = rp.load_result(VEH_BODIES)
+    got = [spec.suffix for spec in rp.FIGURES if spec.is_available(res)]
+    want = ["track_plan", "track_curvature_cant", "wheelsets", "bogies_car"]
+    check(got == want, f"available {got}, want {want}")
+    check(res.contact is None and len(res.bodies) == 7, "bodies-only fixture content")
+
+
+def _run_compare(*args):
+    return subprocess.run([PY, COMPARE, *args], capture_output=True, text=True, timeout=60)
+
+
+@test
+def e_compare_runs_figures_and_steady_csv():
+    import csv
+    _vehicle_fixtures()
+    out = os.path.join(TMP, "cmp")
+    r = _run_compare(VEH, VEH_LUT, "--outdir", out, "--prefix", "r500")
+    check(r.returncode == 0, f"exit {r.returncode}: {r.stderr.strip()}")
+    names = ["r500_compare_wheelsets.png", "r500_compare_bogies_car.png", "r500_steady_state.csv"]
+    for n in names:
+        check(os.path.join(out, n) in r.stdout.splitlines(), f"{n} not printed")
+    for n in names[:2]:
+        p = os.path.join(out, n)
+        check(_is_png(p) and os.path.getsize(p) > 40_000 and _ink(p) > 0.15, f"{n} trivial")
+    check("Steady curving" in r.stdout and "KEC" in r.stdout and "LUT" in r.stdout,
+          f"no table in {r.stdout!r}")
+    with open(os.path.join(out, names[2]), newline="") as f:
+        rows = list(csv.DictReader(f))
+    check(len(rows) == 14, f"{len(rows)} CSV rows, want 2 runs x 7 bodies")
+    bad = []
+    for row in rows:
+        y, p = mf.STEADY[row["label"].lower()][row["body"]]
+        if abs(float(row["y_mm"]) - y) > 0.1 or abs(float(row["yaw_mrad"]) - p) > 0.1:
+            bad.append(f"{row['label']} {row['body']}: {row['y_mm']}/{row['yaw_mrad']} vs {y}/{p}")
+    check(not bad, "; ".join(bad))
+
+
+@test
+def e_compare_runs_partial_and_no_common_bodies():
+    """compare_runs.main in-process: a body missing in one run, none in common, bad --labels."""
+    import contextlib
+    import h5py
+    import io
+    import compare_runs as cr
+    _vehicle_fixtures()
+    part = os.path.join(TMP, "veh_no_ws4.h5")
+    other = os.path.join(TMP, "veh_renamed.h5")
+    shutil.copy(VEH_LUT, part)
+    shutil.copy(VEH_LUT, other)
+    with h5py.File(part, "a") as f:
+        del f["bodies/ws4"]
+        f["bodies"].attrs["names"] = np.bytes_("car\nbogie1\nbogie2\nws1\nws2\nws3")
+    with h5py.File(other, "a") as f:
+        for n in list(f["bodies"].keys()):
+            f.move(f"bodies/{n}", f"bodies/x_{n}")
+        f["bodies"].attrs["names"] = np.bytes_("")
+
+    def run(*args):
+        o, e = io.StringIO(), io.StringIO()
+        with contextlib.redirect_stdout(o), contextlib.redirect_stderr(e):
+            code = cr.main(list(args))
+        return code, o.getvalue(), e.getvalue()
+
+    out = os.path.join(TMP, "cmp2")
+    code, so, se = run(VEH, part, "--labels", "A,B", "--outdir", out)
+    check(code == 0, f"exit {code}: {se.strip()}")
+    check("ws4" in se and "not compared" in se, f"stderr {se!r}")
+    with open(os.path.join(out, "veh_vs_veh_no_ws4_steady_state.csv")) as f:
+        n = len(f.read().splitlines())
+    check(n == 1 + 2 * 6, f"CSV has {n} lines, want header + 2 x 6")
+    code, so, se = run(VEH, other, "--outdir", out)
+    lines = [ln for ln in se.splitlines() if ln.strip()]
+    check(code == 1 and len(lines) == 1 and lines[0].startswith("compare_runs: error:")
+          and "no bodies in common" in lines[0], f"exit {code}, stderr {se!r}")
+    code, so, se = run(VEH, VEH_LUT, "--labels", "only-one")
+    check(code == 1 and "--labels" in se, f"labels mismatch: exit {code}, {se!r}")
+
 def main():
     t0 = time.time()
     mf.make_fixture(FIX, irregularities=True, seed=1)
