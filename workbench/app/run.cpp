@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "railbench/version.hpp"
+#include "workbench/app/simulate.hpp"
+#include "workbench/core/strings.hpp"
 #include "workbench/integrators/registry.hpp"
 #include "workbench/io/result_file.hpp"
 #include "workbench/io/track_output.hpp"
@@ -15,6 +17,8 @@
 #include "workbench/track/psd.hpp"
 #include "workbench/track/samples.hpp"
 #include "workbench/track/track.hpp"
+#include "workbench/vehicle/guided.hpp"
+#include "workbench/vehicle/model.hpp"
 
 namespace fs = std::filesystem;
 
@@ -24,36 +28,78 @@ namespace {
 struct Compiled {
   scenario::ScenarioSpec spec;
   std::optional<track::TrackModel> track;
+  std::optional<vehicle::VehicleModel> vehicle;
+  integ::SolverSpec solver;  // the scenario's, or the paper's default (ABM, 1 ms)
+  std::vector<vehicle::ElementId> output_elements;
   double track_build_s = 0.0;
   std::vector<std::string> warnings;
 };
+
+double seconds(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
 
 // Spec -> Model: every problem of every block is collected before anything runs.
 Compiled compile(const RunOptions& o) {
   scenario::LoadOptions lo;
   lo.root = o.root;
   lo.overrides = o.overrides;
-  Compiled c{scenario::loadScenario(o.scenario, lo), std::nullopt, 0.0, {}};
+  Compiled c{scenario::loadScenario(o.scenario, lo), std::nullopt, std::nullopt, {}, {}, 0.0, {}};
+  const auto& spec = c.spec;
   Diagnostics d;
   auto t0 = std::chrono::steady_clock::now();
   try {
-    c.track = track::compileTrack(c.spec.track);
+    c.track = track::compileTrack(spec.track);
   } catch (const InputError& e) {
     d.add(e);
   }
-  c.track_build_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (c.spec.has_solver) {
+  c.track_build_s = seconds(t0);
+  if (spec.has_solver) {
+    c.solver = spec.solver;
     try {
-      (void)integ::makeIntegrator(c.spec.solver);
+      (void)integ::makeIntegrator(c.solver);
+    } catch (const InputError& e) {
+      d.add(e);
+    }
+  } else {
+    c.solver.method = "abm";  // the paper's validation runs: ABM with 1 ms steps (section 5.2)
+    c.solver.step = 1e-3;
+  }
+  if (spec.has_vehicle && c.track) {
+    try {
+      c.vehicle = vehicle::compileVehicle(spec.vehicle, *c.track);
     } catch (const InputError& e) {
       d.add(e);
     }
   }
+  if (!spec.has_vehicle) {
+    if (spec.has_contact) d.add(spec.contact.loc, "contact: needs a vehicle { ... } block");
+    if (!spec.run.output_elements.empty())
+      d.add(spec.run.loc, "run.output.elements: the scene has no vehicle");
+  }
+  if (c.vehicle) {
+    for (const auto& name : spec.run.output_elements) {
+      if (auto id = c.vehicle->findElement(name)) {
+        c.output_elements.push_back(*id);
+        continue;
+      }
+      std::vector<std::string> names;
+      for (auto id : c.vehicle->elements()) names.push_back(c.vehicle->elementName(id));
+      std::string hint = closestMatch(name, names);
+      d.add(spec.run.loc, "run.output.elements: no element named '" + name + "'" +
+                              (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+    }
+    if (!(spec.vehicle.speed > 0) && !(spec.run.duration > 0))
+      d.add(spec.vehicle.loc, "vehicle: speed is 0, so give run.duration");
+  }
   d.throwIfAny();
-  const auto& irr = c.spec.track.irregularities;
+  const auto& irr = spec.track.irregularities;
   if (irr.source == track::IrregularitySource::Psd && !track::psdVerified(irr.spectrum))
     c.warnings.push_back(irr.loc.str() + ": warning: the parameters of spectrum '" + irr.spectrum +
                          "' are UNVERIFIED against a primary source (see docs/track.md)");
+  if (c.vehicle && !spec.has_contact)
+    c.warnings.push_back(spec.vehicle.loc.str() +
+                         ": note: no contact{} block: wheelsets follow the track kinematically");
   return c;
 }
 
@@ -64,10 +110,89 @@ std::string isoNow() {
   return buf;
 }
 
-std::string joinLines(const std::vector<std::string>& v) {
-  std::string out;
-  for (const auto& s : v) out += (out.empty() ? "" : "\n") + s;
-  return out;
+std::string kindName(vehicle::BodyKind k) {
+  switch (k) {
+    case vehicle::BodyKind::CarBody: return "car";
+    case vehicle::BodyKind::Bogie: return "bogie";
+    case vehicle::BodyKind::Wheelset: return "wheelset";
+    case vehicle::BodyKind::Frame: return "frame";
+  }
+  return "?";
+}
+
+// Simulated time of a vehicle run: run.duration, or run.distance (default: until the leading
+// body reaches the end of the track) at the vehicle's speed.
+double endTime(const Compiled& c) {
+  const auto& run = c.spec.run;
+  if (run.duration > 0) return run.duration;
+  const auto& v = *c.vehicle;
+  double lead = -1e300;
+  for (const auto& b : v.bodies) lead = std::max(lead, b.x);
+  double distance = run.distance > 0 ? run.distance
+                                     : c.track->geometry().length() - (v.start + lead);
+  return std::max(distance, 0.0) / v.speed;
+}
+
+// Issue 5: wheelsets guided along the track, the other bodies free; suspension outputs.
+int runGuided(const Compiled& c, const RunOptions& options, io::ResultFile& f) {
+  const auto& v = *c.vehicle;
+  vehicle::GuidedVehicleOde ode(v);
+  Eigen::VectorXd y0 = ode.staticState(0.0);
+  SimulationRequest r;
+  r.system = &ode;
+  r.solver = c.solver;
+  r.y0 = y0;
+  r.t_end = endTime(c);
+  r.output_every = c.spec.run.output_every;
+  r.progress = !options.quiet;
+  static const char* coords[6] = {"s", "y", "z", "roll", "pitch", "yaw"};
+  static const char* units[6] = {"m", "m", "m", "rad", "rad", "rad"};
+  std::string names;
+  for (const auto& b : v.bodies) {
+    names += (names.empty() ? "" : "\n") + b.name;
+    f.attr("/bodies/" + b.name, "kind", kindName(b.kind));
+    for (int k = 0; k < 6; ++k) r.outputs.push_back({"/bodies/" + b.name + "/" + coords[k], units[k]});
+    if (c.spec.run.body_accelerations)
+      for (const char* a : {"ax", "ay", "az"})
+        r.outputs.push_back({"/bodies/" + b.name + "/" + a, "m/s^2"});
+  }
+  f.attr("/bodies", "names", names);
+  for (auto id : c.output_elements) {
+    std::string base = "/elements/" + v.elementName(id) + "/";
+    bool bending = id.kind == vehicle::ElementKind::BendingSpring;
+    r.outputs.push_back({base + "deflection", bending ? "rad" : "m"});
+    r.outputs.push_back({base + "force", bending ? "N m" : "N"});
+  }
+  auto layout = vehicle::guidedLayout(v);
+  auto ws = vehicle::makeWorkspace(v);
+  std::vector<vehicle::ElementValue> values(c.output_elements.size());
+  const bool acc = c.spec.run.body_accelerations;
+  r.sample = [&](double t, const Eigen::VectorXd& y, double* out) {
+    vehicle::guidedCoordinates(v, layout, t, y.data(), ws);
+    for (std::size_t b = 0; b < v.bodies.size(); ++b) {
+      for (int k = 0; k < 6; ++k) *out++ = ws.q[b][k];
+      if (acc) {
+        auto bo = ode.bodyOutput(t, y.data(), static_cast<int>(b));
+        for (int k = 0; k < 3; ++k) *out++ = bo.acceleration[k];
+      }
+    }
+    if (!values.empty()) {
+      ode.elementOutputs(t, y.data(), c.output_elements, values);
+      for (const auto& e : values) {
+        *out++ = e.d;
+        *out++ = e.force;
+      }
+    }
+  };
+  f.attr("/", "solver", c.solver.method);
+  f.attr("/", "contact_method", std::string("none (wheelsets guided)"));
+  integ::RunResult res = simulate(r, f);
+  std::cout << statsLine(res, res.t_reached) << "\n";
+  if (!res.ok) {
+    std::cerr << c.spec.file << ": run failed: " << res.message << "\n";
+    return 2;
+  }
+  return 0;
 }
 
 }  // namespace
@@ -90,7 +215,7 @@ int runScenario(const RunOptions& options) {
   f.attr("/", "created", isoNow());
   f.attr("/", "scenario_file", c.spec.file);
   f.attr("/", "scenario_text", c.spec.text);
-  f.attr("/", "overrides", joinLines(c.spec.overrides));
+  f.attr("/", "overrides", join(c.spec.overrides, "\n"));
   std::vector<std::string> effects = {"track_geometry"};
   std::string seeds;
   if (c.track->irregularities()) {
@@ -98,16 +223,12 @@ int runScenario(const RunOptions& options) {
     if (c.spec.track.irregularities.source == track::IrregularitySource::Psd)
       seeds = "track.irregularities.seed=" + std::to_string(c.spec.track.irregularities.seed);
   }
-  f.attr("/", "effects", joinLines(effects));
+  if (c.vehicle)
+    for (const auto& k : c.vehicle->element_kinds) effects.push_back("suspension:" + k);
+  f.attr("/", "effects", join(effects, "\n"));
   f.attr("/", "seeds", seeds);
   io::writeTrack(f, c.spec.track, track::sampleTrack(*c.track));
   f.attr("/track", "build_time_s", c.track_build_s);
-
-  // No vehicle in the scene yet (the vehicle model is issue 5): nothing is integrated. The stats
-  // group still says what was done so every result file has the same shape.
-  f.attr("/stats", "status", std::string("ok"));
-  f.attr("/stats", "message", std::string("no vehicle in the scene: track only, nothing integrated"));
-  f.finalize();
 
   std::ostringstream msg;
   msg << "wrote " << out << ": track " << c.track->geometry().length() << " m, "
@@ -119,9 +240,23 @@ int runScenario(const RunOptions& options) {
     else
       msg << ", measured irregularities";
   }
-  msg << " (built in " << c.track_build_s * 1e3 << " ms); no vehicle in the scene, nothing integrated";
+  msg << " (built in " << c.track_build_s * 1e3 << " ms)";
+
+  int rc = 0;
+  if (c.vehicle) {
+    rc = runGuided(c, options, f);
+    msg << "; vehicle " << c.vehicle->name << " (" << c.vehicle->bodies.size() << " bodies, "
+        << c.vehicle->elementCount() << " elements)";
+  } else {
+    // No vehicle in the scene: nothing is integrated. The stats group still says what was done
+    // so every result file has the same shape.
+    f.attr("/stats", "status", std::string("ok"));
+    f.attr("/stats", "message", std::string("no vehicle in the scene: track only, nothing integrated"));
+    msg << "; no vehicle in the scene, nothing integrated";
+  }
+  f.finalize();
   std::cout << msg.str() << "\n";
-  return 0;
+  return rc;
 }
 
 }  // namespace rb::app

@@ -232,6 +232,25 @@ class Reader {
     return true;
   }
 
+  // A list of free-form names {"a", "b"} (checked later against the model).
+  std::vector<std::string> names(const std::string& name) {
+    const Node* v = value(name);
+    std::vector<std::string> out;
+    if (!v) return out;
+    if (v->type != Node::Type::Table || !v->fields.empty()) {
+      error(*v, name + " must be a list of names {\"a\", \"b\"}, got " + v->describe());
+      return out;
+    }
+    for (const auto& item : v->items) {
+      if (item.type != Node::Type::String) {
+        error(item, name + ": entries must be strings, got " + item.describe());
+        continue;
+      }
+      out.push_back(item.string);
+    }
+    return out;
+  }
+
   bool has(const std::string& name) const {
     const Node* v = node_.field(name);
     return v && v->type != Node::Type::Nil;
@@ -652,9 +671,14 @@ void buildRun(const Node& n, RunSpec& run, Diagnostics& d) {
   Reader r(n, block("run"), "run", d);
   run.loc = n.loc;
   run.distance = r.number("distance");
+  run.duration = r.number("duration");
+  if (r.has("distance") && r.has("duration"))
+    r.error(n, "give either distance or duration, not both");
   if (const Node* out = r.blockValue("output")) {
     Reader o(*out, block("run.output"), "run.output", d);
     run.output_every = o.number("every");
+    if (o.has("elements")) run.output_elements = o.names("elements");
+    run.body_accelerations = o.boolean("body_accelerations");
   }
 }
 

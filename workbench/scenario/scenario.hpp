@@ -12,8 +12,11 @@
 namespace rb::scenario {
 
 struct RunSpec {
-  double distance = 0.0;      // [m] 0 = the whole track
+  double distance = 0.0;      // [m] 0 = to the end of the track
+  double duration = 0.0;      // [s] 0 = distance / speed
   double output_every = 0.01; // [s]
+  std::vector<std::string> output_elements;  // element names (checked against the vehicle)
+  bool body_accelerations = false;
   SourceLoc loc;
 };
 

@@ -261,6 +261,8 @@ std::vector<BlockSpec> build() {
                "(Appendix A); f is a state.",
                elementKeys({required(num("damping", "N s/m", 0, "D", 0, kInf, true)),
                             required(num("series_stiffness", "N/m", 0, "K_series", 0, kInf, true)),
+                            num("stiffness", "N/m", 0, "optional spring K in parallel", 0),
+                            num("preload", "N", 0, "force at zero deformation"),
                             num("length0", "m", 0, "undeformed length (axial)", 0)})});
   s.push_back({"shear_spring", "Shear spring: f = K_shear d (Appendix A).",
                elementKeys({required(num("stiffness", "N/m", 0, "K_shear", 0)),
@@ -298,11 +300,16 @@ std::vector<BlockSpec> build() {
                 jac}});
   s.push_back({"run",
                "What to simulate and what to write.",
-               {num("distance", "m", 0, "distance to travel, 0 = the whole track", 0),
+               {num("distance", "m", 0, "distance to travel, 0 = to the end of the track", 0),
+                num("duration", "s", 0, "simulated time, 0 = distance / speed", 0),
                 blockKey("output", ValueType::Block, {}, "output options", "run.output")}});
   s.push_back({"run.output",
                "Output options (a plain table inside run{}).",
-               {num("every", "s", 0.01, "output interval", 0, kInf, true)}});
+               {num("every", "s", 0.01, "output interval", 0, kInf, true),
+                typed("elements", ValueType::StringList, "-",
+                      "suspension elements whose deflection and force are written, by name"),
+                boolean("body_accelerations", false,
+                        "write body accelerations (ride analysis) for every body")}});
   return s;
 }
 

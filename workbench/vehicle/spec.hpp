@@ -28,7 +28,8 @@ struct BodySpec {
 
 enum class ElementKind {
   SpringDamper,        // f = K d + D d_dot                                 (Appendix A)
-  SeriesSpringDamper,  // f_dot + (K_series / D) f = K_series d_dot; f is a state (Appendix A)
+  SeriesSpringDamper,  // f_dot + (K_series / D) f = K_series d_dot; f is a state (Appendix A);
+                       // total force preload + K d + f with an optional parallel spring K
   ShearSpring,         // f = K_shear d
   BendingSpring,       // M = K_bend theta (relative rotation about `direction` axis)
   Bumpstop,            // f = F(d) cubic spline through a table, zero inside the clearance
@@ -51,7 +52,8 @@ struct ElementSpec {
   double stiffness = 0.0;         // [N/m] or [N m/rad] (bending)
   double damping = 0.0;           // [N s/m]
   double series_stiffness = 0.0;  // [N/m] (SeriesSpringDamper)
-  double length0 = 0.0;           // [m] undeformed length (Axial); directional: preload offset 0
+  double length0 = 0.0;           // [m] undeformed length, Axial only (0: the nominal distance);
+                                  //     directional elements reject a non-zero value
   double preload = 0.0;           // [N] force at zero deformation (e.g. to carry static weight)
   std::vector<double> table_d;    // [m] bumpstop deformation table (|d| beyond clearance ...)
   std::vector<double> table_f;    // [N] bumpstop force table

@@ -1,0 +1,123 @@
+-- Manchester benchmark vehicle 1 (Iwnicki 1998) as used by the founding paper (Yu et al.,
+-- section 5.1): 1 car body, 2 bogie frames, 4 wheelsets, 48 suspension elements (Table 4).
+-- Usage:  local wagon = require "vehicles.manchester_wagon1"
+--         vehicle (wagon { speed = 20 })
+-- Sources: [T2] paper Table 2 (masses, inertias); [T4] paper Table 4 (suspension);
+-- [MB] ../shared/reference/manchester_benchmark_vehicle1.md (geometry, Source A);
+-- ASSUMPTION marks values that are not published. docs/vehicle.md explains the element count.
+--
+-- Coordinates: body x is the CoM position along the track relative to the vehicle reference point
+-- (car centre), positive forward; height is the CoM height above the top of rail. Attachment
+-- points {x, y, z} are in the body frame (relative to its CoM; for wheelsets the non-spinning axle
+-- box frame), y positive to the left. Every element goes from the upper body (master, "from") to
+-- the lower one ("to"), so a positive vertical deflection is compression.
+return function(opts)
+  opts = opts or {}
+
+  local h_car   = 1.8     -- [MB] car body CoG height above rail
+  local h_bogie = 0.6     -- [MB] bogie frame CoG height
+  local r0      = 0.46    -- [MB] nominal wheel radius = axle (primary suspension) height
+  local h_sec   = 0.8275  -- [MB] secondary suspension height
+  local h_bump  = 0.65    -- [MB] lateral bump-stop height
+  local a_bogie = 9.5     -- [MB] semi bogie-pivot spacing (bogie centres 19 m apart)
+  local a_axle  = 1.28    -- [MB] bogie semi-wheelbase (wheelbase 2.56 m)
+  local b_prim  = 1.0     -- [MB] primary suspension lateral semi-spacing
+  local b_sec   = 1.0     -- [MB] secondary suspension lateral semi-spacing
+
+  -- Bump stop force-deflection table [T4] (also [MB]): clearance 25 mm, then a stiffening curve.
+  local bump_table = {
+    { 0.000, 0 }, { 0.025, 0 }, { 0.030, 600 }, { 0.035, 1760 }, { 0.040, 3730 },
+    { 0.045, 6870 }, { 0.050, 11580 }, { 0.055, 17170 }, { 0.060, 29200 }, { 0.065, 230000 },
+  }
+
+  local bodies = {
+    -- [T2] car: 32000 kg, Ixx 56800, Iyy 1.97e6, Izz 1.97e6 kg m^2
+    body { name = "car", kind = "car", mass = 32000, inertia = { 56800, 1970000, 1970000 },
+           x = 0, height = h_car },
+  }
+  local elements = {}
+  local function add(e) elements[#elements + 1] = e end
+
+  for b, xb in ipairs({ a_bogie, -a_bogie }) do
+    local bogie = "bogie" .. b
+    -- [T2] bogie frame: 2615 kg, Ixx 1722, Iyy 1476, Izz 3067 kg m^2
+    bodies[#bodies + 1] = body { name = bogie, kind = "bogie", mass = 2615,
+                                 inertia = { 1722, 1476, 3067 }, x = xb, height = h_bogie }
+    for a, xa in ipairs({ a_axle, -a_axle }) do
+      local ws = "ws" .. (2 * (b - 1) + a)
+      -- [T2] wheelset: 1813 kg, Ixx 1120, Iyy 112 (spin axis), Izz 1120 kg m^2
+      bodies[#bodies + 1] = body { name = ws, kind = "wheelset", mass = 1813,
+                                   inertia = { 1120, 112, 1120 }, x = xb + xa, height = r0 }
+      for _, side in ipairs({ { "l", 1 }, { "r", -1 } }) do
+        local tag, sy = side[1], side[2]
+        local at_bogie = { xa, sy * b_prim, r0 - h_bogie }
+        local at_ws = { 0, sy * b_prim, 0 }
+        -- Primary vertical: Kpz 1220 kN/m in parallel with the damper Dpz 4 kN s/m that has the
+        -- series stiffness Kseries_pz 1000 kN/m [T4], 4/bogie. ([MB] Source B has 1200 kN/m; the
+        -- paper's 1220 is used.) One Table-4 element: a series_damper with a parallel stiffness.
+        add(series_damper { name = "prim_z_" .. ws .. "_" .. tag, from = bogie, to = ws,
+                            at_from = at_bogie, at_to = at_ws, direction = "z",
+                            stiffness = 1220e3, damping = 4e3, series_stiffness = 1000e3 })
+        -- Primary longitudinal: Kpx 31391 kN/m, Dpx 15 kN s/m in parallel [T4], 4/bogie.
+        add(spring_damper { name = "prim_x_" .. ws .. "_" .. tag, from = bogie, to = ws,
+                            at_from = at_bogie, at_to = at_ws, direction = "x",
+                            stiffness = 31391e3, damping = 15e3 })
+        -- Primary lateral: Kpy 3884 kN/m, Dpy 2 kN s/m in parallel [T4], 4/bogie.
+        add(spring_damper { name = "prim_y_" .. ws .. "_" .. tag, from = bogie, to = ws,
+                            at_from = at_bogie, at_to = at_ws, direction = "y",
+                            stiffness = 3884e3, damping = 2e3 })
+      end
+    end
+
+    local function at_car(y, h) return { xb, y, h - h_car } end
+    local function at_bg(y, h) return { 0, y, h - h_bogie } end
+    for _, side in ipairs({ { "l", 1 }, { "r", -1 } }) do
+      local tag, sy = side[1], side[2]
+      local pc, pb = at_car(sy * b_sec, h_sec), at_bg(sy * b_sec, h_sec)
+      -- Secondary vertical: Ksz 430 kN/m in parallel with the damper Dsz 4 kN s/m that has the
+      -- series stiffness Kseries_sz 1000 kN/m [T4], 2/bogie, at the secondary springs [MB].
+      add(series_damper { name = "sec_z_" .. bogie .. "_" .. tag, from = "car", to = bogie,
+                          at_from = pc, at_to = pb, direction = "z",
+                          stiffness = 430e3, damping = 4e3, series_stiffness = 1000e3 })
+      -- Secondary longitudinal and lateral shear stiffness of the springs: 160 kN/m each [T4],
+      -- 2/bogie.
+      add(shear_spring { name = "sec_shear_x_" .. bogie .. "_" .. tag, from = "car", to = bogie,
+                         at_from = pc, at_to = pb, direction = "x", stiffness = 160e3 })
+      add(shear_spring { name = "sec_shear_y_" .. bogie .. "_" .. tag, from = "car", to = bogie,
+                         at_from = pc, at_to = pb, direction = "y", stiffness = 160e3 })
+      -- Secondary bending stiffness Kbend 10.5 kN m/rad [T4], 2/bogie. ASSUMPTION: about the
+      -- vertical axis (anti-yaw; [MB] calls K2b "secondary anti-bending/yaw stiffness").
+      add(bending_spring { name = "sec_bend_" .. bogie .. "_" .. tag, from = "car", to = bogie,
+                           at_from = pc, at_to = pb, direction = "z", stiffness = 10.5e3 })
+      -- Secondary lateral: Dsy 32 kN s/m with Ksy 6000 kN/m [T4], 2/bogie, placed at the secondary
+      -- springs (ASSUMPTION). ASSUMPTION: Ksy is the SERIES stiffness of the lateral damper (like
+      -- Kseries of the vertical dampers), not a spring in parallel. Evidence from the paper
+      -- itself: its Table 6 car body offset in the R = 500 m curve at 20 m/s (41.8 mm KEC, 41.4 mm
+      -- UM) equals the chord offset of the bogie centres (19^2/(8*500) = 90 mm) minus the bogies'
+      -- -6.3 mm minus the centrifugal deflection m_car V^2/R / (4 x 160 kN/m shear) = 40 mm; with
+      -- 4 x 6000 kN/m in parallel that deflection would be 1 mm. See docs/vehicle.md.
+      add(series_damper { name = "sec_y_" .. bogie .. "_" .. tag, from = "car", to = bogie,
+                          at_from = pc, at_to = pb, direction = "y",
+                          damping = 32e3, series_stiffness = 6000e3 })
+    end
+    -- Secondary longitudinal (traction link): Ksx 5000 kN/m, Dsx 25 kN s/m in parallel [T4],
+    -- 1/bogie. ASSUMPTION: on the bogie centre line at the secondary suspension height.
+    add(spring_damper { name = "sec_x_" .. bogie, from = "car", to = bogie,
+                        at_from = at_car(0, h_sec), at_to = at_bg(0, h_sec), direction = "x",
+                        stiffness = 5000e3, damping = 25e3 })
+    -- Lateral bump stop, table above [T4]; ASSUMPTION: 1/bogie on the bogie centre line, at the
+    -- bump-stop height 0.65 m [MB].
+    add(bumpstop { name = "bump_y_" .. bogie, from = "car", to = bogie,
+                   at_from = at_car(0, h_bump), at_to = at_bg(0, h_bump), direction = "y",
+                   table = bump_table })
+  end
+
+  return {
+    name = "manchester_wagon1",
+    speed = opts.speed or 20,  -- [m/s] paper case 2/3: V = 20 m/s
+    wheel_radius = r0,
+    start = opts.start or 0,
+    bodies = bodies,
+    elements = elements,
+  }
+end

@@ -1,0 +1,4 @@
+-- Test scenario: the Manchester wagon file on a straight track (tests/vehicle).
+local wagon = require "vehicles.manchester_wagon1"
+track { segments = { tangent { length = 200 } } }
+vehicle (wagon { speed = 20, start = 20 })

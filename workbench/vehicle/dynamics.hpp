@@ -1,0 +1,60 @@
+#pragma once
+// Dynamics of the vehicle in full track-frame coordinates (Model -> Workspace): for given
+// coordinates q_i, rates qd_i of EVERY body (6 each: s, y, z, phi, theta, psi) and the series
+// damper forces, evaluate() computes for each body the 6x6 mass matrix M_i and the generalised
+// force vector Q_i = Q_applied (gravity, suspension elements, Eq. 29) + Q_v (quadratic-velocity
+// inertia forces, Newton-Euler), so that M_i qddot_i = Q_i + (constraint reactions). Each body's
+// inertia couples only its own coordinates (block-diagonal M; each body has its own track frame).
+// The series damper force rates f_dot (Appendix A ODE) are computed too.
+//
+// The ODE adapters (guided.hpp, later the contact models) decide which coordinates are
+// prescribed and which are free. evaluate() is allocation-free.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "workbench/vehicle/kinematics.hpp"
+#include "workbench/vehicle/model.hpp"
+
+namespace rb::vehicle {
+
+// Deformation d [m or rad], its rate, and the element force f [N] (moment [N m] for bending
+// springs; total force including a parallel spring for series dampers), as defined in
+// suspension/laws.hpp and docs/vehicle.md.
+struct ElementValue {
+  double d = 0.0;
+  double d_dot = 0.0;
+  double force = 0.0;
+};
+
+struct Workspace {
+  // Inputs: full coordinates and rates of every body (set by the ODE adapter).
+  std::vector<Vector6d> q, qd;
+  // Outputs of evaluate():
+  std::vector<BodyKinematics> kin;
+  std::vector<Matrix6d> mass;   // M_i
+  std::vector<Vector6d> force;  // Q_i = Q_applied + Q_v
+  // Resultant of the suspension elements on each body: force and moment about the CoM, in the
+  // body's track-frame components.
+  std::vector<Eigen::Vector3d> susp_force, susp_moment;
+  std::vector<ElementValue> spring_damper, series_damper, shear_spring, bending_spring, bumpstop;
+  std::vector<double> series_rate;  // f_dot of each series damper
+
+  const ElementValue& value(ElementId id) const;
+};
+
+Workspace makeWorkspace(const VehicleModel& model);
+
+// Evaluates everything at ws.q, ws.qd and the series damper forces series_f (one per series
+// damper; may be null if there are none).
+void evaluate(const VehicleModel& model, const double* series_f, Workspace& ws);
+
+struct Energy {
+  double kinetic = 0.0;  // [J] sum of m v^2 / 2 + omega^T J omega / 2
+  double gravity = 0.0;  // [J] sum of m g Z_cg (global Z)
+  double elastic = 0.0;  // [J] springs (K d^2/2 + preload d), bumpstops, series springs f^2/(2 Ks)
+  double total() const { return kinetic + gravity + elastic; }
+};
+// Mechanical energy of the state last passed to evaluate().
+Energy energy(const VehicleModel& model, const double* series_f, const Workspace& ws);
+
+}  // namespace rb::vehicle

@@ -1,0 +1,64 @@
+#include "workbench/vehicle/modal.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace rb::vehicle {
+
+Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const Eigen::VectorXd& y,
+                                         double rel_step) {
+  const int n = sys.size();
+  Eigen::MatrixXd J(n, n);
+  Eigen::VectorXd yp = y, fp(n), fm(n);
+  for (int c = 0; c < n; ++c) {
+    const double h = rel_step * std::max(std::abs(y[c]), 1.0);
+    yp[c] = y[c] + h;
+    if (sys.rhs(t, yp.data(), fp.data()) != 0)
+      throw std::runtime_error("rhs failed: " + sys.lastError());
+    yp[c] = y[c] - h;
+    if (sys.rhs(t, yp.data(), fm.data()) != 0)
+      throw std::runtime_error("rhs failed: " + sys.lastError());
+    yp[c] = y[c];
+    J.col(c) = (fp - fm) / (2.0 * h);
+  }
+  return J;
+}
+
+std::vector<Mode> guidedModes(GuidedVehicleOde& ode, double t, const Eigen::VectorXd& y) {
+  const Eigen::MatrixXd J = finiteDifferenceJacobian(ode, t, y);
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(J, true);
+  const GuidedLayout& l = ode.layout();
+  const int n = 5 * l.n_free;
+  // Diagonal mass weights of the free coordinates at y.
+  Eigen::VectorXd yd(ode.size());
+  ode.rhs(t, y.data(), yd.data());
+  Eigen::VectorXd w(n);
+  for (int k = 0; k < l.n_free; ++k) {
+    const auto b = static_cast<std::size_t>(l.free_bodies[static_cast<std::size_t>(k)]);
+    for (int c = 0; c < 5; ++c) w[5 * k + c] = ode.workspace().mass[b](1 + c, 1 + c);
+  }
+  std::vector<Mode> out;
+  for (int i = 0; i < es.eigenvalues().size(); ++i) {
+    const std::complex<double> lam = es.eigenvalues()[i];
+    if (!(lam.imag() > 1e-9)) continue;
+    Mode m;
+    m.eigenvalue = lam;
+    m.frequency_hz = lam.imag() / (2.0 * std::numbers::pi);
+    m.undamped_hz = std::abs(lam) / (2.0 * std::numbers::pi);
+    m.damping_ratio = -lam.real() / std::abs(lam);
+    m.shape = es.eigenvectors().col(i);
+    m.participation.resize(n);
+    for (int c = 0; c < n; ++c) m.participation[c] = std::norm(m.shape[c]) * w[c];
+    const double sum = m.participation.sum();
+    if (sum > 0.0) m.participation /= sum;
+    m.participation.maxCoeff(&m.dominant);
+    out.push_back(std::move(m));
+  }
+  std::sort(out.begin(), out.end(),
+            [](const Mode& a, const Mode& b) { return a.frequency_hz < b.frequency_hz; });
+  return out;
+}
+
+}  // namespace rb::vehicle

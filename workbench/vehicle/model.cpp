@@ -1,0 +1,295 @@
+#include "workbench/vehicle/model.hpp"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace rb::vehicle {
+
+namespace {
+
+std::string num(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+std::string_view bodyKindName(BodyKind k) {
+  switch (k) {
+    case BodyKind::CarBody:
+      return "car";
+    case BodyKind::Bogie:
+      return "bogie";
+    case BodyKind::Wheelset:
+      return "wheelset";
+    case BodyKind::Frame:
+      return "frame";
+  }
+  return "?";
+}
+
+bool finite3(const Eigen::Vector3d& v) {
+  return v.allFinite();
+}
+
+int axisOf(Direction d) {
+  switch (d) {
+    case Direction::X:
+      return 0;
+    case Direction::Y:
+      return 1;
+    case Direction::Z:
+      return 2;
+    case Direction::Axial:
+      return -1;
+  }
+  return -1;
+}
+
+// Nominal relative position r_Q - r_P (straight level track, all coordinates zero).
+Eigen::Vector3d nominalDelta(const BodySpec& b1, const BodySpec& b2, const ElementSpec& e) {
+  const Eigen::Vector3d p = Eigen::Vector3d(b1.x, 0.0, b1.height) + e.point1;
+  const Eigen::Vector3d q = Eigen::Vector3d(b2.x, 0.0, b2.height) + e.point2;
+  return q - p;
+}
+
+}  // namespace
+
+std::string_view elementKindName(ElementKind kind) {
+  switch (kind) {
+    case ElementKind::SpringDamper:
+      return "spring_damper";
+    case ElementKind::SeriesSpringDamper:
+      return "series_damper";
+    case ElementKind::ShearSpring:
+      return "shear_spring";
+    case ElementKind::BendingSpring:
+      return "bending_spring";
+    case ElementKind::Bumpstop:
+      return "bumpstop";
+  }
+  return "?";
+}
+
+void validateVehicle(const VehicleSpec& spec, Diagnostics& diags) {
+  const std::string vname = "vehicle '" + spec.name + "'";
+  if (spec.bodies.empty()) diags.add(spec.loc, vname + ": no bodies");
+  if (!(std::isfinite(spec.speed) && spec.speed >= 0.0))
+    diags.add(spec.loc, vname + ": speed must be >= 0 m/s, got " + num(spec.speed));
+  if (!(std::isfinite(spec.wheel_radius) && spec.wheel_radius > 0.0))
+    diags.add(spec.loc, vname + ": wheel_radius must be > 0 m, got " + num(spec.wheel_radius));
+  if (!std::isfinite(spec.start)) diags.add(spec.loc, vname + ": start must be finite");
+
+  std::map<std::string, int> bodies;
+  std::string body_list;
+  for (std::size_t i = 0; i < spec.bodies.size(); ++i) {
+    const BodySpec& b = spec.bodies[i];
+    const std::string what = "body '" + b.name + "' (" + std::string(bodyKindName(b.kind)) + ")";
+    if (b.name.empty())
+      diags.add(b.loc, "body " + std::to_string(i + 1) + ": empty name");
+    else if (!bodies.emplace(b.name, static_cast<int>(i)).second)
+      diags.add(b.loc, what + ": duplicate body name (also " +
+                           spec.bodies[static_cast<std::size_t>(bodies[b.name])].loc.str() + ")");
+    else
+      body_list += (body_list.empty() ? "" : ", ") + b.name;
+    if (b.kind != BodyKind::Frame) {
+      if (!(std::isfinite(b.mass) && b.mass > 0.0))
+        diags.add(b.loc, what + ": mass must be > 0 kg, got " + num(b.mass));
+      if (!(b.inertia.allFinite() && b.inertia.minCoeff() > 0.0))
+        diags.add(b.loc, what + ": inertia must be > 0 kg m^2 in every axis, got {" +
+                             num(b.inertia[0]) + ", " + num(b.inertia[1]) + ", " +
+                             num(b.inertia[2]) + "}");
+    }
+    if (!std::isfinite(b.x) || !std::isfinite(b.height))
+      diags.add(b.loc, what + ": x and height must be finite");
+  }
+
+  std::map<std::string, SourceLoc> names;
+  for (const ElementSpec& e : spec.elements) {
+    const std::string what =
+        "element '" + e.name + "' (" + std::string(elementKindName(e.kind)) + ")";
+    if (e.name.empty())
+      diags.add(e.loc, "element (" + std::string(elementKindName(e.kind)) + "): empty name");
+    else if (!names.emplace(e.name, e.loc).second)
+      diags.add(e.loc, what + ": duplicate element name (also " + names[e.name].str() + ")");
+    const auto b1 = bodies.find(e.body1), b2 = bodies.find(e.body2);
+    if (b1 == bodies.end())
+      diags.add(e.loc,
+                what + ": unknown body '" + e.body1 + "' in 'from' (bodies: " + body_list + ")");
+    if (b2 == bodies.end())
+      diags.add(e.loc,
+                what + ": unknown body '" + e.body2 + "' in 'to' (bodies: " + body_list + ")");
+    if (!e.body1.empty() && e.body1 == e.body2)
+      diags.add(e.loc, what + ": 'from' and 'to' are the same body '" + e.body1 + "'");
+    if (!finite3(e.point1) || !finite3(e.point2))
+      diags.add(e.loc, what + ": attachment points must be finite");
+    const auto nonneg = [&](double v, const char* key, const char* unit) {
+      if (!(std::isfinite(v) && v >= 0.0))
+        diags.add(e.loc, what + ": " + key + " must be >= 0 " + unit + ", got " + num(v));
+    };
+    if (!std::isfinite(e.preload)) diags.add(e.loc, what + ": preload must be finite");
+    const bool axial = e.direction == Direction::Axial;
+    switch (e.kind) {
+      case ElementKind::SpringDamper:
+        nonneg(e.stiffness, "stiffness", "N/m");
+        nonneg(e.damping, "damping", "N s/m");
+        break;
+      case ElementKind::SeriesSpringDamper:
+        nonneg(e.stiffness, "stiffness", "N/m");
+        if (!(std::isfinite(e.damping) && e.damping > 0.0))
+          diags.add(e.loc, what + ": damping must be > 0 N s/m, got " + num(e.damping));
+        if (!(std::isfinite(e.series_stiffness) && e.series_stiffness > 0.0))
+          diags.add(e.loc,
+                    what + ": series_stiffness must be > 0 N/m, got " + num(e.series_stiffness));
+        break;
+      case ElementKind::ShearSpring:
+        nonneg(e.stiffness, "stiffness", "N/m");
+        if (axial)
+          diags.add(e.loc,
+                    what + ": direction must be x, y or z (a shear spring acts across its axis)");
+        break;
+      case ElementKind::BendingSpring:
+        nonneg(e.stiffness, "stiffness", "N m/rad");
+        if (axial)
+          diags.add(e.loc,
+                    what + ": direction must be x, y or z (the axis of the relative rotation)");
+        break;
+      case ElementKind::Bumpstop:
+        for (const std::string& m : suspension::BumpstopLaw::check(e.table_d, e.table_f))
+          diags.add(e.loc, what + ": " + m);
+        break;
+    }
+    const bool uses_length = e.kind == ElementKind::SpringDamper ||
+                             e.kind == ElementKind::SeriesSpringDamper ||
+                             e.kind == ElementKind::Bumpstop;
+    if (!(std::isfinite(e.length0) && e.length0 >= 0.0))
+      diags.add(e.loc, what + ": length0 must be >= 0 m, got " + num(e.length0));
+    else if (e.length0 != 0.0 && (!axial || !uses_length))
+      diags.add(e.loc, what +
+                           ": length0 applies to axial elements only (directional elements are "
+                           "undeformed at the nominal relative position; use preload)");
+    if (axial && uses_length && b1 != bodies.end() && b2 != bodies.end() && finite3(e.point1) &&
+        finite3(e.point2)) {
+      const Eigen::Vector3d dn = nominalDelta(spec.bodies[static_cast<std::size_t>(b1->second)],
+                                              spec.bodies[static_cast<std::size_t>(b2->second)], e);
+      if (!(dn.norm() > 1e-6))
+        diags.add(e.loc, what +
+                             ": an axial element needs distinct attachment points (their nominal "
+                             "distance is " +
+                             num(dn.norm()) + " m); use direction x, y or z");
+    }
+  }
+}
+
+VehicleModel compileVehicle(const VehicleSpec& spec, const track::TrackModel& track) {
+  Diagnostics diags;
+  validateVehicle(spec, diags);
+  diags.throwIfAny();
+
+  VehicleModel m;
+  m.name = spec.name;
+  m.speed = spec.speed;
+  m.wheel_radius = spec.wheel_radius;
+  m.start = spec.start;
+  m.geometry = track.geometry();
+  m.loc = spec.loc;
+  for (const BodySpec& b : spec.bodies) {
+    Body body;
+    body.name = b.name;
+    body.kind = b.kind;
+    body.mass = b.mass;
+    body.inertia = b.inertia;
+    body.x = b.x;
+    body.height = b.height;
+    body.rotation = b.kind == BodyKind::Wheelset ? RotationSequence::YawRollPitch
+                                                 : RotationSequence::YawPitchRoll;
+    body.loc = b.loc;
+    m.bodies.push_back(body);
+  }
+  for (const ElementSpec& e : spec.elements) {
+    ElementGeometry g;
+    g.name = e.name;
+    g.loc = e.loc;
+    g.body1 = m.findBody(e.body1);
+    g.body2 = m.findBody(e.body2);
+    g.u1 = e.point1;
+    g.u2 = e.point2;
+    g.direction = e.direction;
+    g.axis = axisOf(e.direction);
+    g.delta_nominal = nominalDelta(spec.bodies[static_cast<std::size_t>(g.body1)],
+                                   spec.bodies[static_cast<std::size_t>(g.body2)], e);
+    g.length0 = e.length0 > 0.0 ? e.length0 : g.delta_nominal.norm();
+    switch (e.kind) {
+      case ElementKind::SpringDamper:
+        m.spring_dampers.push_back({g, e.stiffness, e.damping, e.preload});
+        break;
+      case ElementKind::SeriesSpringDamper:
+        m.series_dampers.push_back({g, e.stiffness, e.damping, e.series_stiffness, e.preload});
+        break;
+      case ElementKind::ShearSpring:
+        m.shear_springs.push_back({g, e.stiffness, e.preload});
+        break;
+      case ElementKind::BendingSpring:
+        m.bending_springs.push_back({g, e.stiffness, e.preload});
+        break;
+      case ElementKind::Bumpstop:
+        m.bumpstops.push_back({g, suspension::BumpstopLaw(e.table_d, e.table_f)});
+        break;
+    }
+  }
+  if (!m.spring_dampers.empty()) m.element_kinds.emplace_back("spring_damper");
+  if (!m.series_dampers.empty()) m.element_kinds.emplace_back("series_damper");
+  if (!m.shear_springs.empty()) m.element_kinds.emplace_back("shear_spring");
+  if (!m.bending_springs.empty()) m.element_kinds.emplace_back("bending_spring");
+  if (!m.bumpstops.empty()) m.element_kinds.emplace_back("bumpstop");
+  return m;
+}
+
+int VehicleModel::findBody(std::string_view n) const {
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].name == n) return static_cast<int>(i);
+  return -1;
+}
+
+std::vector<ElementId> VehicleModel::elements() const {
+  std::vector<ElementId> out;
+  const auto add = [&](ElementKind k, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) out.push_back({k, static_cast<int>(i)});
+  };
+  add(ElementKind::SpringDamper, spring_dampers.size());
+  add(ElementKind::SeriesSpringDamper, series_dampers.size());
+  add(ElementKind::ShearSpring, shear_springs.size());
+  add(ElementKind::BendingSpring, bending_springs.size());
+  add(ElementKind::Bumpstop, bumpstops.size());
+  return out;
+}
+
+int VehicleModel::elementCount() const {
+  return static_cast<int>(spring_dampers.size() + series_dampers.size() + shear_springs.size() +
+                          bending_springs.size() + bumpstops.size());
+}
+
+const ElementGeometry& VehicleModel::element(ElementId id) const {
+  const auto i = static_cast<std::size_t>(id.index);
+  switch (id.kind) {
+    case ElementKind::SpringDamper:
+      return spring_dampers.at(i).g;
+    case ElementKind::SeriesSpringDamper:
+      return series_dampers.at(i).g;
+    case ElementKind::ShearSpring:
+      return shear_springs.at(i).g;
+    case ElementKind::BendingSpring:
+      return bending_springs.at(i).g;
+    case ElementKind::Bumpstop:
+      return bumpstops.at(i).g;
+  }
+  RB_CHECK(false, "unknown element kind");
+}
+
+std::optional<ElementId> VehicleModel::findElement(std::string_view n) const {
+  for (const ElementId& id : elements())
+    if (element(id).name == n) return id;
+  return std::nullopt;
+}
+
+}  // namespace rb::vehicle

@@ -1,0 +1,128 @@
+#pragma once
+// The compiled, immutable vehicle model (Spec -> Model): validated bodies, suspension elements
+// grouped by kind into separate vectors (a vehicle without bumpstops or series dampers has empty
+// vectors and pays nothing for them; no per-evaluation branch on element kind), and a copy of the
+// track geometry the bodies' track frames run on.
+//
+// Validation (compileVehicle/validateVehicle): every problem is reported with the SourceLoc of its
+// Lua block, all collected and thrown together as one rb::InputError:
+// - vehicle: at least one body; speed >= 0; wheel_radius > 0; finite start.
+// - bodies: non-empty unique names; mass > 0 and inertias > 0 (not checked for frames, whose mass
+//   plays no role); finite x and height.
+// - elements: non-empty unique names (unique across all kinds); from/to name existing bodies and
+//   differ; finite attachment points; stiffness, damping, preload finite and stiffness, damping
+//   >= 0; per kind:
+//   spring_damper: axial elements need distinct attachment points in the nominal configuration;
+//     length0 >= 0 (axial only; 0 = the nominal distance); directional elements take no length0;
+//   series_damper: damping > 0 and series_stiffness > 0 (the Maxwell ODE divides by D);
+//   shear_spring, bending_spring: direction x, y or z (a shear spring acts across its axis, a
+//     bending spring about an axis);
+//   bumpstop: a valid table (suspension::BumpstopLaw::check), direction x, y, z or axial.
+#include <Eigen/Dense>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "workbench/core/error.hpp"
+#include "workbench/suspension/bumpstop.hpp"
+#include "workbench/track/geometry.hpp"
+#include "workbench/track/track.hpp"
+#include "workbench/vehicle/kinematics.hpp"
+#include "workbench/vehicle/spec.hpp"
+
+namespace rb::vehicle {
+
+struct Body {
+  std::string name;
+  BodyKind kind = BodyKind::CarBody;
+  double mass = 0.0;                                  // [kg]
+  Eigen::Vector3d inertia = Eigen::Vector3d::Zero();  // [kg m^2] principal, body axes
+  double x = 0.0;                                     // [m] longitudinal offset of its track frame
+  double height = 0.0;                                // [m] nominal CoM height above top of rail
+  RotationSequence rotation = RotationSequence::YawPitchRoll;
+  SourceLoc loc;
+};
+
+// Geometry shared by all two-point elements. body1 is the master (Eq. 28).
+struct ElementGeometry {
+  std::string name;
+  SourceLoc loc;
+  int body1 = 0, body2 = 0;
+  Eigen::Vector3d u1 = Eigen::Vector3d::Zero();  // attachment point, body1 attachment frame
+  Eigen::Vector3d u2 = Eigen::Vector3d::Zero();  // attachment point, body2 attachment frame
+  Direction direction = Direction::Axial;
+  int axis = -1;  // 0, 1, 2 for X, Y, Z; -1 for Axial
+  // Relative position r_Q - r_P in the nominal configuration (all body coordinates zero, straight
+  // level track): the zero of directional deformations.
+  Eigen::Vector3d delta_nominal = Eigen::Vector3d::Zero();
+  double length0 = 0.0;  // [m] axial undeformed length (the nominal distance if spec gives 0)
+};
+
+struct SpringDamperElement {
+  ElementGeometry g;
+  double stiffness = 0.0, damping = 0.0, preload = 0.0;
+};
+struct SeriesDamperElement {
+  ElementGeometry g;
+  double stiffness = 0.0;  // [N/m] optional spring in parallel with the Maxwell branch
+  double damping = 0.0, series_stiffness = 0.0, preload = 0.0;
+};
+struct ShearSpringElement {
+  ElementGeometry g;
+  double stiffness = 0.0, preload = 0.0;
+};
+struct BendingSpringElement {
+  ElementGeometry g;
+  double stiffness = 0.0, preload = 0.0;  // [N m/rad], [N m]
+};
+struct BumpstopElement {
+  ElementGeometry g;
+  suspension::BumpstopLaw law;
+};
+
+// Handle of one element: its kind and its index in that kind's vector.
+struct ElementId {
+  ElementKind kind = ElementKind::SpringDamper;
+  int index = 0;
+  bool operator==(const ElementId&) const = default;
+};
+
+// Lua name of an element kind: "spring_damper", "series_damper", "shear_spring", "bending_spring",
+// "bumpstop".
+std::string_view elementKindName(ElementKind kind);
+
+struct VehicleModel {
+  std::string name;
+  double speed = 0.0;          // [m/s] V
+  double wheel_radius = 0.46;  // [m] r0
+  double start = 0.0;          // [m] s of the vehicle reference point at t = 0
+  double gravity = 9.81;       // [m/s^2]
+  std::vector<Body> bodies;
+  std::vector<SpringDamperElement> spring_dampers;
+  std::vector<SeriesDamperElement> series_dampers;
+  std::vector<ShearSpringElement> shear_springs;
+  std::vector<BendingSpringElement> bending_springs;
+  std::vector<BumpstopElement> bumpstops;
+  std::vector<std::string> element_kinds;  // Lua names of the kinds present, in enum order
+  track::TrackGeometry geometry;
+  SourceLoc loc;
+
+  int findBody(std::string_view name) const;  // -1 if unknown
+  std::optional<ElementId> findElement(std::string_view name) const;
+  const ElementGeometry& element(ElementId id) const;
+  std::string elementName(ElementId id) const { return element(id).name; }
+  int elementCount() const;
+  std::vector<ElementId> elements() const;  // all, by kind then index
+  // Arc length of body b's track frame at time t (the imposed forward motion s = s0 + x + V t).
+  double bodyS(int b, double t) const { return start + bodies[b].x + speed * t; }
+};
+
+// Adds every problem of `spec` to `diags`. Does not throw.
+void validateVehicle(const VehicleSpec& spec, Diagnostics& diags);
+
+// Validates (throws one rb::InputError listing all problems) and builds the model. The track
+// geometry is copied: the model does not refer to `track` afterwards.
+VehicleModel compileVehicle(const VehicleSpec& spec, const track::TrackModel& track);
+
+}  // namespace rb::vehicle
