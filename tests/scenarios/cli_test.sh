@@ -46,5 +46,16 @@ grep -q "^6 problems found; nothing was run.$" "$TMP/e" && ok "problem count" ||
 "$WB" frobnicate </dev/null >/dev/null 2>&1; rc=$?
 [ $rc -ne 0 ] && ok "unknown command fails" || bad "unknown command exit $rc"
 
+# 4. A study: every case runs in its own process; a case with bad options is recorded as an error
+#    without aborting the study; a second run resumes (runs nothing new).
+"$WB" study tests/scenarios/data/study_small.lua --out "$TMP/study" </dev/null >"$TMP/so" 2>"$TMP/se"; rc=$?
+nok=$(grep -c ",ok," "$TMP/study/summary.csv" 2>/dev/null || true)
+nerr=$(grep -c ",error," "$TMP/study/summary.csv" 2>/dev/null || true)
+[ $rc -eq 0 ] && [ "$nok" = 4 ] && [ "$nerr" = 4 ] && [ -f "$TMP/study/summary.h5" ] \
+  && ok "study runs 8 cases (4 ok, 4 bad options recorded)" || bad "study rc=$rc ok=$nok err=$nerr: $(cat "$TMP/se")"
+grep -q "rtol has no effect with method 'rk4'" "$TMP/study/summary.csv" && ok "study records the reason" || bad "study reason"
+"$WB" study tests/scenarios/data/study_small.lua --out "$TMP/study" </dev/null >/dev/null 2>"$TMP/se2"
+grep -q "4 already done, running 4" "$TMP/se2" && ok "study resumes" || bad "study resume: $(head -2 "$TMP/se2")"
+
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -10,6 +10,7 @@
 
 #include "railbench/version.hpp"
 #include "workbench/app/run.hpp"
+#include "workbench/app/study.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/scenario/schema.hpp"
 
@@ -49,6 +50,12 @@ int main(int argc, char** argv) {
   check->add_option("scenario", co.scenario, "scenario file (.lua)")->required();
   check->add_option("--set", co.overrides, "override a scenario value: block.key=value")->allow_extra_args(false);
 
+  rb::app::StudyOptions so;
+  auto* study = app.add_subcommand("study", "run a study: a matrix of cases over a base scenario");
+  study->add_option("file", so.file, "study file (.lua)")->required();
+  study->add_option("--out", so.out, "output folder (default out/<study>)");
+  study->add_option("--jobs", so.jobs, "cases at once (default: the study's jobs, else cores)");
+
   std::string topic;
   auto* help = app.add_subcommand("help", "reference documentation");
   help->add_option("topic", topic, "topic: scenario")->required()->check(CLI::IsMember({"scenario"}));
@@ -69,6 +76,11 @@ int main(int argc, char** argv) {
       rb::app::checkScenario(co);
       std::cout << co.scenario << ": ok\n";
       return 0;
+    }
+    if (*study) {
+      so.root = root;
+      so.program = fs::read_symlink("/proc/self/exe").string();
+      return rb::app::runStudy(so);
     }
     ro.root = root;
     return rb::app::runScenario(ro);

@@ -16,8 +16,8 @@ namespace fs = std::filesystem;
 namespace rb::scenario {
 
 const std::vector<std::string>& topLevelBlocks() {
-  static const std::vector<std::string> names = {"track",   "profiles", "vehicle",
-                                                 "contact", "solver",   "run"};
+  static const std::vector<std::string> names = {"track",   "profiles", "vehicle", "contact",
+                                                 "solver",  "run",      "study"};
   return names;
 }
 

@@ -276,6 +276,21 @@ std::vector<BlockSpec> build() {
                                   "{{d, F}, ...} with d increasing, e.g. {{0.025, 0}, {0.030, 600}}",
                                   true)})});
 
+
+  s.push_back(
+      {"study",
+       "A study (issue 7): a matrix of variations over a base scenario. `workbench study FILE` "
+       "runs every case (in parallel, each its own HDF5), skips cases already finished, and "
+       "writes a summary (CSV and HDF5). Keys of matrix and cases are --set paths.",
+       {typed("base", ValueType::String, "-", "base scenario file, relative to the study file", true),
+        typed("matrix", ValueType::Table, "-",
+              "{ [\"solver.method\"] = {\"rk4\", \"abm\"}, ... }: every combination is a case"),
+        typed("cases", ValueType::Table, "-",
+              "{ { [\"solver.method\"] = \"bdf\", [\"solver.rtol\"] = 1e-6 }, ... }: explicit "
+              "variants, combined with every matrix combination"),
+        integer("repeats", 1, "runs per case (CPU time is reported as the median)", 1, 100),
+        integer("jobs", 0, "cases run at once, 0 = number of cores", 0, 64)}});
+
   std::vector<std::string> methodNames;
   std::string methodHelp = "integrator:";
   for (const auto& m : integ::methods()) {
@@ -353,6 +368,7 @@ const char* typeText(ValueType t) {
     case ValueType::PsdInput: return "function or table";
     case ValueType::Vec3: return "{x, y, z}";
     case ValueType::PairList: return "{{a, b}, ...}";
+    case ValueType::Table: return "table";
   }
   return "?";
 }

@@ -21,6 +21,7 @@ enum class ValueType {
   PsdInput,   // a Lua function G(omega) or a table of {omega, G} pairs
   Vec3,       // {x, y, z} of numbers
   PairList,   // {{a, b}, ...} of numbers
+  Table,      // a free-form table, read by the block's own builder
 };
 
 struct KeySpec {

@@ -1,0 +1,21 @@
+#pragma once
+// `workbench study FILE.lua`: runs every case of a study as its own `workbench run` process (so a
+// crash or failure of one case never aborts the study), at most `jobs` at once, each writing its
+// own HDF5; finished cases are skipped when the study is run again; a summary CSV and HDF5
+// collect /stats of every run.
+#include <string>
+
+namespace rb::app {
+
+struct StudyOptions {
+  std::string file;     // study file
+  std::string out;      // output folder (default out/<study stem>)
+  std::string root;     // project root
+  std::string program;  // path of the workbench executable that runs the cases
+  int jobs = 0;         // 0: from the study file, else the number of cores
+};
+
+// Returns 0 when every case ran (ok or failed: a failed case is a result), 1 on bad input.
+int runStudy(const StudyOptions& options);
+
+}  // namespace rb::app
