@@ -27,6 +27,34 @@ TEST(Bumpstop, ZeroInsideClearanceAndThroughTheTable) {
   }
 }
 
+TEST(Bumpstop, ExactlyOddForceAndEvenStiffnessAndEnergy) {
+  // Mirror symmetry of a vehicle (left vs right curve) needs F(-d) == -F(d) to the last bit, not
+  // just to a tolerance: the law works on |d| and applies the sign afterwards.
+  const BumpstopLaw law(kD, kF);
+  for (double d = 0.0; d < 0.08; d += 1.7e-5) {
+    EXPECT_EQ(law.force(-d), -law.force(d)) << d;
+    EXPECT_EQ(law.stiffness(-d), law.stiffness(d)) << d;
+    EXPECT_EQ(law.energy(-d), law.energy(d)) << d;
+  }
+  for (double d : kD) EXPECT_EQ(law.force(-d), -law.force(d)) << d;  // at the knots
+}
+
+TEST(Deformation, DirectionalIsOddInTheRelativeDisplacement) {
+  // Mirrored relative displacement (y -> -y) gives the mirrored lateral deformation, exactly.
+  const Eigen::Vector3d nominal(0.0, 1.0, 0.2275), nominal_m(0.0, -1.0, 0.2275);
+  const Eigen::Vector3d delta(0.01, 1.0 + 0.0371, 0.2275 - 0.003), rate(0.2, -0.37, 0.05);
+  const Eigen::Vector3d delta_m(delta.x(), -delta.y(), delta.z()),
+      rate_m(rate.x(), -rate.y(), rate.z());
+  const Deformation a = directionalDeformation(delta, rate, nominal, 1);
+  const Deformation b = directionalDeformation(delta_m, rate_m, nominal_m, 1);
+  EXPECT_EQ(a.d, -b.d);
+  EXPECT_EQ(a.d_dot, -b.d_dot);
+  const Deformation c = directionalDeformation(delta, rate, nominal, 2);
+  const Deformation e = directionalDeformation(delta_m, rate_m, nominal_m, 2);
+  EXPECT_EQ(c.d, e.d);
+  EXPECT_EQ(c.d_dot, e.d_dot);
+}
+
 TEST(Bumpstop, MonotoneC1AndEnergyIsTheIntegral) {
   const BumpstopLaw law(kD, kF);
   double prev = 0.0;

@@ -1,18 +1,16 @@
 #pragma once
-// Specs shared by the vehicle tests: tracks, and a C++ copy of
-// scenarios/vehicles/manchester_wagon1.lua (tests compare the two).
+// Shared by the vehicle tests: synthetic tracks, and the Manchester wagon loaded from
+// scenarios/vehicles/manchester_wagon1.lua through tests/vehicle/data/manchester_tangent.lua (the
+// Lua file is the only copy of the wagon data).
 #include <string>
-#include <vector>
 
+#include "workbench/scenario/scenario.hpp"
 #include "workbench/track/spec.hpp"
 #include "workbench/track/track.hpp"
 #include "workbench/vehicle/spec.hpp"
 
 namespace rbtest {
 
-using rb::vehicle::BodyKind;
-using rb::vehicle::BodySpec;
-using rb::vehicle::Direction;
 using rb::vehicle::ElementKind;
 using rb::vehicle::ElementSpec;
 using rb::vehicle::VehicleSpec;
@@ -52,116 +50,20 @@ inline rb::track::TrackSpec curveTrack(rb::track::Side side, double radius, doub
   return t;
 }
 
-inline BodySpec body(const std::string& name, BodyKind kind, double mass, Eigen::Vector3d inertia,
-                     double x, double height, int line) {
-  BodySpec b;
-  b.name = name;
-  b.kind = kind;
-  b.mass = mass;
-  b.inertia = inertia;
-  b.x = x;
-  b.height = height;
-  b.loc = {"wagon.lua", line};
-  return b;
+// A scenario file of tests/vehicle/data, loaded with the project root as the Lua search root.
+inline rb::scenario::ScenarioSpec loadTestScenario(const std::string& file) {
+  rb::scenario::LoadOptions o;
+  o.root = RB_SOURCE_DIR;
+  return rb::scenario::loadScenario(std::string(RB_SOURCE_DIR) + "/tests/vehicle/data/" + file, o);
 }
 
-inline ElementSpec element(const std::string& name, ElementKind kind, const std::string& from,
-                           const std::string& to, Eigen::Vector3d at_from, Eigen::Vector3d at_to,
-                           Direction dir, int line) {
-  ElementSpec e;
-  e.name = name;
-  e.kind = kind;
-  e.body1 = from;
-  e.body2 = to;
-  e.point1 = at_from;
-  e.point2 = at_to;
-  e.direction = dir;
-  e.loc = {"wagon.lua", line};
-  return e;
-}
-
-// C++ twin of scenarios/vehicles/manchester_wagon1.lua (same order, names and numbers).
-inline VehicleSpec manchesterFixture(double speed = 20.0, double start = 0.0) {
-  const double h_car = 1.8, h_bogie = 0.6, r0 = 0.46, h_sec = 0.8275, h_bump = 0.65;
-  const double a_bogie = 9.5, a_axle = 1.28, b_prim = 1.0, b_sec = 1.0;
-  const std::vector<double> td = {0, 0.025, 0.030, 0.035, 0.040, 0.045, 0.050, 0.055, 0.060, 0.065};
-  const std::vector<double> tf = {0, 0, 600, 1760, 3730, 6870, 11580, 17170, 29200, 230000};
-  VehicleSpec v;
-  v.name = "manchester_wagon1";
+// The Manchester wagon of scenarios/vehicles/manchester_wagon1.lua (loaded once) with the given
+// speed and start (the file's `speed` and `start` options set exactly these two fields).
+inline VehicleSpec manchesterWagon(double speed = 20.0, double start = 0.0) {
+  static const VehicleSpec wagon = loadTestScenario("manchester_tangent.lua").vehicle;
+  VehicleSpec v = wagon;
   v.speed = speed;
-  v.wheel_radius = r0;
   v.start = start;
-  v.loc = {"wagon.lua", 1};
-  v.bodies.push_back(body("car", BodyKind::CarBody, 32000, {56800, 1970000, 1970000}, 0, h_car, 2));
-  int line = 10;
-  for (int b = 1; b <= 2; ++b) {
-    const double xb = b == 1 ? a_bogie : -a_bogie;
-    const std::string bogie = "bogie" + std::to_string(b);
-    v.bodies.push_back(body(bogie, BodyKind::Bogie, 2615, {1722, 1476, 3067}, xb, h_bogie, line++));
-    for (int a = 1; a <= 2; ++a) {
-      const double xa = a == 1 ? a_axle : -a_axle;
-      const std::string ws = "ws" + std::to_string(2 * (b - 1) + a);
-      v.bodies.push_back(
-          body(ws, BodyKind::Wheelset, 1813, {1120, 112, 1120}, xb + xa, r0, line++));
-      for (const auto& [tag, sy] : {std::pair<const char*, double>{"l", 1.0}, {"r", -1.0}}) {
-        const Eigen::Vector3d at_b(xa, sy * b_prim, r0 - h_bogie), at_w(0, sy * b_prim, 0);
-        auto z = element("prim_z_" + ws + "_" + tag, ElementKind::SeriesSpringDamper, bogie, ws,
-                         at_b, at_w, Direction::Z, line++);
-        z.stiffness = 1220e3;
-        z.damping = 4e3;
-        z.series_stiffness = 1000e3;
-        v.elements.push_back(z);
-        auto x = element("prim_x_" + ws + "_" + tag, ElementKind::SpringDamper, bogie, ws, at_b,
-                         at_w, Direction::X, line++);
-        x.stiffness = 31391e3;
-        x.damping = 15e3;
-        v.elements.push_back(x);
-        auto y = element("prim_y_" + ws + "_" + tag, ElementKind::SpringDamper, bogie, ws, at_b,
-                         at_w, Direction::Y, line++);
-        y.stiffness = 3884e3;
-        y.damping = 2e3;
-        v.elements.push_back(y);
-      }
-    }
-    const auto at_car = [&](double y, double h) { return Eigen::Vector3d(xb, y, h - h_car); };
-    const auto at_bg = [&](double y, double h) { return Eigen::Vector3d(0, y, h - h_bogie); };
-    for (const auto& [tag, sy] : {std::pair<const char*, double>{"l", 1.0}, {"r", -1.0}}) {
-      const Eigen::Vector3d pc = at_car(sy * b_sec, h_sec), pb = at_bg(sy * b_sec, h_sec);
-      auto z = element("sec_z_" + bogie + "_" + tag, ElementKind::SeriesSpringDamper, "car", bogie,
-                       pc, pb, Direction::Z, line++);
-      z.stiffness = 430e3;
-      z.damping = 4e3;
-      z.series_stiffness = 1000e3;
-      v.elements.push_back(z);
-      auto sx = element("sec_shear_x_" + bogie + "_" + tag, ElementKind::ShearSpring, "car", bogie,
-                        pc, pb, Direction::X, line++);
-      sx.stiffness = 160e3;
-      v.elements.push_back(sx);
-      auto sy2 = element("sec_shear_y_" + bogie + "_" + tag, ElementKind::ShearSpring, "car", bogie,
-                         pc, pb, Direction::Y, line++);
-      sy2.stiffness = 160e3;
-      v.elements.push_back(sy2);
-      auto bend = element("sec_bend_" + bogie + "_" + tag, ElementKind::BendingSpring, "car", bogie,
-                          pc, pb, Direction::Z, line++);
-      bend.stiffness = 10.5e3;
-      v.elements.push_back(bend);
-      auto lat = element("sec_y_" + bogie + "_" + tag, ElementKind::SeriesSpringDamper, "car", bogie,
-                         pc, pb, Direction::Y, line++);
-      lat.series_stiffness = 6000e3;
-      lat.damping = 32e3;
-      v.elements.push_back(lat);
-    }
-    auto lon = element("sec_x_" + bogie, ElementKind::SpringDamper, "car", bogie, at_car(0, h_sec),
-                       at_bg(0, h_sec), Direction::X, line++);
-    lon.stiffness = 5000e3;
-    lon.damping = 25e3;
-    v.elements.push_back(lon);
-    auto bump = element("bump_y_" + bogie, ElementKind::Bumpstop, "car", bogie, at_car(0, h_bump),
-                        at_bg(0, h_bump), Direction::Y, line++);
-    bump.table_d = td;
-    bump.table_f = tf;
-    v.elements.push_back(bump);
-  }
   return v;
 }
 

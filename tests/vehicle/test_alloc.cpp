@@ -32,7 +32,7 @@ namespace {
 TEST(Allocation, RhsAndOutputsAllocateNothing) {
   const track::TrackModel tm =
       track::compileTrack(rbtest::curveTrack(track::Side::Left, 300.0, 0.1));
-  const VehicleModel m = compileVehicle(rbtest::manchesterFixture(20.0, 60.0), tm);
+  const VehicleModel m = compileVehicle(rbtest::manchesterWagon(20.0, 60.0), tm);
   GuidedVehicleOde ode(m);
   Eigen::VectorXd y = ode.staticState(0.0);
   y[1] += 0.01;
