@@ -33,13 +33,15 @@ TEST(Run, IrregularManchesterTrackWritesTrackAndProvenance) {
   fs::create_directories(d);
   std::string out = (d / "m.h5").string();
   fs::remove(out);
-  ASSERT_EQ(rb::app::runScenario(options("scenarios/tracks/manchester_r500_irregular.lua", out)), 0);
+  ASSERT_EQ(rb::app::runScenario(options("scenarios/tracks/manchester_r500_irregular.lua", out)),
+            0);
   hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(f, 0);
   auto s = h5test::dataset(f, "/track/centreline/s");
   ASSERT_FALSE(s.empty());
   EXPECT_NEAR(s.back(), 500.0, 1e-9);
-  EXPECT_NEAR(h5test::dataset(f, "/track/centreline/heading").back(), 50.0 / 1000 + 350.0 / 500, 1e-6);
+  EXPECT_NEAR(h5test::dataset(f, "/track/centreline/heading").back(), 50.0 / 1000 + 350.0 / 500,
+              1e-6);
   auto irr = h5test::dataset(f, "/track/irregularities/alignment");
   EXPECT_GT(irr.size(), 4000u);
   EXPECT_EQ(h5test::stringAttr(f, "/track/irregularities", "spectrum"), "ore_b176_low");
@@ -64,7 +66,8 @@ TEST(Run, SceneWithoutIrregularitiesBuildsNone) {
 }
 
 TEST(Run, NonPhysicalValuesAreReportedWithFileLine) {
-  EXPECT_EQ(checkErrors("tests/scenario/bad/nonphysical.lua"),
-            "tests/scenario/bad/nonphysical.lua:4: track.segments[2] (curve): radius must be >= 10 m "
-            "(tighter curves are not railway track), got 5");
+  EXPECT_EQ(
+      checkErrors("tests/scenario/bad/nonphysical.lua"),
+      "tests/scenario/bad/nonphysical.lua:4: track.segments[2] (curve): radius must be >= 10 m "
+      "(tighter curves are not railway track), got 5");
 }

@@ -15,4 +15,6 @@ TEST(Diagnostics, CollectsAllAndFormatsFileLine) {
   }
 }
 
-TEST(Check, ThrowsLogicError) { EXPECT_THROW(RB_CHECK(1 == 2, "bad"), std::logic_error); }
+TEST(Check, ThrowsLogicError) {
+  EXPECT_THROW(RB_CHECK(1 == 2, "bad"), std::logic_error);
+}

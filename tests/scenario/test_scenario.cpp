@@ -6,8 +6,8 @@
 
 #include "workbench/scenario/scenario.hpp"
 
-using rb::scenario::loadScenario;
 using rb::scenario::LoadOptions;
+using rb::scenario::loadScenario;
 
 namespace {
 
@@ -39,13 +39,18 @@ TEST(ScenarioErrors, SyntaxError) {
 
 TEST(ScenarioErrors, UnknownKeyWithHintAndMissingRequired) {
   EXPECT_EQ(errorsOf(kBad + "unknown_key.lua"),
-            kBad + "unknown_key.lua:3: track.segments[1] (tangent): unknown key 'lenght' (did you mean 'length'?)\n" +
-                kBad + "unknown_key.lua:3: track.segments[1] (tangent): missing required key 'length'");
+            kBad +
+                "unknown_key.lua:3: track.segments[1] (tangent): unknown key 'lenght' (did you "
+                "mean 'length'?)\n" +
+                kBad +
+                "unknown_key.lua:3: track.segments[1] (tangent): missing required key 'length'");
 }
 
 TEST(ScenarioErrors, WrongType) {
   EXPECT_EQ(errorsOf(kBad + "wrong_type.lua"),
-            kBad + "wrong_type.lua:4: track.segments[2] (curve): length must be a number [m], got string \"forty\"");
+            kBad +
+                "wrong_type.lua:4: track.segments[2] (curve): length must be a number [m], got "
+                "string \"forty\"");
 }
 
 TEST(ScenarioErrors, OutOfRange) {
@@ -56,12 +61,15 @@ TEST(ScenarioErrors, OutOfRange) {
 
 TEST(ScenarioErrors, MissingFile) {
   EXPECT_EQ(errorsOf(kBad + "missing_file.lua"),
-            kBad + "missing_file.lua:3: track.irregularities (measured): file: file 'nowhere.csv' not found (looked in the scenario's folder and the project root)");
+            kBad +
+                "missing_file.lua:3: track.irregularities (measured): file: file 'nowhere.csv' not "
+                "found (looked in the scenario's folder and the project root)");
 }
 
 TEST(ScenarioErrors, ConflictingOptions) {
-  EXPECT_EQ(errorsOf(kBad + "conflict.lua"),
-            kBad + "conflict.lua:2: solver: rtol has no effect with method 'rk4' (its options: step)");
+  EXPECT_EQ(
+      errorsOf(kBad + "conflict.lua"),
+      kBad + "conflict.lua:2: solver: rtol has no effect with method 'rk4' (its options: step)");
 }
 
 TEST(ScenarioErrors, UnknownConstructorName) {
@@ -71,33 +79,48 @@ TEST(ScenarioErrors, UnknownConstructorName) {
 
 TEST(ScenarioErrors, NotATable) {
   EXPECT_EQ(errorsOf(kBad + "not_a_table.lua"),
-            kBad + "not_a_table.lua:2: tangent expects one table of named values, e.g. tangent { ... }, got number");
+            kBad +
+                "not_a_table.lua:2: tangent expects one table of named values, e.g. tangent { ... "
+                "}, got number");
 }
 
 TEST(ScenarioErrors, DuplicateBlock) {
-  EXPECT_EQ(errorsOf(kBad + "duplicate.lua"),
-            kBad + "duplicate.lua:2: track block given twice (first at " + kBad + "duplicate.lua:1)");
+  EXPECT_EQ(
+      errorsOf(kBad + "duplicate.lua"),
+      kBad + "duplicate.lua:2: track block given twice (first at " + kBad + "duplicate.lua:1)");
 }
 
 TEST(ScenarioErrors, ManyProblemsReportedAtOnce) {
-  EXPECT_EQ(errorsOf(kBad + "many.lua"),
-            kBad + "many.lua:2: track: unknown key 'stepp' (did you mean 'step'?)\n" +
-            kBad + "many.lua:4: track.segments[1] (tangent): length must be > 0 m, got 0\n" +
-            kBad + "many.lua:5: track.segments[2] (curve): unknown key 'raduis' (did you mean 'radius'?)\n" +
-            kBad + "many.lua:5: track.segments[2] (curve): missing required key 'radius'\n" +
-            kBad + "many.lua:9: solver: method: unknown value 'rk5' (did you mean 'rk4'?); valid: rk4, abm, dopri5, bdf, ida\n" +
-            kBad + "many.lua:10: run: distance must be >= 0 m, got -1");
+  EXPECT_EQ(
+      errorsOf(kBad + "many.lua"),
+      kBad + "many.lua:2: track: unknown key 'stepp' (did you mean 'step'?)\n" + kBad +
+          "many.lua:4: track.segments[1] (tangent): length must be > 0 m, got 0\n" + kBad +
+          "many.lua:5: track.segments[2] (curve): unknown key 'raduis' (did you mean 'radius'?)\n" +
+          kBad + "many.lua:5: track.segments[2] (curve): missing required key 'radius'\n" + kBad +
+          "many.lua:9: solver: method: unknown value 'rk5' (did you mean 'rk4'?); valid: rk4, abm, "
+          "dopri5, bdf, ida\n" +
+          kBad + "many.lua:10: run: distance must be >= 0 m, got -1");
 }
 
 TEST(ScenarioErrors, UserPsdFunctionMustBeNonNegative) {
   std::string e = errorsOf(kBad + "user_psd_negative.lua");
-  EXPECT_EQ(e.rfind(kBad + "user_psd_negative.lua:3: track.irregularities (psd): alignment: PSD function returned -1e-07 at omega = ", 0), 0u) << e;
+  EXPECT_EQ(e.rfind(kBad + "user_psd_negative.lua:3: track.irregularities (psd): alignment: PSD "
+                           "function returned -1e-07 at omega = ",
+                    0),
+            0u)
+      << e;
 }
 
 TEST(ScenarioErrors, UserPsdNeedsUserSpectrum) {
-  EXPECT_EQ(errorsOf(kBad + "user_psd_wrong_spectrum.lua"),
-            kBad + "user_psd_wrong_spectrum.lua:3: track.irregularities (psd): spectrum: unknown value 'ore_b176_lo' (did you mean 'ore_b176_low'?); valid: ore_b176_low, ore_b176_high, fra_class_1, fra_class_2, fra_class_3, fra_class_4, fra_class_5, fra_class_6, user\n" +
-            kBad + "user_psd_wrong_spectrum.lua:3: track.irregularities (psd): vertical gives a user PSD but spectrum is 'ore_b176_lo'; set spectrum = \"user\" or remove it");
+  EXPECT_EQ(
+      errorsOf(kBad + "user_psd_wrong_spectrum.lua"),
+      kBad +
+          "user_psd_wrong_spectrum.lua:3: track.irregularities (psd): spectrum: unknown value "
+          "'ore_b176_lo' (did you mean 'ore_b176_low'?); valid: ore_b176_low, ore_b176_high, "
+          "fra_class_1, fra_class_2, fra_class_3, fra_class_4, fra_class_5, fra_class_6, user\n" +
+          kBad +
+          "user_psd_wrong_spectrum.lua:3: track.irregularities (psd): vertical gives a user PSD "
+          "but spectrum is 'ore_b176_lo'; set spectrum = \"user\" or remove it");
 }
 
 TEST(ScenarioSandbox, NoOsNoIoNoEscapeByRequire) {
@@ -105,14 +128,17 @@ TEST(ScenarioSandbox, NoOsNoIoNoEscapeByRequire) {
   EXPECT_FALSE(std::filesystem::exists("/tmp/railbench_sandbox_escape"));
   EXPECT_EQ(errorsOf(kBad + "sandbox_io.lua"), kBad + "sandbox_io.lua:1: unknown name 'io'");
   EXPECT_EQ(errorsOf(kBad + "sandbox_require.lua"),
-            kBad + "sandbox_require.lua:1: require \"../../../etc/passwd\": module names may contain only letters, digits, '_' and '.'");
+            kBad +
+                "sandbox_require.lua:1: require \"../../../etc/passwd\": module names may contain "
+                "only letters, digits, '_' and '.'");
 }
 
 TEST(ScenarioSandbox, EndlessLoopStopsWithBudgetError) {
   LoadOptions o = opts();
   o.instruction_limit = 5'000'000;
-  EXPECT_EQ(errorsOf(kBad + "endless.lua", o),
-            kBad + "endless.lua:2: scenario exceeded its budget of 5000000 Lua instructions (endless loop?)");
+  EXPECT_EQ(errorsOf(kBad + "endless.lua", o), kBad +
+                                                   "endless.lua:2: scenario exceeded its budget of "
+                                                   "5000000 Lua instructions (endless loop?)");
 }
 
 TEST(ScenarioErrors, MissingScenarioFile) {
@@ -145,12 +171,13 @@ TEST(ScenarioGood, UserPsdFunctionTableLoopsAndRequire) {
   const auto& irr = spec.track.irregularities;
   EXPECT_EQ(irr.spectrum, "user");
   EXPECT_EQ(irr.seed, 3u);
-  ASSERT_EQ(irr.user[0].omega.size(), 400u);   // tabulated Lua function
-  ASSERT_EQ(irr.user[1].omega.size(), 21u);    // table of pairs
+  ASSERT_EQ(irr.user[0].omega.size(), 400u);  // tabulated Lua function
+  ASSERT_EQ(irr.user[1].omega.size(), 21u);   // table of pairs
   EXPECT_TRUE(irr.enabled[0] && irr.enabled[1] && !irr.enabled[2] && !irr.enabled[3]);
   // The tabulated function reproduces the ORE formula it was written from.
   double om = irr.user[0].omega[200], A = 2.119e-7, Oc = 0.8246, Or = 0.0206;
-  EXPECT_NEAR(irr.user[0].value[200], A * Oc * Oc / ((om * om + Or * Or) * (om * om + Oc * Oc)), 1e-20);
+  EXPECT_NEAR(irr.user[0].value[200], A * Oc * Oc / ((om * om + Or * Or) * (om * om + Oc * Oc)),
+              1e-20);
   EXPECT_EQ(spec.solver.method, "bdf");
   EXPECT_DOUBLE_EQ(spec.run.distance, 300.0);
   EXPECT_DOUBLE_EQ(spec.run.output_every, 0.005);
@@ -158,7 +185,8 @@ TEST(ScenarioGood, UserPsdFunctionTableLoopsAndRequire) {
 
 TEST(ScenarioGood, ShippedTracksLoadThroughRequire) {
   for (int R : {300, 500, 700, 900}) {
-    auto spec = loadScenario("scenarios/tracks/wheelset_validation_R" + std::to_string(R) + ".lua", opts());
+    auto spec =
+        loadScenario("scenarios/tracks/wheelset_validation_R" + std::to_string(R) + ".lua", opts());
     ASSERT_EQ(spec.track.segments.size(), 3u);
     EXPECT_DOUBLE_EQ(spec.track.segments[2].radius, R);
     EXPECT_EQ(spec.track.irregularities.source, rb::track::IrregularitySource::None);
@@ -190,13 +218,21 @@ TEST(ScenarioVehicle, VehicleFileThroughRequire) {
 TEST(ScenarioVehicle, BadVehicleReportsEveryProblem) {
   const std::string f = kBad + "vehicle.lua";
   EXPECT_EQ(errorsOf(f),
-            f + ":5: vehicle.bodies[1] (body): mass must be > 0 kg, got -1\n" +
-            f + ":5: vehicle.bodies[1] (body): inertia must be > 0 kg m^2 in every axis\n" +
-            f + ":6: vehicle.bodies[2] (body): kind: unknown value 'carbody'; valid: car, bogie, wheelset, frame\n" +
-            f + ":6: vehicle.bodies[2] (body): inertia must be {x, y, z} of numbers [kg m^2], got table\n" +
-            f + ":9: vehicle.elements[1] (spring_damper): unknown key 'stiffnes' (did you mean 'stiffness'?)\n" +
-            f + ":9: vehicle.elements[1] (spring_damper): direction: unknown value 'q' (did you mean 'x'?); valid: axial, x, y, z\n" +
-            f + ":10: vehicle.elements[2] (bumpstop): table[1] must be a pair of numbers {a, b}");
+            f + ":5: vehicle.bodies[1] (body): mass must be > 0 kg, got -1\n" + f +
+                ":5: vehicle.bodies[1] (body): inertia must be > 0 kg m^2 in every axis\n" + f +
+                ":6: vehicle.bodies[2] (body): kind: unknown value 'carbody'; valid: car, bogie, "
+                "wheelset, frame\n" +
+                f +
+                ":6: vehicle.bodies[2] (body): inertia must be {x, y, z} of numbers [kg m^2], got "
+                "table\n" +
+                f +
+                ":9: vehicle.elements[1] (spring_damper): unknown key 'stiffnes' (did you mean "
+                "'stiffness'?)\n" +
+                f +
+                ":9: vehicle.elements[1] (spring_damper): direction: unknown value 'q' (did you "
+                "mean 'x'?); valid: axial, x, y, z\n" +
+                f +
+                ":10: vehicle.elements[2] (bumpstop): table[1] must be a pair of numbers {a, b}");
 }
 
 TEST(ScenarioContact, ProfilesAndContactBlocks) {
@@ -215,8 +251,15 @@ TEST(ScenarioContact, ProfilesAndContactBlocks) {
 TEST(ScenarioContact, ConflictsAndMissingProfileFile) {
   const std::string f = kBad + "contact_conflicts.lua";
   EXPECT_EQ(errorsOf(f),
-            f + ":2: profiles: rail: file 'missing.prr' not found (looked in the scenario's folder and the project root)\n" +
-            f + ":2: profiles: give either lr or gauge, not both (lr overrides the positioning)\n" +
-            f + ":2: profiles: rail position and inclination come from profiles{}; remove track.rail_lr / track.rail_inclination\n" +
-            f + ":3: contact: flange_stiffness applies to method 'lut' only (KEC treats the flange as a constraint)");
+            f +
+                ":2: profiles: rail: file 'missing.prr' not found (looked in the scenario's folder "
+                "and the project root)\n" +
+                f +
+                ":2: profiles: give either lr or gauge, not both (lr overrides the positioning)\n" +
+                f +
+                ":2: profiles: rail position and inclination come from profiles{}; remove "
+                "track.rail_lr / track.rail_inclination\n" +
+                f +
+                ":3: contact: flange_stiffness applies to method 'lut' only (KEC treats the flange "
+                "as a constraint)");
 }

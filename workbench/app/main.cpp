@@ -11,6 +11,7 @@
 #include "railbench/version.hpp"
 #include "workbench/app/run.hpp"
 #include "workbench/app/study.hpp"
+#include "workbench/app/tables.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/scenario/schema.hpp"
 
@@ -36,19 +37,29 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("railbench ") + rb::kVersion);
   app.require_subcommand(1);
   std::string root = defaultRoot();
-  app.add_option("--root", root, "project root holding scenarios/ and profiles/")->capture_default_str();
+  app.add_option("--root", root, "project root holding scenarios/ and profiles/")
+      ->capture_default_str();
 
   rb::app::RunOptions ro;
   auto* run = app.add_subcommand("run", "run a scenario and write its HDF5 result");
   run->add_option("scenario", ro.scenario, "scenario file (.lua)")->required();
-  run->add_option("--set", ro.overrides, "override a scenario value: block.key=value")->allow_extra_args(false);
+  run->add_option("--set", ro.overrides, "override a scenario value: block.key=value")
+      ->allow_extra_args(false);
   run->add_option("--out", ro.out, "result file (default out/<scenario>.h5)");
   run->add_flag("--quiet", ro.quiet, "no progress line");
 
   rb::app::RunOptions co;
   auto* check = app.add_subcommand("check", "validate a scenario without running it");
   check->add_option("scenario", co.scenario, "scenario file (.lua)")->required();
-  check->add_option("--set", co.overrides, "override a scenario value: block.key=value")->allow_extra_args(false);
+  check->add_option("--set", co.overrides, "override a scenario value: block.key=value")
+      ->allow_extra_args(false);
+
+  rb::app::RunOptions to;
+  auto* tables = app.add_subcommand("tables", "build and store the contact tables of a scenario");
+  tables->add_option("scenario", to.scenario, "scenario file (.lua)")->required();
+  tables->add_option("--set", to.overrides, "override a scenario value: block.key=value")
+      ->allow_extra_args(false);
+  tables->add_option("--out", to.out, "result file (default out/<scenario>_tables.h5)");
 
   rb::app::StudyOptions so;
   auto* study = app.add_subcommand("study", "run a study: a matrix of cases over a base scenario");
@@ -58,7 +69,9 @@ int main(int argc, char** argv) {
 
   std::string topic;
   auto* help = app.add_subcommand("help", "reference documentation");
-  help->add_option("topic", topic, "topic: scenario")->required()->check(CLI::IsMember({"scenario"}));
+  help->add_option("topic", topic, "topic: scenario")
+      ->required()
+      ->check(CLI::IsMember({"scenario"}));
 
   try {
     app.parse(argc, argv);
@@ -76,6 +89,10 @@ int main(int argc, char** argv) {
       rb::app::checkScenario(co);
       std::cout << co.scenario << ": ok\n";
       return 0;
+    }
+    if (*tables) {
+      to.root = root;
+      return rb::app::buildTables(to);
     }
     if (*study) {
       so.root = root;

@@ -112,10 +112,14 @@ std::string isoNow() {
 
 std::string kindName(vehicle::BodyKind k) {
   switch (k) {
-    case vehicle::BodyKind::CarBody: return "car";
-    case vehicle::BodyKind::Bogie: return "bogie";
-    case vehicle::BodyKind::Wheelset: return "wheelset";
-    case vehicle::BodyKind::Frame: return "frame";
+    case vehicle::BodyKind::CarBody:
+      return "car";
+    case vehicle::BodyKind::Bogie:
+      return "bogie";
+    case vehicle::BodyKind::Wheelset:
+      return "wheelset";
+    case vehicle::BodyKind::Frame:
+      return "frame";
   }
   return "?";
 }
@@ -128,8 +132,8 @@ double endTime(const Compiled& c) {
   const auto& v = *c.vehicle;
   double lead = -1e300;
   for (const auto& b : v.bodies) lead = std::max(lead, b.x);
-  double distance = run.distance > 0 ? run.distance
-                                     : c.track->geometry().length() - (v.start + lead);
+  double distance =
+      run.distance > 0 ? run.distance : c.track->geometry().length() - (v.start + lead);
   return std::max(distance, 0.0) / v.speed;
 }
 
@@ -151,7 +155,8 @@ int runGuided(const Compiled& c, const RunOptions& options, io::ResultFile& f) {
   for (const auto& b : v.bodies) {
     names += (names.empty() ? "" : "\n") + b.name;
     f.attr("/bodies/" + b.name, "kind", kindName(b.kind));
-    for (int k = 0; k < 6; ++k) r.outputs.push_back({"/bodies/" + b.name + "/" + coords[k], units[k]});
+    for (int k = 0; k < 6; ++k)
+      r.outputs.push_back({"/bodies/" + b.name + "/" + coords[k], units[k]});
     if (c.spec.run.body_accelerations)
       for (const char* a : {"ax", "ay", "az"})
         r.outputs.push_back({"/bodies/" + b.name + "/" + a, "m/s^2"});
@@ -251,7 +256,8 @@ int runScenario(const RunOptions& options) {
     // No vehicle in the scene: nothing is integrated. The stats group still says what was done
     // so every result file has the same shape.
     f.attr("/stats", "status", std::string("ok"));
-    f.attr("/stats", "message", std::string("no vehicle in the scene: track only, nothing integrated"));
+    f.attr("/stats", "message",
+           std::string("no vehicle in the scene: track only, nothing integrated"));
     msg << "; no vehicle in the scene, nothing integrated";
   }
   f.finalize();

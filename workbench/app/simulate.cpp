@@ -67,7 +67,8 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
                  lastDistance, rtf, s.rhs_evals + s.rhs_evals_jac);
     std::fflush(stderr);
   };
-  integ::RunResult res = integ::integrate(*r.system, *integrator, r.t0, r.y0, times, observer, progress);
+  integ::RunResult res =
+      integ::integrate(*r.system, *integrator, r.t0, r.y0, times, observer, progress);
   if (printed) std::fprintf(stderr, "\n");
   if (!res.ok) {
     std::ostringstream os;

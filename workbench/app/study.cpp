@@ -1,7 +1,7 @@
 #include "workbench/app/study.hpp"
 
-#include <sys/wait.h>
 #include <fcntl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -30,7 +30,8 @@ struct Job {
 
 // Starts `workbench run` for one job with stdout/stderr to its log; returns the pid.
 pid_t launch(const StudyOptions& o, const scenario::StudySpec& st, const Job& j) {
-  std::vector<std::string> args = {o.program, "--root", o.root, "run", st.base, "--out", j.h5, "--quiet"};
+  std::vector<std::string> args = {o.program, "--root", o.root, "run",
+                                   st.base,   "--out",  j.h5,   "--quiet"};
   for (const auto& ov : j.c->overrides) {
     args.push_back("--set");
     args.push_back(ov);
@@ -77,7 +78,9 @@ int runStudy(const StudyOptions& o) {
   scenario::StudySpec st = scenario::loadStudy(o.file, o.root);
   fs::path dir = o.out.empty() ? fs::path("out") / fs::path(o.file).stem() : fs::path(o.out);
   fs::create_directories(dir);
-  int jobs = o.jobs > 0 ? o.jobs : st.jobs > 0 ? st.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  int jobs = o.jobs > 0    ? o.jobs
+             : st.jobs > 0 ? st.jobs
+                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 
   std::vector<Job> all, todo;
   for (const auto& c : st.cases)
@@ -113,20 +116,23 @@ int runStudy(const StudyOptions& o) {
     auto it = running.find(pid);
     if (it == running.end()) continue;
     const Job& j = todo[it->second];
-    int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    int code = WIFEXITED(status) ? WEXITSTATUS(status)
+                                 : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
     exitCode[j.h5] = code;
     running.erase(it);
     ++done;
     std::cerr << "  [" << done << "/" << todo.size() << "] " << j.c->id << " r" << j.repeat << ": "
-              << (code == 0 ? "ok" : code == 2 ? "failed (result kept)" : "error " + std::to_string(code))
+              << (code == 0   ? "ok"
+                  : code == 2 ? "failed (result kept)"
+                              : "error " + std::to_string(code))
               << "  " << join(j.c->overrides, " ") << "\n";
   }
 
   // Summary: one row per run, then per case the median CPU time over the repeats.
   std::ofstream csv(dir / "summary.csv");
-  const std::vector<std::string> nums = {"cpu_time_s", "wall_time_s", "rhs_evals", "rhs_evals_jac",
-                                         "steps", "rejected_steps", "jacobian_evals",
-                                         "nonlinear_iters", "t_reached"};
+  const std::vector<std::string> nums = {"cpu_time_s",     "wall_time_s",     "rhs_evals",
+                                         "rhs_evals_jac",  "steps",           "rejected_steps",
+                                         "jacobian_evals", "nonlinear_iters", "t_reached"};
   csv << "case,repeat,overrides,status";
   for (const auto& k : nums) csv << "," << k;
   csv << ",message,file\n";
@@ -145,7 +151,8 @@ int runStudy(const StudyOptions& o) {
         if (!line.empty()) last += (last.empty() ? "" : " | ") + line;
       message = last.substr(0, 500);
     }
-    csv << j.c->id << "," << j.repeat << "," << csvField(join(j.c->overrides, " ")) << "," << status;
+    csv << j.c->id << "," << j.repeat << "," << csvField(join(j.c->overrides, " ")) << ","
+        << status;
     for (const auto& k : nums) {
       double v = rec && rec->number.count(k) ? rec->number[k] : 0.0;
       csv << "," << v;
@@ -173,10 +180,11 @@ int runStudy(const StudyOptions& o) {
   h5.attr("/runs", "overrides", overrides);
   h5.dataset("/runs/ok", colStatus, "-");
   for (const auto& k : nums)
-    h5.dataset("/runs/" + k, cols[k], k == "cpu_time_s" || k == "wall_time_s" || k == "t_reached" ? "s" : "-");
+    h5.dataset("/runs/" + k, cols[k],
+               k == "cpu_time_s" || k == "wall_time_s" || k == "t_reached" ? "s" : "-");
   h5.finalize();
-  std::cout << "study " << st.file << ": " << all.size() << " runs, summary in " << (dir / "summary.csv").string()
-            << "\n";
+  std::cout << "study " << st.file << ": " << all.size() << " runs, summary in "
+            << (dir / "summary.csv").string() << "\n";
   return 0;
 }
 

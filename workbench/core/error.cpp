@@ -17,7 +17,9 @@ std::string SourceLoc::str() const {
   return file.empty() ? std::string("<unknown>") : file;
 }
 
-std::string Diagnostic::str() const { return loc.str() + ": " + message; }
+std::string Diagnostic::str() const {
+  return loc.str() + ": " + message;
+}
 
 InputError::InputError(std::vector<Diagnostic> diags)
     : std::runtime_error(joinDiagnostics(diags)), diags_(std::move(diags)) {}

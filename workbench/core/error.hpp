@@ -51,7 +51,7 @@ class Diagnostics {
 
 }  // namespace rb
 
-#define RB_CHECK(cond, msg)                                        \
-  do {                                                             \
+#define RB_CHECK(cond, msg)                                         \
+  do {                                                              \
     if (!(cond)) ::rb::checkFailed(#cond, __FILE__, __LINE__, msg); \
   } while (0)

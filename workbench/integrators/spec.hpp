@@ -8,13 +8,13 @@
 namespace rb::integ {
 
 struct SolverSpec {
-  std::string method = "abm";   // registry name: rk4, abm, dopri5, bdf, ida
-  double step = 1e-3;           // [s] fixed step (rk4, abm); initial step hint for adaptive (0 = auto)
-  double rtol = 1e-6;           // [-] relative tolerance (adaptive methods)
-  double atol = 1e-6;           // [-] absolute tolerance, in state units (adaptive methods)
-  double max_step = 0.0;        // [s] maximum step, 0 = unlimited (adaptive methods)
-  int max_order = 5;            // [-] BDF maximum order 1..5
-  long max_steps = 0;           // [-] cap on internal steps per output interval, 0 = solver default
+  std::string method = "abm";  // registry name: rk4, abm, dopri5, bdf, ida
+  double step = 1e-3;     // [s] fixed step (rk4, abm); initial step hint for adaptive (0 = auto)
+  double rtol = 1e-6;     // [-] relative tolerance (adaptive methods)
+  double atol = 1e-6;     // [-] absolute tolerance, in state units (adaptive methods)
+  double max_step = 0.0;  // [s] maximum step, 0 = unlimited (adaptive methods)
+  int max_order = 5;      // [-] BDF maximum order 1..5
+  long max_steps = 0;     // [-] cap on internal steps per output interval, 0 = solver default
   std::string jacobian = "auto";  // "auto" (model's if it has one, else finite differences), "fd"
   SourceLoc loc;
 };

@@ -70,7 +70,8 @@ ResultFile::~ResultFile() {
 
 std::int64_t ResultFile::group(const std::string& path) {
   if (path.empty() || path == "/") return H5Gopen2(file_, "/", H5P_DEFAULT);
-  if (H5Lexists(file_, path.c_str(), H5P_DEFAULT) > 0) return H5Gopen2(file_, path.c_str(), H5P_DEFAULT);
+  if (H5Lexists(file_, path.c_str(), H5P_DEFAULT) > 0)
+    return H5Gopen2(file_, path.c_str(), H5P_DEFAULT);
   hid_t lcpl = linkCreateProps();
   hid_t g = H5Gcreate2(file_, path.c_str(), lcpl, H5P_DEFAULT, H5P_DEFAULT);
   H5Pclose(lcpl);
@@ -101,11 +102,32 @@ void ResultFile::dataset(const std::string& path, const std::vector<double>& dat
   hsize_t n = data.size();
   hid_t space = H5Screate_simple(1, &n, nullptr);
   hid_t lcpl = linkCreateProps();
-  hid_t d = H5Dcreate2(file_, path.c_str(), H5T_NATIVE_DOUBLE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+  hid_t d =
+      H5Dcreate2(file_, path.c_str(), H5T_NATIVE_DOUBLE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
   H5Pclose(lcpl);
   H5Sclose(space);
   if (d < 0) fail("cannot create dataset", path);
   if (n > 0 && H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0) {
+    H5Dclose(d);
+    fail("cannot write dataset", path);
+  }
+  writeStringAttr(d, "units", units);
+  H5Dclose(d);
+}
+
+void ResultFile::dataset2d(const std::string& path, std::size_t rows, std::size_t cols,
+                           const std::vector<double>& data, const std::string& units) {
+  if (data.size() != rows * cols) fail("2-D data of the wrong size for", path);
+  hsize_t dims[2] = {rows, cols};
+  hid_t space = H5Screate_simple(2, dims, nullptr);
+  hid_t lcpl = linkCreateProps();
+  hid_t d =
+      H5Dcreate2(file_, path.c_str(), H5T_NATIVE_DOUBLE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+  H5Pclose(lcpl);
+  H5Sclose(space);
+  if (d < 0) fail("cannot create dataset", path);
+  if (!data.empty() &&
+      H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0) {
     H5Dclose(d);
     fail("cannot write dataset", path);
   }

@@ -48,6 +48,9 @@ class ResultFile {
 
   // A complete 1-D dataset with a `units` attribute (SI, "-" for dimensionless).
   void dataset(const std::string& path, const std::vector<double>& data, const std::string& units);
+  // A complete 2-D dataset, row-major data of rows x cols (e.g. a table over gauge x y).
+  void dataset2d(const std::string& path, std::size_t rows, std::size_t cols,
+                 const std::vector<double>& data, const std::string& units);
   // An appendable dataset; the returned Series lives as long as this file.
   Series& series(const std::string& path, const std::string& units);
 

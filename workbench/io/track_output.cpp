@@ -2,7 +2,9 @@
 
 namespace rb::io {
 namespace {
-std::vector<double> toDouble(const std::vector<int>& v) { return {v.begin(), v.end()}; }
+std::vector<double> toDouble(const std::vector<int>& v) {
+  return {v.begin(), v.end()};
+}
 }  // namespace
 
 void writeTrack(ResultFile& f, const track::TrackSpec& spec, const track::TrackSamples& t) {

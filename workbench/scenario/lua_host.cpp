@@ -16,16 +16,16 @@ namespace fs = std::filesystem;
 namespace rb::scenario {
 
 const std::vector<std::string>& topLevelBlocks() {
-  static const std::vector<std::string> names = {"track",   "profiles", "vehicle", "contact",
-                                                 "solver",  "run",      "study"};
+  static const std::vector<std::string> names = {"track",  "profiles", "vehicle", "contact",
+                                                 "solver", "run",      "study"};
   return names;
 }
 
 const std::vector<std::string>& nestedConstructors() {
   static const std::vector<std::string> names = {
-      "tangent",      "transition",    "curve",        "psd",         "measured",
-      "body",         "spring_damper", "series_damper", "shear_spring", "bending_spring",
-      "bumpstop"};
+      "tangent",      "transition",     "curve",         "psd",
+      "measured",     "body",           "spring_damper", "series_damper",
+      "shear_spring", "bending_spring", "bumpstop"};
   return names;
 }
 
@@ -66,10 +66,10 @@ Diagnostic parseLuaMessage(const std::string& msg, const std::string& fallbackFi
        colon = msg.find(':', colon + 1)) {
     std::size_t digits = colon + 1;
     while (digits < msg.size() && std::isdigit(static_cast<unsigned char>(msg[digits]))) ++digits;
-    if (digits > colon + 1 && msg.compare(digits, 2, ": ") == 0 &&
-        msg.find('\n') > colon) {
-      return Diagnostic{{msg.substr(0, colon), std::stoi(msg.substr(colon + 1, digits - colon - 1))},
-                        msg.substr(digits + 2)};
+    if (digits > colon + 1 && msg.compare(digits, 2, ": ") == 0 && msg.find('\n') > colon) {
+      return Diagnostic{
+          {msg.substr(0, colon), std::stoi(msg.substr(colon + 1, digits - colon - 1))},
+          msg.substr(digits + 2)};
     }
   }
   return Diagnostic{{fallbackFile, 0}, msg};
@@ -96,7 +96,8 @@ struct LuaHost::Impl {
       std::free(ptr);
       return nullptr;
     }
-    if (self->memory - old + nsize > self->memoryLimit) return nullptr;  // Lua raises "not enough memory"
+    if (self->memory - old + nsize > self->memoryLimit)
+      return nullptr;  // Lua raises "not enough memory"
     void* p = std::realloc(ptr, nsize);
     if (p) self->memory = self->memory - old + nsize;
     return p;
@@ -189,7 +190,9 @@ struct LuaHost::Impl {
     std::string name = lua_tostring(L, 1);
     for (char c : name) {
       if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.')) {
-        push(L, loc, "require \"" + name + "\": module names may contain only letters, digits, '_' and '.'");
+        push(
+            L, loc,
+            "require \"" + name + "\": module names may contain only letters, digits, '_' and '.'");
         return false;
       }
     }
@@ -334,7 +337,9 @@ struct Converter {
     Node n;
     n.loc = parentLoc;
     switch (lua_type(L, idx)) {
-      case LUA_TNIL: n.type = Node::Type::Nil; break;
+      case LUA_TNIL:
+        n.type = Node::Type::Nil;
+        break;
       case LUA_TBOOLEAN:
         n.type = Node::Type::Bool;
         n.boolean = lua_toboolean(L, idx);
@@ -354,23 +359,24 @@ struct Converter {
         lua_State* state = L;
         SourceLoc loc = parentLoc;
         std::string where = path;
-        n.function = std::make_shared<std::function<double(double)>>([state, ref, loc, where](double x) {
-          lua_rawgeti(state, LUA_REGISTRYINDEX, ref);
-          lua_pushnumber(state, x);
-          if (lua_pcall(state, 1, 1, 0) != LUA_OK) {
-            std::string msg = lua_tostring(state, -1) ? lua_tostring(state, -1) : "error";
-            lua_pop(state, 1);
-            throw InputError({parseLuaMessage(msg, loc.file)});
-          }
-          if (!lua_isnumber(state, -1)) {
-            std::string t = luaL_typename(state, -1);
-            lua_pop(state, 1);
-            throw InputError(loc, where + ": function must return a number, got " + t);
-          }
-          double v = lua_tonumber(state, -1);
-          lua_pop(state, 1);
-          return v;
-        });
+        n.function =
+            std::make_shared<std::function<double(double)>>([state, ref, loc, where](double x) {
+              lua_rawgeti(state, LUA_REGISTRYINDEX, ref);
+              lua_pushnumber(state, x);
+              if (lua_pcall(state, 1, 1, 0) != LUA_OK) {
+                std::string msg = lua_tostring(state, -1) ? lua_tostring(state, -1) : "error";
+                lua_pop(state, 1);
+                throw InputError({parseLuaMessage(msg, loc.file)});
+              }
+              if (!lua_isnumber(state, -1)) {
+                std::string t = luaL_typename(state, -1);
+                lua_pop(state, 1);
+                throw InputError(loc, where + ": function must return a number, got " + t);
+              }
+              double v = lua_tonumber(state, -1);
+              lua_pop(state, 1);
+              return v;
+            });
         break;
       }
       case LUA_TTABLE: {
@@ -492,7 +498,8 @@ std::string LuaHost::resolveDataFile(const std::string& name, const SourceLoc& l
                                 "its own folder, scenarios/, profiles/)");
     return fs::weakly_canonical(c).string();
   }
-  throw InputError(loc, "file '" + name + "' not found (looked in the scenario's folder and the project root)");
+  throw InputError(
+      loc, "file '" + name + "' not found (looked in the scenario's folder and the project root)");
 }
 
 }  // namespace rb::scenario

@@ -17,8 +17,8 @@ struct lua_State;
 namespace rb::scenario {
 
 struct HostOptions {
-  std::string root;                          // project root holding scenarios/ and profiles/
-  long long instruction_limit = 2'000'000'000;  // Lua VM instructions for the whole script
+  std::string root;                                 // project root holding scenarios/ and profiles/
+  long long instruction_limit = 2'000'000'000;      // Lua VM instructions for the whole script
   std::size_t memory_limit = std::size_t{1} << 30;  // bytes
 };
 

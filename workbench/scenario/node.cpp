@@ -30,12 +30,18 @@ Node& Node::setField(const std::string& name, Node value) {
 
 const char* Node::typeName(Type t) {
   switch (t) {
-    case Type::Nil: return "nil";
-    case Type::Bool: return "boolean";
-    case Type::Number: return "number";
-    case Type::String: return "string";
-    case Type::Table: return "table";
-    case Type::Function: return "function";
+    case Type::Nil:
+      return "nil";
+    case Type::Bool:
+      return "boolean";
+    case Type::Number:
+      return "number";
+    case Type::String:
+      return "string";
+    case Type::Table:
+      return "table";
+    case Type::Function:
+      return "function";
   }
   return "?";
 }
@@ -43,14 +49,23 @@ const char* Node::typeName(Type t) {
 std::string Node::describe() const {
   std::ostringstream os;
   switch (type) {
-    case Type::Number: os << "number " << number; break;
-    case Type::String: os << "string \"" << string << "\""; break;
-    case Type::Bool: os << "boolean " << (boolean ? "true" : "false"); break;
-    case Type::Table:
-      if (!kind.empty()) os << kind << "{...}";
-      else os << "table";
+    case Type::Number:
+      os << "number " << number;
       break;
-    default: os << typeName(type);
+    case Type::String:
+      os << "string \"" << string << "\"";
+      break;
+    case Type::Bool:
+      os << "boolean " << (boolean ? "true" : "false");
+      break;
+    case Type::Table:
+      if (!kind.empty())
+        os << kind << "{...}";
+      else
+        os << "table";
+      break;
+    default:
+      os << typeName(type);
   }
   return os.str();
 }

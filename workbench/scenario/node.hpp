@@ -19,7 +19,7 @@ struct Node {
   double number = 0.0;
   std::string string;
   std::vector<std::pair<std::string, Node>> fields;  // named entries, in a stable (sorted) order
-  std::vector<Node> items;                            // array part, Lua index 1..n
+  std::vector<Node> items;                           // array part, Lua index 1..n
   std::string kind;  // constructor that made this table ("track", "curve", ...); "" if plain
   SourceLoc loc;     // where the constructor was called (plain tables inherit their parent's)
   // For Type::Function: evaluates the Lua function with one number (throws InputError).

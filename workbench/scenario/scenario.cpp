@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "workbench/core/strings.hpp"
-#include "workbench/scenario/lua_host.hpp"
 #include "workbench/integrators/registry.hpp"
+#include "workbench/scenario/lua_host.hpp"
 #include "workbench/scenario/schema.hpp"
 
 namespace rb::scenario {
@@ -32,8 +32,10 @@ class Reader {
       if (spec.key(k)) continue;
       std::string msg = "unknown key '" + k + "'";
       std::string hint = closestMatch(k, spec.keyNames());
-      if (!hint.empty()) msg += " (did you mean '" + hint + "'?)";
-      else msg += " (valid keys: " + join(spec.keyNames(), ", ") + ")";
+      if (!hint.empty())
+        msg += " (did you mean '" + hint + "'?)";
+      else
+        msg += " (valid keys: " + join(spec.keyNames(), ", ") + ")";
       error(v, msg);
     }
     if (!node.items.empty())
@@ -109,7 +111,8 @@ class Reader {
     b = v->items[1].number;
     checkRange(*v, k, a);
     checkRange(*v, k, b);
-    if (!(a < b)) error(*v, name + " must be {min, max} with min < max, got {" + fmt(a) + ", " + fmt(b) + "}");
+    if (!(a < b))
+      error(*v, name + " must be {min, max} with min < max, got {" + fmt(a) + ", " + fmt(b) + "}");
     return true;
   }
 
@@ -321,7 +324,9 @@ Node parseOverrideValue(const std::string& text) {
 }
 
 void applyOverride(Node& root, const std::string& assignment, Diagnostics& d) {
-  auto fail = [&](const std::string& msg) { d.add(kCommandLine, "--set " + assignment + ": " + msg); };
+  auto fail = [&](const std::string& msg) {
+    d.add(kCommandLine, "--set " + assignment + ": " + msg);
+  };
   auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0) return fail("expected key=value, e.g. solver.step=5e-4");
   std::string path = assignment.substr(0, eq);
@@ -364,7 +369,8 @@ void applyOverride(Node& root, const std::string& assignment, Diagnostics& d) {
     if (isIndex) {
       std::size_t idx = std::stoul(t);
       if (idx < 1 || idx > node->items.size())
-        return fail("list position " + t + " out of range 1.." + std::to_string(node->items.size()));
+        return fail("list position " + t + " out of range 1.." +
+                    std::to_string(node->items.size()));
       if (last) {
         node->items[idx - 1] = parseOverrideValue(value);
         return;
@@ -419,8 +425,8 @@ track::PsdTable readPsdInput(const Node& v, const std::string& path, Reader& r, 
   if (v.type == Node::Type::Table && v.fields.empty()) {
     for (std::size_t i = 0; i < v.items.size(); ++i) {
       const Node& p = v.items[i];
-      if (p.type != Node::Type::Table || p.items.size() != 2 || p.items[0].type != Node::Type::Number ||
-          p.items[1].type != Node::Type::Number) {
+      if (p.type != Node::Type::Table || p.items.size() != 2 ||
+          p.items[0].type != Node::Type::Number || p.items[1].type != Node::Type::Number) {
         r.error(v, path + "[" + std::to_string(i + 1) + "] must be a pair {omega, G}");
         return {};
       }
@@ -429,7 +435,8 @@ track::PsdTable readPsdInput(const Node& v, const std::string& path, Reader& r, 
     }
     return t;
   }
-  r.error(v, path + " must be a function of omega or a table of {omega, G} pairs, got " + v.describe());
+  r.error(
+      v, path + " must be a function of omega or a table of {omega, G} pairs, got " + v.describe());
   return {};
 }
 
@@ -519,7 +526,6 @@ void buildTrack(const Node& n, LuaHost& host, track::TrackSpec& t, bool& railsGi
     buildIrregularities(*irr, "track.irregularities", host, t.irregularities, d);
 }
 
-
 void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d) {
   Reader r(n, block("vehicle"), "vehicle", d);
   v.loc = n.loc;
@@ -580,9 +586,8 @@ void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d) {
   }
 }
 
-
-std::string profileSource(Reader& r, const Node& n, const std::string& key, const std::string& builtin,
-                          LuaHost& host) {
+std::string profileSource(Reader& r, const Node& n, const std::string& key,
+                          const std::string& builtin, LuaHost& host) {
   std::string v = r.string(key);
   if (v.empty() || v == builtin) return builtin;
   try {
@@ -614,7 +619,8 @@ void buildProfiles(const Node& n, LuaHost& host, dynamics::ProfilesSpec& p, Diag
 void buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
   Reader r(n, block("contact"), "contact", d);
   c.loc = n.loc;
-  c.method = r.choice("method") == "lut" ? dynamics::ContactMethod::Lut : dynamics::ContactMethod::Kec;
+  c.method =
+      r.choice("method") == "lut" ? dynamics::ContactMethod::Lut : dynamics::ContactMethod::Kec;
   c.kec_dhat = r.number("dhat");
   c.kec_dbar = r.number("dbar");
   c.flange_stiffness = r.number("flange_stiffness");
@@ -632,7 +638,10 @@ void buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
   // Options that belong to the other method are conflicts, not silently ignored.
   bool kec = c.method == dynamics::ContactMethod::Kec;
   for (const char* k : {"flange_stiffness", "flange_damping"})
-    if (kec && r.has(k)) r.error(*n.field(k), std::string(k) + " applies to method 'lut' only (KEC treats the flange as a constraint)");
+    if (kec && r.has(k))
+      r.error(
+          *n.field(k),
+          std::string(k) + " applies to method 'lut' only (KEC treats the flange as a constraint)");
   for (const char* k : {"dhat", "dbar"})
     if (!kec && r.has(k)) r.error(*n.field(k), std::string(k) + " applies to method 'kec' only");
 }
@@ -660,8 +669,8 @@ void buildSolver(const Node& n, integ::SolverSpec& s, Diagnostics& d) {
       if (!used) {
         std::vector<std::string> valid;
         for (const auto& o : m.options) valid.push_back(o.key);
-        r.error(v, k + " has no effect with method '" + s.method + "' (its options: " +
-                       join(valid, ", ") + ")");
+        r.error(v, k + " has no effect with method '" + s.method +
+                       "' (its options: " + join(valid, ", ") + ")");
       }
     }
   }
@@ -704,13 +713,15 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
 
   if (const Node* t = root.field("track"))
     buildTrack(*t, host, spec.track, spec.track_rails_given, d);
-  else d.add({path, 0}, "scenario has no track { ... } block");
+  else
+    d.add({path, 0}, "scenario has no track { ... } block");
   if (const Node* p = root.field("profiles")) {
     spec.has_profiles = true;
     buildProfiles(*p, host, spec.profiles, d);
     if (spec.track_rails_given)
-      d.add(p->loc, "profiles: rail position and inclination come from profiles{}; remove "
-                    "track.rail_lr / track.rail_inclination");
+      d.add(p->loc,
+            "profiles: rail position and inclination come from profiles{}; remove "
+            "track.rail_lr / track.rail_inclination");
   }
   if (const Node* c = root.field("contact")) {
     spec.has_contact = true;

@@ -12,9 +12,9 @@
 namespace rb::scenario {
 
 struct RunSpec {
-  double distance = 0.0;      // [m] 0 = to the end of the track
-  double duration = 0.0;      // [s] 0 = distance / speed
-  double output_every = 0.01; // [s]
+  double distance = 0.0;                     // [m] 0 = to the end of the track
+  double duration = 0.0;                     // [s] 0 = distance / speed
+  double output_every = 0.01;                // [s]
   std::vector<std::string> output_elements;  // element names (checked against the vehicle)
   bool body_accelerations = false;
   SourceLoc loc;
@@ -38,8 +38,8 @@ struct ScenarioSpec {
 };
 
 struct LoadOptions {
-  std::string root;                    // project root (scenarios/, profiles/)
-  std::vector<std::string> overrides;  // "a.b[2].c=value"
+  std::string root;                             // project root (scenarios/, profiles/)
+  std::vector<std::string> overrides;           // "a.b[2].c=value"
   long long instruction_limit = 2'000'000'000;  // Lua VM instructions before "endless loop?"
 };
 

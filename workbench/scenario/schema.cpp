@@ -39,7 +39,8 @@ KeySpec integer(std::string name, double def, std::string help, double min, doub
   return k;
 }
 
-KeySpec choice(std::string name, std::vector<std::string> choices, std::string def, std::string help) {
+KeySpec choice(std::string name, std::vector<std::string> choices, std::string def,
+               std::string help) {
   KeySpec k;
   k.name = std::move(name);
   k.type = ValueType::Choice;
@@ -103,8 +104,8 @@ std::vector<BlockSpec> build() {
                 num("gauge", "m", 1.435, "nominal track gauge", 1.0, 2.0),
                 num("rail_lr", "m", 0.7555,
                     "Lr: lateral position of the rail profile frames (paper Table 1)", 0.5, 1.0),
-                num("rail_inclination", "rad", 0.025, "beta: rail inclination (paper Table 1: 1/40)",
-                    0.0, 0.1),
+                num("rail_inclination", "rad", 0.025,
+                    "beta: rail inclination (paper Table 1: 1/40)", 0.0, 0.1),
                 blockKey("irregularities", ValueType::Block, {"psd", "measured"},
                          "track irregularities; none if absent (costs nothing)")}});
   s.push_back({"tangent",
@@ -156,7 +157,8 @@ std::vector<BlockSpec> build() {
        "phases (paper Fig. 3, 15). One-sided PSDs over spatial angular frequency.",
        {required(choice("spectrum", spectra(), "",
                         "named PSD (FRA values UNVERIFIED, see docs) or \"user\"")),
-        integer("seed", 1, "random seed of the phases (recorded in the output)", 0, 9.007199254740992e15),
+        integer("seed", 1, "random seed of the phases (recorded in the output)", 0,
+                9.007199254740992e15),
         wl, integer("components", 2000, "cosines per channel", 1, 1e6),
         num("step", "m", 0.1, "spline sampling step (paper: 0.1 m)", 0, kInf, true),
         num("scale", "-", 1, "amplitude factor on every channel", 0, 100), channels,
@@ -173,8 +175,6 @@ std::vector<BlockSpec> build() {
                "Measured irregularities from a CSV file.",
                {file, num("step", "m", 0.1, "spline sampling step", 0, kInf, true)}});
 
-
-
   s.push_back(
       {"profiles",
        "Wheel and rail profiles and their positioning (paper Table 1). Built-in profiles: S1002 "
@@ -187,8 +187,10 @@ std::vector<BlockSpec> build() {
         num("back_to_back", "m", 1.36, "back-to-back distance B (Lw = B/2 + 70 mm for S1002)", 1.3,
             1.5),
         num("gauge", "m", 1.435, "track gauge G, 14 mm below the rail top (sets Lr)", 1.0, 2.0),
-        num("r0", "m", 0.46, "nominal rolling radius (Manchester vehicle 1: 0.46 m; paper Table 1: "
-            "0.457 m)", 0.2, 0.7),
+        num("r0", "m", 0.46,
+            "nominal rolling radius (Manchester vehicle 1: 0.46 m; paper Table 1: "
+            "0.457 m)",
+            0.2, 0.7),
         num("inclination", "rad", 0.025, "rail inclination beta (1:40 = 0.025)", 0, 0.1),
         num("lw", "m", 0, "explicit Lw, 0 = from back_to_back (paper Table 1: 0.7515)", 0, 1.0),
         num("lr", "m", 0, "explicit Lr, 0 = from gauge (paper Table 1: 0.7555)", 0, 1.0),
@@ -219,7 +221,8 @@ std::vector<BlockSpec> build() {
   s.push_back(
       {"vehicle",
        "A vehicle: rigid bodies with coordinates relative to their own track frames (paper Eq. "
-       "2-3) joined by suspension elements (Appendix A, Eq. 27-31). Usually made by a vehicle file: "
+       "2-3) joined by suspension elements (Appendix A, Eq. 27-31). Usually made by a vehicle "
+       "file: "
        "vehicle (require \"vehicles.manchester_wagon1\" { speed = 20 }).",
        {typed("name", ValueType::String, "-", "vehicle name"),
         required(num("speed", "m/s", 0, "constant forward velocity V", 0, 200)),
@@ -229,20 +232,22 @@ std::vector<BlockSpec> build() {
         blockKey("elements", ValueType::BlockList,
                  {"spring_damper", "series_damper", "shear_spring", "bending_spring", "bumpstop"},
                  "suspension elements")}});
-  s.push_back({"body",
-               "A rigid body.",
-               {typed("name", ValueType::String, "-", "unique body name", true),
-                choice("kind", {"car", "bogie", "wheelset", "frame"}, "car",
-                       "car body, bogie frame, wheelset, or a frame that follows the track "
-                       "centreline kinematically"),
-                required(num("mass", "kg", 0, "mass", 0, kInf, true)),
-                typed("inertia", ValueType::Vec3, "kg m^2", "principal inertias {Ixx, Iyy, Izz}", true),
-                num("x", "m", 0, "longitudinal position of the centre of mass, positive forward"),
-                num("height", "m", 0, "height of the centre of mass above the top of rail", -1, 10)}});
+  s.push_back(
+      {"body",
+       "A rigid body.",
+       {typed("name", ValueType::String, "-", "unique body name", true),
+        choice("kind", {"car", "bogie", "wheelset", "frame"}, "car",
+               "car body, bogie frame, wheelset, or a frame that follows the track "
+               "centreline kinematically"),
+        required(num("mass", "kg", 0, "mass", 0, kInf, true)),
+        typed("inertia", ValueType::Vec3, "kg m^2", "principal inertias {Ixx, Iyy, Izz}", true),
+        num("x", "m", 0, "longitudinal position of the centre of mass, positive forward"),
+        num("height", "m", 0, "height of the centre of mass above the top of rail", -1, 10)}});
   auto elementKeys = [&](std::vector<KeySpec> extra) {
     std::vector<KeySpec> keys = {
         typed("name", ValueType::String, "-", "element name (for outputs)", true),
-        typed("from", ValueType::String, "-", "master body (its track frame is used, Eq. 28)", true),
+        typed("from", ValueType::String, "-", "master body (its track frame is used, Eq. 28)",
+              true),
         typed("to", ValueType::String, "-", "second body", true),
         typed("at_from", ValueType::Vec3, "m", "attachment point in the master body's frame"),
         typed("at_to", ValueType::Vec3, "m", "attachment point in the second body's frame"),
@@ -272,17 +277,17 @@ std::vector<BlockSpec> build() {
   s.push_back({"bumpstop",
                "Nonlinear bumpstop: force from a cubic spline through a table of deformation and "
                "force (paper Table 4, Fig. 27), symmetric in the sign of d.",
-               elementKeys({typed("table", ValueType::PairList, "m, N",
-                                  "{{d, F}, ...} with d increasing, e.g. {{0.025, 0}, {0.030, 600}}",
-                                  true)})});
-
+               elementKeys({typed(
+                   "table", ValueType::PairList, "m, N",
+                   "{{d, F}, ...} with d increasing, e.g. {{0.025, 0}, {0.030, 600}}", true)})});
 
   s.push_back(
       {"study",
        "A study (issue 7): a matrix of variations over a base scenario. `workbench study FILE` "
        "runs every case (in parallel, each its own HDF5), skips cases already finished, and "
        "writes a summary (CSV and HDF5). Keys of matrix and cases are --set paths.",
-       {typed("base", ValueType::String, "-", "base scenario file, relative to the study file", true),
+       {typed("base", ValueType::String, "-", "base scenario file, relative to the study file",
+              true),
         typed("matrix", ValueType::Table, "-",
               "{ [\"solver.method\"] = {\"rk4\", \"abm\"}, ... }: every combination is a case"),
         typed("cases", ValueType::Table, "-",
@@ -299,20 +304,20 @@ std::vector<BlockSpec> build() {
   }
   KeySpec jac = choice("jacobian", {"auto", "fd"}, "auto",
                        "bdf: model's analytic Jacobian if it has one (auto) or finite differences");
-  s.push_back({"solver",
-               "Time integrator (paper section 4) and its options.",
-               {choice("method", methodNames, "abm", methodHelp),
-                num("step", "s", 1e-3,
-                    "fixed step (rk4, abm); for adaptive methods the initial step, automatic "
-                    "when not given",
-                    0, 1.0),
-                num("rtol", "-", 1e-6, "relative tolerance (dopri5, bdf, ida)", 0, 1, true),
-                num("atol", "-", 1e-6, "absolute tolerance in state units (dopri5, bdf, ida)", 0,
-                    kInf, true),
-                num("max_step", "s", 0, "largest step, 0 = unlimited (dopri5, bdf, ida)", 0),
-                integer("max_order", 5, "maximum BDF order (bdf, ida)", 1, 5),
-                integer("max_steps", 0, "internal steps per output interval, 0 = default", 0, 1e12),
-                jac}});
+  s.push_back(
+      {"solver",
+       "Time integrator (paper section 4) and its options.",
+       {choice("method", methodNames, "abm", methodHelp),
+        num("step", "s", 1e-3,
+            "fixed step (rk4, abm); for adaptive methods the initial step, automatic "
+            "when not given",
+            0, 1.0),
+        num("rtol", "-", 1e-6, "relative tolerance (dopri5, bdf, ida)", 0, 1, true),
+        num("atol", "-", 1e-6, "absolute tolerance in state units (dopri5, bdf, ida)", 0, kInf,
+            true),
+        num("max_step", "s", 0, "largest step, 0 = unlimited (dopri5, bdf, ida)", 0),
+        integer("max_order", 5, "maximum BDF order (bdf, ida)", 1, 5),
+        integer("max_steps", 0, "internal steps per output interval, 0 = default", 0, 1e12), jac}});
   s.push_back({"run",
                "What to simulate and what to write.",
                {num("distance", "m", 0, "distance to travel, 0 = to the end of the track", 0),
@@ -356,19 +361,32 @@ const BlockSpec& block(const std::string& name) {
 namespace {
 const char* typeText(ValueType t) {
   switch (t) {
-    case ValueType::Number: return "number";
-    case ValueType::Integer: return "integer";
-    case ValueType::String: return "string";
-    case ValueType::Choice: return "choice";
-    case ValueType::Bool: return "boolean";
-    case ValueType::Pair: return "{min, max}";
-    case ValueType::Block: return "block";
-    case ValueType::BlockList: return "list of blocks";
-    case ValueType::StringList: return "list of names";
-    case ValueType::PsdInput: return "function or table";
-    case ValueType::Vec3: return "{x, y, z}";
-    case ValueType::PairList: return "{{a, b}, ...}";
-    case ValueType::Table: return "table";
+    case ValueType::Number:
+      return "number";
+    case ValueType::Integer:
+      return "integer";
+    case ValueType::String:
+      return "string";
+    case ValueType::Choice:
+      return "choice";
+    case ValueType::Bool:
+      return "boolean";
+    case ValueType::Pair:
+      return "{min, max}";
+    case ValueType::Block:
+      return "block";
+    case ValueType::BlockList:
+      return "list of blocks";
+    case ValueType::StringList:
+      return "list of names";
+    case ValueType::PsdInput:
+      return "function or table";
+    case ValueType::Vec3:
+      return "{x, y, z}";
+    case ValueType::PairList:
+      return "{{a, b}, ...}";
+    case ValueType::Table:
+      return "table";
   }
   return "?";
 }
@@ -381,14 +399,17 @@ std::string referenceText() {
         "(locals, loops, arithmetic, require of shared files) is allowed. Units are SI.\n"
         "Any value can be overridden with --set block.key=value (lists: block.list[2].key).\n";
   for (const auto& b : schema()) {
-    os << "\n" << b.name << (b.name.find('.') == std::string::npos ? " { ... }" : " = { ... }")
-       << "\n  " << b.help << "\n";
+    os << "\n"
+       << b.name << (b.name.find('.') == std::string::npos ? " { ... }" : " = { ... }") << "\n  "
+       << b.help << "\n";
     for (const auto& k : b.keys) {
       os << "  " << k.name << " (" << typeText(k.type);
       if (!k.unit.empty() && k.unit != "-") os << ", " << k.unit;
       os << ")";
-      if (k.required) os << " required";
-      else if (!k.def.empty()) os << " default " << k.def;
+      if (k.required)
+        os << " required";
+      else if (!k.def.empty())
+        os << " default " << k.def;
       if (k.type == ValueType::Number || k.type == ValueType::Integer) {
         if (k.min > -kInf || k.max < kInf) {
           os << ", range " << (k.min_exclusive ? "(" : "[") << k.min << ", " << k.max

@@ -9,19 +9,19 @@
 namespace rb::scenario {
 
 enum class ValueType {
-  Number,     // real, SI unit in `unit`
-  Integer,    // whole number
-  String,     // free text (file names)
-  Choice,     // one of `choices`
+  Number,   // real, SI unit in `unit`
+  Integer,  // whole number
+  String,   // free text (file names)
+  Choice,   // one of `choices`
   Bool,
-  Pair,       // {a, b} of numbers, a < b
-  Block,      // a constructor call of one of `kinds`, or a plain table described by block `sub`
-  BlockList,  // a list of constructor calls of `kinds`
-  StringList, // a list of `choices`
-  PsdInput,   // a Lua function G(omega) or a table of {omega, G} pairs
-  Vec3,       // {x, y, z} of numbers
-  PairList,   // {{a, b}, ...} of numbers
-  Table,      // a free-form table, read by the block's own builder
+  Pair,        // {a, b} of numbers, a < b
+  Block,       // a constructor call of one of `kinds`, or a plain table described by block `sub`
+  BlockList,   // a list of constructor calls of `kinds`
+  StringList,  // a list of `choices`
+  PsdInput,    // a Lua function G(omega) or a table of {omega, G} pairs
+  Vec3,        // {x, y, z} of numbers
+  PairList,    // {{a, b}, ...} of numbers
+  Table,       // a free-form table, read by the block's own builder
 };
 
 struct KeySpec {

@@ -26,9 +26,14 @@ bool scalarText(const Node& n, std::string& out) {
       }
       out = buf;
       return true;
-    case Node::Type::String: out = n.string; return true;
-    case Node::Type::Bool: out = n.boolean ? "true" : "false"; return true;
-    default: return false;
+    case Node::Type::String:
+      out = n.string;
+      return true;
+    case Node::Type::Bool:
+      out = n.boolean ? "true" : "false";
+      return true;
+    default:
+      return false;
   }
 }
 
@@ -78,8 +83,8 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
   auto intKey = [&](const char* key, int def, int lo, int hi) {
     const Node* v = n->field(key);
     if (!v) return def;
-    if (v->type != Node::Type::Number || v->number != static_cast<int>(v->number) || v->number < lo ||
-        v->number > hi) {
+    if (v->type != Node::Type::Number || v->number != static_cast<int>(v->number) ||
+        v->number < lo || v->number > hi) {
       err(std::string(key) + " must be a whole number in [" + std::to_string(lo) + ", " +
           std::to_string(hi) + "]");
       return def;
@@ -92,7 +97,8 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
   // Matrix: ordered keys (Node fields are sorted), each a list of scalars.
   std::vector<std::pair<std::string, std::vector<std::string>>> axes;
   if (const Node* m = n->field("matrix")) {
-    if (m->type != Node::Type::Table || !m->items.empty()) err("matrix must be { [\"key\"] = {values...}, ... }");
+    if (m->type != Node::Type::Table || !m->items.empty())
+      err("matrix must be { [\"key\"] = {values...}, ... }");
     for (const auto& [k, v] : m->fields) {
       std::vector<std::string> vals;
       if (v.type != Node::Type::Table || !v.fields.empty() || v.items.empty()) {
@@ -101,7 +107,8 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
       }
       for (const auto& item : v.items) {
         std::string t;
-        if (!scalarText(item, t)) err("matrix[\"" + k + "\"]: values must be numbers, strings or booleans");
+        if (!scalarText(item, t))
+          err("matrix[\"" + k + "\"]: values must be numbers, strings or booleans");
         vals.push_back(t);
       }
       axes.emplace_back(k, vals);
@@ -119,7 +126,8 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
       }
       for (const auto& [k, v] : item.fields) {
         std::string t;
-        if (!scalarText(v, t)) err("cases[" + std::to_string(i + 1) + "][\"" + k + "\"] must be a scalar");
+        if (!scalarText(v, t))
+          err("cases[" + std::to_string(i + 1) + "][\"" + k + "\"] must be a scalar");
         ov.push_back(k + "=" + t);
       }
       variants.push_back(ov);
@@ -147,8 +155,9 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
       sc.overrides.insert(sc.overrides.end(), v.begin(), v.end());
       char buf[32];
       // Named by its overrides only, so adding values to a study keeps old results resumable.
-      std::snprintf(buf, sizeof buf, "case_%08llx",
-                    static_cast<unsigned long long>(fnv1a(join(sc.overrides, ";")) & 0xffffffffull));
+      std::snprintf(
+          buf, sizeof buf, "case_%08llx",
+          static_cast<unsigned long long>(fnv1a(join(sc.overrides, ";")) & 0xffffffffull));
       sc.id = buf;
       st.cases.push_back(sc);
     }

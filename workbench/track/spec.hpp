@@ -20,8 +20,8 @@ enum class Side { Left, Right };
 // curvature 1/radius to the given side and constant cant.
 struct SegmentSpec {
   SegmentKind kind = SegmentKind::Tangent;
-  double length = 0.0;  // [m] arc length along the centreline, > 0
-  double radius = 0.0;  // [m] end radius (Curve: required; Transition: 0 means ends straight)
+  double length = 0.0;     // [m] arc length along the centreline, > 0
+  double radius = 0.0;     // [m] end radius (Curve: required; Transition: 0 means ends straight)
   Side side = Side::Left;  // direction of the curve (left = curvature centre on +Y side)
   double cant = 0.0;       // [m] superelevation height of the outer rail at the segment end
   double gradient = 0.0;   // [-] vertical gradient (rise/run, positive uphill) at the segment end
@@ -45,14 +45,14 @@ struct IrregularitySpec {
   IrregularitySource source = IrregularitySource::None;
   // Psd: named spectrum "ore_b176_low", "ore_b176_high", "fra_class_1" .. "fra_class_6", or "user".
   std::string spectrum;
-  PsdTable user[kChannels];   // only for spectrum == "user"; an empty table disables the channel
+  PsdTable user[kChannels];  // only for spectrum == "user"; an empty table disables the channel
   bool enabled[kChannels] = {true, true, true, true};
-  double scale = 1.0;                    // [-] amplitude factor applied to every channel
-  std::uint64_t seed = 1;                // random phases; recorded in the output
-  double wavelength_min = 3.0;           // [m] synthesis band (EN 13848 D1+D2: 3..70 m)
-  double wavelength_max = 70.0;          // [m]
-  int components = 2000;                 // number of cosines per channel
-  double step = 0.1;                     // [m] spline sampling step (paper: 0.1 m)
+  double scale = 1.0;            // [-] amplitude factor applied to every channel
+  std::uint64_t seed = 1;        // random phases; recorded in the output
+  double wavelength_min = 3.0;   // [m] synthesis band (EN 13848 D1+D2: 3..70 m)
+  double wavelength_max = 70.0;  // [m]
+  int components = 2000;         // number of cosines per channel
+  double step = 0.1;             // [m] spline sampling step (paper: 0.1 m)
   // (Added by the track module.) Draw each cosine's frequency uniformly inside its band of width
   // dOmega (true), or put it at the band centre (false: the realisation then repeats every
   // 2 pi / dOmega metres).
@@ -64,10 +64,10 @@ struct IrregularitySpec {
 
 struct TrackSpec {
   std::vector<SegmentSpec> segments;
-  double step = 0.5;           // [m] centreline spline sampling step (paper: 0.5 m)
-  double cant_base = 1.5;      // [m] lateral distance over which cant height is measured
-  double gauge = 1.435;        // [m] nominal track gauge (recorded; rail positions use Lr)
-  double rail_lr = 0.7555;     // [m] Lr, rail profile frame lateral position (paper Table 1)
+  double step = 0.5;        // [m] centreline spline sampling step (paper: 0.5 m)
+  double cant_base = 1.5;   // [m] lateral distance over which cant height is measured
+  double gauge = 1.435;     // [m] nominal track gauge (recorded; rail positions use Lr)
+  double rail_lr = 0.7555;  // [m] Lr, rail profile frame lateral position (paper Table 1)
   double rail_inclination = 1.0 / 40.0;  // [rad] beta (paper Table 1)
   IrregularitySpec irregularities;
   SourceLoc loc;

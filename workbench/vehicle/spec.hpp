@@ -16,13 +16,13 @@ enum class BodyKind { CarBody, Bogie, Wheelset, Frame };
 // A rigid body. Its coordinates (s, y, z, roll, pitch, yaw) are relative to its own body track
 // frame (paper Eq. 2-3, Fig. 2).
 struct BodySpec {
-  std::string name;           // unique, e.g. "car", "bogie1", "ws1"
+  std::string name;  // unique, e.g. "car", "bogie1", "ws1"
   BodyKind kind = BodyKind::CarBody;
-  double mass = 0.0;          // [kg]
+  double mass = 0.0;                                  // [kg]
   Eigen::Vector3d inertia = Eigen::Vector3d::Zero();  // [kg m^2] Ixx (roll), Iyy (pitch), Izz (yaw)
-  double x = 0.0;             // [m] longitudinal position of the centre of mass relative to the
-                              //     vehicle reference point, positive forward (body s = s_vehicle + x)
-  double height = 0.0;        // [m] height of the centre of mass above the top of rail plane
+  double x = 0.0;       // [m] longitudinal position of the centre of mass relative to the
+                        //     vehicle reference point, positive forward (body s = s_vehicle + x)
+  double height = 0.0;  // [m] height of the centre of mass above the top of rail plane
   SourceLoc loc;
 };
 
@@ -64,9 +64,9 @@ struct VehicleSpec {
   std::string name;
   std::vector<BodySpec> bodies;
   std::vector<ElementSpec> elements;
-  double speed = 0.0;         // [m/s] constant forward velocity V
-  double wheel_radius = 0.46; // [m] nominal rolling radius r0 (wheelsets)
-  double start = 0.0;         // [m] arc length of the vehicle reference point at t = 0
+  double speed = 0.0;          // [m/s] constant forward velocity V
+  double wheel_radius = 0.46;  // [m] nominal rolling radius r0 (wheelsets)
+  double start = 0.0;          // [m] arc length of the vehicle reference point at t = 0
   SourceLoc loc;
 };
 
