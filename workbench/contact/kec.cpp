@@ -373,6 +373,12 @@ double KecTable::f(Side side, double s_k, double* df, double* d2f) const {
   return sp.value(s_k);
 }
 
+void KecTable::makeFSpline(std::size_t k) {
+  std::vector<double> fvals(n_);
+  for (std::size_t i = 0; i < n_; ++i) fvals[i] = herm_[k][i * kKecQuantities * 2];
+  fspl_[k] = CubicSpline(SplineGrid::uniform(grid_.min, grid_.step, n_), fvals);
+}
+
 KecTable buildKec(const ContactGeometryConfig& config) {
   const auto t0 = std::chrono::steady_clock::now();
   checkConfig(config);
@@ -580,7 +586,6 @@ KecTable buildKec(const ContactGeometryConfig& config) {
     };
     static_assert(kProfileChannels + 5 == kKecQuantities, "KEC channel layout");
     tab.herm_[k].assign(ng * kKecQuantities * 2, 0.0);
-    std::vector<double> fvals(ng);
     for (std::size_t i = 0; i < ng; ++i) {
       double val[kKecQuantities], der[kKecQuantities], f2 = 0.0;
       regularised(config.kec_s.at(i), val, der, f2);
@@ -588,9 +593,8 @@ KecTable buildKec(const ContactGeometryConfig& config) {
         tab.herm_[k][(i * kKecQuantities + q) * 2] = val[q];
         tab.herm_[k][(i * kKecQuantities + q) * 2 + 1] = der[q];
       }
-      fvals[i] = val[0];
     }
-    tab.fspl_[k] = CubicSpline(SplineGrid::uniform(config.kec_s.min, config.kec_s.step, ng), fvals);
+    tab.makeFSpline(k);
     for (KecTransition& t : tr) {
       double val[kKecQuantities], der[kKecQuantities], f2;
       regularised(0.5 * (t.lo + t.hi), val, der, f2);

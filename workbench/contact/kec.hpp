@@ -115,7 +115,11 @@ class KecTable {
 
  private:
   friend KecTable buildKec(const ContactGeometryConfig& config);
+  friend class TableIo;  // binary cache files (table_io.hpp)
   static std::size_t idx(Side s) { return s == Side::Left ? 0 : 1; }
+  // fspl_[k] from the F node values in herm_[k] on grid_ (buildKec and the cache loader: the same
+  // inputs give bit-identical coefficients).
+  void makeFSpline(std::size_t k);
   GridSpec grid_;
   std::size_t n_ = 0;
   double r0_ = 0.0, lr_ = 0.0;

@@ -146,6 +146,7 @@ class LutTable {
 
  private:
   friend LutTable buildLut(const ContactGeometryConfig& config);
+  friend class TableIo;  // binary cache files (table_io.hpp)
   struct Cell {
     std::size_t i = 0, j = 0;
     double t = 0.0, u = 0.0;
