@@ -57,5 +57,11 @@ grep -q "rtol has no effect with method 'rk4'" "$TMP/study/summary.csv" && ok "s
 "$WB" study tests/scenarios/data/study_small.lua --out "$TMP/study" </dev/null >/dev/null 2>"$TMP/se2"
 grep -q "4 already done, running 4" "$TMP/se2" && ok "study resumes" || bad "study resume: $(head -2 "$TMP/se2")"
 
+# 5. Contact tables of the default profiles, and their figures.
+if "$WB" tables scenarios/tracks/manchester_r500.lua --out "$TMP/tables.h5" </dev/null >"$TMP/to" 2>&1 \
+   && grep -q "two-point contact (left wheel) at y = 6.2" "$TMP/to"; then ok "tables"; else bad "tables: $(cat "$TMP/to")"; fi
+if "$PY" plots/plot_tables.py "$TMP/tables.h5" >"$TMP/tp" 2>&1 && [ "$(grep -c '\.png$' "$TMP/tp")" -ge 5 ]; then
+  ok "tables figures"; else bad "tables figures: $(cat "$TMP/tp")"; fi
+
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
