@@ -158,11 +158,11 @@ double endTime(const Compiled& c) {
   return std::max(distance, 0.0) / v.speed;
 }
 
-// Issue 5: wheelsets guided along the track, the other bodies free; suspension outputs.
-int runGuided(const Compiled& c, const RunOptions& options, io::ResultFile& f) {
-  const auto& v = *c.vehicle;
-  vehicle::GuidedVehicleOde ode(v);
-  Eigen::VectorXd y0 = ode.staticState(0.0);
+// The request shared by vehicle runs, with the body coordinate channels (s, y, z, roll, pitch,
+// yaw per body, then optionally ax, ay, az) in /bodies/<name>/.
+SimulationRequest vehicleRequest(const Compiled& c, const RunOptions& options,
+                                 integ::OdeSystem& ode, const Eigen::VectorXd& y0,
+                                 io::ResultFile& f, bool accelerations) {
   SimulationRequest r;
   r.system = &ode;
   r.solver = c.solver;
@@ -173,16 +173,25 @@ int runGuided(const Compiled& c, const RunOptions& options, io::ResultFile& f) {
   static const char* coords[6] = {"s", "y", "z", "roll", "pitch", "yaw"};
   static const char* units[6] = {"m", "m", "m", "rad", "rad", "rad"};
   std::string names;
-  for (const auto& b : v.bodies) {
+  for (const auto& b : c.vehicle->bodies) {
     names += (names.empty() ? "" : "\n") + b.name;
     f.attr("/bodies/" + b.name, "kind", kindName(b.kind));
     for (int k = 0; k < 6; ++k)
       r.outputs.push_back({"/bodies/" + b.name + "/" + coords[k], units[k]});
-    if (c.spec.run.body_accelerations)
+    if (accelerations)
       for (const char* a : {"ax", "ay", "az"})
         r.outputs.push_back({"/bodies/" + b.name + "/" + a, "m/s^2"});
   }
   f.attr("/bodies", "names", names);
+  return r;
+}
+
+// Issue 5: wheelsets guided along the track, the other bodies free; suspension outputs.
+int runGuided(const Compiled& c, const RunOptions& options, io::ResultFile& f) {
+  const auto& v = *c.vehicle;
+  vehicle::GuidedVehicleOde ode(v);
+  SimulationRequest r =
+      vehicleRequest(c, options, ode, ode.staticState(0.0), f, c.spec.run.body_accelerations);
   for (auto id : c.output_elements) {
     std::string base = "/elements/" + v.elementName(id) + "/";
     bool bending = id.kind == vehicle::ElementKind::BendingSpring;
@@ -226,24 +235,7 @@ int runContact(const Compiled& c, const RunOptions& options, io::ResultFile& f) 
   const auto& v = *c.vehicle;
   const auto& cm = *c.contact;
   dynamics::ContactVehicleOde ode(v, cm, *c.track);
-  Eigen::VectorXd y0 = ode.initialState(0.0);
-  SimulationRequest r;
-  r.system = &ode;
-  r.solver = c.solver;
-  r.y0 = y0;
-  r.t_end = endTime(c);
-  r.output_every = c.spec.run.output_every;
-  r.progress = !options.quiet;
-  static const char* coords[6] = {"s", "y", "z", "roll", "pitch", "yaw"};
-  static const char* units[6] = {"m", "m", "m", "rad", "rad", "rad"};
-  std::string names;
-  for (const auto& b : v.bodies) {
-    names += (names.empty() ? "" : "\n") + b.name;
-    f.attr("/bodies/" + b.name, "kind", kindName(b.kind));
-    for (int k = 0; k < 6; ++k)
-      r.outputs.push_back({"/bodies/" + b.name + "/" + coords[k], units[k]});
-  }
-  f.attr("/bodies", "names", names);
+  SimulationRequest r = vehicleRequest(c, options, ode, ode.initialState(0.0), f, false);
   // Per wheel: the quantities a user expects (issue 6, item 5).
   static const std::pair<const char*, const char*> wheelQ[] = {
       {"normal_force", "N"},  {"normal_tread", "N"},    {"normal_flange", "N"},
