@@ -1,0 +1,69 @@
+// The right-hand side and the output functions must not allocate: count global operator new
+// calls (as tests/vehicle/test_alloc.cpp). The replacement pairs malloc/free on purpose.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "dyn_fixtures.hpp"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+
+namespace rbtest {
+namespace {
+
+// The wagon on the irregular track (case 3), every method, creep law and coupling, with wheelsets
+// off centre (flange contact on ws1) so that regularised bands and LUT flange forces are visited.
+TEST(Allocation, RhsAndOutputsAllocateNothing) {
+  for (const char* f :
+       {"scenarios/validation/case3_kec.lua", "scenarios/validation/case3_lut.lua"}) {
+    for (const char* creep : {"polach", "kalker", "none"}) {
+      for (const char* coupling : {"lagged", "consistent"}) {
+        const Compiled c = compileScenario(f, {std::string("contact.creep=") + creep,
+                                               std::string("contact.normal_forces=") + coupling});
+        dynamics::ContactVehicleOde ode(*c.vehicle, *c.contact, *c.track);
+        Eigen::VectorXd y = ode.initialState(0.0);
+        const auto& l = ode.layout();
+        y[l.wsPosition(0, 0)] = -7.0e-3;
+        y[l.wsPosition(1, 0)] = 0.5e-3;
+        y[l.wsPosition(2, 0)] = 3e-3;
+        y[l.wsRate(3, 0)] = 0.05;
+        Eigen::VectorXd yd(ode.size());
+        std::vector<dynamics::WheelOutput> wo(2 * static_cast<std::size_t>(l.n_ws));
+        std::vector<vehicle::Vector6d> q(c.vehicle->bodies.size());
+        double sink = 0.0;
+        const long before = g_allocations.load();
+        for (int k = 0; k < 50; ++k) {
+          const double t = 5.0 + 0.01 * k;
+          EXPECT_EQ(ode.rhs(t, y.data(), yd.data()), 0) << ode.lastError();
+          sink += yd[l.wsRate(0, 0)];
+          EXPECT_EQ(ode.wheelOutputs(t, y.data(), wo), 0);
+          EXPECT_EQ(ode.bodyCoordinates(t, y.data(), q), 0);
+          EXPECT_EQ(ode.bodyAccelerations(t, y.data(), q), 0);
+          sink += wo[0].normal + q[0][1];
+        }
+        EXPECT_EQ(g_allocations.load() - before, 0) << f << " " << creep << " " << coupling;
+        EXPECT_TRUE(std::isfinite(sink));
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rbtest

@@ -1,0 +1,288 @@
+#include "workbench/dynamics/contact_model.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "workbench/profiles/positioning.hpp"
+#include "workbench/profiles/profile_io.hpp"
+#include "workbench/profiles/rail60e1.hpp"
+#include "workbench/profiles/s1002.hpp"
+
+namespace rb::dynamics {
+
+namespace {
+
+std::string num(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+// Left profile of one kind: built-in or from a file. File problems are added to `d` at the
+// profiles{} block, followed by the reader's own file:line diagnostics.
+std::shared_ptr<const profiles::Profile> loadProfile(const std::string& source,
+                                                     profiles::ProfileKind kind, double r0,
+                                                     const SourceLoc& loc, Diagnostics& d) {
+  const bool wheel = kind == profiles::ProfileKind::Wheel;
+  const std::string builtin = wheel ? "s1002" : "60e1";
+  try {
+    if (source.empty() || source == builtin) {
+      return std::make_shared<const profiles::Profile>(
+          wheel ? profiles::s1002Wheel(r0, profiles::Side::Left)
+                : profiles::rail60E1(profiles::Side::Left));
+    }
+    profiles::ProfileReadOptions opt;
+    if (wheel) opt.r0 = r0;
+    return std::make_shared<const profiles::Profile>(
+        profiles::readProfileFile(source, kind, profiles::LengthUnit::Millimetre, opt));
+  } catch (const InputError& e) {
+    d.add(loc,
+          std::string("profiles.") + (wheel ? "wheel" : "rail") + ": cannot use '" + source + "'");
+    d.add(e);
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+HertzShapeTable::HertzShapeTable() {
+  constexpr std::size_t n = 2401;
+  const double u0 = std::log(1e-6);
+  u_min_ = u0;
+  const double h = -u0 / static_cast<double>(n - 1);
+  std::vector<std::vector<double>> ch(5, std::vector<double>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = i + 1 == n ? 0.0 : u0 + static_cast<double>(i) * h;
+    const creep::HertzShape s = creep::hertzShape(std::exp(u), 1.0);
+    ch[0][i] = s.g;
+    ch[1][i] = s.m;
+    ch[2][i] = s.n;
+    ch[3][i] = s.K;
+    ch[4][i] = s.E;
+  }
+  spline_ = CubicSplineSet(SplineGrid::uniform(u0, h, n), ch);
+}
+
+creep::HertzShape HertzShapeTable::shape(double A, double B) const {
+  const double rho = A <= B ? A / B : B / A;
+  const double u = std::log(rho);
+  if (!(u >= u_min_)) return creep::hertzShape(A, B);
+  double v[5];
+  spline_.eval(std::min(u, 0.0), v);
+  creep::HertzShape s;
+  s.g = std::min(v[0], 1.0);
+  s.m = v[1];
+  s.n = v[2];
+  s.K = v[3];
+  s.E = v[4];
+  s.rolling_major = A <= B;
+  s.iterations = 0;
+  return s;
+}
+
+std::shared_ptr<const HertzShapeTable> HertzShapeTable::shared() {
+  static const std::shared_ptr<const HertzShapeTable> table =
+      std::make_shared<const HertzShapeTable>();
+  return table;
+}
+
+const contact::TableBuildStats& ContactModel::tableStats() const {
+  static const contact::TableBuildStats kEmpty;
+  if (kec) return kec->stats();
+  if (lut) return lut->stats();
+  return kEmpty;
+}
+
+const char* ContactModel::methodName(ContactMethod m) {
+  return m == ContactMethod::Kec ? "kec" : "lut";
+}
+const char* ContactModel::creepName(CreepModel c) {
+  switch (c) {
+    case CreepModel::Polach:
+      return "polach";
+    case CreepModel::Kalker:
+      return "kalker";
+    case CreepModel::None:
+      return "none";
+  }
+  return "?";
+}
+const char* ContactModel::couplingName(NormalForceCoupling c) {
+  return c == NormalForceCoupling::Lagged ? "lagged" : "consistent";
+}
+
+std::shared_ptr<const contact::KecTable> TableCache::kec(
+    const contact::ContactGeometryConfig& config) {
+  const std::uint64_t h = contact::configHash(config);
+  auto it = kec_.find(h);
+  if (it != kec_.end()) return it->second;
+  auto t = std::make_shared<const contact::KecTable>(contact::buildKec(config));
+  ++builds_;
+  kec_.emplace(h, t);
+  return t;
+}
+
+std::shared_ptr<const contact::LutTable> TableCache::lut(
+    const contact::ContactGeometryConfig& config) {
+  const std::uint64_t h = contact::configHash(config);
+  auto it = lut_.find(h);
+  if (it != lut_.end()) return it->second;
+  auto t = std::make_shared<const contact::LutTable>(contact::buildLut(config));
+  ++builds_;
+  lut_.emplace(h, t);
+  return t;
+}
+
+contact::ContactGeometryConfig contactGeometryConfig(const ProfilesSpec& p, const ContactSpec& c) {
+  Diagnostics d;
+  if (!(p.r0 > 0.1 && p.r0 < 1.0))
+    d.add(p.loc, "profiles.r0: " + num(p.r0) + " m is not a wheel radius (0.1 .. 1 m)");
+  if (!(p.inclination >= 0.0 && p.inclination <= 0.1))
+    d.add(p.loc, "profiles.inclination: " + num(p.inclination) + " rad outside [0, 0.1]");
+  if (!(p.lw >= 0.0) || !(p.lr >= 0.0))
+    d.add(p.loc, "profiles.lw / profiles.lr must be >= 0 (0: from back_to_back / gauge)");
+  if (p.lw == 0.0 && !(p.back_to_back > 1.0 && p.back_to_back < 2.0))
+    d.add(p.loc, "profiles.back_to_back: " + num(p.back_to_back) + " m outside (1, 2) m");
+  if (p.lr == 0.0 && !(p.gauge > 0.9 && p.gauge < 2.0))
+    d.add(p.loc, "profiles.gauge: " + num(p.gauge) + " m outside (0.9, 2) m");
+  if (c.method == ContactMethod::Kec && (!(c.kec_dhat > 0.0) || !(c.kec_dbar > 0.0)))
+    d.add(c.loc, "contact.dhat / contact.dbar: the KEC transition lengths must be > 0");
+  d.throwIfAny();
+
+  auto lw = loadProfile(p.wheel, profiles::ProfileKind::Wheel, p.r0, p.loc, d);
+  auto lr = loadProfile(p.rail, profiles::ProfileKind::Rail, p.r0, p.loc, d);
+  d.throwIfAny();
+
+  contact::ContactGeometryConfig g;
+  g.left_wheel = lw;
+  g.right_wheel = std::make_shared<const profiles::Profile>(lw->mirrored());
+  g.left_rail = lr;
+  g.right_rail = std::make_shared<const profiles::Profile>(lr->mirrored());
+  g.beta = p.inclination;
+  g.r0 = p.r0;
+  // Positioning: Lw = B/2 + flange-back distance (70 mm: S1002 and every wheel drawn in the
+  // EN 13715 coordinates, origin at the tape circle), Lr = G/2 + gauge-point offset of the rail
+  // (14 mm below its highest point, computed for the rail in use).
+  double pos_lw = p.lw, pos_lr = p.lr;
+  if (pos_lw == 0.0) pos_lw = 0.5 * p.back_to_back + profiles::kS1002FlangeBackDistance;
+  if (pos_lr == 0.0) {
+    try {
+      const double off =
+          std::abs(profiles::gaugePoint(*lr, profiles::RailSide::Left, p.inclination).y);
+      pos_lr = 0.5 * p.gauge + off;
+    } catch (const std::exception& e) {
+      throw InputError(p.loc, std::string("profiles: no gauge point on the rail profile (") +
+                                  e.what() + "); give profiles.lr");
+    }
+  }
+  g.wheel_lw = pos_lw;
+  g.rail_lr = pos_lr;
+  g.kec_dhat = c.kec_dhat;
+  g.kec_dbar = c.kec_dbar;
+  if (p.refined_tables) g.useRefinedGrids();
+  try {
+    contact::checkConfig(g);
+  } catch (const InputError& e) {
+    Diagnostics dd;
+    dd.add(c.loc, "contact: invalid contact geometry configuration");
+    dd.add(e);
+    dd.throwIfAny();
+  }
+  return g;
+}
+
+ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
+                            const vehicle::VehicleModel& v, const track::TrackModel& track,
+                            TableCache* cache) {
+  Diagnostics d;
+  ContactModel m;
+  m.method = c.method;
+  m.creep = c.creep;
+  m.coupling = c.normal_forces;
+  m.loc = c.loc;
+  for (std::size_t b = 0; b < v.bodies.size(); ++b)
+    if (v.bodies[b].kind == vehicle::BodyKind::Wheelset) m.wheelsets.push_back(static_cast<int>(b));
+  if (m.wheelsets.empty())
+    d.add(c.loc, "contact: vehicle '" + v.name +
+                     "' has no wheelset (a body with kind = \"wheelset\"): nothing to put on the "
+                     "rails");
+  if (!(c.youngs_modulus > 0.0))
+    d.add(c.loc, "contact.youngs_modulus must be > 0 (got " + num(c.youngs_modulus) + ")");
+  if (!(c.poisson >= 0.0 && c.poisson < 0.5))
+    d.add(c.loc, "contact.poisson must be in [0, 0.5) (got " + num(c.poisson) + ")");
+  if (!(c.mu >= 0.0 && c.mu <= 2.0))
+    d.add(c.loc, "contact.mu must be in [0, 2] (got " + num(c.mu) + ")");
+  if (c.method == ContactMethod::Lut) {
+    if (!(c.flange_stiffness > 0.0) || !std::isfinite(c.flange_stiffness))
+      d.add(c.loc, "contact.flange_stiffness must be > 0 (got " + num(c.flange_stiffness) + ")");
+    if (!std::isfinite(c.flange_damping))
+      d.add(c.loc, "contact.flange_damping must be finite (< 0: K/100)");
+  }
+  for (const vehicle::Body& b : v.bodies) {
+    if (b.kind == vehicle::BodyKind::Wheelset && std::abs(b.height - p.r0) > 0.05)
+      d.add(b.loc, "wheelset '" + b.name + "': centre height " + num(b.height) +
+                       " m is far from the wheel radius profiles.r0 = " + num(p.r0) +
+                       " m (the wheelset centre is the axle)");
+  }
+  d.throwIfAny();
+
+  m.geometry = contactGeometryConfig(p, c);
+  m.config_hash = contact::configHash(m.geometry);
+
+  m.material.E = c.youngs_modulus;
+  m.material.nu = c.poisson;
+  m.creep_params.mu = c.mu;
+  m.creep_params.G = creep::shearModulus(m.material);
+  if (const std::string problem = creep::creepParamsProblem(m.creep_params); !problem.empty())
+    throw InputError(c.loc, "contact: creep parameters: " + problem);
+  m.flange_stiffness = c.flange_stiffness;
+  m.flange_damping = c.flange_damping < 0.0 ? c.flange_stiffness / 100.0 : c.flange_damping;
+
+  try {
+    m.solver = std::make_shared<const contact::ContactSolver>(m.geometry);
+    if (m.method == ContactMethod::Kec) {
+      m.kec = cache ? cache->kec(m.geometry)
+                    : std::make_shared<const contact::KecTable>(contact::buildKec(m.geometry));
+    } else {
+      m.lut = cache ? cache->lut(m.geometry)
+                    : std::make_shared<const contact::LutTable>(contact::buildLut(m.geometry));
+    }
+  } catch (const InputError& e) {
+    Diagnostics dd;
+    dd.add(c.loc, std::string("contact: the ") + (m.method == ContactMethod::Kec ? "KEC" : "LUT") +
+                      " table could not be built for these profiles and positions (Lw = " +
+                      num(m.geometry.wheel_lw) + " m, Lr = " + num(m.geometry.rail_lr) + " m)");
+    dd.add(e);
+    dd.throwIfAny();
+  }
+  for (const std::string& w : m.tableStats().warnings)
+    m.warnings.push_back(c.loc.str() + ": warning: " + w);
+  m.flange_boundary[0] = m.solver->flangeBoundary(contact::Side::Left);
+  m.flange_boundary[1] = m.solver->flangeBoundary(contact::Side::Right);
+
+  // Centred wheelset: Eq. (12) at y = 0.
+  const contact::TreadContact c0 = m.solver->solveTread(0.0, 0.0);
+  if (!c0.converged)
+    throw InputError(c.loc, "contact: no contact solution for the centred wheelset");
+  m.centred_z = c0.z;
+  m.centred_phi = c0.phi;
+  m.centred_radius[0] = c0.left.radius;
+  m.centred_radius[1] = c0.right.radius;
+
+  // Gauge variation beyond the LUT's xi_g range is extrapolated (and reported by the rhs as a
+  // recoverable failure); say so before the run.
+  if (m.lut && track.irregularities()) {
+    const auto& tab = track.irregularities()->samples();
+    double gmax = 0.0;
+    for (double g : tab.channel[static_cast<std::size_t>(track::Channel::Gauge)])
+      gmax = std::max(gmax, std::abs(g));
+    const contact::GridSpec& gg = m.lut->gaugeGrid();
+    if (gmax > std::min(-gg.min, gg.max))
+      m.warnings.push_back(c.loc.str() + ": warning: the gauge irregularity reaches " +
+                           num(gmax * 1e3) + " mm, beyond the LUT gauge range [" +
+                           num(gg.min * 1e3) + ", " + num(gg.max * 1e3) + "] mm");
+  }
+  return m;
+}
+
+}  // namespace rb::dynamics

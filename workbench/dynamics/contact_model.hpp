@@ -1,0 +1,130 @@
+#pragma once
+// The compiled wheel/rail contact model (issue 6, docs/contact_dynamics.md): ProfilesSpec +
+// ContactSpec + the vehicle and track -> ContactModel (immutable, validated). It holds the four
+// profiles and their positioning (paper Table 1, Eq. 5, 10), the contact geometry configuration
+// and ONLY the table the chosen method needs (KEC table for "kec", LUT for "lut"), shared through
+// std::shared_ptr<const ...> so an application can cache tables by contact::configHash
+// (TableCache below), plus the creep law parameters (paper section 2.5) and the LUT flange Hertz
+// parameters (Eq. 20, Table 3).
+//
+// Validation (compileContact): every problem is reported as one rb::InputError at the location of
+// the block it belongs to (contact{} or profiles{}): a vehicle without wheelsets, profile files
+// that cannot be read, non-physical parameters, a table build that fails (for instance profiles
+// that do not touch when centred). Table build problems that do not stop the build (short KEC
+// transitions, unresolved jumps) are kept as warnings in ContactModel::warnings, with the table
+// statistics (build time, bytes) in tableStats().
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "workbench/contact/config.hpp"
+#include "workbench/contact/geometry.hpp"
+#include "workbench/contact/kec.hpp"
+#include "workbench/contact/lut.hpp"
+#include "workbench/core/spline.hpp"
+#include "workbench/creep/hertz.hpp"
+#include "workbench/creep/polach.hpp"
+#include "workbench/dynamics/spec.hpp"
+#include "workbench/track/track.hpp"
+#include "workbench/vehicle/model.hpp"
+
+namespace rb::dynamics {
+
+// The load-independent Hertz ellipse shape (creep::hertzShape: a secant iteration, ~0.7 us) as a
+// function of the curvature ratio rho = min(A, B) / max(A, B), tabulated once: not-a-knot cubic
+// splines of g, m, n, K(e), E(e) over ln(rho) on [ln 1e-6, 0] (2400 intervals); below 1e-6 the
+// exact solver is called. Relative error < 1e-8 (tests/dynamics), ~30 ns. Immutable, shared.
+class HertzShapeTable {
+ public:
+  HertzShapeTable();
+  creep::HertzShape shape(double A, double B) const;       // A, B > 0; allocation-free
+  static std::shared_ptr<const HertzShapeTable> shared();  // one instance per process
+
+ private:
+  CubicSplineSet spline_;
+  double u_min_ = 0.0;
+};
+
+struct ContactModel {
+  ContactMethod method = ContactMethod::Kec;
+  CreepModel creep = CreepModel::Polach;
+  NormalForceCoupling coupling = NormalForceCoupling::Lagged;
+
+  // Profiles, positioning (Lw, Lr, beta, r0), grids and KEC transition lengths.
+  contact::ContactGeometryConfig geometry;
+  std::uint64_t config_hash = 0;  // contact::configHash(geometry)
+  // Exactly one of these is set, for the chosen method.
+  std::shared_ptr<const contact::KecTable> kec;
+  std::shared_ptr<const contact::LutTable> lut;
+  // Contact point geometry at given surface parameters (KEC branch points A and B of Eq. 26).
+  std::shared_ptr<const contact::ContactSolver> solver;
+  double flange_boundary[2] = {0.0, 0.0};  // s_w of the tread/flange split, left and right wheel
+
+  // Centred wheelset (y = 0, no irregularity): axle height, roll, rolling radii.
+  double centred_z = 0.0;
+  double centred_phi = 0.0;
+  double centred_radius[2] = {0.0, 0.0};
+  double centredRadius() const { return 0.5 * (centred_radius[0] + centred_radius[1]); }
+
+  // Tangential forces (section 2.5).
+  creep::Material material;
+  creep::CreepParams creep_params;
+  // Hertz needs positive relative curvatures; conformal zones (concave wheel root on the rail
+  // gauge corner) are clamped to this floor [1/m] (an equivalent radius of 10 m).
+  double min_relative_curvature = 0.05;
+  std::shared_ptr<const HertzShapeTable> hertz_shapes = HertzShapeTable::shared();
+
+  // LUT flange (Eq. 20): f = K delta^1.5 + D delta_dot delta for delta > 0, f >= 0.
+  double flange_stiffness = 1e10;  // [N/m^1.5]
+  double flange_damping = 1e8;     // [N s/m^2] (K/100 unless given)
+
+  // NormalForceCoupling::Consistent: iteration on the two normal-force multipliers of a wheelset
+  // (fixed point, Newton with a finite-difference 2x2 Jacobian when it contracts slowly) until
+  // |Phi(lambda) - lambda| <= consistent_tol * (|lambda| + 1), at most consistent_max_iter
+  // evaluations of Phi (creep forces + back substitution) per wheelset.
+  double consistent_tol = 1e-10;
+  int consistent_max_iter = 50;
+
+  std::vector<int> wheelsets;         // body indices of the vehicle's wheelsets, in body order
+  std::vector<std::string> warnings;  // table warnings and other notes for the user
+  SourceLoc loc;                      // the contact{} block
+
+  // Build statistics of the table in use (time, bytes, warnings, notes).
+  const contact::TableBuildStats& tableStats() const;
+  // "kec" or "lut", "polach" / "kalker" / "none", "lagged" / "consistent".
+  static const char* methodName(ContactMethod m);
+  static const char* creepName(CreepModel c);
+  static const char* couplingName(NormalForceCoupling c);
+};
+
+// Tables by content (contact::configHash): compileContact builds a table only when the cache does
+// not hold one for the same configuration. Not thread-safe; the tables themselves are immutable
+// and may be shared by any number of models and threads.
+class TableCache {
+ public:
+  std::shared_ptr<const contact::KecTable> kec(const contact::ContactGeometryConfig& config);
+  std::shared_ptr<const contact::LutTable> lut(const contact::ContactGeometryConfig& config);
+  std::size_t size() const { return kec_.size() + lut_.size(); }
+  int builds() const { return builds_; }  // tables built (cache misses)
+
+ private:
+  std::map<std::uint64_t, std::shared_ptr<const contact::KecTable>> kec_;
+  std::map<std::uint64_t, std::shared_ptr<const contact::LutTable>> lut_;
+  int builds_ = 0;
+};
+
+// The four profiles and their positioning, grids and KEC transition lengths of a scenario:
+// built-in "s1002" / "60e1" (right profiles mirrored) or files (profiles::readProfileFile; text
+// files in millimetres, wheels with h = r0 + z); Lw, Lr from back_to_back and gauge by
+// profiles::positionS1002On60E1 unless lw / lr are given (> 0). Throws rb::InputError.
+contact::ContactGeometryConfig contactGeometryConfig(const ProfilesSpec& profiles,
+                                                     const ContactSpec& contact);
+
+// Validates and compiles (see the header comment). `cache` may be null.
+ContactModel compileContact(const ProfilesSpec& profiles, const ContactSpec& contact,
+                            const vehicle::VehicleModel& vehicle, const track::TrackModel& track,
+                            TableCache* cache = nullptr);
+
+}  // namespace rb::dynamics
