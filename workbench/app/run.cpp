@@ -1,5 +1,7 @@
 #include "workbench/app/run.hpp"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <ctime>
 #include <filesystem>
@@ -169,7 +171,11 @@ SimulationRequest vehicleRequest(const Compiled& c, const RunOptions& options,
   r.y0 = y0;
   r.t_end = endTime(c);
   r.output_every = c.spec.run.output_every;
-  r.progress = !options.quiet;
+  // Progress line only for a person watching a terminal (issue 3).
+  r.progress = !options.quiet && isatty(STDERR_FILENO);
+  const double lead = c.vehicle->start + c.vehicle->bodies.front().x;
+  const double speed = c.vehicle->speed;
+  r.distance = [lead, speed](double t, const Eigen::VectorXd&) { return lead + speed * t; };
   static const char* coords[6] = {"s", "y", "z", "roll", "pitch", "yaw"};
   static const char* units[6] = {"m", "m", "m", "rad", "rad", "rad"};
   std::string names;
