@@ -25,6 +25,22 @@ done
 n=$(ls "$TMP"/manchester_r500_irregular_*.png 2>/dev/null | wc -l)
 [ "$n" -ge 4 ] && ok "irregular track gives >= 4 figures ($n)" || bad "irregular track gave $n figures"
 
+# 1b. Vehicle runs: guided wagon, single wheelset with KEC and LUT contact (shortened), plotted.
+for sc in scenarios/vehicle/manchester_guided_r500.lua scenarios/validation/case1_R500_kec.lua \
+          scenarios/validation/case1_R500_lut.lua; do
+  out="$TMP/$(basename "$sc" .lua).h5"
+  if "$WB" run "$sc" --out "$out" --quiet --set run.duration=2 </dev/null >"$TMP/log" 2>&1 \
+     && "$PY" plots/plot_run.py "$out" >"$TMP/plog" 2>&1; then ok "run+plot $sc"; else bad "run $sc: $(cat "$TMP/log" "$TMP/plog")"; fi
+done
+"$PY" - "$TMP/case1_R500_kec.h5" <<'PYEOF' && ok "contact outputs: loads balance the weight" || bad "contact outputs"
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1])
+n = f["contact/ws/left/normal_force"][0] + f["contact/ws/right/normal_force"][0]
+assert f["/contact"].attrs["method"] in (b"kec", "kec"), f["/contact"].attrs["method"]
+assert 1.0e5 < n < 1.2e5, n   # quarter wagon on one wheelset: ~109 kN with the wheelset weight
+assert np.all(np.isfinite(f["bodies/ws/y"][:]))
+PYEOF
+
 # 2. Bad input: exit code 1, the file:line message on stderr, no result file.
 out="$TMP/bad.h5"
 "$WB" run tests/scenario/bad/many.lua --out "$out" </dev/null >"$TMP/o" 2>"$TMP/e"; rc=$?
