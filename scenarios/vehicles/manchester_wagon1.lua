@@ -91,11 +91,10 @@ return function(opts)
                            at_from = pc, at_to = pb, direction = "z", stiffness = 10.5e3 })
       -- Secondary lateral: Dsy 32 kN s/m with Ksy 6000 kN/m [T4], 2/bogie, placed at the secondary
       -- springs (ASSUMPTION). ASSUMPTION: Ksy is the SERIES stiffness of the lateral damper (like
-      -- Kseries of the vertical dampers), not a spring in parallel. Evidence from the paper
-      -- itself: its Table 6 car body offset in the R = 500 m curve at 20 m/s (41.8 mm KEC, 41.4 mm
-      -- UM) equals the chord offset of the bogie centres (19^2/(8*500) = 90 mm) minus the bogies'
-      -- -6.3 mm minus the centrifugal deflection m_car V^2/R / (4 x 160 kN/m shear) = 40 mm; with
-      -- 4 x 6000 kN/m in parallel that deflection would be 1 mm. See docs/vehicle.md.
+      -- Kseries of the vertical dampers), not a spring in parallel: read in parallel, the car sits
+      -- 66 mm inside its track frame in the paper's R = 500 m curve at 20 m/s; as a series
+      -- stiffness 28-31 mm; the paper's Table 6 has 41.8 mm (KEC) / 41.4 mm (UM). See
+      -- docs/vehicle.md, section 4.
       add(series_damper { name = "sec_y_" .. bogie .. "_" .. tag, from = "car", to = bogie,
                           at_from = pc, at_to = pb, direction = "y",
                           damping = 32e3, series_stiffness = 6000e3 })
