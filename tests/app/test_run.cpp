@@ -48,6 +48,10 @@ TEST(Run, IrregularManchesterTrackWritesTrackAndProvenance) {
   EXPECT_EQ(h5test::numAttr<std::int64_t>(f, "/track/irregularities", "seed"), 42);
   EXPECT_NE(h5test::stringAttr(f, "/", "scenario_text").find("ore_b176_low"), std::string::npos);
   EXPECT_EQ(h5test::stringAttr(f, "/", "seeds"), "track.irregularities.seed=42");
+  // Required files are recorded with their text (provenance).
+  EXPECT_NE(
+      h5test::stringAttr(f, "/", "scenario_modules").find("-- file: scenarios/tracks/lib.lua\n"),
+      std::string::npos);
   EXPECT_EQ(h5test::stringAttr(f, "/", "effects"), "track_geometry\nirregularities");
   EXPECT_EQ(h5test::stringAttr(f, "/stats", "status"), "ok");
   EXPECT_EQ(h5test::stringAttr(f, "/track/centreline/curvature", "units"), "1/m");

@@ -328,6 +328,12 @@ int runScenario(const RunOptions& options) {
   f.attr("/", "created", isoNow());
   f.attr("/", "scenario_file", c.spec.file);
   f.attr("/", "scenario_text", c.spec.text);
+  // The files the scenario required (tracks, vehicles, shared set-ups), so the result alone
+  // says exactly what was run.
+  std::string modules;
+  for (const auto& [name, text] : c.spec.modules)
+    modules += "-- file: " + name + "\n" + text + "\n";
+  f.attr("/", "scenario_modules", modules);
   f.attr("/", "overrides", join(c.spec.overrides, "\n"));
   std::vector<std::string> effects = {"track_geometry"};
   std::string seeds;

@@ -84,7 +84,8 @@ struct LuaHost::Impl {
   std::size_t memoryLimit = 0;
   long long instructions = 0;
   long long instructionLimit = 0;
-  std::vector<std::string> moduleRoots;  // scenario dir, <root>/scenarios
+  std::vector<std::string> moduleRoots;                      // scenario dir, <root>/scenarios
+  std::vector<std::pair<std::string, std::string>> modules;  // required files: path, text
 
   static Impl* from(lua_State* L) { return *static_cast<Impl**>(lua_getextraspace(L)); }
 
@@ -224,6 +225,7 @@ struct LuaHost::Impl {
       return false;
     }
     std::string chunk = "@" + displayPath(found);
+    self->modules.push_back({displayPath(found), text});  // provenance: every file the run read
     if (luaL_loadbufferx(L, text.data(), text.size(), chunk.c_str(), "t") != LUA_OK) return false;
     lua_pushstring(L, name.c_str());
     if (lua_pcall(L, 1, 1, 0) != LUA_OK) return false;
@@ -318,6 +320,10 @@ LuaHost::LuaHost(HostOptions options) : impl_(new Impl), options_(std::move(opti
   lua_setmetatable(L, -2);
   lua_pop(L, 1);
   lua_sethook(L, &Impl::countHook, LUA_MASKCOUNT, Impl::kHookEvery);
+}
+
+const std::vector<std::pair<std::string, std::string>>& LuaHost::modules() const {
+  return impl_->modules;
 }
 
 LuaHost::~LuaHost() {

@@ -8,6 +8,7 @@
 // into errors instead of hangs.
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "workbench/scenario/node.hpp"
@@ -37,6 +38,9 @@ class LuaHost {
   // are the top-level blocks by name. Throws InputError with file:line on any problem. Lua
   // function values in the tree stay callable while this host lives.
   Node runFile(const std::string& path);
+
+  // Every file loaded by require while running, in load order: (path as shown, full text).
+  const std::vector<std::pair<std::string, std::string>>& modules() const;
 
   // Folders below which the scenario may read files (its own folder, scenarios/, profiles/).
   const std::vector<std::string>& readRoots() const { return roots_; }

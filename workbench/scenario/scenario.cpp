@@ -708,6 +708,7 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   ho.instruction_limit = options.instruction_limit;
   LuaHost host(ho);
   Node root = host.runFile(path);
+  spec.modules = host.modules();
   Diagnostics d;
   for (const auto& o : options.overrides) applyOverride(root, o, d);
 

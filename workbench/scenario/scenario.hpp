@@ -21,9 +21,10 @@ struct RunSpec {
 };
 
 struct ScenarioSpec {
-  std::string file;                    // as given by the user
-  std::string text;                    // full text of the scenario file (provenance)
-  std::vector<std::string> overrides;  // --set key=value, in order
+  std::string file;  // as given by the user
+  std::string text;  // full text of the scenario file (provenance)
+  std::vector<std::pair<std::string, std::string>> modules;  // required files: path, full text
+  std::vector<std::string> overrides;                        // --set key=value, in order
   track::TrackSpec track;
   bool track_rails_given = false;  // track.rail_lr or track.rail_inclination set explicitly
   bool has_profiles = false;
