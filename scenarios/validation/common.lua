@@ -21,7 +21,11 @@ function M.profiles()
 end
 
 function M.contact(method)
-  if method == "kec" then
+  if method == "study" then
+    -- For studies that switch contact.method by --set: only keys both methods accept; the
+    -- defaults are the paper's values (dhat 0.5 mm, dbar 1 mm, LUT K = 1e10 N/m^1.5, D = K/100).
+    contact { method = "kec", creep = "polach", mu = 0.2364 }
+  elseif method == "kec" then
     -- KEC (paper section 2.4): tread-flange transition lengths 0.5 mm / 1 mm.
     contact { method = "kec", dhat = 0.5e-3, dbar = 1e-3, creep = "polach", mu = 0.2364 }
   else
