@@ -1,30 +1,12 @@
 // Evaluation in the right-hand side must not allocate: count global operator new calls.
-// The replacement pairs malloc/free on purpose.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
+#include "tests/common/allocation_counter.hpp"
 
 #include "track_test_util.hpp"
 #include "workbench/track/track.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t n) {
-  ++g_allocations;
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
+using rbtest::g_allocations;
 
 namespace {
 
