@@ -130,7 +130,9 @@ TEST(Deformation, RelativeRotationRateMatchesFiniteDifference) {
   // R(t) = Bj(t) Bi(t)^T with Bdot = skew(omega) B: theta_dot = T1 a - T2 b.
   const Eigen::Vector3d a(0.3, -0.2, 0.5), b(-0.1, 0.4, 0.2);
   const Eigen::Matrix3d Bj0 = expSkew({0.2, 0.1, -0.3}), Bi0 = expSkew({-0.1, 0.25, 0.15});
-  const auto R = [&](double t) {
+  // Explicit return type: a deduced Eigen product expression would refer to temporaries that are
+  // gone when it is evaluated (found by AddressSanitizer).
+  const auto R = [&](double t) -> Eigen::Matrix3d {
     return (expSkew(a * t) * Bj0) * (expSkew(b * t) * Bi0).transpose();
   };
   const double h = 1e-6;
