@@ -9,15 +9,15 @@ namespace rb::dynamics {
 
 // Wheel and rail profiles and their positioning (paper Table 1, ../docs/profiles.md).
 struct ProfilesSpec {
-  std::string wheel = "s1002";  // built-in "s1002", or a resolved path to a .prw / text file
-  std::string rail = "60e1";    // built-in "60e1", or a resolved path to a .prr / text file
-  double back_to_back = 1.360;  // [m] B; Lw = B/2 + flange-back distance (70 mm for S1002)
-  double gauge = 1.435;         // [m] G measured 14 mm below the rail top; Lr = G/2 + offset
-  double r0 = 0.46;             // [m] nominal rolling radius (Manchester vehicle 1)
+  std::string wheel = "s1002";      // built-in "s1002", or a resolved path to a .prw / text file
+  std::string rail = "60e1";        // built-in "60e1", or a resolved path to a .prr / text file
+  double back_to_back = 1.360;      // [m] B; Lw = B/2 + flange-back distance (70 mm for S1002)
+  double gauge = 1.435;             // [m] G measured 14 mm below the rail top; Lr = G/2 + offset
+  double r0 = 0.46;                 // [m] nominal rolling radius (Manchester vehicle 1)
   double inclination = 1.0 / 40.0;  // [rad] rail inclination beta
-  double lw = 0.0;              // [m] explicit Lw (0: from back_to_back)
-  double lr = 0.0;              // [m] explicit Lr (0: from gauge)
-  bool refined_tables = false;  // paper Tables 9-10 refined grids
+  double lw = 0.0;                  // [m] explicit Lw (0: from back_to_back)
+  double lr = 0.0;                  // [m] explicit Lr (0: from gauge)
+  bool refined_tables = false;      // paper Tables 9-10 refined grids
   SourceLoc loc;
 };
 
@@ -27,8 +27,8 @@ enum class NormalForceCoupling { Lagged, Consistent };
 
 struct ContactSpec {
   ContactMethod method = ContactMethod::Kec;
-  double kec_dhat = 0.5e-3;  // [m] KEC tread-flange transition lengths (paper section 2.4)
-  double kec_dbar = 1.0e-3;  // [m]
+  double kec_dhat = 0.5e-3;        // [m] KEC tread-flange transition lengths (paper section 2.4)
+  double kec_dbar = 1.0e-3;        // [m]
   double flange_stiffness = 1e10;  // [N/m^1.5] LUT Hertz flange K (paper Table 3; validation 1e10)
   double flange_damping = -1.0;    // [N s/m^2] LUT flange D; < 0: K / 100 as in paper Table 3
   CreepModel creep = CreepModel::Polach;
