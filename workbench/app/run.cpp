@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <iostream>
@@ -87,7 +88,13 @@ Compiled compile(const RunOptions& o) {
   }
   if (c.vehicle && spec.has_contact) {
     try {
-      c.contact = dynamics::compileContact(spec.profiles, spec.contact, *c.vehicle, *c.track);
+      // Tables are cached on disk by the hash of their inputs (issue 4), beside the results:
+      // a study's cases share them. RAILBENCH_TABLE_CACHE overrides the folder.
+      const char* env = std::getenv("RAILBENCH_TABLE_CACHE");
+      fs::path out = o.out.empty() ? fs::path("out") : fs::path(o.out).parent_path();
+      dynamics::TableCache cache(env ? std::string(env) : (out / ".table-cache").string());
+      c.contact =
+          dynamics::compileContact(spec.profiles, spec.contact, *c.vehicle, *c.track, &cache);
     } catch (const InputError& e) {
       d.add(e);
     }

@@ -1,5 +1,7 @@
 #include "workbench/dynamics/contact_model.hpp"
 
+#include "workbench/contact/table_io.hpp"
+
 #include <cmath>
 #include <sstream>
 
@@ -116,8 +118,10 @@ std::shared_ptr<const contact::KecTable> TableCache::kec(
   const std::uint64_t h = contact::configHash(config);
   auto it = kec_.find(h);
   if (it != kec_.end()) return it->second;
-  auto t = std::make_shared<const contact::KecTable>(contact::buildKec(config));
-  ++builds_;
+  bool built = true;
+  auto t = disk_dir_.empty() ? std::make_shared<const contact::KecTable>(contact::buildKec(config))
+                             : contact::DiskTableCache(disk_dir_).kec(config, &built);
+  builds_ += built ? 1 : 0;
   kec_.emplace(h, t);
   return t;
 }
@@ -127,8 +131,10 @@ std::shared_ptr<const contact::LutTable> TableCache::lut(
   const std::uint64_t h = contact::configHash(config);
   auto it = lut_.find(h);
   if (it != lut_.end()) return it->second;
-  auto t = std::make_shared<const contact::LutTable>(contact::buildLut(config));
-  ++builds_;
+  bool built = true;
+  auto t = disk_dir_.empty() ? std::make_shared<const contact::LutTable>(contact::buildLut(config))
+                             : contact::DiskTableCache(disk_dir_).lut(config, &built);
+  builds_ += built ? 1 : 0;
   lut_.emplace(h, t);
   return t;
 }

@@ -104,6 +104,10 @@ struct ContactModel {
 // and may be shared by any number of models and threads.
 class TableCache {
  public:
+  TableCache() = default;
+  // With a folder, tables missing from memory are loaded from (or built and saved to) it through
+  // contact::DiskTableCache, so separate runs of a study share them.
+  explicit TableCache(std::string disk_dir) : disk_dir_(std::move(disk_dir)) {}
   std::shared_ptr<const contact::KecTable> kec(const contact::ContactGeometryConfig& config);
   std::shared_ptr<const contact::LutTable> lut(const contact::ContactGeometryConfig& config);
   std::size_t size() const { return kec_.size() + lut_.size(); }
@@ -113,6 +117,7 @@ class TableCache {
   std::map<std::uint64_t, std::shared_ptr<const contact::KecTable>> kec_;
   std::map<std::uint64_t, std::shared_ptr<const contact::LutTable>> lut_;
   int builds_ = 0;
+  std::string disk_dir_;
 };
 
 // The four profiles and their positioning, grids and KEC transition lengths of a scenario:
