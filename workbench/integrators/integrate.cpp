@@ -64,6 +64,30 @@ bool nonFiniteStart(const Sys& sys, const Integrator& integ, double t0, const Ei
   return true;
 }
 
+// Runs `run(observer, progress)` with the callbacks wrapped so that their time is measured and
+// the statistics carry the solver's own time (shared by the ODE and DAE entry points).
+template <class Run>
+RunResult timedRun(const Observer& observer, const Progress& progress, Run run) {
+  Timer timer;
+  const Observer obs = [&](double t, const Eigen::VectorXd& y) {
+    return observer ? timer.timed([&] { return observer(t, y); }) : true;
+  };
+  Progress prog;
+  if (progress) {
+    prog = [&](double t, const Stats& s) {
+      Stats copy = s;
+      timer.fill(copy, false);
+      timer.timed([&] {
+        progress(t, copy);
+        return 0;
+      });
+    };
+  }
+  RunResult res = run(obs, prog);
+  timer.fill(res.stats, true);
+  return res;
+}
+
 }  // namespace
 
 RunResult Integrator::runDae(DaeSystem&, double, const Eigen::VectorXd&, const Eigen::VectorXd&,
@@ -78,24 +102,9 @@ RunResult integrate(OdeSystem& sys, Integrator& integrator, double t0, const Eig
   checkArgs(sys.size(), t0, y0, output_times);
   RunResult res;
   if (nonFiniteStart(sys, integrator, t0, y0, "the initial state", res)) return res;
-  Timer timer;
-  const Observer obs = [&](double t, const Eigen::VectorXd& y) {
-    return observer ? timer.timed([&] { return observer(t, y); }) : true;
-  };
-  Progress prog;
-  if (progress) {
-    prog = [&](double t, const Stats& s) {
-      Stats copy = s;
-      timer.fill(copy, false);
-      timer.timed([&] {
-        progress(t, copy);
-        return 0;
-      });
-    };
-  }
-  res = integrator.runOde(sys, t0, y0, output_times, obs, prog);
-  timer.fill(res.stats, true);
-  return res;
+  return timedRun(observer, progress, [&](const Observer& obs, const Progress& prog) {
+    return integrator.runOde(sys, t0, y0, output_times, obs, prog);
+  });
 }
 
 RunResult integrate(DaeSystem& sys, Integrator& integrator, double t0, const Eigen::VectorXd& y0,
@@ -110,24 +119,9 @@ RunResult integrate(DaeSystem& sys, Integrator& integrator, double t0, const Eig
   RunResult res;
   if (nonFiniteStart(sys, integrator, t0, y0, "the initial state", res)) return res;
   if (nonFiniteStart(sys, integrator, t0, yp0, "the initial derivative", res)) return res;
-  Timer timer;
-  const Observer obs = [&](double t, const Eigen::VectorXd& y) {
-    return observer ? timer.timed([&] { return observer(t, y); }) : true;
-  };
-  Progress prog;
-  if (progress) {
-    prog = [&](double t, const Stats& s) {
-      Stats copy = s;
-      timer.fill(copy, false);
-      timer.timed([&] {
-        progress(t, copy);
-        return 0;
-      });
-    };
-  }
-  res = integrator.runDae(sys, t0, y0, yp0, output_times, obs, prog);
-  timer.fill(res.stats, true);
-  return res;
+  return timedRun(observer, progress, [&](const Observer& obs, const Progress& prog) {
+    return integrator.runDae(sys, t0, y0, yp0, output_times, obs, prog);
+  });
 }
 
 }  // namespace rb::integ
