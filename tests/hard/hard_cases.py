@@ -1,0 +1,547 @@
+#!/usr/bin/python3
+"""Hard-case stability suite (issue 7 item 4; docs/hard_cases.md).
+
+Runs one hard case (scenarios/hard/*.lua) with each of its integrator/tolerance combinations
+through the real command line and checks every result:
+
+* exit code 0 (ok) or 2 (the documented clean failure, docs/integrators.md); 1 (bad input),
+  3 (internal error), a signal (crash) or a timeout (hang) fail the test;
+* the result file exists (renamed from .tmp), /stats/status agrees with the exit code; on
+  failure the message names the failure time and distance, t_reached < t_end and the partial
+  time history ends at or before t_reached;
+* no NaN/Inf in any dataset or numeric attribute;
+* plausibility: wheelset |y|, wheel normal forces, flange forces and indentation, |Y/Q| within
+  the case's bounds;
+* combinations marked expect="ok" must finish (the reference of each case: the test can fail).
+
+Per combination it records ok/failed, the failure reason, CPU time, evaluations and steps in
+<out-dir>/<case>.csv and prints a table. `--summary` merges all CSVs into hard_cases.csv.
+
+usage: hard_cases.py --workbench BIN --case NAME --out-dir DIR
+       hard_cases.py --summary --out-dir DIR
+"""
+import argparse
+import csv
+import glob
+import math
+import os
+import re
+import subprocess
+import sys
+import time
+
+import h5py
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SKIP = 77  # ctest SKIP_RETURN_CODE
+
+# Fixed-step and adaptive settings used by the cases. Adaptive methods run with rtol = atol
+# (as the paper) and the paper's 1 ms maximum step (section 5.4). bdf uses consistent normal
+# forces: with the paper's lagged ones CVODE's Newton iteration breaks (docs/contact_dynamics.md
+# section 4) -- one lagged bdf run per case documents that.
+def fixed(method, step):
+    return ("%s %g ms" % (method, step * 1e3), ["solver.method=" + method, "solver.step=%g" % step])
+
+
+def adaptive(method, tol, consistent=None, max_step=1e-3):
+    sets = ["solver.method=" + method, "solver.rtol=%g" % tol, "solver.atol=%g" % tol]
+    if max_step:
+        sets.append("solver.max_step=%g" % max_step)
+    label = "%s %g" % (method, tol)
+    if consistent is None:
+        consistent = method in ("bdf", "ida")
+    if consistent:
+        sets.append("contact.normal_forces=consistent")
+        if method == "dopri5":
+            label += " cons"
+    elif method in ("bdf", "ida"):
+        label += " lagged"
+    return (label, sets)
+
+
+def combo(c, expect="any", extra=(), needs=None, suffix="", pp=None, onset=None):
+    """pp: (min, max) of ws1's peak-to-peak lateral motion in the last simulated second [mm]
+    (hunting: below / above the critical speed)."""
+    label, sets = c
+    return {"label": label + suffix, "sets": sets + list(extra), "expect": expect, "needs": needs,
+            "pp": pp, "onset": onset}
+
+
+PRESCRIBED = ["contact.wheelset_spin=prescribed"]
+
+# Plausibility bounds. |y| of a wheelset: flange clearance of S1002/60E1 (~ 7-10 mm, the LUT
+# flange is reached at y ~ -10 mm) plus a few mm; the LUT table ends at 18 mm. Wheel loads: static
+# ~ 54 kN (wagon), 45 kN (single wheelset); 10x static is not plausible. Y/Q: the Nadal limit of a
+# 70 deg flange is 1.5 at mu = 0.2364 and 0.95 at mu = 0.5; short impact peaks may exceed it, 4 may
+# not.
+BOUNDS = {"y_mm": 14.0, "normal_kN": 600.0, "lift_kN": 30.0, "flange_kN": 800.0,
+          "indent_mm": 1.0, "yq": 4.0}
+
+CASES = {
+    # --- short cases (default suite, label hard) ---
+    "lut_stiff_flange": {
+        "scenario": "scenarios/hard/lut_stiff_flange.lua",
+        "sets": ["run.duration=2"],
+        "combos": [
+            combo(fixed("rk4", 1e-3)),
+            combo(fixed("abm", 1e-3)),
+            combo(fixed("abm", 1e-3), extra=PRESCRIBED, needs="wheelset_spin",
+                  suffix=" prescribed spin"),
+            combo(adaptive("dopri5", 1e-6)),
+            combo(adaptive("dopri5", 1e-8), expect="ok"),
+            combo(adaptive("bdf", 1e-6, consistent=False)),
+            combo(adaptive("bdf", 1e-7), expect="ok"),
+        ],
+        "flange_contact": True,
+    },
+    "kec_short_transition": {
+        "scenario": "scenarios/hard/kec_short_transition.lua",
+        "combos": [
+            combo(fixed("abm", 2.5e-4)),
+            combo(adaptive("dopri5", 1e-6), expect="ok"),
+            combo(adaptive("bdf", 1e-6)),
+        ],
+    },
+    "sharp_curve": {
+        "scenario": "scenarios/hard/sharp_curve.lua",
+        "combos": [
+            combo(adaptive("dopri5", 1e-6), expect="ok"),
+            combo(adaptive("dopri5", 1e-6), expect="ok", extra=["contact.method=lut"],
+                  suffix=" LUT"),
+            combo(fixed("abm", 2.5e-4)),
+            combo(fixed("abm", 1e-3)),
+            combo(fixed("abm", 1e-3), extra=PRESCRIBED, needs="wheelset_spin",
+                  suffix=" prescribed spin"),
+        ],
+        "flange_contact": True,
+    },
+    "hunting": {
+        "scenario": "scenarios/hard/hunting.lua",
+        "combos": [
+            # Measured (docs/hard_cases.md): ws1 peak-to-peak ~1.3 mm at 60 m/s (stable), a
+            # limit cycle of ~7.5 mm at 80 m/s (hunting).
+            combo(adaptive("dopri5", 1e-6), expect="ok", extra=["vehicle.speed=60"],
+                  suffix=" V=60", pp=(0.0, 3.0)),
+            combo(adaptive("dopri5", 1e-6), expect="ok", extra=["vehicle.speed=80"],
+                  suffix=" V=80", pp=(4.0, 28.0)),
+        ],
+    },
+    "wheel_climb": {
+        "scenario": "scenarios/hard/wheel_climb.lua",
+        "combos": [
+            combo(adaptive("dopri5", 1e-6), expect="ok"),
+            combo(adaptive("bdf", 1e-6)),
+        ],
+        "bounds": {"yq": 2.0},
+    },
+    # --- long cases (label hard;long: ./wb test --long) ---
+    "lut_stiff_flange_case3_long": {
+        "scenario": "scenarios/hard/lut_stiff_flange_case3.lua",
+        "combos": [
+            combo(fixed("rk4", 1e-3)),
+            combo(fixed("abm", 1e-3)),
+            combo(fixed("abm", 2.5e-4)),
+            combo(adaptive("dopri5", 1e-6)),
+            combo(adaptive("dopri5", 1e-8), expect="ok"),
+            combo(adaptive("bdf", 1e-6)),
+            combo(adaptive("bdf", 1e-7), expect="ok"),
+        ],
+        "long": True,
+    },
+    "lut_stiff_flange_long": {
+        "scenario": "scenarios/hard/lut_stiff_flange.lua",
+        "sets": ["run.duration=6"],
+        "combos": [
+            combo(fixed("rk4", 1e-3)),
+            combo(fixed("rk4", 1e-4)),
+            combo(fixed("abm", 1e-3)),
+            combo(fixed("abm", 1e-4)),
+            combo(fixed("abm", 1e-3), extra=PRESCRIBED, needs="wheelset_spin",
+                  suffix=" prescribed spin"),
+            combo(adaptive("dopri5", 1e-5)),
+            combo(adaptive("dopri5", 1e-6)),
+            combo(adaptive("dopri5", 1e-7)),
+            combo(adaptive("dopri5", 1e-8), expect="ok"),
+            combo(adaptive("bdf", 1e-5)),
+            combo(adaptive("bdf", 1e-6)),
+            combo(adaptive("bdf", 1e-7), expect="ok"),
+        ],
+        "flange_contact": True,
+        "long": True,
+    },
+    "kec_short_transition_long": {
+        "scenario": "scenarios/hard/kec_short_transition.lua",
+        "sets": ["run.duration=10"],
+        "combos": [
+            combo(fixed("abm", 2.5e-4)),
+            combo(fixed("abm", 1e-4)),
+            combo(adaptive("dopri5", 1e-6), expect="ok"),
+            combo(adaptive("dopri5", 1e-8)),
+            combo(adaptive("bdf", 1e-6)),
+            combo(adaptive("bdf", 1e-7)),
+        ],
+        "long": True,
+    },
+    "sharp_curve_long": {
+        "scenario": "scenarios/hard/sharp_curve.lua",
+        "sets": ["run.duration=15"],
+        "combos": [
+            combo(adaptive("dopri5", 1e-6), expect="ok"),
+            combo(adaptive("dopri5", 1e-6), expect="ok", extra=["contact.method=lut"],
+                  suffix=" LUT"),
+            combo(adaptive("bdf", 1e-6)),
+            combo(fixed("abm", 2.5e-4)),
+            combo(fixed("abm", 1e-3)),
+        ],
+        "flange_contact": True,
+        "long": True,
+    },
+    "hunting_ramp_long": {
+        "scenario": "scenarios/hard/hunting_ramp.lua",
+        "requires": "acceleration",
+        "combos": [
+            # Constant-speed runs (hunting.lua): stable at 70 m/s, hunting at 75 m/s.
+            combo(adaptive("dopri5", 1e-6), expect="ok", onset=(60.0, 85.0)),
+            # With the spin prescribed the wagon did not reach the 4 mm hunting amplitude by
+            # 85 m/s (measured, docs/hard_cases.md): recorded, not asserted.
+            combo(adaptive("dopri5", 1e-6), extra=PRESCRIBED, needs="wheelset_spin",
+                  suffix=" prescribed spin"),
+        ],
+        "long": True,
+    },
+    "wheel_climb_long": {
+        "scenario": "scenarios/hard/wheel_climb.lua",
+        "sets": ["run.duration=20"],
+        "combos": [
+            combo(adaptive("dopri5", 1e-6), expect="ok"),
+            combo(adaptive("dopri5", 1e-6), extra=["contact.method=lut"], suffix=" LUT"),
+            combo(adaptive("bdf", 1e-6)),
+            combo(fixed("abm", 2.5e-4)),
+        ],
+        "bounds": {"yq": 2.0},
+        "long": True,
+    },
+}
+
+FIELDS = ["case", "combination", "expect", "rc", "status", "verdict", "t_reached", "t_end",
+          "cpu_s", "wall_s", "rhs_evals", "rhs_evals_jac", "steps", "rejected_steps",
+          "jacobian_evals", "max_abs_y_mm", "max_normal_kN", "min_normal_kN", "max_flange_kN",
+          "max_normal_flange_kN", "flange_time_share",
+          "max_indent_mm", "max_abs_yq", "ws1_y_pp_last_mm", "onset_t", "onset_speed", "problems", "notes", "message"]
+
+
+def attr(g, name, default=None):
+    if name not in g.attrs:
+        return default
+    v = g.attrs[name]
+    if isinstance(v, bytes):
+        return v.decode()
+    if isinstance(v, np.ndarray) and v.shape == ():
+        return v.item()
+    return v
+
+
+def check_file(path, rc, bounds, t_end_hint):
+    """Returns (row fields, list of problems, list of notes). Plausibility is required of a
+    finished run; in a failed run's partial results the last outputs before the failure may show
+    the divergence that caused it (e.g. RK4 at 1 ms into the stiff flange): noted, not failed."""
+    problems = []
+    implausible = []
+    row = {}
+    with h5py.File(path, "r") as f:
+        st = f["/stats"]
+        status = attr(st, "status", "")
+        msg = attr(st, "message", "")
+        row["status"] = status
+        row["message"] = msg
+        for k in ("t_reached", "rhs_evals", "rhs_evals_jac", "steps", "rejected_steps",
+                  "jacobian_evals"):
+            row[k] = attr(st, k, "")
+        row["cpu_s"] = attr(st, "cpu_time_s", "")
+        # Non-finite values anywhere: every numeric dataset and attribute.
+        bad = []
+
+        def visit(name, obj):
+            for an, av in obj.attrs.items():
+                a = np.asarray(av)
+                if a.dtype.kind in "fc" and not np.all(np.isfinite(a)):
+                    bad.append(name + "@" + an)
+            if isinstance(obj, h5py.Dataset) and obj.dtype.kind in "fc":
+                if not np.all(np.isfinite(obj[...])):
+                    bad.append(name)
+        f.visititems(visit)
+        for an, av in f.attrs.items():
+            a = np.asarray(av)
+            if a.dtype.kind in "fc" and not np.all(np.isfinite(a)):
+                bad.append("/@" + an)
+        if bad:
+            problems.append("NaN/Inf in " + ", ".join(bad[:5]))
+
+        t = f["/time"][:] if "/time" in f else np.zeros(0)
+        if len(t) == 0:
+            problems.append("no /time samples (no partial result)")
+        t_reached = float(row["t_reached"]) if row["t_reached"] != "" else float("nan")
+        if rc == 0:
+            if status != "ok":
+                problems.append("exit 0 but /stats/status = %r" % status)
+            if len(t) and abs(t[-1] - t_end_hint) > 1e-6 * max(1.0, t_end_hint):
+                problems.append("ok run ends at t = %g, not %g" % (t[-1], t_end_hint))
+        else:
+            if status != "failed":
+                problems.append("exit 2 but /stats/status = %r" % status)
+            if not re.search(r"failed at t = [-0-9.e+]+", msg):
+                problems.append("failure message without failure time: %r" % msg[:120])
+            if "(distance" not in msg:
+                problems.append("failure message without distance")
+            if not (t_reached < t_end_hint):
+                problems.append("failed but t_reached = %g >= t_end" % t_reached)
+            if len(t) and t[-1] > t_reached + 1e-9:
+                problems.append("partial output beyond t_reached")
+        row["t_end"] = t_end_hint
+
+        ymax = nmax = fmax = imax = yqmax = nfmax = 0.0
+        in_flange = np.zeros(len(t), dtype=bool)
+        nmin = float("inf")
+        pp = float("nan")
+        if "/contact" in f:
+            for ws in f["/contact"]:
+                y = f["/bodies/%s/y" % ws][:]
+                if len(y):
+                    ymax = max(ymax, float(np.max(np.abs(y))))
+                if ws in ("ws1", "ws") and len(y):
+                    last = t >= (t[-1] - 1.0) if len(t) else slice(None)
+                    pp = float(np.ptp(y[last])) if np.any(last) else float("nan")
+                for side in ("left", "right"):
+                    g = f["/contact/%s/%s" % (ws, side)]
+                    n = g["normal_force"][:]
+                    if len(n) == 0:
+                        continue
+                    nmax = max(nmax, float(n.max()))
+                    nmin = min(nmin, float(n.min()))
+                    ff = g["flange_force"][:]
+                    nf = g["normal_flange"][:]
+                    fmax = max(fmax, float(ff.max()))
+                    nfmax = max(nfmax, float(nf.max()))
+                    if len(ff) == len(in_flange):
+                        in_flange |= (ff > 0) | (nf > 0)
+                    imax = max(imax, float(g["flange_indentation"][:].max()))
+                    yqmax = max(yqmax, float(np.max(np.abs(g["y_over_q"][:]))))
+        # Hunting onset: first time the peak-to-peak of ws1's y over the trailing second exceeds
+        # 4 mm (a stable wagon stays near 1 mm at 60 m/s, hunting reaches ~7.5 mm); the speed
+        # then from /vehicle/speed (speed ramp) if written.
+        onset_v = float("nan")
+        if "/bodies/ws1/y" in f and len(t) > 1:
+            y1 = f["/bodies/ws1/y"][:]
+            dt = t[1] - t[0]
+            win = max(1, int(round(1.0 / dt)))
+            for k in range(win, len(t)):
+                if np.ptp(y1[k - win:k + 1]) > 4e-3:
+                    if "/vehicle/speed" in f:
+                        onset_v = float(f["/vehicle/speed"][k])
+                    else:
+                        onset_v = float("nan")
+                    row["onset_t"] = float(t[k])
+                    break
+        row["onset_speed"] = onset_v
+        row.update({"max_abs_y_mm": ymax * 1e3, "max_normal_kN": nmax / 1e3,
+                    "min_normal_kN": (nmin if math.isfinite(nmin) else 0.0) / 1e3,
+                    "max_flange_kN": fmax / 1e3, "max_normal_flange_kN": nfmax / 1e3,
+                    "flange_time_share": float(np.mean(in_flange)) if len(t) else 0.0, "max_indent_mm": imax * 1e3,
+                    "max_abs_yq": yqmax, "ws1_y_pp_last_mm": pp * 1e3})
+        # Plausibility of what was computed.
+        problems_before = problems
+        problems = implausible
+        if ymax * 1e3 > bounds["y_mm"]:
+            problems.append("|y| = %.2f mm > %.1f mm" % (ymax * 1e3, bounds["y_mm"]))
+        if nmax / 1e3 > bounds["normal_kN"]:
+            problems.append("normal force %.0f kN > %.0f kN" % (nmax / 1e3, bounds["normal_kN"]))
+        if math.isfinite(nmin) and -nmin / 1e3 > bounds["lift_kN"]:
+            problems.append("normal force %.0f kN (wheel lift beyond %.0f kN)"
+                            % (nmin / 1e3, bounds["lift_kN"]))
+        if fmax / 1e3 > bounds["flange_kN"]:
+            problems.append("flange force %.0f kN > %.0f kN" % (fmax / 1e3, bounds["flange_kN"]))
+        if imax * 1e3 > bounds["indent_mm"]:
+            problems.append("flange indentation %.3f mm > %.1f mm"
+                            % (imax * 1e3, bounds["indent_mm"]))
+        if yqmax > bounds["yq"]:
+            problems.append("|Y/Q| = %.2f > %.1f" % (yqmax, bounds["yq"]))
+    if rc == 0:
+        return row, problems_before + implausible, []
+    return row, problems_before, ["partial results before the failure: " + "; ".join(implausible)] \
+        if implausible else []
+
+
+def t_end_of(workbench, scenario, sets):
+    """The run's end time: run.duration from the sets or the scenario (hard scenarios all give
+    run.duration)."""
+    for s in reversed(sets):
+        if s.startswith("run.duration="):
+            return float(s.split("=", 1)[1])
+    text = open(os.path.join(ROOT, scenario)).read()
+    m = re.search(r"run\s*{\s*duration\s*=\s*([0-9.eE+-]+)", text)
+    if not m:
+        raise SystemExit("cannot find run.duration in " + scenario)
+    return float(m.group(1))
+
+
+def fmt(v):
+    if isinstance(v, str):
+        try:
+            v = float(v) if ("." in v or "e" in v or "nan" in v) else v
+        except ValueError:
+            return v
+    if isinstance(v, float):
+        return "%.4g" % v
+    return str(v)
+
+
+def print_table(rows):
+    cols = ["case", "combination", "expect", "status", "verdict", "t_reached", "cpu_s", "wall_s",
+            "rhs_evals", "rhs_evals_jac", "steps", "rejected_steps", "max_abs_y_mm",
+            "max_flange_kN", "max_normal_flange_kN", "flange_time_share", "max_abs_yq"]
+    w = {c: max(len(c), *(len(fmt(r.get(c, ""))) for r in rows)) for c in cols}
+    print("  ".join(c.ljust(w[c]) for c in cols))
+    for r in rows:
+        print("  ".join(fmt(r.get(c, "")).ljust(w[c]) for c in cols))
+    for r in rows:
+        if r.get("status") == "failed" or r.get("problems"):
+            print("- %s / %s: %s %s %s" % (r["case"], r["combination"], r.get("problems", ""),
+                                           r.get("notes", ""), r.get("message", "")[:400]))
+
+
+def run_case(args):
+    case = CASES[args.case]
+    help_text = subprocess.run([args.workbench, "help", "scenario"], capture_output=True,
+                               text=True).stdout
+    def has_key(k):
+        return re.search(r"^\s+%s \(" % re.escape(k), help_text, re.M) is not None
+    if case.get("requires") and not has_key(case["requires"]):
+        print("SKIP %s: the engine has no '%s' key yet (workbench help scenario)"
+              % (args.case, case["requires"]))
+        return SKIP
+    os.makedirs(args.out_dir, exist_ok=True)
+    bounds = dict(BOUNDS)
+    bounds.update(case.get("bounds", {}))
+    rows = []
+    failures = []
+    env = dict(os.environ, RAILBENCH_ROOT=ROOT)
+    for c in case["combos"]:
+        row = {"case": args.case, "combination": c["label"], "expect": c["expect"]}
+        if c["needs"] and not has_key(c["needs"]):
+            row.update({"status": "skipped", "verdict": "skip",
+                        "message": "engine has no '%s' key yet" % c["needs"]})
+            rows.append(row)
+            continue
+        sets = case.get("sets", []) + c["sets"]
+        t_end = t_end_of(args.workbench, case["scenario"], sets)
+        tag = re.sub(r"[^A-Za-z0-9]+", "_", c["label"]).strip("_")
+        out = os.path.join(args.out_dir, "%s__%s.h5" % (args.case, tag))
+        for p in (out, out + ".tmp"):
+            if os.path.exists(p):
+                os.remove(p)
+        cmd = [args.workbench, "run", case["scenario"], "--out", out, "--quiet"]
+        for s in sets:
+            cmd += ["--set", s]
+        t0 = time.monotonic()
+        problems = []
+        try:
+            p = subprocess.run(cmd, cwd=ROOT, env=env, capture_output=True, text=True,
+                               timeout=args.timeout)
+            rc = p.returncode
+        except subprocess.TimeoutExpired:
+            rc = None
+            problems.append("HANG: no result within %g s" % args.timeout)
+        row["wall_s"] = time.monotonic() - t0
+        row["rc"] = rc
+        if rc is not None and rc not in (0, 2):
+            problems.append("exit code %s (%s)" % (rc, "crash/signal" if rc < 0 else
+                                                   {1: "bad input", 3: "internal error"}.get(rc, "?")))
+            problems.append((p.stderr or "").strip()[-300:])
+        if rc in (0, 2):
+            if not os.path.exists(out):
+                problems.append("no result file (exit %d)" % rc)
+            else:
+                if os.path.exists(out + ".tmp"):
+                    problems.append("stale .tmp file beside the result")
+                try:
+                    fields, pr, notes = check_file(out, rc, bounds, t_end)
+                    row.update(fields)
+                    problems += pr
+                    row["notes"] = "; ".join(notes)
+                    if case.get("flange_contact") and rc == 0 and row["max_flange_kN"] == 0 \
+                            and "LUT" not in c["label"] and "lut" in case["scenario"]:
+                        problems.append("no flange contact: the case does not test what it "
+                                        "should")
+                except Exception as e:  # unreadable file
+                    problems.append("cannot read result: %s" % e)
+        if c["pp"] and rc == 0 and "ws1_y_pp_last_mm" in row:
+            lo, hi = c["pp"]
+            if not (lo <= row["ws1_y_pp_last_mm"] <= hi):
+                problems.append("ws1 peak-to-peak %.2f mm outside [%g, %g] mm (hunting "
+                                "expectation)" % (row["ws1_y_pp_last_mm"], lo, hi))
+        if c["onset"] and rc == 0:
+            lo, hi = c["onset"]
+            v = row.get("onset_speed", float("nan"))
+            if not (lo <= v <= hi):
+                problems.append("hunting onset speed %s m/s outside [%g, %g] m/s" % (v, lo, hi))
+        if c["expect"] == "ok" and rc != 0:
+            problems.append("expected to finish (reference combination), exit %s" % rc)
+        row["problems"] = "; ".join(x for x in problems if x)
+        row["verdict"] = "FAIL" if problems else "pass"
+        if problems:
+            failures.append("%s / %s: %s" % (args.case, c["label"], row["problems"]))
+        rows.append(row)
+        sys.stdout.flush()
+    with open(os.path.join(args.out_dir, args.case + ".csv"), "w", newline="") as fh:
+        wcsv = csv.DictWriter(fh, FIELDS, extrasaction="ignore")
+        wcsv.writeheader()
+        for r in rows:
+            wcsv.writerow(r)
+    print_table(rows)
+    if failures:
+        print("\nFAILED:\n" + "\n".join(failures))
+        return 1
+    return 0
+
+
+def summary(args):
+    rows = []
+    for path in sorted(glob.glob(os.path.join(args.out_dir, "*.csv"))):
+        if os.path.basename(path) == "hard_cases.csv":
+            continue
+        with open(path) as fh:
+            rows += list(csv.DictReader(fh))
+    with open(os.path.join(args.out_dir, "hard_cases.csv"), "w", newline="") as fh:
+        wcsv = csv.DictWriter(fh, FIELDS, extrasaction="ignore")
+        wcsv.writeheader()
+        for r in rows:
+            wcsv.writerow(r)
+    if rows:
+        print_table(rows)
+    print("\n%d combinations -> %s" % (len(rows), os.path.join(args.out_dir, "hard_cases.csv")))
+    return 0
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--workbench")
+    ap.add_argument("--case", choices=sorted(CASES))
+    ap.add_argument("--out-dir", required=True)
+    ap.add_argument("--timeout", type=float, default=600.0, help="per run [s]: longer = hang")
+    ap.add_argument("--summary", action="store_true")
+    ap.add_argument("--list", action="store_true", help="print case names (short, then long)")
+    args = ap.parse_args()
+    if args.list:
+        for k, v in CASES.items():
+            print(k, "long" if v.get("long") else "short")
+        return 0
+    if args.summary:
+        return summary(args)
+    if not args.workbench or not args.case:
+        ap.error("--workbench and --case are required")
+    return run_case(args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
