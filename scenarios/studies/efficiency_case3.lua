@@ -1,32 +1,39 @@
--- Paper section 5.3 (Tables 7, 12-16) on our model: Manchester wagon, R = 500 m, V = 20 m/s,
--- 500 m with ORE B176 low irregularities (case 3), KEC and LUT with every integrator; 5 repeats
--- (CPU time as the median, evaluation counts exact). Long: run explicitly with
---   ./wb study scenarios/studies/efficiency_case3.lua
--- Fixed steps: 0.25 ms instead of the paper's 1 ms (stability of the free-spin creep mode, see
--- scenarios/validation/common.lua); LUT flange stiffness K from the paper's Table 3 with
--- D = K/100.
-local cases = {}
-local solvers = {
-  { ["solver.method"] = "rk4", ["solver.step"] = 2.5e-4 },
-  { ["solver.method"] = "abm", ["solver.step"] = 2.5e-4 },
-}
-for _, tol in ipairs({ 1e-4, 1e-5, 1e-6 }) do
-  for _, m in ipairs({ "dopri5", "bdf" }) do
-    solvers[#solvers + 1] = { ["solver.method"] = m, ["solver.rtol"] = tol, ["solver.atol"] = tol,
-                              ["solver.max_step"] = 1e-3 }
+-- Paper section 5.3 (Tables 7, 12-16, Fig. 23) on our model: Manchester wagon, R = 500 m,
+-- V = 20 m/s, 500 m with ORE B176 low irregularities (case 3), KEC and LUT (K = 1e9 ... 7.075e13
+-- N/m^1.5, D = K/100 as in Table 3) with RK4 and ABM at a fixed step, dopri5 (ode45) and BDF
+-- (ode15s) at rtol = atol = 1e-4, 1e-5, 1e-6 with a largest step of 1 ms; for the paper's
+-- Table 7 (K = 7.075e13, where the paper needed ode15s 1e-7 / ode45 1e-8) also 1e-7 and 1e-8.
+-- 5 repeats (CPU time as the median, evaluation counts exact). Long (about an hour on 2 cores):
+--   ./wb study scenarios/studies/efficiency_case3.lua          (out/efficiency_case3/)
+-- Figures and tables: study_cost.png/.csv (Fig. 23, Tables 7, 12-16), study_failures.csv,
+-- study_accuracy_lut_vs_kec.csv/.png (Eq. 33, Table 8: the LUT/KEC pairs of this study),
+-- study_lut_integrators.png (Fig. 24), study_lut_stiffness_*.png (Fig. 25).
+--
+-- Fixed steps: with the free wheelset spin (the default) RK4 and ABM need 0.25 ms instead of the
+-- paper's 1 ms (stability of the spin creep mode, scenarios/validation/common.lua). Once
+-- contact.wheelset_spin = "prescribed" exists (see `workbench help scenario`), set this to true
+-- for the paper's setting (prescribed spin, 1 ms fixed steps, every case):
+local PRESCRIBED_SPIN = false
+
+local lib = require "studies.lib"
+local spin, h = lib.spin(PRESCRIBED_SPIN)
+local solvers = { lib.fixed("rk4", h), lib.fixed("abm", h) }
+for _, m in ipairs({ "dopri5", "bdf" }) do
+  for _, tol in ipairs({ 1e-4, 1e-5, 1e-6 }) do
+    solvers[#solvers + 1] = lib.adaptive(m, tol, 1e-3)
   end
 end
+local cases = {}
 for _, s in ipairs(solvers) do
-  local kec = { ["contact.method"] = "kec" }
-  for k, v in pairs(s) do kec[k] = v end
-  if s["solver.method"] == "bdf" then kec["contact.normal_forces"] = "consistent" end
-  cases[#cases + 1] = kec
+  cases[#cases + 1] = lib.merge(lib.kec(), s, spin)
   for _, K in ipairs({ 1e9, 1e10, 1e11, 1e12, 7.075e13 }) do
-    local lut = { ["contact.method"] = "lut", ["contact.flange_stiffness"] = K }
-    for k, v in pairs(s) do lut[k] = v end
-    if s["solver.method"] == "bdf" then lut["contact.normal_forces"] = "consistent" end
-    cases[#cases + 1] = lut
+    cases[#cases + 1] = lib.merge(lib.lut(K), s, spin)
   end
+end
+-- Table 7: the Hertzian flange stiffness 7.075e13 at tighter tolerances.
+for _, s in ipairs({ lib.adaptive("dopri5", 1e-7, 1e-3), lib.adaptive("dopri5", 1e-8, 1e-3),
+                     lib.adaptive("bdf", 1e-7, 1e-3) }) do
+  cases[#cases + 1] = lib.merge(lib.lut(7.075e13), s, spin)
 end
 
 study {

@@ -2,6 +2,13 @@
 -- section 5.1): 1 car body, 2 bogie frames, 4 wheelsets, 48 suspension elements (Table 4).
 -- Usage:  local wagon = require "vehicles.manchester_wagon1"
 --         vehicle (wagon { speed = 20 })
+-- Options (defaults: the full model): speed [m/s] = 20, start [m] = 0,
+--   bumpstops = false        leaves out the two lateral bump stops (46 elements)
+--   series_dampers = false   the 16 series dampers (primary and secondary vertical, secondary
+--                            lateral) become plain dampers: vertical Kz in parallel with Dz (no
+--                            series stiffness), lateral Dsy alone (no series stiffness Ksy); 16
+--                            fewer states (the damper forces)
+-- (scenarios/studies/effects.lua measures what each of these costs.)
 -- Sources: [T2] paper Table 2 (masses, inertias); [T4] paper Table 4 (suspension);
 -- [MB] ../shared/reference/manchester_benchmark_vehicle1.md (geometry, Source A);
 -- ASSUMPTION marks values that are not published. docs/vehicle.md explains the element count.
@@ -13,6 +20,15 @@
 -- the lower one ("to"), so a positive vertical deflection is compression.
 return function(opts)
   opts = opts or {}
+  local with_bumpstops = opts.bumpstops ~= false
+  local with_series = opts.series_dampers ~= false
+  -- A series damper, or with series_dampers = false the plain damper (and parallel spring).
+  local function damper(e)
+    if with_series then return series_damper(e) end
+    return spring_damper { name = e.name, from = e.from, to = e.to, at_from = e.at_from,
+                           at_to = e.at_to, direction = e.direction, stiffness = e.stiffness or 0,
+                           damping = e.damping }
+  end
 
   local h_car   = 1.8     -- [MB] car body CoG height above rail
   local h_bogie = 0.6     -- [MB] bogie frame CoG height
@@ -55,7 +71,7 @@ return function(opts)
         -- Primary vertical: Kpz 1220 kN/m in parallel with the damper Dpz 4 kN s/m that has the
         -- series stiffness Kseries_pz 1000 kN/m [T4], 4/bogie. ([MB] Source B has 1200 kN/m; the
         -- paper's 1220 is used.) One Table-4 element: a series_damper with a parallel stiffness.
-        add(series_damper { name = "prim_z_" .. ws .. "_" .. tag, from = bogie, to = ws,
+        add(damper { name = "prim_z_" .. ws .. "_" .. tag, from = bogie, to = ws,
                             at_from = at_bogie, at_to = at_ws, direction = "z",
                             stiffness = 1220e3, damping = 4e3, series_stiffness = 1000e3 })
         -- Primary longitudinal: Kpx 31391 kN/m, Dpx 15 kN s/m in parallel [T4], 4/bogie.
@@ -76,7 +92,7 @@ return function(opts)
       local pc, pb = at_car(sy * b_sec, h_sec), at_bg(sy * b_sec, h_sec)
       -- Secondary vertical: Ksz 430 kN/m in parallel with the damper Dsz 4 kN s/m that has the
       -- series stiffness Kseries_sz 1000 kN/m [T4], 2/bogie, at the secondary springs [MB].
-      add(series_damper { name = "sec_z_" .. bogie .. "_" .. tag, from = "car", to = bogie,
+      add(damper { name = "sec_z_" .. bogie .. "_" .. tag, from = "car", to = bogie,
                           at_from = pc, at_to = pb, direction = "z",
                           stiffness = 430e3, damping = 4e3, series_stiffness = 1000e3 })
       -- Secondary longitudinal and lateral shear stiffness of the springs: 160 kN/m each [T4],
@@ -95,7 +111,7 @@ return function(opts)
       -- 66 mm inside its track frame in the paper's R = 500 m curve at 20 m/s; as a series
       -- stiffness 28-31 mm; the paper's Table 6 has 41.8 mm (KEC) / 41.4 mm (UM). See
       -- docs/vehicle.md, section 4.
-      add(series_damper { name = "sec_y_" .. bogie .. "_" .. tag, from = "car", to = bogie,
+      add(damper { name = "sec_y_" .. bogie .. "_" .. tag, from = "car", to = bogie,
                           at_from = pc, at_to = pb, direction = "y",
                           damping = 32e3, series_stiffness = 6000e3 })
     end
@@ -106,9 +122,11 @@ return function(opts)
                         stiffness = 5000e3, damping = 25e3 })
     -- Lateral bump stop, table above [T4]; ASSUMPTION: 1/bogie on the bogie centre line, at the
     -- bump-stop height 0.65 m [MB].
-    add(bumpstop { name = "bump_y_" .. bogie, from = "car", to = bogie,
-                   at_from = at_car(0, h_bump), at_to = at_bg(0, h_bump), direction = "y",
-                   table = bump_table })
+    if with_bumpstops then
+      add(bumpstop { name = "bump_y_" .. bogie, from = "car", to = bogie,
+                     at_from = at_car(0, h_bump), at_to = at_bg(0, h_bump), direction = "y",
+                     table = bump_table })
+    end
   end
 
   return {

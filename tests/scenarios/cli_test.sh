@@ -73,6 +73,41 @@ grep -q "rtol has no effect with method 'rk4'" "$TMP/study/summary.csv" && ok "s
 "$WB" study tests/scenarios/data/study_small.lua --out "$TMP/study" </dev/null >/dev/null 2>"$TMP/se2"
 grep -q "4 already done, running 4" "$TMP/se2" && ok "study resumes" || bad "study resume: $(head -2 "$TMP/se2")"
 
+# 4b. Study keys of a case (label, role, per-case base) and the study's figures and tables, drawn
+#     by `workbench study` itself (plots/plot_study.py) from the summary and the case files.
+"$WB" study tests/scenarios/data/study_plots.lua --out "$TMP/sp" </dev/null >"$TMP/spo" 2>"$TMP/spe"; rc=$?
+[ $rc -eq 0 ] && [ "$(grep -c ",ok," "$TMP/sp/summary.csv" 2>/dev/null)" = 7 ] \
+  && ok "study with labels, roles and a per-case base" || bad "study_plots rc=$rc: $(cat "$TMP/spe" "$TMP/spo")"
+grep -q "^case_[0-9a-f]*,0,no bump stops,,.*bases/no_bumpstops.lua," "$TMP/sp/summary.csv" \
+  && grep -q ",KEC abm,baseline," "$TMP/sp/summary_cases.csv" \
+  && grep -q ",LUT K=1e10,," "$TMP/sp/summary_cases.csv" \
+  && ok "study labels, roles and bases in the summaries" || bad "study summaries: $(head -3 "$TMP/sp/summary.csv")"
+missing=""
+for f in study_cost.png study_cost.csv study_failures.csv study_accuracy_lut_vs_kec.csv \
+         study_accuracy_lut_vs_kec.png study_lut_integrators.png study_work_precision.csv \
+         study_work_precision.png study_work_precision_rms.png study_effects.csv study_effects.png; do
+  [ -s "$TMP/sp/$f" ] || missing="$missing $f"
+done
+[ -z "$missing" ] && ok "study figures and tables" || bad "study outputs missing:$missing ($(cat "$TMP/spe"))"
+"$PY" - "$TMP/sp" <<'PYEOF' && ok "study tables: accuracy, work precision, effects" || bad "study tables"
+import csv, os, sys
+d = sys.argv[1]
+rows = lambda n: list(csv.DictReader(open(os.path.join(d, n))))
+acc = rows("study_accuracy_lut_vs_kec.csv")
+assert {r["wheelset"] for r in acc} == {"ws1", "ws2", "ws3", "ws4", "all"}, acc
+assert all(float(r["max_abs_mm"]) >= float(r["mean_abs_mm"]) >= 0 for r in acc)
+wp = {r["label"]: r for r in rows("study_work_precision.csv")}
+chk = [r for r in wp.values() if r["note"].startswith("reference_check")]
+assert len(chk) == 1 and float(chk[0]["y_max_mm"]) < 1e-2, chk
+assert float(wp["KEC abm"]["y_max_mm"]) > 0 and wp["LUT K=1e10"]["note"], wp
+eff = {r["label"]: r for r in rows("study_effects.csv")}
+assert float(eff["KEC abm"]["relative_to_baseline"]) == 1.0
+assert float(eff["no bump stops"]["us_per_eval"]) > 0
+assert eff["no bump stops"]["rhs_evals"] == eff["KEC abm"]["rhs_evals"]
+PYEOF
+"$PY" plots/plot_study.py "$TMP/nonexistent" >/dev/null 2>"$TMP/pe"; rc=$?
+[ $rc -eq 1 ] && grep -q "^plot_study: error: " "$TMP/pe" && ok "plot_study on a non-study folder" || bad "plot_study error ($rc)"
+
 # 5. Contact tables of the default profiles, and their figures.
 if "$WB" tables scenarios/tracks/manchester_r500.lua --out "$TMP/tables.h5" </dev/null >"$TMP/to" 2>&1 \
    && grep -q "two-point contact (left wheel) at y = 6.2" "$TMP/to"; then ok "tables"; else bad "tables: $(cat "$TMP/to")"; fi

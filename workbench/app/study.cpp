@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -29,9 +30,9 @@ struct Job {
 };
 
 // Starts `workbench run` for one job with stdout/stderr to its log; returns the pid.
-pid_t launch(const StudyOptions& o, const scenario::StudySpec& st, const Job& j) {
+pid_t launch(const StudyOptions& o, const Job& j) {
   std::vector<std::string> args = {o.program, "--root", o.root, "run",
-                                   st.base,   "--out",  j.h5,   "--quiet"};
+                                   j.c->base, "--out",  j.h5,   "--quiet"};
   for (const auto& ov : j.c->overrides) {
     args.push_back("--set");
     args.push_back(ov);
@@ -72,6 +73,38 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// Figures and tables of the study (plots/plot_study.py, Debian's python3 as in ./wb run): 0 when
+// drawn or switched off (RAILBENCH_STUDY_PLOTS=0) or when python3 / the script is missing (a
+// note), 4 when the script failed (the study's results are complete all the same).
+int plotStudy(const StudyOptions& o, const std::string& dir) {
+  if (const char* e = std::getenv("RAILBENCH_STUDY_PLOTS"); e && std::string(e) == "0") return 0;
+  const char* env = std::getenv("RAILBENCH_PYTHON");
+  std::string python = env && *env ? env : "/usr/bin/python3";
+  fs::path script = fs::path(o.root) / "plots" / "plot_study.py";
+  if (!fs::exists(python) || !fs::exists(script)) {
+    std::cerr << "study: note: no figures (" << (fs::exists(python) ? script.string() : python)
+              << " not found)\n";
+    return 0;
+  }
+  std::cout.flush();
+  pid_t pid = fork();
+  if (pid == 0) {
+    std::vector<std::string> args = {python, script.string(), dir};
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(python.c_str(), argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::cerr << "study: the figures failed: " << python << " " << script.string() << " " << dir
+              << "\n";
+    return 4;
+  }
+  return 0;
+}
+
 }  // namespace
 
 int runStudy(const StudyOptions& o) {
@@ -101,7 +134,7 @@ int runStudy(const StudyOptions& o) {
   std::size_t next = 0, done = 0;
   while (next < todo.size() || !running.empty()) {
     while (next < todo.size() && static_cast<int>(running.size()) < jobs) {
-      pid_t pid = launch(o, st, todo[next]);
+      pid_t pid = launch(o, todo[next]);
       if (pid < 0) {
         std::cerr << "cannot start a process for " << todo[next].c->id << "\n";
         exitCode[todo[next].h5] = -1;
@@ -125,18 +158,25 @@ int runStudy(const StudyOptions& o) {
               << (code == 0   ? "ok"
                   : code == 2 ? "failed (result kept)"
                               : "error " + std::to_string(code))
-              << "  " << join(j.c->overrides, " ") << "\n";
+              << "  " << j.c->label << "\n";
   }
 
   // Summary: one row per run, then per case the median CPU time over the repeats.
   std::ofstream csv(dir / "summary.csv");
-  const std::vector<std::string> nums = {"cpu_time_s",     "wall_time_s",     "rhs_evals",
-                                         "rhs_evals_jac",  "steps",           "rejected_steps",
-                                         "jacobian_evals", "nonlinear_iters", "t_reached"};
-  csv << "case,repeat,overrides,status";
+  csv.precision(12);  // counts above 1e6 exactly, CPU times to the nanosecond
+  const std::vector<std::string> nums = {
+      "cpu_time_s",     "wall_time_s",    "rhs_evals",       "rhs_evals_jac", "steps",
+      "rejected_steps", "jacobian_evals", "nonlinear_iters", "t_reached",     "model_evaluations"};
+  csv << "case,repeat,label,role,base,overrides,status";
   for (const auto& k : nums) csv << "," << k;
   csv << ",message,file\n";
-  std::map<std::string, std::vector<double>> cpu;
+  struct CaseSum {
+    std::vector<double> cpu;
+    int runs = 0;
+    std::string status, message, file;
+    std::map<std::string, double> first;  // counts of the first run (exact, equal over repeats)
+  };
+  std::map<std::string, CaseSum> sum;
   std::vector<double> colStatus;
   std::map<std::string, std::vector<double>> cols;
   for (const auto& j : all) {
@@ -151,8 +191,8 @@ int runStudy(const StudyOptions& o) {
         if (!line.empty()) last += (last.empty() ? "" : " | ") + line;
       message = last.substr(0, 500);
     }
-    csv << j.c->id << "," << j.repeat << "," << csvField(join(j.c->overrides, " ")) << ","
-        << status;
+    csv << j.c->id << "," << j.repeat << "," << csvField(j.c->label) << "," << j.c->role << ","
+        << csvField(j.c->base) << "," << csvField(join(j.c->overrides, " ")) << "," << status;
     for (const auto& k : nums) {
       double v = rec && rec->number.count(k) ? rec->number[k] : 0.0;
       csv << "," << v;
@@ -160,13 +200,39 @@ int runStudy(const StudyOptions& o) {
     }
     csv << "," << csvField(message) << "," << csvField(j.h5) << "\n";
     colStatus.push_back(status == "ok" ? 1.0 : 0.0);
-    if (status == "ok" && rec) cpu[j.c->id].push_back(rec->number["cpu_time_s"]);
+    CaseSum& cs = sum[j.c->id];
+    ++cs.runs;
+    if (status == "ok" && rec) cs.cpu.push_back(rec->number["cpu_time_s"]);
+    // The case's status: ok only when every repeat is ok; else the first problem and its reason.
+    if (cs.status.empty() || (cs.status == "ok" && status != "ok")) {
+      cs.status = status;
+      cs.message = message;
+      cs.file = fs::exists(j.h5) ? j.h5 : "";
+      for (const auto& k : nums) cs.first[k] = rec && rec->number.count(k) ? rec->number[k] : 0.0;
+    }
   }
   std::ofstream cases(dir / "summary_cases.csv");
-  cases << "case,overrides,runs_ok,median_cpu_time_s\n";
-  for (const auto& c : st.cases)
-    cases << c.id << "," << csvField(join(c.overrides, " ")) << "," << cpu[c.id].size() << ","
-          << median(cpu[c.id]) << "\n";
+  cases.precision(12);
+  cases << "case,label,role,base,overrides,runs,runs_ok,status,median_cpu_time_s,min_cpu_time_s,"
+           "max_cpu_time_s";
+  for (const auto& k : nums)
+    if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << k;
+  cases << ",message,file\n";
+  for (const auto& c : st.cases) {
+    CaseSum& cs = sum[c.id];
+    auto [lo, hi] =
+        cs.cpu.empty() ? std::pair<double, double>{0.0, 0.0}
+                       : std::pair<double, double>{*std::min_element(cs.cpu.begin(), cs.cpu.end()),
+                                                   *std::max_element(cs.cpu.begin(), cs.cpu.end())};
+    cases << c.id << "," << csvField(c.label) << "," << c.role << "," << csvField(c.base) << ","
+          << csvField(join(c.overrides, " ")) << "," << cs.runs << "," << cs.cpu.size() << ","
+          << cs.status << "," << median(cs.cpu) << "," << lo << "," << hi;
+    for (const auto& k : nums)
+      if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << cs.first[k];
+    cases << "," << csvField(cs.message) << "," << csvField(cs.file) << "\n";
+  }
+  csv.close();
+  cases.close();
 
   io::ResultFile h5((dir / "summary.h5").string());
   h5.attr("/", "study_file", st.file);
@@ -176,6 +242,9 @@ int runStudy(const StudyOptions& o) {
     caseIds += (caseIds.empty() ? "" : "\n") + j.c->id + "_r" + std::to_string(j.repeat);
     overrides += (overrides.empty() ? "" : "\n") + join(j.c->overrides, " ");
   }
+  std::string labels;
+  for (const auto& j : all) labels += (labels.empty() ? "" : "\n") + j.c->label;
+  h5.attr("/runs", "labels", labels);
   h5.attr("/runs", "ids", caseIds);
   h5.attr("/runs", "overrides", overrides);
   h5.dataset("/runs/ok", colStatus, "-");
@@ -185,7 +254,7 @@ int runStudy(const StudyOptions& o) {
   h5.finalize();
   std::cout << "study " << st.file << ": " << all.size() << " runs, summary in "
             << (dir / "summary.csv").string() << "\n";
-  return 0;
+  return plotStudy(o, dir.string());
 }
 
 }  // namespace rb::app

@@ -1,0 +1,45 @@
+-- Helpers of the study files in this folder: solver settings and case tables.
+--   local lib = require "studies.lib"
+local M = {}
+
+-- A new table with the entries of every argument (later ones win).
+function M.merge(...)
+  local out = {}
+  for _, t in ipairs({ ... }) do
+    for k, v in pairs(t) do out[k] = v end
+  end
+  return out
+end
+
+-- Fixed-step solver settings: { method = "abm", step = 2.5e-4 }.
+function M.fixed(method, step)
+  return { ["solver.method"] = method, ["solver.step"] = step }
+end
+
+-- Adaptive solver settings with rtol = atol = tol (the paper's ode45 / ode15s settings) and a
+-- largest step (paper: 1 ms). BDF and IDA solve the normal forces together with the creep forces
+-- (contact.normal_forces = "consistent"): with the lagged normal forces of the explicit methods
+-- its Newton iteration sees a non-smooth right-hand side (docs/contact_dynamics.md).
+-- solver.max_steps = 1e5: at tight tolerances the default limit (500 steps per 10 ms output
+-- interval) stops BDF with "too much work" in the flange contact phases; a work limit, not an
+-- accuracy setting, so it is not shown in the case labels.
+function M.adaptive(method, tol, max_step, atol)
+  local s = { ["solver.method"] = method, ["solver.rtol"] = tol, ["solver.atol"] = atol or tol,
+              ["solver.max_step"] = max_step, ["solver.max_steps"] = 100000 }
+  if method == "bdf" or method == "ida" then s["contact.normal_forces"] = "consistent" end
+  return s
+end
+
+-- Contact settings: M.kec(), M.lut(K) (D = K/100, the paper's Table 3).
+function M.kec() return { ["contact.method"] = "kec" } end
+function M.lut(K) return { ["contact.method"] = "lut", ["contact.flange_stiffness"] = K } end
+
+-- The wheelset spin: "free" (a state driven by the creep forces; its creep mode limits fixed
+-- steps to about 0.25 ms at 20 m/s) or "prescribed" (V / r0, as in the paper: 1 ms steps work).
+-- Returns the override table for a case and the fixed step that goes with it.
+function M.spin(prescribed)
+  if prescribed then return { ["contact.wheelset_spin"] = "prescribed" }, 1e-3 end
+  return {}, 2.5e-4
+end
+
+return M

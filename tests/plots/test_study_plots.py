@@ -1,0 +1,210 @@
+#!/usr/bin/python3
+"""Tests of plots/plot_study.py and plots/railbench_study.py on a synthetic study folder (plain
+script, no pytest; no workbench needed).
+
+usage: /usr/bin/python3 tests/plots/test_study_plots.py   -> exit 0 if all pass, 1 otherwise;
+the last line is "N passed, M failed".  Work files go to a temp dir, removed on success (kept on
+failure, or always with RB_KEEP_TMP=1).
+"""
+import csv
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import traceback
+
+import h5py
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+PLOTS = os.path.join(ROOT, "plots")
+sys.path.insert(0, PLOTS)
+
+import railbench_study as rs  # noqa: E402
+
+TMP = tempfile.mkdtemp(prefix="rb_study_test_")
+WS = ["ws1", "ws2", "ws3", "ws4"]
+_tests = []
+
+
+def test(fn):
+    _tests.append(fn)
+    return fn
+
+
+def write_case(path, t, y, flange=0.0, status="ok", method="kec"):
+    """A result file with the groups the study figures read; y(t) for every wheelset."""
+    with h5py.File(path, "w") as f:
+        f.attrs["solver"] = "abm"
+        f["time"] = t
+        g = f.create_group("bodies")
+        g.attrs["names"] = "car\n" + "\n".join(WS)
+        c = f.create_group("contact")
+        c.attrs["method"] = method
+        c.attrs["table_build_time_s"] = 0.1
+        c.attrs["table_bytes"] = 1000
+        for k, ws in enumerate(WS):
+            b = g.create_group(ws)
+            b.attrs["kind"] = "wheelset"
+            b["y"] = y * (k + 1)
+            b["yaw"] = 0.1 * y
+            for side in ("left", "right"):
+                w = c.create_group(f"{ws}/{side}")
+                w["normal_force"] = 5e4 + 1e6 * y
+                w["creep_force_y"] = 1e5 * y
+                w["flange_indentation"] = flange * np.maximum(y, 0)
+                w["flange_force"] = flange * 1e9 * np.maximum(y, 0)
+        s = f.create_group("stats")
+        s.attrs["status"] = status
+        s.attrs["cpu_time_s"] = 1.0
+
+
+# case id, label, role, overrides, status, cpu, evals, y offset [m], t_end
+CASES = [
+    ("case_a", "KEC abm", "baseline", "contact.method=kec solver.method=abm solver.step=0.00025",
+     "ok", 2.0, 1000, 0.0, 1.0),
+    ("case_b", "LUT K=1e10 abm", "",
+     "contact.flange_stiffness=1e10 contact.method=lut solver.method=abm solver.step=0.00025",
+     "ok", 3.0, 1000, 1e-3, 1.0),
+    ("case_c", "LUT K=1e12 abm", "",
+     "contact.flange_stiffness=1e12 contact.method=lut solver.method=abm solver.step=0.00025",
+     "failed", 0.0, 500, 2e-3, 0.5),
+    ("case_d", "KEC bdf tol=1e-6", "",
+     "contact.method=kec solver.atol=1e-06 solver.method=bdf solver.rtol=1e-06", "ok", 4.0, 800,
+     1e-4, 1.0),
+    ("case_r", "KEC ref", "reference",
+     "contact.method=kec profiles.refined_tables=true solver.atol=1e-10 solver.method=bdf "
+     "solver.rtol=1e-09", "ok", 9.0, 5000, 0.0, 1.0),
+    ("case_q", "KEC ref check", "reference_check",
+     "contact.method=kec profiles.refined_tables=true solver.atol=1e-11 solver.method=bdf "
+     "solver.rtol=1e-10", "ok", 12.0, 9000, 1e-6, 1.0),
+]
+
+
+def make_study(d):
+    os.makedirs(d, exist_ok=True)
+    t_full = np.linspace(0, 1, 101)
+    base_y = 1e-3 * np.sin(2 * np.pi * t_full)
+    with open(os.path.join(d, "summary.csv"), "w", newline="") as fr, \
+            open(os.path.join(d, "summary_cases.csv"), "w", newline="") as fc:
+        wr, wc = csv.writer(fr), csv.writer(fc)
+        wr.writerow(["case", "repeat", "label", "role", "base", "overrides", "status",
+                     "cpu_time_s", "rhs_evals", "t_reached", "message", "file"])
+        wc.writerow(["case", "label", "role", "base", "overrides", "runs", "runs_ok", "status",
+                     "median_cpu_time_s", "min_cpu_time_s", "max_cpu_time_s", "rhs_evals",
+                     "rhs_evals_jac", "steps", "rejected_steps", "jacobian_evals",
+                     "nonlinear_iters", "t_reached", "model_evaluations", "message", "file"])
+        for cid, lab, role, ov, st, cpu, ev, dy, tend in CASES:
+            n = int(round(tend * 100)) + 1
+            h5 = os.path.join(d, f"{cid}_r0.h5")
+            write_case(h5, t_full[:n], base_y[:n] + dy, flange=1.0 if "lut" in ov else 0.0,
+                       status=st, method="lut" if "lut" in ov else "kec")
+            msg = "step size too small at t = 0.5" if st != "ok" else ""
+            wr.writerow([cid, 0, lab, role, "b.lua", ov, st, cpu, ev, tend, msg, h5])
+            wc.writerow([cid, lab, role, "b.lua", ov, 1, int(st == "ok"), st, cpu, cpu, cpu, ev,
+                         0, ev, 0, 0, 0, tend, ev, msg, h5])
+
+
+DIR = os.path.join(TMP, "study")
+make_study(DIR)
+
+
+@test
+def labels_and_keys():
+    assert rs.compact(1e-06) == "1e-6" and rs.compact(7.075e13) == "7.075e13"
+    ov = rs.parse_overrides("solver.method=bdf solver.rtol=1e-06 solver.atol=1e-06 "
+                            "solver.max_step=0.001")
+    assert rs.solver_text(ov) == "bdf tol=1e-6 hmax=1ms", rs.solver_text(ov)
+    st = rs.load_study(DIR)
+    c = {x.id: x for x in st.cases}
+    assert c["case_b"].method == "lut" and c["case_b"].K == 1e10 and c["case_a"].K is None
+    assert c["case_b"].solver_key == "abm h=0.25ms"
+    assert c["case_b"].model_key == "LUT K=1e10"
+    assert c["case_r"].physical_key() == c["case_d"].physical_key()
+    assert c["case_b"].physical_key() != c["case_d"].physical_key()
+
+
+@test
+def accuracy_pairs_eq33():
+    st = rs.load_study(DIR)
+    rows = rs.accuracy_rows(st)
+    by = {(r["lut_case"], r["wheelset"]): r for r in rows}
+    # LUT K=1e10 = KEC + 1 mm on every wheelset (times k for wheelset k: y scales, offset too).
+    r = by[("case_b", "ws1")]
+    assert abs(float(r["max_abs_mm"]) - 1.0) < 1e-9 and abs(float(r["mean_abs_mm"]) - 1.0) < 1e-9
+    assert abs(float(by[("case_b", "ws4")]["max_abs_mm"]) - 4.0) < 1e-9
+    assert float(r["eq33_max"]) == float(r["eq33_mean"]) > 0
+    assert abs(float(by[("case_b", "all")]["max_abs_mm"]) - 4.0) < 1e-9
+    # The failed LUT run is compared up to where it stopped.
+    f = by[("case_c", "ws1")]
+    assert f["samples"] == 51 and "failed" in f["note"], f
+    assert ("case_d", "ws1") not in by  # BDF has no LUT partner
+
+
+@test
+def work_precision_against_reference():
+    st = rs.load_study(DIR)
+    rows = {r["case"]: r for r in rs.work_precision_rows(st)}
+    assert abs(float(rows["case_d"]["y_max_mm"]) - 0.4) < 1e-6, rows["case_d"]  # 0.1 mm x ws4
+    assert abs(float(rows["case_d"]["y_rms_mm"]) - 0.1 * np.sqrt(7.5)) < 1e-3
+    assert rows["case_q"]["note"].startswith("reference_check")
+    assert abs(float(rows["case_q"]["y_max_mm"]) - 0.004) < 1e-9
+    assert rows["case_b"]["note"] == "no reference case with the same model"
+
+
+@test
+def effects_relative():
+    st = rs.load_study(DIR)
+    rows = {r["case"]: r for r in rs.effect_rows(st)}
+    assert float(rows["case_a"]["us_per_eval"]) == 2000.0
+    assert float(rows["case_b"]["relative_to_baseline"]) == 1.5
+    assert rows["case_c"]["us_per_eval"] == ""  # failed
+
+
+@test
+def plot_study_writes_everything():
+    out = subprocess.run(["/usr/bin/python3", os.path.join(PLOTS, "plot_study.py"), DIR],
+                         capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    names = {os.path.basename(p) for p in out.stdout.split()}
+    for n in ("study_cost.png", "study_cost.csv", "study_failures.csv",
+              "study_accuracy_lut_vs_kec.csv", "study_accuracy_lut_vs_kec.png",
+              "study_work_precision.csv", "study_work_precision.png", "study_effects.csv",
+              "study_effects.png", "study_lut_stiffness_abm_h_0.25ms.png"):
+        assert n in names and os.path.getsize(os.path.join(DIR, n)) > 0, (n, names)
+    fails = list(csv.DictReader(open(os.path.join(DIR, "study_failures.csv"))))
+    assert len(fails) == 1 and fails[0]["reason"].startswith("step size too small"), fails
+    cost = {r["case"]: r for r in csv.DictReader(open(os.path.join(DIR, "study_cost.csv")))}
+    assert cost["case_b"]["K"] == "1e10" and cost["case_b"]["us_per_eval"] == "3000.000"
+
+
+@test
+def not_a_study_folder():
+    out = subprocess.run(["/usr/bin/python3", os.path.join(PLOTS, "plot_study.py"), TMP],
+                         capture_output=True, text=True)
+    assert out.returncode == 1 and out.stderr.startswith("plot_study: error: "), out.stderr
+
+
+def main():
+    passed = failed = 0
+    for fn in _tests:
+        try:
+            fn()
+            passed += 1
+            print(f"ok: {fn.__name__}")
+        except Exception:  # noqa: BLE001
+            failed += 1
+            print(f"FAILED: {fn.__name__}")
+            traceback.print_exc()
+    print(f"{passed} passed, {failed} failed")
+    if failed == 0 and not os.environ.get("RB_KEEP_TMP"):
+        shutil.rmtree(TMP, ignore_errors=True)
+    else:
+        print(f"work files kept in {TMP}")
+    return 0 if failed == 0 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
