@@ -1,0 +1,409 @@
+#!/usr/bin/env python3
+"""Regenerates the measured tables and figures of docs/studies.md and docs/performance.md from
+the outputs of `./wb studies` (issue 7: "one command regenerates every table and figure").
+
+    /usr/bin/python3 plots/update_docs.py OUT_DIR [--build BUILD_DIR] [--docs DOCS_DIR]
+
+OUT_DIR holds one folder per study (efficiency_case3, refinement, work_precision, effects,
+speed, each with the study_*.csv / *.png of plot_study.py) and bench_wagon.json (Google
+Benchmark, one wagon evaluation and its parts). BUILD_DIR/hard/hard_cases.csv is the hard-case
+suite's record. Every generated block sits between the markers
+
+    <!-- generated: NAME (plots/update_docs.py) -->
+    ...
+    <!-- end: NAME -->
+
+in the markdown files: the text around them is written by hand and is kept; a block whose input
+is missing is replaced by a line saying so (never by stale numbers). Figures are copied to
+docs/figures/<study>_<name>.png.
+"""
+import argparse
+import csv
+import json
+import os
+import re
+import shutil
+import sys
+from typing import Dict, List, Optional
+
+def read_csv(path: str) -> List[dict]:
+    if not os.path.exists(path):
+        return []
+    with open(path, newline="") as f:
+        return list(csv.DictReader(row for row in f if not row.startswith("#")))
+
+
+def num(v, default=None) -> Optional[float]:
+    try:
+        x = float(v)
+        return x
+    except (TypeError, ValueError):
+        return default
+
+
+def fmt(x, spec="{:.3g}", empty="–") -> str:
+    return empty if x is None else spec.format(x)
+
+
+def table(header: List[str], rows: List[List[str]]) -> str:
+    out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    out += ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
+    return "\n".join(out)
+
+
+def replace_block(text: str, name: str, body: str) -> str:
+    start = f"<!-- generated: {name} (plots/update_docs.py) -->"
+    end = f"<!-- end: {name} -->"
+    pat = re.compile(re.escape(start) + r".*?" + re.escape(end), re.S)
+    if not pat.search(text):
+        raise KeyError(f"marker '{name}' not found")
+    return pat.sub(lambda _: start + "\n" + body.strip() + "\n" + end, text)
+
+
+def missing(what: str) -> str:
+    return f"*Not generated: {what} is missing. Run `./wb studies` (see the top of this page).*"
+
+
+# ---- efficiency (paper Tables 7, 12-16) --------------------------------------------------------
+
+PAPER_INTEGRATOR = {"dopri5": "ode45", "bdf": "ode15s", "rk4": "RK4", "abm": "ABM"}
+
+
+def solver_setting(r: dict) -> str:
+    if r.get("tol"):
+        return f"{r['integrator']} {r['tol']}"
+    if r.get("step_s"):
+        return f"{r['integrator']} {num(r['step_s']) * 1e3:g} ms"
+    return r.get("integrator", "")
+
+
+def paper_rows() -> List[dict]:
+    here = os.path.dirname(os.path.abspath(__file__))
+    return read_csv(os.path.join(here, "..", "docs", "data", "paper_efficiency.csv"))
+
+
+def paper_lookup(paper, method, K, tables, integrator, tol) -> Optional[dict]:
+    pi = PAPER_INTEGRATOR.get(integrator, integrator)
+    for p in paper:
+        if (p["method"] == method and p["integrator"] == pi and p["tables"] == tables and
+                (method == "kec" or num(p["flange_stiffness"]) == num(K)) and
+                (not p["tol"] or num(p["tol"]) == num(tol))):
+            return p
+    return None
+
+
+def cost_cell(r: Optional[dict], sim: float) -> str:
+    if r is None:
+        return "–"
+    if r["status"] != "ok":
+        return "failed"
+    cpu = num(r["cpu_median_s"])
+    return f"{cpu:.2f} s / {int(r['rhs_evals']) + int(r['rhs_evals_jac'] or 0)} ({sim / cpu:.0f}x)"
+
+
+def efficiency_block(outdir: str) -> Dict[str, str]:
+    rows = read_csv(os.path.join(outdir, "efficiency_case3", "study_cost.csv"))
+    if not rows:
+        return {"efficiency": missing("out/studies/efficiency_case3/study_cost.csv"),
+                "efficiency_paper": missing("out/studies/efficiency_case3/study_cost.csv")}
+    sim = max(num(r["t_reached_s"], 0) for r in rows)
+    models = [("kec", "")] + [("lut", k) for k in sorted({r["K"] for r in rows if r["K"]},
+                                                         key=lambda k: num(k))]
+    settings = []
+    for r in rows:
+        s = solver_setting(r)
+        if s not in settings:
+            settings.append(s)
+    order = {"rk4": 0, "abm": 1, "dopri5": 2, "bdf": 3, "ida": 4}
+    settings.sort(key=lambda s: (order.get(s.split()[0], 9), s))
+
+    def find(method, K, s):
+        for r in rows:
+            if r["method"] == method and (method == "kec" or r["K"] == K) and \
+                    solver_setting(r) == s:
+                return r
+        return None
+
+    head = ["solver"] + [("KEC" if m == "kec" else f"LUT K={k}") for m, k in models]
+    body = [[s] + [cost_cell(find(m, k, s), sim) for m, k in models] for s in settings]
+    eff = (f"CPU time (median of the repeats) / rhs evaluations incl. finite-difference Jacobian "
+           f"columns (x real time over {sim:.2f} s simulated):\n\n" + table(head, body))
+
+    # Beside the paper: evaluation counts directly, CPU times as LUT/KEC ratios.
+    paper = paper_rows()
+    prow = []
+    for s in settings:
+        integ, _, tol = s.partition(" ")
+        tol = tol if not tol.endswith("ms") else ""
+        kec = find("kec", "", s)
+        pk = paper_lookup(paper, "kec", "", "default", integ, tol)
+        for m, k in models[1:]:
+            lut = find(m, k, s)
+            pl = paper_lookup(paper, "lut", k, "default", integ, tol)
+            if lut is None:
+                continue
+            ours_ratio = (num(lut["cpu_median_s"]) / num(kec["cpu_median_s"])
+                          if kec and lut["status"] == "ok" and kec["status"] == "ok" else None)
+            paper_ratio = (num(pl["cpu_median_s"]) / num(pk["cpu_median_s"])
+                           if pl and pk else None)
+            prow.append([s, k, lut["rhs_evals"] if lut["status"] == "ok" else "failed",
+                         pl["evaluations"] if pl else "–",
+                         kec["rhs_evals"] if kec and kec["status"] == "ok" else "–",
+                         pk["evaluations"] if pk else "–",
+                         fmt(ours_ratio, "{:.2f}"), fmt(paper_ratio, "{:.2f}")])
+    paper_tab = table(["solver", "LUT K", "LUT evals (ours)", "LUT evals (paper)",
+                       "KEC evals (ours)", "KEC evals (paper)", "CPU LUT/KEC (ours)",
+                       "CPU LUT/KEC (paper)"], prow)
+    return {"efficiency": eff, "efficiency_paper": paper_tab}
+
+
+# ---- accuracy (paper Eq. 33, Table 8) ----------------------------------------------------------
+
+def accuracy_block(outdir: str) -> str:
+    rows = read_csv(os.path.join(outdir, "efficiency_case3", "study_accuracy_lut_vs_kec.csv"))
+    rows = [r for r in rows if r.get("wheelset") == "all"]
+    if not rows:
+        return missing("out/studies/efficiency_case3/study_accuracy_lut_vs_kec.csv")
+    Ks = sorted({r["K"] for r in rows}, key=lambda k: num(k))
+    solvers = []
+    for r in rows:
+        if r["solver"] not in solvers:
+            solvers.append(r["solver"])
+    body = []
+    for s in solvers:
+        line = [s]
+        for k in Ks:
+            r = next((x for x in rows if x["solver"] == s and x["K"] == k), None)
+            if r is None or not r["max_abs_mm"]:
+                line.append("–")
+            else:
+                flag = "" if r["lut_status"] == "ok" and r["kec_status"] == "ok" else " (failed run)"
+                line.append(f"{num(r['max_abs_mm']):.3f} / {num(r['mean_abs_mm']):.3f}{flag}")
+        body.append(line)
+    return ("max / mean |y_KEC - y_LUT| [mm] over all four wheelsets and the whole run:\n\n" +
+            table(["solver"] + [f"K={k}" for k in Ks], body))
+
+
+# ---- refinement (paper Tables 9-11, 17-18) -----------------------------------------------------
+
+def refinement_block(outdir: str) -> str:
+    rows = read_csv(os.path.join(outdir, "refinement", "study_cost.csv"))
+    if not rows:
+        return missing("out/studies/refinement/study_cost.csv")
+    sim = max(num(r["t_reached_s"], 0) for r in rows)
+    keys = []
+    for r in rows:
+        k = (r["method"], r["K"], solver_setting(r))
+        if k not in keys:
+            keys.append(k)
+    body = []
+    for method, K, s in keys:
+        d = next((r for r in rows if (r["method"], r["K"], solver_setting(r)) == (method, K, s)
+                  and r["refined_tables"] == "false"), None)
+        f = next((r for r in rows if (r["method"], r["K"], solver_setting(r)) == (method, K, s)
+                  and r["refined_tables"] == "true"), None)
+        ratio = (num(f["cpu_median_s"]) / num(d["cpu_median_s"])
+                 if d and f and d["status"] == "ok" and f["status"] == "ok" else None)
+        body.append([method.upper() + (f" K={K}" if K else ""), s, cost_cell(d, sim),
+                     cost_cell(f, sim), fmt(ratio, "{:.2f}")])
+    builds = []
+    for method in ("kec", "lut"):
+        for ref in ("false", "true"):
+            r = next((x for x in rows if x["method"] == method and x["refined_tables"] == ref
+                      and x["table_build_time_s"]), None)
+            if r:
+                builds.append([method.upper(), "refined" if ref == "true" else "default",
+                               f"{num(r['table_build_time_s']):.3f} s",
+                               f"{num(r['table_bytes']) / 1e6:.2f} MB"])
+    return (table(["model", "solver", "default tables", "refined tables", "CPU refined/default"],
+                  body) + "\n\nContact tables (as recorded in the result files; a run that "
+                  "loaded them from the disk cache records the load time):\n\n" +
+            table(["method", "tables", "build or load time", "size"], builds))
+
+
+# ---- work precision ----------------------------------------------------------------------------
+
+def work_precision_block(outdir: str) -> str:
+    rows = read_csv(os.path.join(outdir, "work_precision", "study_work_precision.csv"))
+    if not rows:
+        return missing("out/studies/work_precision/study_work_precision.csv")
+    total = [r for r in rows if r["against"] == "reference"]
+    out = []
+    special = [r for r in total if r["kind"] in ("reference_check", "table_error")]
+    if special:
+        out.append("Reference quality (max error of wheelset y [mm] / yaw [mrad] / normal force "
+                   "[kN]):\n")
+        out.append(table(["model", "what", "y", "yaw", "Q"],
+                         [[r["model"], r["kind"].replace("_", " "),
+                           r.get("y_max_mm", ""), r.get("yaw_max_mrad", ""),
+                           r.get("Q_max_kN", "")] for r in special]))
+    # The cheapest setting per integrator that reaches each accuracy level in wheelset y.
+    levels = [1.0, 0.1, 0.01, 0.001]
+    cases = [r for r in total if r["kind"] == "case"]
+    models = sorted({r["model"] for r in cases})
+    body = []
+    for m in models:
+        for integ in sorted({r["integrator"] for r in cases if r["model"] == m}):
+            line = [m, integ]
+            for lev in levels:
+                best = None
+                for r in cases:
+                    if r["model"] != m or r["integrator"] != integ or r["status"] != "ok":
+                        continue
+                    e = num(r.get("y_max_mm"))
+                    if e is not None and e <= lev:
+                        cpu = num(r["cpu_median_s"])
+                        if best is None or cpu < best[0]:
+                            best = (cpu, r["setting"])
+                line.append("–" if best is None else f"{best[0]:.2f} s ({best[1]})")
+            body.append(line)
+    out.append("\nCheapest setting that keeps the largest error of the wheelsets' lateral "
+               "displacement below each level (total error against the refined-table reference; "
+               "CPU seconds, setting):\n")
+    out.append(table(["model", "integrator"] + [f"y err <= {lev:g} mm" for lev in levels], body))
+    return "\n".join(out)
+
+
+# ---- effects -----------------------------------------------------------------------------------
+
+def effects_block(outdir: str) -> str:
+    rows = read_csv(os.path.join(outdir, "effects", "study_effects.csv"))
+    if not rows:
+        return missing("out/studies/effects/study_effects.csv")
+    labels = []
+    for r in rows:
+        lab = re.sub(r"\b(kec|lut)\b", "", r["label"]).strip(" ,")
+        if lab not in labels:
+            labels.append(lab)
+
+    def cell(method, lab):
+        for r in rows:
+            if r["method"] == method and re.sub(r"\b(kec|lut)\b", "", r["label"]).strip(" ,") == lab:
+                if not r["us_per_eval"]:
+                    return "failed"
+                return (f"{num(r['us_per_eval']):.2f} µs ({num(r['relative_to_baseline']):.3f}, "
+                        f"±{r['spread_percent'] or '?'} %)")
+        return "–"
+
+    return ("CPU time per right-hand-side evaluation (median of the repeats; in brackets: relative "
+            "to the full model, and the spread (max - min) / median of the repeats):\n\n" +
+            table(["variant", "KEC", "LUT"], [[lab, cell("kec", lab), cell("lut", lab)]
+                                              for lab in labels]))
+
+
+# ---- speed targets -----------------------------------------------------------------------------
+
+def speed_block(outdir: str) -> str:
+    rows = read_csv(os.path.join(outdir, "speed", "study_cost.csv"))
+    if not rows:
+        return missing("out/studies/speed/study_cost.csv")
+    body = []
+    for r in rows:
+        sim = num(r["t_reached_s"], 0)
+        cpu = num(r["cpu_median_s"])
+        ok = r["status"] == "ok"
+        factor = sim / cpu if ok and cpu else None
+        target = ("100x" if "target 1" in r["label"] else "1x" if "target 2" in r["label"]
+                  else "")
+        met = ""
+        if target and factor is not None:
+            met = "met" if factor >= float(target[:-1]) else "NOT met"
+        body.append([r["label"], r["status"], f"{cpu:.3f} s ({r['cpu_min_s']}-{r['cpu_max_s']})",
+                     fmt(factor, "{:.1f}x"), r["rhs_evals"], r["rhs_evals_jac"] or "0",
+                     r["steps"], fmt(num(r["us_per_eval"]), "{:.2f}"), target, met])
+    return table(["case", "status", "CPU median (min-max)", "x real time", "rhs evals",
+                  "Jacobian evals", "steps", "µs / eval", "target", ""], body)
+
+
+def bench_block(outdir: str) -> str:
+    path = os.path.join(outdir, "bench_wagon.json")
+    if not os.path.exists(path):
+        return missing("out/studies/bench_wagon.json")
+    with open(path) as f:
+        data = json.load(f)
+    body = []
+    for b in data.get("benchmarks", []):
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+            continue
+        unit = b.get("time_unit", "ns")
+        scale = {"ns": 1e-3, "us": 1.0, "ms": 1e3, "s": 1e6}[unit]
+        body.append([b["name"], f"{b['cpu_time'] * scale:.3f}", str(b.get("iterations", ""))])
+    ctx = data.get("context", {})
+    return (f"Google Benchmark on {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs at "
+            f"{ctx.get('mhz_per_cpu', '?')} MHz, {ctx.get('date', '')}:\n\n" +
+            table(["benchmark", "CPU µs", "iterations"], body))
+
+
+# ---- hard cases --------------------------------------------------------------------------------
+
+def hard_block(build: str) -> str:
+    rows = read_csv(os.path.join(build, "hard", "hard_cases.csv"))
+    if not rows:
+        return missing(f"{build}/hard/hard_cases.csv (ctest -L hard)")
+    body = []
+    for r in rows:
+        cpu = num(r["cpu_s"])
+        evals = int(num(r["rhs_evals"], 0)) + int(num(r["rhs_evals_jac"], 0))
+        reason = (r["message"] or "")[:90].replace("|", "/")
+        body.append([r["case"], r["combination"], r["status"], r["verdict"],
+                     f"{num(r['t_reached'], 0):.2f} / {num(r['t_end'], 0):.2f}",
+                     fmt(cpu, "{:.2f}"), str(evals), fmt(num(r["max_abs_y_mm"]), "{:.2f}"),
+                     fmt(num(r["max_abs_yq"]), "{:.2f}"), reason])
+    return table(["case", "combination", "status", "test", "t reached / end [s]", "CPU [s]",
+                  "rhs evals", "max |y| [mm]", "max |Y/Q|", "failure"], body)
+
+
+# ---- figures -----------------------------------------------------------------------------------
+
+def copy_figures(outdir: str, docs: str) -> List[str]:
+    figdir = os.path.join(docs, "figures")
+    os.makedirs(figdir, exist_ok=True)
+    copied = []
+    for study in ("efficiency_case3", "refinement", "work_precision", "effects", "speed"):
+        d = os.path.join(outdir, study)
+        if not os.path.isdir(d):
+            continue
+        for name in sorted(os.listdir(d)):
+            if name.startswith("study_") and name.endswith(".png"):
+                dst = os.path.join(figdir, f"{study}_{name[len('study_'):]}")
+                shutil.copyfile(os.path.join(d, name), dst)
+                copied.append(dst)
+    return copied
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("outdir")
+    ap.add_argument("--build", default="build")
+    ap.add_argument("--docs", default=os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                   "..", "docs"))
+    a = ap.parse_args(argv)
+    blocks = {"studies.md": {}, "performance.md": {}}
+    blocks["studies.md"].update(efficiency_block(a.outdir))
+    blocks["studies.md"]["accuracy"] = accuracy_block(a.outdir)
+    blocks["studies.md"]["refinement"] = refinement_block(a.outdir)
+    blocks["studies.md"]["work_precision"] = work_precision_block(a.outdir)
+    blocks["studies.md"]["hard_cases"] = hard_block(a.build)
+    blocks["performance.md"]["effects"] = effects_block(a.outdir)
+    blocks["performance.md"]["speed"] = speed_block(a.outdir)
+    blocks["performance.md"]["bench"] = bench_block(a.outdir)
+    for md, items in blocks.items():
+        path = os.path.join(a.docs, md)
+        with open(path) as f:
+            text = f.read()
+        for name, body in items.items():
+            try:
+                text = replace_block(text, name, body)
+            except KeyError as e:
+                print(f"update_docs: {path}: {e}", file=sys.stderr)
+                return 1
+        with open(path, "w") as f:
+            f.write(text)
+        print(f"updated {path}")
+    for p in copy_figures(a.outdir, a.docs):
+        print(f"copied {p}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
