@@ -31,6 +31,21 @@ TEST(Lut, NodesAreTheSolvedGeometry) {
   }
 }
 
+// evalValues (the dynamics' values-only path) returns exactly eval()'s values, inside and outside.
+TEST(Lut, EvalValuesIsBitIdenticalToEval) {
+  const LutTable& lut = rbtest::coneLut();
+  LutSample full, vals;
+  for (double y = -9.1e-3; y < 9.1e-3; y += 0.377e-3) {
+    for (double xi = -6e-3; xi < 6e-3; xi += 0.91e-3) {
+      lut.eval(y, xi, full);
+      lut.evalValues(y, xi, vals);
+      EXPECT_EQ(full.inside, vals.inside);
+      for (std::size_t ch = 0; ch < kLutChannels; ++ch)
+        ASSERT_EQ(full.value[ch], vals.value[ch]) << ch << " " << y << " " << xi;
+    }
+  }
+}
+
 TEST(Lut, InterpolationAccuracyBetweenNodes) {
   // Cone on arc: smooth geometry, so the error is the interpolation error: O(h^4) in y (splines)
   // and O(h^3) in xi_g (Akima, 1 mm steps).

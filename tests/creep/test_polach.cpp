@@ -54,6 +54,24 @@ TEST(Polach, PatchFromHertzAndKalker) {
   EXPECT_EQ(p.Q, 1.0e5);
 }
 
+// makeContactPatch computes the semi-axes itself (without the Hertz stiffness): exactly hertz()'s,
+// for rolling-major and lateral-major ellipses and without load.
+TEST(Polach, PatchSemiAxesAreHertzBitForBit) {
+  for (const RelativeCurvatures k : {RelativeCurvatures{1.09, 3.3}, RelativeCurvatures{4.0, 0.6},
+                                     RelativeCurvatures{2.0, 2.0}}) {
+    for (double N : {0.0, 3.7e4, 1.0e5}) {
+      const HertzShape shape = hertzShape(k.A, k.B);
+      const ContactPatch p = makeContactPatch(kSteel, k, shape, N);
+      const HertzContact h = hertz(kSteel, k, shape, N);
+      EXPECT_EQ(p.a, N > 0.0 ? h.a : 0.0);
+      EXPECT_EQ(p.b, N > 0.0 ? h.b : 0.0);
+      const auto c = kalkerCoefficients(shape.aOverB(), kSteel.nu);
+      EXPECT_EQ(p.c11, c.c11);
+      EXPECT_EQ(p.c23, c.c23);
+    }
+  }
+}
+
 TEST(Polach, SmallCreepageEqualsKalkerLinear) {
   const CreepParams cp = params();
   double worst = 0.0;

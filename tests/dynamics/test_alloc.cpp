@@ -48,5 +48,37 @@ TEST(Allocation, RhsAndOutputsAllocateNothing) {
   }
 }
 
+// Prescribed spin and a speed ramp (a different layout and the -M_ps a terms) allocate nothing.
+TEST(Allocation, PrescribedSpinAndRampAllocateNothing) {
+  for (const char* f :
+       {"scenarios/validation/case3_kec.lua", "scenarios/validation/case3_lut.lua"}) {
+    for (const char* coupling : {"lagged", "consistent"}) {
+      const Compiled c =
+          compileScenario(f, {"contact.wheelset_spin=prescribed", "vehicle.acceleration=0.7",
+                              std::string("contact.normal_forces=") + coupling});
+      dynamics::ContactVehicleOde ode(*c.vehicle, *c.contact, *c.track);
+      Eigen::VectorXd y = ode.initialState(0.0);
+      const auto& l = ode.layout();
+      y[l.wsPosition(0, 0)] = -7.0e-3;
+      y[l.wsRate(3, 2)] = 0.01;
+      Eigen::VectorXd yd(ode.size());
+      std::vector<dynamics::WheelOutput> wo(2 * static_cast<std::size_t>(l.n_ws));
+      std::vector<vehicle::Vector6d> q(c.vehicle->bodies.size());
+      double sink = 0.0;
+      const long before = g_allocations.load();
+      for (int k = 0; k < 50; ++k) {
+        const double t = 5.0 + 0.01 * k;
+        EXPECT_EQ(ode.rhs(t, y.data(), yd.data()), 0) << ode.lastError();
+        sink += yd[l.wsRate(0, 0)];
+        EXPECT_EQ(ode.wheelOutputs(t, y.data(), wo), 0);
+        EXPECT_EQ(ode.bodyAccelerations(t, y.data(), q), 0);
+        sink += wo[0].normal + q[0][1];
+      }
+      EXPECT_EQ(g_allocations.load() - before, 0) << f << " " << coupling;
+      EXPECT_TRUE(std::isfinite(sink));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rbtest

@@ -118,6 +118,34 @@ Compiled compile(const RunOptions& o) {
     }
     if (!(spec.vehicle.speed > 0) && !(spec.run.duration > 0))
       d.add(spec.vehicle.loc, "vehicle: speed is 0, so give run.duration");
+    // Speed ramp: V(t) = V0 + a t must stay >= 0 over the run (no clamping: a vehicle that stops
+    // and reverses is not what a ramp scenario means). Without run.duration the run ends at
+    // run.distance (or the track end), reached only if V0^2 + 2 a distance >= 0.
+    const double a = spec.vehicle.acceleration;
+    if (a < 0.0) {
+      const auto g = [](double v) {
+        std::ostringstream os;
+        os << v;
+        return os.str();
+      };
+      const double t_stop = spec.vehicle.speed / -a;
+      if (spec.run.duration > 0 && spec.run.duration > t_stop)
+        d.add(spec.vehicle.loc, "vehicle: acceleration " + g(a) +
+                                    " m/s^2 stops the vehicle at t = " + g(t_stop) +
+                                    " s, before run.duration = " + g(spec.run.duration) + " s");
+      if (!(spec.run.duration > 0)) {
+        double lead = -1e300;
+        for (const auto& b : c.vehicle->bodies) lead = std::max(lead, b.x);
+        const double dist = spec.run.distance > 0
+                                ? spec.run.distance
+                                : c.track->geometry().length() - (c.vehicle->start + lead);
+        if (spec.vehicle.speed * spec.vehicle.speed + 2.0 * a * dist < 0.0)
+          d.add(spec.vehicle.loc,
+                "vehicle: acceleration " + g(a) + " m/s^2 stops the vehicle after " +
+                    g(spec.vehicle.speed * t_stop / 2.0) + " m, before the run's distance " +
+                    g(dist) + " m; give run.duration or a smaller deceleration");
+      }
+    }
   }
   d.throwIfAny();
   const auto& irr = spec.track.irregularities;
@@ -164,7 +192,13 @@ double endTime(const Compiled& c) {
   for (const auto& b : v.bodies) lead = std::max(lead, b.x);
   double distance =
       run.distance > 0 ? run.distance : c.track->geometry().length() - (v.start + lead);
-  return std::max(distance, 0.0) / v.speed;
+  distance = std::max(distance, 0.0);
+  const double a = v.acceleration;
+  if (a == 0.0) return distance / v.speed;
+  // Speed ramp: V0 t + a t^2 / 2 = distance (the root reached first). compile() has checked that
+  // it is reached before the speed would become negative.
+  const double disc = v.speed * v.speed + 2.0 * a * distance;
+  return disc <= 0.0 ? 0.0 : 2.0 * distance / (v.speed + std::sqrt(disc));
 }
 
 // The request shared by vehicle runs, with the body coordinate channels (s, y, z, roll, pitch,
@@ -181,8 +215,10 @@ SimulationRequest vehicleRequest(const Compiled& c, const RunOptions& options,
   // Progress line only for a person watching a terminal (issue 3).
   r.progress = !options.quiet && isatty(STDERR_FILENO);
   const double lead = c.vehicle->start + c.vehicle->bodies.front().x;
-  const double speed = c.vehicle->speed;
-  r.distance = [lead, speed](double t, const Eigen::VectorXd&) { return lead + speed * t; };
+  const vehicle::VehicleModel* vm = &*c.vehicle;
+  r.distance = [lead, vm](double t, const Eigen::VectorXd&) { return lead + vm->travel(t); };
+  // The imposed forward speed V(t) = V0 + a t (a speed ramp when vehicle.acceleration != 0).
+  r.outputs.push_back({"/vehicle/speed", "m/s"});
   static const char* coords[6] = {"s", "y", "z", "roll", "pitch", "yaw"};
   static const char* units[6] = {"m", "m", "m", "rad", "rad", "rad"};
   std::string names;
@@ -216,6 +252,7 @@ int runGuided(const Compiled& c, const RunOptions& options, io::ResultFile& f) {
   std::vector<vehicle::ElementValue> values(c.output_elements.size());
   const bool acc = c.spec.run.body_accelerations;
   r.sample = [&](double t, const Eigen::VectorXd& y, double* out) {
+    *out++ = v.speedAt(t);
     vehicle::guidedCoordinates(v, layout, t, y.data(), ws);
     for (std::size_t b = 0; b < v.bodies.size(); ++b) {
       for (int k = 0; k < 6; ++k) *out++ = ws.q[b][k];
@@ -272,6 +309,7 @@ int runContact(const Compiled& c, const RunOptions& options, io::ResultFile& f) 
   std::vector<vehicle::Vector6d> q(v.bodies.size());
   std::vector<dynamics::WheelOutput> wo(2 * cm.wheelsets.size());
   r.sample = [&](double t, const Eigen::VectorXd& y, double* out) {
+    *out++ = v.speedAt(t);
     ode.bodyCoordinates(t, y.data(), q);
     for (const auto& qb : q)
       for (int k = 0; k < 6; ++k) *out++ = qb[k];

@@ -683,7 +683,9 @@ KecSolution solveKec(const KecTable& tab, const KecInput& in, const KecSolution*
       break;
     }
     if (it == kMaxIter) break;
-    Eigen::Vector4d dx = J.partialPivLu().solve(-g);
+    // 4x4: the closed-form (cofactor) inverse of Eigen is several times cheaper than a pivoted
+    // LU here; a singular J gives non-finite steps, caught below.
+    Eigen::Vector4d dx = -(J.inverse() * g);
     if (!dx.allFinite()) break;
     const double m = std::max(std::abs(dx(2)), std::abs(dx(3)));
     if (m > kMaxStep) dx *= kMaxStep / m;
@@ -712,7 +714,7 @@ KecSolution solveKec(const KecTable& tab, const KecInput& in, const KecSolution*
       1, 0, -1, 0, 0,    //
       0, 0, 0, -1, 0,    //
       0, 0, 0, 0, -1;
-  sol.dx_dp = -J.partialPivLu().solve(gp);
+  sol.dx_dp = -(J.inverse() * gp);
   const bool inside = sl >= tab.validMin(Side::Left) && sl <= tab.validMax(Side::Left) &&
                       sr >= tab.validMin(Side::Right) && sr <= tab.validMax(Side::Right);
   sol.status = inside ? KecStatus::Ok : KecStatus::OutOfTable;

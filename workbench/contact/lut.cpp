@@ -181,6 +181,38 @@ void LutTable::eval(double y, double xi_g, LutSample& out) const {
   }
 }
 
+void LutTable::evalValues(double y, double xi_g, LutSample& out) const {
+  const Cell c = locate(y, xi_g);
+  out.inside = c.inside;
+  const Basis by(c.t);
+  const std::size_t stride_y = kLutChannels * 4, stride_g = ny_ * kLutChannels * 4;
+  const double* base = &data_[(c.j * ny_ + c.i) * kLutChannels * 4];
+  if (ng_ < 2) {
+    for (std::size_t ch = 0; ch < kLutChannels; ++ch) {
+      double v = 0.0;
+      for (std::size_t a = 0; a < 2; ++a) {
+        const double* p = base + a * stride_y + ch * 4;
+        v += by.A[a] * p[0] + hy_ * by.C[a] * p[1];
+      }
+      out.value[ch] = v;
+    }
+    return;
+  }
+  const Basis bg(c.u);
+  for (std::size_t ch = 0; ch < kLutChannels; ++ch) {
+    double v = 0.0;
+    for (std::size_t b = 0; b < 2; ++b) {
+      for (std::size_t a = 0; a < 2; ++a) {
+        const double* p = base + b * stride_g + a * stride_y + ch * 4;
+        const double f = p[0], fy = hy_ * p[1], fg = hg_ * p[2], fyg = hy_ * hg_ * p[3];
+        v += by.A[a] * bg.A[b] * f + by.C[a] * bg.A[b] * fy + by.A[a] * bg.C[b] * fg +
+             by.C[a] * bg.C[b] * fyg;
+      }
+    }
+    out.value[ch] = v;
+  }
+}
+
 LutValue LutTable::evalChannel(std::size_t ch, double y, double xi_g) const {
   LutValue r;
   const Cell c = locate(y, xi_g);

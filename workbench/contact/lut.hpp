@@ -133,6 +133,10 @@ class LutTable {
 
   // All channels, values and first derivatives. Allocation-free.
   void eval(double y, double xi_g, LutSample& out) const;
+  // All channels, values only (out.d_dy, out.d_dxi are left unchanged): a third of eval()'s work,
+  // for the dynamics, which needs no derivatives of the contact-point quantities. Values are
+  // bit-identical to eval()'s. Allocation-free.
+  void evalValues(double y, double xi_g, LutSample& out) const;
   // One channel with first and second derivatives. Allocation-free.
   LutValue evalChannel(std::size_t channel, double y, double xi_g) const;
   // z and phi only (the LUT constraints of Eq. 17), with first and second derivatives.

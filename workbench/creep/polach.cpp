@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "workbench/core/error.hpp"
+
 namespace rb::creep {
 
 namespace {
@@ -47,13 +49,19 @@ ContactPatch makeContactPatch(const Material& mat, const RelativeCurvatures& k, 
 
 ContactPatch makeContactPatch(const Material& mat, const RelativeCurvatures& k,
                               const HertzShape& shape, double N) {
-  const HertzContact h = hertz(mat, k, shape, N);
-  const KalkerCoefficients c = kalkerCoefficients(h.shape.aOverB(), mat.nu);
+  // The semi-axes of hertz() (same expressions, bit-identical) without its Hertz stiffness and
+  // approach, which the creep laws do not use (a cbrt and a sqrt less per patch evaluation).
+  RB_CHECK(mat.E > 0.0 && mat.nu > -1.0 && mat.nu < 0.5, "invalid material");
+  const KalkerCoefficients c = kalkerCoefficients(shape.aOverB(), mat.nu);
   ContactPatch patch;
   if (N > 0.0) {
+    const double es = contactModulus(mat);
+    const double c0 = std::cbrt(3.0 * N / (4.0 * es * (k.A + k.B)));
+    const double major = shape.m * c0;
+    const double minor = shape.n * c0;
     patch.Q = N;
-    patch.a = h.a;
-    patch.b = h.b;
+    patch.a = shape.rolling_major ? major : minor;
+    patch.b = shape.rolling_major ? minor : major;
   }
   patch.c11 = c.c11;
   patch.c22 = c.c22;

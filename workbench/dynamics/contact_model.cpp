@@ -109,6 +109,10 @@ const char* ContactModel::creepName(CreepModel c) {
   }
   return "?";
 }
+const char* ContactModel::spinName(WheelsetSpin s) {
+  return s == WheelsetSpin::Prescribed ? "prescribed" : "free";
+}
+
 const char* ContactModel::couplingName(NormalForceCoupling c) {
   return c == NormalForceCoupling::Lagged ? "lagged" : "consistent";
 }
@@ -205,6 +209,7 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
   m.method = c.method;
   m.creep = c.creep;
   m.coupling = c.normal_forces;
+  m.spin = c.wheelset_spin;
   m.loc = c.loc;
   for (std::size_t b = 0; b < v.bodies.size(); ++b)
     if (v.bodies[b].kind == vehicle::BodyKind::Wheelset) m.wheelsets.push_back(static_cast<int>(b));

@@ -51,6 +51,7 @@ struct ContactModel {
   ContactMethod method = ContactMethod::Kec;
   CreepModel creep = CreepModel::Polach;
   NormalForceCoupling coupling = NormalForceCoupling::Lagged;
+  WheelsetSpin spin = WheelsetSpin::Free;  // spin a state, or theta_dot = V(t) / centredRadius()
 
   // Profiles, positioning (Lw, Lr, beta, r0), grids and KEC transition lengths.
   contact::ContactGeometryConfig geometry;
@@ -97,6 +98,7 @@ struct ContactModel {
   static const char* methodName(ContactMethod m);
   static const char* creepName(CreepModel c);
   static const char* couplingName(NormalForceCoupling c);
+  static const char* spinName(WheelsetSpin s);  // "free" / "prescribed"
 };
 
 // Tables by content (contact::configHash): compileContact builds a table only when the cache does

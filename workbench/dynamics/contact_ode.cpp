@@ -9,6 +9,7 @@
 #include "workbench/creep/creepages.hpp"
 #include "workbench/creep/hertz.hpp"
 #include "workbench/creep/polach.hpp"
+#include "workbench/dynamics/augmented.hpp"
 #include "workbench/vehicle/kinematics.hpp"
 
 namespace rb::dynamics {
@@ -16,7 +17,6 @@ namespace rb::dynamics {
 namespace {
 
 using Vec5 = Eigen::Matrix<double, 5, 1>;
-using Mat7 = Eigen::Matrix<double, 7, 7>;
 using Vec7 = Eigen::Matrix<double, 7, 1>;
 using vehicle::kPitch;
 using vehicle::kRoll;
@@ -61,8 +61,8 @@ struct NoCreep {
 };
 
 // Rotation about X by the cross-level angle delta of the rail irregularity (Eq. 5).
-Eigen::Vector3d rotX(double delta, double ny, double nz) {
-  const double c = std::cos(delta), s = std::sin(delta);
+// (c, s) = cos, sin of delta, taken once per wheelset and evaluation.
+Eigen::Vector3d rotX(double c, double s, double ny, double nz) {
   return {0.0, c * ny - s * nz, s * ny + c * nz};
 }
 
@@ -98,7 +98,11 @@ struct ContactVehicleOde::WheelsetWork {
   contact::KecSolution kec;
   bool kec_warm = false;
   contact::LutSample lut;
-  double delta_irr = 0.0;  // cross-level angle of the irregular rails [rad]
+  double delta_irr = 0.0;               // cross-level angle of the irregular rails [rad]
+  double cos_irr = 1.0, sin_irr = 0.0;  // its cosine and sine
+  // Irregularities at s = irr_key (the stages of a step at one time share them).
+  track::IrregularityPoint irr;
+  double irr_key = std::numeric_limits<double>::quiet_NaN();
   double ybar_dot = 0.0, xig_dot = 0.0, zbar_dot = 0.0, phibar_dot = 0.0;  // LUT rates
   Eigen::Matrix<double, 2, 5> G = Eigen::Matrix<double, 2, 5>::Zero();
   Eigen::Vector2d gamma = Eigen::Vector2d::Zero();
@@ -115,8 +119,9 @@ struct ContactVehicleOde::WheelsetWork {
   bool has_prev = false;
 };
 
-ContactLayout contactLayout(const vehicle::VehicleModel& m) {
+ContactLayout contactLayout(const vehicle::VehicleModel& m, WheelsetSpin spin) {
   ContactLayout l;
+  l.ws_dof = spin == WheelsetSpin::Prescribed ? 2 : 3;
   l.slot.assign(m.bodies.size(), -1);
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
     const vehicle::BodyKind k = m.bodies[b].kind;
@@ -131,7 +136,7 @@ ContactLayout contactLayout(const vehicle::VehicleModel& m) {
   l.n_free = static_cast<int>(l.free_bodies.size());
   l.n_ws = static_cast<int>(l.wheelsets.size());
   l.n_series = static_cast<int>(m.series_dampers.size());
-  l.size = 10 * l.n_free + 6 * l.n_ws + l.n_series;
+  l.size = 10 * l.n_free + 2 * l.ws_dof * l.n_ws + l.n_series;
   return l;
 }
 
@@ -139,7 +144,7 @@ ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
                                      const ContactModel& contact, const track::TrackModel& track)
     : vehicle_(&vehicle),
       contact_(&contact),
-      layout_(contactLayout(vehicle)),
+      layout_(contactLayout(vehicle, contact.spin)),
       ws_(vehicle::makeWorkspace(vehicle)) {
   RB_CHECK(layout_.n_ws > 0, "ContactVehicleOde: the vehicle has no wheelset");
   RB_CHECK(contact.method == ContactMethod::Kec ? contact.kec != nullptr : contact.lut != nullptr,
@@ -188,7 +193,7 @@ int ContactVehicleOde::setCoordinates(double t, const double* y) {
   const vehicle::VehicleModel& m = *vehicle_;
   const ContactModel& c = *contact_;
   const ContactLayout& l = layout_;
-  const double V = m.speed;
+  const double V = m.speedAt(t), acc = m.acceleration;
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
     vehicle::Vector6d& q = ws_.q[b];
     vehicle::Vector6d& qd = ws_.qd[b];
@@ -217,13 +222,26 @@ int ContactVehicleOde::setCoordinates(double t, const double* y) {
     vehicle::Vector6d& q = ws_.q[b];
     vehicle::Vector6d& qd = ws_.qd[b];
     for (int cc = 0; cc < 3; ++cc) {
-      q[kWsCoord[cc]] = y[l.wsPosition(w, cc)];
+      const int ip = l.wsPosition(w, cc);
+      if (ip < 0) continue;
+      q[kWsCoord[cc]] = y[ip];
       qd[kWsCoord[cc]] = y[l.wsRate(w, cc)];
     }
+    if (!l.spinFree()) {
+      // Prescribed spin: rolling at the centred radius, theta_dot = V(t) / r_c.
+      const double rc = c.centredRadius();
+      q[kPitch] = m.travel(t) / rc;
+      qd[kPitch] = V / rc;
+    }
     const double yy = q[kY], yd = qd[kY];
-    track::IrregularityPoint ip;
-    if (irr_) ip = irr_->at(q[kS]);
+    if (irr_ && !(W.irr_key == q[kS])) {
+      W.irr = irr_->at(q[kS]);
+      W.irr_key = q[kS];
+    }
+    const track::IrregularityPoint& ip = W.irr;
     W.delta_irr = (ip.z_l - ip.z_r) / (2.0 * lr);
+    W.cos_irr = std::cos(W.delta_irr);
+    W.sin_irr = std::sin(W.delta_irr);
     double z = 0.0, phi = 0.0, zd = 0.0, phid = 0.0;
     const auto& xi_ss = ip.xi_ss;
     const double a_ss = xi_ss[static_cast<std::size_t>(track::Channel::Alignment)];
@@ -255,9 +273,9 @@ int ContactVehicleOde::setCoordinates(double t, const double* y) {
       pd << yd, V * ip.y_l_s, V * ip.y_r_s, V * ip.z_l_s, V * ip.z_r_s;
       const Eigen::Vector4d xd = sol.dx_dp * pd;
       const Eigen::Vector4d quad = contact::kecQuadraticTerm(sol, xd);
-      Eigen::Vector4d pdd;  // pddot without yddot: the rails' irregularities
-      pdd << V2 * (a_ss + 0.5 * g_ss), V2 * (a_ss - 0.5 * g_ss), V2 * (v_ss + 0.5 * c_ss),
-          V2 * (v_ss - 0.5 * c_ss);
+      Eigen::Vector4d pdd;  // pddot without yddot: the rails' irregularities, V^2 p'' + a p'
+      pdd << V2 * (a_ss + 0.5 * g_ss) + acc * ip.y_l_s, V2 * (a_ss - 0.5 * g_ss) + acc * ip.y_r_s,
+          V2 * (v_ss + 0.5 * c_ss) + acc * ip.z_l_s, V2 * (v_ss - 0.5 * c_ss) + acc * ip.z_r_s;
       z = sol.z;
       phi = sol.phi;
       zd = xd(0);
@@ -283,7 +301,7 @@ int ContactVehicleOde::setCoordinates(double t, const double* y) {
       const double ybd = yd - V * xa_s, xgd = V * xg_s;
       contact::LutValue zv, pv;
       c.lut->evalZPhi(ybar, xg, zv, pv);
-      c.lut->eval(ybar, xg, W.lut);
+      c.lut->evalValues(ybar, xg, W.lut);  // values only: no derivatives needed
       if (!zv.inside || !W.lut.inside) {
         std::ostringstream os;
         os << "wheelset '" << m.bodies[b].name << "' at t = " << t << " s (s = " << q[kS]
@@ -311,6 +329,11 @@ int ContactVehicleOde::setCoordinates(double t, const double* y) {
                    zv.dxixi * xgd * xgd + zv.dxi * V2 * g_ss + V2 * v_ss;
       W.gamma(1) = -pv.dy * V2 * a_ss + pv.dyy * ybd * ybd + 2.0 * pv.dyxi * ybd * xgd +
                    pv.dxixi * xgd * xgd + pv.dxi * V2 * g_ss + V2 * c_ss / (2.0 * lr);
+      if (acc != 0.0) {
+        // Speed ramp: d2 xi / dt2 = V^2 xi'' + a xi' (the terms above are the V^2 part).
+        W.gamma(0) += acc * (-zv.dy * xa_s + zv.dxi * xg_s + xv_s);
+        W.gamma(1) += acc * (-pv.dy * xa_s + pv.dxi * xg_s + xc_s / (2.0 * lr));
+      }
     }
     q[kZ] = z - W.height;
     q[kRoll] = phi;
@@ -329,11 +352,45 @@ struct PatchGeometry {
   Eigen::Vector3d n;  // rail normal into the wheel, track comps
 };
 
+// Per wheelset and evaluation: what every patch of it needs from the body kinematics.
+struct WheelsetFrame {
+  const vehicle::BodyKinematics* kin = nullptr;
+  Eigen::Vector3d axle;   // wI y axis (the spin axis), track comps: attach.A e_y
+  Eigen::Matrix3d BG;     // body.A body.G: Euler rates -> wheel angular velocity (track comps)
+  Eigen::Vector3d omega;  // absolute angular velocity of the wheel, track comps
+  double cps = 1.0, sps = 0.0;  // cos, sin of the yaw
+  double spin_rate = 0.0;       // theta_dot
+};
+
+WheelsetFrame wheelsetFrame(const vehicle::BodyKinematics& kin, const vehicle::Vector6d& qd) {
+  WheelsetFrame f;
+  f.kin = &kin;
+  f.axle = kin.attach.A.col(1);
+  f.BG.noalias() = kin.body.A * kin.body.G;
+  f.omega.noalias() = kin.body.A * kin.omega_b;
+  // cos, sin of the yaw: the first column of A_wI = Rz(psi) Rx(phi) is (cos psi, sin psi, 0).
+  f.cps = kin.attach.A(0, 0);
+  f.sps = kin.attach.A(1, 0);
+  f.spin_rate = qd[kPitch];
+  return f;
+}
+
+// Generalised force (y, z, phi, theta, psi) of a force F (track comps) on the wheel material point
+// at au (track comps, relative to the CoM): L_P^T F of the attachment point plus the spin column
+// (axle x au) . F. (J_P = pointJacobian + the spin column, never formed.)
+Vec5 wheelPointForce(const WheelsetFrame& f, const Eigen::Vector3d& au, const Eigen::Vector3d& sp,
+                     const Eigen::Vector3d& F) {
+  const vehicle::BodyKinematics& k = *f.kin;
+  const Eigen::Vector3d rot = k.AG.transpose() * au.cross(F);
+  Vec5 g;
+  g << F.y(), F.z(), rot(0), rot(1) + sp.dot(F), rot(2);
+  return g;
+}
+
 // Kinematics of a patch: generalised directions, creepages, Hertz shape.
 template <class Law>
 void setupPatch(Patch& p, const PatchGeometry& g, double sigma, const ContactModel& c,
-                const vehicle::BodyKinematics& kin, const vehicle::Vector6d& q,
-                const vehicle::Vector6d& qd, double V) {
+                const WheelsetFrame& f, double V) {
   p.active = true;
   p.on_flange = sigma * g.s_w < sigma * c.flange_boundary[sigma > 0 ? 0 : 1];
   p.s_w = g.s_w;
@@ -346,25 +403,28 @@ void setupPatch(Patch& p, const PatchGeometry& g, double sigma, const ContactMod
   // wheel's circumferential direction), so the normal force does no work on yaw and spin, as the
   // yaw-independent constraints (Eq. 17, 22) require; the contact frame's x is the wheel's
   // rolling direction.
-  const double cps = std::cos(q[kYaw]), sps = std::sin(q[kYaw]);
+  const double cps = f.cps, sps = f.sps;
   p.n = Eigen::Vector3d(-sps * g.n.y(), cps * g.n.y(), g.n.z());
   // Wheel material point at the contact: in the wheelset intermediate frame (Eq. 10, s_w2 =
-  // pi/2) u = (0, sigma Lw + s_w, -r); its velocity includes the spin about the wI y axis.
+  // pi/2) u = (0, sigma Lw + s_w, -r); its velocity includes the spin about the wI y axis,
+  // sp theta_dot with sp = A_wI (e_y x u) = axle x au.
   const Eigen::Vector3d u(0.0, sigma * c.geometry.wheel_lw + g.s_w, -g.radius);
-  vehicle::Matrix36d J = vehicle::pointJacobian(kin, u);
-  J.col(kPitch) += kin.attach.A * Eigen::Vector3d::UnitY().cross(u);
-  p.gn = (J.transpose() * p.n).segment<5>(1);
+  const Eigen::Vector3d au = f.kin->attach.A * u;
+  const Eigen::Vector3d sp = f.axle.cross(au);
+  p.gn = wheelPointForce(f, au, sp, p.n);
   if constexpr (Law::kCreep) {
     const Eigen::Vector3d ex(cps, sps, 0.0);
     p.ex = ex;
     p.ey = p.n.cross(ex);
-    p.gx = J.transpose().block<5, 3>(1, 0) * ex;
-    p.gy = J.transpose().block<5, 3>(1, 0) * p.ey;
-    const vehicle::Matrix36d Jw = kin.body.A * kin.Lw;  // wheel angular velocity, track comps
-    p.gm = (Jw.transpose() * p.n).segment<5>(1);
-    const Eigen::Vector3d v = J * qd;  // rail material point at rest
-    const Eigen::Vector3d w = kin.body.A * kin.omega_b;
-    p.cr = creep::creepagesFromKinematics(v.dot(ex), v.dot(p.ey), w.dot(p.n), V);
+    p.gx = wheelPointForce(f, au, sp, ex);
+    p.gy = wheelPointForce(f, au, sp, p.ey);
+    // Spin moment about n: the wheel's angular velocity Jacobian is [w, 0, 0, body.A G] (track
+    // comps), so its (y..psi) part is (0, 0, (BG^T n)).
+    const Eigen::Vector3d bgn = f.BG.transpose() * p.n;
+    p.gm << 0.0, 0.0, bgn(0), bgn(1), bgn(2);
+    const Eigen::Vector3d v =
+        vehicle::pointVelocity(*f.kin, au) + sp * f.spin_rate;  // rail at rest
+    p.cr = creep::creepagesFromKinematics(v.dot(ex), v.dot(p.ey), f.omega.dot(p.n), V);
     p.k = creep::relativeCurvatures(g.k_w_long, g.k_w_trans, 0.0, g.k_r_trans);
     p.k.A = std::max(p.k.A, c.min_relative_curvature);
     p.k.B = std::max(p.k.B, c.min_relative_curvature);
@@ -387,9 +447,9 @@ void creepForce(Patch& p, double Q, const ContactModel& c, Vec5& Qt) {
   Qt.noalias() += p.gx * p.fx + p.gy * p.fy + p.gm * p.mz;
 }
 
-PatchGeometry fromPoint(const contact::ContactPoint& cp, double delta) {
+PatchGeometry fromPoint(const contact::ContactPoint& cp, double cd, double sd) {
   return {cp.s_w,           cp.s_r,          cp.gamma,        cp.radius,
-          cp.k_wheel_trans, cp.k_wheel_long, cp.k_rail_trans, rotX(delta, cp.n_y, cp.n_z)};
+          cp.k_wheel_trans, cp.k_wheel_long, cp.k_rail_trans, rotX(cd, sd, cp.n_y, cp.n_z)};
 }
 
 }  // namespace
@@ -402,38 +462,38 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, Mode m
   const vehicle::VehicleModel& m = *vehicle_;
   const ContactModel& c = *contact_;
   const ContactLayout& l = layout_;
-  const double V = m.speed;
+  const double V = m.speedAt(t), acc = m.acceleration;
   if (const int rc = setCoordinates(t, y); rc != 0) return rc;
   vehicle::evaluate(m, l.n_series > 0 ? y + l.series(0) : nullptr, ws_);
 
-  // Car bodies and bogies: M_pp pddot = Q_p (s imposed, sddot = 0), as the guided model.
+  // Car bodies and bogies: M_pp pddot = Q_p - M_ps a (s imposed, sddot = a), as the guided model.
   for (int k = 0; k < l.n_free; ++k) {
     const auto b = static_cast<std::size_t>(l.free_bodies[static_cast<std::size_t>(k)]);
-    const Eigen::Matrix<double, 5, 5> Mpp = ws_.mass[b].block<5, 5>(1, 1);
-    const Eigen::LLT<Eigen::Matrix<double, 5, 5>> llt(Mpp);
-    if (llt.info() != Eigen::Success) {
+    Cholesky5 llt;
+    if (!llt.factor(ws_.mass[b].block<5, 5>(1, 1))) {
       last_error_ = "body '" + m.bodies[b].name +
                     "': mass matrix not positive definite at t = " + std::to_string(t) + " s";
       return 1;
     }
-    const Vec5 acc = llt.solve(ws_.force[b].segment<5>(1));
+    const Vec5 pdd = llt.solve(ws_.force[b].segment<5>(1) - ws_.mass[b].block<5, 1>(1, kS) * acc);
     if (mode == Mode::Output) {
       qdd_[b].setZero();
-      qdd_[b].segment<5>(1) = acc;
+      qdd_[b](kS) = acc;
+      qdd_[b].segment<5>(1) = pdd;
     }
     for (int cc = 0; cc < 5; ++cc) {
       ydot[l.position(k, cc)] = y[l.rate(k, cc)];
-      ydot[l.rate(k, cc)] = acc[cc];
+      ydot[l.rate(k, cc)] = pdd[cc];
     }
   }
 
   bool lift = false;
+  const bool spin_free = l.spinFree();
   for (int w = 0; w < l.n_ws; ++w) {
     WheelsetWork& W = work_[static_cast<std::size_t>(w)];
     const auto b = static_cast<std::size_t>(W.body);
     const vehicle::BodyKinematics& kin = ws_.kin[b];
-    const vehicle::Vector6d& q = ws_.q[b];
-    const vehicle::Vector6d& qd = ws_.qd[b];
+    const WheelsetFrame wf = wheelsetFrame(kin, ws_.qd[b]);
     W.N.setZero();
     W.q_flange.setZero();
     for (int s = 0; s < 2; ++s) {
@@ -466,8 +526,8 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, Mode m
               side, pose, 0.0, val(contact::KecQuantity::SwA), val(contact::KecQuantity::SrA));
           const contact::ContactPoint pb = c.solver->describe(
               side, pose, 0.0, val(contact::KecQuantity::SwB), val(contact::KecQuantity::SrB));
-          setupPatch<Law>(W.patch[s][0], fromPoint(pa, W.delta_irr), sigma, c, kin, q, qd, V);
-          setupPatch<Law>(W.patch[s][1], fromPoint(pb, W.delta_irr), sigma, c, kin, q, qd, V);
+          setupPatch<Law>(W.patch[s][0], fromPoint(pa, W.cos_irr, W.sin_irr), sigma, c, wf, V);
+          setupPatch<Law>(W.patch[s][1], fromPoint(pb, W.cos_irr, W.sin_irr), sigma, c, wf, V);
           W.patch[s][0].ql = (1.0 - wgt) * e_side;
           W.patch[s][1].ql = wgt * e_side;
           W.weight[s] = wgt;
@@ -480,8 +540,8 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, Mode m
                                 val(contact::KecQuantity::KwTrans),
                                 val(contact::KecQuantity::KwLong),
                                 val(contact::KecQuantity::KrTrans),
-                                rotX(W.delta_irr, -sigma * std::sin(gam), std::cos(gam))};
-          setupPatch<Law>(W.patch[s][0], g, sigma, c, kin, q, qd, V);
+                                rotX(W.cos_irr, W.sin_irr, -sigma * std::sin(gam), std::cos(gam))};
+          setupPatch<Law>(W.patch[s][0], g, sigma, c, wf, V);
           W.patch[s][0].ql = e_side;
         }
         for (int p = 0; p < 2; ++p)
@@ -509,8 +569,8 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, Mode m
                               tv(contact::TreadQuantity::KwTrans),
                               tv(contact::TreadQuantity::KwLong),
                               tv(contact::TreadQuantity::KrTrans),
-                              rotX(W.delta_irr, -sigma * std::sin(gam), std::cos(gam))};
-        setupPatch<Law>(W.patch[s][0], g, sigma, c, kin, q, qd, V);
+                              rotX(W.cos_irr, W.sin_irr, -sigma * std::sin(gam), std::cos(gam))};
+        setupPatch<Law>(W.patch[s][0], g, sigma, c, wf, V);
         A(0, s) = W.patch[s][0].gn(1);  // z component of the unit normal force
         A(1, s) = W.patch[s][0].gn(2);  // roll component
         const double delta = fv(contact::FlangeQuantity::Delta);
@@ -537,8 +597,8 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, Mode m
                                  fv(contact::FlangeQuantity::KwTrans),
                                  fv(contact::FlangeQuantity::KwLong),
                                  fv(contact::FlangeQuantity::KrTrans),
-                                 rotX(W.delta_irr, -ny, -nz)};
-          setupPatch<Law>(W.patch[s][1], gf, sigma, c, kin, q, qd, V);
+                                 rotX(W.cos_irr, W.sin_irr, -ny, -nz)};
+          setupPatch<Law>(W.patch[s][1], gf, sigma, c, wf, V);
           W.patch[s][1].on_flange = true;  // the flange window of the LUT (Eq. 15)
           W.patch[s][1].q0 = f;
         }
@@ -568,14 +628,21 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, Mode m
     }
 
     // Augmented system [M -N; G 0] [qddot; lambda] = [Q + Q_t; gamma].
-    Mat7 K = Mat7::Zero();
-    K.block<5, 5>(0, 0) = ws_.mass[b].block<5, 5>(1, 1);
-    K.block<5, 2>(0, 5) = -W.N;
-    K.block<2, 5>(5, 0) = W.G;
+    AugmentedSolver lu;
+    if (!lu.factor(ws_.mass[b].block<5, 5>(1, 1), W.N, W.G, !spin_free,
+                   spin_free ? 0.0 : acc / c.centredRadius())) {
+      last_error_ = "wheelset '" + m.bodies[b].name +
+                    "': mass matrix not positive definite at t = " + std::to_string(t) + " s";
+      return 1;
+    }
     Vec7 rhs0;
-    rhs0.head<5>() = ws_.force[b].segment<5>(1) + W.q_flange;
+    // The prescribed sddot = a enters as -M_qs a (inertia of the speed ramp).
+    rhs0.head<5>() = ws_.force[b].segment<5>(1) - ws_.mass[b].block<5, 1>(1, kS) * acc + W.q_flange;
     rhs0.tail<2>() = W.gamma;
-    const Eigen::PartialPivLU<Mat7> lu(K);
+    // Prescribed spin: the spin row becomes theta_ddot = a / r_c (AugmentedSolver pins it). Its
+    // reaction (the spin torque the creep forces and the constraint normal forces would exert) is
+    // a constraint reaction and drops out; the other rows keep their M_{q,theta} theta_ddot
+    // coupling.
     Vec7 x;
     const auto creepAt = [&](const Eigen::Vector2d& lam, Vec5& Qt) {
       Qt.setZero();
@@ -678,9 +745,12 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, Mode m
       return 1;
     }
     if (ydot) {
-      for (int cc = 0; cc < 3; ++cc) ydot[l.wsPosition(w, cc)] = y[l.wsRate(w, cc)];
+      for (int cc = 0; cc < 3; ++cc) {
+        const int ip = l.wsPosition(w, cc);
+        if (ip >= 0) ydot[ip] = y[l.wsRate(w, cc)];
+      }
       ydot[l.wsRate(w, 0)] = x(0);
-      ydot[l.wsRate(w, 1)] = x(3);
+      if (spin_free) ydot[l.wsRate(w, 1)] = x(3);
       ydot[l.wsRate(w, 2)] = x(4);
     }
     // Normal forces of the wheels at the solution (outputs, lift).
@@ -692,6 +762,7 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, Mode m
     }
     if (mode == Mode::Output) {
       qdd_[b].setZero();
+      qdd_[b](kS) = acc;
       qdd_[b].segment<5>(1) = x.head<5>();
       for (int s = 0; s < 2; ++s) {
         WheelOutput& o = out_[2 * static_cast<std::size_t>(w) + static_cast<std::size_t>(s)];
@@ -750,7 +821,7 @@ std::string ContactVehicleOde::componentName(int i) const {
   if (i < 0 || i >= l.size) return "y[" + std::to_string(i) + "]";
   if (l.n_series > 0 && i >= l.series(0))
     return "series[" + std::to_string(i - l.series(0)) + "].f";
-  const int half = 5 * l.n_free + 3 * l.n_ws;
+  const int half = 5 * l.n_free + l.ws_dof * l.n_ws;
   const bool rate = i >= half;
   const int j = rate ? i - half : i;
   const char* suffix = rate ? "_dot" : "";
@@ -761,7 +832,8 @@ std::string ContactVehicleOde::componentName(int i) const {
            "." + kCoordName[cc] + suffix;
   }
   const int jw = j - 5 * l.n_free;
-  const int w = jw / 3, cc = jw % 3;
+  const int w = jw / l.ws_dof;
+  const int cc = l.spinFree() ? jw % 3 : (jw % 2 == 0 ? 0 : 2);  // prescribed: y, psi
   return vehicle_->bodies[static_cast<std::size_t>(l.wheelsets[static_cast<std::size_t>(w)])].name +
          "." + kWsCoordName[cc] + suffix;
 }
@@ -773,7 +845,8 @@ int ContactVehicleOde::index(int body, vehicle::Coord c, bool rate) const {
   const vehicle::BodyKind kind = vehicle_->bodies[static_cast<std::size_t>(body)].kind;
   if (kind == vehicle::BodyKind::Wheelset) {
     for (int cc = 0; cc < 3; ++cc)
-      if (kWsCoord[cc] == c) return rate ? layout_.wsRate(k, cc) : layout_.wsPosition(k, cc);
+      if (kWsCoord[cc] == c)
+        return rate ? layout_.wsRate(k, cc) : layout_.wsPosition(k, cc);  // -1: prescribed spin
     return -1;
   }
   return rate ? layout_.rate(k, c - 1) : layout_.position(k, c - 1);
@@ -791,8 +864,9 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
   const ContactLayout& l = layout_;
   const vehicle::VehicleModel& m = *vehicle_;
   Eigen::VectorXd y = Eigen::VectorXd::Zero(l.size);
-  const double spin = m.speed / contact_->centredRadius();
-  for (int w = 0; w < l.n_ws; ++w) y[l.wsRate(w, 1)] = spin;
+  const double spin = m.speedAt(t0) / contact_->centredRadius();
+  if (l.spinFree())
+    for (int w = 0; w < l.n_ws; ++w) y[l.wsRate(w, 1)] = spin;
   for (WheelsetWork& W : work_) {
     W.has_prev = false;
     W.kec_warm = false;
@@ -806,7 +880,7 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
     // Static equilibrium of the car bodies and bogies with the wheelsets centred on the rails.
     const auto residual = [&](const Eigen::VectorXd& state, Eigen::VectorXd& r) {
       if (evaluate(t0, state.data(), yd.data(), Mode::Init) != 0) fail(last_error_);
-      r = yd.segment(5 * l.n_free + 3 * l.n_ws, n);
+      r = yd.segment(l.rate(0, 0), n);
     };
     Eigen::VectorXd r(n), rp(n), rm(n);
     Eigen::MatrixXd J(n, n);

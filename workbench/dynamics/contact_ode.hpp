@@ -2,11 +2,12 @@
 // Vehicle dynamics with wheel/rail contact (issue 6, paper sections 2.3-2.5 and 3; the
 // formulation is derived in docs/contact_dynamics.md).
 //
-// Imposed motion: every body's arc length s_i = start + x_i + V t (constant forward speed, as the
-// guided model; the reaction on s is the traction). Frames are fixed in their track frames. Car
-// bodies and bogies are free in (y, z, phi, theta, psi). Wheelsets are free in y (lateral), theta
-// (spin) and psi (yaw); their height z and roll phi are DEPENDENT coordinates given by the contact
-// constraints at every evaluation:
+// Imposed motion: every body's arc length s_i = start + x_i + V0 t + a t^2 / 2 (VehicleModel::
+// bodyS; speed V(t) = V0 + a t, as the guided model; the reaction on s is the traction; the
+// inertia of sddot = a enters every free equation as -M_ps a). Frames are fixed in their track
+// frames. Car bodies and bogies are free in (y, z, phi, theta, psi). Wheelsets are free in y
+// (lateral), theta (spin) and psi (yaw); their height z and roll phi are DEPENDENT coordinates
+// given by the contact constraints at every evaluation:
 //   KEC (Eq. 22): x = (z, phi, s_lk, s_rk) = solveKec(y, y_lir, y_rir, z_lir, z_rir), warm-started;
 //   LUT (Eq. 17-18): z = z_clt(y - xi_a, xi_g) + xi_v, phi = phi_clt(y - xi_a, xi_g) + xi_c/(2 Lr).
 // Velocities and accelerations of z and phi follow by coordinate partitioning (KEC: xdot = dx_dp
@@ -14,8 +15,8 @@
 // derivatives), so every integrator integrates an ODE in the independent coordinates only (no
 // drift, no stabilisation).
 //
-// Per wheelset, with q = (y, z, phi, theta, psi) and s prescribed (sddot = 0):
-//   [ M   -N ] [qddot ]   [ Q + Q_t (+ Q_fla for LUT) ]
+// Per wheelset, with q = (y, z, phi, theta, psi) and s prescribed (sddot = a):
+//   [ M   -N ] [qddot ]   [ Q - M_qs a + Q_t (+ Q_fla for LUT) ]
 //   [ G    0 ] [lambda] = [ gamma                     ]
 // G qddot = gamma are the acceleration-level constraints on z and phi. KEC: N (Eq. 25) holds the
 // generalised directions of the two normal contact forces at the real contact points (in the
@@ -29,13 +30,18 @@
 // previous evaluation (Lagged, the paper) or solved together with them at every evaluation
 // (Consistent: fixed-point iteration, Newton on the 2 normal forces when it contracts slowly).
 //
-// State layout (nf free bodies in body order, nw wheelsets in body order, ns series dampers; size
-// 10 nf + 6 nw + ns):
+// State layout (nf free bodies in body order, nw wheelsets in body order, ns series dampers, d = 3
+// wheelset coordinates with a free spin, 2 with a prescribed spin; size 10 nf + 2 d nw + ns):
 //   [5k + c]                  position c (0..4: y, z, phi, theta, psi) of free body k  "car.y"
-//   [5 nf + 3w + c]           wheelset w: c = 0 y, 1 theta (spin), 2 psi (yaw)          "ws1.theta"
-//   [5 nf + 3 nw + 5k + c]    rate of free body coordinate                              "car.y_dot"
-//   [10 nf + 3 nw + 3w + c]   wheelset rate                                        "ws1.theta_dot"
-//   [10 nf + 6 nw + e]        Maxwell force of series damper e                      "series[3].f"
+//   [5 nf + d w + j]          wheelset w: j = 0 y, 1 theta (spin, free only), 2 (or 1) psi
+//                                                                         "ws1.y", "ws1.theta"
+//   [5 nf + d nw + 5k + c]    rate of free body coordinate                              "car.y_dot"
+//   [10 nf + d nw + d w + j]  wheelset rate                                        "ws1.theta_dot"
+//   [10 nf + 2 d nw + e]      Maxwell force of series damper e                      "series[3].f"
+// ContactLayout::wsPosition(w, c) / wsRate(w, c) take c = 0 y, 1 theta, 2 psi in both cases.
+// With a prescribed spin theta = travel(t) / r_c, theta_dot = V(t) / r_c (r_c =
+// ContactModel::centredRadius()) are set kinematically and the spin row of the wheelset's
+// equations is replaced by theta_ddot = a / r_c (its reaction, the spin torque, is not applied).
 //
 // rhs() is allocation-free and returns 1 (recoverable) when the KEC solver does not converge, a
 // knife or the LUT entry leaves the table, the augmented system is singular or a value is not
@@ -59,13 +65,28 @@ struct ContactLayout {
   std::vector<int> wheelsets;    // wheelsets, body order
   std::vector<int> slot;         // per body: free-body number, wheelset number, or -1 (frame)
   int n_free = 0, n_ws = 0, n_series = 0, size = 0;
+  // Independent coordinates per wheelset: 3 (y, theta, psi) with a free spin, 2 (y, psi) with a
+  // prescribed one (WheelsetSpin::Prescribed: theta is not a state).
+  int ws_dof = 3;
+  bool spinFree() const { return ws_dof == 3; }
+  // Slot of wheelset coordinate c (0 y, 1 theta, 2 psi) among the wheelset's states; -1 for the
+  // spin when it is prescribed.
+  int wsSlot(int c) const { return ws_dof == 3 ? c : (c == 0 ? 0 : (c == 2 ? 1 : -1)); }
   int position(int k, int c) const { return 5 * k + c; }  // c = 0..4: y, z, phi, theta, psi
-  int wsPosition(int w, int c) const { return 5 * n_free + 3 * w + c; }  // c: 0 y, 1 theta, 2 psi
-  int rate(int k, int c) const { return 5 * n_free + 3 * n_ws + 5 * k + c; }
-  int wsRate(int w, int c) const { return 10 * n_free + 3 * n_ws + 3 * w + c; }
-  int series(int e) const { return 10 * n_free + 6 * n_ws + e; }
+  // c: 0 y, 1 theta, 2 psi; -1 if c is the prescribed spin.
+  int wsPosition(int w, int c) const {
+    const int j = wsSlot(c);
+    return j < 0 ? -1 : 5 * n_free + ws_dof * w + j;
+  }
+  int rate(int k, int c) const { return 5 * n_free + ws_dof * n_ws + 5 * k + c; }
+  int wsRate(int w, int c) const {
+    const int j = wsSlot(c);
+    return j < 0 ? -1 : 10 * n_free + ws_dof * n_ws + ws_dof * w + j;
+  }
+  int series(int e) const { return 10 * n_free + 2 * ws_dof * n_ws + e; }
 };
-ContactLayout contactLayout(const vehicle::VehicleModel& model);
+ContactLayout contactLayout(const vehicle::VehicleModel& model,
+                            WheelsetSpin spin = WheelsetSpin::Free);
 
 // One contact patch of a wheel. Creep forces act on the wheel in the patch's contact frame:
 // x along the track (rolling direction), n the rail normal (into the wheel), y = n x x.
@@ -146,7 +167,7 @@ class ContactVehicleOde : public integ::OdeSystem {
   int bodyCoordinates(double t, const double* y, std::span<vehicle::Vector6d> q);
   // Two entries per wheelset, in wheelset order: [2w] left, [2w + 1] right.
   int wheelOutputs(double t, const double* y, std::span<WheelOutput> out);
-  // Accelerations (sddot = 0, y, z, roll, pitch, yaw) of every body, qdd.size() == bodies; for
+  // Accelerations (sddot = a, y, z, roll, pitch, yaw) of every body, qdd.size() == bodies; for
   // wheelsets z and roll are the constraint accelerations (G qddot = gamma).
   int bodyAccelerations(double t, const double* y, std::span<vehicle::Vector6d> qdd);
   // Vehicle workspace of the last evaluation (element values, forces).

@@ -24,6 +24,11 @@ struct ProfilesSpec {
 enum class ContactMethod { Kec, Lut };
 enum class CreepModel { Polach, Kalker, None };
 enum class NormalForceCoupling { Lagged, Consistent };
+// Free: the wheelset spin theta is a degree of freedom driven by the creep forces (its creep mode
+// is stiff, ~ -2400 1/s at 20 m/s, docs/contact_dynamics.md section 7). Prescribed: the spin rate
+// is kinematic, theta_dot = V(t) / r_c (constant-rotational-speed assumption); theta is not a
+// state and the spin reaction torque (traction/braking at the wheel) is a constraint reaction.
+enum class WheelsetSpin { Free, Prescribed };
 
 struct ContactSpec {
   ContactMethod method = ContactMethod::Kec;
@@ -38,6 +43,7 @@ struct ContactSpec {
   // Lagged: creep forces use the previous step's constraint normal forces (the paper, section
   // 2.5). Consistent: normal and tangential forces solved together at every evaluation.
   NormalForceCoupling normal_forces = NormalForceCoupling::Lagged;
+  WheelsetSpin wheelset_spin = WheelsetSpin::Free;
   SourceLoc loc;
 };
 

@@ -531,6 +531,7 @@ void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d) {
   v.loc = n.loc;
   v.name = r.string("name");
   v.speed = r.number("speed");
+  v.acceleration = r.number("acceleration");
   v.wheel_radius = r.number("wheel_radius");
   v.start = r.number("start");
   auto bodies = r.blockList("bodies");
@@ -635,6 +636,8 @@ void buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
   c.normal_forces = r.choice("normal_forces") == "consistent"
                         ? dynamics::NormalForceCoupling::Consistent
                         : dynamics::NormalForceCoupling::Lagged;
+  c.wheelset_spin = r.choice("wheelset_spin") == "prescribed" ? dynamics::WheelsetSpin::Prescribed
+                                                              : dynamics::WheelsetSpin::Free;
   // Options that belong to the other method are conflicts, not silently ignored.
   bool kec = c.method == dynamics::ContactMethod::Kec;
   for (const char* k : {"flange_stiffness", "flange_damping"})

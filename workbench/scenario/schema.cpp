@@ -215,7 +215,11 @@ std::vector<BlockSpec> build() {
         num("youngs_modulus", "Pa", 2.1e11, "Young's modulus of wheel and rail", 1e9, 1e12),
         num("poisson", "-", 0.28, "Poisson ratio", 0, 0.5),
         choice("normal_forces", {"lagged", "consistent"}, "lagged",
-               "normal forces for creep: previous step's (the paper) or solved together")}});
+               "normal forces for creep: previous step's (the paper) or solved together"),
+        choice("wheelset_spin", {"free", "prescribed"}, "free",
+               "free: the wheelset spin is a degree of freedom driven by creep (stiff, needs "
+               "ABM steps < 0.5 ms at 20 m/s); prescribed: spin rate V(t)/r_c (constant "
+               "rotational speed, the spin torque is a reaction), stable with ABM at 1 ms")}});
 
   // Vehicle (issue 5): bodies in track-frame coordinates and suspension elements (Appendix A).
   s.push_back(
@@ -225,7 +229,12 @@ std::vector<BlockSpec> build() {
        "file: "
        "vehicle (require \"vehicles.manchester_wagon1\" { speed = 20 }).",
        {typed("name", ValueType::String, "-", "vehicle name"),
-        required(num("speed", "m/s", 0, "constant forward velocity V", 0, 200)),
+        required(num("speed", "m/s", 0,
+                     "forward velocity V0 at t = 0 (constant unless acceleration)", 0, 200)),
+        num("acceleration", "m/s^2", 0,
+            "constant longitudinal acceleration a: V(t) = V0 + a t (speed ramp); V must stay >= 0 "
+            "over the run",
+            -20, 20),
         num("wheel_radius", "m", 0.46, "nominal rolling radius r0 of the wheelsets", 0.2, 0.7),
         num("start", "m", 0, "arc length of the vehicle reference point at t = 0", 0),
         required(blockKey("bodies", ValueType::BlockList, {"body"}, "rigid bodies")),

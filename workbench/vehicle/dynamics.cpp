@@ -6,28 +6,27 @@ namespace rb::vehicle {
 
 namespace {
 
-// Relative motion of the two attachment points of an element in the master track frame (Eq. 28)
-// and its Jacobians: delta_dot = Ji qd_i + Jj qd_j.
+// Relative motion of the two attachment points of an element in the master track frame (Eq. 28):
+// delta = R_ij + A_ij (rbar_j + A_a,j u_Q) - (rbar_i + A_a,i u_P) and
+// delta_dot = J_i qd_i + J_j qd_j = A_ij v_Q - v_P - sdot_i (w_i x delta) (docs/vehicle.md).
+// The Jacobians J_i = -L_P - (w_i x delta) e_s^T, J_j = A_ij L_Q are never formed: velocities and
+// generalised forces go through pointVelocity / addPointForce (a few cross products each).
 struct PointPair {
-  Eigen::Matrix3d Aij;  // A_ti^T A_tj
+  const Eigen::Matrix3d* Aij = nullptr;  // A_ti^T A_tj of the element's body pair
+  Eigen::Vector3d aui, auj;              // attachment points relative to the CoMs (own track comps)
   Eigen::Vector3d delta, delta_dot;
-  Matrix36d Ji, Jj;
 };
 
 void pointPair(const ElementGeometry& g, const Workspace& ws, PointPair& p) {
   const BodyKinematics& ki = ws.kin[static_cast<std::size_t>(g.body1)];
   const BodyKinematics& kj = ws.kin[static_cast<std::size_t>(g.body2)];
-  p.Aij.noalias() = ki.tf.A.transpose() * kj.tf.A;
-  const Eigen::Vector3d Rij = ki.tf.A.transpose() * (kj.tf.R - ki.tf.R);
-  const Eigen::Vector3d rP = pointPosition(ki, g.u1);
-  const Eigen::Vector3d rQ = Rij + p.Aij * pointPosition(kj, g.u2);
-  p.delta = rQ - rP;
-  // d/dt of master-frame components: A_ij v_Q - v_P - sdot_i w_i x delta.
-  p.Ji = -pointJacobian(ki, g.u1);
-  p.Ji.col(kS) -= ki.tf.w.cross(p.delta);
-  p.Jj.noalias() = p.Aij * pointJacobian(kj, g.u2);
-  p.delta_dot.noalias() = p.Ji * ws.qd[static_cast<std::size_t>(g.body1)];
-  p.delta_dot.noalias() += p.Jj * ws.qd[static_cast<std::size_t>(g.body2)];
+  const auto pr = static_cast<std::size_t>(g.pair);
+  p.Aij = &ws.pair_A[pr];
+  p.aui.noalias() = ki.attach.A * g.u1;
+  p.auj.noalias() = kj.attach.A * g.u2;
+  p.delta = ws.pair_R[pr] + *p.Aij * (kj.rbar + p.auj) - (ki.rbar + p.aui);
+  p.delta_dot =
+      *p.Aij * pointVelocity(kj, p.auj) - pointVelocity(ki, p.aui) - ki.sd * ki.tf.w.cross(p.delta);
 }
 
 suspension::Deformation deformation(const ElementGeometry& g, const PointPair& p) {
@@ -35,18 +34,32 @@ suspension::Deformation deformation(const ElementGeometry& g, const PointPair& p
   return suspension::directionalDeformation(p.delta, p.delta_dot, g.delta_nominal, g.axis);
 }
 
-// Generalised forces Q = -(dd/dq)^T f on both bodies (Eq. 29) and the physical resultants.
+// Generalised forces Q = -(dd/dq)^T f on both bodies (Eq. 29): the force F = grad f (master
+// comps) acts at P, -A_ij^T F (body j's track comps) at Q; -J_i^T F = L_P^T F + ((w_i x delta) .
+// F) e_s, -J_j^T F = L_Q^T (-A_ij^T F). L_P^T F is linear in (F, au x F): the point forces of a
+// body are summed into its resultant force and moment about the CoM (susp_force, susp_moment,
+// outputs as well) and projected once per body (pointResultantsToQ); only the master's extra
+// s term is added per element.
 void applyForce(const ElementGeometry& g, const PointPair& p, const Eigen::Vector3d& grad, double f,
                 Workspace& ws) {
   const auto i = static_cast<std::size_t>(g.body1), j = static_cast<std::size_t>(g.body2);
-  ws.force[i].noalias() -= p.Ji.transpose() * (grad * f);
-  ws.force[j].noalias() -= p.Jj.transpose() * (grad * f);
   const Eigen::Vector3d Fi = grad * f;
-  const Eigen::Vector3d Fj = -(p.Aij.transpose() * Fi);
+  const Eigen::Vector3d Fj = -(p.Aij->transpose() * Fi);
+  ws.force[i][kS] += ws.kin[i].tf.w.cross(p.delta).dot(Fi);
   ws.susp_force[i] += Fi;
-  ws.susp_moment[i] += (ws.kin[i].attach.A * g.u1).cross(Fi);
+  ws.susp_moment[i] += p.aui.cross(Fi);
   ws.susp_force[j] += Fj;
-  ws.susp_moment[j] += (ws.kin[j].attach.A * g.u2).cross(Fj);
+  ws.susp_moment[j] += p.auj.cross(Fj);
+}
+
+// Sum of L_P^T F over the point forces of a body from their resultant F and moment M = sum au x F:
+// s: F.x + (w x rbar) . F + w . M (as (w x au) . F = w . (au x F)), y: F.y, z: F.z, angles: AG^T M.
+void pointResultantsToQ(const BodyKinematics& k, const Eigen::Vector3d& F, const Eigen::Vector3d& M,
+                        Vector6d& Q) {
+  Q[kS] += F.x() + k.tf.w.cross(k.rbar).dot(F) + k.tf.w.dot(M);
+  Q[kY] += F.y();
+  Q[kZ] += F.z();
+  Q.segment<3>(kRoll).noalias() += k.AG.transpose() * M;
 }
 
 }  // namespace
@@ -84,26 +97,57 @@ Workspace makeWorkspace(const VehicleModel& m) {
   ws.bending_spring.resize(m.bending_springs.size());
   ws.bumpstop.resize(m.bumpstops.size());
   ws.series_rate.assign(m.series_dampers.size(), 0.0);
+  ws.pair_A.assign(m.body_pairs.size(), Eigen::Matrix3d::Identity());
+  ws.pair_R.assign(m.body_pairs.size(), Eigen::Vector3d::Zero());
   return ws;
 }
 
 void evaluate(const VehicleModel& m, const double* series_f, Workspace& ws) {
-  // Bodies: kinematics, mass matrix, quadratic-velocity inertia forces, gravity.
+  // Bodies: kinematics, mass matrix, quadratic-velocity inertia forces, gravity. With
+  // Lv = [c_s, e_y, e_z, 0] (c_s = e_x + w x rbar) and Lw = [wb, 0, 0, G] the products
+  // M = m Lv^T Lv + Lw^T J Lw and Q = Lv^T f_lin + Lw^T f_rot are written out by blocks (the
+  // zero columns are known; a generic 6x6 product would spend 3/4 of its work on them).
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
     const Body& body = m.bodies[b];
     BodyKinematics& k = ws.kin[b];
     bodyKinematics(m.geometry, body.rotation, body.height, ws.q[b], ws.qd[b], k);
-    const Eigen::Vector3d J = body.inertia;
+    const Eigen::Vector3d& J = body.inertia;
+    const double mass = body.mass;
+    const Eigen::Vector3d cs = k.Lv.col(kS);
+    const Eigen::Vector3d wb = k.Lw.col(kS);
+    const Eigen::Matrix3d& G = k.body.G;
+    const Eigen::Vector3d Jwb = J.cwiseProduct(wb);
+    const Eigen::Matrix3d JG = J.asDiagonal() * G;
     Matrix6d& M = ws.mass[b];
-    M.noalias() = body.mass * k.Lv.transpose() * k.Lv;
-    M.noalias() += k.Lw.transpose() * J.asDiagonal() * k.Lw;
+    M(kS, kS) = mass * cs.squaredNorm() + wb.dot(Jwb);
+    M(kS, kY) = M(kY, kS) = mass * cs.y();
+    M(kS, kZ) = M(kZ, kS) = mass * cs.z();
+    M(kY, kY) = M(kZ, kZ) = mass;
+    M(kY, kZ) = M(kZ, kY) = 0.0;
+    const Eigen::RowVector3d msr = Jwb.transpose() * G;
+    M.block<1, 3>(kS, kRoll) = msr;
+    M.block<3, 1>(kRoll, kS) = msr.transpose();
+    M.block<2, 3>(kY, kRoll).setZero();
+    M.block<3, 2>(kRoll, kY).setZero();
+    M.block<3, 3>(kRoll, kRoll).noalias() = G.transpose() * JG;
     const Eigen::Vector3d Jw = J.cwiseProduct(k.omega_b);
     const Eigen::Vector3d g_track = k.tf.A.transpose() * Eigen::Vector3d(0.0, 0.0, -m.gravity);
+    const Eigen::Vector3d f_lin = mass * (g_track - k.gamma_v);
+    const Eigen::Vector3d f_rot = -(J.cwiseProduct(k.gamma_w) + k.omega_b.cross(Jw));
     Vector6d& Q = ws.force[b];
-    Q.noalias() = k.Lv.transpose() * (body.mass * (g_track - k.gamma_v));
-    Q.noalias() -= k.Lw.transpose() * (J.cwiseProduct(k.gamma_w) + k.omega_b.cross(Jw));
+    Q[kS] = cs.dot(f_lin) + wb.dot(f_rot);
+    Q[kY] = f_lin.y();
+    Q[kZ] = f_lin.z();
+    Q.segment<3>(kRoll).noalias() = G.transpose() * f_rot;
     ws.susp_force[b].setZero();
     ws.susp_moment[b].setZero();
+  }
+  // Relative placement of the track frames of each element body pair (Eq. 28).
+  for (std::size_t pr = 0; pr < m.body_pairs.size(); ++pr) {
+    const track::TrackFrame& ti = ws.kin[static_cast<std::size_t>(m.body_pairs[pr][0])].tf;
+    const track::TrackFrame& tj = ws.kin[static_cast<std::size_t>(m.body_pairs[pr][1])].tf;
+    ws.pair_A[pr].noalias() = ti.A.transpose() * tj.A;
+    ws.pair_R[pr].noalias() = ti.A.transpose() * (tj.R - ti.R);
   }
 
   PointPair p;
@@ -146,30 +190,38 @@ void evaluate(const VehicleModel& m, const double* series_f, Workspace& ws) {
     ws.bumpstop[e] = {d.d, d.d_dot, f};
     applyForce(el.g, p, d.grad, f, ws);
   }
+  for (std::size_t b = 0; b < m.bodies.size(); ++b)
+    pointResultantsToQ(ws.kin[b], ws.susp_force[b], ws.susp_moment[b], ws.force[b]);
+
   // Bending springs: relative rotation of the attachment frames in the master track frame.
+  // theta_dot = T1 (A_ij omega_j - w_i sdot_i) - T2 (omega_i - w_i sdot_i), omega = absolute
+  // angular velocities of the attachment frames in their track-frame components, = w sdot +
+  // omega_rel. Row `a` only: with t1 = T1^T e_a, t2 = T2^T e_a, t1j = A_ij^T t1,
+  // d theta_a / d qdot_i = (-t1 . w_i, 0, 0, -AG_i^T t2), d theta_a / d qdot_j =
+  // (t1j . w_j, 0, 0, AG_j^T t1j).
   for (std::size_t e = 0; e < m.bending_springs.size(); ++e) {
     const BendingSpringElement& el = m.bending_springs[e];
     const auto i = static_cast<std::size_t>(el.g.body1), j = static_cast<std::size_t>(el.g.body2);
     const BodyKinematics& ki = ws.kin[i];
     const BodyKinematics& kj = ws.kin[j];
-    const Eigen::Matrix3d Aij = ki.tf.A.transpose() * kj.tf.A;
+    const Eigen::Matrix3d& Aij = ws.pair_A[static_cast<std::size_t>(el.g.pair)];
     const Eigen::Matrix3d R = (Aij * kj.attach.A) * ki.attach.A.transpose();
     const suspension::RelativeRotation rr = suspension::relativeRotation(R);
-    // theta_dot = T1 (A_ij omega_j - w_i sdot_i) - T2 (omega_i - w_i sdot_i), omega = absolute
-    // angular velocities of the attachment frames in their track-frame components.
-    Matrix36d Ti = -rr.T2 * attachmentAngularJacobian(ki);
-    Ti.col(kS) += (rr.T2 - rr.T1) * ki.tf.w;
-    const Matrix36d Tj = rr.T1 * Aij * attachmentAngularJacobian(kj);
     const int a = el.g.axis;
+    const Eigen::Vector3d t1 = rr.T1.row(a).transpose();
+    const Eigen::Vector3d t2 = rr.T2.row(a).transpose();
+    const Eigen::Vector3d t1j = Aij.transpose() * t1;
     const double th = rr.theta[a];
-    const double th_dot = Ti.row(a).dot(ws.qd[i]) + Tj.row(a).dot(ws.qd[j]);
+    const double th_dot = -t1.dot(ki.tf.w) * ki.sd - t2.dot(ki.omega_rel) +
+                          t1j.dot(kj.tf.w) * kj.sd + t1j.dot(kj.omega_rel);
     const double M = suspension::bendingSpringMoment(el.stiffness, el.preload, th);
     ws.bending_spring[e] = {th, th_dot, M};
-    ws.force[i].noalias() -= Ti.row(a).transpose() * M;
-    ws.force[j].noalias() -= Tj.row(a).transpose() * M;
-    const Eigen::Vector3d Mi = rr.T2.row(a).transpose() * M;
-    ws.susp_moment[i] += Mi;
-    ws.susp_moment[j] -= Aij.transpose() * (rr.T1.row(a).transpose() * M);
+    ws.force[i][kS] += t1.dot(ki.tf.w) * M;
+    ws.force[i].segment<3>(kRoll).noalias() += ki.AG.transpose() * (t2 * M);
+    ws.force[j][kS] -= t1j.dot(kj.tf.w) * M;
+    ws.force[j].segment<3>(kRoll).noalias() -= kj.AG.transpose() * (t1j * M);
+    ws.susp_moment[i] += t2 * M;
+    ws.susp_moment[j] -= t1j * M;
   }
 }
 

@@ -38,6 +38,9 @@ struct Workspace {
   std::vector<Eigen::Vector3d> susp_force, susp_moment;
   std::vector<ElementValue> spring_damper, series_damper, shear_spring, bending_spring, bumpstop;
   std::vector<double> series_rate;  // f_dot of each series damper
+  // Per body pair (VehicleModel::body_pairs): A_ij = A_ti^T A_tj, R_ij = A_ti^T (R_tj - R_ti).
+  std::vector<Eigen::Matrix3d> pair_A;
+  std::vector<Eigen::Vector3d> pair_R;
 
   const ElementValue& value(ElementId id) const;
 };

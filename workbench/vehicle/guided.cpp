@@ -28,7 +28,7 @@ GuidedLayout guidedLayout(const VehicleModel& m) {
 
 void guidedCoordinates(const VehicleModel& m, const GuidedLayout& l, double t, const double* y,
                        Workspace& ws) {
-  const double V = m.speed;
+  const double V = m.speedAt(t);
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
     Vector6d& q = ws.q[b];
     Vector6d& qd = ws.qd[b];
@@ -43,9 +43,9 @@ void guidedCoordinates(const VehicleModel& m, const GuidedLayout& l, double t, c
         qd[1 + c] = y[l.rate(k, c)];
       }
     } else if (m.bodies[b].kind == BodyKind::Wheelset) {
-      const double spin = V / m.wheel_radius;
-      q[kPitch] = spin * t;
-      qd[kPitch] = spin;
+      // Rolling without slip on r0: theta = travel / r0, theta_dot = V(t) / r0.
+      q[kPitch] = m.travel(t) / m.wheel_radius;
+      qd[kPitch] = V / m.wheel_radius;
     }
   }
 }
@@ -59,11 +59,14 @@ int guidedRhs(const VehicleModel& m, const GuidedLayout& l, double t, const doub
   for (int k = 0; k < l.n_free; ++k) {
     const auto b = static_cast<std::size_t>(l.free_bodies[static_cast<std::size_t>(k)]);
     const Matrix6d& M = ws.mass[b];
-    // s is imposed with sddot = 0: M_pp pddot = Q_p - M_ps * 0.
+    // s is imposed with sddot = a: M_pp pddot = Q_p - M_ps a (the inertia of the prescribed
+    // longitudinal acceleration, e.g. pitch of a braked car; on a curve it includes the frame's
+    // angular acceleration kappa a through the s column of Lv, Lw).
     const Eigen::Matrix<double, 5, 5> Mpp = M.block<5, 5>(1, 1);
     const Eigen::LLT<Eigen::Matrix<double, 5, 5>> llt(Mpp);
     if (llt.info() != Eigen::Success) return 1;
-    const Eigen::Matrix<double, 5, 1> acc = llt.solve(ws.force[b].segment<5>(1));
+    const Eigen::Matrix<double, 5, 1> acc =
+        llt.solve(ws.force[b].segment<5>(1) - M.block<5, 1>(1, kS) * m.acceleration);
     for (int c = 0; c < 5; ++c) {
       ydot[l.position(k, c)] = y[l.rate(k, c)];
       ydot[l.rate(k, c)] = acc[c];
@@ -187,6 +190,9 @@ BodyOutput GuidedVehicleOde::bodyOutput(double t, const double* y, int body) {
   guidedRhs(*model_, layout_, t, y, scratch_.data(), ws_);
   const auto b = static_cast<std::size_t>(body);
   Vector6d qdd = Vector6d::Zero();
+  qdd[kS] = model_->acceleration;
+  if (model_->bodies[b].kind == BodyKind::Wheelset)
+    qdd[kPitch] = model_->acceleration / model_->wheel_radius;
   const int k = layout_.slot[b];
   if (k >= 0)
     for (int c = 0; c < 5; ++c) qdd[1 + c] = scratch_[static_cast<std::size_t>(layout_.rate(k, c))];

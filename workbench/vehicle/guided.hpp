@@ -3,9 +3,9 @@
 // free in (y, z, phi, theta, psi), series damper forces are states (docs/vehicle.md).
 //
 // Imposed motion (holonomic, rheonomic constraints):
-// - every body: s_i(t) = start + x_i + V t (constant forward speed; the reaction on s is the
-//   traction force, BodyOutput::traction);
-// - wheelsets: y = z = phi = psi = 0 relative to their track frame, pitch theta = (V / r0) t;
+// - every body: s_i(t) = start + x_i + V0 t + a t^2 / 2 (speed V(t) = V0 + a t, VehicleModel::
+//   speedAt; the reaction on s is the traction force, BodyOutput::traction);
+// - wheelsets: y = z = phi = psi = 0 relative to their track frame, pitch theta = travel(t) / r0;
 // - frames: y = z = phi = theta = psi = 0.
 //
 // State layout (size() = 10 nf + ns, nf free bodies in body order, ns series dampers):
@@ -59,7 +59,7 @@ struct BodyOutput {
   Eigen::Vector3d suspension_force = Eigen::Vector3d::Zero();      // [N] resultant of the elements,
                                                                    // track-frame components
   Eigen::Vector3d suspension_moment = Eigen::Vector3d::Zero();  // [N m] about the CoM, track comps
-  double traction = 0.0;  // [N] generalised reaction of s = s0 + V t (force the drive applies)
+  double traction = 0.0;  // [N] generalised reaction of the imposed s(t) (force the drive applies)
 };
 
 class GuidedVehicleOde : public integ::OdeSystem {

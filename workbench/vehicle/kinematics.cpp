@@ -5,79 +5,107 @@
 namespace rb::vehicle {
 
 namespace {
-Eigen::Matrix3d rx(double a) {
-  const double c = std::cos(a), s = std::sin(a);
+// Elementary rotations from a precomputed cosine and sine (each angle's sincos is taken once per
+// evaluation and shared by the rotation, G and, for wheelsets, the intermediate frame).
+Eigen::Matrix3d rx(double c, double s) {
   Eigen::Matrix3d m;
   m << 1, 0, 0, 0, c, -s, 0, s, c;
   return m;
 }
-Eigen::Matrix3d ry(double a) {
-  const double c = std::cos(a), s = std::sin(a);
+Eigen::Matrix3d ry(double c, double s) {
   Eigen::Matrix3d m;
   m << c, 0, s, 0, 1, 0, -s, 0, c;
   return m;
 }
-Eigen::Matrix3d rz(double a) {
-  const double c = std::cos(a), s = std::sin(a);
+Eigen::Matrix3d rz(double c, double s) {
   Eigen::Matrix3d m;
   m << c, -s, 0, s, c, 0, 0, 0, 1;
   return m;
 }
-Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d m;
-  m << 0, -a.z(), a.y(), a.z(), 0, -a.x(), -a.y(), a.x(), 0;
-  return m;
-}
-}  // namespace
 
-EulerKinematics eulerKinematics(RotationSequence seq, const Eigen::Vector3d& angles,
-                                const Eigen::Vector3d& rates) {
-  const double ph = angles[0], th = angles[1], ps = angles[2];
+struct AngleTrig {
+  double cph, sph, cth, sth, cps, sps;
+  explicit AngleTrig(const Eigen::Vector3d& a)
+      : cph(std::cos(a[0])),
+        sph(std::sin(a[0])),
+        cth(std::cos(a[1])),
+        sth(std::sin(a[1])),
+        cps(std::cos(a[2])),
+        sps(std::sin(a[2])) {}
+};
+
+// Intermediate frame wI = Rz(psi) Rx(phi) of a wheelset; omega_wI = (dph, sph dps, cph dps).
+void intermediateFrom(const AngleTrig& t, const Eigen::Vector3d& rates, EulerKinematics& k) {
+  const double dph = rates[0], dps = rates[2];
+  k.A = rz(t.cps, t.sps) * rx(t.cph, t.sph);
+  k.G << 1, 0, 0, 0, 0, t.sph, 0, 0, t.cph;
+  k.Gdot_rates << 0.0, t.cph * dph * dps, -t.sph * dph * dps;
+}
+
+// `inter` (YawRollPitch only): the intermediate frame Rz(psi) Rx(phi), already evaluated.
+void eulerFrom(RotationSequence seq, const AngleTrig& t, const Eigen::Vector3d& rates,
+               const EulerKinematics* inter, EulerKinematics& k) {
   const double dph = rates[0], dth = rates[1], dps = rates[2];
-  const double cph = std::cos(ph), sph = std::sin(ph), cth = std::cos(th), sth = std::sin(th);
-  EulerKinematics k;
+  const double cph = t.cph, sph = t.sph, cth = t.cth, sth = t.sth;
   if (seq == RotationSequence::YawPitchRoll) {
     // omega_b = (dph - dps sth, dth cph + dps cth sph, -dth sph + dps cth cph)
-    k.A = rz(ps) * ry(th) * rx(ph);
+    k.A = rz(t.cps, t.sps) * ry(cth, sth) * rx(cph, sph);
     k.G << 1, 0, -sth, 0, cph, cth * sph, 0, -sph, cth * cph;
     k.Gdot_rates << -dps * dth * cth, -dth * dph * sph + dps * (-dth * sth * sph + dph * cth * cph),
         -dth * dph * cph + dps * (-dth * sth * cph - dph * cth * sph);
   } else {
     // omega_b = (cth dph - sth cph dps, dth + sph dps, sth dph + cth cph dps)
-    k.A = rz(ps) * rx(ph) * ry(th);
+    if (inter)
+      k.A = inter->A * ry(cth, sth);
+    else
+      k.A = rz(t.cps, t.sps) * rx(cph, sph) * ry(cth, sth);
     k.G << cth, 0, -sth * cph, 0, 1, sph, sth, 0, cth * cph;
     k.Gdot_rates << -sth * dth * dph - (cth * dth * cph - sth * sph * dph) * dps, cph * dph * dps,
         cth * dth * dph + (-sth * dth * cph - cth * sph * dph) * dps;
   }
+}
+}  // namespace
+
+EulerKinematics eulerKinematics(RotationSequence seq, const Eigen::Vector3d& angles,
+                                const Eigen::Vector3d& rates) {
+  EulerKinematics k;
+  eulerFrom(seq, AngleTrig(angles), rates, nullptr, k);
   return k;
 }
 
 EulerKinematics intermediateKinematics(const Eigen::Vector3d& angles,
                                        const Eigen::Vector3d& rates) {
-  const double ph = angles[0], ps = angles[2];
-  const double dph = rates[0], dps = rates[2];
-  const double cph = std::cos(ph), sph = std::sin(ph);
   EulerKinematics k;
-  // omega_wI = (dph, sph dps, cph dps)
-  k.A = rz(ps) * rx(ph);
-  k.G << 1, 0, 0, 0, 0, sph, 0, 0, cph;
-  k.Gdot_rates << 0.0, cph * dph * dps, -sph * dph * dps;
+  intermediateFrom(AngleTrig(angles), rates, k);
   return k;
 }
 
 void bodyKinematics(const track::TrackGeometry& geometry, RotationSequence seq, double height,
                     const Vector6d& q, const Vector6d& qd, BodyKinematics& out) {
-  out.tf = geometry.at(q[kS]);
+  if (!(out.tf_key == q[kS] && out.tf_geometry == &geometry)) {
+    out.tf = geometry.at(q[kS]);
+    out.tf_key = q[kS];
+    out.tf_geometry = &geometry;
+  }
   const Eigen::Vector3d& w = out.tf.w;
   const Eigen::Vector3d& w_s = out.tf.w_s;
   const double sd = qd[kS];
   const Eigen::Vector3d angles = q.segment<3>(kRoll);
   const Eigen::Vector3d rates = qd.segment<3>(kRoll);
   out.rbar = Eigen::Vector3d(0.0, q[kY], height + q[kZ]);
-  out.body = eulerKinematics(seq, angles, rates);
-  out.attach =
-      seq == RotationSequence::YawRollPitch ? intermediateKinematics(angles, rates) : out.body;
+  const AngleTrig trig(angles);
+  if (seq == RotationSequence::YawRollPitch) {
+    intermediateFrom(trig, rates, out.attach);
+    eulerFrom(seq, trig, rates, &out.attach, out.body);
+  } else {
+    eulerFrom(seq, trig, rates, nullptr, out.body);
+    out.attach = out.body;
+  }
   const Eigen::Vector3d rbar_dot(0.0, qd[kY], qd[kZ]);
+  out.rbar_dot = rbar_dot;
+  out.sd = sd;
+  out.AG.noalias() = out.attach.A * out.attach.G;
+  out.omega_rel.noalias() = out.AG * rates;
 
   // Translation: v = (e_x + w x rbar) sdot + rbar_dot (track comps).
   out.Lv.setZero();
@@ -108,15 +136,15 @@ Matrix36d pointJacobian(const BodyKinematics& k, const Eigen::Vector3d& u) {
   L.col(kS) = Eigen::Vector3d::UnitX() + k.tf.w.cross(k.rbar + au);
   L(1, kY) = 1.0;
   L(2, kZ) = 1.0;
-  // A (G alpha_dot x u) = -A skew(u) G alpha_dot
-  L.block<3, 3>(0, kRoll) = -k.attach.A * skew(u) * k.attach.G;
+  // A (G alpha_dot x u) = -A skew(u) G alpha_dot = -skew(A u) (A G) alpha_dot
+  for (int c = 0; c < 3; ++c) L.col(kRoll + c) = k.AG.col(c).cross(au);
   return L;
 }
 
 Matrix36d attachmentAngularJacobian(const BodyKinematics& k) {
   Matrix36d L = Matrix36d::Zero();
   L.col(kS) = k.tf.w;
-  L.block<3, 3>(0, kRoll) = k.attach.A * k.attach.G;
+  L.block<3, 3>(0, kRoll) = k.AG;
   return L;
 }
 

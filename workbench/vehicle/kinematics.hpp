@@ -20,6 +20,7 @@
 // alpha_b = Lw qddot + gamma_w, including the motion of the track frame itself (w = angular rate of
 // the track frame per metre, w_s its s-derivative, from TrackGeometry::at()).
 #include <Eigen/Dense>
+#include <limits>
 
 #include "workbench/track/geometry.hpp"
 
@@ -62,6 +63,17 @@ struct BodyKinematics {
   Matrix36d Lw = Matrix36d::Zero();                   // domega_b/dqdot
   Eigen::Vector3d gamma_v = Eigen::Vector3d::Zero();  // a - Lv qddot (track comps)
   Eigen::Vector3d gamma_w = Eigen::Vector3d::Zero();  // alpha_b - Lw qddot (body comps)
+  // Per-evaluation constants of the attachment frame, so that a point force or a point velocity
+  // costs a few cross products instead of a 3x6 Jacobian (pointVelocity, addPointForce):
+  Eigen::Matrix3d AG = Eigen::Matrix3d::Identity();     // attach.A attach.G (track comps)
+  Eigen::Vector3d omega_rel = Eigen::Vector3d::Zero();  // AG alpha_dot: attachment frame's
+                                                        // angular velocity rel. to the track frame
+  Eigen::Vector3d rbar_dot = Eigen::Vector3d::Zero();   // (0, ydot, zdot)
+  double sd = 0.0;                                      // sdot
+  // The track frame tf was evaluated at s = tf_key on tf_geometry: an evaluation at the same s
+  // (the stages of a multistage method at one time, ABM predictor and corrector) reuses it.
+  double tf_key = std::numeric_limits<double>::quiet_NaN();
+  const track::TrackGeometry* tf_geometry = nullptr;
 
   // Global position of the CoM and global rotation of the body.
   Eigen::Vector3d position() const { return tf.R + tf.A * rbar; }
@@ -77,6 +89,23 @@ void bodyKinematics(const track::TrackGeometry& geometry, RotationSequence seq, 
 // position in track-frame components, and the Jacobian of its absolute velocity (track comps).
 Eigen::Vector3d pointPosition(const BodyKinematics& k, const Eigen::Vector3d& u);
 Matrix36d pointJacobian(const BodyKinematics& k, const Eigen::Vector3d& u);
+
+// The same without forming the Jacobian, for the point at au = attach.A u (track comps, relative
+// to the CoM): its absolute velocity L_P qdot = (e_x + w x (rbar + au)) sdot + rbar_dot +
+// omega_rel x au, and the generalised force L_P^T F of a force F (track comps) applied there:
+// (e_x + w x (rbar + au)) . F on s, F_y, F_z on y, z, AG^T (au x F) on the angles
+// (L_P's angle block is -A skew(u) G = -skew(au) AG).
+inline Eigen::Vector3d pointVelocity(const BodyKinematics& k, const Eigen::Vector3d& au) {
+  return (Eigen::Vector3d::UnitX() + k.tf.w.cross(k.rbar + au)) * k.sd + k.rbar_dot +
+         k.omega_rel.cross(au);
+}
+inline void addPointForce(const BodyKinematics& k, const Eigen::Vector3d& au,
+                          const Eigen::Vector3d& F, Vector6d& Q) {
+  Q[kS] += F.x() + k.tf.w.cross(k.rbar + au).dot(F);
+  Q[kY] += F.y();
+  Q[kZ] += F.z();
+  Q.segment<3>(kRoll).noalias() += k.AG.transpose() * au.cross(F);
+}
 // Jacobian of the absolute angular velocity of the attachment frame, track-frame components.
 Matrix36d attachmentAngularJacobian(const BodyKinematics& k);
 

@@ -1,5 +1,6 @@
 #include "workbench/vehicle/model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -76,6 +77,8 @@ void validateVehicle(const VehicleSpec& spec, Diagnostics& diags) {
   if (spec.bodies.empty()) diags.add(spec.loc, vname + ": no bodies");
   if (!(std::isfinite(spec.speed) && spec.speed >= 0.0))
     diags.add(spec.loc, vname + ": speed must be >= 0 m/s, got " + num(spec.speed));
+  if (!std::isfinite(spec.acceleration))
+    diags.add(spec.loc, vname + ": acceleration must be finite, got " + num(spec.acceleration));
   if (!(std::isfinite(spec.wheel_radius) && spec.wheel_radius > 0.0))
     diags.add(spec.loc, vname + ": wheel_radius must be > 0 m, got " + num(spec.wheel_radius));
   if (!std::isfinite(spec.start)) diags.add(spec.loc, vname + ": start must be finite");
@@ -189,6 +192,7 @@ VehicleModel compileVehicle(const VehicleSpec& spec, const track::TrackModel& tr
   VehicleModel m;
   m.name = spec.name;
   m.speed = spec.speed;
+  m.acceleration = spec.acceleration;
   m.wheel_radius = spec.wheel_radius;
   m.start = spec.start;
   m.geometry = track.geometry();
@@ -219,6 +223,10 @@ VehicleModel compileVehicle(const VehicleSpec& spec, const track::TrackModel& tr
     g.delta_nominal = nominalDelta(spec.bodies[static_cast<std::size_t>(g.body1)],
                                    spec.bodies[static_cast<std::size_t>(g.body2)], e);
     g.length0 = e.length0 > 0.0 ? e.length0 : g.delta_nominal.norm();
+    const std::array<int, 2> pair{g.body1, g.body2};
+    const auto it = std::find(m.body_pairs.begin(), m.body_pairs.end(), pair);
+    g.pair = static_cast<int>(it - m.body_pairs.begin());
+    if (it == m.body_pairs.end()) m.body_pairs.push_back(pair);
     switch (e.kind) {
       case ElementKind::SpringDamper:
         m.spring_dampers.push_back({g, e.stiffness, e.damping, e.preload});

@@ -19,6 +19,7 @@
 //     bending spring about an axis);
 //   bumpstop: a valid table (suspension::BumpstopLaw::check), direction x, y, z or axial.
 #include <Eigen/Dense>
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -57,6 +58,7 @@ struct ElementGeometry {
   // level track): the zero of directional deformations.
   Eigen::Vector3d delta_nominal = Eigen::Vector3d::Zero();
   double length0 = 0.0;  // [m] axial undeformed length (the nominal distance if spec gives 0)
+  int pair = -1;         // index into VehicleModel::body_pairs of (body1, body2)
 };
 
 struct SpringDamperElement {
@@ -94,7 +96,8 @@ std::string_view elementKindName(ElementKind kind);
 
 struct VehicleModel {
   std::string name;
-  double speed = 0.0;          // [m/s] V
+  double speed = 0.0;          // [m/s] V0, the forward speed at t = 0
+  double acceleration = 0.0;   // [m/s^2] a, constant: V(t) = V0 + a t (a speed ramp)
   double wheel_radius = 0.46;  // [m] r0
   double start = 0.0;          // [m] s of the vehicle reference point at t = 0
   double gravity = 9.81;       // [m/s^2]
@@ -105,6 +108,10 @@ struct VehicleModel {
   std::vector<BendingSpringElement> bending_springs;
   std::vector<BumpstopElement> bumpstops;
   std::vector<std::string> element_kinds;  // Lua names of the kinds present, in enum order
+  // The distinct (master, other) body pairs of the elements: the relative placement of their
+  // track frames (A_ij, R_ij of Eq. 28) is computed once per pair and evaluation (the wagon's 48
+  // elements join 6 pairs).
+  std::vector<std::array<int, 2>> body_pairs;
   track::TrackGeometry geometry;
   SourceLoc loc;
 
@@ -114,8 +121,14 @@ struct VehicleModel {
   std::string elementName(ElementId id) const { return element(id).name; }
   int elementCount() const;
   std::vector<ElementId> elements() const;  // all, by kind then index
-  // Arc length of body b's track frame at time t (the imposed forward motion s = s0 + x + V t).
-  double bodyS(int b, double t) const { return start + bodies[b].x + speed * t; }
+  // The imposed forward motion (rheonomic, docs/vehicle.md section 1): speed V(t) = V0 + a t,
+  // distance travelled V0 t + a t^2 / 2 and the arc length s = start + x + travel(t) of body b's
+  // track frame. With a = 0 these are bit-identical to the constant-speed expressions (the a terms
+  // add +0.0). The run checks that V(t) >= 0 over its duration (a negative speed is an input
+  // error, not clamped).
+  double speedAt(double t) const { return speed + acceleration * t; }
+  double travel(double t) const { return speed * t + 0.5 * acceleration * t * t; }
+  double bodyS(int b, double t) const { return start + bodies[b].x + travel(t); }
 };
 
 // Adds every problem of `spec` to `diags`. Does not throw.

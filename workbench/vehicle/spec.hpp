@@ -64,7 +64,8 @@ struct VehicleSpec {
   std::string name;
   std::vector<BodySpec> bodies;
   std::vector<ElementSpec> elements;
-  double speed = 0.0;          // [m/s] constant forward velocity V
+  double speed = 0.0;          // [m/s] forward velocity V0 at t = 0
+  double acceleration = 0.0;   // [m/s^2] constant longitudinal acceleration a: V(t) = V0 + a t
   double wheel_radius = 0.46;  // [m] nominal rolling radius r0 (wheelsets)
   double start = 0.0;          // [m] arc length of the vehicle reference point at t = 0
   SourceLoc loc;
