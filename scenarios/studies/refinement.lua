@@ -6,8 +6,8 @@
 -- Figures and tables: study_cost.png/.csv (Fig. 26; the CSV has each case's table build time
 -- and size: table_build_time_s, table_bytes), study_tables.png (Tables 9-10: build time and
 -- memory, default vs refined), study_failures.csv, study_accuracy_lut_vs_kec.csv/.png.
--- Fixed steps: see efficiency_case3.lua; the same one-line switch:
-local PRESCRIBED_SPIN = false
+-- Wheelset spin prescribed and 1 ms fixed steps, as efficiency_case3.lua (the same switch):
+local PRESCRIBED_SPIN = true
 
 local lib = require "studies.lib"
 local spin, h = lib.spin(PRESCRIBED_SPIN)

@@ -22,21 +22,26 @@
 -- Distance: the whole 500 m track (tangent, transition and 350 m of curve with flange contact)
 -- unless DISTANCE is set below (e.g. 200: the curve entry only; ~2.5x cheaper).
 local DISTANCE = 500
--- Fixed steps with the free wheelset spin are stable up to about 0.27 ms (ABM) / 0.5 ms (RK4);
--- larger steps appear as failed cases. See efficiency_case3.lua for the prescribed spin.
-local PRESCRIBED_SPIN = false
-
+-- Models: KEC and LUT (K = 1e10) with the free wheelset spin (our default model; fixed steps are
+-- stable up to about 0.27 ms (ABM) / 0.5 ms (RK4), larger steps appear as failed cases), and KEC
+-- with the prescribed spin (contact.wheelset_spin = "prescribed", the paper's 1 ms fixed steps;
+-- a different model, so it has its own reference). IDA only for the free-spin models.
 local lib = require "studies.lib"
-local spin = lib.spin(PRESCRIBED_SPIN)
 local run = { ["run.distance"] = DISTANCE }
+local models = {
+  { contact = lib.kec(), spin = lib.spin(false), adaptive = { "dopri5", "bdf", "ida" } },
+  { contact = lib.lut(1e10), spin = lib.spin(false), adaptive = { "dopri5", "bdf", "ida" } },
+  { contact = lib.kec(), spin = lib.spin(true), adaptive = { "dopri5", "bdf" } },
+}
 local cases = {}
-for _, contact in ipairs({ lib.kec(), lib.lut(1e10) }) do
+for _, mdl in ipairs(models) do
+  local contact, spin = mdl.contact, mdl.spin
   for _, m in ipairs({ "rk4", "abm" }) do
     for _, h in ipairs({ 1e-3, 5e-4, 2.5e-4, 1.25e-4, 6.25e-5 }) do
       cases[#cases + 1] = lib.merge(contact, lib.fixed(m, h), spin, run)
     end
   end
-  for _, m in ipairs({ "dopri5", "bdf", "ida" }) do
+  for _, m in ipairs(mdl.adaptive) do
     for _, tol in ipairs({ 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8 }) do
       cases[#cases + 1] = lib.merge(contact, lib.adaptive(m, tol, 1e-3), spin, run)
     end

@@ -80,11 +80,10 @@ TEST(Study, DuplicateCases) {
 // Every shipped study loads, and every case of it (base + overrides) passes the scenario
 // validator, so a long study never stops on a typo in its 40th case.
 TEST(Study, ShippedStudiesValidate) {
-  const std::map<std::string, std::size_t> expected = {{"efficiency_case3.lua", 51},
-                                                       {"refinement.lua", 36},
-                                                       {"work_precision.lua", 62},
-                                                       {"effects.lua", 20},
-                                                       {"guided_integrators.lua", 4}};
+  const std::map<std::string, std::size_t> expected = {
+      {"efficiency_case3.lua", 51}, {"refinement.lua", 36},
+      {"work_precision.lua", 87},   {"speed.lua", 6},
+      {"effects.lua", 20},          {"guided_integrators.lua", 4}};
   for (const auto& [name, count] : expected) {
     auto st = loadStudy("scenarios/studies/" + name, RB_SOURCE_DIR);
     EXPECT_EQ(st.cases.size(), count) << name;
