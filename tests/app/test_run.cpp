@@ -75,3 +75,46 @@ TEST(Run, NonPhysicalValuesAreReportedWithFileLine) {
       "tests/scenario/bad/nonphysical.lua:4: track.segments[2] (curve): radius must be >= 10 m "
       "(tighter curves are not railway track), got 5");
 }
+
+// A speed ramp that would stop the vehicle (V0 + a t = 0) before the run's distance is an input
+// error naming the field, not a run with a negative speed.
+TEST(Run, RampThatStopsTheVehicleIsAnInputError) {
+  rb::app::RunOptions o = options("scenarios/studies/case3_base.lua");
+  o.overrides = {"vehicle.acceleration=-5"};
+  std::string what = "<no error>";
+  try {
+    rb::app::checkScenario(o);
+  } catch (const rb::InputError& e) {
+    what = e.what();
+  }
+  EXPECT_NE(what.find("vehicle: acceleration -5 m/s^2 stops the vehicle"), std::string::npos)
+      << what;
+  o.overrides = {"vehicle.acceleration=-0.1"};  // 20 m/s -> 17.5 m/s over 500 m: fine
+  EXPECT_NO_THROW(rb::app::checkScenario(o));
+}
+
+// Regression (found by the hard-case suite): the distance in a failure message was that of the
+// first body in the vehicle file (the car body centre, 10.9 m behind the leading wheelset),
+// while the run's end is measured at the leading body. It is now the leading wheelset's arc
+// length at the last output.
+TEST(Run, FailureDistanceIsThatOfTheLeadingWheelset) {
+  fs::path d = fs::temp_directory_path() / "rb_test_run";
+  fs::create_directories(d);
+  std::string out = (d / "fail_distance.h5").string();
+  rb::app::RunOptions o = options("scenarios/hard/lut_stiff_flange.lua", out);
+  o.overrides = {"solver.method=rk4", "solver.step=1e-3", "run.duration=2"};
+  o.quiet = true;
+  ASSERT_EQ(rb::app::runScenario(o), 2);  // the stiff flange impact: a clean failure
+  hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  const std::string msg = h5test::stringAttr(f, "/stats", "message");
+  const auto s_ws1 = h5test::dataset(f, "/bodies/ws1/s");
+  const auto s_car = h5test::dataset(f, "/bodies/car/s");
+  H5Fclose(f);
+  ASSERT_FALSE(s_ws1.empty());
+  const auto at = msg.find("(distance ");
+  ASSERT_NE(at, std::string::npos) << msg;
+  const double reported = std::stod(msg.substr(at + 10));
+  EXPECT_NEAR(reported, s_ws1.back(), 1e-3) << msg;
+  EXPECT_GT(std::abs(reported - s_car.back()), 5.0) << msg;
+}

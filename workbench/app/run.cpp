@@ -182,14 +182,22 @@ std::string kindName(vehicle::BodyKind k) {
   return "?";
 }
 
+// Position x of the leading body (largest x: the first wheelset of the wagon), relative to the
+// vehicle's reference point. Both the run's distance and the distance reported with a failure
+// are measured at this body.
+double leadingX(const vehicle::VehicleModel& v) {
+  double lead = -1e300;
+  for (const auto& b : v.bodies) lead = std::max(lead, b.x);
+  return lead;
+}
+
 // Simulated time of a vehicle run: run.duration, or run.distance (default: until the leading
 // body reaches the end of the track) at the vehicle's speed.
 double endTime(const Compiled& c) {
   const auto& run = c.spec.run;
   if (run.duration > 0) return run.duration;
   const auto& v = *c.vehicle;
-  double lead = -1e300;
-  for (const auto& b : v.bodies) lead = std::max(lead, b.x);
+  const double lead = leadingX(v);
   double distance =
       run.distance > 0 ? run.distance : c.track->geometry().length() - (v.start + lead);
   distance = std::max(distance, 0.0);
@@ -214,7 +222,10 @@ SimulationRequest vehicleRequest(const Compiled& c, const RunOptions& options,
   r.output_every = c.spec.run.output_every;
   // Progress line only for a person watching a terminal (issue 3).
   r.progress = !options.quiet && isatty(STDERR_FILENO);
-  const double lead = c.vehicle->start + c.vehicle->bodies.front().x;
+  // Arc length of the leading body (the same body endTime() runs to the track end), so that a
+  // failure's "distance" is where the first wheelset was (it used to be the first body in the
+  // file, the car body centre: 10.9 m behind the leading wheelset of the Manchester wagon).
+  const double lead = c.vehicle->start + leadingX(*c.vehicle);
   const vehicle::VehicleModel* vm = &*c.vehicle;
   r.distance = [lead, vm](double t, const Eigen::VectorXd&) { return lead + vm->travel(t); };
   // The imposed forward speed V(t) = V0 + a t (a speed ramp when vehicle.acceleration != 0).
