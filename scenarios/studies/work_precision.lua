@@ -25,11 +25,13 @@ local DISTANCE = 500
 -- Models: KEC and LUT (K = 1e10) with the free wheelset spin (our default model; fixed steps are
 -- stable up to about 0.27 ms (ABM) / 0.5 ms (RK4), larger steps appear as failed cases), and KEC
 -- with the prescribed spin (contact.wheelset_spin = "prescribed", the paper's 1 ms fixed steps;
--- a different model, so it has its own reference). IDA only for the free-spin models.
+-- a different model, so it has its own reference). IDA only for the free-spin models; for the
+-- free-spin KEC also dopri5 and BDF without a largest step (max_step = 0).
 local lib = require "studies.lib"
 local run = { ["run.distance"] = DISTANCE }
 local models = {
-  { contact = lib.kec(), spin = lib.spin(false), adaptive = { "dopri5", "bdf", "ida" } },
+  { contact = lib.kec(), spin = lib.spin(false), adaptive = { "dopri5", "bdf", "ida" },
+    unlimited = true },
   { contact = lib.lut(1e10), spin = lib.spin(false), adaptive = { "dopri5", "bdf", "ida" } },
   { contact = lib.kec(), spin = lib.spin(true), adaptive = { "dopri5", "bdf" } },
 }
@@ -44,6 +46,14 @@ for _, mdl in ipairs(models) do
   for _, m in ipairs(mdl.adaptive) do
     for _, tol in ipairs({ 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8 }) do
       cases[#cases + 1] = lib.merge(contact, lib.adaptive(m, tol, 1e-3), spin, run)
+    end
+  end
+  -- Without the paper's 1 ms largest step: what the error control alone chooses.
+  if mdl.unlimited then
+    for _, m in ipairs({ "dopri5", "bdf" }) do
+      for _, tol in ipairs({ 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8 }) do
+        cases[#cases + 1] = lib.merge(contact, lib.adaptive(m, tol, 0), spin, run)
+      end
     end
   end
   local refined = { ["profiles.refined_tables"] = true }
