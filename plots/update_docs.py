@@ -323,15 +323,21 @@ def bench_block(outdir: str) -> str:
         data = json.load(f)
     body = []
     for b in data.get("benchmarks", []):
-        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") not in ("median", "cv"):
             continue
-        unit = b.get("time_unit", "ns")
-        scale = {"ns": 1e-3, "us": 1.0, "ms": 1e3, "s": 1e6}[unit]
-        body.append([b["name"], f"{b['cpu_time'] * scale:.3f}", str(b.get("iterations", ""))])
+        if b.get("aggregate_name") == "cv":
+            continue
+        name = b.get("run_name", b["name"])
+        if "us_per_eval" in b:  # bench_wagon's counter: CPU microseconds per evaluation
+            body.append([name, f"{b['us_per_eval']:.2f}"])
+        else:
+            unit = b.get("time_unit", "ns")
+            scale = {"ns": 1e-3, "us": 1.0, "ms": 1e3, "s": 1e6}[unit]
+            body.append([name, f"{b['cpu_time'] * scale:.3f}"])
     ctx = data.get("context", {})
     return (f"Google Benchmark on {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs at "
             f"{ctx.get('mhz_per_cpu', '?')} MHz, {ctx.get('date', '')}:\n\n" +
-            table(["benchmark", "CPU µs", "iterations"], body))
+            table(["benchmark (median of the repetitions)", "CPU µs per evaluation"], body))
 
 
 # ---- hard cases --------------------------------------------------------------------------------
