@@ -4,8 +4,8 @@ the outputs of `./wb studies` (issue 7: "one command regenerates every table and
 
     /usr/bin/python3 plots/update_docs.py OUT_DIR [--build BUILD_DIR] [--docs DOCS_DIR]
 
-OUT_DIR holds one folder per study (efficiency_case3, refinement, work_precision, effects,
-speed, each with the study_*.csv / *.png of plot_study.py) and bench_wagon.json (Google
+OUT_DIR holds one folder per study (efficiency_case3, flange_stiffness, refinement,
+work_precision, effects, speed, each with the study_*.csv / *.png of plot_study.py) and bench_wagon.json (Google
 Benchmark, one wagon evaluation and its parts). BUILD_DIR/hard/hard_cases.csv is the hard-case
 suite's record. Every generated block sits between the markers
 
@@ -92,20 +92,27 @@ def paper_lookup(paper, method, K, tables, integrator, tol) -> Optional[dict]:
     return None
 
 
+def total_evals(r: dict) -> int:
+    """rhs evaluations including the finite-difference Jacobian columns (Matlab's ode15s counts
+    its numjac evaluations in nfevals too)."""
+    return int(r["rhs_evals"]) + int(r.get("rhs_evals_jac") or 0)
+
+
 def cost_cell(r: Optional[dict], sim: float) -> str:
     if r is None:
         return "–"
     if r["status"] != "ok":
         return "failed"
     cpu = num(r["cpu_median_s"])
-    return f"{cpu:.2f} s / {int(r['rhs_evals']) + int(r['rhs_evals_jac'] or 0)} ({sim / cpu:.0f}x)"
+    return f"{cpu:.2f} s / {total_evals(r)} ({sim / cpu:.0f}x)"
 
 
-def efficiency_block(outdir: str) -> Dict[str, str]:
-    rows = read_csv(os.path.join(outdir, "efficiency_case3", "study_cost.csv"))
+def efficiency_block(outdir: str, study: str = "efficiency_case3",
+                     name: str = "efficiency") -> Dict[str, str]:
+    rows = read_csv(os.path.join(outdir, study, "study_cost.csv"))
     if not rows:
-        return {"efficiency": missing("out/studies/efficiency_case3/study_cost.csv"),
-                "efficiency_paper": missing("out/studies/efficiency_case3/study_cost.csv")}
+        return {name: missing(f"out/studies/{study}/study_cost.csv"),
+                name + "_paper": missing(f"out/studies/{study}/study_cost.csv")}
     sim = max(num(r["t_reached_s"], 0) for r in rows)
     models = [("kec", "")] + [("lut", k) for k in sorted({r["K"] for r in rows if r["K"]},
                                                          key=lambda k: num(k))]
@@ -146,24 +153,24 @@ def efficiency_block(outdir: str) -> Dict[str, str]:
                           if kec and lut["status"] == "ok" and kec["status"] == "ok" else None)
             paper_ratio = (num(pl["cpu_median_s"]) / num(pk["cpu_median_s"])
                            if pl and pk else None)
-            prow.append([s, k, lut["rhs_evals"] if lut["status"] == "ok" else "failed",
+            prow.append([s, k, total_evals(lut) if lut["status"] == "ok" else "failed",
                          pl["evaluations"] if pl else "–",
-                         kec["rhs_evals"] if kec and kec["status"] == "ok" else "–",
+                         total_evals(kec) if kec and kec["status"] == "ok" else "–",
                          pk["evaluations"] if pk else "–",
                          fmt(ours_ratio, "{:.2f}"), fmt(paper_ratio, "{:.2f}")])
     paper_tab = table(["solver", "LUT K", "LUT evals (ours)", "LUT evals (paper)",
                        "KEC evals (ours)", "KEC evals (paper)", "CPU LUT/KEC (ours)",
                        "CPU LUT/KEC (paper)"], prow)
-    return {"efficiency": eff, "efficiency_paper": paper_tab}
+    return {name: eff, name + "_paper": paper_tab}
 
 
 # ---- accuracy (paper Eq. 33, Table 8) ----------------------------------------------------------
 
-def accuracy_block(outdir: str) -> str:
-    rows = read_csv(os.path.join(outdir, "efficiency_case3", "study_accuracy_lut_vs_kec.csv"))
+def accuracy_block(outdir: str, study: str = "efficiency_case3") -> str:
+    rows = read_csv(os.path.join(outdir, study, "study_accuracy_lut_vs_kec.csv"))
     rows = [r for r in rows if r.get("wheelset") == "all"]
     if not rows:
-        return missing("out/studies/efficiency_case3/study_accuracy_lut_vs_kec.csv")
+        return missing(f"out/studies/{study}/study_accuracy_lut_vs_kec.csv")
     Ks = sorted({r["K"] for r in rows}, key=lambda k: num(k))
     solvers = []
     for r in rows:
@@ -365,7 +372,8 @@ def copy_figures(outdir: str, docs: str) -> List[str]:
     figdir = os.path.join(docs, "figures")
     os.makedirs(figdir, exist_ok=True)
     copied = []
-    for study in ("efficiency_case3", "refinement", "work_precision", "effects", "speed"):
+    for study in ("efficiency_case3", "flange_stiffness", "refinement", "work_precision", "effects",
+                  "speed"):
         d = os.path.join(outdir, study)
         if not os.path.isdir(d):
             continue
@@ -387,6 +395,8 @@ def main(argv=None) -> int:
     blocks = {"studies.md": {}, "performance.md": {}}
     blocks["studies.md"].update(efficiency_block(a.outdir))
     blocks["studies.md"]["accuracy"] = accuracy_block(a.outdir)
+    blocks["studies.md"].update(efficiency_block(a.outdir, "flange_stiffness", "flange"))
+    blocks["studies.md"]["flange_accuracy"] = accuracy_block(a.outdir, "flange_stiffness")
     blocks["studies.md"]["refinement"] = refinement_block(a.outdir)
     blocks["studies.md"]["work_precision"] = work_precision_block(a.outdir)
     blocks["studies.md"]["hard_cases"] = hard_block(a.build)

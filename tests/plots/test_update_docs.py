@@ -46,8 +46,8 @@ def main():
     docs = os.path.join(TMP, "docs")
     out = os.path.join(TMP, "out")
     os.makedirs(docs)
-    blocks_s = ["efficiency", "efficiency_paper", "accuracy", "refinement", "work_precision",
-                "hard_cases"]
+    blocks_s = ["efficiency", "efficiency_paper", "accuracy", "flange", "flange_paper",
+                "flange_accuracy", "refinement", "work_precision", "hard_cases"]
     blocks_p = ["speed", "bench", "effects"]
     for md, names in (("studies.md", blocks_s), ("performance.md", blocks_p)):
         with open(os.path.join(docs, md), "w") as f:

@@ -1,0 +1,32 @@
+-- The paper's stiffness study (section 5.3, Fig. 23, Tables 7, 12-16) where the flange is really
+-- loaded. On the paper's own case 3 our S1002/60E1 LUT never reaches its flange (the largest
+-- flange "indentation" is a 0.026 mm gap), so K changes nothing there (docs/studies.md, section
+-- 1). Here the same matrix runs on the hard case of scenarios/hard/lut_stiff_flange.lua
+-- (bases/flange_curve.lua: R = 200 m, 15 m/s, ORE B176 high, 6 s; the leading outer flange
+-- carries up to ~240 kN): KEC and LUT with K = 1e9 ... 7.075e13 N/m^1.5 (D = K/100, Table 3),
+-- RK4 and ABM at 1 ms (prescribed spin, as efficiency_case3.lua), dopri5 and BDF at
+-- rtol = atol = 1e-4 ... 1e-8 with the paper's 1 ms largest step. 3 repeats.
+--   ./wb study scenarios/studies/flange_stiffness.lua        (out/flange_stiffness/)
+-- Outputs as efficiency_case3.lua: study_cost.csv/.png, study_failures.csv,
+-- study_accuracy_lut_vs_kec.csv/.png, study_lut_integrators.png, study_lut_stiffness_*.png.
+local lib = require "studies.lib"
+local spin, h = lib.spin(true)
+local solvers = { lib.fixed("rk4", h), lib.fixed("abm", h) }
+for _, m in ipairs({ "dopri5", "bdf" }) do
+  for _, tol in ipairs({ 1e-4, 1e-5, 1e-6, 1e-7, 1e-8 }) do
+    solvers[#solvers + 1] = lib.adaptive(m, tol, 1e-3)
+  end
+end
+local cases = {}
+for _, s in ipairs(solvers) do
+  cases[#cases + 1] = lib.merge(lib.kec(), s, spin)
+  for _, K in ipairs({ 1e9, 1e10, 1e11, 1e12, 7.075e13 }) do
+    cases[#cases + 1] = lib.merge(lib.lut(K), s, spin)
+  end
+end
+
+study {
+  base = "bases/flange_curve.lua",
+  cases = cases,
+  repeats = 3,
+}
