@@ -11,7 +11,7 @@
 //   Vehicle                  vehicle::evaluate: 7 bodies (kinematics, mass matrices, inertia and
 //                            gravity forces) and the 48 suspension elements
 //   KecGeometry              the 4 wheelsets' contact constraints: solveKec (warm-started) +
-//                            kecQuadraticTerm + KecTable::eval of both contact points
+//                            kecQuadraticTerm + KecTable::evalValues of both contact points
 //   LutGeometry              the 4 wheelsets' LutTable::evalZPhi + evalValues
 //   Creep                    8 patches: Hertz shape (table) + makeContactPatch + polachForce
 //   AugmentedSolve           4 wheelsets: factor the augmented system + one solve
@@ -185,10 +185,10 @@ void BM_KecGeometry(benchmark::State& st) {
         pd << qd[vehicle::kY], 20 * ip.y_l_s, 20 * ip.y_r_s, 20 * ip.z_l_s, 20 * ip.z_r_s;
         const Eigen::Vector4d xd = sol.dx_dp * pd;
         sink += contact::kecQuadraticTerm(sol, xd)(0);
-        tab.eval(contact::Side::Left, sol.s_lk, kp);
-        sink += kp.value[0];
-        tab.eval(contact::Side::Right, sol.s_rk, kp);
-        sink += kp.value[0];
+        tab.evalValues(contact::Side::Left, sol.s_lk, kp);
+        sink += kp.value[1];  // Sw (evalValues leaves F)
+        tab.evalValues(contact::Side::Right, sol.s_rk, kp);
+        sink += kp.value[1];  // Sw (evalValues leaves F)
       }
     }
     benchmark::DoNotOptimize(sink);

@@ -41,6 +41,7 @@ from __future__ import annotations
 import csv
 import math
 import os
+import re
 import sys
 from dataclasses import dataclass, field
 from typing import Dict, List, Optional, Sequence, Tuple
@@ -824,16 +825,24 @@ def fig_work_precision(rows: List[dict], stat: str = "max", against: str = "refe
     cols = [("y", "mm", "lateral displacement y"), ("yaw", "mrad", "yaw angle"),
             ("Q", "kN", "normal force Q"), ("Fy", "kN", "lateral creep force")]
     with rp.report_style():
-        fig, axes = plt.subplots(2, 2, figsize=(rp.A4_WIDTH_IN * 1.2, 6.4), layout="constrained")
+        fig, axes = plt.subplots(2, 2, figsize=(rp.A4_WIDTH_IN * 1.2, 7.6))
         for ax, (tag, unit, name) in zip(axes.flat, cols):
             key = f"{tag}_{stat}_{unit}"
+            # One line per model and integrator setting apart from the tolerance / step (so that,
+            # e.g., dopri5 with and without a largest step are separate lines).
             groups: Dict[Tuple[str, str], List[dict]] = {}
             for r in cases:
-                groups.setdefault((r["model"], r["integrator"]), []).append(r)
+                rest = re.sub(r"\b(tol|h)=\S+\s*", "", r.get("solver", "")).strip()
+                groups.setdefault((r["model"], rest or r["integrator"]), []).append(r)
             for (model, integ), rs in groups.items():
                 method = model.split()[0].lower() if model else ""
                 mk, ls = METHOD_MARKERS.get(method, ("^", ":"))
-                col = INTEGRATOR_COLORS.get(integ, "#555555")
+                if "prescribed" in model:  # another model of the same method
+                    mk, ls = "v", "-."
+                col = INTEGRATOR_COLORS.get(rs[0]["integrator"], "#555555")
+                if ("hmax" not in integ or "hmax=0ms" in integ) and \
+                        rs[0]["integrator"] in ("dopri5", "bdf", "ida"):
+                    mk, ls = "D", ":"  # no largest step: the error control alone
                 ok = [r for r in rs if r["status"] == "ok" and r[key] not in ("", None)
                       and float(r[key]) > 0]
                 # Through the tolerances / steps, coarse to fine (not sorted by the error).
@@ -869,12 +878,17 @@ def fig_work_precision(rows: List[dict], stat: str = "max", against: str = "refe
         if tablerows:
             h.append(plt.Line2D([], [], color="#444444", lw=0.8))
             lab.append("error of the default tables (KEC solid, LUT dashed)")
-        axes.flat[0].legend(h, lab, loc="best", fontsize=5.5)
         what = "maximum" if stat == "max" else "RMS"
         ref = "the reference (refined tables)" if against == "reference" else \
             "a reference on the same tables (integration error only)"
         _title(fig, f"Work-precision: {what} error against {ref} vs CPU time "
                     f"(all wheelsets / wheels)")
+        # The legend below the panels (matplotlib 3.6: no "outside" legend with constrained
+        # layout), so that it hides no data.
+        rows_needed = (len(lab) + 2) // 3
+        bottom = min(0.4, 0.02 + 0.017 * rows_needed)
+        fig.tight_layout(rect=(0, bottom, 1, 0.95))
+        fig.legend(h, lab, loc="lower center", ncol=3, fontsize=5.5, frameon=False)
     return fig
 
 

@@ -248,4 +248,48 @@ TEST(Kec, FailuresAreRecoverableCodes) {
   EXPECT_EQ(ok.code(), 0);
 }
 
+// The dynamics' values-only lookup: the same values as eval() (bit for bit for the maps; the
+// transition end points A, B exact on constant intervals, otherwise also bit for bit).
+TEST(Kec, EvalValuesEqualsEval) {
+  const KecTable& kec = rbtest::s1002Kec();
+  int checked = 0;
+  for (const Side side : {Side::Left, Side::Right}) {
+    const double lo = kec.validMin(side), hi = kec.validMax(side);
+    for (int i = 0; i <= 4000; ++i) {
+      const double s = lo + (hi - lo) * i / 4000.0;
+      KecPoint full, vals;
+      kec.eval(side, s, full);
+      kec.evalValues(side, s, vals);
+      EXPECT_EQ(vals.inside, full.inside);
+      for (std::size_t q = 1; q < kKecQuantities; ++q) {
+        if (q < static_cast<std::size_t>(KecQuantity::SwA)) {
+          EXPECT_EQ(vals.value[q], full.value[q]) << q << " " << s;
+        } else {
+          EXPECT_NEAR(vals.value[q], full.value[q], 4e-16 * std::abs(full.value[q]) + 1e-20)
+              << q << " " << s;
+        }
+      }
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 8002);
+}
+
+// kecQuadraticTerm takes g_x^-1 from dx_dp for a solved system; the pivoted LU (the path of an
+// unsolved one) gives the same to round-off.
+TEST(Kec, QuadraticTermFromDxDpEqualsTheLuSolve) {
+  const KecTable& kec = rbtest::s1002Kec();
+  for (const double y : {-6e-3, -1e-3, 0.0, 2.5e-3, 6.5e-3}) {
+    KecSolution s = kecAt(kec, y);
+    s = solveKec(kec, KecInput{y, 1e-3, 0.5e-3, -0.4e-3, 0.7e-3}, &s);
+    ASSERT_EQ(s.status, KecStatus::Ok) << y;
+    const Eigen::Vector4d xd(0.01, 0.02, -0.03, 0.05);
+    const Eigen::Vector4d fast = kecQuadraticTerm(s, xd);
+    KecSolution unsolved = s;
+    unsolved.status = KecStatus::NotConverged;
+    const Eigen::Vector4d lu = kecQuadraticTerm(unsolved, xd);
+    EXPECT_LE((fast - lu).cwiseAbs().maxCoeff(), 1e-12 * (lu.cwiseAbs().maxCoeff() + 1e-12)) << y;
+  }
+}
+
 }  // namespace

@@ -46,6 +46,27 @@ TEST(Lut, EvalValuesIsBitIdenticalToEval) {
   }
 }
 
+// The channel-range evalValues gives exactly the full call's values in [first, last) and leaves
+// the other channels untouched.
+TEST(Lut, EvalValuesOfAChannelRange) {
+  const LutTable& lut = rbtest::coneLut();
+  LutSample full, part;
+  const std::size_t first = lutChannel(Side::Right, FlangeQuantity::Sw);
+  const std::size_t last = lutChannel(Side::Right, FlangeQuantity::DdeltaDphi) + 1;
+  for (double y = -9.1e-3; y < 9.1e-3; y += 0.377e-3) {
+    for (double xi = -6e-3; xi < 6e-3; xi += 0.91e-3) {
+      lut.evalValues(y, xi, full);
+      part.value.fill(-7.0);
+      part.inside = !full.inside;
+      lut.evalValues(y, xi, part, first, last);
+      EXPECT_EQ(full.inside, part.inside);
+      for (std::size_t ch = 0; ch < kLutChannels; ++ch)
+        ASSERT_EQ(part.value[ch], ch >= first && ch < last ? full.value[ch] : -7.0)
+            << ch << " " << y << " " << xi;
+    }
+  }
+}
+
 TEST(Lut, InterpolationAccuracyBetweenNodes) {
   // Cone on arc: smooth geometry, so the error is the interpolation error: O(h^4) in y (splines)
   // and O(h^3) in xi_g (Akima, 1 mm steps).

@@ -341,4 +341,25 @@ TEST(Creepages, BackwardRunningEqualsRotatedFrame) {
   EXPECT_EQ(f.fy, -r.fy);
 }
 
+// patchConstants + makeContactPatch(pc, N) (the dynamics: constants once per patch geometry) give
+// exactly makeContactPatch(mat, k, shape, N).
+TEST(Polach, PatchConstantsGiveTheSamePatchBitForBit) {
+  for (const RelativeCurvatures k : {RelativeCurvatures{1.09, 3.3}, RelativeCurvatures{4.0, 0.6},
+                                     RelativeCurvatures{2.0, 2.0}}) {
+    const HertzShape shape = hertzShape(k.A, k.B);
+    const PatchConstants pc = patchConstants(kSteel, k, shape);
+    for (double N : {-1.0, 0.0, 3.7e4, 1.0e5}) {
+      const ContactPatch a = makeContactPatch(kSteel, k, shape, N);
+      const ContactPatch b = makeContactPatch(pc, N);
+      EXPECT_EQ(a.Q, b.Q);
+      EXPECT_EQ(a.a, b.a);
+      EXPECT_EQ(a.b, b.b);
+      EXPECT_EQ(a.c11, b.c11);
+      EXPECT_EQ(a.c22, b.c22);
+      EXPECT_EQ(a.c23, b.c23);
+      EXPECT_EQ(a.c33, b.c33);
+    }
+  }
+}
+
 }  // namespace

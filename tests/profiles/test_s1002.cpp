@@ -147,4 +147,30 @@ TEST(S1002, RightWheelIsTheExactMirror) {
   EXPECT_EQ(r.name(), "S1002 right wheel");
 }
 
+// Profile::at takes h, h', h'' from one interval lookup: exactly the values of a CubicSpline on
+// the same samples (and the exact mirror image), also outside the grid.
+TEST(Profile, AtEqualsTheCubicSplineBitForBit) {
+  std::vector<double> h;
+  const double s0 = -0.07, ds = 1e-4;
+  for (int i = 0; i < 1401; ++i) {
+    const double s = s0 + ds * i;
+    h.push_back(0.46 + 0.02 * std::sin(40.0 * s) + 3.0 * s * s);
+  }
+  const Profile p("test", ProfileKind::Wheel, s0, ds, h);
+  const Profile m = p.mirrored();
+  const rb::CubicSpline ref(rb::SplineGrid::uniform(s0, ds, h.size()), h);
+  for (int i = -20; i <= 1420; ++i) {
+    const double s = s0 + ds * (i + 0.37);
+    const ProfilePoint a = p.at(s);
+    EXPECT_EQ(a.h, ref.value(s));
+    EXPECT_EQ(a.dh, ref.deriv1(s));
+    EXPECT_EQ(a.d2h, ref.deriv2(s));
+    const ProfilePoint b = m.at(-s);
+    EXPECT_EQ(b.h, a.h);
+    EXPECT_EQ(b.dh, -a.dh);
+    EXPECT_EQ(b.d2h, a.d2h);
+  }
+  EXPECT_EQ(p.values().front(), h.front());
+}
+
 }  // namespace

@@ -249,6 +249,22 @@ TEST_F(Manchester, ModeTableAndRhsCost) {
   std::printf("rhs: %.2f us per evaluation (7 bodies, 48 elements, %d states)\n", us, ode.size());
 }
 
+// The workspace reuses the track frames and the body-pair placements (Workspace::pair_A, pair_R)
+// while s is unchanged and recomputes them when it changes: an evaluation after others at
+// different times equals a fresh one bit for bit.
+TEST_F(Manchester, CachedPairPlacementsGiveTheFreshRhs) {
+  const VehicleModel m = compileVehicle(rbtest::manchesterWagon(20.0, 20.0), straight());
+  GuidedVehicleOde warm(m);
+  Eigen::VectorXd y = warm.staticState(0.0);
+  for (int i = 0; i < y.size(); ++i) y[i] += 1e-4 * std::sin(1.0 + i);
+  Eigen::VectorXd a(warm.size()), b(warm.size());
+  for (const double t : {0.2, 0.5, 0.5, 0.3}) warm.rhs(t, y.data(), a.data());
+  warm.rhs(0.5, y.data(), a.data());
+  GuidedVehicleOde fresh(m);
+  fresh.rhs(0.5, y.data(), b.data());
+  for (int i = 0; i < y.size(); ++i) EXPECT_EQ(a[i], b[i]) << warm.componentName(i);
+}
+
 TEST_F(Manchester, EnergyIsConservedWithoutDampersAndDecaysWithThem) {
   for (const bool damped : {false, true}) {
     VehicleSpec spec = rbtest::manchesterWagon(20.0, 20.0);

@@ -77,6 +77,9 @@ TEST_P(KinematicsFD, VelocityAndAccelerationIncludeTrackFrameMotion) {
     };
     const Eigen::Vector3d vp_fd = (pointGlobal(kp) - pointGlobal(km)) / (2 * h);
     EXPECT_LT((k.tf.A * (pointJacobian(k, u) * mo.qd(t)) - vp_fd).norm(), 1e-7) << t;
+    // pointVelocity (v + omega_att x au, no Jacobian) is the Jacobian's velocity.
+    EXPECT_LT((pointVelocity(k, k.attach.A * u) - pointJacobian(k, u) * mo.qd(t)).norm(), 1e-12)
+        << t;
     const Eigen::Matrix3d Aa = k.tf.A * k.attach.A;
     const Eigen::Matrix3d Aa_dot = (kp.tf.A * kp.attach.A - km.tf.A * km.attach.A) / (2 * h);
     const Eigen::Vector3d wa_fd = vee(Aa_dot * Aa.transpose());

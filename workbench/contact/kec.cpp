@@ -360,23 +360,54 @@ void KecTable::eval(Side side, double s_k, KecPoint& out) const {
     out.value[q] = A0 * p0[2 * q] + A1 * p1[2 * q] + C0 * p0[2 * q + 1] + C1 * p1[2 * q + 1];
     out.d_ds[q] = dA0 * p0[2 * q] + dA1 * p1[2 * q] + dC0 * p0[2 * q + 1] + dC1 * p1[2 * q + 1];
   }
-  out.value[0] = fspl_[k].value(s_k);
-  out.d_ds[0] = fspl_[k].deriv1(s_k);
-  out.d2f = fspl_[k].deriv2(s_k);
+  fspl_[k].eval(s_k, {&out.value[0], 1}, {&out.d_ds[0], 1}, {&out.d2f, 1});
+  out.inside = s_k >= valid_[k][0] && s_k <= valid_[k][1];
+}
+
+void KecTable::evalValues(Side side, double s_k, KecPoint& out) const {
+  // eval() without f and without derivatives (the dynamics reads values of the maps only); the
+  // same expressions, so the values are bit-identical to eval()'s, except on an interval where a
+  // channel is constant (equal node values, zero slopes): there the interpolant IS that constant
+  // and it is returned exactly (A0 v + A1 v can be 1 ulp off). The end points A, B of a transition
+  // band (SwA ... SrB, the only channels checked) are such channels, and an exact value lets the
+  // dynamics reuse its last describe() of them.
+  const std::size_t k = idx(side);
+  const double h = grid_.step;
+  double tf = std::floor((s_k - grid_.min) / h);
+  tf = std::clamp(tf, 0.0, static_cast<double>(n_ - 2));
+  const auto i = static_cast<std::size_t>(tf);
+  const double t = (s_k - grid_.min) / h - tf;
+  const double t2 = t * t, t3 = t2 * t;
+  const double A0 = 2 * t3 - 3 * t2 + 1, A1 = -2 * t3 + 3 * t2;
+  const double C0 = (t3 - 2 * t2 + t) * h, C1 = (t3 - t2) * h;
+  const double* p0 = &herm_[k][i * kKecQuantities * 2];
+  const double* p1 = p0 + kKecQuantities * 2;
+  constexpr auto kFirstPoint = static_cast<std::size_t>(KecQuantity::SwA);
+  for (std::size_t q = 1; q < kFirstPoint; ++q)
+    out.value[q] = A0 * p0[2 * q] + A1 * p1[2 * q] + C0 * p0[2 * q + 1] + C1 * p1[2 * q + 1];
+  for (std::size_t q = kFirstPoint; q < kKecQuantities; ++q) {
+    const bool constant = p0[2 * q] == p1[2 * q] && p0[2 * q + 1] == 0.0 && p1[2 * q + 1] == 0.0;
+    out.value[q] = constant
+                       ? p0[2 * q]
+                       : A0 * p0[2 * q] + A1 * p1[2 * q] + C0 * p0[2 * q + 1] + C1 * p1[2 * q + 1];
+  }
   out.inside = s_k >= valid_[k][0] && s_k <= valid_[k][1];
 }
 
 double KecTable::f(Side side, double s_k, double* df, double* d2f) const {
-  const CubicSpline& sp = fspl_[idx(side)];
-  if (df) *df = sp.deriv1(s_k);
-  if (d2f) *d2f = sp.deriv2(s_k);
-  return sp.value(s_k);
+  // One interval lookup for all orders (solveKec calls this twice per Newton iteration).
+  double v = 0.0, d1 = 0.0, d2 = 0.0;
+  fspl_[idx(side)].eval(s_k, {&v, 1}, {&d1, 1}, {&d2, 1});
+  if (df) *df = d1;
+  if (d2f) *d2f = d2;
+  return v;
 }
 
 void KecTable::makeFSpline(std::size_t k) {
   std::vector<double> fvals(n_);
   for (std::size_t i = 0; i < n_; ++i) fvals[i] = herm_[k][i * kKecQuantities * 2];
-  fspl_[k] = CubicSpline(SplineGrid::uniform(grid_.min, grid_.step, n_), fvals);
+  fspl_[k] = CubicSplineSet(SplineGrid::uniform(grid_.min, grid_.step, n_),
+                            std::vector<std::vector<double>>{fvals});
 }
 
 KecTable buildKec(const ContactGeometryConfig& config) {
@@ -728,6 +759,10 @@ Eigen::Vector4d kecQuadraticTerm(const KecSolution& sol, const Eigen::Vector4d& 
   c << 2.0 * phid * sol.df_lk * sld + sol.phi * sol.d2f_lk * sld * sld,
       2.0 * phid * sol.df_rk * srd + sol.phi * sol.d2f_rk * srd * srd,
       2.0 * phid * sld - sol.d2f_lk * sld * sld, 2.0 * phid * srd - sol.d2f_rk * srd * srd;
+  // A solved system already holds g_x^-1: dx_dp = -g_x^-1 g_p and the last four columns of -g_p
+  // are the unit vectors, so dx_dp's last four columns ARE g_x^-1 (exactly, the products with
+  // 0 / -1 round nothing). That saves a pivoted 4x4 LU per wheelset and evaluation.
+  if (sol.status != KecStatus::NotConverged) return -(sol.dx_dp.rightCols<4>() * c);
   return -sol.g_x.partialPivLu().solve(c);
 }
 

@@ -106,6 +106,11 @@ class KecTable {
 
   // All quantities with first derivatives (and f''). Allocation-free.
   void eval(Side side, double s_k, KecPoint& out) const;
+  // Values of the quantities after F (Sw ... SrB) and `inside`, bit-identical to eval()'s except
+  // that a point channel (SwA ... SrB) constant over the interval (equal node values, zero slopes)
+  // returns exactly that constant (eval() may be 1 ulp off); F, the derivatives and d2f are left
+  // untouched. The dynamics' per-evaluation lookup. Allocation-free.
+  void evalValues(Side side, double s_k, KecPoint& out) const;
   // Equivalent profile f_k with first and second derivatives. Allocation-free.
   double f(Side side, double s_k, double* df = nullptr, double* d2f = nullptr) const;
   // Stored grid values.
@@ -128,7 +133,9 @@ class KecTable {
   // also as local cubic Hermite data (value and exact derivative at each node; C1, no ringing at
   // the kinks of the linear ramps): herm_[side][(i * kKecQuantities + q) * 2 + {0: value, 1:
   // d/ds}].
-  std::array<CubicSpline, 2> fspl_;
+  // (A one-channel CubicSplineSet: value and derivatives from one interval lookup, the same
+  // polynomials as CubicSpline's, bit-identical.)
+  std::array<CubicSplineSet, 2> fspl_;
   std::array<std::vector<double>, 2> herm_;
   std::array<std::array<double, 2>, 2> valid_{};
   std::array<std::vector<KecTransition>, 2> trans_;

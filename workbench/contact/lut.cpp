@@ -182,13 +182,19 @@ void LutTable::eval(double y, double xi_g, LutSample& out) const {
 }
 
 void LutTable::evalValues(double y, double xi_g, LutSample& out) const {
+  evalValues(y, xi_g, out, 0, kLutChannels);
+}
+
+void LutTable::evalValues(double y, double xi_g, LutSample& out, std::size_t first,
+                          std::size_t last) const {
+  last = std::min(last, kLutChannels);
   const Cell c = locate(y, xi_g);
   out.inside = c.inside;
   const Basis by(c.t);
   const std::size_t stride_y = kLutChannels * 4, stride_g = ny_ * kLutChannels * 4;
   const double* base = &data_[(c.j * ny_ + c.i) * kLutChannels * 4];
   if (ng_ < 2) {
-    for (std::size_t ch = 0; ch < kLutChannels; ++ch) {
+    for (std::size_t ch = first; ch < last; ++ch) {
       double v = 0.0;
       for (std::size_t a = 0; a < 2; ++a) {
         const double* p = base + a * stride_y + ch * 4;
@@ -199,7 +205,7 @@ void LutTable::evalValues(double y, double xi_g, LutSample& out) const {
     return;
   }
   const Basis bg(c.u);
-  for (std::size_t ch = 0; ch < kLutChannels; ++ch) {
+  for (std::size_t ch = first; ch < last; ++ch) {
     double v = 0.0;
     for (std::size_t b = 0; b < 2; ++b) {
       for (std::size_t a = 0; a < 2; ++a) {

@@ -137,6 +137,9 @@ class LutTable {
   // for the dynamics, which needs no derivatives of the contact-point quantities. Values are
   // bit-identical to eval()'s. Allocation-free.
   void evalValues(double y, double xi_g, LutSample& out) const;
+  // The same for the channels [first, last) only (others unchanged; out.inside is set): the
+  // dynamics reads the flange contact point of a side only when its indentation is positive.
+  void evalValues(double y, double xi_g, LutSample& out, std::size_t first, std::size_t last) const;
   // One channel with first and second derivatives. Allocation-free.
   LutValue evalChannel(std::size_t channel, double y, double xi_g) const;
   // z and phi only (the LUT constraints of Eq. 17), with first and second derivatives.

@@ -49,24 +49,37 @@ ContactPatch makeContactPatch(const Material& mat, const RelativeCurvatures& k, 
 
 ContactPatch makeContactPatch(const Material& mat, const RelativeCurvatures& k,
                               const HertzShape& shape, double N) {
+  return makeContactPatch(patchConstants(mat, k, shape), N);
+}
+
+PatchConstants patchConstants(const Material& mat, const RelativeCurvatures& k,
+                              const HertzShape& shape) {
   // The semi-axes of hertz() (same expressions, bit-identical) without its Hertz stiffness and
   // approach, which the creep laws do not use (a cbrt and a sqrt less per patch evaluation).
   RB_CHECK(mat.E > 0.0 && mat.nu > -1.0 && mat.nu < 0.5, "invalid material");
-  const KalkerCoefficients c = kalkerCoefficients(shape.aOverB(), mat.nu);
+  PatchConstants pc;
+  pc.c = kalkerCoefficients(shape.aOverB(), mat.nu);
+  pc.denom = 4.0 * contactModulus(mat) * (k.A + k.B);
+  pc.m = shape.m;
+  pc.n = shape.n;
+  pc.rolling_major = shape.rolling_major;
+  return pc;
+}
+
+ContactPatch makeContactPatch(const PatchConstants& pc, double N) {
   ContactPatch patch;
   if (N > 0.0) {
-    const double es = contactModulus(mat);
-    const double c0 = std::cbrt(3.0 * N / (4.0 * es * (k.A + k.B)));
-    const double major = shape.m * c0;
-    const double minor = shape.n * c0;
+    const double c0 = std::cbrt(3.0 * N / pc.denom);
+    const double major = pc.m * c0;
+    const double minor = pc.n * c0;
     patch.Q = N;
-    patch.a = shape.rolling_major ? major : minor;
-    patch.b = shape.rolling_major ? minor : major;
+    patch.a = pc.rolling_major ? major : minor;
+    patch.b = pc.rolling_major ? minor : major;
   }
-  patch.c11 = c.c11;
-  patch.c22 = c.c22;
-  patch.c23 = c.c23;
-  patch.c33 = c.c33;
+  patch.c11 = pc.c.c11;
+  patch.c22 = pc.c.c22;
+  patch.c23 = pc.c.c23;
+  patch.c33 = pc.c.c33;
   return patch;
 }
 

@@ -93,6 +93,21 @@ ContactPatch makeContactPatch(const Material& mat, const RelativeCurvatures& k, 
 ContactPatch makeContactPatch(const Material& mat, const RelativeCurvatures& k,
                               const HertzShape& shape, double N);
 
+// The load-independent part of makeContactPatch(mat, k, shape, N): Kalker coefficients, the Hertz
+// coefficients of the semi-axes and the denominator of c0^3. A patch whose geometry is fixed while
+// its normal force is iterated (the dynamics' normal/tangential fixed point: ~2 force
+// evaluations per patch and rhs) computes them once.
+struct PatchConstants {
+  double denom = 0.0;  // 4 E* (A + B): c0 = cbrt(3 N / denom)
+  double m = 1.0, n = 1.0;
+  bool rolling_major = true;
+  KalkerCoefficients c;
+};
+PatchConstants patchConstants(const Material& mat, const RelativeCurvatures& k,
+                              const HertzShape& shape);
+// Bit-identical to makeContactPatch(mat, k, shape, N) for pc = patchConstants(mat, k, shape).
+ContactPatch makeContactPatch(const PatchConstants& pc, double N);
+
 struct CreepForce {
   double fx = 0.0;  // longitudinal force on the wheel [N]
   double fy = 0.0;  // lateral force on the wheel [N]

@@ -85,6 +85,10 @@ struct Patch {
   creep::Creepages cr;
   creep::RelativeCurvatures k;
   creep::HertzShape shape;
+  creep::PatchConstants pc;  // load-independent patch data, once per setupPatch (not per Q)
+  // The curvatures (wheel long., wheel trans., rail trans.) k, shape and pc were computed from;
+  // k, shape, pc are functions of them alone (the KEC transition-band points repeat them).
+  double k_key[3] = {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0};
   double Q = 0.0, fx = 0.0, fy = 0.0, mz = 0.0, a = 0.0, b = 0.0;
 };
 
@@ -104,6 +108,16 @@ struct ContactVehicleOde::WheelsetWork {
   track::IrregularityPoint irr;
   double irr_key = std::numeric_limits<double>::quiet_NaN();
   double ybar_dot = 0.0, xig_dot = 0.0, zbar_dot = 0.0, phibar_dot = 0.0;  // LUT rates
+  double lut_ybar = 0.0, lut_xig = 0.0;                                    // the LUT entry of `lut`
+  // KEC transition bands: the real contact points A, B [side][0 A, 1 B] of the last describe()
+  // and its inputs. Inside one transition A and B are the fixed end points of the band (the
+  // table's Hermite data of SwA ... SrB are constant there), so successive evaluations mostly ask
+  // for the same points again; equal inputs give equal outputs, so the reuse changes nothing.
+  struct Described {
+    double s_w = std::numeric_limits<double>::quiet_NaN(), s_r = 0.0;
+    contact::ContactPoint p;
+  };
+  Described described[2][2];
   Eigen::Matrix<double, 2, 5> G = Eigen::Matrix<double, 2, 5>::Zero();
   Eigen::Vector2d gamma = Eigen::Vector2d::Zero();
   // Patches [side][0 tread / A, 1 flange / B] and per-wheel data.
@@ -237,11 +251,13 @@ int ContactVehicleOde::setCoordinates(double t, const double* y) {
     if (irr_ && !(W.irr_key == q[kS])) {
       W.irr = irr_->at(q[kS]);
       W.irr_key = q[kS];
+      // With the irregularities: the cross-level angle changes only with them. (Without: 0, the
+      // initial values delta_irr = 0, cos 1, sin 0.)
+      W.delta_irr = (W.irr.z_l - W.irr.z_r) / (2.0 * lr);
+      W.cos_irr = std::cos(W.delta_irr);
+      W.sin_irr = std::sin(W.delta_irr);
     }
     const track::IrregularityPoint& ip = W.irr;
-    W.delta_irr = (ip.z_l - ip.z_r) / (2.0 * lr);
-    W.cos_irr = std::cos(W.delta_irr);
-    W.sin_irr = std::sin(W.delta_irr);
     double z = 0.0, phi = 0.0, zd = 0.0, phid = 0.0;
     const auto& xi_ss = ip.xi_ss;
     const double a_ss = xi_ss[static_cast<std::size_t>(track::Channel::Alignment)];
@@ -301,7 +317,17 @@ int ContactVehicleOde::setCoordinates(double t, const double* y) {
       const double ybd = yd - V * xa_s, xgd = V * xg_s;
       contact::LutValue zv, pv;
       c.lut->evalZPhi(ybar, xg, zv, pv);
-      c.lut->evalValues(ybar, xg, W.lut);  // values only: no derivatives needed
+      // Values only (no derivatives needed) of the tread channels and the flange indentations;
+      // the other flange channels of a side only when it indents (below).
+      c.lut->evalValues(
+          ybar, xg, W.lut, contact::lutChannel(contact::Side::Left, contact::TreadQuantity::Sw),
+          contact::lutChannel(contact::Side::Left, contact::FlangeQuantity::Delta) + 1);
+      c.lut->evalValues(
+          ybar, xg, W.lut,
+          contact::lutChannel(contact::Side::Right, contact::FlangeQuantity::Delta),
+          contact::lutChannel(contact::Side::Right, contact::FlangeQuantity::Delta) + 1);
+      W.lut_ybar = ybar;
+      W.lut_xig = xg;
       if (!zv.inside || !W.lut.inside) {
         std::ostringstream os;
         os << "wheelset '" << m.bodies[b].name << "' at t = " << t << " s (s = " << q[kS]
@@ -425,10 +451,16 @@ void setupPatch(Patch& p, const PatchGeometry& g, double sigma, const ContactMod
     const Eigen::Vector3d v =
         vehicle::pointVelocity(*f.kin, au) + sp * f.spin_rate;  // rail at rest
     p.cr = creep::creepagesFromKinematics(v.dot(ex), v.dot(p.ey), f.omega.dot(p.n), V);
-    p.k = creep::relativeCurvatures(g.k_w_long, g.k_w_trans, 0.0, g.k_r_trans);
-    p.k.A = std::max(p.k.A, c.min_relative_curvature);
-    p.k.B = std::max(p.k.B, c.min_relative_curvature);
-    p.shape = c.hertz_shapes->shape(p.k.A, p.k.B);
+    if (!(p.k_key[0] == g.k_w_long && p.k_key[1] == g.k_w_trans && p.k_key[2] == g.k_r_trans)) {
+      p.k = creep::relativeCurvatures(g.k_w_long, g.k_w_trans, 0.0, g.k_r_trans);
+      p.k.A = std::max(p.k.A, c.min_relative_curvature);
+      p.k.B = std::max(p.k.B, c.min_relative_curvature);
+      p.shape = c.hertz_shapes->shape(p.k.A, p.k.B);
+      p.pc = creep::patchConstants(c.material, p.k, p.shape);
+      p.k_key[0] = g.k_w_long;
+      p.k_key[1] = g.k_w_trans;
+      p.k_key[2] = g.k_r_trans;
+    }
   }
 }
 
@@ -440,7 +472,7 @@ void creepForce(Patch& p, double Q, const ContactModel& c, Vec5& Qt) {
     p.fx = p.fy = p.mz = p.a = p.b = 0.0;
     return;
   }
-  const creep::ContactPatch cp = creep::makeContactPatch(c.material, p.k, p.shape, Q);
+  const creep::ContactPatch cp = creep::makeContactPatch(p.pc, Q);
   Law::apply(c, cp, p.cr, p.fx, p.fy, p.mz);
   p.a = cp.a;
   p.b = cp.b;
@@ -514,18 +546,26 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, Mode m
         const contact::Side side = s == 0 ? contact::Side::Left : contact::Side::Right;
         const double sigma = contact::kSideSign[s];
         contact::KecPoint kp;
-        tab.eval(side, s == 0 ? W.kec.s_lk : W.kec.s_rk, kp);
+        tab.evalValues(side, s == 0 ? W.kec.s_lk : W.kec.s_rk, kp);
         const auto val = [&kp](contact::KecQuantity qq) {
           return kp.value[static_cast<std::size_t>(qq)];
         };
         const double wgt = std::clamp(val(contact::KecQuantity::Weight), 0.0, 1.0);
         const Eigen::Vector2d e_side = s == 0 ? Eigen::Vector2d(1, 0) : Eigen::Vector2d(0, 1);
         if (wgt > kSplitWeight && wgt < 1.0 - kSplitWeight) {
-          const contact::WheelsetPose pose{};
-          const contact::ContactPoint pa = c.solver->describe(
-              side, pose, 0.0, val(contact::KecQuantity::SwA), val(contact::KecQuantity::SrA));
-          const contact::ContactPoint pb = c.solver->describe(
-              side, pose, 0.0, val(contact::KecQuantity::SwB), val(contact::KecQuantity::SrB));
+          const auto describe = [&](int ab, double sw, double sr) -> const contact::ContactPoint& {
+            WheelsetWork::Described& d = W.described[s][ab];
+            if (!(d.s_w == sw && d.s_r == sr)) {
+              d.p = c.solver->describe(side, contact::WheelsetPose{}, 0.0, sw, sr);
+              d.s_w = sw;
+              d.s_r = sr;
+            }
+            return d.p;
+          };
+          const contact::ContactPoint& pa =
+              describe(0, val(contact::KecQuantity::SwA), val(contact::KecQuantity::SrA));
+          const contact::ContactPoint& pb =
+              describe(1, val(contact::KecQuantity::SwB), val(contact::KecQuantity::SrB));
           setupPatch<Law>(W.patch[s][0], fromPoint(pa, W.cos_irr, W.sin_irr), sigma, c, wf, V);
           setupPatch<Law>(W.patch[s][1], fromPoint(pb, W.cos_irr, W.sin_irr), sigma, c, wf, V);
           W.patch[s][0].ql = (1.0 - wgt) * e_side;
@@ -576,6 +616,9 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, Mode m
         const double delta = fv(contact::FlangeQuantity::Delta);
         W.fl_delta[s] = delta;
         if (delta > 0.0) {
+          c.lut->evalValues(W.lut_ybar, W.lut_xig, W.lut,
+                            contact::lutChannel(side, contact::FlangeQuantity::Sw),
+                            contact::lutChannel(side, contact::FlangeQuantity::DdeltaDphi) + 1);
           const double ny = fv(contact::FlangeQuantity::Ny), nz = fv(contact::FlangeQuantity::Nz);
           const double dphi = fv(contact::FlangeQuantity::DdeltaDphi);
           // Eq. (21): indentation rate from the partial derivatives (envelope theorem), in the

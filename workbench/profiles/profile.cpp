@@ -12,15 +12,16 @@ Profile::Profile(std::string name, ProfileKind kind, double s_min, double ds,
     : name_(std::move(name)),
       kind_(kind),
       ds_(ds),
-      spline_(SplineGrid::uniform(s_min, ds, h.size()), h) {
+      spline_(SplineGrid::uniform(s_min, ds, h.size()), std::vector<std::vector<double>>{h}) {
   RB_CHECK(h.size() >= 4 && ds > 0, "a profile needs >= 4 samples and a positive step");
 }
 
 ProfilePoint Profile::at(double s) const {
   // Mirror image: h_m(s) = h(-s), h_m'(s) = -h'(-s), h_m''(s) = h''(-s). Negation is exact.
   const double x = mirror_ ? -s : s;
-  const double d1 = spline_.deriv1(x);
-  return {spline_.value(x), mirror_ ? -d1 : d1, spline_.deriv2(x)};
+  double v = 0.0, d1 = 0.0, d2 = 0.0;
+  spline_.eval(x, {&v, 1}, {&d1, 1}, {&d2, 1});
+  return {v, mirror_ ? -d1 : d1, d2};
 }
 
 Profile Profile::mirrored() const {
@@ -56,9 +57,9 @@ std::vector<double> Profile::values() const {
   const auto& g = spline_.grid();
   v.reserve(g.size());
   if (mirror_) {
-    for (std::size_t i = g.size(); i-- > 0;) v.push_back(spline_.value(g[i]));
+    for (std::size_t i = g.size(); i-- > 0;) v.push_back(spline_.value(0, g[i]));
   } else {
-    for (std::size_t i = 0; i < g.size(); ++i) v.push_back(spline_.value(g[i]));
+    for (std::size_t i = 0; i < g.size(); ++i) v.push_back(spline_.value(0, g[i]));
   }
   return v;
 }

@@ -66,7 +66,10 @@ class Profile {
   std::string name_;
   ProfileKind kind_;
   double ds_;
-  CubicSpline spline_;
+  // One channel of a spline set rather than a CubicSpline: at() gets h, h', h'' from ONE interval
+  // lookup (CubicSplineSet::eval; the same polynomial expressions as CubicSpline's value, deriv1,
+  // deriv2, so bit-identical). at() is on the dynamics' hot path (KEC transition bands).
+  CubicSplineSet spline_;
   bool mirror_ = false;  // evaluate spline_ at -s (exact mirror image)
 };
 

@@ -99,6 +99,8 @@ Workspace makeWorkspace(const VehicleModel& m) {
   ws.series_rate.assign(m.series_dampers.size(), 0.0);
   ws.pair_A.assign(m.body_pairs.size(), Eigen::Matrix3d::Identity());
   ws.pair_R.assign(m.body_pairs.size(), Eigen::Vector3d::Zero());
+  // tf_version starts at 0 and is >= 1 once a frame is evaluated: no pair matches before that.
+  ws.pair_version.assign(m.body_pairs.size(), {0, 0});
   return ws;
 }
 
@@ -143,11 +145,15 @@ void evaluate(const VehicleModel& m, const double* series_f, Workspace& ws) {
     ws.susp_moment[b].setZero();
   }
   // Relative placement of the track frames of each element body pair (Eq. 28).
+  // Recomputed only when a track frame changed (not between the stages at one time).
   for (std::size_t pr = 0; pr < m.body_pairs.size(); ++pr) {
-    const track::TrackFrame& ti = ws.kin[static_cast<std::size_t>(m.body_pairs[pr][0])].tf;
-    const track::TrackFrame& tj = ws.kin[static_cast<std::size_t>(m.body_pairs[pr][1])].tf;
-    ws.pair_A[pr].noalias() = ti.A.transpose() * tj.A;
-    ws.pair_R[pr].noalias() = ti.A.transpose() * (tj.R - ti.R);
+    const BodyKinematics& ki = ws.kin[static_cast<std::size_t>(m.body_pairs[pr][0])];
+    const BodyKinematics& kj = ws.kin[static_cast<std::size_t>(m.body_pairs[pr][1])];
+    const std::array<std::uint64_t, 2> version{ki.tf_version, kj.tf_version};
+    if (version == ws.pair_version[pr]) continue;
+    ws.pair_version[pr] = version;
+    ws.pair_A[pr].noalias() = ki.tf.A.transpose() * kj.tf.A;
+    ws.pair_R[pr].noalias() = ki.tf.A.transpose() * (kj.tf.R - ki.tf.R);
   }
 
   PointPair p;

@@ -10,6 +10,8 @@
 // The ODE adapters (guided.hpp, later the contact models) decide which coordinates are
 // prescribed and which are free. evaluate() is allocation-free.
 #include <Eigen/Dense>
+#include <array>
+#include <cstdint>
 #include <vector>
 
 #include "workbench/vehicle/kinematics.hpp"
@@ -41,6 +43,9 @@ struct Workspace {
   // Per body pair (VehicleModel::body_pairs): A_ij = A_ti^T A_tj, R_ij = A_ti^T (R_tj - R_ti).
   std::vector<Eigen::Matrix3d> pair_A;
   std::vector<Eigen::Vector3d> pair_R;
+  // The BodyKinematics::tf_version of both bodies pair_A, pair_R were computed from: they depend
+  // on the track frames alone, which stay the same for the stages at one time.
+  std::vector<std::array<std::uint64_t, 2>> pair_version;
 
   const ElementValue& value(ElementId id) const;
 };

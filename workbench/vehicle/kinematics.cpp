@@ -86,6 +86,7 @@ void bodyKinematics(const track::TrackGeometry& geometry, RotationSequence seq, 
     out.tf = geometry.at(q[kS]);
     out.tf_key = q[kS];
     out.tf_geometry = &geometry;
+    ++out.tf_version;
   }
   const Eigen::Vector3d& w = out.tf.w;
   const Eigen::Vector3d& w_s = out.tf.w_s;
@@ -113,6 +114,7 @@ void bodyKinematics(const track::TrackGeometry& geometry, RotationSequence seq, 
   out.Lv(1, kY) = 1.0;
   out.Lv(2, kZ) = 1.0;
   out.v = out.Lv.col(kS) * sd + rbar_dot;
+  out.omega_att = w * sd + out.omega_rel;
   out.gamma_v = sd * sd * w_s.cross(out.rbar) + sd * w.cross(rbar_dot) + sd * w.cross(out.v);
 
   // Rotation: omega_b = Abar^T w sdot + G alpha_dot (body comps).

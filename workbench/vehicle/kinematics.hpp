@@ -20,6 +20,7 @@
 // alpha_b = Lw qddot + gamma_w, including the motion of the track frame itself (w = angular rate of
 // the track frame per metre, w_s its s-derivative, from TrackGeometry::at()).
 #include <Eigen/Dense>
+#include <cstdint>
 #include <limits>
 
 #include "workbench/track/geometry.hpp"
@@ -70,10 +71,15 @@ struct BodyKinematics {
                                                         // angular velocity rel. to the track frame
   Eigen::Vector3d rbar_dot = Eigen::Vector3d::Zero();   // (0, ydot, zdot)
   double sd = 0.0;                                      // sdot
+  // w sdot + omega_rel: angular velocity of the attachment frame (track comps, the track frame's
+  // rotation included), so that pointVelocity is v + omega_att x au (one cross product; it runs
+  // twice per suspension element and evaluation).
+  Eigen::Vector3d omega_att = Eigen::Vector3d::Zero();
   // The track frame tf was evaluated at s = tf_key on tf_geometry: an evaluation at the same s
   // (the stages of a multistage method at one time, ABM predictor and corrector) reuses it.
   double tf_key = std::numeric_limits<double>::quiet_NaN();
   const track::TrackGeometry* tf_geometry = nullptr;
+  std::uint64_t tf_version = 0;  // incremented whenever tf is evaluated anew (caches key on it)
 
   // Global position of the CoM and global rotation of the body.
   Eigen::Vector3d position() const { return tf.R + tf.A * rbar; }
@@ -96,8 +102,9 @@ Matrix36d pointJacobian(const BodyKinematics& k, const Eigen::Vector3d& u);
 // (e_x + w x (rbar + au)) . F on s, F_y, F_z on y, z, AG^T (au x F) on the angles
 // (L_P's angle block is -A skew(u) G = -skew(au) AG).
 inline Eigen::Vector3d pointVelocity(const BodyKinematics& k, const Eigen::Vector3d& au) {
-  return (Eigen::Vector3d::UnitX() + k.tf.w.cross(k.rbar + au)) * k.sd + k.rbar_dot +
-         k.omega_rel.cross(au);
+  // (e_x + w x (rbar + au)) sdot + rbar_dot + omega_rel x au regrouped: v + (w sdot + omega_rel) x
+  // au (v = CoM velocity).
+  return k.v + k.omega_att.cross(au);
 }
 inline void addPointForce(const BodyKinematics& k, const Eigen::Vector3d& au,
                           const Eigen::Vector3d& F, Vector6d& Q) {
