@@ -244,18 +244,29 @@ def work_precision_block(outdir: str) -> str:
                          [[r["model"], r["kind"].replace("_", " "),
                            r.get("y_max_mm", ""), r.get("yaw_max_mrad", ""),
                            r.get("Q_max_kN", "")] for r in special]))
-    # The cheapest setting per integrator that reaches each accuracy level in wheelset y.
+    # The cheapest setting per integrator setting that reaches each accuracy level in wheelset y:
+    # total error (against the refined-table reference) and integration error only (against
+    # the reference on the cases' own tables).
     levels = [1.0, 0.1, 0.01, 0.001]
-    cases = [r for r in total if r["kind"] == "case"]
-    models = sorted({r["model"] for r in cases})
-    body = []
-    for m in models:
-        for integ in sorted({r["integrator"] for r in cases if r["model"] == m}):
-            line = [m, integ]
+    for against, what in (("reference", "total error against the refined-table reference"),
+                          ("reference_same_tables", "integration error only: against the "
+                           "reference on the same (default) tables")):
+        cases = [r for r in rows if r["against"] == against and r["kind"] == "case"]
+        if not cases:
+            continue
+        groups = []
+        for r in cases:
+            g = (r["model"], re.sub(r"\b(tol|h)=\S+\s*", "", r["solver"]).strip())
+            if g not in groups:
+                groups.append(g)
+        body = []
+        for g in sorted(groups):
+            line = list(g)
             for lev in levels:
                 best = None
                 for r in cases:
-                    if r["model"] != m or r["integrator"] != integ or r["status"] != "ok":
+                    if (r["model"], re.sub(r"\b(tol|h)=\S+\s*", "", r["solver"]).strip()) != g \
+                            or r["status"] != "ok":
                         continue
                     e = num(r.get("y_max_mm"))
                     if e is not None and e <= lev:
@@ -264,10 +275,11 @@ def work_precision_block(outdir: str) -> str:
                             best = (cpu, r["setting"])
                 line.append("–" if best is None else f"{best[0]:.2f} s ({best[1]})")
             body.append(line)
-    out.append("\nCheapest setting that keeps the largest error of the wheelsets' lateral "
-               "displacement below each level (total error against the refined-table reference; "
-               "CPU seconds, setting):\n")
-    out.append(table(["model", "integrator"] + [f"y err <= {lev:g} mm" for lev in levels], body))
+        out.append(f"\nCheapest setting that keeps the largest error of the wheelsets' lateral "
+                   f"displacement below each level ({what}; CPU seconds, setting; – = no setting "
+                   f"of the study gets there):\n")
+        out.append(table(["model", "integrator"] + [f"y err <= {lev:g} mm" for lev in levels],
+                         body))
     return "\n".join(out)
 
 
@@ -277,25 +289,45 @@ def effects_block(outdir: str) -> str:
     rows = read_csv(os.path.join(outdir, "effects", "study_effects.csv"))
     if not rows:
         return missing("out/studies/effects/study_effects.csv")
+    instr = read_csv(os.path.join(outdir, "effects", "study_effects_instructions.csv"))
+
+    def strip(label: str) -> str:
+        return re.sub(r"\b(kec|lut)\b", "", label, flags=re.I).strip(" ,")
+
     labels = []
     for r in rows:
-        lab = re.sub(r"\b(kec|lut)\b", "", r["label"]).strip(" ,")
-        if lab not in labels:
-            labels.append(lab)
+        if strip(r["label"]) not in labels:
+            labels.append(strip(r["label"]))
 
-    def cell(method, lab):
+    def time_cell(method, lab):
         for r in rows:
-            if r["method"] == method and re.sub(r"\b(kec|lut)\b", "", r["label"]).strip(" ,") == lab:
+            if r["method"] == method and strip(r["label"]) == lab:
                 if not r["us_per_eval"]:
                     return "failed"
-                return (f"{num(r['us_per_eval']):.2f} µs ({num(r['relative_to_baseline']):.3f}, "
+                return (f"{num(r['us_per_eval']):.2f} µs ({num(r['relative_to_baseline']):.2f}, "
                         f"±{r['spread_percent'] or '?'} %)")
         return "–"
 
-    return ("CPU time per right-hand-side evaluation (median of the repeats; in brackets: relative "
-            "to the full model, and the spread (max - min) / median of the repeats):\n\n" +
-            table(["variant", "KEC", "LUT"], [[lab, cell("kec", lab), cell("lut", lab)]
-                                              for lab in labels]))
+    def instr_cell(method, lab):
+        for r in instr:
+            if r["method"] == method and strip(r["label"]) == lab:
+                if not r["instructions_per_eval"]:
+                    return "failed"
+                return (f"{num(r['instructions_per_eval']) / 1e3:.1f}k "
+                        f"({num(r['relative_to_baseline']):.3f})")
+        return "–"
+
+    head = ["variant", "KEC instructions / eval (rel.)", "LUT instructions / eval (rel.)",
+            "KEC CPU / eval (rel., spread)", "LUT CPU / eval (rel., spread)"]
+    body = [[lab, instr_cell("kec", lab), instr_cell("lut", lab), time_cell("kec", lab),
+             time_cell("lut", lab)] for lab in labels]
+    note = ("" if instr else "\n\n" + missing("out/studies/effects/study_effects_instructions.csv "
+                                               "(plots/effects_instructions.py)"))
+    return ("Per right-hand-side evaluation, each variant relative to the full model: callgrind "
+            "instructions (repeatable; first 8 s of the run, integration only, "
+            "`plots/effects_instructions.py`) and CPU time (median of 5 repeats over the whole "
+            "run, ABM 0.25 ms, free spin; spread = (max - min) / median):\n\n" +
+            table(head, body) + note)
 
 
 # ---- speed targets -----------------------------------------------------------------------------
