@@ -18,19 +18,8 @@ local PRESCRIBED_SPIN = true
 
 local lib = require "studies.lib"
 local spin, h = lib.spin(PRESCRIBED_SPIN)
-local solvers = { lib.fixed("rk4", h), lib.fixed("abm", h) }
-for _, m in ipairs({ "dopri5", "bdf" }) do
-  for _, tol in ipairs({ 1e-4, 1e-5, 1e-6 }) do
-    solvers[#solvers + 1] = lib.adaptive(m, tol, 1e-3)
-  end
-end
-local cases = {}
-for _, s in ipairs(solvers) do
-  cases[#cases + 1] = lib.merge(lib.kec(), s, spin)
-  for _, K in ipairs({ 1e9, 1e10, 1e11, 1e12, 7.075e13 }) do
-    cases[#cases + 1] = lib.merge(lib.lut(K), s, spin)
-  end
-end
+local solvers = lib.paper_solvers(h, { 1e-4, 1e-5, 1e-6 })
+local cases = lib.stiffness_cases(solvers, spin)
 -- Table 7: the Hertzian flange stiffness 7.075e13 at tighter tolerances.
 for _, s in ipairs({ lib.adaptive("dopri5", 1e-7, 1e-3), lib.adaptive("dopri5", 1e-8, 1e-3),
                      lib.adaptive("bdf", 1e-7, 1e-3) }) do

@@ -11,19 +11,7 @@
 -- study_accuracy_lut_vs_kec.csv/.png, study_lut_integrators.png, study_lut_stiffness_*.png.
 local lib = require "studies.lib"
 local spin, h = lib.spin(true)
-local solvers = { lib.fixed("rk4", h), lib.fixed("abm", h) }
-for _, m in ipairs({ "dopri5", "bdf" }) do
-  for _, tol in ipairs({ 1e-4, 1e-5, 1e-6, 1e-7, 1e-8 }) do
-    solvers[#solvers + 1] = lib.adaptive(m, tol, 1e-3)
-  end
-end
-local cases = {}
-for _, s in ipairs(solvers) do
-  cases[#cases + 1] = lib.merge(lib.kec(), s, spin)
-  for _, K in ipairs({ 1e9, 1e10, 1e11, 1e12, 7.075e13 }) do
-    cases[#cases + 1] = lib.merge(lib.lut(K), s, spin)
-  end
-end
+local cases = lib.stiffness_cases(lib.paper_solvers(h, { 1e-4, 1e-5, 1e-6, 1e-7, 1e-8 }), spin)
 
 study {
   base = "bases/flange_curve.lua",

@@ -30,6 +30,31 @@ function M.adaptive(method, tol, max_step, atol)
   return s
 end
 
+-- The paper's solver set (section 5.3): RK4 and ABM at the fixed step h, dopri5 (ode45) and BDF
+-- (ode15s) at each tolerance of tols with its 1 ms largest step.
+function M.paper_solvers(h, tols)
+  local solvers = { M.fixed("rk4", h), M.fixed("abm", h) }
+  for _, m in ipairs({ "dopri5", "bdf" }) do
+    for _, tol in ipairs(tols) do
+      solvers[#solvers + 1] = M.adaptive(m, tol, 1e-3)
+    end
+  end
+  return solvers
+end
+
+-- The paper's flange stiffness study (Fig. 23, Tables 12-16): for every solver, KEC and LUT with
+-- K = 1e9 ... 7.075e13 N/m^1.5 (Table 3), each merged with the extra overrides.
+function M.stiffness_cases(solvers, extra)
+  local cases = {}
+  for _, s in ipairs(solvers) do
+    cases[#cases + 1] = M.merge(M.kec(), s, extra)
+    for _, K in ipairs({ 1e9, 1e10, 1e11, 1e12, 7.075e13 }) do
+      cases[#cases + 1] = M.merge(M.lut(K), s, extra)
+    end
+  end
+  return cases
+end
+
 -- Contact settings: M.kec(), M.lut(K) (D = K/100, the paper's Table 3).
 function M.kec() return { ["contact.method"] = "kec" } end
 function M.lut(K) return { ["contact.method"] = "lut", ["contact.flange_stiffness"] = K } end

@@ -11,12 +11,7 @@ local PRESCRIBED_SPIN = true
 
 local lib = require "studies.lib"
 local spin, h = lib.spin(PRESCRIBED_SPIN)
-local solvers = { lib.fixed("rk4", h), lib.fixed("abm", h) }
-for _, m in ipairs({ "dopri5", "bdf" }) do
-  for _, tol in ipairs({ 1e-4, 1e-5, 1e-6 }) do
-    solvers[#solvers + 1] = lib.adaptive(m, tol, 1e-3)
-  end
-end
+local solvers = lib.paper_solvers(h, { 1e-4, 1e-5, 1e-6 })
 local cases = {}
 for _, s in ipairs(solvers) do
   for _, contact in ipairs({ lib.kec(), lib.lut(1e10) }) do
