@@ -11,7 +11,7 @@ inside the integration (rb::integ::integrate: right-hand sides, integrator, outp
 not the set-up), and the instructions are divided by the rhs evaluations of that run.
 
     /usr/bin/python3 plots/effects_instructions.py OUT/effects [--workbench BIN] [--root ROOT]
-                                                   [--duration 8]
+                                                   [--duration 8] [--match REGEX] [--csv NAME]
 
 Writes OUT/effects/study_effects_instructions.csv: case, label, method, instructions, rhs_evals,
 instructions_per_eval, relative_to_baseline (the case of role "baseline" with the same method).
@@ -52,6 +52,10 @@ def main(argv=None) -> int:
     ap.add_argument("--duration", type=float, default=8.0,
                     help="simulated seconds per case (default 8: tangent, transition and the "
                          "curve entry of case 3)")
+    ap.add_argument("--match", default="",
+                    help="only the cases whose label matches this regular expression")
+    ap.add_argument("--csv", default="study_effects_instructions.csv",
+                    help="output file name in the study folder")
     a = ap.parse_args(argv)
     cases_csv = os.path.join(a.study_dir, "summary_cases.csv")
     if not os.path.exists(cases_csv):
@@ -59,7 +63,7 @@ def main(argv=None) -> int:
               file=sys.stderr)
         return 1
     with open(cases_csv, newline="") as f:
-        cases = list(csv.DictReader(f))
+        cases = [c for c in csv.DictReader(f) if re.search(a.match, c["label"])]
     rows = []
     with tempfile.TemporaryDirectory(prefix="rb_effects_cg_") as tmp:
         for c in cases:
@@ -93,7 +97,10 @@ def main(argv=None) -> int:
     for r in rows:
         if r["instructions_per_eval"] and r["method"] in base:
             r["relative_to_baseline"] = f"{float(r['instructions_per_eval']) / base[r['method']]:.4f}"
-    path = os.path.join(a.study_dir, "study_effects_instructions.csv")
+    if not rows:
+        print("effects_instructions: no case matches", file=sys.stderr)
+        return 1
+    path = os.path.join(a.study_dir, a.csv)
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()

@@ -400,20 +400,31 @@ def hard_block(build: str) -> str:
 
 # ---- figures -----------------------------------------------------------------------------------
 
+STUDIES = ("efficiency_case3", "flange_stiffness", "refinement", "work_precision", "effects",
+           "speed")
+
+
 def copy_figures(outdir: str, docs: str) -> List[str]:
+    """Copies the figures the pages show (`figures/<study>_<name>.png` in studies.md and
+    performance.md, from OUT/<study>/study_<name>.png) and nothing else."""
     figdir = os.path.join(docs, "figures")
     os.makedirs(figdir, exist_ok=True)
+    wanted = set()
+    for md in ("studies.md", "performance.md"):
+        with open(os.path.join(docs, md)) as f:
+            wanted.update(re.findall(r"figures/([\w.+-]+\.png)", f.read()))
     copied = []
-    for study in ("efficiency_case3", "flange_stiffness", "refinement", "work_precision", "effects",
-                  "speed"):
-        d = os.path.join(outdir, study)
-        if not os.path.isdir(d):
+    for name in sorted(wanted):
+        study = next((st for st in STUDIES if name.startswith(st + "_")), None)
+        if study is None:
             continue
-        for name in sorted(os.listdir(d)):
-            if name.startswith("study_") and name.endswith(".png"):
-                dst = os.path.join(figdir, f"{study}_{name[len('study_'):]}")
-                shutil.copyfile(os.path.join(d, name), dst)
-                copied.append(dst)
+        src = os.path.join(outdir, study, "study_" + name[len(study) + 1:])
+        if os.path.exists(src):
+            dst = os.path.join(figdir, name)
+            shutil.copyfile(src, dst)
+            copied.append(dst)
+        else:
+            print(f"update_docs: {src} missing (figure {name} not updated)", file=sys.stderr)
     return copied
 
 
