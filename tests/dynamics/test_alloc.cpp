@@ -11,6 +11,30 @@ using rbtest::g_allocations;
 namespace rbtest {
 namespace {
 
+// Heap allocations made by 50 evaluations of the rhs and of every output (wheel outputs, body
+// coordinates and accelerations) at t = 5.0 ... 5.49 s; the results must stay finite.
+long allocationsOf50Evaluations(dynamics::ContactVehicleOde& ode, const Eigen::VectorXd& y,
+                                std::size_t bodies) {
+  const auto& l = ode.layout();
+  Eigen::VectorXd yd(ode.size());
+  std::vector<dynamics::WheelOutput> wo(2 * static_cast<std::size_t>(l.n_ws));
+  std::vector<vehicle::Vector6d> q(bodies);
+  double sink = 0.0;
+  const long before = g_allocations.load();
+  for (int k = 0; k < 50; ++k) {
+    const double t = 5.0 + 0.01 * k;
+    EXPECT_EQ(ode.rhs(t, y.data(), yd.data()), 0) << ode.lastError();
+    sink += yd[l.wsRate(0, 0)];
+    EXPECT_EQ(ode.wheelOutputs(t, y.data(), wo), 0);
+    EXPECT_EQ(ode.bodyCoordinates(t, y.data(), q), 0);
+    EXPECT_EQ(ode.bodyAccelerations(t, y.data(), q), 0);
+    sink += wo[0].normal + q[0][1];
+  }
+  const long made = g_allocations.load() - before;
+  EXPECT_TRUE(std::isfinite(sink));
+  return made;
+}
+
 // The wagon on the irregular track (case 3), every method, creep law and coupling, with wheelsets
 // off centre (flange contact on ws1) so that regularised bands and LUT flange forces are visited.
 TEST(Allocation, RhsAndOutputsAllocateNothing) {
@@ -27,22 +51,8 @@ TEST(Allocation, RhsAndOutputsAllocateNothing) {
         y[l.wsPosition(1, 0)] = 0.5e-3;
         y[l.wsPosition(2, 0)] = 3e-3;
         y[l.wsRate(3, 0)] = 0.05;
-        Eigen::VectorXd yd(ode.size());
-        std::vector<dynamics::WheelOutput> wo(2 * static_cast<std::size_t>(l.n_ws));
-        std::vector<vehicle::Vector6d> q(c.vehicle->bodies.size());
-        double sink = 0.0;
-        const long before = g_allocations.load();
-        for (int k = 0; k < 50; ++k) {
-          const double t = 5.0 + 0.01 * k;
-          EXPECT_EQ(ode.rhs(t, y.data(), yd.data()), 0) << ode.lastError();
-          sink += yd[l.wsRate(0, 0)];
-          EXPECT_EQ(ode.wheelOutputs(t, y.data(), wo), 0);
-          EXPECT_EQ(ode.bodyCoordinates(t, y.data(), q), 0);
-          EXPECT_EQ(ode.bodyAccelerations(t, y.data(), q), 0);
-          sink += wo[0].normal + q[0][1];
-        }
-        EXPECT_EQ(g_allocations.load() - before, 0) << f << " " << creep << " " << coupling;
-        EXPECT_TRUE(std::isfinite(sink));
+        EXPECT_EQ(allocationsOf50Evaluations(ode, y, c.vehicle->bodies.size()), 0)
+            << f << " " << creep << " " << coupling;
       }
     }
   }
@@ -61,21 +71,8 @@ TEST(Allocation, PrescribedSpinAndRampAllocateNothing) {
       const auto& l = ode.layout();
       y[l.wsPosition(0, 0)] = -7.0e-3;
       y[l.wsRate(3, 2)] = 0.01;
-      Eigen::VectorXd yd(ode.size());
-      std::vector<dynamics::WheelOutput> wo(2 * static_cast<std::size_t>(l.n_ws));
-      std::vector<vehicle::Vector6d> q(c.vehicle->bodies.size());
-      double sink = 0.0;
-      const long before = g_allocations.load();
-      for (int k = 0; k < 50; ++k) {
-        const double t = 5.0 + 0.01 * k;
-        EXPECT_EQ(ode.rhs(t, y.data(), yd.data()), 0) << ode.lastError();
-        sink += yd[l.wsRate(0, 0)];
-        EXPECT_EQ(ode.wheelOutputs(t, y.data(), wo), 0);
-        EXPECT_EQ(ode.bodyAccelerations(t, y.data(), q), 0);
-        sink += wo[0].normal + q[0][1];
-      }
-      EXPECT_EQ(g_allocations.load() - before, 0) << f << " " << coupling;
-      EXPECT_TRUE(std::isfinite(sink));
+      EXPECT_EQ(allocationsOf50Evaluations(ode, y, c.vehicle->bodies.size()), 0)
+          << f << " " << coupling;
     }
   }
 }
