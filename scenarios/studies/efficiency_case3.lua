@@ -3,7 +3,7 @@
 -- N/m^1.5, D = K/100 as in Table 3) with RK4 and ABM at a fixed step, dopri5 (ode45) and BDF
 -- (ode15s) at rtol = atol = 1e-4, 1e-5, 1e-6 with a largest step of 1 ms; for the paper's
 -- Table 7 (K = 7.075e13, where the paper needed ode15s 1e-7 / ode45 1e-8) also 1e-7 and 1e-8.
--- 5 repeats (CPU time as the median, evaluation counts exact). Long (about an hour on 2 cores):
+-- 5 repeats (CPU time as the median, evaluation counts exact). Long (about 5 minutes with 2 jobs on 2 cores):
 --   ./wb study scenarios/studies/efficiency_case3.lua          (out/efficiency_case3/)
 -- Figures and tables: study_cost.png/.csv (Fig. 23, Tables 7, 12-16), study_failures.csv,
 -- study_accuracy_lut_vs_kec.csv/.png (Eq. 33, Table 8: the LUT/KEC pairs of this study),
