@@ -326,6 +326,23 @@ void quinticHermite(double a, double b, const double* fa, const double* fb, doub
            (ddc0 * fa[2] + ddc1 * fb[2]);
 }
 
+// The interval of s_k on the uniform grid (min, step, n nodes; clamped to the end intervals) and
+// the cubic Hermite basis at its local coordinate t: v = A0 v0 + A1 v1 + C0 v0' + C1 v1'. Shared
+// by KecTable::eval and evalValues, so their values are the same to the bit.
+struct HermiteCell {
+  std::size_t i;
+  double t, A0, A1, C0, C1;
+};
+HermiteCell hermiteCell(double min, double h, std::size_t n, double s_k) {
+  double tf = std::floor((s_k - min) / h);
+  tf = std::clamp(tf, 0.0, static_cast<double>(n - 2));
+  const double t = (s_k - min) / h - tf;
+  const double t2 = t * t, t3 = t2 * t;
+  return {static_cast<std::size_t>(tf), t,
+          2 * t3 - 3 * t2 + 1,          -2 * t3 + 3 * t2,
+          (t3 - 2 * t2 + t) * h,        (t3 - t2) * h};
+}
+
 }  // namespace
 
 std::string kecQuantityName(KecQuantity q) {
@@ -344,17 +361,11 @@ bool KecTable::inTransition(Side side, double s_k) const {
 
 void KecTable::eval(Side side, double s_k, KecPoint& out) const {
   const std::size_t k = idx(side);
-  const double h = grid_.step;
-  double tf = std::floor((s_k - grid_.min) / h);
-  tf = std::clamp(tf, 0.0, static_cast<double>(n_ - 2));
-  const auto i = static_cast<std::size_t>(tf);
-  const double t = (s_k - grid_.min) / h - tf;
-  const double t2 = t * t, t3 = t2 * t;
-  const double A0 = 2 * t3 - 3 * t2 + 1, A1 = -2 * t3 + 3 * t2;
-  const double C0 = (t3 - 2 * t2 + t) * h, C1 = (t3 - t2) * h;
+  const HermiteCell c = hermiteCell(grid_.min, grid_.step, n_, s_k);
+  const double A0 = c.A0, A1 = c.A1, C0 = c.C0, C1 = c.C1, t = c.t, t2 = t * t, h = grid_.step;
   const double dA0 = (6 * t2 - 6 * t) / h, dA1 = -dA0;
   const double dC0 = 3 * t2 - 4 * t + 1, dC1 = 3 * t2 - 2 * t;
-  const double* p0 = &herm_[k][i * kKecQuantities * 2];
+  const double* p0 = &herm_[k][c.i * kKecQuantities * 2];
   const double* p1 = p0 + kKecQuantities * 2;
   for (std::size_t q = 1; q < kKecQuantities; ++q) {
     out.value[q] = A0 * p0[2 * q] + A1 * p1[2 * q] + C0 * p0[2 * q + 1] + C1 * p1[2 * q + 1];
@@ -372,15 +383,9 @@ void KecTable::evalValues(Side side, double s_k, KecPoint& out) const {
   // band (SwA ... SrB, the only channels checked) are such channels, and an exact value lets the
   // dynamics reuse its last describe() of them.
   const std::size_t k = idx(side);
-  const double h = grid_.step;
-  double tf = std::floor((s_k - grid_.min) / h);
-  tf = std::clamp(tf, 0.0, static_cast<double>(n_ - 2));
-  const auto i = static_cast<std::size_t>(tf);
-  const double t = (s_k - grid_.min) / h - tf;
-  const double t2 = t * t, t3 = t2 * t;
-  const double A0 = 2 * t3 - 3 * t2 + 1, A1 = -2 * t3 + 3 * t2;
-  const double C0 = (t3 - 2 * t2 + t) * h, C1 = (t3 - t2) * h;
-  const double* p0 = &herm_[k][i * kKecQuantities * 2];
+  const HermiteCell c = hermiteCell(grid_.min, grid_.step, n_, s_k);
+  const double A0 = c.A0, A1 = c.A1, C0 = c.C0, C1 = c.C1;
+  const double* p0 = &herm_[k][c.i * kKecQuantities * 2];
   const double* p1 = p0 + kKecQuantities * 2;
   constexpr auto kFirstPoint = static_cast<std::size_t>(KecQuantity::SwA);
   for (std::size_t q = 1; q < kFirstPoint; ++q)
