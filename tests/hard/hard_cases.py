@@ -34,7 +34,6 @@ import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-SKIP = 77  # ctest SKIP_RETURN_CODE
 
 # Fixed-step and adaptive settings used by the cases. Adaptive methods run with rtol = atol
 # (as the paper) and the paper's 1 ms maximum step (section 5.4). bdf uses consistent normal
@@ -60,12 +59,11 @@ def adaptive(method, tol, consistent=None, max_step=1e-3):
     return (label, sets)
 
 
-def combo(c, expect="any", extra=(), needs=None, suffix="", pp=None, onset=None):
+def combo(c, expect="any", extra=(), suffix="", pp=None, onset=None):
     """pp: (min, max) of ws1's peak-to-peak lateral motion in the last simulated second [mm]
     (hunting: below / above the critical speed)."""
     label, sets = c
-    return {"label": label + suffix, "sets": sets + list(extra), "expect": expect, "needs": needs,
-            "pp": pp, "onset": onset}
+    return {"label": label + suffix, "sets": sets + list(extra), "expect": expect, "pp": pp, "onset": onset}
 
 
 PRESCRIBED = ["contact.wheelset_spin=prescribed"]
@@ -86,7 +84,7 @@ CASES = {
         "combos": [
             combo(fixed("rk4", 1e-3)),
             combo(fixed("abm", 1e-3)),
-            combo(fixed("abm", 1e-3), extra=PRESCRIBED, needs="wheelset_spin",
+            combo(fixed("abm", 1e-3), extra=PRESCRIBED,
                   suffix=" prescribed spin"),
             combo(adaptive("dopri5", 1e-6)),
             combo(adaptive("dopri5", 1e-8), expect="ok"),
@@ -111,7 +109,7 @@ CASES = {
                   suffix=" LUT"),
             combo(fixed("abm", 2.5e-4)),
             combo(fixed("abm", 1e-3)),
-            combo(fixed("abm", 1e-3), extra=PRESCRIBED, needs="wheelset_spin",
+            combo(fixed("abm", 1e-3), extra=PRESCRIBED,
                   suffix=" prescribed spin"),
         ],
         "flange_contact": True,
@@ -157,7 +155,7 @@ CASES = {
             combo(fixed("rk4", 1e-4)),
             combo(fixed("abm", 1e-3)),
             combo(fixed("abm", 1e-4)),
-            combo(fixed("abm", 1e-3), extra=PRESCRIBED, needs="wheelset_spin",
+            combo(fixed("abm", 1e-3), extra=PRESCRIBED,
                   suffix=" prescribed spin"),
             combo(adaptive("dopri5", 1e-5)),
             combo(adaptive("dopri5", 1e-6)),
@@ -199,13 +197,12 @@ CASES = {
     },
     "hunting_ramp_long": {
         "scenario": "scenarios/hard/hunting_ramp.lua",
-        "requires": "acceleration",
         "combos": [
             # Constant-speed runs (hunting.lua): stable at 70 m/s, hunting at 75 m/s.
             combo(adaptive("dopri5", 1e-6), expect="ok", onset=(60.0, 85.0)),
             # With the spin prescribed the wagon did not reach the 4 mm hunting amplitude by
             # 85 m/s (measured, docs/hard_cases.md): recorded, not asserted.
-            combo(adaptive("dopri5", 1e-6), extra=PRESCRIBED, needs="wheelset_spin",
+            combo(adaptive("dopri5", 1e-6), extra=PRESCRIBED,
                   suffix=" prescribed spin"),
         ],
         "long": True,
@@ -412,14 +409,6 @@ def print_table(rows):
 
 def run_case(args):
     case = CASES[args.case]
-    help_text = subprocess.run([args.workbench, "help", "scenario"], capture_output=True,
-                               text=True).stdout
-    def has_key(k):
-        return re.search(r"^\s+%s \(" % re.escape(k), help_text, re.M) is not None
-    if case.get("requires") and not has_key(case["requires"]):
-        print("SKIP %s: the engine has no '%s' key yet (workbench help scenario)"
-              % (args.case, case["requires"]))
-        return SKIP
     os.makedirs(args.out_dir, exist_ok=True)
     bounds = dict(BOUNDS)
     bounds.update(case.get("bounds", {}))
@@ -428,11 +417,6 @@ def run_case(args):
     env = dict(os.environ, RAILBENCH_ROOT=ROOT)
     for c in case["combos"]:
         row = {"case": args.case, "combination": c["label"], "expect": c["expect"]}
-        if c["needs"] and not has_key(c["needs"]):
-            row.update({"status": "skipped", "verdict": "skip",
-                        "message": "engine has no '%s' key yet" % c["needs"]})
-            rows.append(row)
-            continue
         sets = case.get("sets", []) + c["sets"]
         t_end = t_end_of(args.workbench, case["scenario"], sets)
         tag = re.sub(r"[^A-Za-z0-9]+", "_", c["label"]).strip("_")
