@@ -141,44 +141,7 @@ struct Basis {
 }  // namespace
 
 void LutTable::eval(double y, double xi_g, LutSample& out) const {
-  const Cell c = locate(y, xi_g);
-  out.inside = c.inside;
-  const Basis by(c.t);
-  const std::size_t stride_y = kLutChannels * 4, stride_g = ny_ * kLutChannels * 4;
-  const double* base = &data_[(c.j * ny_ + c.i) * kLutChannels * 4];
-  if (ng_ < 2) {
-    for (std::size_t ch = 0; ch < kLutChannels; ++ch) {
-      double v = 0.0, dv = 0.0;
-      for (std::size_t a = 0; a < 2; ++a) {
-        const double* p = base + a * stride_y + ch * 4;
-        v += by.A[a] * p[0] + hy_ * by.C[a] * p[1];
-        dv += by.dA[a] * p[0] + hy_ * by.dC[a] * p[1];
-      }
-      out.value[ch] = v;
-      out.d_dy[ch] = dv / hy_;
-      out.d_dxi[ch] = 0.0;
-    }
-    return;
-  }
-  const Basis bg(c.u);
-  for (std::size_t ch = 0; ch < kLutChannels; ++ch) {
-    double v = 0.0, vt = 0.0, vu = 0.0;
-    for (std::size_t b = 0; b < 2; ++b) {
-      for (std::size_t a = 0; a < 2; ++a) {
-        const double* p = base + b * stride_g + a * stride_y + ch * 4;
-        const double f = p[0], fy = hy_ * p[1], fg = hg_ * p[2], fyg = hy_ * hg_ * p[3];
-        v += by.A[a] * bg.A[b] * f + by.C[a] * bg.A[b] * fy + by.A[a] * bg.C[b] * fg +
-             by.C[a] * bg.C[b] * fyg;
-        vt += by.dA[a] * bg.A[b] * f + by.dC[a] * bg.A[b] * fy + by.dA[a] * bg.C[b] * fg +
-              by.dC[a] * bg.C[b] * fyg;
-        vu += by.A[a] * bg.dA[b] * f + by.C[a] * bg.dA[b] * fy + by.A[a] * bg.dC[b] * fg +
-              by.C[a] * bg.dC[b] * fyg;
-      }
-    }
-    out.value[ch] = v;
-    out.d_dy[ch] = vt / hy_;
-    out.d_dxi[ch] = vu / hg_;
-  }
+  evalRange<true>(y, xi_g, out, 0, kLutChannels);
 }
 
 void LutTable::evalValues(double y, double xi_g, LutSample& out) const {
@@ -187,7 +150,14 @@ void LutTable::evalValues(double y, double xi_g, LutSample& out) const {
 
 void LutTable::evalValues(double y, double xi_g, LutSample& out, std::size_t first,
                           std::size_t last) const {
-  last = std::min(last, kLutChannels);
+  evalRange<false>(y, xi_g, out, first, std::min(last, kLutChannels));
+}
+
+// Channels [first, last): values, and with kDerivatives their first derivatives in y and xi_g
+// (the same expressions for the values either way, so eval and evalValues agree to the bit).
+template <bool kDerivatives>
+void LutTable::evalRange(double y, double xi_g, LutSample& out, std::size_t first,
+                         std::size_t last) const {
   const Cell c = locate(y, xi_g);
   out.inside = c.inside;
   const Basis by(c.t);
@@ -195,27 +165,42 @@ void LutTable::evalValues(double y, double xi_g, LutSample& out, std::size_t fir
   const double* base = &data_[(c.j * ny_ + c.i) * kLutChannels * 4];
   if (ng_ < 2) {
     for (std::size_t ch = first; ch < last; ++ch) {
-      double v = 0.0;
+      double v = 0.0, dv = 0.0;
       for (std::size_t a = 0; a < 2; ++a) {
         const double* p = base + a * stride_y + ch * 4;
         v += by.A[a] * p[0] + hy_ * by.C[a] * p[1];
+        if constexpr (kDerivatives) dv += by.dA[a] * p[0] + hy_ * by.dC[a] * p[1];
       }
       out.value[ch] = v;
+      if constexpr (kDerivatives) {
+        out.d_dy[ch] = dv / hy_;
+        out.d_dxi[ch] = 0.0;
+      }
     }
     return;
   }
   const Basis bg(c.u);
   for (std::size_t ch = first; ch < last; ++ch) {
-    double v = 0.0;
+    double v = 0.0, vt = 0.0, vu = 0.0;
     for (std::size_t b = 0; b < 2; ++b) {
       for (std::size_t a = 0; a < 2; ++a) {
         const double* p = base + b * stride_g + a * stride_y + ch * 4;
         const double f = p[0], fy = hy_ * p[1], fg = hg_ * p[2], fyg = hy_ * hg_ * p[3];
         v += by.A[a] * bg.A[b] * f + by.C[a] * bg.A[b] * fy + by.A[a] * bg.C[b] * fg +
              by.C[a] * bg.C[b] * fyg;
+        if constexpr (kDerivatives) {
+          vt += by.dA[a] * bg.A[b] * f + by.dC[a] * bg.A[b] * fy + by.dA[a] * bg.C[b] * fg +
+                by.dC[a] * bg.C[b] * fyg;
+          vu += by.A[a] * bg.dA[b] * f + by.C[a] * bg.dA[b] * fy + by.A[a] * bg.dC[b] * fg +
+                by.C[a] * bg.dC[b] * fyg;
+        }
       }
     }
     out.value[ch] = v;
+    if constexpr (kDerivatives) {
+      out.d_dy[ch] = vt / hy_;
+      out.d_dxi[ch] = vu / hg_;
+    }
   }
 }
 

@@ -152,6 +152,8 @@ class LutTable {
   std::uint8_t flags(std::size_t iy, std::size_t ig) const { return flags_[ig * ny_ + iy]; }
 
  private:
+  template <bool kDerivatives>
+  void evalRange(double y, double xi_g, LutSample& out, std::size_t first, std::size_t last) const;
   friend LutTable buildLut(const ContactGeometryConfig& config);
   friend class TableIo;  // binary cache files (table_io.hpp)
   struct Cell {
