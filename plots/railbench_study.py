@@ -826,14 +826,14 @@ def fig_work_precision(rows: List[dict], stat: str = "max", against: str = "refe
             ("Q", "kN", "normal force Q"), ("Fy", "kN", "lateral creep force")]
     with rp.report_style():
         fig, axes = plt.subplots(2, 2, figsize=(rp.A4_WIDTH_IN * 1.2, 7.6))
+        # One line per model and integrator setting apart from the tolerance / step (so that,
+        # e.g., dopri5 with and without a largest step are separate lines); the same in every panel.
+        groups: Dict[Tuple[str, str], List[dict]] = {}
+        for r in cases:
+            rest = re.sub(r"\b(tol|h)=\S+\s*", "", r.get("solver", "")).strip()
+            groups.setdefault((r["model"], rest or r["integrator"]), []).append(r)
         for ax, (tag, unit, name) in zip(axes.flat, cols):
             key = f"{tag}_{stat}_{unit}"
-            # One line per model and integrator setting apart from the tolerance / step (so that,
-            # e.g., dopri5 with and without a largest step are separate lines).
-            groups: Dict[Tuple[str, str], List[dict]] = {}
-            for r in cases:
-                rest = re.sub(r"\b(tol|h)=\S+\s*", "", r.get("solver", "")).strip()
-                groups.setdefault((r["model"], rest or r["integrator"]), []).append(r)
             for (model, integ), rs in groups.items():
                 method = model.split()[0].lower() if model else ""
                 mk, ls = METHOD_MARKERS.get(method, ("^", ":"))

@@ -254,19 +254,20 @@ def work_precision_block(outdir: str) -> str:
         cases = [r for r in rows if r["against"] == against and r["kind"] == "case"]
         if not cases:
             continue
+        def group(r):  # the model and the integrator setting apart from tolerance / step
+            return r["model"], re.sub(r"\b(tol|h)=\S+\s*", "", r["solver"]).strip()
+
         groups = []
         for r in cases:
-            g = (r["model"], re.sub(r"\b(tol|h)=\S+\s*", "", r["solver"]).strip())
-            if g not in groups:
-                groups.append(g)
+            if group(r) not in groups:
+                groups.append(group(r))
         body = []
         for g in sorted(groups):
             line = list(g)
             for lev in levels:
                 best = None
                 for r in cases:
-                    if (r["model"], re.sub(r"\b(tol|h)=\S+\s*", "", r["solver"]).strip()) != g \
-                            or r["status"] != "ok":
+                    if group(r) != g or r["status"] != "ok":
                         continue
                     e = num(r.get("y_max_mm"))
                     if e is not None and e <= lev:
