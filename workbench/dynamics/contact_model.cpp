@@ -210,6 +210,7 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
   m.creep = c.creep;
   m.coupling = c.normal_forces;
   m.spin = c.wheelset_spin;
+  m.min_normal_force = c.min_normal_force;
   m.loc = c.loc;
   for (std::size_t b = 0; b < v.bodies.size(); ++b)
     if (v.bodies[b].kind == vehicle::BodyKind::Wheelset) m.wheelsets.push_back(static_cast<int>(b));

@@ -52,6 +52,7 @@ struct ContactModel {
   CreepModel creep = CreepModel::Polach;
   NormalForceCoupling coupling = NormalForceCoupling::Lagged;
   WheelsetSpin spin = WheelsetSpin::Free;  // spin a state, or theta_dot = V(t) / centredRadius()
+  double min_normal_force = 0.0;  // [N] below it a wheel has lifted: the rhs refuses the state
 
   // Profiles, positioning (Lw, Lr, beta, r0), grids and KEC transition lengths.
   contact::ContactGeometryConfig geometry;

@@ -219,7 +219,12 @@ std::vector<BlockSpec> build() {
         choice("wheelset_spin", {"free", "prescribed"}, "free",
                "free: the wheelset spin is a degree of freedom driven by creep (stiff, needs "
                "ABM steps < 0.5 ms at 20 m/s); prescribed: spin rate V(t)/r_c (constant "
-               "rotational speed, the spin torque is a reaction), stable with ABM at 1 ms")}});
+               "rotational speed, the spin torque is a reaction), stable with ABM at 1 ms"),
+        num("min_normal_force", "N", 0,
+            "a wheel whose constraint normal force falls below this stops the run (exit 2): a "
+            "constraint contact cannot lift the wheel, so results past wheel lift are not "
+            "physical",
+            0, 1e7)}});
 
   // Vehicle (issue 5): bodies in track-frame coordinates and suspension elements (Appendix A).
   s.push_back(
@@ -338,7 +343,11 @@ std::vector<BlockSpec> build() {
                 typed("elements", ValueType::StringList, "-",
                       "suspension elements whose deflection and force are written, by name"),
                 boolean("body_accelerations", false,
-                        "write body accelerations (ride analysis) for every body")}});
+                        "write body accelerations (ride analysis) for every body"),
+                num("max_samples", "-", 1e7,
+                    "largest number of output times a run may write (a bound on memory and "
+                    "disk; raise it for long, finely sampled runs)",
+                    1, 1e12)}});
   return s;
 }
 
