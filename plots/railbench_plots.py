@@ -1356,6 +1356,7 @@ class ContactRow:
     label: str                               # y label
     min_span: float                          # smallest y span (display unit)
     methods: Tuple[str, ...] = ("kec", "lut")  # contact methods whose result holds it
+    creep: bool = False                      # computed only with a creep law (not "none")
 
 
 _ROW_Q = ContactRow("normal_force", 1e-3, "normal force\nQ [kN]", 5.0)
@@ -1368,11 +1369,11 @@ _ROW_REGIME = ContactRow("regime", 1.0, "contact\nregime", 2.6)
 _CONTACT_ROWS = (_ROW_Q, _ROW_YQ)
 _FLANGE_ROWS = (_ROW_TREAD, _ROW_FLANGE, _ROW_INDENT, _ROW_REGIME)
 _CREEP_ROWS = (
-    ContactRow("creepage_x", 1e3, "long. creepage\nξx [‰]", 0.5),
-    ContactRow("creepage_y", 1e3, "lat. creepage\nξy [‰]", 0.5),
-    ContactRow("spin", 1.0, "spin\nφ [1/m]", 0.02),
-    ContactRow("creep_force_x", 1e-3, "long. creep\nforce Fx [kN]", 1.0),
-    ContactRow("creep_force_y", 1e-3, "lat. creep\nforce Fy [kN]", 1.0),
+    ContactRow("creepage_x", 1e3, "long. creepage\nξx [‰]", 0.5, creep=True),
+    ContactRow("creepage_y", 1e3, "lat. creepage\nξy [‰]", 0.5, creep=True),
+    ContactRow("spin", 1.0, "spin\nφ [1/m]", 0.02, creep=True),
+    ContactRow("creep_force_x", 1e-3, "long. creep\nforce Fx [kN]", 1.0, creep=True),
+    ContactRow("creep_force_y", 1e-3, "lat. creep\nforce Fy [kN]", 1.0, creep=True),
 )
 REGIME_NAMES = ("tread", "two-point", "flange")
 # Drawn a little apart so that both wheels stay visible where their regimes are equal.
@@ -1401,6 +1402,9 @@ def _row_present(result: Result, row: ContactRow) -> bool:
         return False
     m = _method(result)
     if m is not None and m not in row.methods:
+        return False
+    # Without a creep law the engine writes zeros for creepages, spin and creep forces.
+    if row.creep and str(c.attrs.get("creep", "")).strip().lower() == "none":
         return False
     return any(_contact_series(result, wc, row.key, sd) is not None
                for wc in c.wheelsets.values() for sd in ("left", "right"))
