@@ -1833,8 +1833,9 @@ FIGURES: List[FigureSpec] = [
     FigureSpec("irregularity_psd",
                lambda r: r.irregularities is not None and r.irregularities.data["s"].size >= 16,
                fig_irregularity_psd, "Welch PSD estimate against target"),
-    FigureSpec("wheelsets", lambda r: bool(r.kinematic_bodies(("wheelset",))), fig_wheelsets,
-               "wheelset lateral displacement and yaw versus distance"),
+    # Guided wheelsets follow the track: their y and yaw are zero by construction, not results.
+    FigureSpec("wheelsets", lambda r: bool(r.kinematic_bodies(("wheelset",))) and not r.guided,
+               fig_wheelsets, "wheelset lateral displacement and yaw versus distance"),
     FigureSpec("bogies_car", lambda r: bool(r.kinematic_bodies(("bogie", "car"))), fig_bodies_car,
                "bogie and car body lateral displacement and yaw versus distance"),
     FigureSpec("contact_forces", lambda r: bool(_contact_rows(r, _CONTACT_ROWS)),
