@@ -1566,9 +1566,9 @@ def fig_creep(result: Result):
 
 # Rows of the acceleration figure: dataset, label, minimum y span [m/s^2].
 _ACC_ROWS = (
-    ("ay", "lateral\naᵧ [m/s²]", 0.05),
-    ("az", "vertical\na_z [m/s²]", 0.05),
-    ("ax", "longitudinal\naₓ [m/s²]", 0.05),
+    ("ay", "lateral\n$a_y$ [m/s²]", 0.05),
+    ("az", "vertical\n$a_z$ [m/s²]", 0.05),
+    ("ax", "longitudinal\n$a_x$ [m/s²]", 0.05),
 )
 
 
@@ -1631,10 +1631,10 @@ def fig_accelerations(result: Result):
                     ok = np.isfinite(v)
                     if ok.any():
                         rms = float(np.sqrt(np.mean(v[ok] ** 2)))
-                        ax.text(0.99, 0.95, f"RMS {rms:.3g} m/s²", transform=ax.transAxes,
-                                ha="right", va="top", fontsize=6.5,
-                                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="#cccccc",
-                                          lw=0.4, alpha=0.85))
+                        # as a legend: loc="best" keeps the label off the curve
+                        ax.legend([Line2D([], [], ls="none")], [f"RMS {rms:.3g} m/s²"],
+                                  loc="best", handlelength=0, handletextpad=0, fontsize=6.5,
+                                  borderpad=0.25, framealpha=0.85)
                     fin = x[np.isfinite(x)]
                     if fin.size:
                         xmin, xmax = min(xmin, fin.min()), max(xmax, fin.max())
