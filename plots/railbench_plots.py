@@ -56,8 +56,10 @@ Vehicle groups (/time, /bodies, /contact, /elements, /stats) are optional: a fil
 the track still loads.  A figure is drawn only from what the file holds: a quantity the run
 did not write, or that its contact method does not produce (the engine writes zeros for the
 LUT-only flange_force and flange_indentation in KEC runs), gets no panel, and the figure says
-so instead of showing an empty one.  Time series may be cut short (failed or interrupted run): every figure
-plots the samples it has and truncates x/y pairs to their common length.
+so instead of showing an empty one (the same for creepages and creep forces of a run without
+a creep law, and for guided wheelsets, whose y and yaw are zero by construction).  Time series
+may be cut short (failed or interrupted run): every figure plots the samples it has and
+truncates x/y pairs to their common length.
 
 Only numpy, matplotlib (Agg) and h5py are used; no scipy.
 """
