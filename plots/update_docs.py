@@ -427,6 +427,15 @@ def hard_rows(build: str) -> List[dict]:
     return read_csv(os.path.join(build, "hard", "hard_cases.csv"))
 
 
+def failure_reason(msg: str) -> str:
+    """The short reason of a failure message ("rk4: failed at t = 1.8: <reason>; details")."""
+    if "left the table" in msg:
+        return ("the LUT entry" if "LUT entry" in msg else "the contact") + " left the table"
+    m = re.search(r"failed at t = [^:]+: (.*)", msg)
+    reason = re.split(r"[:;(\[]", m.group(1) if m else msg)[0].strip()
+    return reason[:60].replace("|", "/") or "?"
+
+
 def hard_detail_block(build: str) -> str:
     """docs/hard_cases.md: every combination with steps, flange loads and the hunting measures,
     and the suite's verdict in one line."""
@@ -437,13 +446,13 @@ def hard_detail_block(build: str) -> str:
     for r in rows:
         status = r["status"] or "error"
         if status == "failed":
-            msg = (r["message"] or "").split(":", 2)
-            status = "failed: " + (msg[-1].strip()[:60] if msg else "?").replace("|", "/")
+            status = "failed: " + failure_reason(r["message"] or "")
         extra = []
-        if num(r.get("ws1_y_pp_last_mm")) is not None and r.get("ws1_y_pp_last_mm") != "nan":
-            extra.append(f"ws1 p-p last s {num(r['ws1_y_pp_last_mm']):.1f} mm")
-        if num(r.get("onset_speed")) is not None and r.get("onset_speed") != "nan":
-            extra.append(f"onset {num(r['onset_speed']):.1f} m/s")
+        if r["case"].startswith("hunting"):  # the hunting measures mean nothing elsewhere
+            if r.get("ws1_y_pp_last_mm") not in (None, "", "nan"):
+                extra.append(f"ws1 p-p last s {num(r['ws1_y_pp_last_mm']):.1f} mm")
+            extra.append("onset " + ("none" if r.get("onset_speed") in (None, "", "nan")
+                                     else f"{num(r['onset_speed']):.1f} m/s"))
         body.append([r["case"], r["combination"], status, r["verdict"],
                      fmt(num(r["t_reached"]), "{:.3f}"), fmt(num(r["cpu_s"]), "{:.2f}"),
                      f"{int(num(r['rhs_evals'], 0))} (+{int(num(r['rhs_evals_jac'], 0))})",
@@ -452,6 +461,7 @@ def hard_detail_block(build: str) -> str:
                      f"{fmt(num(r.get('max_flange_kN')), '{:.0f}')} / "
                      f"{fmt(num(r.get('max_normal_flange_kN')), '{:.0f}')}",
                      fmt(num(r.get("flange_time_share")), "{:.2f}"),
+                     fmt(num(r.get("max_indent_mm")), "{:.4f}"),
                      fmt(num(r["max_abs_yq"]), "{:.2f}"), ", ".join(extra)])
     n = len(rows)
     passed = sum(1 for r in rows if r["verdict"] == "pass")
@@ -463,7 +473,7 @@ def hard_detail_block(build: str) -> str:
             table(["case", "combination", "result", "test", "t reached [s]", "CPU [s]",
                    "rhs evals (+FD Jac)", "steps (rejected)", "max abs y [mm]",
                    "max flange N [kN] (LUT Hertz / flange patch)", "flange share",
-                   "max abs Y/Q", "hunting"], body))
+                   "max indent [mm]", "max abs Y/Q", "hunting"], body))
 
 
 # ---- validation (paper section 5.2, Tables 5 and 6; docs/validation.md) -----------------------
