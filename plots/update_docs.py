@@ -404,6 +404,33 @@ def bench_block(outdir: str) -> str:
             table(["benchmark (median of the repetitions)", "CPU µs per evaluation"], body))
 
 
+def bench_integrators_block(outdir: str) -> str:
+    """docs/integrators.md: bench/bench_integrators (the integrators' overhead per step)."""
+    path = os.path.join(outdir, "bench_integrators.json")
+    if not os.path.exists(path):
+        return missing("out/studies/bench_integrators.json")
+    with open(path) as f:
+        data = json.load(f)
+    body = []
+    for b in data.get("benchmarks", []):
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+            continue
+        name = b.get("run_name", b["name"])
+        if "ns/step" in b:
+            body.append([name, f"{b['ns/step']:.0f}", f"{b.get('rhs/step', 0):.2f}",
+                         f"{b.get('overhead_ns', 0):.0f}", f"{b.get('steps', 0):.0f}"])
+        else:  # BM_rhs: the cost of one right-hand side
+            unit = b.get("time_unit", "ns")
+            scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[unit]
+            body.append([name, "–", "–", "–", f"rhs {b['cpu_time'] * scale:.0f} ns"])
+    ctx = data.get("context", {})
+    return (f"Google Benchmark on {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs at "
+            f"{ctx.get('mhz_per_cpu', '?')} MHz, {ctx.get('date', '')} (median of the "
+            f"repetitions):\n\n" +
+            table(["benchmark", "ns / step", "rhs / step", "overhead ns / step",
+                   "steps (or rhs cost)"], body))
+
+
 # ---- hard cases --------------------------------------------------------------------------------
 
 def hard_block(build: str) -> str:
@@ -573,8 +600,8 @@ def validation_blocks(outdir: str) -> Dict[str, str]:
 
 # ---- provenance ---------------------------------------------------------------------------------
 
-# Where the runs behind each block were recorded: a study folder of OUT_DIR, "bench"
-# (bench_wagon.json) or "hard" (the hard-case record). A block not listed here is stamped from
+# Where the runs behind each block were recorded: a study folder of OUT_DIR, a benchmark
+# (BENCH_OUTPUTS) or "hard" (the hard-case record). A block not listed here is stamped from
 # OUT_DIR/provenance.json (the `./wb studies` invocation).
 BLOCK_SOURCES = {
     "efficiency": "efficiency_case3", "efficiency_paper": "efficiency_case3",
@@ -582,9 +609,14 @@ BLOCK_SOURCES = {
     "flange_paper": "flange_stiffness", "flange_accuracy": "flange_stiffness",
     "refinement": "refinement", "work_precision": "work_precision", "hard_cases": "hard",
     "hard_cases_detail": "hard", "effects": "effects", "speed": "speed", "bench": "bench",
+    "bench_integrators": "bench_integrators",
     "validation_case1": "validation", "validation_case2": "validation",
     "validation_case3": "validation", "validation_cost": "validation",
 }
+
+
+# Benchmark sources: their JSON output (and provenance record) in OUT_DIR.
+BENCH_OUTPUTS = {"bench": "bench_wagon", "bench_integrators": "bench_integrators"}
 
 
 def block_provenance(name: str, outdir: str, build: str) -> List[dict]:
@@ -598,8 +630,8 @@ def block_provenance(name: str, outdir: str, build: str) -> List[dict]:
             if e not in seen:
                 seen.append(e)
         return seen
-    if src == "bench":
-        return provenance.read(os.path.join(outdir, "bench_wagon.provenance.json"))
+    if src in BENCH_OUTPUTS:
+        return provenance.read(os.path.join(outdir, BENCH_OUTPUTS[src] + ".provenance.json"))
     if src:
         return provenance.read(os.path.join(outdir, src, "provenance.json"))
     return provenance.read(os.path.join(outdir, "provenance.json"))
@@ -642,7 +674,8 @@ def copy_figures(outdir: str, docs: str, pages) -> List[str]:
 def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
     """Every generated block of docs/: page -> block name -> content (without the stamp)."""
     blocks: Dict[str, Dict[str, str]] = {"studies.md": {}, "performance.md": {},
-                                         "validation.md": {}, "hard_cases.md": {}}
+                                         "validation.md": {}, "hard_cases.md": {},
+                                         "integrators.md": {}}
     blocks["studies.md"].update(efficiency_block(outdir))
     blocks["studies.md"]["accuracy"] = accuracy_block(outdir)
     blocks["studies.md"].update(efficiency_block(outdir, "flange_stiffness", "flange"))
@@ -655,6 +688,7 @@ def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
     blocks["performance.md"]["bench"] = bench_block(outdir)
     blocks["validation.md"].update(validation_blocks(outdir))
     blocks["hard_cases.md"]["hard_cases_detail"] = hard_detail_block(build)
+    blocks["integrators.md"]["bench_integrators"] = bench_integrators_block(outdir)
     return blocks
 
 
