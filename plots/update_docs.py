@@ -1,14 +1,14 @@
 #!/usr/bin/env python3
 """Regenerates every run-derived table and figure of docs/ (studies.md, performance.md,
-validation.md, hard_cases.md) from the outputs of `./wb studies` (issue 7: "one command
-regenerates every table and figure"; issue 11: docs generated, not typed).
+validation.md, hard_cases.md, integrators.md) from the outputs of `./wb studies`: no number that
+comes from a run is typed into docs/ by hand.
 
     /usr/bin/python3 plots/update_docs.py OUT_DIR [--build BUILD_DIR] [--docs DOCS_DIR]
 
 OUT_DIR holds one folder per study (efficiency_case3, flange_stiffness, refinement,
 work_precision, effects, speed, each with the study_*.csv / *.png of plot_study.py; validation,
-with the validation_*.csv of plots/validation_tables.py) and bench_wagon.json (Google Benchmark,
-one wagon evaluation and its parts). BUILD_DIR/hard/hard_cases.csv is the hard-case suite's
+with the validation_*.csv of plots/validation_tables.py), bench_wagon.json (Google Benchmark,
+one wagon evaluation and its parts) and bench_integrators.json (the integrators' overhead). BUILD_DIR/hard/hard_cases.csv is the hard-case suite's
 record. Every generated block sits between the markers
 
     <!-- generated: NAME (plots/update_docs.py) -->
@@ -19,7 +19,7 @@ in the markdown files: the text around them is written by hand and is kept; a bl
 is missing is replaced by a line saying so (never by stale numbers). Every other block starts
 with a stamp naming the git commit (and date) its runs were made with, from the provenance
 records written when the runs were made (OUT_DIR/<study>/provenance.json and
-OUT_DIR/bench_wagon.provenance.json by `./wb studies`, the `commit` column of hard_cases.csv by
+OUT_DIR/<benchmark>.provenance.json by `./wb studies`, the `commit` column of hard_cases.csv by
 tests/hard/hard_cases.py; plots/provenance.py); runs of a tree with uncommitted changes are
 stamped as such. Figures are copied to docs/figures/<study>_<name>.png.
 """
@@ -447,7 +447,7 @@ def hard_block(build: str) -> str:
                      fmt(cpu, "{:.2f}"), str(evals), fmt(num(r["max_abs_y_mm"]), "{:.2f}"),
                      fmt(num(r["max_abs_yq"]), "{:.2f}"), reason])
     return table(["case", "combination", "status", "test", "t reached / end [s]", "CPU [s]",
-                  "rhs evals", "max |y| [mm]", "max |Y/Q|", "failure"], body)
+                  "rhs evals", "max abs y [mm]", "max abs Y/Q", "failure"], body)
 
 
 def hard_rows(build: str) -> List[dict]:
@@ -570,7 +570,7 @@ def validation_blocks(outdir: str) -> Dict[str, str]:
                                    "KEC against LUT with the same solver, relative to max "
                                    "|y_LUT|:\n\n" +
                                    table(["solver", "wheelset", "max", "mean",
-                                          "max |y_LUT| [mm]"], body))
+                                          "max abs y_LUT [mm]"], body))
     else:
         out["validation_case3"] = missing("out/studies/validation/validation_case3.csv")
 
