@@ -128,18 +128,28 @@ void unlock(Job& j) {
   j.lock_fd = -1;
 }
 
-// Files of earlier, killed attempts at this job (<name>.run-*, with the run's own .tmp files).
-// Called only while holding the job's lock, when no live process can be writing them.
-void removeLeftovers(const fs::path& dir, const Job& j) {
-  const std::string prefix = j.name + ".run-";
+// Files of earlier, killed attempts (<name>.run-*, with the runs' own .tmp files), by job name,
+// from one listing of the folder (a listing per case would cost O(cases^2) on a big study).
+std::map<std::string, std::vector<fs::path>> leftovers(const fs::path& dir) {
+  std::map<std::string, std::vector<fs::path>> out;
   std::error_code ec;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string f = it->path().filename().string();
-    if (f.compare(0, prefix.size(), prefix) == 0) {
-      std::error_code ignored;
-      fs::remove(it->path(), ignored);
-    }
+    if (auto at = f.find(".run-"); at != std::string::npos) out[f.substr(0, at)].push_back(*it);
   }
+  return out;
+}
+
+// Removes them for one job; called only while holding the job's lock, when no live process can
+// be writing them.
+void removeLeftovers(std::map<std::string, std::vector<fs::path>>& stray, const Job& j) {
+  auto it = stray.find(j.name);
+  if (it == stray.end()) return;
+  for (const fs::path& p : it->second) {
+    std::error_code ignored;
+    fs::remove(p, ignored);
+  }
+  stray.erase(it);
 }
 
 // Starts `workbench run` for one job with stdout/stderr to its log; returns the pid. The run is
@@ -327,6 +337,7 @@ int runStudy(const StudyOptions& o) {
             << all.size() - todo.size() << " already done, running " << todo.size() << " with "
             << jobs << " jobs\n";
 
+  auto stray = leftovers(dir);
   std::map<pid_t, std::size_t> running;
   std::size_t next = 0, done = 0, skipped = 0;
   auto report = [&](const Job& j, const std::string& what) {
@@ -356,7 +367,7 @@ int runStudy(const StudyOptions& o) {
         report(j, "done by another runner");
         continue;
       }
-      removeLeftovers(dir, j);
+      removeLeftovers(stray, j);
       std::error_code ignored;
       fs::remove(j.h5, ignored);  // a result of other inputs: never to be mistaken for this one
       j.work = (dir / (j.name + ".run-" + uniqueSuffix() + ".h5")).string();
