@@ -384,6 +384,7 @@ int runStudy(const StudyOptions& o) {
     if (running.empty()) continue;
     int status = 0;
     pid_t pid = wait(&status);
+    if (pid < 0 && errno == EINTR) continue;
     if (pid < 0) break;
     auto it = running.find(pid);
     if (it == running.end()) continue;
@@ -393,7 +394,12 @@ int runStudy(const StudyOptions& o) {
     int code = WIFEXITED(status) ? WEXITSTATUS(status)
                                  : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
     // Only a complete result of unchanged inputs gets the final name, stamped with their hash.
-    if (isRegularFile(j.work)) {
+    // A run that exits with another code than ok (0) or failed (2) has no result: its log says
+    // why, and whatever file it left is removed.
+    if (isRegularFile(j.work) && code != 0 && code != 2) {
+      std::error_code ignored;
+      fs::remove(j.work, ignored);
+    } else if (isRegularFile(j.work)) {
       const auto rec = io::readStats(j.work);
       const std::string after = hashOf(*j.c);
       if (!rec || !rec->text.count("status")) {
