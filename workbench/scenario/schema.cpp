@@ -298,8 +298,9 @@ std::vector<BlockSpec> build() {
   s.push_back(
       {"study",
        "A study (issue 7): a matrix of variations over a base scenario. `workbench study FILE` "
-       "runs every case (in parallel, each its own HDF5), skips cases already finished, and "
-       "writes a summary (CSV and HDF5). Keys of matrix and cases are --set paths.",
+       "runs every case (in parallel, each its own HDF5), skips cases already finished with "
+       "the same inputs, and writes a summary (CSV and HDF5). Keys of matrix and cases are --set "
+       "paths.",
        {typed("base", ValueType::String, "-", "base scenario file, relative to the study file",
               true),
         typed("matrix", ValueType::Table, "-",
@@ -308,7 +309,11 @@ std::vector<BlockSpec> build() {
               "{ { [\"solver.method\"] = \"bdf\", [\"solver.rtol\"] = 1e-6 }, ... }: explicit "
               "variants, combined with every matrix combination"),
         integer("repeats", 1, "runs per case (CPU time is reported as the median)", 1, 100),
-        integer("jobs", 0, "cases run at once, 0 = number of cores", 0, 64)}});
+        integer("jobs", 0, "cases run at once, 0 = number of cores", 0, 64),
+        integer("max_cases", 10000,
+                "largest number of cases (matrix combinations x cases) the study may expand to; "
+                "a bigger study is refused before anything runs",
+                1, 100000000)}});
 
   std::vector<std::string> methodNames;
   std::string methodHelp = "integrator:";
