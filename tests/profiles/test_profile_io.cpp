@@ -1,6 +1,7 @@
 // Profile file readers (SIMPACK .prw/.prr, plain text), the smoothing spline, and the bad-file
 // diagnostics ("file:line: message").
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <cstdio>
@@ -247,5 +248,101 @@ TEST(ProfileFiles, BadSimpackFiles) {
   EXPECT_NO_THROW(
       readProfileFile(dataFile("bad_type.prr"), ProfileKind::Rail, LengthUnit::Metre, {}));
 }
+
+// ---- Hostile files: bounded reading ---------------------------------------------------------
+
+namespace bounded {
+
+std::string textErrorAt(const std::string& path) {
+  return errorOf([&] { readTextProfile(path, ProfileKind::Rail, LengthUnit::Millimetre); });
+}
+
+std::string tempPath(const std::string& name) {
+  return ::testing::TempDir() + "rb_profile_io_" + name;
+}
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const std::string path = tempPath(name);
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  EXPECT_NE(f, nullptr);
+  std::fwrite(text.data(), 1, text.size(), f);
+  std::fclose(f);
+  return path;
+}
+
+// `n` points of a plausible rail head in mm, one per line from line 1.
+std::string railPoints(std::size_t n) {
+  std::string text;
+  char line[64];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double y = -30.0 + 60.0 * static_cast<double>(i) / static_cast<double>(n);
+    std::snprintf(line, sizeof line, "%.9f %.6f\n", y, -y * y / 600.0);
+    text += line;
+  }
+  return text;
+}
+
+TEST(ProfileFiles, RefusesMoreThanTheMaximumNumberOfPoints) {
+  const std::string path = writeTemp("too_many.txt", railPoints(kMaxProfilePoints + 5));
+  const std::string line = std::to_string(kMaxProfilePoints + 1);
+  EXPECT_EQ(textErrorAt(path), path + ":" + line + ": more than " +
+                                   std::to_string(kMaxProfilePoints) +
+                                   " profile points (a measured profile has a few thousand): thin "
+                                   "the data");
+  // The same bound in a SIMPACK point block (line 1 is point.begin).
+  const std::string simpack = "point.begin\n" + railPoints(kMaxProfilePoints + 1) + "point.end\n";
+  EXPECT_EQ(errorOf([&] { parseSimpackPoints(simpack, "many.prr"); }),
+            "many.prr:" + std::to_string(kMaxProfilePoints + 2) + ": more than " +
+                std::to_string(kMaxProfilePoints) +
+                " profile points (a measured profile has a few thousand): thin the data");
+  // Exactly the maximum is accepted.
+  EXPECT_EQ(parseTextPoints(railPoints(kMaxProfilePoints), "max.txt", ProfileKind::Rail,
+                            LengthUnit::Millimetre)
+                .y.size(),
+            kMaxProfilePoints);
+}
+
+TEST(ProfileFiles, RefusesFifosAndFolders) {
+  const std::string fifo = tempPath("fifo.txt");
+  std::remove(fifo.c_str());
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // Opening a FIFO for reading would block until a writer comes: it must be refused before.
+  EXPECT_EQ(textErrorAt(fifo), fifo + ": cannot open profile file: not a regular file (a FIFO)");
+  std::remove(fifo.c_str());
+  const std::string dir = ::testing::TempDir();
+  EXPECT_EQ(errorOf([&] { readSimpackProfile(dir); }),
+            dir + ": cannot open profile file: not a regular file (a folder)");
+}
+
+TEST(ProfileFiles, ReportsAtMostTwentyProblemsPerFile) {
+  std::string text;
+  for (int i = 0; i < 1000; ++i) text += "1 x\n";
+  try {
+    parseTextPoints("0 0\n" + text, "garbage.txt", ProfileKind::Rail, LengthUnit::Millimetre);
+    ADD_FAILURE() << "no error";
+  } catch (const rb::InputError& e) {
+    ASSERT_EQ(e.diagnostics().size(), 21u);
+    EXPECT_EQ(e.diagnostics()[0].str(), "garbage.txt:2: non-numeric profile data \"x\"");
+    EXPECT_EQ(e.diagnostics()[20].str(),
+              "garbage.txt:21: too many problems; the rest of the file was not checked");
+  }
+}
+
+TEST(ProfileFiles, ParsingFromMemoryEqualsReadingTheFile) {
+  const std::string text = railPoints(50);
+  const std::string path = writeTemp("same.txt", text);
+  const ProfilePoints a = readTextPoints(path, ProfileKind::Rail, LengthUnit::Millimetre);
+  const ProfilePoints b = parseTextPoints(text, path, ProfileKind::Rail, LengthUnit::Millimetre);
+  EXPECT_EQ(a.y, b.y);
+  EXPECT_EQ(a.z, b.z);
+  EXPECT_EQ(a.line, b.line);
+  // A last line without '\n' and CRLF line ends are read too.
+  const ProfilePoints c =
+      parseTextPoints("1 0\r\n2 0.5\r\n3 1", "crlf.txt", ProfileKind::Rail, LengthUnit::Millimetre);
+  EXPECT_EQ(c.y.size(), 3u);
+  EXPECT_EQ(c.line.back(), 3);
+}
+
+}  // namespace bounded
 
 }  // namespace

@@ -5,11 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <string_view>
 #include <utility>
 
 #include "workbench/core/error.hpp"
+#include "workbench/core/files.hpp"
 #include "workbench/profiles/sampling.hpp"
 #include "workbench/profiles/smoothing_spline.hpp"
 
@@ -17,6 +18,7 @@ namespace rb::profiles {
 namespace {
 
 constexpr std::size_t kMinPoints = 10;
+constexpr std::size_t kMaxDiagnostics = 20;
 constexpr double kMinWheelRadius = 0.2;  // [m]
 constexpr double kMaxWheelRadius = 0.7;  // [m]
 
@@ -68,17 +70,56 @@ bool parseNumber(std::string_view t, double& v) {
   return r.ec == std::errc() && r.ptr == t.data() + t.size() && std::isfinite(v);
 }
 
-std::vector<std::string> readLines(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(SourceLoc{path, 0}, "cannot open profile file");
-  std::vector<std::string> lines;
-  std::string line;
-  while (std::getline(in, line)) lines.push_back(line);
+// The lines of `text` (without their '\n'), as views into it.
+std::vector<std::string_view> splitLines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  std::size_t b = 0;
+  while (b < text.size()) {
+    const std::size_t e = text.find('\n', b);
+    if (e == std::string_view::npos) {
+      lines.push_back(text.substr(b));
+      break;
+    }
+    lines.push_back(text.substr(b, e - b));
+    b = e + 1;
+  }
   return lines;
 }
 
+std::string readProfileText(const std::string& path) {
+  std::string why;
+  std::optional<std::string> text = readRegularFile(path, why);
+  if (!text) {
+    throw InputError(SourceLoc{path, 0},
+                     "cannot open profile file" + (why == "no such file" ? "" : ": " + why));
+  }
+  return std::move(*text);
+}
+
+// Diagnostics of one file, bounded: a file of garbage reports its first problems, not millions.
+class FileDiagnostics {
+ public:
+  bool full() const { return diags_.size() >= kMaxDiagnostics; }
+  void add(const SourceLoc& loc, std::string message) {
+    if (full()) return;
+    diags_.add(loc, std::move(message));
+    if (full()) {
+      diags_.add(loc, "too many problems; the rest of the file was not checked");
+    }
+  }
+  void throwIfAny() const { diags_.throwIfAny(); }
+
+ private:
+  Diagnostics diags_;
+};
+
+std::string tooManyPoints() {
+  return "more than " + std::to_string(kMaxProfilePoints) +
+         " profile points (a measured profile has a few thousand): thin the data";
+}
+
 // Parses "y z [weight]"; on failure adds a diagnostic and returns false.
-bool parsePoint(std::string_view text, const SourceLoc& loc, Diagnostics& diags, double& y,
+bool parsePoint(std::string_view text, const SourceLoc& loc, FileDiagnostics& diags, double& y,
                 double& z, double& w) {
   const auto tk = tokens(text);
   double v[3] = {0.0, 0.0, 1.0};
@@ -110,10 +151,14 @@ std::string stem(const std::string& path) {
 }  // namespace
 
 ProfilePoints readSimpackPoints(const std::string& path) {
-  const std::vector<std::string> lines = readLines(path);
+  return parseSimpackPoints(readProfileText(path), path);
+}
+
+ProfilePoints parseSimpackPoints(std::string_view fileText, const std::string& path) {
+  const std::vector<std::string_view> lines = splitLines(fileText);
   ProfilePoints pts;
   pts.file = path;
-  Diagnostics diags;
+  FileDiagnostics diags;
   enum class Block { None, Header, Spline } block = Block::None;
   int typeValue = -1, typeLine = 0, pointBegin = 0, pointEnd = 0;
   double unitFactor = 1.0, mirrorY = 0.0, mirrorZ = 0.0;
@@ -122,7 +167,7 @@ ProfilePoints readSimpackPoints(const std::string& path) {
   std::vector<double> ry, rz, rw;
   std::vector<int> rl;
   bool inPoints = false, unterminated = false;
-  for (std::size_t k = 0; k < lines.size(); ++k) {
+  for (std::size_t k = 0; k < lines.size() && !diags.full(); ++k) {
     const int ln = static_cast<int>(k) + 1;
     const SourceLoc loc{path, ln};
     const std::string_view text = trim(stripBang(lines[k]));
@@ -141,6 +186,10 @@ ProfilePoints readSimpackPoints(const std::string& path) {
                 : text == "spline.begin" ? Block::Spline
                                          : Block::None;
         continue;
+      }
+      if (ry.size() == kMaxProfilePoints) {
+        diags.add(loc, tooManyPoints());
+        diags.throwIfAny();
       }
       double y = 0, z = 0, w = 1;
       if (parsePoint(text, loc, diags, y, z, w)) {
@@ -173,7 +222,9 @@ ProfilePoints readSimpackPoints(const std::string& path) {
       double v = 0.0;
       if (block == Block::Header && key == "type") {
         number(v);
-        typeValue = static_cast<int>(v);
+        // Only the exact values 0 and 1 name a type; anything else (0.5, 1e300, nan) must stay
+        // invalid rather than be truncated, and a cast of a huge value to int is undefined.
+        typeValue = v == 0.0 ? 0 : v == 1.0 ? 1 : -2;
         typeLine = ln;
       } else if (block == Block::Spline) {
         if (key == "units.len.f") {
@@ -240,16 +291,21 @@ ProfilePoints readSimpackPoints(const std::string& path) {
 }
 
 ProfilePoints readTextPoints(const std::string& path, ProfileKind kind, LengthUnit units) {
-  const std::vector<std::string> lines = readLines(path);
+  return parseTextPoints(readProfileText(path), path, kind, units);
+}
+
+ProfilePoints parseTextPoints(std::string_view fileText, const std::string& path, ProfileKind kind,
+                              LengthUnit units) {
+  const std::vector<std::string_view> lines = splitLines(fileText);
   ProfilePoints pts;
   pts.file = path;
   pts.kind = kind;
   pts.unitsHint =
       units == LengthUnit::Metre ? "the units argument says m" : "the units argument says mm";
   const double f = units == LengthUnit::Metre ? 1.0 : 1e-3;
-  Diagnostics diags;
+  FileDiagnostics diags;
   bool dataStarted = false;
-  for (std::size_t k = 0; k < lines.size(); ++k) {
+  for (std::size_t k = 0; k < lines.size() && !diags.full(); ++k) {
     const int ln = static_cast<int>(k) + 1;
     std::string_view text = trim(lines[k]);
     if (text.empty() || text.front() == '#' || text.front() == '!' || text.front() == '%' ||
@@ -262,6 +318,10 @@ ProfilePoints readTextPoints(const std::string& path, ProfileKind kind, LengthUn
     double first = 0.0;
     if (!dataStarted && !parseNumber(tk.front(), first)) continue;  // header line
     dataStarted = true;
+    if (pts.y.size() == kMaxProfilePoints) {
+      diags.add(SourceLoc{path, ln}, tooManyPoints());
+      diags.throwIfAny();
+    }
     double y = 0, z = 0, w = 1;
     if (parsePoint(text, SourceLoc{path, ln}, diags, y, z, w)) {
       pts.y.push_back(f * y);

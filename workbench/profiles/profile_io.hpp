@@ -29,7 +29,13 @@
 // the offending one: non-numeric data, fewer than 10 points, y not strictly monotone, implausible
 // units (a coordinate > 1 m, or all coordinates < 1 mm), a wheel radius outside 0.2 .. 0.7 m, a
 // missing or unterminated point block, a wrong profile type, unsupported processing keys.
+// A file that is not a regular file (a FIFO, a device, a folder) or larger than
+// rb::kMaxInputFileBytes is refused (rb::readRegularFile), and so are more than kMaxProfilePoints
+// points: measured profiles have a few thousand, and the bound keeps a runaway file from taking
+// gigabytes. At most 20 problems are reported per file.
+#include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "workbench/profiles/profile.hpp"
@@ -37,6 +43,9 @@
 namespace rb::profiles {
 
 enum class LengthUnit { Millimetre, Metre };
+
+// Most points a profile file may hold (see "Errors" above).
+inline constexpr std::size_t kMaxProfilePoints = 200'000;
 
 struct ProfileReadOptions {
   double r0 = 0.0;               // wheel: tape-circle radius [m] (h = r0 + z); 0 for text files
@@ -67,6 +76,11 @@ struct ProfilePoints {
 
 ProfilePoints readSimpackPoints(const std::string& path);
 ProfilePoints readTextPoints(const std::string& path, ProfileKind kind, LengthUnit units);
+// The same from the file's text already in memory; `path` names it in messages (and, for SIMPACK,
+// its extension .prw / .prr gives the type when the header has none).
+ProfilePoints parseSimpackPoints(std::string_view text, const std::string& path);
+ProfilePoints parseTextPoints(std::string_view text, const std::string& path, ProfileKind kind,
+                              LengthUnit units);
 
 // Checks, trims, smooths and resamples (see above).
 Profile profileFromPoints(const ProfilePoints& points, const ProfileReadOptions& options,
