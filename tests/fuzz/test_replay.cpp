@@ -51,6 +51,7 @@ TEST_P(Replay, KeptInputsNeitherCrashNorThrow) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Fuzz, Replay, testing::Values("scenario", "profile", "csv", "tables"));
+INSTANTIATE_TEST_SUITE_P(Fuzz, Replay, testing::Values("scenario", "profile", "csv", "tables"),
+                         [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
 }  // namespace

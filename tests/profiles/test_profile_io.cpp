@@ -343,6 +343,31 @@ TEST(ProfileFiles, ParsingFromMemoryEqualsReadingTheFile) {
   EXPECT_EQ(c.line.back(), 3);
 }
 
+TEST(ProfileFiles, RefusesPointSetsTheSplineCannotTake) {
+  // Found by fuzzing: each of these stopped at an internal check (exit 3) before.
+  auto rail = [](const std::string& text) {
+    return errorOf([&] {
+      profileFromPoints(parseTextPoints(text, "p.txt", ProfileKind::Rail, LengthUnit::Millimetre),
+                        {}, "p");
+    });
+  };
+  std::string tiny, close, weights;
+  for (int i = 0; i < 10; ++i) {
+    tiny += std::to_string(0.001 * i) + " 2\n";  // 9 um wide
+    close += (i < 9 ? std::to_string(i) + "e-300" : std::string("30")) + " 2\n";
+    weights += std::to_string(3 * i) + " 0 " + (i == 3 ? "1e-300" : "1") + "\n";
+  }
+  EXPECT_EQ(rail(tiny),
+            "p.txt:10: the kept points span only 0.009 mm along y; the profile grid needs at least "
+            "4 steps of 0.02 mm inside them");
+  EXPECT_EQ(rail(close),
+            "p.txt:2: y = 1e-303 m is closer than 1 nm to the previous point (y = 0 m): merge or "
+            "drop duplicate points");
+  EXPECT_EQ(rail(weights),
+            "p.txt:4: point weight 1e-300 is outside 1e-06 .. 1e+06 (weights are relative: scale "
+            "them)");
+}
+
 }  // namespace bounded
 
 }  // namespace

@@ -19,6 +19,21 @@ namespace {
 
 constexpr std::size_t kMinPoints = 10;
 constexpr std::size_t kMaxDiagnostics = 20;
+// [m] Kept points closer than this are duplicates for any profile measurement (the benchmark
+// files have 1 nm steps only on the vertical flanks, which the slope filter cuts), and at subnormal
+// spacings the spline system becomes singular.
+constexpr double kMinPointSpacing = 1e-9;
+// Point weights are relative; with ratios beyond this range the smoothing-spline system (terms
+// lambda / w) loses its positive definiteness in floating point.
+constexpr double kMinWeight = 1e-6;
+constexpr double kMaxWeight = 1e6;
+
+// True when alignedGrid(a, b, ds) has its minimum of 4 nodes inside [a, b] (the same test).
+bool gridFits(double a, double b, double ds) {
+  const double tol = 1e-9;
+  return std::floor(b / ds + tol) - std::ceil(a / ds - tol) >= 3.0;
+}
+
 constexpr double kMinWheelRadius = 0.2;  // [m]
 constexpr double kMaxWheelRadius = 0.7;  // [m]
 
@@ -136,6 +151,11 @@ bool parsePoint(std::string_view text, const SourceLoc& loc, FileDiagnostics& di
   }
   if (!(v[2] > 0.0)) {
     diags.add(loc, "point weight must be positive, got " + num(v[2]));
+    return false;
+  }
+  if (v[2] < kMinWeight || v[2] > kMaxWeight) {
+    diags.add(loc, "point weight " + num(v[2]) + " is outside " + num(kMinWeight) + " .. " +
+                       num(kMaxWeight) + " (weights are relative: scale them)");
     return false;
   }
   y = v[0];
@@ -428,9 +448,20 @@ Profile profileFromPoints(const ProfilePoints& p, const ProfileReadOptions& opt,
                        "after the rotation by " + num(opt.rotate) +
                            " rad the points are no longer ordered along y (lower maxSlope)");
     }
+    if (!(s[k] - s[k - 1] >= kMinPointSpacing)) {
+      throw InputError(SourceLoc{p.file, lines[k]},
+                       "y = " + num(s[k]) + " m is closer than 1 nm to the previous point (y = " +
+                           num(s[k - 1]) + " m): merge or drop duplicate points");
+    }
+  }
+  const double s0 = s.front(), s1 = s.back();
+  if (!gridFits(s0, s1, opt.ds)) {
+    throw InputError(SourceLoc{p.file, p.endLine},
+                     "the kept points span only " + num(1e3 * (s1 - s0)) +
+                         " mm along y; the profile grid needs at least 4 steps of " +
+                         num(1e3 * opt.ds) + " mm inside them");
   }
   const double lambda = SmoothingSpline::lambdaForLength(s, w, opt.smoothingLength);
-  const double s0 = s.front(), s1 = s.back();
   const SmoothingSpline fit(std::move(s), h, std::move(w), lambda, SplineEnd::NotAKnot);
   const UniformGrid g = alignedGrid(s0, s1, opt.ds);
   std::vector<double> hv(g.n);

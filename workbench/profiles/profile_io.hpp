@@ -14,7 +14,8 @@
 //   field side). Wheel: z is the radius increase over the tape circle, UP (the benchmark file
 //   MBench_S1002_v3.prw has y = -S with mirror.y = 1, z = F), h = r0 + z. Rail: z is DOWNWARD
 //   (SIMPACK rail convention), h = -z.
-// - Plain text: two columns `y z` (a third column, if any, is a weight), separated by blanks, tabs,
+// - Plain text: two columns `y z` (a third column, if any, is a weight in 1e-6 .. 1e6), separated
+// by blanks, tabs,
 //   commas or semicolons, in mm or m (the `units` argument). Lines starting with #, !, % or // are
 //   comments; non-numeric lines before the first data line are headers; a trailing # or ! comment
 //   is allowed. Rail: z up, h = z. Wheel: h = r0 + z, or h = z (z is the radius) when r0 = 0.
@@ -26,9 +27,10 @@
 // grid of step ds aligned on multiples of ds inside the kept points.
 //
 // Errors: bad files throw rb::InputError whose diagnostic is "file:line: message", the line being
-// the offending one: non-numeric data, fewer than 10 points, y not strictly monotone, implausible
-// units (a coordinate > 1 m, or all coordinates < 1 mm), a wheel radius outside 0.2 .. 0.7 m, a
-// missing or unterminated point block, a wrong profile type, unsupported processing keys.
+// the offending one: non-numeric data, fewer than 10 points, y not strictly monotone or two points
+// closer than 1 nm, implausible units (a coordinate > 1 m, or all coordinates < 1 mm), a wheel
+// radius outside 0.2 .. 0.7 m, kept points spanning fewer than 4 grid steps ds, a missing or
+// unterminated point block, a wrong profile type, unsupported processing keys.
 // A file that is not a regular file (a FIFO, a device, a folder) or larger than
 // rb::kMaxInputFileBytes is refused (rb::readRegularFile), and so are more than kMaxProfilePoints
 // points: measured profiles have a few thousand, and the bound keeps a runaway file from taking
