@@ -223,7 +223,11 @@ void irregularityCsv(std::string_view data) {
 }
 
 void tables(std::string_view data) {
-  if (data.empty()) return;
+  (void)loadTable(data);
+}
+
+bool loadTable(std::string_view data) {
+  if (data.empty()) return false;
   const auto mode = static_cast<unsigned char>(data.front());
   data.remove_prefix(1);
   const bool kec = (mode & 1) != 0;
@@ -237,10 +241,13 @@ void tables(std::string_view data) {
   }
   const std::string path = scratch().write(kec ? "fuzz.kec" : "fuzz.lut", file);
   if (kec) {
-    if (const auto t = contact::loadKec(path, hash)) touchKec(*t);
-  } else {
-    if (const auto t = contact::loadLut(path, hash)) touchLut(*t);
+    const auto t = contact::loadKec(path, hash);
+    if (t) touchKec(*t);
+    return t.has_value();
   }
+  const auto t = contact::loadLut(path, hash);
+  if (t) touchLut(*t);
+  return t.has_value();
 }
 
 EntryPoint entryPoint(const std::string& harness) {

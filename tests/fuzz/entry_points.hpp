@@ -26,6 +26,9 @@ void irregularityCsv(std::string_view data);
 // file (magic, header, checksum as given) or only a payload that the harness wraps in a valid
 // header and checksum, so that the fuzzer reaches the payload checks; a loaded table is evaluated.
 void tables(std::string_view data);
+// The same, true when the table was loaded (the seeds must load, or the harness only fuzzes the
+// rejection of stale files).
+bool loadTable(std::string_view data);
 
 // The entry point of a harness by its name ("scenario", "profile", "csv", "tables"); nullptr if
 // there is none.

@@ -336,7 +336,8 @@ ProfilePoints parseTextPoints(std::string_view fileText, const std::string& path
     if (text.empty()) continue;
     const auto tk = tokens(text);
     double first = 0.0;
-    if (!dataStarted && !parseNumber(tk.front(), first)) continue;  // header line
+    // A header line (or one of separators only) before the data.
+    if (!dataStarted && (tk.empty() || !parseNumber(tk.front(), first))) continue;
     dataStarted = true;
     if (pts.y.size() == kMaxProfilePoints) {
       diags.add(SourceLoc{path, ln}, tooManyPoints());
