@@ -302,6 +302,18 @@ TEST(ProfileFiles, RefusesMoreThanTheMaximumNumberOfPoints) {
             kMaxProfilePoints);
 }
 
+TEST(ProfileFiles, RefusesFilesAboveTheSizeBound) {
+  const std::string path = tempPath("huge.txt");
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  ASSERT_NE(f, nullptr);
+  // A sparse file: the size is checked before anything is read.
+  ASSERT_EQ(std::fseek(f, static_cast<long>(kMaxProfileFileBytes), SEEK_SET), 0);
+  std::fputc('\n', f);
+  std::fclose(f);
+  EXPECT_EQ(textErrorAt(path), path + ": cannot open profile file: larger than 32 MiB (32 MiB)");
+  std::remove(path.c_str());
+}
+
 TEST(ProfileFiles, RefusesFifosAndFolders) {
   const std::string fifo = tempPath("fifo.txt");
   std::remove(fifo.c_str());

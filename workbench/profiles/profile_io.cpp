@@ -85,25 +85,31 @@ bool parseNumber(std::string_view t, double& v) {
   return r.ec == std::errc() && r.ptr == t.data() + t.size() && std::isfinite(v);
 }
 
-// The lines of `text` (without their '\n'), as views into it.
-std::vector<std::string_view> splitLines(std::string_view text) {
-  std::vector<std::string_view> lines;
-  std::size_t b = 0;
-  while (b < text.size()) {
-    const std::size_t e = text.find('\n', b);
-    if (e == std::string_view::npos) {
-      lines.push_back(text.substr(b));
-      break;
-    }
-    lines.push_back(text.substr(b, e - b));
-    b = e + 1;
+// The lines of a text one at a time (without their '\n'), as views into it: a file of millions of
+// lines costs no index of them.
+class Lines {
+ public:
+  explicit Lines(std::string_view text) : text_(text) {}
+  bool next(std::string_view& line) {
+    if (pos_ >= text_.size()) return false;
+    const std::size_t e = text_.find('\n', pos_);
+    const std::size_t end = e == std::string_view::npos ? text_.size() : e;
+    line = text_.substr(pos_, end - pos_);
+    pos_ = end + 1;
+    ++count_;
+    return true;
   }
-  return lines;
-}
+  int count() const { return count_; }  // lines returned so far = number of the last one
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  int count_ = 0;
+};
 
 std::string readProfileText(const std::string& path) {
   std::string why;
-  std::optional<std::string> text = readRegularFile(path, why);
+  std::optional<std::string> text = readRegularFile(path, why, kMaxProfileFileBytes);
   if (!text) {
     throw InputError(SourceLoc{path, 0},
                      "cannot open profile file" + (why == "no such file" ? "" : ": " + why));
@@ -175,7 +181,7 @@ ProfilePoints readSimpackPoints(const std::string& path) {
 }
 
 ProfilePoints parseSimpackPoints(std::string_view fileText, const std::string& path) {
-  const std::vector<std::string_view> lines = splitLines(fileText);
+  Lines lines(fileText);
   ProfilePoints pts;
   pts.file = path;
   FileDiagnostics diags;
@@ -187,10 +193,11 @@ ProfilePoints parseSimpackPoints(std::string_view fileText, const std::string& p
   std::vector<double> ry, rz, rw;
   std::vector<int> rl;
   bool inPoints = false, unterminated = false;
-  for (std::size_t k = 0; k < lines.size() && !diags.full(); ++k) {
-    const int ln = static_cast<int>(k) + 1;
+  std::string_view raw;
+  while (!diags.full() && lines.next(raw)) {
+    const int ln = lines.count();
     const SourceLoc loc{path, ln};
-    const std::string_view text = trim(stripBang(lines[k]));
+    const std::string_view text = trim(stripBang(raw));
     if (text.empty()) continue;
     if (inPoints) {
       if (text == "point.end") {
@@ -270,7 +277,7 @@ ProfilePoints parseSimpackPoints(std::string_view fileText, const std::string& p
       }
     }
   }
-  const int lastLine = static_cast<int>(lines.size());
+  const int lastLine = lines.count();
   if (inPoints || unterminated) {
     diags.add(SourceLoc{path, pointBegin}, "point.begin without point.end");
   } else if (pointBegin == 0) {
@@ -316,7 +323,7 @@ ProfilePoints readTextPoints(const std::string& path, ProfileKind kind, LengthUn
 
 ProfilePoints parseTextPoints(std::string_view fileText, const std::string& path, ProfileKind kind,
                               LengthUnit units) {
-  const std::vector<std::string_view> lines = splitLines(fileText);
+  Lines lines(fileText);
   ProfilePoints pts;
   pts.file = path;
   pts.kind = kind;
@@ -325,9 +332,10 @@ ProfilePoints parseTextPoints(std::string_view fileText, const std::string& path
   const double f = units == LengthUnit::Metre ? 1.0 : 1e-3;
   FileDiagnostics diags;
   bool dataStarted = false;
-  for (std::size_t k = 0; k < lines.size() && !diags.full(); ++k) {
-    const int ln = static_cast<int>(k) + 1;
-    std::string_view text = trim(lines[k]);
+  std::string_view raw;
+  while (!diags.full() && lines.next(raw)) {
+    const int ln = lines.count();
+    std::string_view text = trim(raw);
     if (text.empty() || text.front() == '#' || text.front() == '!' || text.front() == '%' ||
         text.substr(0, 2) == "//") {
       continue;
@@ -353,7 +361,7 @@ ProfilePoints parseTextPoints(std::string_view fileText, const std::string& path
     }
   }
   diags.throwIfAny();
-  if (pts.endLine == 0) pts.endLine = static_cast<int>(lines.size());
+  if (pts.endLine == 0) pts.endLine = lines.count();
   return pts;
 }
 

@@ -32,9 +32,9 @@
 // radius outside 0.2 .. 0.7 m, kept points spanning fewer than 4 grid steps ds, a missing or
 // unterminated point block, a wrong profile type, unsupported processing keys.
 // A file that is not a regular file (a FIFO, a device, a folder) or larger than
-// rb::kMaxInputFileBytes is refused (rb::readRegularFile), and so are more than kMaxProfilePoints
-// points: measured profiles have a few thousand, and the bound keeps a runaway file from taking
-// gigabytes. At most 20 problems are reported per file.
+// kMaxProfileFileBytes (32 MiB) is refused (rb::readRegularFile), and so are more than
+// kMaxProfilePoints (200 000) points: measured profiles have a few thousand, and the bounds keep a
+// runaway file from taking gigabytes. At most 20 problems are reported per file.
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -46,8 +46,10 @@ namespace rb::profiles {
 
 enum class LengthUnit { Millimetre, Metre };
 
-// Most points a profile file may hold (see "Errors" above).
+// Most points, and most bytes, a profile file may hold (see "Errors" above): 200 000 points take
+// about 8 MiB of text.
 inline constexpr std::size_t kMaxProfilePoints = 200'000;
+inline constexpr std::size_t kMaxProfileFileBytes = std::size_t{32} << 20;
 
 struct ProfileReadOptions {
   double r0 = 0.0;               // wheel: tape-circle radius [m] (h = r0 + z); 0 for text files
