@@ -18,7 +18,10 @@
 #include "workbench/contact/lut.hpp"
 #include "workbench/contact/table_io.hpp"
 #include "workbench/core/error.hpp"
+#include "workbench/profiles/positioning.hpp"
 #include "workbench/profiles/profile_io.hpp"
+#include "workbench/profiles/rail60e1.hpp"
+#include "workbench/profiles/s1002.hpp"
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/track/irregularities.hpp"
 
@@ -99,9 +102,9 @@ std::optional<track::IrregularityTable> parseCsv(std::string_view data, Diagnost
   return track::parseIrregularityCsv(in, "fuzz.csv", diags);
 }
 
-// The table file format of table_io.hpp: magic, byte-order mark, version, hash, payload size,
-// payload, FNV-1a 64 checksum (over 8-byte words, then the tail bytes).
-constexpr std::uint64_t kFuzzHash = 0x5eed5eed5eed5eedULL;
+// The table file format of table_io.hpp: magic, byte-order mark, format version, algorithm
+// version, key size and key, payload size, payload, FNV-1a 64 checksum (over 8-byte words, then
+// the tail bytes).
 
 std::uint64_t fnv1aWords(const char* p, std::size_t n) {
   std::uint64_t h = 14695981039346656037ULL;
@@ -129,7 +132,11 @@ std::string wrapPayload(bool kec, std::string_view payload) {
   std::string file(magic.data(), magic.size());
   appendU64(file, 0x0102030405060708ULL);
   appendU64(file, contact::kTableFormatVersion);
-  appendU64(file, kFuzzHash);
+  appendU64(file, contact::kTableAlgorithmVersion);
+  const std::string key = contact::tableInputKey(
+      seedTableConfig(), kec ? contact::TableKind::Kec : contact::TableKind::Lut);
+  appendU64(file, key.size());
+  file.append(key);
   appendU64(file, payload.size());
   file.append(payload);
   appendU64(file, fnv1aWords(file.data(), file.size()));
@@ -231,23 +238,42 @@ bool loadTable(std::string_view data) {
   const auto mode = static_cast<unsigned char>(data.front());
   data.remove_prefix(1);
   const bool kec = (mode & 1) != 0;
-  std::string file;
-  std::uint64_t hash = kFuzzHash;
-  if ((mode & 2) != 0) {
-    file = wrapPayload(kec, data);
-  } else {
-    file = std::string(data);
-    if (file.size() >= 40) std::memcpy(&hash, file.data() + 32, 8);  // whatever the file claims
-  }
+  const std::string file = (mode & 2) != 0 ? wrapPayload(kec, data) : std::string(data);
   const std::string path = scratch().write(kec ? "fuzz.kec" : "fuzz.lut", file);
   if (kec) {
-    const auto t = contact::loadKec(path, hash);
+    const auto t = contact::loadKec(path, seedTableConfig());
     if (t) touchKec(*t);
     return t.has_value();
   }
-  const auto t = contact::loadLut(path, hash);
+  const auto t = contact::loadLut(path, seedTableConfig());
   if (t) touchLut(*t);
   return t.has_value();
+}
+
+const contact::ContactGeometryConfig& seedTableConfig() {
+  static const contact::ContactGeometryConfig config = [] {
+    const double r0 = 0.46;
+    const auto pos = profiles::positionS1002On60E1(1.360, 1.435, r0, 1.0 / 40.0);
+    contact::ContactGeometryConfig c;
+    c.left_wheel =
+        std::make_shared<const profiles::Profile>(profiles::s1002Wheel(r0, profiles::Side::Left));
+    c.right_wheel =
+        std::make_shared<const profiles::Profile>(profiles::s1002Wheel(r0, profiles::Side::Right));
+    c.left_rail =
+        std::make_shared<const profiles::Profile>(profiles::rail60E1(profiles::Side::Left));
+    c.right_rail =
+        std::make_shared<const profiles::Profile>(profiles::rail60E1(profiles::Side::Right));
+    c.wheel_lw = pos.Lw;
+    c.rail_lr = pos.Lr;
+    c.beta = pos.beta;
+    c.r0 = r0;
+    // Coarse grids keep the seeds a few kilobytes.
+    c.lut_y = {-0.008, 0.008, 2e-3};
+    c.lut_gauge = {-1e-3, 1e-3, 1e-3};
+    c.kec_s = {-0.012, 0.012, 1e-3};
+    return c;
+  }();
+  return config;
 }
 
 EntryPoint entryPoint(const std::string& harness) {

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "workbench/contact/config.hpp"
+
 namespace rb::fuzz {
 
 // A Lua scenario: the input is written to a private temporary folder as a .lua file and loaded
@@ -29,6 +31,9 @@ void tables(std::string_view data);
 // The same, true when the table was loaded (the seeds must load, or the harness only fuzzes the
 // rejection of stale files).
 bool loadTable(std::string_view data);
+// The small S1002 / 60E1 configuration the table seeds were built for (coarse grids): the cache
+// key the harness loads every file against, and what fuzz_make_table_seeds builds.
+const contact::ContactGeometryConfig& seedTableConfig();
 
 // The entry point of a harness by its name ("scenario", "profile", "csv", "tables"); nullptr if
 // there is none.

@@ -1,13 +1,16 @@
 // Writes the seed inputs of the `tables` harness: a small S1002 / 60E1 LUT and KEC table saved in
 // the cache format, each as a whole file (mode byte 0 / 1) and as a bare payload (mode byte 2 / 3;
 // the harness wraps it in a valid header and checksum). Usage: fuzz_make_table_seeds OUT_DIR
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <memory>
 #include <string>
 
+#include "entry_points.hpp"
 #include "workbench/contact/config.hpp"
 #include "workbench/contact/kec.hpp"
 #include "workbench/contact/lut.hpp"
@@ -19,8 +22,6 @@
 namespace {
 
 namespace fs = std::filesystem;
-using rb::profiles::Profile;
-using rb::profiles::Side;
 
 std::string readBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -29,7 +30,11 @@ std::string readBytes(const std::string& path) {
 
 void writeSeeds(const fs::path& out, const std::string& name, char kecBit,
                 const std::string& file) {
-  constexpr std::size_t header = 16 + 4 * 8, checksum = 8;
+  // Header: magic (16), byte-order mark, format and algorithm versions (3 x 8), key size (8) and
+  // key, payload size (8); then the payload and an 8-byte checksum.
+  std::uint64_t key_size = 0;
+  std::memcpy(&key_size, file.data() + 16 + 24, 8);
+  const std::size_t header = 16 + 24 + 8 + key_size + 8, checksum = 8;
   std::ofstream whole(out / (name + "_file"), std::ios::binary | std::ios::trunc);
   whole.put(kecBit);
   whole << file;
@@ -47,25 +52,11 @@ int main(int argc, char** argv) {
   }
   const fs::path out = argv[1];
   fs::create_directories(out);
-  const double r0 = 0.46;
-  const auto pos = rb::profiles::positionS1002On60E1(1.360, 1.435, r0, 1.0 / 40.0);
-  rb::contact::ContactGeometryConfig c;
-  c.left_wheel = std::make_shared<const Profile>(rb::profiles::s1002Wheel(r0, Side::Left));
-  c.right_wheel = std::make_shared<const Profile>(rb::profiles::s1002Wheel(r0, Side::Right));
-  c.left_rail = std::make_shared<const Profile>(rb::profiles::rail60E1(Side::Left));
-  c.right_rail = std::make_shared<const Profile>(rb::profiles::rail60E1(Side::Right));
-  c.wheel_lw = pos.Lw;
-  c.rail_lr = pos.Lr;
-  c.beta = pos.beta;
-  c.r0 = r0;
-  // Coarse grids keep the seeds a few kilobytes.
-  c.lut_y = {-0.008, 0.008, 2e-3};
-  c.lut_gauge = {-1e-3, 1e-3, 1e-3};
-  c.kec_s = {-0.012, 0.012, 1e-3};
+  const rb::contact::ContactGeometryConfig& c = rb::fuzz::seedTableConfig();
   const fs::path tmp = out / "tmp.table";
-  rb::contact::saveTable(rb::contact::buildLut(c), tmp.string());
+  rb::contact::saveTable(rb::contact::buildLut(c), c, tmp.string());
   writeSeeds(out, "lut", 0, readBytes(tmp.string()));
-  rb::contact::saveTable(rb::contact::buildKec(c), tmp.string());
+  rb::contact::saveTable(rb::contact::buildKec(c), c, tmp.string());
   writeSeeds(out, "kec", 1, readBytes(tmp.string()));
   fs::remove(tmp);
   return 0;
