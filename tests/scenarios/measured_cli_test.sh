@@ -24,6 +24,7 @@ expect_input_error "mm file read as m: check" \
   "track_in_mm.csv:3: irregularity csv: vertical = 2.5 m is larger than a track irregularity can be (0.1 m) here and on" \
   "$WB" check "$D/mm_read_as_m.lua"
 grep -qF 'Declare it: measured { unit = "mm" }' "$TMP/e" && ok "mm hint" || bad "mm hint: $(cat "$TMP/e")"
+grep -q "^$D/track_in_mm.csv:3: " "$TMP/e" && ok "csv named as below the working directory" || bad "csv name: $(cat "$TMP/e")"
 expect_input_error "mm file read as m: run writes nothing" "track_in_mm.csv:4: irregularity csv: alignment" \
   "$WB" run "$D/mm_read_as_m.lua" --out "$TMP/mm.h5"
 [ ! -e "$TMP/mm.h5" ] && ok "no result for a bad csv" || bad "result written for a bad csv"

@@ -451,10 +451,10 @@ std::optional<MeasuredTable> readMeasuredCsv(const std::string& path, const Sour
   std::string why;
   const std::optional<std::string> text = readRegularFile(path, why);
   if (!text) {
-    diags.add(loc, "track.irregularities: csv file '" + path + "': " + why);
+    diags.add(loc, "track.irregularities: csv file '" + detail::displayPath(path) + "': " + why);
     return std::nullopt;
   }
-  return parseMeasuredCsv(*text, path, options, diags);
+  return parseMeasuredCsv(*text, detail::displayPath(path), options, diags);
 }
 
 std::optional<IrregularityTable> parseIrregularityCsv(std::istream& in,

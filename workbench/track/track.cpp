@@ -107,7 +107,7 @@ void checkCoverage(const TrackSpec& spec, const MeasuredTable& m, double length,
   const bool early = s0 > tol;
   const bool late = s1 < length - tol;
   if (!early && !late) return;
-  const std::string file = ir.csv_path;
+  const std::string file = detail::displayPath(ir.csv_path);
   if (ir.beyond == Beyond::Error) {
     if (early) {
       d.add(ir.loc, "track.irregularities: " + file + " starts at s = " + num(s0) + " m (line " +
