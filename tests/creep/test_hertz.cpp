@@ -1,5 +1,5 @@
 // Hertz ellipse (workbench/creep/hertz.hpp): circular closed forms, the derived m, n table of
-// ../shared/reference/derived_hertz_m_n_table.txt, N = K_H delta^1.5, and the flange stiffness
+// tests/data/creep/derived_hertz_m_n_table.txt, N = K_H delta^1.5, and the flange stiffness
 // table of docs/creep.md.
 #include <gtest/gtest.h>
 
@@ -68,7 +68,7 @@ struct MnRow {
 
 std::vector<MnRow> readMnTable() {
   const std::string path =
-      std::string(RB_SOURCE_DIR) + "/../shared/reference/derived_hertz_m_n_table.txt";
+      std::string(RB_SOURCE_DIR) + "/tests/data/creep/derived_hertz_m_n_table.txt";
   std::ifstream in(path);
   std::vector<MnRow> rows;
   std::string line;

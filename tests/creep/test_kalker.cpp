@@ -1,5 +1,5 @@
 // Kalker coefficients (workbench/creep/kalker.hpp) against
-// ../shared/reference/kalker_creep_coefficients_tableE3.txt.
+// tests/data/creep/kalker_creep_coefficients_tableE3.txt.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,7 +24,7 @@ struct Row {
 
 std::vector<Row> readTable() {
   const std::string path =
-      std::string(RB_SOURCE_DIR) + "/../shared/reference/kalker_creep_coefficients_tableE3.txt";
+      std::string(RB_SOURCE_DIR) + "/tests/data/creep/kalker_creep_coefficients_tableE3.txt";
   std::ifstream in(path);
   std::vector<Row> rows;
   std::string line;

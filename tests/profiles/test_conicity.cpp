@@ -1,5 +1,5 @@
 // Equivalent conicity (EN 15302) against a cone and the EN 15302 Annex E benchmark cases E1-E9
-// (shared/reference/en15302: reference tan(gamma_e) with the Annex F tolerance band).
+// (tests/data/en15302: reference tan(gamma_e) with the Annex F tolerance band).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,7 +15,7 @@ namespace {
 
 using rb::profiles::RollingRadiusDifference;
 
-const std::string kEn15302 = std::string(RB_SOURCE_DIR) + "/../shared/reference/en15302/";
+const std::string kEn15302 = std::string(RB_SOURCE_DIR) + "/tests/data/en15302/";
 
 std::vector<std::vector<double>> readColumns(const std::string& path) {
   std::ifstream in(path);

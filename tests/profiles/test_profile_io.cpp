@@ -22,7 +22,7 @@ namespace {
 using namespace rb::profiles;
 using rb::profiles::test::dataFile;
 using rb::profiles::test::projectFile;
-using rb::profiles::test::sharedFile;
+using rb::profiles::test::referenceFile;
 
 constexpr double kR0 = 0.46;
 const double kCant = std::atan(1.0 / 40.0);
@@ -154,11 +154,11 @@ TEST(ProfileFiles, SimpackRailAgainstInclined60E1) {
 }
 
 TEST(ProfileFiles, TextWheelWithHeaderAndSteepEnd) {
-  // Shared 0.1 mm samples of S1002 (comment header; S = -70 mm has a vertical tangent, so the
+  // Reference 0.1 mm samples of S1002 (comment header; S = -70 mm has a vertical tangent, so the
   // first interval is steeper than maxSlope and is cut).
   ProfileReadOptions opt;
   opt.r0 = kR0;
-  const Profile p = readProfileFile(sharedFile("profiles/s1002_points_from_formula_0p1mm.txt"),
+  const Profile p = readProfileFile(referenceFile("profiles/s1002_points_from_formula_0p1mm.txt"),
                                     ProfileKind::Wheel, LengthUnit::Millimetre, opt);
   EXPECT_NEAR(p.sMin(), -0.0699, 1e-12);
   const Profile exact = s1002Wheel(kR0, WheelSide::Left);
@@ -169,7 +169,7 @@ TEST(ProfileFiles, TextWheelWithHeaderAndSteepEnd) {
   EXPECT_LT(maxErr, 1e-6);
   // mirrorY gives the right wheel.
   opt.mirrorY = true;
-  const Profile r = readProfileFile(sharedFile("profiles/s1002_points_from_formula_0p1mm.txt"),
+  const Profile r = readProfileFile(referenceFile("profiles/s1002_points_from_formula_0p1mm.txt"),
                                     ProfileKind::Wheel, LengthUnit::Millimetre, opt);
   EXPECT_NEAR(r.at(0.055).h, p.at(-0.055).h, 1e-9);
 }

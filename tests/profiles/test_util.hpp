@@ -1,5 +1,5 @@
 #pragma once
-// Shared helpers for the profile tests: paths of the project's and the shared reference files.
+// Shared helpers for the profile tests: paths of the project's files and of the reference data.
 #include <string>
 
 namespace rb::profiles::test {
@@ -7,8 +7,10 @@ namespace rb::profiles::test {
 inline std::string projectFile(const std::string& rel) {
   return std::string(RB_SOURCE_DIR) + "/" + rel;
 }
-inline std::string sharedFile(const std::string& rel) {
-  return std::string(RB_SOURCE_DIR) + "/../shared/reference/" + rel;
+// Reference data copied into the repository (tests/data/, with its source and licence), so the
+// tests need nothing outside the clone.
+inline std::string referenceFile(const std::string& rel) {
+  return std::string(RB_SOURCE_DIR) + "/tests/data/" + rel;
 }
 inline std::string dataFile(const std::string& name) {
   return std::string(RB_SOURCE_DIR) + "/tests/profiles/data/" + name;

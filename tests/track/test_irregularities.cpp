@@ -362,7 +362,12 @@ TEST(Irregularities, CsvMeasuredTable) {
   TrackSpec t = straightWithIrregularities(20.0, {});
   t.irregularities.source = IrregularitySource::Csv;
   t.irregularities.csv_path = path;
+  t.irregularities.beyond = Beyond::Zero;  // the file covers 10 of the 20 m
   const TrackModel m = compileTrack(t);
+  ASSERT_EQ(m.warnings().size(), 1u);
+  EXPECT_NE(m.warnings()[0].message.find("covers s = 0 .. 10 m of the 20 m track"),
+            std::string::npos)
+      << m.warnings()[0].message;
   const Irregularities& irr = *m.irregularities();
   EXPECT_EQ(irr.samples().s.size(), 21u);
   EXPECT_NEAR(irr.at(3.0).xi[0], 1e-3 * std::sin(3.0), 1e-15);

@@ -38,8 +38,8 @@ void writeTrack(ResultFile& f, const track::TrackSpec& spec, const track::TrackS
   const std::string r = "/track/irregularities";
   bool psd = irr.source == track::IrregularitySource::Psd;
   f.attr(r, "source", std::string(psd ? "psd" : "csv"));
-  f.attr(r, "step", irr.step);
   if (psd) {
+    f.attr(r, "step", irr.step);
     f.attr(r, "spectrum", irr.spectrum);
     f.attr(r, "psd_verified", std::int64_t{t.psd_verified ? 1 : 0});
     f.attr(r, "seed", static_cast<std::int64_t>(irr.seed));
@@ -49,6 +49,8 @@ void writeTrack(ResultFile& f, const track::TrackSpec& spec, const track::TrackS
     f.attr(r, "scale", irr.scale);
   } else {
     f.attr(r, "csv_path", irr.csv_path);
+    f.attr(r, "csv_unit", std::string(irr.csv_unit == track::CsvUnit::Millimetre ? "mm" : "m"));
+    f.attr(r, "beyond", std::string(irr.beyond == track::Beyond::Zero ? "zero" : "error"));
   }
   f.dataset(r + "/s", t.irr_s, "m");
   f.dataset(r + "/alignment", t.alignment, "m");

@@ -247,6 +247,8 @@ Model compile(const CompileOptions& o) {
   if (irr.source == track::IrregularitySource::Psd && !track::psdVerified(irr.spectrum))
     c.warnings.push_back(irr.loc.str() + ": warning: the parameters of spectrum '" + irr.spectrum +
                          "' are UNVERIFIED against a primary source (see docs/track.md)");
+  for (const auto& w : c.track->warnings())
+    c.warnings.push_back(w.loc.str() + ": warning: " + w.message);
   if (c.contact)
     for (const auto& w : c.contact->warnings)
       c.warnings.push_back(spec.contact.loc.str() + ": warning: " + w);

@@ -447,7 +447,8 @@ void buildIrregularities(const Node& n, const std::string& path, LuaHost& host,
     Reader r(n, block("measured"), path, d);
     out.source = track::IrregularitySource::Csv;
     std::string file = r.string("file");
-    out.step = r.number("step");
+    out.csv_unit = r.choice("unit") == "mm" ? track::CsvUnit::Millimetre : track::CsvUnit::Metre;
+    out.beyond = r.choice("beyond") == "zero" ? track::Beyond::Zero : track::Beyond::Error;
     if (!file.empty()) {
       try {
         out.csv_path = host.resolveDataFile(file, n.loc);
@@ -503,6 +504,7 @@ void buildTrack(const Node& n, LuaHost& host, track::TrackSpec& t, bool& railsGi
   t.gauge = r.number("gauge");
   t.rail_lr = r.number("rail_lr");
   t.rail_inclination = r.number("rail_inclination");
+  t.max_points = r.number("max_points");
   auto segs = r.blockList("segments");
   for (std::size_t i = 0; i < segs.size(); ++i) {
     const Node& s = *segs[i];

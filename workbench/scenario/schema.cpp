@@ -106,6 +106,11 @@ std::vector<BlockSpec> build() {
                     "Lr: lateral position of the rail profile frames (paper Table 1)", 0.5, 1.0),
                 num("rail_inclination", "rad", 0.025,
                     "beta: rail inclination (paper Table 1: 1/40)", 0.0, 0.1),
+                integer("max_points", 1e6,
+                        "work and memory bound: most knots of one spline (centreline, "
+                        "irregularities, CSV rows; ~0.4 kB each) and a PSD synthesis of at most "
+                        "max_points x 8000 cosine terms; raise it for longer or finer tracks",
+                        2, 1e12),
                 blockKey("irregularities", ValueType::Block, {"psd", "measured"},
                          "track irregularities; none if absent (costs nothing)")}});
   s.push_back({"tangent",
@@ -170,10 +175,19 @@ std::vector<BlockSpec> build() {
   file.type = ValueType::String;
   file.required = true;
   file.help =
-      "CSV with columns s, alignment, vertical, gauge, cross_level [m], relative to the scenario";
-  s.push_back({"measured",
-               "Measured irregularities from a CSV file.",
-               {file, num("step", "m", 0.1, "spline sampling step", 0, kInf, true)}});
+      "CSV file relative to the scenario: a header naming s and any of alignment, vertical, "
+      "gauge, cross_level (any order; missing channels are zero), then one row per s";
+  s.push_back(
+      {"measured",
+       "Measured irregularities from a CSV file, splined through its rows (docs/track.md). Every "
+       "problem of the file is reported at check as file:line.",
+       {file,
+        choice("unit", {"m", "mm"}, "m",
+               "unit of the irregularity columns (s is always in m); values above 0.1 m are "
+               "refused as implausible"),
+        choice("beyond", {"error", "zero"}, "error",
+               "where the file does not cover the track [0, length]: error (check fails) or "
+               "zero (perfect track there, with a warning)")}});
 
   s.push_back(
       {"profiles",

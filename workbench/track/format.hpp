@@ -1,8 +1,10 @@
 #pragma once
-// Number formatting for input-error messages (internal to the track module).
+// Number and file-name formatting for input-error messages (internal to the track module).
 #include <charconv>
 #include <cstdio>
+#include <filesystem>
 #include <string>
+#include <system_error>
 
 namespace rb::track::detail {
 
@@ -18,6 +20,15 @@ inline std::string num4(double x) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.4g", x);
   return buf;
+}
+
+// A data file's name in messages: relative to the working directory when it lies below it (as the
+// scenario file is shown), else as resolved.
+inline std::string displayPath(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::path rel = std::filesystem::proximate(path, ec);
+  if (ec || rel.empty() || rel.is_absolute() || *rel.begin() == "..") return path;
+  return rel.string();
 }
 
 }  // namespace rb::track::detail

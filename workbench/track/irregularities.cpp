@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <istream>
 #include <numbers>
+#include <sstream>
 #include <string_view>
 
+#include "workbench/core/files.hpp"
+#include "workbench/core/strings.hpp"
 #include "workbench/track/format.hpp"
 #include "workbench/track/psd.hpp"
 
@@ -198,16 +200,59 @@ bool parseDouble(std::string_view text, double& x) {
   return r.ec == std::errc() && r.ptr == text.data() + text.size() && std::isfinite(x);
 }
 
-constexpr const char* kColumns[5] = {"s", "alignment", "vertical", "gauge", "cross_level"};
 constexpr std::size_t kMaxCsvErrors = 20;
+
+std::string lower(std::string_view v) {
+  std::string out(v);
+  for (char& ch : out) {
+    if (ch >= 'A' && ch <= 'Z') ch = static_cast<char>(ch - 'A' + 'a');
+  }
+  return out;
+}
+
+double unitFactor(CsvUnit u) {
+  return u == CsvUnit::Millimetre ? 1e-3 : 1.0;
+}
+const char* unitName(CsvUnit u) {
+  return u == CsvUnit::Millimetre ? "mm" : "m";
+}
+
+// One header field: a column name and, optionally, its unit in brackets ("alignment [mm]").
+struct HeaderField {
+  std::string name;
+  std::string unit;  // empty if not given
+  bool bracket_ok = true;
+};
+
+HeaderField parseHeaderField(std::string_view f) {
+  HeaderField h;
+  const auto open = f.find('[');
+  if (open == std::string_view::npos) {
+    h.name = lower(trim(f));
+    return h;
+  }
+  const auto close = f.find(']', open);
+  h.name = lower(trim(f.substr(0, open)));
+  if (close == std::string_view::npos || !trim(f.substr(close + 1)).empty()) {
+    h.bracket_ok = false;
+    return h;
+  }
+  h.unit = lower(trim(f.substr(open + 1, close - open - 1)));
+  return h;
+}
+
+// Column roles: -1 is s, 0..3 a Channel.
+constexpr int kColumnS = -1;
 
 }  // namespace
 
-std::optional<IrregularityTable> parseIrregularityCsv(std::istream& in,
-                                                      const std::string& file_name,
-                                                      Diagnostics& diags) {
+std::optional<MeasuredTable> parseMeasuredCsv(std::string_view text, const std::string& file_name,
+                                              const CsvReadOptions& options, Diagnostics& diags) {
   const std::string prefix = "irregularity csv: ";
-  IrregularityTable t;
+  const std::vector<std::string> known = {"s", "alignment", "vertical", "gauge", "cross_level"};
+  const std::string knownList = "s, alignment, vertical, gauge, cross_level";
+  MeasuredTable out;
+  IrregularityTable& t = out.table;
   std::size_t errors = 0;
   auto report = [&](int line, const std::string& msg) {
     ++errors;
@@ -217,63 +262,216 @@ std::optional<IrregularityTable> parseIrregularityCsv(std::istream& in,
       diags.add({file_name, line}, prefix + "further errors not shown");
     }
   };
-  std::string raw;
+  const double factor = unitFactor(options.unit);
+  std::vector<int> role;             // per column
+  std::vector<std::string> colName;  // per column, for messages
+  bool haveHeader = false;
+  // Implausible magnitudes: reported once per channel (first line, largest value, count), so a
+  // file in the wrong unit gives one clear message per column rather than one per row.
+  struct Implausible {
+    int line = 0;
+    double first = 0.0;
+    std::size_t count = 0;
+  };
+  std::array<Implausible, kChannels> implausible{};
+  bool tooMany = false;
+  std::size_t pos = 0;
   int lineNo = 0;
-  bool firstContent = true;
-  while (std::getline(in, raw)) {
+  while (pos < text.size()) {
+    auto eol = text.find('\n', pos);
+    if (eol == std::string_view::npos) eol = text.size();
+    std::string_view line = text.substr(pos, eol - pos);
+    pos = eol + 1;
     ++lineNo;
-    std::string_view line = raw;
     if (const auto hash = line.find('#'); hash != std::string_view::npos)
       line = line.substr(0, hash);
     line = trim(line);
     if (line.empty()) continue;
     const auto fields = splitFields(line);
-    double vals[5] = {0, 0, 0, 0, 0};
-    bool numeric = fields.size() == 5;
-    std::size_t badField = 0;
-    for (std::size_t i = 0; numeric && i < 5; ++i) {
-      if (!parseDouble(fields[i], vals[i])) numeric = false, badField = i;
+    if (!haveHeader) {
+      haveHeader = true;
+      double x = 0.0;
+      if (!fields.empty() && parseDouble(fields.front(), x)) {
+        report(lineNo,
+               "the first line must be a header naming the columns, e.g. 's, alignment, vertical, "
+               "gauge, cross_level' (any order; a channel that is not named is zero)");
+        return std::nullopt;
+      }
+      // With white space between fields, "alignment [mm]" splits in two: rejoin the unit.
+      std::vector<std::string> names;
+      for (const auto f : fields) {
+        if (!f.empty() && f.front() == '[' && !names.empty()) {
+          names.back() += std::string(f);
+        } else {
+          names.emplace_back(f);
+        }
+      }
+      const std::size_t before = errors;
+      std::array<bool, kChannels + 1> seen{};
+      for (std::size_t i = 0; i < names.size(); ++i) {
+        const HeaderField h = parseHeaderField(names[i]);
+        const std::string col = "column " + std::to_string(i + 1);
+        if (!h.bracket_ok) {
+          report(lineNo,
+                 col + " '" + names[i] + "': write a unit as name [unit], e.g. 'alignment [mm]'");
+          continue;
+        }
+        if (h.name.empty()) {
+          report(lineNo, col + " has no name (columns: " + knownList + ")");
+          continue;
+        }
+        const auto it = std::find(known.begin(), known.end(), h.name);
+        if (it == known.end()) {
+          const std::string hint = closestMatch(h.name, known);
+          report(lineNo, "unknown column '" + h.name + "'" +
+                             (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
+                             "; columns: " + knownList);
+          continue;
+        }
+        const int r = static_cast<int>(it - known.begin()) - 1;
+        if (seen[static_cast<std::size_t>(r + 1)]) {
+          report(lineNo, "column '" + h.name + "' is named twice");
+          continue;
+        }
+        seen[static_cast<std::size_t>(r + 1)] = true;
+        if (!h.unit.empty()) {
+          if (r == kColumnS && h.unit != "m") {
+            report(lineNo, "column 's' is the arc length in metres, got unit '" + h.unit + "'");
+          } else if (r != kColumnS && h.unit != "m" && h.unit != "mm") {
+            report(lineNo, "column '" + h.name + "': unit '" + h.unit + "' is not m or mm");
+          } else if (r != kColumnS && h.unit != unitName(options.unit)) {
+            report(lineNo, "column '" + h.name + "' is in " + h.unit +
+                               " by its header, but the declared unit is " +
+                               unitName(options.unit) + " (measured { unit = \"" + h.unit +
+                               "\" } to read the file in " + h.unit + ")");
+          }
+        }
+        role.push_back(r);
+        colName.push_back(h.name);
+      }
+      if (errors == before) {
+        if (!seen[0]) report(lineNo, "the header names no column 's' (arc length [m])");
+        bool any = false;
+        for (int c = 0; c < kChannels; ++c) {
+          out.present[static_cast<std::size_t>(c)] = seen[static_cast<std::size_t>(c + 1)];
+          any = any || out.present[static_cast<std::size_t>(c)];
+        }
+        if (!any) {
+          report(lineNo,
+                 "the header names no irregularity column (alignment, vertical, gauge, "
+                 "cross_level)");
+        }
+      }
+      if (errors > before) return std::nullopt;
+      continue;
     }
-    const bool header = firstContent && !numeric &&
-                        std::none_of(fields.begin(), fields.end(), [](std::string_view f) {
-                          double x;
-                          return parseDouble(f, x);
-                        });
-    firstContent = false;
-    if (header) continue;
-    if (fields.size() != 5) {
-      report(lineNo, "expected 5 columns (s, alignment, vertical, gauge, cross_level), got " +
+    if (fields.size() != role.size()) {
+      std::string names;
+      for (const auto& n : colName) names += (names.empty() ? "" : ", ") + n;
+      report(lineNo, "expected " + std::to_string(role.size()) + " columns (" + names + "), got " +
                          std::to_string(fields.size()));
       continue;
     }
-    if (!numeric) {
-      report(lineNo, "column " + std::to_string(badField + 1) + " (" + kColumns[badField] +
-                         ") is not a finite number: '" + std::string(fields[badField]) + "'");
+    double s = 0.0;
+    std::array<double, kChannels> v{};
+    bool ok = true;
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      double x = 0.0;
+      if (!parseDouble(fields[i], x)) {
+        report(lineNo, "column " + std::to_string(i + 1) + " (" + colName[i] +
+                           ") is not a finite number: '" + std::string(fields[i]) + "'");
+        ok = false;
+        break;
+      }
+      if (role[i] == kColumnS) {
+        s = x;
+      } else {
+        v[static_cast<std::size_t>(role[i])] = x * factor;
+      }
+    }
+    if (!ok) continue;
+    if (!(std::abs(s) <= kMaxTrackLength)) {
+      report(lineNo,
+             "s = " + num(s) + " m is beyond the longest track (" + num(kMaxTrackLength) + " m)");
       continue;
     }
-    if (!t.s.empty() && !(vals[0] > t.s.back())) {
-      report(lineNo, "s = " + num(vals[0]) +
+    if (!t.s.empty() && !(s > t.s.back())) {
+      report(lineNo, "s = " + num(s) +
                          " m must be greater than the previous s = " + num(t.s.back()) + " m");
       continue;
     }
-    t.s.push_back(vals[0]);
-    for (std::size_t c = 0; c < 4; ++c) t.channel[c].push_back(vals[c + 1]);
+    for (std::size_t c = 0; c < kChannels; ++c) {
+      if (std::abs(v[c]) > kMaxIrregularity) {
+        Implausible& im = implausible[c];
+        if (im.count++ == 0) {
+          im.line = lineNo;
+          im.first = v[c];
+        }
+      }
+    }
+    if (static_cast<double>(t.s.size()) >= options.max_rows) {
+      if (!tooMany) {
+        report(lineNo, "more than " + num(options.max_rows) +
+                           " data rows (track.max_points); raise track.max_points to read it");
+      }
+      tooMany = true;
+      continue;
+    }
+    if (t.s.empty()) out.first_line = lineNo;
+    out.last_line = lineNo;
+    t.s.push_back(s);
+    for (std::size_t c = 0; c < kChannels; ++c) t.channel[c].push_back(v[c]);
   }
-  if (errors == 0 && t.s.size() < 2) {
-    report(0, "at least 2 data rows are required, got " + std::to_string(t.s.size()));
+  for (std::size_t c = 0; c < kChannels; ++c) {
+    const Implausible& im = implausible[c];
+    if (im.count == 0) continue;
+    const std::string name = channelName(static_cast<Channel>(c));
+    std::string msg = name + " = " + num(im.first / factor) + " " + unitName(options.unit);
+    if (options.unit == CsvUnit::Millimetre) msg += " (" + num(im.first) + " m)";
+    msg += " is larger than a track irregularity can be (" + num(kMaxIrregularity) + " m)";
+    if (im.count > 1) msg += " here and on " + std::to_string(im.count - 1) + " more rows";
+    if (options.unit == CsvUnit::Metre) {
+      msg += "; is the file in millimetres? Declare it: measured { unit = \"mm\" }";
+    }
+    report(im.line, msg);
+  }
+  if (!haveHeader) {
+    report(0,
+           "the file is empty: it needs a header naming the columns (s, alignment, vertical, "
+           "gauge, cross_level) and at least 2 rows");
+  } else if (errors == 0 && t.s.size() < 2) {
+    report(lineNo, "at least 2 data rows are required, got " + std::to_string(t.s.size()));
   }
   if (errors > 0) return std::nullopt;
-  return t;
+  return out;
+}
+
+std::optional<MeasuredTable> readMeasuredCsv(const std::string& path, const SourceLoc& loc,
+                                             const CsvReadOptions& options, Diagnostics& diags) {
+  std::string why;
+  const std::optional<std::string> text = readRegularFile(path, why);
+  if (!text) {
+    diags.add(loc, "track.irregularities: csv file '" + detail::displayPath(path) + "': " + why);
+    return std::nullopt;
+  }
+  return parseMeasuredCsv(*text, detail::displayPath(path), options, diags);
+}
+
+std::optional<IrregularityTable> parseIrregularityCsv(std::istream& in,
+                                                      const std::string& file_name,
+                                                      Diagnostics& diags) {
+  std::ostringstream text;
+  text << in.rdbuf();
+  auto t = parseMeasuredCsv(text.str(), file_name, CsvReadOptions{}, diags);
+  if (!t) return std::nullopt;
+  return std::move(t->table);
 }
 
 std::optional<IrregularityTable> readIrregularityCsv(const std::string& path, const SourceLoc& loc,
                                                      Diagnostics& diags) {
-  std::ifstream in(path);
-  if (!in) {
-    diags.add(loc, "track.irregularities: cannot read csv file '" + path + "'");
-    return std::nullopt;
-  }
-  return parseIrregularityCsv(in, path, diags);
+  auto t = readMeasuredCsv(path, loc, CsvReadOptions{}, diags);
+  if (!t) return std::nullopt;
+  return std::move(t->table);
 }
 
 }  // namespace rb::track

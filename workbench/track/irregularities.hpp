@@ -33,6 +33,7 @@
 #include <random>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "workbench/core/error.hpp"
@@ -96,14 +97,40 @@ class Irregularities {
 // Synthesises all four channels of a valid Psd spec over [0, track_length].
 IrregularityTable synthesizeIrregularities(const IrregularitySpec& spec, double track_length);
 
-// Parses a measured-irregularity CSV: 5 columns s, alignment, vertical, gauge, cross_level [m]
-// separated by commas (or semicolons, or white space); '#' starts a comment; the first content line
-// may be a header. Problems are added to `diags` with SourceLoc{file_name, line}; the table is
+// A measured-irregularity CSV. Format:
+// - '#' starts a comment; blank lines are skipped; fields are separated by commas, or semicolons,
+//   or white space.
+// - The first content line is a header naming the columns: `s` (arc length [m]) and any subset of
+//   alignment, vertical, gauge, cross_level, in any order (names case-insensitive). A channel that
+//   is not named is zero. A name may carry its unit, `alignment [mm]`; it must then agree with
+//   the declared unit (s only in m). Unknown or repeated names are errors (with a hint).
+// - Then one row per s with as many numbers as the header has names: s finite, |s| <= 1e7 m,
+//   strictly increasing; values finite and, converted to metres, |value| <= kMaxIrregularity
+//   (a larger value is almost always a file in millimetres declared as metres); at least 2 rows,
+//   at most max_rows.
+// Every problem is added to `diags` as SourceLoc{file_name, line}; the table (in metres) is
 // returned only when there were none.
+struct CsvReadOptions {
+  CsvUnit unit = CsvUnit::Metre;        // unit of the irregularity columns
+  double max_rows = kDefaultMaxPoints;  // bound on data rows
+};
+struct MeasuredTable {
+  IrregularityTable table;  // [m]
+  int first_line = 0;       // file lines of the first and last data rows
+  int last_line = 0;
+  std::array<bool, kChannels> present{};  // which channels the header named
+};
+std::optional<MeasuredTable> parseMeasuredCsv(std::string_view text, const std::string& file_name,
+                                              const CsvReadOptions& options, Diagnostics& diags);
+// Reads `path` (a regular file of bounded size, core/files.hpp) and parses it; a file that cannot
+// be used is reported at `loc` (the irregularities block).
+std::optional<MeasuredTable> readMeasuredCsv(const std::string& path, const SourceLoc& loc,
+                                             const CsvReadOptions& options, Diagnostics& diags);
+
+// The same with the default options (metres), for callers that need only the table.
 std::optional<IrregularityTable> parseIrregularityCsv(std::istream& in,
                                                       const std::string& file_name,
                                                       Diagnostics& diags);
-// Opens and parses `path`; an unreadable file is reported at `loc` (the irregularities block).
 std::optional<IrregularityTable> readIrregularityCsv(const std::string& path, const SourceLoc& loc,
                                                      Diagnostics& diags);
 

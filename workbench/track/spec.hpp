@@ -30,6 +30,26 @@ struct SegmentSpec {
 
 enum class IrregularitySource { None, Psd, Csv };
 
+// Unit of the irregularity columns of a measured CSV (s is always in metres).
+enum class CsvUnit { Metre, Millimetre };
+// What the track is where a measured CSV does not reach (before its first or after its last s).
+// Error: check fails (default: a file shorter than the track is usually a mistake). Zero: perfect
+// track there, with a warning.
+enum class Beyond { Error, Zero };
+
+// Bound on the knots of one spline (centreline, irregularities, measured CSV rows): about 0.4 kB
+// of memory per centreline knot; a PSD synthesis may cost max_points x kSynthesisTermsPerPoint
+// cosine terms (about 10 s at the default). 1e6 knots: 500 km of track at the paper's 0.5 m step,
+// or 100 km of irregularities at 0.1 m. Raised per scenario with track { max_points = ... }.
+inline constexpr double kDefaultMaxPoints = 1e6;
+inline constexpr double kSynthesisTermsPerPoint = 2000.0 * 4.0;  // default components x channels
+// [m] Longest track (and largest |s| of a measured CSV): longer than any railway line (the
+// Trans-Siberian is 9 289 km), short enough that s keeps sub-micrometre resolution.
+inline constexpr double kMaxTrackLength = 1e7;
+// [m] Largest plausible irregularity (CSV value, synthesised RMS): track irregularities are
+// millimetres to a few centimetres; 0.1 m is a unit mistake or a wrong PSD.
+inline constexpr double kMaxIrregularity = 0.1;
+
 // The four centreline irregularities of paper Fig. 3 (Eq. before (4)).
 enum class Channel { Alignment = 0, Vertical = 1, Gauge = 2, CrossLevel = 3 };
 inline constexpr int kChannels = 4;
@@ -57,8 +77,11 @@ struct IrregularitySpec {
   // dOmega (true), or put it at the band centre (false: the realisation then repeats every
   // 2 pi / dOmega metres).
   bool randomize_frequencies = true;
-  // Csv: columns s, alignment, vertical, gauge, cross_level in metres (header line allowed).
+  // Csv: a header naming the columns (s and any of alignment, vertical, gauge, cross_level, in
+  // any order; a missing channel is zero), then one row per s (irregularities.cpp).
   std::string csv_path;  // resolved absolute path
+  CsvUnit csv_unit = CsvUnit::Metre;
+  Beyond beyond = Beyond::Error;
   SourceLoc loc;
 };
 
@@ -68,7 +91,8 @@ struct TrackSpec {
   double cant_base = 1.5;   // [m] lateral distance over which cant height is measured
   double gauge = 1.435;     // [m] nominal track gauge (recorded; rail positions use Lr)
   double rail_lr = 0.7555;  // [m] Lr, rail profile frame lateral position (paper Table 1)
-  double rail_inclination = 1.0 / 40.0;  // [rad] beta (paper Table 1)
+  double rail_inclination = 1.0 / 40.0;   // [rad] beta (paper Table 1)
+  double max_points = kDefaultMaxPoints;  // work and memory bound (see kDefaultMaxPoints)
   IrregularitySpec irregularities;
   SourceLoc loc;
 };

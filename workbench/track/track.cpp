@@ -1,7 +1,9 @@
 #include "workbench/track/track.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -38,12 +40,105 @@ double sideSign(Side s) {
   return s == Side::Left ? 1.0 : -1.0;
 }
 
-// Checks everything; returns the CSV table of a Csv source when it could be read without errors.
-std::optional<IrregularityTable> check(const TrackSpec& spec, Diagnostics& d) {
+struct Checked {
+  std::optional<IrregularityTable> csv;  // the table of a Csv source read without errors
+  std::vector<Diagnostic> warnings;
+};
+
+// Spline knots of a uniform grid of spacing `step` over [0, length] (as the builders make them),
+// as a double so that an absurd request does not overflow.
+double knotCount(double length, double step) {
+  return std::max(1.0, std::ceil(length / step - 1e-9)) + 1.0;
+}
+
+std::string count(double n) {
+  std::ostringstream os;
+  os.precision(3);
+  os << n;
+  return os.str();
+}
+
+// A valid Psd source: the synthesis grid and its cost stay within track.max_points, and the
+// synthesised irregularities are finite and of plausible size (a PSD off by orders of magnitude,
+// or in the wrong units, is an input error here rather than a failure deep in the contact solve).
+void checkSynthesis(const TrackSpec& spec, double length, Diagnostics& d) {
+  const IrregularitySpec& ir = spec.irregularities;
+  auto ierr = [&](const std::string& msg) { d.add(ir.loc, "track.irregularities: " + msg); };
+  const double knots = knotCount(length, ir.step);
+  if (knots > spec.max_points) {
+    ierr(num(length) + " m at step " + num(ir.step) + " m needs " + count(knots) +
+         " spline knots, more than track.max_points = " + count(spec.max_points) +
+         "; use a coarser step, or raise track.max_points");
+    return;
+  }
+  int active = 0;
+  for (int c = 0; c < kChannels; ++c) active += ir.enabled[c] ? 1 : 0;
+  const double terms = knots * static_cast<double>(ir.components) * active;
+  const double maxTerms = spec.max_points * kSynthesisTermsPerPoint;
+  if (terms > maxTerms) {
+    ierr("the synthesis needs " + count(knots) + " knots x " + std::to_string(ir.components) +
+         " components x " + std::to_string(active) + " channels = " + count(terms) +
+         " cosine terms, more than track.max_points x " +
+         std::to_string(static_cast<long long>(kSynthesisTermsPerPoint)) + " = " + count(maxTerms) +
+         "; use fewer components or a coarser step, or raise track.max_points");
+    return;
+  }
+  for (int c = 0; c < kChannels; ++c) {
+    const CosineSeries series = makeCosineSeries(ir, static_cast<Channel>(c));
+    double var = 0.0;
+    for (const double a : series.amplitude) var += 0.5 * a * a;
+    const double rms = std::sqrt(var);
+    if (!(rms <= kMaxIrregularity)) {
+      ierr(std::string(channelName(static_cast<Channel>(c))) + ": the synthesised irregularity " +
+           "has an RMS of " + num4(rms) + " m, more than a track irregularity can be (" +
+           num(kMaxIrregularity) + " m); check the PSD (one-sided, in m^2/(rad/m)) and scale");
+    }
+  }
+}
+
+// A measured table must cover the whole track [0, length] unless beyond = "zero" says that the
+// track is perfect where the file does not reach.
+void checkCoverage(const TrackSpec& spec, const MeasuredTable& m, double length, Diagnostics& d,
+                   std::vector<Diagnostic>& warnings) {
+  const IrregularitySpec& ir = spec.irregularities;
+  const double tol = 1e-6;  // [m]
+  const double s0 = m.table.s.front();
+  const double s1 = m.table.s.back();
+  const bool early = s0 > tol;
+  const bool late = s1 < length - tol;
+  if (!early && !late) return;
+  const std::string file = detail::displayPath(ir.csv_path);
+  if (ir.beyond == Beyond::Error) {
+    if (early) {
+      d.add(ir.loc, "track.irregularities: " + file + " starts at s = " + num(s0) + " m (line " +
+                        std::to_string(m.first_line) +
+                        "), after the track start s = 0 m; give rows from s = 0, or beyond = "
+                        "\"zero\" for a perfect track where the file does not reach");
+    }
+    if (late) {
+      d.add(ir.loc, "track.irregularities: the track is " + num(length) + " m long but " + file +
+                        " ends at s = " + num(s1) + " m (line " + std::to_string(m.last_line) +
+                        "); give a file that covers the track, or beyond = \"zero\" for a "
+                        "perfect track beyond the file");
+    }
+    return;
+  }
+  warnings.push_back({ir.loc, "track.irregularities: " + file + " covers s = " + num(s0) + " .. " +
+                                  num(s1) + " m of the " + num(length) +
+                                  " m track; the track is perfect (zero irregularities) beyond "
+                                  "it (beyond = \"zero\")"});
+}
+
+// Checks everything, including the work and memory the track will need, so that nothing that
+// passes here fails while building.
+Checked check(const TrackSpec& spec, Diagnostics& d) {
+  Checked out;
   const SourceLoc& tl = spec.loc;
   // Track-level fields.
   if (spec.segments.empty()) d.add(tl, "track.segments: at least one segment is required");
   if (!(spec.step > 0.0)) d.add(tl, "track.step must be > 0 m, got " + num(spec.step));
+  const bool maxOk = spec.max_points >= 2.0 && std::isfinite(spec.max_points);
+  if (!maxOk) d.add(tl, "track.max_points must be >= 2, got " + num(spec.max_points));
   const bool baseOk = spec.cant_base > 0.0 && std::isfinite(spec.cant_base);
   if (!baseOk) d.add(tl, "track.cant_base must be > 0 m, got " + num(spec.cant_base));
   if (!(spec.gauge > 0.0)) d.add(tl, "track.gauge must be > 0 m, got " + num(spec.gauge));
@@ -68,6 +163,9 @@ std::optional<IrregularityTable> check(const TrackSpec& spec, Diagnostics& d) {
 
     if (!(sg.length > 0.0 && std::isfinite(sg.length))) {
       err("length must be > 0 m, got " + num(sg.length));
+    } else if (sg.length > kMaxTrackLength) {
+      err("length must be <= " + num(kMaxTrackLength) + " m (longer than any railway line), got " +
+          num(sg.length));
     } else if (sg.length < shortest) {
       shortest = sg.length;
       shortestIdx = i;
@@ -138,11 +236,33 @@ std::optional<IrregularityTable> check(const TrackSpec& spec, Diagnostics& d) {
                   " m, track.segments[" + std::to_string(shortestIdx + 1) + "]), got " +
                   num(spec.step));
   }
+  // Total length, when every segment length is usable (0 otherwise: no length-based checks).
+  double length = 0.0;
+  for (const SegmentSpec& sg : spec.segments) {
+    length = sg.length > 0.0 && sg.length <= kMaxTrackLength && length >= 0.0 ? length + sg.length
+                                                                              : -1.0;
+  }
+  if (length > kMaxTrackLength) {
+    d.add(tl, "track: the segments add up to " + num(length) + " m, more than the longest track (" +
+                  num(kMaxTrackLength) + " m)");
+    length = 0.0;
+  }
+  length = std::max(length, 0.0);
+  if (length > 0.0 && maxOk && spec.step > 0.0) {
+    const double knots = knotCount(length, spec.step);
+    if (knots > spec.max_points) {
+      d.add(tl, "track: " + num(length) + " m at step " + num(spec.step) + " m needs " +
+                    count(knots) +
+                    " spline knots, more than track.max_points = " + count(spec.max_points) +
+                    " (about 0.4 kB each); use a coarser step, or raise track.max_points");
+    }
+  }
 
   // Irregularities.
   const IrregularitySpec& ir = spec.irregularities;
   auto ierr = [&](const std::string& msg) { d.add(ir.loc, "track.irregularities: " + msg); };
   if (ir.source == IrregularitySource::Psd) {
+    const std::size_t psdBefore = d.size();
     const auto spectrum = parseSpectrum(ir.spectrum);
     if (!spectrum) {
       ierr("unknown spectrum '" + ir.spectrum + "' (valid: " + spectrumNames() + ")");
@@ -201,14 +321,20 @@ std::optional<IrregularityTable> check(const TrackSpec& spec, Diagnostics& d) {
         }
       }
     }
+    if (d.size() == psdBefore && length > 0.0 && maxOk) checkSynthesis(spec, length, d);
   } else if (ir.source == IrregularitySource::Csv) {
     if (ir.csv_path.empty()) {
       ierr("csv_path is required for a csv source");
-    } else {
-      return readIrregularityCsv(ir.csv_path, ir.loc, d);
+    } else if (maxOk) {
+      CsvReadOptions o;
+      o.unit = ir.csv_unit;
+      o.max_rows = spec.max_points;
+      std::optional<MeasuredTable> m = readMeasuredCsv(ir.csv_path, ir.loc, o, d);
+      if (m && length > 0.0) checkCoverage(spec, *m, length, d, out.warnings);
+      if (m) out.csv = std::move(m->table);
     }
   }
-  return std::nullopt;
+  return out;
 }
 
 }  // namespace
@@ -230,8 +356,9 @@ void validateTrack(const TrackSpec& spec, Diagnostics& diags) {
 
 TrackModel compileTrack(const TrackSpec& spec) {
   Diagnostics d;
-  std::optional<IrregularityTable> csv = check(spec, d);
+  Checked checked = check(spec, d);
   d.throwIfAny();
+  std::optional<IrregularityTable>& csv = checked.csv;
   TrackGeometry geometry(spec);
   std::optional<Irregularities> irr;
   switch (spec.irregularities.source) {
@@ -245,7 +372,9 @@ TrackModel compileTrack(const TrackSpec& spec) {
       irr.emplace(std::move(*csv), spec.rail_lr);
       break;
   }
-  return TrackModel(spec, std::move(geometry), std::move(irr));
+  TrackModel model(spec, std::move(geometry), std::move(irr));
+  model.warnings_ = std::move(checked.warnings);
+  return model;
 }
 
 }  // namespace rb::track

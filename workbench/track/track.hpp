@@ -22,9 +22,19 @@
 // - Irregularities (Psd): known spectrum; step > 0; 0 < wavelength_min < wavelength_max;
 //   wavelength_min >= 2 step (Nyquist); 1 <= components <= 100000; scale >= 0; user tables with
 //   matching lengths, >= 2 points, omega > 0 strictly increasing, values >= 0.
-// - Irregularities (Csv): a readable file, 5 numeric columns, strictly increasing s, >= 2 rows.
+// - Irregularities (Psd): the synthesised RMS of every channel finite and <= 0.1 m
+//   (kMaxIrregularity).
+// - Irregularities (Csv): a regular file in the format of parseMeasuredCsv (header naming the
+//   columns, declared unit, finite strictly increasing s, plausible values, >= 2 rows) covering
+//   the track [0, length] unless beyond = "zero" (then a warning).
+// - Work and memory: segment lengths and the track length <= 1e7 m; the centreline knots
+//   (length / track.step), the irregularity knots (length / psd step, or CSV rows) <=
+//   track.max_points, and the synthesis terms (knots x components x channels) <=
+//   track.max_points x 8000. The default (1e6) is documented in spec.hpp; a scenario raises it
+//   with track { max_points = ... }.
 // Segments are named as in the Lua file, 1-based: "track.segments[3] (curve): ...".
 #include <optional>
+#include <vector>
 
 #include "workbench/core/error.hpp"
 #include "workbench/track/geometry.hpp"
@@ -44,11 +54,16 @@ class TrackModel {
   const std::optional<Irregularities>& irregularities() const { return irregularities_; }
   // False when a PSD with an UNVERIFIED parameter table (FRA classes) was used: print a warning.
   bool psdVerified() const;
+  // Problems that do not stop a run but must be shown (printed by check and run): e.g. a
+  // measured CSV shorter than the track with beyond = "zero".
+  const std::vector<Diagnostic>& warnings() const { return warnings_; }
 
  private:
   TrackSpec spec_;
   TrackGeometry geometry_;
   std::optional<Irregularities> irregularities_;
+  std::vector<Diagnostic> warnings_;
+  friend TrackModel compileTrack(const TrackSpec& spec);
 };
 
 // Adds every problem of `spec` to `diags` (reads the CSV file of a Csv source). Does not throw.
