@@ -9,7 +9,13 @@ OUT_DIR holds one folder per study (efficiency_case3, flange_stiffness, refineme
 work_precision, effects, speed, each with the study_*.csv / *.png of plot_study.py; validation,
 with the validation_*.csv of plots/validation_tables.py), bench_wagon.json (Google Benchmark,
 one wagon evaluation and its parts) and bench_integrators.json (the integrators' overhead). BUILD_DIR/hard/hard_cases.csv is the hard-case suite's
-record. Every generated block sits between the markers
+record; BUILD_DIR/dynamics/coupling_*.csv (written by the coupling refinement tests of
+test_dynamics and test_dynamics_long) feed the block of docs/contact_dynamics.md, which is left
+as it is when they are missing and can be regenerated alone:
+
+    /usr/bin/python3 plots/update_docs.py - --build BUILD_DIR --only contact_dynamics
+
+Every generated block sits between the markers
 
     <!-- generated: NAME (plots/update_docs.py) -->
     ...
@@ -612,6 +618,7 @@ BLOCK_SOURCES = {
     "bench_integrators": "bench_integrators",
     "validation_case1": "validation", "validation_case2": "validation",
     "validation_case3": "validation", "validation_cost": "validation",
+    "coupling_convergence": "build",
 }
 
 
@@ -621,6 +628,8 @@ BENCH_OUTPUTS = {"bench": "bench_wagon", "bench_integrators": "bench_integrators
 
 def block_provenance(name: str, outdir: str, build: str) -> List[dict]:
     src = BLOCK_SOURCES.get(name)
+    if src == "build":  # written by the tests of the build tree now being documented
+        return [provenance.current()]
     if src == "hard":
         seen = []
         for r in hard_rows(build):
@@ -635,6 +644,57 @@ def block_provenance(name: str, outdir: str, build: str) -> List[dict]:
     if src:
         return provenance.read(os.path.join(outdir, src, "provenance.json"))
     return provenance.read(os.path.join(outdir, "provenance.json"))
+
+
+# ---- normal-force coupling (docs/contact_dynamics.md section 4.1) -------------------------------
+
+COUPLING_CASES = (  # (csv under BUILD/dynamics, what it is, where it comes from)
+    ("coupling_flange_curve", "wagon at 15 m/s into R = 200 m, ORE B176 high, KEC, 1.3 s",
+     "test_dynamics, Coupling.StepHalvingConvergesWithTheDefaultCoupling"),
+    ("coupling_case3", "case 3 (wagon, 20 m/s, R = 500 m, ORE B176 low, KEC), 10 s",
+     "test_dynamics_long, Long.Case3CouplingStepHalving"),
+)
+
+
+def source_commit() -> str:
+    """The commit of the source tree the numbers were generated in (with '+ uncommitted changes'
+    when tracked files outside docs/ differ from it)."""
+    import subprocess
+    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+    try:
+        head = subprocess.run(["git", "-C", root, "rev-parse", "--short", "HEAD"], check=True,
+                              capture_output=True, text=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", root, "status", "--porcelain", "--untracked-files=no",
+                                "--", ".", ":!docs"],
+                               check=True, capture_output=True, text=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown commit"
+    return f"commit {head}" + (" + uncommitted changes" if dirty else "")
+
+
+def coupling_block(build: str) -> Optional[str]:
+    """Step-halving differences of RK4 with both couplings and their cost per evaluation, from the
+    CSVs the tests write; None when no CSV exists."""
+    parts = []
+    for name, what, src in COUPLING_CASES:
+        path = os.path.join(build, "dynamics", name + ".csv")
+        rows = read_csv(path)
+        if not rows:
+            continue
+        body = []
+        for r in rows:
+            d = num(r["diff_to_half_step_mm"])
+            it = num(r["iterations_per_solve"])
+            body.append([r["coupling"], f"{num(r['step_ms']):g}",
+                         fmt(d, "{:.2g}") if d is not None else "–",
+                         f"{num(r['cpu_s']):.2f}", r["rhs_evals"], f"{num(r['us_per_rhs']):.1f}",
+                         fmt(it, "{:.2f}") if it else "–"])
+        parts.append(f"**{what}** ({src}):\n\n" + table(
+            ["coupling", "RK4 step h [ms]", "d(h) [mm]", "CPU [s]", "rhs evals",
+             "µs / rhs", "Phi evaluations per wheelset solve"], body))
+    if not parts:
+        return None
+    return (f"From `{build}/dynamics/coupling_*.csv`:\n\n" + "\n\n".join(parts))
 
 
 # ---- figures -----------------------------------------------------------------------------------
@@ -689,6 +749,10 @@ def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
     blocks["validation.md"].update(validation_blocks(outdir))
     blocks["hard_cases.md"]["hard_cases_detail"] = hard_detail_block(build)
     blocks["integrators.md"]["bench_integrators"] = bench_integrators_block(outdir)
+    coupling = coupling_block(build)
+    blocks["contact_dynamics.md"] = {"coupling_convergence": coupling if coupling is not None
+                                     else missing(f"{build}/dynamics/coupling_*.csv "
+                                                  "(ctest -R Coupling, test_dynamics)")}
     return blocks
 
 
@@ -698,7 +762,24 @@ def main(argv=None) -> int:
     ap.add_argument("--build", default="build")
     ap.add_argument("--docs", default=os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                                    "..", "docs"))
+    ap.add_argument("--only", choices=("contact_dynamics",),
+                    help="regenerate only the blocks of docs/NAME.md (inputs from --build, no "
+                         "studies needed)")
     a = ap.parse_args(argv)
+    coupling = coupling_block(a.build)
+    if a.only == "contact_dynamics":
+        if coupling is None:
+            print(f"update_docs: no {a.build}/dynamics/coupling_*.csv (run test_dynamics)",
+                  file=sys.stderr)
+            return 1
+        path = os.path.join(a.docs, "contact_dynamics.md")
+        with open(path) as f:
+            text = replace_block(f.read(), "coupling_convergence", coupling,
+                                 provenance.stamp([provenance.current()]))
+        with open(path, "w") as f:
+            f.write(text)
+        print(f"updated {path}")
+        return 0
     blocks = generate(a.outdir, a.build)
     for md, items in blocks.items():
         path = os.path.join(a.docs, md)

@@ -17,7 +17,9 @@ function M.fixed(method, step)
 end
 
 -- Adaptive solver settings with rtol = atol = tol (the paper's ode45 / ode15s settings) and a
--- largest step (paper: 1 ms). BDF and IDA solve the normal forces together with the creep forces
+-- largest step (paper: 1 ms). The study bases state the paper's lagged normal forces
+-- (validation/common.lua, contact "study"), with which the generated tables of docs/studies.md
+-- were made; BDF and IDA solve the normal forces together with the creep forces
 -- (contact.normal_forces = "consistent"): with the lagged normal forces of the explicit methods
 -- its Newton iteration sees a non-smooth right-hand side (docs/contact_dynamics.md).
 -- solver.max_steps = 1e5: at tight tolerances the default limit (500 steps per 10 ms output

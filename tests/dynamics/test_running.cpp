@@ -261,11 +261,15 @@ TEST(Running, CreepNoneHasNoTangentialForces) {
 }
 
 // Lagged normal forces (the paper) against the consistent solution at one state: the lagged
-// evaluation uses the previous evaluation's normal forces; the consistent one iterates.
+// evaluation uses the previous evaluation's normal forces; the consistent one (the default)
+// iterates.
 TEST(Running, LaggedAndConsistentNormalForces) {
-  const Compiled a = compileScenario("scenarios/validation/case1_R300_kec.lua");
+  const Compiled a =
+      compileScenario("scenarios/validation/case1_R300_kec.lua", {"contact.normal_forces=lagged"});
   const Compiled b = compileScenario("scenarios/validation/case1_R300_kec.lua",
                                      {"contact.normal_forces=consistent"});
+  ASSERT_EQ(a.contact->coupling, dynamics::NormalForceCoupling::Lagged);
+  ASSERT_EQ(b.contact->coupling, dynamics::NormalForceCoupling::Consistent);
   dynamics::ContactVehicleOde lag(*a.vehicle, *a.contact, *a.track);
   dynamics::ContactVehicleOde con(*b.vehicle, *b.contact, *b.track);
   Eigen::VectorXd y = lag.initialState(0.0);

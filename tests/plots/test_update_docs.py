@@ -59,7 +59,8 @@ def main():
     blocks_h = ["hard_cases_detail"]
     for md, names in (("studies.md", blocks_s), ("performance.md", blocks_p),
                       ("validation.md", blocks_v), ("hard_cases.md", blocks_h),
-                      ("integrators.md", ["bench_integrators"])):
+                      ("integrators.md", ["bench_integrators"]),
+                      ("contact_dynamics.md", ["coupling_convergence"])):
         with open(os.path.join(docs, md), "w") as f:
             f.write("# hand text before\n")
             for n in names:
@@ -99,6 +100,35 @@ def main():
     with open(os.path.join(docs, "performance.md"), "w") as f:
         f.write("no markers here\n")
     check(ud.main([out, "--docs", docs]) == 1, "a missing marker is an error")
+    coupling_only()
+
+
+def coupling_only():
+    """--only contact_dynamics: the coupling block from BUILD/dynamics/coupling_*.csv alone."""
+    docs = os.path.join(TMP, "docs_cd")
+    build = os.path.join(TMP, "build_cd")
+    os.makedirs(docs)
+    md = os.path.join(docs, "contact_dynamics.md")
+    with open(md, "w") as f:
+        f.write("hand before\n<!-- generated: coupling_convergence (plots/update_docs.py) -->\n"
+                "OLD NUMBERS\n<!-- end: coupling_convergence -->\nhand after\n")
+    check(ud.main(["-", "--build", build, "--docs", docs, "--only", "contact_dynamics"]) == 1,
+          "--only contact_dynamics without its CSVs is an error")
+    check("OLD NUMBERS" in open(md).read(), "... and leaves the block alone")
+    rows = [dict(coupling="consistent", step_ms="0.125", diff_to_half_step_mm="0.002226",
+                 cpu_s="0.62", rhs_evals="41600", us_per_rhs="14.9", iterations_per_solve="3.92"),
+            dict(coupling="lagged", step_ms="0.0625", diff_to_half_step_mm="", cpu_s="0.70",
+                 rhs_evals="83200", us_per_rhs="8.4", iterations_per_solve="0")]
+    write_csv(os.path.join(build, "dynamics", "coupling_flange_curve.csv"), rows)
+    rc = ud.main(["-", "--build", build, "--docs", docs, "--only", "contact_dynamics"])
+    text = open(md).read()
+    block = text.split("generated: coupling_convergence")[1].split("end: coupling_convergence")[0]
+    check(rc == 0 and "OLD NUMBERS" not in text, "--only contact_dynamics replaces the block")
+    check(text.startswith("hand before") and "hand after" in text, "... keeps the hand text")
+    check("| consistent | 0.125 | 0.0022 | 0.62 | 41600 | 14.9 | 3.92 |" in block,
+          "... with the consistent row")
+    check("| lagged | 0.0625 | – |" in block, "... and the finest step without a difference")
+    check("commit" in block, "... stamped with the commit")
 
 
 def block(text, name):

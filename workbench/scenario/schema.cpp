@@ -228,8 +228,9 @@ std::vector<BlockSpec> build() {
         num("mu", "-", 0.2364, "friction coefficient (paper section 5.1)", 0, 1),
         num("youngs_modulus", "Pa", 2.1e11, "Young's modulus of wheel and rail", 1e9, 1e12),
         num("poisson", "-", 0.28, "Poisson ratio", 0, 0.5),
-        choice("normal_forces", {"lagged", "consistent"}, "lagged",
-               "normal forces for creep: previous step's (the paper) or solved together"),
+        choice("normal_forces", {"lagged", "consistent"}, "consistent",
+               "normal forces for creep: solved together with them (converges under step "
+               "refinement) or the previous evaluation's (the paper, section 2.5)"),
         choice("wheelset_spin", {"free", "prescribed"}, "free",
                "free: the wheelset spin is a degree of freedom driven by creep (stiff, needs "
                "ABM steps < 0.5 ms at 20 m/s); prescribed: spin rate V(t)/r_c (constant "
