@@ -154,7 +154,7 @@ Compiled compile(const RunOptions& o) {
                          "' are UNVERIFIED against a primary source (see docs/track.md)");
   if (c.contact)
     for (const auto& w : c.contact->warnings)
-      c.warnings.push_back(spec.contact.loc.str() + ": warning: " + w);
+      c.warnings.push_back(w);  // already "file:line: warning: ..."
   if (c.vehicle && !spec.has_contact)
     c.warnings.push_back(spec.vehicle.loc.str() +
                          ": note: no contact{} block: wheelsets follow the track kinematically");
