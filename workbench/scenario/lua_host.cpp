@@ -190,7 +190,10 @@ struct LuaHost::Impl {
       std::free(ptr);
       return nullptr;
     }
-    const std::size_t limit = self->memoryLimit + (self->hostPhase ? kHostReserve : 0);
+    // After a refusal the reserve is open too: the script is dead from the next hook on, and the
+    // error handling between (messages, constructors) must not fail again at the limit.
+    const bool reserve = self->hostPhase || self->memoryRefused;
+    const std::size_t limit = self->memoryLimit + (reserve ? kHostReserve : 0);
     if (nsize > old && self->memory - old + nsize > limit) {
       // Lua raises "not enough memory"; the refusal itself ends the scenario (below), so a
       // script that catches the error cannot carry on at the limit.
