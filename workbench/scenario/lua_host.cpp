@@ -910,7 +910,7 @@ Node LuaHost::runFile(const std::string& path) {
   text_ = std::move(*content);
   impl_->chunkFile = path;
   std::error_code ec;
-  scenarioDir_ = fs::weakly_canonical(fs::absolute(file).parent_path(), ec).string();
+  scenarioDir_ = fs::weakly_canonical(fs::absolute(file, ec).parent_path(), ec).string();
   roots_ = {scenarioDir_};
   impl_->moduleRoots = {scenarioDir_};
   if (!options_.root.empty()) {
@@ -922,6 +922,17 @@ Node LuaHost::runFile(const std::string& path) {
   std::string chunk = "@" + path;
   lua_pushcfunction(L, &Impl::messageHandler);
   int status = luaL_loadbufferx(L, text_.data(), text_.size(), chunk.c_str(), "t");
+  if (status != LUA_OK && status != LUA_ERRMEM && lua_type(L, -1) == LUA_TSTRING &&
+      !hasLocation(lua_tostring(L, -1))) {
+    // The parser reports its nesting limit without a line. (The script will not run: the host's
+    // reserve covers the new message.)
+    impl_->hostPhase = true;
+    std::string msg = std::string("cannot parse the scenario: ") + lua_tostring(L, -1);
+    if (msg.find("C stack overflow") != std::string::npos)
+      msg += " (expressions or blocks nested too deeply)";
+    lua_pop(L, 1);
+    lua_pushlstring(L, msg.data(), msg.size());
+  }
   if (status == LUA_OK) status = lua_pcall(L, 0, 0, -2);
   // From here on the host converts the result: give it the reserve beyond the script's budget.
   impl_->hostPhase = true;
@@ -966,14 +977,19 @@ std::string LuaHost::resolveDataFile(const std::string& name, const SourceLoc& l
     candidates.push_back(fs::path(scenarioDir_) / p);
     if (!options_.root.empty()) candidates.push_back(fs::path(options_.root) / p);
   }
+  // Error-code forms throughout: a name the file system refuses (too long, bad characters) is
+  // the user's input problem, not an exception.
   for (const auto& c : candidates) {
-    if (!fs::exists(c)) continue;
+    std::error_code ec;
+    if (!fs::exists(c, ec)) continue;
     bool allowed = false;
     for (const auto& r : roots_) allowed = allowed || isBelow(c, r);
     if (!allowed)
       throw InputError(loc, "file '" + name + "' is outside the folders a scenario may read (" +
                                 "its own folder, scenarios/, profiles/)");
-    return fs::weakly_canonical(c).string();
+    fs::path real = fs::weakly_canonical(c, ec);
+    if (ec) continue;
+    return real.string();
   }
   throw InputError(
       loc, "file '" + name + "' not found (looked in the scenario's folder and the project root)");
