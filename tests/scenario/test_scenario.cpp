@@ -104,8 +104,7 @@ TEST(ScenarioErrors, ManyProblemsReportedAtOnce) {
           kBad + "many.lua:5: track.segments[2] (curve): missing required key 'radius'\n" + kBad +
           "many.lua:9: solver: method: unknown value 'rk5' (did you mean 'rk4'?); valid: rk4, abm, "
           "dopri5, bdf, ida\n" +
-          kBad + "many.lua:10: run: distance must be >= 0 m, got -1\n" + kBad +
-          "many.lua:9: solver{} has no effect without a vehicle{} block (nothing is integrated)");
+          kBad + "many.lua:10: run: distance must be >= 0 m, got -1");
 }
 
 TEST(ScenarioErrors, UserPsdFunctionMustBeNonNegative) {
