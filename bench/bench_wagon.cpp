@@ -29,6 +29,7 @@
 #include "workbench/dynamics/contact_model.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
 #include "workbench/integrators/registry.hpp"
+#include "workbench/run/compile.hpp"
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/track/track.hpp"
 #include "workbench/vehicle/dynamics.hpp"
@@ -38,19 +39,11 @@ namespace {
 using namespace rb;
 
 struct Setup {
-  scenario::ScenarioSpec spec;
-  std::unique_ptr<track::TrackModel> track;
-  std::unique_ptr<vehicle::VehicleModel> vehicle;
-  std::unique_ptr<dynamics::ContactModel> contact;
+  run::Model model;  // the library's compile(): the same Model a `workbench run` integrates
   std::unique_ptr<dynamics::ContactVehicleOde> ode;
   std::vector<double> t;
   std::vector<Eigen::VectorXd> y;
 };
-
-dynamics::TableCache& cache() {
-  static dynamics::TableCache c;
-  return c;
-}
 
 // Compiles the scenario and records the trajectory (once per configuration).
 Setup& setup(const std::string& method, bool free_spin) {
@@ -60,17 +53,13 @@ Setup& setup(const std::string& method, bool free_spin) {
   if (slot) return *slot;
   slot = std::make_unique<Setup>();
   Setup& s = *slot;
-  scenario::LoadOptions lo;
-  lo.root = RB_SOURCE_DIR;
-  if (!free_spin) lo.overrides = {"contact.wheelset_spin=prescribed"};
-  s.spec = scenario::loadScenario(
-      std::string(RB_SOURCE_DIR) + "/scenarios/validation/case3_" + method + ".lua", lo);
-  s.track = std::make_unique<track::TrackModel>(track::compileTrack(s.spec.track));
-  s.vehicle =
-      std::make_unique<vehicle::VehicleModel>(vehicle::compileVehicle(s.spec.vehicle, *s.track));
-  s.contact = std::make_unique<dynamics::ContactModel>(
-      dynamics::compileContact(s.spec.profiles, s.spec.contact, *s.vehicle, *s.track, &cache()));
-  s.ode = std::make_unique<dynamics::ContactVehicleOde>(*s.vehicle, *s.contact, *s.track);
+  run::CompileOptions co;
+  co.root = RB_SOURCE_DIR;
+  co.scenario = std::string(RB_SOURCE_DIR) + "/scenarios/validation/case3_" + method + ".lua";
+  if (!free_spin) co.overrides = {"contact.wheelset_spin=prescribed"};
+  s.model = run::compile(co);
+  s.ode = std::make_unique<dynamics::ContactVehicleOde>(*s.model.vehicle, *s.model.contact,
+                                                        *s.model.track);
   integ::SolverSpec solver;
   solver.method = "abm";
   solver.step = free_spin ? 2.5e-4 : 1e-3;
@@ -143,13 +132,13 @@ const BodyStates& bodyStates() {
 void BM_Vehicle(benchmark::State& st) {
   Setup& s = setup("kec", false);
   const BodyStates& b = bodyStates();
-  vehicle::Workspace ws = vehicle::makeWorkspace(*s.vehicle);
+  vehicle::Workspace ws = vehicle::makeWorkspace(*s.model.vehicle);
   std::size_t k = 0;
   long n = 0;
   for (auto _ : st) {
     ws.q = b.q[k];
     ws.qd = b.qd[k];
-    for (int r = 0; r < 2; ++r) vehicle::evaluate(*s.vehicle, b.series[k].data(), ws);
+    for (int r = 0; r < 2; ++r) vehicle::evaluate(*s.model.vehicle, b.series[k].data(), ws);
     benchmark::DoNotOptimize(ws.force.data());
     k = (k + 1) % b.q.size();
     n += 2;
@@ -161,10 +150,10 @@ void BM_Vehicle(benchmark::State& st) {
 void BM_KecGeometry(benchmark::State& st) {
   Setup& s = setup("kec", false);
   const BodyStates& b = bodyStates();
-  const contact::KecTable& tab = *s.contact->kec;
+  const contact::KecTable& tab = *s.model.contact->kec;
   const track::Irregularities* irr =
-      s.track->irregularities() ? &*s.track->irregularities() : nullptr;
-  std::vector<contact::KecSolution> warm(s.contact->wheelsets.size());
+      s.model.track->irregularities() ? &*s.model.track->irregularities() : nullptr;
+  std::vector<contact::KecSolution> warm(s.model.contact->wheelsets.size());
   std::vector<bool> has(warm.size(), false);
   std::size_t k = 0;
   long n = 0;
@@ -173,8 +162,8 @@ void BM_KecGeometry(benchmark::State& st) {
   for (auto _ : st) {
     for (int r = 0; r < 2; ++r) {
       for (std::size_t w = 0; w < warm.size(); ++w) {
-        const auto& q = b.q[k][static_cast<std::size_t>(s.contact->wheelsets[w])];
-        const auto& qd = b.qd[k][static_cast<std::size_t>(s.contact->wheelsets[w])];
+        const auto& q = b.q[k][static_cast<std::size_t>(s.model.contact->wheelsets[w])];
+        const auto& qd = b.qd[k][static_cast<std::size_t>(s.model.contact->wheelsets[w])];
         track::IrregularityPoint ip;
         if (irr) ip = irr->at(q[vehicle::kS]);
         const contact::KecInput in{q[vehicle::kY], ip.y_l, ip.y_r, ip.z_l, ip.z_r};
@@ -202,9 +191,9 @@ void BM_KecGeometry(benchmark::State& st) {
 void BM_LutGeometry(benchmark::State& st) {
   Setup& s = setup("lut", false);
   const BodyStates& b = bodyStates();
-  const contact::LutTable& lut = *s.contact->lut;
+  const contact::LutTable& lut = *s.model.contact->lut;
   const track::Irregularities* irr =
-      s.track->irregularities() ? &*s.track->irregularities() : nullptr;
+      s.model.track->irregularities() ? &*s.model.track->irregularities() : nullptr;
   std::size_t k = 0;
   long n = 0;
   contact::LutSample ls;
@@ -212,7 +201,7 @@ void BM_LutGeometry(benchmark::State& st) {
   double sink = 0.0;
   for (auto _ : st) {
     for (int r = 0; r < 2; ++r) {
-      for (int w : s.contact->wheelsets) {
+      for (int w : s.model.contact->wheelsets) {
         const auto& q = b.q[k][static_cast<std::size_t>(w)];
         track::IrregularityPoint ip;
         if (irr) ip = irr->at(q[vehicle::kS]);
@@ -235,7 +224,7 @@ void BM_LutGeometry(benchmark::State& st) {
 // 60E1 tread: A = 1.09, B = 3.3 1/m).
 void BM_Creep(benchmark::State& st) {
   Setup& s = setup("kec", false);
-  const dynamics::ContactModel& c = *s.contact;
+  const dynamics::ContactModel& c = *s.model.contact;
   std::vector<dynamics::WheelOutput> wo(2 * c.wheelsets.size());
   std::vector<std::vector<dynamics::WheelOutput>> rec;
   for (std::size_t k = 0; k < s.t.size(); k += 7) {
@@ -271,7 +260,7 @@ void BM_AugmentedSolve(benchmark::State& st) {
   Eigen::VectorXd yd(s.ode->size());
   s.ode->rhs(s.t[0], s.y[0].data(), yd.data());
   std::vector<Eigen::Matrix<double, 5, 5>> M;
-  for (int w : s.contact->wheelsets)
+  for (int w : s.model.contact->wheelsets)
     M.push_back(ws.mass[static_cast<std::size_t>(w)].block<5, 5>(1, 1));
   Eigen::Matrix<double, 5, 2> N = Eigen::Matrix<double, 5, 2>::Zero();
   N << 0.05, -0.05, 0.99, 0.99, -0.75, 0.75, 0.0, 0.0, 0.001, -0.001;

@@ -12,9 +12,16 @@ Figures (each returns a matplotlib Figure; nothing is written)
                                          wheelset vs distance (paper Fig. 17, 19, 21)
     fig_bodies_car(result)               the same for bogies and car body (Fig. 20, 22)
     fig_kinematics(runs, names, title)   the same for any bodies, several runs overlaid
-    fig_contact_forces(result)           normal force Q, flange force / indentation, Y/Q per
-                                         wheelset and side vs distance (Fig. 24, 25)
+    fig_contact_forces(result)           normal force Q and Y/Q per wheel vs distance (Fig. 24,
+                                         25), Nadal's limit when the file gives mu and the
+                                         flange angle
+    fig_flange_contact(result)           tread and flange patch normal forces (KEC two-point
+                                         contact, LUT Hertz flange), LUT flange indentation,
+                                         contact regime, per wheel
     fig_creep(result)                    creepages, spin and creep forces per wheelset
+    fig_accelerations(result)            car body and bogie accelerations (/bodies/*/a[xyz])
+    fig_elements(result)                 deflection and force of /elements/* versus time
+    panel_points(fig)                    {panel id: data points drawn} of a vehicle figure
 
 Vehicle results
     steady_state(result, fraction=0.2)   mean y [mm] and yaw [mrad] of every body over the
@@ -46,8 +53,13 @@ write a fig_* function and append a FigureSpec to FIGURES whose is_available() c
 group.  make_figures() and plot_run.py need no change.
 
 Vehicle groups (/time, /bodies, /contact, /elements, /stats) are optional: a file holding only
-the track still loads.  Time series may be cut short (failed or interrupted run): every figure
-plots the samples it has and truncates x/y pairs to their common length.
+the track still loads.  A figure is drawn only from what the file holds: a quantity the run
+did not write, or that its contact method does not produce (the engine writes zeros for the
+LUT-only flange_force and flange_indentation in KEC runs), gets no panel, and the figure says
+so instead of showing an empty one (the same for creepages and creep forces of a run without
+a creep law, and for guided wheelsets, whose y and yaw are zero by construction).  Time series
+may be cut short (failed or interrupted run): every figure plots the samples it has and
+truncates x/y pairs to their common length.
 
 Only numpy, matplotlib (Agg) and h5py are used; no scipy.
 """
@@ -73,6 +85,8 @@ __all__ = [
     "fig_track_plan", "fig_curvature_cant", "fig_irregularities", "fig_irregularity_psd",
     "Body", "WheelsetContact", "Contact",
     "fig_wheelsets", "fig_bodies_car", "fig_kinematics", "fig_contact_forces", "fig_creep",
+    "fig_flange_contact", "fig_accelerations", "fig_elements", "panel_points", "nadal_limit",
+    "nadal_from_file", "acceleration_bodies", "ContactRow",
     "steady_state", "stats_summary", "failure_text", "add_failure_banner", "body_title",
     "FigureSpec", "FIGURES", "build_figure", "make_figures", "report_style",
 ]
@@ -176,6 +190,7 @@ def _attrs(obj) -> Dict[str, object]:
 # must not fail because someone wrote "1/m" as "m^-1", but a silent rescale would be worse.
 _UNIT_ALIASES = {
     "m": {"m"},
+    "m/s^2": {"m/s^2", "m/s2", "m s^-2"},
     "rad": {"rad"},
     "1/m": {"1/m", "m^-1", "m-1", "rad/m"},
     "-": {"-", "", "1"},
@@ -281,7 +296,7 @@ def body_title(name: str) -> str:
 class WheelsetContact:
     name: str                                              # wheelset (body) name
     sides: Dict[str, Dict[str, np.ndarray]]                # "left"/"right" -> datasets
-    data: Dict[str, np.ndarray]                            # y_over_q_left, y_over_q_right, ...
+    data: Dict[str, np.ndarray]                            # datasets of the wheelset itself
 
     def side(self, side: str, key: str) -> Optional[np.ndarray]:
         v = self.sides.get(side, {}).get(key)
@@ -315,6 +330,7 @@ class Result:
     bodies: Dict[str, Body] = field(default_factory=dict)   # /bodies, in vehicle order
     contact: Optional[Contact] = None                       # /contact
     elements: Dict[str, Dict[str, np.ndarray]] = field(default_factory=dict)  # /elements
+    element_units: Dict[str, Dict[str, str]] = field(default_factory=dict)    # their units
     stats: Optional[Dict[str, object]] = None               # /stats attributes
 
     @property
@@ -327,10 +343,18 @@ class Result:
 
     @property
     def contact_method(self) -> Optional[str]:
+        """The wheel/rail contact method ("kec", "lut"); None without contact (track-only
+        runs, and guided runs, whose file says "none (wheelsets guided)")."""
         m = self.attrs.get("contact_method")
         if not m and self.contact is not None:
             m = self.contact.attrs.get("method")
-        return str(m).strip() if m else None
+        m = str(m).strip() if m else ""
+        return m if m and not m.lower().startswith("none") else None
+
+    @property
+    def guided(self) -> bool:
+        """A vehicle run whose wheelsets follow the track (no contact block)."""
+        return str(self.attrs.get("contact_method", "")).strip().lower().startswith("none")
 
     def label(self) -> str:
         """Short run label for legends: contact method in capitals (KEC, LUT), else the stem."""
@@ -369,11 +393,13 @@ _IRR_OPTIONAL = {"left_y": "m", "left_z": "m", "right_y": "m", "right_z": "m", "
 
 # Vehicle groups.  Only these names are unit-checked; other 1-D numeric datasets (rates such as
 # y_dot, later additions) are read as they are and ignored by the figures.
-_BODY_DS = {"s": "m", "x": "m", "y": "m", "z": "m", "roll": "rad", "pitch": "rad", "yaw": "rad"}
-_CONTACT_DS = {"normal_force": "N", "creep_force_x": "N", "creep_force_y": "N", "creepage_x": "-",
-               "creepage_y": "-", "spin": "1/m", "wheel_s": "m", "rail_s": "m",
-               "flange_indentation": "m", "flange_force": "N", "regime": "-"}
-_CONTACT_WS_DS = {"y_over_q_left": "-", "y_over_q_right": "-"}
+_BODY_DS = {"s": "m", "x": "m", "y": "m", "z": "m", "roll": "rad", "pitch": "rad", "yaw": "rad",
+            "ax": "m/s^2", "ay": "m/s^2", "az": "m/s^2"}
+# Per wheel, /contact/<wheelset>/<left|right>/ (workbench/app/run.cpp, runContact).
+_CONTACT_DS = {"normal_force": "N", "normal_tread": "N", "normal_flange": "N",
+               "creep_force_x": "N", "creep_force_y": "N", "creepage_x": "-", "creepage_y": "-",
+               "spin": "1/m", "wheel_s": "m", "rail_s": "m", "contact_angle": "rad",
+               "flange_indentation": "m", "flange_force": "N", "regime": "-", "y_over_q": "-"}
 
 
 def _guess_kind(name: str) -> str:
@@ -452,7 +478,7 @@ def _load_dynamics(f, res: Result) -> None:
                 if side in wg and isinstance(wg[side], h5py.Group):
                     sides[side] = _read_series(wg[side], f"/contact/{w}/{side}", _CONTACT_DS)
                     note_len(f"/contact/{w}/{side}", sides[side])
-            data = _read_series(wg, f"/contact/{w}", _CONTACT_WS_DS)
+            data = _read_series(wg, f"/contact/{w}", {})
             note_len(f"/contact/{w}", data)
             cws[w] = WheelsetContact(name=w, sides=sides, data=data)
         res.contact = Contact(attrs=_attrs(g), wheelsets=cws)
@@ -461,6 +487,8 @@ def _load_dynamics(f, res: Result) -> None:
         for k, v in f["elements"].items():
             if isinstance(v, h5py.Group):
                 res.elements[k] = _read_series(v, f"/elements/{k}", {})
+                res.element_units[k] = {d: _str(v[d].attrs["units"]).strip()
+                                        for d in res.elements[k] if "units" in v[d].attrs}
                 note_len(f"/elements/{k}", res.elements[k])
 
     if "stats" in f:
@@ -1108,6 +1136,8 @@ def _run_info(result: Result) -> str:
     m = result.contact_method
     if m:
         parts.append(f"{m.upper()} contact")
+    elif result.guided:
+        parts.append("guided wheelsets")
     sv = result.attrs.get("solver") or (result.stats or {}).get("method")
     if sv:
         parts.append(f"solver {sv}")
@@ -1117,14 +1147,16 @@ def _run_info(result: Result) -> str:
 def _grid(n_items: int, n_quant: int, row_h: float, extra_h: float, max_cols: int = 4):
     """Axes for n_items columns (bodies / wheelsets) x n_quant rows (quantities).
 
-    More than max_cols items wrap into further bands of n_quant rows.  All axes share x; every
-    band's bottom row keeps its x tick labels.  Returns (fig, cells, ncol), cells[i][q]."""
+    More than max_cols items wrap into further bands of n_quant rows.  The axes of one item
+    share x (bodies of a vehicle are at different distances: in a short run a common x range
+    would squeeze every column into a corner); only the bottom row of each item has x tick
+    labels.  Returns (fig, cells, ncol), cells[i][q]."""
     nb = max(1, math.ceil(n_items / max_cols))
     ncol = max(1, math.ceil(n_items / nb))
     nrows = nb * n_quant
     fig_h = min(nrows * row_h + extra_h, 9.4)
-    fig, axes = plt.subplots(nrows, ncol, figsize=(A4_WIDTH_IN, fig_h), sharex=True,
-                             squeeze=False, layout="constrained")
+    fig, axes = plt.subplots(nrows, ncol, figsize=(A4_WIDTH_IN, fig_h), squeeze=False,
+                             layout="constrained")
     cells = []
     for i in range(nb * ncol):
         b, c = divmod(i, ncol)
@@ -1133,7 +1165,10 @@ def _grid(n_items: int, n_quant: int, row_h: float, extra_h: float, max_cols: in
             for ax in col:
                 ax.set_visible(False)
             continue
-        col[-1].xaxis.set_tick_params(labelbottom=True)
+        for ax in col[1:]:
+            ax.sharex(col[0])
+        for ax in col[:-1]:
+            ax.xaxis.set_tick_params(labelbottom=False)
         cells.append(col)
     return fig, cells, ncol
 
@@ -1259,10 +1294,11 @@ def fig_kinematics(runs: Sequence[Tuple[Result, str]], names: Sequence[str], tit
         fig, cells, ncol = _grid(len(names), len(_KIN_ROWS), row_h=1.55, extra_h=0.95)
         _share_rows(cells, kinds, ncol, [row[2] for row in _KIN_ROWS])
         fig_h = fig.get_size_inches()[1]
-        xmin, xmax = np.inf, -np.inf
         for i, (n, col) in enumerate(zip(names, cells)):
+            xmin, xmax = np.inf, -np.inf
             for q, (key, scale, ylab, _) in enumerate(_KIN_ROWS):
                 ax = col[q]
+                ax.set_gid(f"{key}:{n}")
                 if tr is not None:
                     _shade_segments(ax, tr)
                 ax.axhline(0, color="k", lw=0.4, zorder=0.6)
@@ -1271,7 +1307,7 @@ def fig_kinematics(runs: Sequence[Tuple[Result, str]], names: Sequence[str], tit
                     if b is None or not b.has("s", key):
                         continue
                     x, v = _pair(b.data["s"], b.data[key] * scale)
-                    ax.plot(x, v, zorder=2 + k, **_run_style(k))
+                    ax.plot(x, v, zorder=2 + k, gid="data", **_run_style(k))
                     if r.failed:
                         _fail_marker(ax, x, v)
                     fin = x[np.isfinite(x)]
@@ -1281,10 +1317,10 @@ def fig_kinematics(runs: Sequence[Tuple[Result, str]], names: Sequence[str], tit
                     ax.set_title(body_title(n), fontsize=8.5)
                 if q == len(_KIN_ROWS) - 1:
                     ax.set_xlabel("distance s [m]")
+            _set_distance_range(col[0], xmin, xmax, tr, any_failed)
         for col in cells:
             for q, row in enumerate(_KIN_ROWS):
                 _min_span(col[q], row[3])
-        _set_distance_range(cells[0][0], xmin, xmax, tr, any_failed)
         handles = []
         for k, (r, lab) in enumerate(runs):
             handles.append(Line2D([], [], label=lab + (" (failed)" if r.failed else ""),
@@ -1312,40 +1348,101 @@ def fig_bodies_car(result: Result):
                           f"{_run_info(result)}")
 
 
-# Rows of the contact figures: dataset (per side, or Y/Q per wheelset), scale, label, min span.
-_CONTACT_ROWS = (
-    ("normal_force", 1e-3, "normal force\nQ [kN]", 5.0),
-    ("flange_force", 1e-3, "flange force\n[kN]", 2.0),
-    ("flange_indentation", 1e3, "flange indent.\n[mm]", 0.05),
-    ("y_over_q", 1.0, "derailment\nquotient Y/Q [-]", 0.1),
-)
+# Quantities of the contact figures.  The engine writes every per-wheel column for both contact
+# methods, so a KEC file holds zeros where only the LUT Hertz flange has a value
+# (flange_force, flange_indentation): those zeros are not results and are never drawn as such.
+@dataclass(frozen=True)
+class ContactRow:
+    key: str                                 # dataset under /contact/<ws>/<side>/
+    scale: float                             # to the display unit
+    label: str                               # y label
+    min_span: float                          # smallest y span (display unit)
+    methods: Tuple[str, ...] = ("kec", "lut")  # contact methods whose result holds it
+    creep: bool = False                      # computed only with a creep law (not "none")
+
+
+_ROW_Q = ContactRow("normal_force", 1e-3, "normal force\nQ [kN]", 5.0)
+_ROW_YQ = ContactRow("y_over_q", 1.0, "derailment\nquotient Y/Q [-]", 0.1)
+_ROW_TREAD = ContactRow("normal_tread", 1e-3, "tread patch\nnormal force [kN]", 5.0)
+_ROW_FLANGE = ContactRow("normal_flange", 1e-3, "flange patch\nnormal force [kN]", 2.0)
+_ROW_INDENT = ContactRow("flange_indentation", 1e3, "flange indentation\n[mm] (< 0: gap)", 0.05,
+                         methods=("lut",))
+_ROW_REGIME = ContactRow("regime", 1.0, "contact\nregime", 2.6)
+_CONTACT_ROWS = (_ROW_Q, _ROW_YQ)
+_FLANGE_ROWS = (_ROW_TREAD, _ROW_FLANGE, _ROW_INDENT, _ROW_REGIME)
 _CREEP_ROWS = (
-    ("creepage_x", 1e3, "long. creepage\nξx [‰]", 0.5),
-    ("creepage_y", 1e3, "lat. creepage\nξy [‰]", 0.5),
-    ("spin", 1.0, "spin\nφ [1/m]", 0.02),
-    ("creep_force_x", 1e-3, "long. creep\nforce Fx [kN]", 1.0),
-    ("creep_force_y", 1e-3, "lat. creep\nforce Fy [kN]", 1.0),
+    ContactRow("creepage_x", 1e3, "long. creepage\nξx [‰]", 0.5, creep=True),
+    ContactRow("creepage_y", 1e3, "lat. creepage\nξy [‰]", 0.5, creep=True),
+    ContactRow("spin", 1.0, "spin\nφ [1/m]", 0.02, creep=True),
+    ContactRow("creep_force_x", 1e-3, "long. creep\nforce Fx [kN]", 1.0, creep=True),
+    ContactRow("creep_force_y", 1e-3, "lat. creep\nforce Fy [kN]", 1.0, creep=True),
 )
+REGIME_NAMES = ("tread", "two-point", "flange")
+# Drawn a little apart so that both wheels stay visible where their regimes are equal.
+_REGIME_OFFSET = {"left": -0.06, "right": 0.06}
 
 
-def _contact_series(wc: WheelsetContact, key: str, side: str) -> Optional[np.ndarray]:
-    if key == "y_over_q":
-        v = wc.data.get(f"y_over_q_{side}")
-        return v if v is not None and v.size else None
-    return wc.side(side, key)
+def _method(result: Result) -> Optional[str]:
+    """'kec' or 'lut' for a contact run, else None (also for files that do not say)."""
+    m = result.contact.attrs.get("method") if result.contact is not None else None
+    m = str(m).strip().lower() if m else (result.contact_method or "").lower()
+    return m if m in ("kec", "lut") else None
 
 
-def _contact_rows(result: Result, rows) -> list:
+def _contact_series(result: Result, wc: WheelsetContact, key: str,
+                    side: str) -> Optional[np.ndarray]:
+    v = wc.side(side, key)
+    if v is None and key == "normal_flange" and _method(result) == "lut":
+        v = wc.side(side, "flange_force")  # older LUT files: the Hertz force is the flange patch
+    return v
+
+
+def _row_present(result: Result, row: ContactRow) -> bool:
+    """The file holds `row` for at least one wheel, and the run's contact method produces it."""
     c = result.contact
     if c is None:
-        return []
-    return [row for row in rows
-            if any(_contact_series(wc, row[0], sd) is not None
-                   for wc in c.wheelsets.values() for sd in ("left", "right"))]
+        return False
+    m = _method(result)
+    if m is not None and m not in row.methods:
+        return False
+    # Without a creep law the engine writes zeros for creepages, spin and creep forces.
+    if row.creep and str(c.attrs.get("creep", "")).strip().lower() == "none":
+        return False
+    return any(_contact_series(result, wc, row.key, sd) is not None
+               for wc in c.wheelsets.values() for sd in ("left", "right"))
 
 
-def _contact_figure(result: Result, rows, title: str):
-    """Rows = quantities, columns = wheelsets; left wheel solid blue, right wheel dashed red."""
+def _contact_rows(result: Result, rows) -> List[ContactRow]:
+    return [row for row in rows if _row_present(result, row)]
+
+
+def nadal_limit(mu: float, flange_angle: float) -> float:
+    """Nadal's flange-climb limit of Y/Q: (tan γ - μ) / (1 + μ tan γ), γ the flange angle."""
+    t = math.tan(flange_angle)
+    return (t - mu) / (1.0 + mu * t)
+
+
+def nadal_from_file(result: Result) -> Optional[Tuple[float, float, float]]:
+    """(limit, mu, flange angle [rad]) from the /contact attributes `mu` and `flange_angle`
+    [rad] (or `flange_angle_deg`); None when the file does not give both."""
+    if result.contact is None:
+        return None
+    a = result.contact.attrs
+    mu = _num(a.get("mu"))
+    gam = _num(a.get("flange_angle"))
+    if gam is None and _num(a.get("flange_angle_deg")) is not None:
+        gam = math.radians(_num(a.get("flange_angle_deg")))
+    if mu is None or gam is None or not (0.0 < gam < math.pi / 2) or mu < 0:
+        return None
+    return nadal_limit(mu, gam), mu, gam
+
+
+def _contact_figure(result: Result, rows: Sequence[ContactRow], title: str,
+                    notes: Sequence[str] = ()):
+    """Rows = quantities, columns = wheelsets; left wheel solid blue, right wheel dashed red.
+
+    Every panel is drawn from the file's data; `notes` (e.g. rows left out because the method
+    does not produce them) go on a second title line."""
     from matplotlib.lines import Line2D
 
     c = result.contact
@@ -1361,65 +1458,292 @@ def _contact_figure(result: Result, rows, title: str):
     else:  # no abscissa at all: sample index
         xs = {w: None for w in wss}
         xlabel = "output sample"
+    nadal = nadal_from_file(result) if _ROW_YQ in rows else None
     with report_style():
-        fig, cells, ncol = _grid(len(wss), len(rows), row_h=1.3, extra_h=0.95)
-        _share_rows(cells, ["all"] * len(cells), ncol, [row[2] for row in rows])
+        fig, cells, ncol = _grid(len(wss), len(rows), row_h=1.3, extra_h=1.1)
+        _share_rows(cells, ["all"] * len(cells), ncol, [row.label for row in rows])
         fig_h = fig.get_size_inches()[1]
-        xmin, xmax = np.inf, -np.inf
         for i, (w, col) in enumerate(zip(wss, cells)):
             wc = c.wheelsets[w]
-            for q, (key, scale, ylab, _) in enumerate(rows):
+            xmin, xmax = np.inf, -np.inf
+            for q, row in enumerate(rows):
                 ax = col[q]
+                ax.set_gid(f"{row.key}:{w}")  # lets tests and scripts find a panel
                 if use_s and tr is not None:
                     _shade_segments(ax, tr)
-                if key != "normal_force":  # Q stays near its static value: no zero line
+                if row.key not in ("normal_force", "regime"):  # Q stays near its static value
                     ax.axhline(0, color="k", lw=0.4, zorder=0.6)
-                shown = False
+                shown, nonzero = False, False
                 for side in ("left", "right"):
-                    v = _contact_series(wc, key, side)
+                    v = _contact_series(result, wc, row.key, side)
                     if v is None:
                         continue
                     x = xs[w] if xs[w] is not None else np.arange(v.size, dtype=float)
-                    x, v = _pair(x, v * scale)
-                    ax.plot(x, v, lw=0.9, zorder=3, **SIDE_STYLE[side])
+                    x, v = _pair(x, v * row.scale)
+                    kw = dict(lw=0.9, zorder=3, gid="data", **SIDE_STYLE[side])
+                    if row is _ROW_REGIME:
+                        v = v + _REGIME_OFFSET[side]
+                        kw["drawstyle"] = "steps-post"
+                    ax.plot(x, v, **kw)
                     shown = True
+                    nonzero |= bool(np.any(np.abs(v[np.isfinite(v)]) > 0))
                     if result.failed:
                         _fail_marker(ax, x, v)
                     fin = x[np.isfinite(x)]
                     if fin.size:
                         xmin, xmax = min(xmin, fin.min()), max(xmax, fin.max())
                 if not shown:
-                    ax.text(0.5, 0.5, "not recorded", transform=ax.transAxes, ha="center",
-                            va="center", fontsize=7, color="#777777")
+                    ax.text(0.5, 0.5, "not in this result", transform=ax.transAxes,
+                            ha="center", va="center", fontsize=7, color="#777777")
+                elif row is _ROW_FLANGE and not nonzero:
+                    ax.text(0.5, 0.62, "no flange contact", transform=ax.transAxes,
+                            ha="center", va="center", fontsize=7, color="#555555")
+                if row is _ROW_REGIME:
+                    ax.set_ylim(-0.4, 2.4)
+                    ax.set_yticks(range(len(REGIME_NAMES)))
+                    ax.set_yticklabels(REGIME_NAMES, fontsize=6.5)
+                if row is _ROW_YQ and nadal is not None:
+                    ax.axhline(nadal[0], color="k", lw=0.9, ls=(0, (6, 2, 1.2, 2)), zorder=2.5)
                 if q == 0:
                     ax.set_title(body_title(w), fontsize=8.5)
                 if q == len(rows) - 1:
                     ax.set_xlabel(xlabel)
+            _set_distance_range(col[0], xmin, xmax, tr if use_s else None, result.failed)
         for col in cells:
             for q, row in enumerate(rows):
-                _min_span(col[q], row[3])
-        _set_distance_range(cells[0][0], xmin, xmax, tr if use_s else None, result.failed)
+                if row is not _ROW_REGIME:
+                    _min_span(col[q], row.min_span)
         handles = [Line2D([], [], lw=0.9, label=f"{sd} wheel", **SIDE_STYLE[sd])
                    for sd in ("left", "right")]
+        if _ROW_YQ in rows:
+            if nadal is not None:
+                handles.append(Line2D([], [], color="k", lw=0.9, ls=(0, (6, 2, 1.2, 2)),
+                                      label=f"Nadal limit {nadal[0]:.2f} (μ = {nadal[1]:g}, "
+                                            f"flange angle {math.degrees(nadal[2]):.4g}°)"))
+            else:
+                handles.append(Line2D([], [], ls="none",
+                                      label="Nadal limit not drawn: the file gives no μ and "
+                                            "flange angle"))
         marks = _segment_legend_handles(tr) if (use_s and tr is not None) else []
         if result.failed:
             marks.append(_fail_handle("last output (run failed)"))
-        _bottom_legend(fig, [handles, marks], fig_h)
-        fig.suptitle(title, fontsize=9.5)
+        _bottom_legend(fig, [handles, marks], fig_h, max_per_row=4)
+        fig.suptitle("\n".join([title, *notes]), fontsize=9.5)
     return fig
 
 
 def fig_contact_forces(result: Result):
-    """Normal force Q [kN] per wheel, flange force [kN] and indentation [mm] when recorded, and
-    the derailment quotient Y/Q, per wheelset versus distance (paper Fig. 24, 25)."""
+    """Normal force Q [kN] per wheel and the derailment quotient Y/Q (lateral force of the
+    rail on the wheel toward the track centre over Q) per wheelset versus distance (paper
+    Fig. 24, 25), with Nadal's limit when the file gives μ and the flange angle."""
     rows = _contact_rows(result, _CONTACT_ROWS)
-    return _contact_figure(result, rows, f"Wheel–rail contact forces — {_run_info(result)}")
+    return _contact_figure(result, rows,
+                           f"Wheel–rail contact forces — {_run_info(result)}")
+
+
+def fig_flange_contact(result: Result):
+    """Where the flange carries load: the normal force of the tread patch and of the flange
+    patch per wheel (KEC: the two points of the two-point contact; LUT: the tread contact and
+    the Hertz flange force of Eq. 20), the LUT flange indentation (Eq. 21, negative: the gap
+    still open), and the contact regime (tread, two-point, flange only)."""
+    rows = _contact_rows(result, _FLANGE_ROWS)
+    m = _method(result)
+    notes = []
+    if m == "kec":
+        notes.append("KEC: flange load of the two-point contact (no indentation: constraint "
+                     "contact)")
+    elif m == "lut":
+        notes.append("LUT: flange patch = Hertz flange force (Eq. 20)")
+    left_out = [r.key for r in _FLANGE_ROWS if r not in rows and (m is None or m in r.methods)]
+    if left_out:
+        notes.append("not in this result: " + ", ".join(left_out))
+    return _contact_figure(result, rows, f"Flange contact — {_run_info(result)}", notes)
 
 
 def fig_creep(result: Result):
     """Creepages [‰], spin [1/m] and creep forces [kN] per wheelset and wheel vs distance."""
     rows = _contact_rows(result, _CREEP_ROWS)
     return _contact_figure(result, rows, f"Creepages and creep forces — {_run_info(result)}")
+
+
+# Rows of the acceleration figure: dataset, label, minimum y span [m/s^2].
+_ACC_ROWS = (
+    ("ay", "lateral\n$a_y$ [m/s²]", 0.05),
+    ("az", "vertical\n$a_z$ [m/s²]", 0.05),
+    ("ax", "longitudinal\n$a_x$ [m/s²]", 0.05),
+)
+
+
+def acceleration_bodies(result: Result) -> List[str]:
+    """Bodies with accelerations to draw: car body and bogies (what ride comfort needs; the
+    wheelsets follow the rails), or every body with them when the vehicle has neither."""
+    have = [n for n, b in result.bodies.items() if any(b.has(k) for k, _, _ in _ACC_ROWS)]
+    main = [n for n in have if result.bodies[n].kind == "car"] + \
+        [n for n in have if result.bodies[n].kind == "bogie"]
+    return main or have
+
+
+def fig_accelerations(result: Result):
+    """Body accelerations (track-frame components of the absolute acceleration of the centre
+    of mass) of the car body and bogies versus distance, with their RMS.  The longitudinal row
+    is left out when it is zero throughout (a constant speed), and said so in the title."""
+    from matplotlib.lines import Line2D
+
+    names = acceleration_bodies(result)
+    tr = result.track
+
+    def series(n, key):
+        b = result.bodies[n]
+        return b.data[key] if b.has(key) else None
+
+    rows = [r for r in _ACC_ROWS if any(series(n, r[0]) is not None for n in names)]
+    notes = []
+    ax_row = next((r for r in rows if r[0] == "ax"), None)
+    if ax_row is not None and all(
+            series(n, "ax") is None or not np.any(np.abs(series(n, "ax")) > 1e-9)
+            for n in names):
+        rows.remove(ax_row)
+        notes.append("longitudinal acceleration zero throughout (not drawn)")
+    kinds = [result.bodies[n].kind for n in names]
+    with report_style():
+        fig, cells, ncol = _grid(len(names), len(rows), row_h=1.45, extra_h=1.0)
+        _share_rows(cells, kinds, ncol, [r[1] for r in rows])
+        fig_h = fig.get_size_inches()[1]
+        for n, col in zip(names, cells):
+            b = result.bodies[n]
+            use_s = b.has("s")
+            xmin, xmax = np.inf, -np.inf
+            for q, (key, label, span) in enumerate(rows):
+                ax = col[q]
+                ax.set_gid(f"{key}:{n}")
+                if use_s and tr is not None:
+                    _shade_segments(ax, tr)
+                ax.axhline(0, color="k", lw=0.4, zorder=0.6)
+                v = series(n, key)
+                if v is None:
+                    ax.text(0.5, 0.5, "not in this result", transform=ax.transAxes,
+                            ha="center", va="center", fontsize=7, color="#777777")
+                else:
+                    x = b.data["s"] if use_s else (result.time if result.time is not None
+                                                   else np.arange(v.size, dtype=float))
+                    x, v = _pair(x, v)
+                    ax.plot(x, v, color=RUN_COLORS[0], lw=0.8, zorder=3, gid="data")
+                    if result.failed:
+                        _fail_marker(ax, x, v)
+                    ok = np.isfinite(v)
+                    if ok.any():
+                        rms = float(np.sqrt(np.mean(v[ok] ** 2)))
+                        # as a legend: loc="best" keeps the label off the curve
+                        ax.legend([Line2D([], [], ls="none")], [f"RMS {rms:.3g} m/s²"],
+                                  loc="best", handlelength=0, handletextpad=0, fontsize=6.5,
+                                  borderpad=0.25, framealpha=0.85)
+                    fin = x[np.isfinite(x)]
+                    if fin.size:
+                        xmin, xmax = min(xmin, fin.min()), max(xmax, fin.max())
+                if q == 0:
+                    ax.set_title(body_title(n), fontsize=8.5)
+                if q == len(rows) - 1:
+                    ax.set_xlabel("distance s [m]" if use_s else "time t [s]")
+            _set_distance_range(col[0], xmin, xmax, tr if use_s else None, result.failed)
+        for col in cells:
+            for q, r in enumerate(rows):
+                _min_span(col[q], r[2])
+        marks = _segment_legend_handles(tr) if tr is not None else []
+        if result.failed:
+            marks.append(_fail_handle("last output (run failed)"))
+        _bottom_legend(fig, [marks], fig_h)
+        fig.suptitle("\n".join([f"Body accelerations — {_run_info(result)}", *notes]),
+                     fontsize=9.5)
+    return fig
+
+
+# Display scale and unit of element outputs, by the unit the file gives.
+_ELEMENT_UNITS = {"m": (1e3, "mm"), "rad": (1e3, "mrad"), "N": (1e-3, "kN"),
+                  "N m": (1e-3, "kN m"), "N*m": (1e-3, "kN m")}
+MAX_ELEMENTS = 12
+
+
+def _element_names(result: Result) -> List[str]:
+    return [n for n, d in result.elements.items()
+            if any(k in d and d[k].size for k in ("deflection", "force"))]
+
+
+def fig_elements(result: Result, max_items: int = MAX_ELEMENTS):
+    """Deflection and force of the suspension elements the run wrote (run.output.elements)
+    versus time; the first `max_items` elements in file order, the others named in the title."""
+    names = _element_names(result)
+    shown = names[:max_items]
+    notes = []
+    if len(names) > len(shown):
+        notes.append(f"first {len(shown)} of {len(names)} elements")
+    quantities = ("deflection", "force")
+
+    def unit(n, q):
+        u = result.element_units.get(n, {}).get(q, "")
+        return _ELEMENT_UNITS.get(u, (1.0, u or "?"))
+
+    row_units = [{unit(n, q)[1] for n in shown} for q in quantities]
+    labels = [f"{q}\n[{next(iter(us))}]" if len(us) == 1 else q
+              for q, us in zip(quantities, row_units)]
+    with report_style():
+        fig, cells, ncol = _grid(len(shown), 2, row_h=1.45, extra_h=0.9)
+        # share y only between elements of the same units
+        _share_rows(cells, ["/".join(unit(n, q)[1] for q in quantities) for n in shown], ncol,
+                    labels)
+        fig_h = fig.get_size_inches()[1]
+        for n, col in zip(shown, cells):
+            d = result.elements[n]
+            xmin, xmax = np.inf, -np.inf
+            for q, key in enumerate(quantities):
+                ax = col[q]
+                ax.set_gid(f"{key}:{n}")
+                ax.axhline(0, color="k", lw=0.4, zorder=0.6)
+                scale, u = unit(n, key)
+                v = d.get(key)
+                if v is None or not v.size:
+                    ax.text(0.5, 0.5, "not in this result", transform=ax.transAxes,
+                            ha="center", va="center", fontsize=7, color="#777777")
+                else:
+                    x = result.time if result.time is not None else \
+                        np.arange(v.size, dtype=float)
+                    x, v = _pair(x, v * scale)
+                    ax.plot(x, v, color=RUN_COLORS[0], lw=0.8, zorder=3, gid="data")
+                    if result.failed:
+                        _fail_marker(ax, x, v)
+                    fin = x[np.isfinite(x)]
+                    if fin.size:
+                        xmin, xmax = min(xmin, fin.min()), max(xmax, fin.max())
+                    if len(row_units[q]) > 1:
+                        ax.text(0.01, 0.95, f"[{u}]", transform=ax.transAxes, ha="left",
+                                va="top", fontsize=6.5, color="#333333")
+                if q == 0:
+                    ax.set_title(n, fontsize=7.5)
+                if q == len(quantities) - 1:
+                    ax.set_xlabel("time t [s]")
+            _set_distance_range(col[0], xmin, xmax, None, False)
+        if result.failed:
+            _bottom_legend(fig, [[_fail_handle("last output (run failed)")]], fig_h)
+        fig.suptitle("\n".join([f"Suspension elements — {_run_info(result)}", *notes]),
+                     fontsize=9.5)
+    return fig
+
+
+def panel_points(fig) -> Dict[str, int]:
+    """The panels of a vehicle figure made here, by id "<quantity>:<body, wheelset or
+    element>" (e.g. "y_over_q:ws1", "ay:car", "force:prim_z_ws1_l"), each with the number of
+    finite data points drawn in it: 0 means the panel shows no data."""
+    out = {}
+    for ax in fig.axes:
+        gid = ax.get_gid()
+        if not gid:
+            continue
+        n = 0
+        for ln in ax.get_lines():
+            if ln.get_gid() == "data":
+                y = np.asarray(ln.get_ydata(), dtype=float)
+                n += int(np.count_nonzero(np.isfinite(y)))
+        out[gid] = n
+    return out
 
 
 def steady_state(result: Result, fraction: float = 0.2,
@@ -1511,14 +1835,22 @@ FIGURES: List[FigureSpec] = [
     FigureSpec("irregularity_psd",
                lambda r: r.irregularities is not None and r.irregularities.data["s"].size >= 16,
                fig_irregularity_psd, "Welch PSD estimate against target"),
-    FigureSpec("wheelsets", lambda r: bool(r.kinematic_bodies(("wheelset",))), fig_wheelsets,
-               "wheelset lateral displacement and yaw versus distance"),
+    # Guided wheelsets follow the track: their y and yaw are zero by construction, not results.
+    FigureSpec("wheelsets", lambda r: bool(r.kinematic_bodies(("wheelset",))) and not r.guided,
+               fig_wheelsets, "wheelset lateral displacement and yaw versus distance"),
     FigureSpec("bogies_car", lambda r: bool(r.kinematic_bodies(("bogie", "car"))), fig_bodies_car,
                "bogie and car body lateral displacement and yaw versus distance"),
     FigureSpec("contact_forces", lambda r: bool(_contact_rows(r, _CONTACT_ROWS)),
-               fig_contact_forces, "normal, flange forces, flange indentation, Y/Q"),
+               fig_contact_forces, "normal force Q and Y/Q per wheel"),
+    FigureSpec("flange_contact",
+               lambda r: _row_present(r, _ROW_FLANGE) or _row_present(r, _ROW_INDENT),
+               fig_flange_contact, "tread and flange normal force, flange indentation, regime"),
     FigureSpec("creep", lambda r: bool(_contact_rows(r, _CREEP_ROWS)), fig_creep,
                "creepages, spin and creep forces"),
+    FigureSpec("accelerations", lambda r: bool(acceleration_bodies(r)), fig_accelerations,
+               "car body and bogie accelerations versus distance"),
+    FigureSpec("elements", lambda r: bool(_element_names(r)), fig_elements,
+               "deflection and force of the recorded suspension elements"),
     # /stats is summarised in text (stats_summary, printed by plot_run.py), not drawn.
 ]
 

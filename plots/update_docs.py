@@ -1,21 +1,27 @@
 #!/usr/bin/env python3
-"""Regenerates the measured tables and figures of docs/studies.md and docs/performance.md from
-the outputs of `./wb studies` (issue 7: "one command regenerates every table and figure").
+"""Regenerates every run-derived table and figure of docs/ (studies.md, performance.md,
+validation.md, hard_cases.md, integrators.md) from the outputs of `./wb studies`: no number that
+comes from a run is typed into docs/ by hand.
 
     /usr/bin/python3 plots/update_docs.py OUT_DIR [--build BUILD_DIR] [--docs DOCS_DIR]
 
 OUT_DIR holds one folder per study (efficiency_case3, flange_stiffness, refinement,
-work_precision, effects, speed, each with the study_*.csv / *.png of plot_study.py) and bench_wagon.json (Google
-Benchmark, one wagon evaluation and its parts). BUILD_DIR/hard/hard_cases.csv is the hard-case
-suite's record. Every generated block sits between the markers
+work_precision, effects, speed, each with the study_*.csv / *.png of plot_study.py; validation,
+with the validation_*.csv of plots/validation_tables.py), bench_wagon.json (Google Benchmark,
+one wagon evaluation and its parts) and bench_integrators.json (the integrators' overhead). BUILD_DIR/hard/hard_cases.csv is the hard-case suite's
+record. Every generated block sits between the markers
 
     <!-- generated: NAME (plots/update_docs.py) -->
     ...
     <!-- end: NAME -->
 
 in the markdown files: the text around them is written by hand and is kept; a block whose input
-is missing is replaced by a line saying so (never by stale numbers). Figures are copied to
-docs/figures/<study>_<name>.png.
+is missing is replaced by a line saying so (never by stale numbers). Every other block starts
+with a stamp naming the git commit (and date) its runs were made with, from the provenance
+records written when the runs were made (OUT_DIR/<study>/provenance.json and
+OUT_DIR/<benchmark>.provenance.json by `./wb studies`, the `commit` column of hard_cases.csv by
+tests/hard/hard_cases.py; plots/provenance.py); runs of a tree with uncommitted changes are
+stamped as such. Figures are copied to docs/figures/<study>_<name>.png.
 """
 import argparse
 import csv
@@ -25,6 +31,9 @@ import re
 import shutil
 import sys
 from typing import Dict, List, Optional
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import provenance  # noqa: E402
 
 def read_csv(path: str) -> List[dict]:
     if not os.path.exists(path):
@@ -51,17 +60,32 @@ def table(header: List[str], rows: List[List[str]]) -> str:
     return "\n".join(out)
 
 
-def replace_block(text: str, name: str, body: str) -> str:
+BLOCK_RE = re.compile(r"<!-- generated: ([\w.-]+) \(plots/update_docs\.py\) -->\n(.*?)<!-- end: \1 -->",
+                      re.S)
+NOT_GENERATED = "*Not generated: "
+
+
+def replace_block(text: str, name: str, body: str, stamp: str = "") -> str:
+    """Replaces the block NAME by body, with the stamp line first (not for a "Not generated"
+    line: nothing was run)."""
     start = f"<!-- generated: {name} (plots/update_docs.py) -->"
     end = f"<!-- end: {name} -->"
     pat = re.compile(re.escape(start) + r".*?" + re.escape(end), re.S)
     if not pat.search(text):
         raise KeyError(f"marker '{name}' not found")
-    return pat.sub(lambda _: start + "\n" + body.strip() + "\n" + end, text)
+    body = body.strip()
+    if stamp and not body.startswith(NOT_GENERATED):
+        body = stamp + "\n\n" + body
+    return pat.sub(lambda _: start + "\n" + body + "\n" + end, text)
+
+
+def doc_blocks(text: str) -> Dict[str, str]:
+    """The generated blocks of a page: name -> content between the markers."""
+    return {m.group(1): m.group(2) for m in BLOCK_RE.finditer(text)}
 
 
 def missing(what: str) -> str:
-    return f"*Not generated: {what} is missing. Run `./wb studies` (see the top of this page).*"
+    return NOT_GENERATED + f"{what} is missing. Run `./wb studies` (see the top of this page).*"
 
 
 # ---- efficiency (paper Tables 7, 12-16) --------------------------------------------------------
@@ -380,6 +404,33 @@ def bench_block(outdir: str) -> str:
             table(["benchmark (median of the repetitions)", "CPU µs per evaluation"], body))
 
 
+def bench_integrators_block(outdir: str) -> str:
+    """docs/integrators.md: bench/bench_integrators (the integrators' overhead per step)."""
+    path = os.path.join(outdir, "bench_integrators.json")
+    if not os.path.exists(path):
+        return missing("out/studies/bench_integrators.json")
+    with open(path) as f:
+        data = json.load(f)
+    body = []
+    for b in data.get("benchmarks", []):
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+            continue
+        name = b.get("run_name", b["name"])
+        if "ns/step" in b:
+            body.append([name, f"{b['ns/step']:.0f}", f"{b.get('rhs/step', 0):.2f}",
+                         f"{b.get('overhead_ns', 0):.0f}", f"{b.get('steps', 0):.0f}"])
+        else:  # BM_rhs: the cost of one right-hand side
+            unit = b.get("time_unit", "ns")
+            scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[unit]
+            body.append([name, "–", "–", "–", f"rhs {b['cpu_time'] * scale:.0f} ns"])
+    ctx = data.get("context", {})
+    return (f"Google Benchmark on {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs at "
+            f"{ctx.get('mhz_per_cpu', '?')} MHz, {ctx.get('date', '')} (median of the "
+            f"repetitions):\n\n" +
+            table(["benchmark", "ns / step", "rhs / step", "overhead ns / step",
+                   "steps (or rhs cost)"], body))
+
+
 # ---- hard cases --------------------------------------------------------------------------------
 
 def hard_block(build: str) -> str:
@@ -396,24 +447,213 @@ def hard_block(build: str) -> str:
                      fmt(cpu, "{:.2f}"), str(evals), fmt(num(r["max_abs_y_mm"]), "{:.2f}"),
                      fmt(num(r["max_abs_yq"]), "{:.2f}"), reason])
     return table(["case", "combination", "status", "test", "t reached / end [s]", "CPU [s]",
-                  "rhs evals", "max |y| [mm]", "max |Y/Q|", "failure"], body)
+                  "rhs evals", "max abs y [mm]", "max abs Y/Q", "failure"], body)
+
+
+def hard_rows(build: str) -> List[dict]:
+    return read_csv(os.path.join(build, "hard", "hard_cases.csv"))
+
+
+def failure_reason(msg: str) -> str:
+    """The short reason of a failure message ("rk4: failed at t = 1.8: <reason>; details")."""
+    if "left the table" in msg:
+        return ("the LUT entry" if "LUT entry" in msg else "the contact") + " left the table"
+    m = re.search(r"failed at t = [^:]+: (.*)", msg)
+    reason = re.split(r"[:;(\[]", m.group(1) if m else msg)[0].strip()
+    return reason[:60].replace("|", "/") or "?"
+
+
+def hard_detail_block(build: str) -> str:
+    """docs/hard_cases.md: every combination with steps, flange loads and the hunting measures,
+    and the suite's verdict in one line."""
+    rows = hard_rows(build)
+    if not rows:
+        return missing(f"{build}/hard/hard_cases.csv (ctest -L hard)")
+    body = []
+    for r in rows:
+        status = r["status"] or "error"
+        if status == "failed":
+            status = "failed: " + failure_reason(r["message"] or "")
+        extra = []
+        if r["case"].startswith("hunting"):  # the hunting measures mean nothing elsewhere
+            if r.get("ws1_y_pp_last_mm") not in (None, "", "nan"):
+                extra.append(f"ws1 p-p last s {num(r['ws1_y_pp_last_mm']):.1f} mm")
+            extra.append("onset " + ("none" if r.get("onset_speed") in (None, "", "nan")
+                                     else f"{num(r['onset_speed']):.1f} m/s"))
+        body.append([r["case"], r["combination"], status, r["verdict"],
+                     fmt(num(r["t_reached"]), "{:.3f}"), fmt(num(r["cpu_s"]), "{:.2f}"),
+                     f"{int(num(r['rhs_evals'], 0))} (+{int(num(r['rhs_evals_jac'], 0))})",
+                     f"{int(num(r['steps'], 0))} ({int(num(r['rejected_steps'], 0))})",
+                     fmt(num(r["max_abs_y_mm"]), "{:.2f}"),
+                     f"{fmt(num(r.get('max_flange_kN')), '{:.0f}')} / "
+                     f"{fmt(num(r.get('max_normal_flange_kN')), '{:.0f}')}",
+                     fmt(num(r.get("flange_time_share")), "{:.2f}"),
+                     fmt(num(r.get("max_indent_mm")), "{:.4f}"),
+                     fmt(num(r["max_abs_yq"]), "{:.2f}"), ", ".join(extra)])
+    n = len(rows)
+    passed = sum(1 for r in rows if r["verdict"] == "pass")
+    finished = sum(1 for r in rows if r["status"] == "ok")
+    verdict = (f"{n} combinations: {passed} pass the suite's checks, {n - passed} fail them; "
+               f"{finished} finished, {n - finished} stopped with the clean failure (exit 2) "
+               f"or worse (see `test`).")
+    return (verdict + "\n\n" +
+            table(["case", "combination", "result", "test", "t reached [s]", "CPU [s]",
+                   "rhs evals (+FD Jac)", "steps (rejected)", "max abs y [mm]",
+                   "max flange N [kN] (LUT Hertz / flange patch)", "flange share",
+                   "max indent [mm]", "max abs Y/Q", "hunting"], body))
+
+
+# ---- validation (paper section 5.2, Tables 5 and 6; docs/validation.md) -----------------------
+
+def paper_validation() -> List[dict]:
+    here = os.path.dirname(os.path.abspath(__file__))
+    return read_csv(os.path.join(here, "..", "docs", "data", "paper_validation.csv"))
+
+
+def _y_psi(r: Optional[dict], key_y="y_mm", key_p="yaw_mrad") -> str:
+    if r is None:
+        return "–"
+    cell = f"{num(r[key_y]):.3f} / {num(r[key_p]):.3f}"
+    return cell + (" (failed run)" if r.get("status", "ok") != "ok" else "")
+
+
+def validation_blocks(outdir: str) -> Dict[str, str]:
+    d = os.path.join(outdir, "validation")
+    steady = read_csv(os.path.join(d, "validation_steady.csv"))
+    paper = paper_validation()
+    out = {}
+
+    def ours(case, radius, method, body):
+        return next((r for r in steady if r["case"] == str(case) and r["radius_m"] == radius
+                     and r["method"] == method and r["body"] == body), None)
+
+    def theirs(case, radius, source, body):
+        return next((p for p in paper if p["case"] == str(case) and p["radius_m"] == radius
+                     and p["source"] == source and p["body"] == body), None)
+
+    head = ["KEC (ours) y / psi", "LUT (ours) y / psi", "KEC (paper)", "LUT (paper)",
+            "UM (paper)"]
+    case1 = [r for r in steady if r["case"] == "1"]
+    if case1:
+        radii = sorted({r["radius_m"] for r in case1}, key=lambda x: num(x, 0))
+        body = [[R] + [_y_psi(ours(1, R, m, "ws")) for m in ("kec", "lut")] +
+                [_y_psi(theirs(1, R, src, "ws")) for src in ("KEC", "LUT", "UM")]
+                for R in radii]
+        out["validation_case1"] = (f"Mean over {case1[0]['window']} (y in mm, psi in mrad; "
+                                   f"paper: Table 5):\n\n" + table(["R [m]"] + head, body))
+    else:
+        out["validation_case1"] = missing("out/studies/validation/validation_steady.csv")
+    case2 = [r for r in steady if r["case"] == "2"]
+    if case2:
+        names = []
+        for r in case2:
+            if r["body"] not in names:
+                names.append(r["body"])
+        body = [[b] + [_y_psi(ours(2, "", m, b)) for m in ("kec", "lut")] +
+                [_y_psi(theirs(2, "500", src, b)) for src in ("KEC", "LUT", "UM")]
+                for b in names]
+        out["validation_case2"] = (f"Mean over {case2[0]['window']} (y in mm, psi in mrad; "
+                                   f"paper: Table 6):\n\n" + table(["body"] + head, body))
+    else:
+        out["validation_case2"] = missing("out/studies/validation/validation_steady.csv")
+
+    c3 = read_csv(os.path.join(d, "validation_case3.csv"))
+    if c3:
+        body = []
+        for r in c3:
+            flag = "" if r["kec_status"] == "ok" and r["lut_status"] == "ok" else " (failed run)"
+            body.append([r["solver"], r["wheelset"],
+                         f"{num(r['eq33_max_percent']):.1f} %{flag}",
+                         f"{num(r['eq33_mean_percent']):.1f} %",
+                         f"{num(r['max_abs_y_lut_mm']):.2f}"])
+        out["validation_case3"] = ("Eq. (33) difference of the wheelsets' lateral displacement, "
+                                   "KEC against LUT with the same solver, relative to max "
+                                   "|y_LUT|:\n\n" +
+                                   table(["solver", "wheelset", "max", "mean",
+                                          "max abs y_LUT [mm]"], body))
+    else:
+        out["validation_case3"] = missing("out/studies/validation/validation_case3.csv")
+
+    cost = read_csv(os.path.join(d, "validation_cost.csv"))
+    if cost:
+        body = []
+        for r in cost:
+            case = "1, R = " + r["radius_m"] + " m" if r["radius_m"] else r["case"]
+            ok = r["status"] == "ok"
+            cpu = (f"{num(r['cpu_median_s']):.3f} ({num(r['cpu_min_s']):.3f}-"
+                   f"{num(r['cpu_max_s']):.3f})" if ok else r["status"] or "error")
+            body.append([case, r["method"].upper(), r["solver"], fmt(num(r["t_reached_s"]),
+                                                                       "{:.2f}"),
+                         cpu, fmt(num(r["real_time_factor"]), "{:.1f}x"),
+                         f"{int(num(r['rhs_evals'], 0))} (+{int(num(r['rhs_evals_jac'], 0))})",
+                         f"{int(num(r['steps'], 0))} ({int(num(r['rejected_steps'], 0))})"])
+        out["validation_cost"] = ("CPU time of the integration (`/stats`, median (min-max) of "
+                                  "the repeats, one case at a time), real-time factor = "
+                                  "simulated / CPU time:\n\n" +
+                                  table(["case", "method", "solver", "simulated [s]",
+                                         "CPU [s]", "x real time", "rhs evals (+FD Jac)",
+                                         "steps (rejected)"], body))
+    else:
+        out["validation_cost"] = missing("out/studies/validation/validation_cost.csv")
+    return out
+
+
+# ---- provenance ---------------------------------------------------------------------------------
+
+# Where the runs behind each block were recorded: a study folder of OUT_DIR, a benchmark
+# (BENCH_OUTPUTS) or "hard" (the hard-case record). A block not listed here is stamped from
+# OUT_DIR/provenance.json (the `./wb studies` invocation).
+BLOCK_SOURCES = {
+    "efficiency": "efficiency_case3", "efficiency_paper": "efficiency_case3",
+    "accuracy": "efficiency_case3", "flange": "flange_stiffness",
+    "flange_paper": "flange_stiffness", "flange_accuracy": "flange_stiffness",
+    "refinement": "refinement", "work_precision": "work_precision", "hard_cases": "hard",
+    "hard_cases_detail": "hard", "effects": "effects", "speed": "speed", "bench": "bench",
+    "bench_integrators": "bench_integrators",
+    "validation_case1": "validation", "validation_case2": "validation",
+    "validation_case3": "validation", "validation_cost": "validation",
+}
+
+
+# Benchmark sources: their JSON output (and provenance record) in OUT_DIR.
+BENCH_OUTPUTS = {"bench": "bench_wagon", "bench_integrators": "bench_integrators"}
+
+
+def block_provenance(name: str, outdir: str, build: str) -> List[dict]:
+    src = BLOCK_SOURCES.get(name)
+    if src == "hard":
+        seen = []
+        for r in hard_rows(build):
+            e = provenance.from_tag(r.get("commit") or "", r.get("run_date") or "")
+            if not r.get("commit"):
+                return []  # a record from before the suite wrote its commit: unknown
+            if e not in seen:
+                seen.append(e)
+        return seen
+    if src in BENCH_OUTPUTS:
+        return provenance.read(os.path.join(outdir, BENCH_OUTPUTS[src] + ".provenance.json"))
+    if src:
+        return provenance.read(os.path.join(outdir, src, "provenance.json"))
+    return provenance.read(os.path.join(outdir, "provenance.json"))
 
 
 # ---- figures -----------------------------------------------------------------------------------
 
 STUDIES = ("efficiency_case3", "flange_stiffness", "refinement", "work_precision", "effects",
-           "speed")
+           "speed", "validation")
 
 
-def copy_figures(outdir: str, docs: str) -> List[str]:
-    """Copies the figures the pages show (`figures/<study>_<name>.png` in studies.md and
-    performance.md, from OUT/<study>/study_<name>.png) and nothing else."""
+def copy_figures(outdir: str, docs: str, pages) -> List[str]:
+    """Copies the figures the pages show (`figures/<study>_<name>.png`, from
+    OUT/<study>/study_<name>.png) and nothing else."""
     figdir = os.path.join(docs, "figures")
     os.makedirs(figdir, exist_ok=True)
     wanted = set()
-    for md in ("studies.md", "performance.md"):
-        with open(os.path.join(docs, md)) as f:
-            wanted.update(re.findall(r"figures/([\w.+-]+\.png)", f.read()))
+    for md in pages:
+        path = os.path.join(docs, md)
+        if os.path.exists(path):
+            with open(path) as f:
+                wanted.update(re.findall(r"figures/([\w.+-]+\.png)", f.read()))
     copied = []
     for name in sorted(wanted):
         study = next((st for st in STUDIES if name.startswith(st + "_")), None)
@@ -429,6 +669,29 @@ def copy_figures(outdir: str, docs: str) -> List[str]:
     return copied
 
 
+# ---- the pages ---------------------------------------------------------------------------------
+
+def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
+    """Every generated block of docs/: page -> block name -> content (without the stamp)."""
+    blocks: Dict[str, Dict[str, str]] = {"studies.md": {}, "performance.md": {},
+                                         "validation.md": {}, "hard_cases.md": {},
+                                         "integrators.md": {}}
+    blocks["studies.md"].update(efficiency_block(outdir))
+    blocks["studies.md"]["accuracy"] = accuracy_block(outdir)
+    blocks["studies.md"].update(efficiency_block(outdir, "flange_stiffness", "flange"))
+    blocks["studies.md"]["flange_accuracy"] = accuracy_block(outdir, "flange_stiffness")
+    blocks["studies.md"]["refinement"] = refinement_block(outdir)
+    blocks["studies.md"]["work_precision"] = work_precision_block(outdir)
+    blocks["studies.md"]["hard_cases"] = hard_block(build)
+    blocks["performance.md"]["effects"] = effects_block(outdir)
+    blocks["performance.md"]["speed"] = speed_block(outdir)
+    blocks["performance.md"]["bench"] = bench_block(outdir)
+    blocks["validation.md"].update(validation_blocks(outdir))
+    blocks["hard_cases.md"]["hard_cases_detail"] = hard_detail_block(build)
+    blocks["integrators.md"]["bench_integrators"] = bench_integrators_block(outdir)
+    return blocks
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("outdir")
@@ -436,31 +699,22 @@ def main(argv=None) -> int:
     ap.add_argument("--docs", default=os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                                    "..", "docs"))
     a = ap.parse_args(argv)
-    blocks = {"studies.md": {}, "performance.md": {}}
-    blocks["studies.md"].update(efficiency_block(a.outdir))
-    blocks["studies.md"]["accuracy"] = accuracy_block(a.outdir)
-    blocks["studies.md"].update(efficiency_block(a.outdir, "flange_stiffness", "flange"))
-    blocks["studies.md"]["flange_accuracy"] = accuracy_block(a.outdir, "flange_stiffness")
-    blocks["studies.md"]["refinement"] = refinement_block(a.outdir)
-    blocks["studies.md"]["work_precision"] = work_precision_block(a.outdir)
-    blocks["studies.md"]["hard_cases"] = hard_block(a.build)
-    blocks["performance.md"]["effects"] = effects_block(a.outdir)
-    blocks["performance.md"]["speed"] = speed_block(a.outdir)
-    blocks["performance.md"]["bench"] = bench_block(a.outdir)
+    blocks = generate(a.outdir, a.build)
     for md, items in blocks.items():
         path = os.path.join(a.docs, md)
         with open(path) as f:
             text = f.read()
         for name, body in items.items():
+            stamp = provenance.stamp(block_provenance(name, a.outdir, a.build))
             try:
-                text = replace_block(text, name, body)
+                text = replace_block(text, name, body, stamp)
             except KeyError as e:
                 print(f"update_docs: {path}: {e}", file=sys.stderr)
                 return 1
         with open(path, "w") as f:
             f.write(text)
         print(f"updated {path}")
-    for p in copy_figures(a.outdir, a.docs):
+    for p in copy_figures(a.outdir, a.docs, blocks):
         print(f"copied {p}")
     return 0
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "h5read.hpp"
-#include "workbench/app/simulate.hpp"
+#include "workbench/run/simulate.hpp"
 
 namespace fs = std::filesystem;
 
@@ -33,8 +33,8 @@ std::string tmpFile(const std::string& name) {
   return (d / name).string();
 }
 
-rb::app::SimulationRequest request(Oscillator& sys, const std::string& method) {
-  rb::app::SimulationRequest r;
+rb::run::SimulationRequest request(Oscillator& sys, const std::string& method) {
+  rb::run::SimulationRequest r;
   r.system = &sys;
   r.solver.method = method;
   r.solver.step = 1e-3;
@@ -60,7 +60,7 @@ TEST(Simulate, WritesSeriesAndStats) {
     std::string path = tmpFile("ok_" + method + ".h5");
     {
       rb::io::ResultFile f(path);
-      auto res = rb::app::simulate(request(sys, method), f);
+      auto res = rb::run::simulate(request(sys, method), f);
       EXPECT_TRUE(res.ok) << res.message;
       f.finalize();
     }
@@ -86,12 +86,12 @@ TEST(Simulate, FatalFailureKeepsPartialOutputAndSaysWhere) {
   rb::integ::RunResult res;
   {
     rb::io::ResultFile f(path);
-    res = rb::app::simulate(request(sys, "abm"), f);
+    res = rb::run::simulate(request(sys, "abm"), f);
     f.finalize();
   }
   EXPECT_FALSE(res.ok);
   EXPECT_NE(res.message.find("t = 0.49"), std::string::npos) << res.message;
-  EXPECT_NE(res.message.find("distance 9.8 m"), std::string::npos) << res.message;
+  EXPECT_NE(res.message.find("(leading wheelset at s = 9.98 m)"), std::string::npos) << res.message;
   hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   auto t = h5test::dataset(f, "/time");
   ASSERT_EQ(t.size(), 50u);  // 0 .. 0.49 s kept
@@ -107,7 +107,7 @@ TEST(Simulate, NanIsCaughtAndNamed) {
     sys.nan = true;
     std::string path = tmpFile("nan_" + method + ".h5");
     rb::io::ResultFile f(path);
-    auto res = rb::app::simulate(request(sys, method), f);
+    auto res = rb::run::simulate(request(sys, method), f);
     f.finalize();
     EXPECT_FALSE(res.ok) << method;
     EXPECT_NE(res.message.find("NaN"), std::string::npos) << res.message;
@@ -121,6 +121,6 @@ TEST(Simulate, OutputIntervalMustFitFixedStep) {
   auto r = request(sys, "rk4");
   r.solver.step = 3e-3;  // 0.01 s is not a multiple of 3 ms
   rb::io::ResultFile f(tmpFile("grid.h5"));
-  EXPECT_THROW(rb::app::simulate(r, f), rb::InputError);
+  EXPECT_THROW(rb::run::simulate(r, f), rb::InputError);
   f.finalize();
 }

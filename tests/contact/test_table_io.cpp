@@ -12,7 +12,10 @@
 #include <thread>
 #include <vector>
 
+#include <sys/stat.h>
+
 #include "contact_tables.hpp"
+#include "railbench/version.hpp"
 #include "workbench/contact/table_io.hpp"
 
 namespace {
@@ -212,13 +215,14 @@ void expectSameKecMeta(const KecTable& a, const KecTable& b) {
 
 TEST(TableIo, LutRoundTripIsBitIdentical) {
   TempDir dir;
-  for (const LutTable* t : {&rbtest::coneLut(), &rbtest::s1002Lut()}) {
+  for (auto [t, cfg] : {std::pair{&rbtest::coneLut(), rbtest::coneConfig()},
+                        std::pair{&rbtest::s1002Lut(), rbtest::s1002On60E1()}}) {
     const std::string path = dir.file("t.lut");
-    saveTable(*t, path);
+    saveTable(*t, cfg, path);
     EXPECT_FALSE(fs::exists(path + ".tmp"));
     std::printf("    LUT file %.2f MB\n", static_cast<double>(fs::file_size(path)) / 1e6);
     const auto t0 = std::chrono::steady_clock::now();
-    std::optional<LutTable> back = loadLut(path, t->configHash());
+    std::optional<LutTable> back = loadLut(path, cfg);
     const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("    LUT load %.1f ms (built in %.1f ms)\n", dt * 1e3,
                 t->stats().build_seconds * 1e3);
@@ -233,10 +237,11 @@ TEST(TableIo, LutRoundTripIsBitIdentical) {
 
 TEST(TableIo, KecRoundTripIsBitIdenticalWithTheSplineRebuilt) {
   TempDir dir;
-  for (const KecTable* t : {&rbtest::coneKec(), &rbtest::s1002Kec()}) {
+  for (auto [t, cfg] : {std::pair{&rbtest::coneKec(), rbtest::coneConfig()},
+                        std::pair{&rbtest::s1002Kec(), rbtest::s1002On60E1()}}) {
     const std::string path = dir.file("t.kec");
-    saveTable(*t, path);
-    std::optional<KecTable> back = loadKec(path, t->configHash());
+    saveTable(*t, cfg, path);
+    std::optional<KecTable> back = loadKec(path, cfg);
     ASSERT_TRUE(back.has_value());
     expectSameKecMeta(*t, *back);
     EXPECT_EQ(kecMismatches(*t, *back), 0u);
@@ -249,35 +254,38 @@ TEST(TableIo, BadFilesGiveNullopt) {
   TempDir dir;
   const LutTable& lut = rbtest::coneLut();
   const KecTable& kec = rbtest::coneKec();
+  const ContactGeometryConfig cfg = rbtest::coneConfig();
+  ContactGeometryConfig other = cfg;
+  other.beta = 1.0 / 20.0;
   const std::string lp = dir.file("a.lut"), kp = dir.file("a.kec"), bad = dir.file("bad");
-  saveTable(lut, lp);
-  saveTable(kec, kp);
+  saveTable(lut, cfg, lp);
+  saveTable(kec, cfg, kp);
   const std::string lbytes = readBytes(lp), kbytes = readBytes(kp);
-  ASSERT_TRUE(loadLut(lp, lut.configHash()));
-  ASSERT_TRUE(loadKec(kp, kec.configHash()));
+  ASSERT_TRUE(loadLut(lp, cfg));
+  ASSERT_TRUE(loadKec(kp, cfg));
 
   // Missing, empty, garbage.
-  EXPECT_FALSE(loadLut(dir.file("missing.lut"), lut.configHash()));
-  EXPECT_FALSE(loadLut(dir.path().string(), lut.configHash()));  // a directory
+  EXPECT_FALSE(loadLut(dir.file("missing.lut"), cfg));
+  EXPECT_FALSE(loadLut(dir.path().string(), cfg));  // a directory
   writeBytes(bad, "");
-  EXPECT_FALSE(loadLut(bad, lut.configHash()));
+  EXPECT_FALSE(loadLut(bad, cfg));
   writeBytes(bad, std::string(1000, 'x'));
-  EXPECT_FALSE(loadKec(bad, kec.configHash()));
-  // Wrong hash, wrong magic (a LUT read as a KEC and vice versa, an edited magic).
-  EXPECT_FALSE(loadLut(lp, lut.configHash() ^ 1));
-  EXPECT_FALSE(loadKec(kp, kec.configHash() + 1));
-  EXPECT_FALSE(loadKec(lp, lut.configHash()));
-  EXPECT_FALSE(loadLut(kp, kec.configHash()));
+  EXPECT_FALSE(loadKec(bad, cfg));
+  // Other inputs, wrong magic (a LUT read as a KEC and vice versa, an edited magic).
+  EXPECT_FALSE(loadLut(lp, other));
+  EXPECT_FALSE(loadKec(kp, other));
+  EXPECT_FALSE(loadKec(lp, cfg));
+  EXPECT_FALSE(loadLut(kp, cfg));
   std::string b = lbytes;
   b[10] = 'X';  // "railbench-Xut"
   writeBytes(bad, b);
-  EXPECT_FALSE(loadLut(bad, lut.configHash()));
-  // Version mismatch (bytes 24..31), byte-order marker (16..23).
-  for (std::size_t at : {16u, 24u}) {
+  EXPECT_FALSE(loadLut(bad, cfg));
+  // Byte-order marker (16..23), format version (24..31), algorithm version (32..39).
+  for (std::size_t at : {16u, 24u, 32u}) {
     b = lbytes;
     b[at] = static_cast<char>(b[at] + 1);
     writeBytes(bad, b);
-    EXPECT_FALSE(loadLut(bad, lut.configHash())) << "byte " << at;
+    EXPECT_FALSE(loadLut(bad, cfg)) << "byte " << at;
   }
   // Truncated anywhere (including right after the header and one byte short), extended.
   for (const std::string* bytes : {&lbytes, &kbytes}) {
@@ -285,12 +293,12 @@ TEST(TableIo, BadFilesGiveNullopt) {
     for (std::size_t len : {std::size_t{0}, std::size_t{15}, std::size_t{48}, std::size_t{56},
                             n / 3, n / 2, n - 9, n - 8, n - 1}) {
       writeBytes(bad, bytes->substr(0, len));
-      EXPECT_FALSE(loadLut(bad, lut.configHash())) << len;
-      EXPECT_FALSE(loadKec(bad, kec.configHash())) << len;
+      EXPECT_FALSE(loadLut(bad, cfg)) << len;
+      EXPECT_FALSE(loadKec(bad, cfg)) << len;
     }
     writeBytes(bad, *bytes + "x");
-    EXPECT_FALSE(loadLut(bad, lut.configHash()));
-    EXPECT_FALSE(loadKec(bad, kec.configHash()));
+    EXPECT_FALSE(loadLut(bad, cfg));
+    EXPECT_FALSE(loadKec(bad, cfg));
   }
   // A single flipped bit anywhere (header, sizes, data, strings, checksum).
   std::mt19937_64 rng(3);
@@ -303,22 +311,22 @@ TEST(TableIo, BadFilesGiveNullopt) {
       b = *bytes;
       b[at] = static_cast<char>(b[at] ^ (1 << (rng() % 8)));
       writeBytes(bad, b);
-      EXPECT_FALSE(loadLut(bad, lut.configHash())) << "byte " << at;
-      EXPECT_FALSE(loadKec(bad, kec.configHash())) << "byte " << at;
+      EXPECT_FALSE(loadLut(bad, cfg)) << "byte " << at;
+      EXPECT_FALSE(loadKec(bad, cfg)) << "byte " << at;
       ++tried;
     }
   }
   std::printf("    %d single-bit corruptions rejected\n", tried);
   // The good files are untouched.
-  EXPECT_TRUE(loadLut(lp, lut.configHash()));
-  EXPECT_TRUE(loadKec(kp, kec.configHash()));
+  EXPECT_TRUE(loadLut(lp, cfg));
+  EXPECT_TRUE(loadKec(kp, cfg));
 }
 
 TEST(TableIo, SaveErrorsThrowNamingThePath) {
   TempDir dir;
   const std::string path = dir.file("no/such/dir/t.lut");
   try {
-    saveTable(rbtest::coneLut(), path);
+    saveTable(rbtest::coneLut(), rbtest::coneConfig(), path);
     FAIL() << "no exception";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
@@ -326,7 +334,7 @@ TEST(TableIo, SaveErrorsThrowNamingThePath) {
   // Target is a directory: the rename fails, the temporary file is removed.
   const std::string target = dir.file("d.kec");
   fs::create_directories(fs::path(target) / "x");
-  EXPECT_THROW(saveTable(rbtest::coneKec(), target), std::runtime_error);
+  EXPECT_THROW(saveTable(rbtest::coneKec(), rbtest::coneConfig(), target), std::runtime_error);
   std::size_t files = 0;
   for (const auto& e : fs::directory_iterator(dir.path())) files += e.is_regular_file();
   EXPECT_EQ(files, 0u);
@@ -354,7 +362,8 @@ TEST(TableIo, DiskCacheBuildsOnceThenLoads) {
     kec1 = cache.kec(cfg, &built);
     const double tkb = ms(t0);
     EXPECT_TRUE(built);
-    EXPECT_EQ(cache.lutPath(cfg), (fs::path(sub) / (hashHex(configHash(cfg)) + ".lut")).string());
+    EXPECT_EQ(fs::path(cache.lutPath(cfg)).parent_path(), fs::path(sub));
+    EXPECT_EQ(fs::path(cache.lutPath(cfg)).extension(), ".lut");
     EXPECT_TRUE(fs::exists(cache.lutPath(cfg)));
     EXPECT_TRUE(fs::exists(cache.kecPath(cfg)));
     // A second cache object on the same directory stands for the next process of a sweep.
@@ -407,7 +416,7 @@ TEST(TableIo, DiskCacheKeysOnTheConfigAndRepairsBadFiles) {
   writeBytes(cache.lutPath(a), bytes.substr(0, bytes.size() / 2));
   auto la2 = cache.lut(a, &built);
   EXPECT_TRUE(built);
-  EXPECT_TRUE(loadLut(cache.lutPath(a), configHash(a)));
+  EXPECT_TRUE(loadLut(cache.lutPath(a), a));
   cache.lut(a, &built);
   EXPECT_FALSE(built);
   EXPECT_EQ(lutMismatches(*la, *la2), 0u);
@@ -435,6 +444,114 @@ TEST(TableIo, RacingWritersLeaveOneValidFile) {
   std::size_t entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir.path())) ++entries;
   EXPECT_EQ(entries, 1u);
+}
+
+// The checksum a forger recomputes after editing a file (FNV-1a 64 over 8-byte words, then the
+// tail bytes, of everything before the checksum), as table_io.cpp writes it.
+std::string withChecksum(std::string bytes) {
+  bytes.resize(bytes.size() - 8);
+  std::uint64_t h = 14695981039346656037ULL;
+  std::size_t i = 0;
+  for (; i + 8 <= bytes.size(); i += 8) {
+    std::uint64_t w;
+    std::memcpy(&w, bytes.data() + i, 8);
+    h = (h ^ w) * 1099511628211ULL;
+  }
+  for (; i < bytes.size(); ++i) h = (h ^ static_cast<unsigned char>(bytes[i])) * 1099511628211ULL;
+  bytes.append(reinterpret_cast<const char*>(&h), 8);
+  return bytes;
+}
+
+TEST(TableIo, KeyHoldsEveryInputAndTheVersions) {
+  const ContactGeometryConfig a = rbtest::coneConfig();
+  const std::string key = tableInputKey(a, TableKind::Kec);
+  EXPECT_NE(key.find("algorithm=" + std::to_string(kTableAlgorithmVersion) + "\n"),
+            std::string::npos);
+  EXPECT_NE(key.find(std::string("workbench=") + rb::kVersion + "\n"), std::string::npos);
+  EXPECT_EQ(key, tableInputKey(rbtest::coneConfig(), TableKind::Kec));
+  EXPECT_NE(key, tableInputKey(a, TableKind::Lut));
+  ContactGeometryConfig b = a;
+  b.newton_max_iter += 1;
+  EXPECT_NE(key, tableInputKey(b, TableKind::Kec));
+  b = a;
+  b.kec_dbar *= 1.0 + 1e-15;
+  EXPECT_NE(key, tableInputKey(b, TableKind::Kec));
+  b = a;
+  b.right_wheel = b.left_wheel;  // same samples, not mirrored
+  EXPECT_NE(key, tableInputKey(b, TableKind::Kec));
+}
+
+// A valid file of one table placed under another table's name, with its header rewritten and
+// its checksum recomputed, must not load for that other table; nor may a file claiming another
+// table-algorithm version or workbench version. The cache then rebuilds the right table.
+TEST(TableIo, ForgedFileForAnotherTableIsRebuilt) {
+  TempDir dir;
+  DiskTableCache cache(dir.path().string());
+  const ContactGeometryConfig a = rbtest::coneConfig();
+  ContactGeometryConfig b = a;
+  b.beta = 1.0 / 20.0;
+  bool built = false;
+  const auto ka = cache.kec(a, &built);
+  const auto kb = cache.kec(b, &built);
+  const std::string fileA = readBytes(cache.kecPath(a));
+  const std::string fileB = readBytes(cache.kecPath(b));
+
+  // A's file under B's name, every header word B's, checksum recomputed: the stored key still
+  // describes A.
+  std::string forged = fileA;
+  std::memcpy(forged.data() + 16, fileB.data() + 16, 32);  // byte order, versions, key size
+  writeBytes(cache.kecPath(b), withChecksum(forged));
+  EXPECT_FALSE(loadKec(cache.kecPath(b), b));
+  writeBytes(cache.kecPath(b), fileA);  // plainly copied
+  EXPECT_FALSE(loadKec(cache.kecPath(b), b));
+  const auto again = cache.kec(b, &built);
+  EXPECT_TRUE(built);
+  EXPECT_EQ(kecMismatches(*kb, *again), 0u);
+  EXPECT_NE(kecMismatches(*ka, *again), 0u);
+  EXPECT_TRUE(loadKec(cache.kecPath(b), b));
+
+  // Another table-algorithm version (bytes 32..39), checksum recomputed.
+  forged = fileA;
+  forged[32] = static_cast<char>(forged[32] + 1);
+  writeBytes(cache.kecPath(a), withChecksum(forged));
+  EXPECT_FALSE(loadKec(cache.kecPath(a), a));
+  // Another workbench version inside the key, checksum recomputed.
+  forged = fileA;
+  const std::size_t at = forged.find(std::string("workbench=") + rb::kVersion);
+  ASSERT_NE(at, std::string::npos);
+  forged[at + 10] = forged[at + 10] == '9' ? '8' : '9';
+  writeBytes(cache.kecPath(a), withChecksum(forged));
+  EXPECT_FALSE(loadKec(cache.kecPath(a), a));
+  // Unchanged bytes with a recomputed checksum still load (the forging helper is right).
+  writeBytes(cache.kecPath(a), withChecksum(fileA));
+  EXPECT_TRUE(loadKec(cache.kecPath(a), a));
+}
+
+// A FIFO where a cache file should be is a miss (the table is built and the FIFO replaced by the
+// file), never a read that blocks forever.
+TEST(TableIo, FifoInTheCacheIsAMiss) {
+  TempDir dir;
+  DiskTableCache cache(dir.path().string());
+  const ContactGeometryConfig cfg = rbtest::coneConfig();
+  ASSERT_EQ(mkfifo(cache.lutPath(cfg).c_str(), 0644), 0);
+  EXPECT_FALSE(loadLut(cache.lutPath(cfg), cfg));
+  bool built = false;
+  EXPECT_TRUE(cache.lut(cfg, &built));
+  EXPECT_TRUE(built);
+  EXPECT_TRUE(fs::is_regular_file(cache.lutPath(cfg)));
+}
+
+// A cache folder that cannot be written: the built table is returned all the same, with the
+// reason, instead of being lost to an exception.
+TEST(TableIo, UnwritableCacheFolderKeepsTheBuiltTable) {
+  DiskTableCache cache("/proc/self");  // exists, not writable even by root
+  bool built = false;
+  std::string why;
+  auto t = cache.lut(rbtest::coneConfig(), &built, &why);
+  ASSERT_TRUE(t);
+  EXPECT_TRUE(built);
+  EXPECT_NE(why.find("/proc/self"), std::string::npos) << why;
+  EXPECT_THROW(cache.lut(rbtest::coneConfig()), std::runtime_error);  // without a reason slot
 }
 
 }  // namespace

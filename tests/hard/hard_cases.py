@@ -14,8 +14,10 @@ through the real command line and checks every result:
   the case's bounds;
 * combinations marked expect="ok" must finish (the reference of each case: the test can fail).
 
-Per combination it records ok/failed, the failure reason, CPU time, evaluations and steps in
-<out-dir>/<case>.csv and prints a table. `--summary` merges all CSVs into hard_cases.csv.
+Per combination it records ok/failed, the failure reason, CPU time, evaluations and steps, and
+the git commit of the tree it ran (`commit`: abc1234 or abc1234+dirty, `run_date`) in
+<out-dir>/<case>.csv and prints a table. `--summary` merges all CSVs into hard_cases.csv, the
+record that plots/update_docs.py turns into the tables of docs/hard_cases.md and docs/studies.md.
 
 usage: hard_cases.py --workbench BIN --case NAME --out-dir DIR
        hard_cases.py --summary --out-dir DIR
@@ -34,6 +36,8 @@ import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "plots"))
+import provenance  # noqa: E402  (the commit each record row was run with, for docs/ stamps)
 
 # Fixed-step and adaptive settings used by the cases. Adaptive methods run with rtol = atol
 # (as the paper) and the paper's 1 ms maximum step (section 5.4). bdf uses consistent normal
@@ -225,7 +229,8 @@ FIELDS = ["case", "combination", "expect", "rc", "status", "verdict", "t_reached
           "cpu_s", "wall_s", "rhs_evals", "rhs_evals_jac", "steps", "rejected_steps",
           "jacobian_evals", "max_abs_y_mm", "max_normal_kN", "min_normal_kN", "max_flange_kN",
           "max_normal_flange_kN", "flange_time_share",
-          "max_indent_mm", "max_abs_yq", "ws1_y_pp_last_mm", "onset_t", "onset_speed", "problems", "notes", "message"]
+          "max_indent_mm", "max_abs_yq", "ws1_y_pp_last_mm", "onset_t", "onset_speed", "problems", "notes", "message",
+          "commit", "run_date"]
 
 
 def attr(g, name, default=None):
@@ -415,8 +420,10 @@ def run_case(args):
     rows = []
     failures = []
     env = dict(os.environ, RAILBENCH_ROOT=ROOT)
+    tree = provenance.current(ROOT)
     for c in case["combos"]:
-        row = {"case": args.case, "combination": c["label"], "expect": c["expect"]}
+        row = {"case": args.case, "combination": c["label"], "expect": c["expect"],
+               "commit": provenance.tag(tree), "run_date": tree["date"]}
         sets = case.get("sets", []) + c["sets"]
         t_end = t_end_of(args.workbench, case["scenario"], sets)
         tag = re.sub(r"[^A-Za-z0-9]+", "_", c["label"]).strip("_")

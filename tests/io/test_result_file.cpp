@@ -1,9 +1,12 @@
-// The result file: written under .tmp and renamed on finalize; series keep what was appended when
-// a run stops early; every dataset carries its units.
+// The result file: written under a temporary of its own and renamed on finalize only; a file not
+// finalized never touches the final name; series keep what was appended when a run stops early;
+// every dataset carries its units.
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "workbench/io/result_file.hpp"
 
@@ -39,7 +42,8 @@ TEST(ResultFile, TmpThenRenameWithUnitsAndSeries) {
   fs::remove(path);
   {
     rb::io::ResultFile f(path);
-    EXPECT_TRUE(fs::exists(path + ".tmp"));
+    EXPECT_TRUE(fs::exists(f.tmpPath()));
+    EXPECT_EQ(f.tmpPath().rfind(path + ".tmp.", 0), 0u) << f.tmpPath();
     EXPECT_FALSE(fs::exists(path));
     f.attr("/", "version", std::string("x"));
     f.attr("/stats", "rhs_evals", std::int64_t{42});
@@ -51,7 +55,8 @@ TEST(ResultFile, TmpThenRenameWithUnitsAndSeries) {
     f.finalize();
   }
   EXPECT_TRUE(fs::exists(path));
-  EXPECT_FALSE(fs::exists(path + ".tmp"));
+  for (const auto& e : fs::directory_iterator(dir))
+    EXPECT_EQ(e.path().filename().string().find("r.h5.tmp"), std::string::npos) << e.path();
   hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(f, 0);
   auto s = readDataset(f, "/track/centreline/s");
@@ -73,7 +78,87 @@ TEST(ResultFile, UncreatableFileIsAClearError) {
   try {
     rb::io::ResultFile f("/nonexistent_dir_rb/x.h5");
     FAIL();
-  } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()), "HDF5: cannot create file '/nonexistent_dir_rb/x.h5.tmp'");
+  } catch (const rb::io::WriteError& e) {
+    EXPECT_NE(
+        std::string(e.what()).find("cannot create the result file '/nonexistent_dir_rb/x.h5.tmp."),
+        std::string::npos)
+        << e.what();
   }
+}
+
+namespace {
+std::string bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+}  // namespace
+
+// A file that is not finalized (an exception, a run that did not start) is deleted and leaves an
+// earlier result as it was.
+TEST(ResultFile, NotFinalizedNeverReplacesTheResult) {
+  fs::path dir = fs::temp_directory_path() / "rb_test_io_keep";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string path = (dir / "r.h5").string();
+  {
+    rb::io::ResultFile f(path);
+    f.attr("/", "version", std::string("good"));
+    f.finalize();
+  }
+  const std::string good = bytes(path);
+  std::string tmp;
+  {
+    rb::io::ResultFile f(path);
+    tmp = f.tmpPath();
+    f.attr("/", "version", std::string("half written"));
+    f.series("/time", "s").append(1.0);
+  }
+  EXPECT_EQ(bytes(path), good);
+  EXPECT_FALSE(fs::exists(tmp));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+// Two writers of one result never share a temporary: each file is complete, the last finalized
+// one is the result.
+TEST(ResultFile, ConcurrentWritersHaveTheirOwnTemporaries) {
+  fs::path dir = fs::temp_directory_path() / "rb_test_io_two";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string path = (dir / "r.h5").string();
+  rb::io::ResultFile a(path);
+  rb::io::ResultFile b(path);
+  EXPECT_NE(a.tmpPath(), b.tmpPath());
+  auto& ta = a.series("/time", "s");
+  auto& tb = b.series("/time", "s");
+  for (int i = 0; i < 5000; ++i) {
+    ta.append(i);
+    tb.append(-i);
+  }
+  b.finalize();
+  a.finalize();
+  hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  const auto t = readDataset(f, "/time");
+  H5Fclose(f);
+  ASSERT_EQ(t.size(), 5000u);
+  EXPECT_EQ(t[4999], 4999.0);  // a's data, whole
+}
+
+// Attributes beyond the 64 KiB of an object header (a large scenario text) are stored densely.
+TEST(ResultFile, LargeStringAttribute) {
+  fs::path dir = fs::temp_directory_path() / "rb_test_io_large";
+  fs::create_directories(dir);
+  const std::string path = (dir / "r.h5").string();
+  const std::string text(200000, 'x');
+  {
+    rb::io::ResultFile f(path);
+    f.attr("/", "scenario_text", text);
+    f.attr("/stats", "message", text);
+    f.finalize();
+  }
+  hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  hid_t root = H5Gopen2(f, "/", H5P_DEFAULT);
+  EXPECT_EQ(readStringAttr(root, "scenario_text"), text);
+  H5Gclose(root);
+  H5Fclose(f);
 }

@@ -1,6 +1,7 @@
 // Profile file readers (SIMPACK .prw/.prr, plain text), the smoothing spline, and the bad-file
 // diagnostics ("file:line: message").
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <cstdio>
@@ -247,5 +248,138 @@ TEST(ProfileFiles, BadSimpackFiles) {
   EXPECT_NO_THROW(
       readProfileFile(dataFile("bad_type.prr"), ProfileKind::Rail, LengthUnit::Metre, {}));
 }
+
+// ---- Hostile files: bounded reading ---------------------------------------------------------
+
+namespace bounded {
+
+std::string textErrorAt(const std::string& path) {
+  return errorOf([&] { readTextProfile(path, ProfileKind::Rail, LengthUnit::Millimetre); });
+}
+
+std::string tempPath(const std::string& name) {
+  return ::testing::TempDir() + "rb_profile_io_" + name;
+}
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const std::string path = tempPath(name);
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  EXPECT_NE(f, nullptr);
+  std::fwrite(text.data(), 1, text.size(), f);
+  std::fclose(f);
+  return path;
+}
+
+// `n` points of a plausible rail head in mm, one per line from line 1.
+std::string railPoints(std::size_t n) {
+  std::string text;
+  char line[64];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double y = -30.0 + 60.0 * static_cast<double>(i) / static_cast<double>(n);
+    std::snprintf(line, sizeof line, "%.9f %.6f\n", y, -y * y / 600.0);
+    text += line;
+  }
+  return text;
+}
+
+TEST(ProfileFiles, RefusesMoreThanTheMaximumNumberOfPoints) {
+  const std::string path = writeTemp("too_many.txt", railPoints(kMaxProfilePoints + 5));
+  const std::string line = std::to_string(kMaxProfilePoints + 1);
+  EXPECT_EQ(textErrorAt(path), path + ":" + line + ": more than " +
+                                   std::to_string(kMaxProfilePoints) +
+                                   " profile points (a measured profile has a few thousand): thin "
+                                   "the data");
+  // The same bound in a SIMPACK point block (line 1 is point.begin).
+  const std::string simpack = "point.begin\n" + railPoints(kMaxProfilePoints + 1) + "point.end\n";
+  EXPECT_EQ(errorOf([&] { parseSimpackPoints(simpack, "many.prr"); }),
+            "many.prr:" + std::to_string(kMaxProfilePoints + 2) + ": more than " +
+                std::to_string(kMaxProfilePoints) +
+                " profile points (a measured profile has a few thousand): thin the data");
+  // Exactly the maximum is accepted.
+  EXPECT_EQ(parseTextPoints(railPoints(kMaxProfilePoints), "max.txt", ProfileKind::Rail,
+                            LengthUnit::Millimetre)
+                .y.size(),
+            kMaxProfilePoints);
+}
+
+TEST(ProfileFiles, RefusesFilesAboveTheSizeBound) {
+  const std::string path = tempPath("huge.txt");
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  ASSERT_NE(f, nullptr);
+  // A sparse file: the size is checked before anything is read.
+  ASSERT_EQ(std::fseek(f, static_cast<long>(kMaxProfileFileBytes), SEEK_SET), 0);
+  std::fputc('\n', f);
+  std::fclose(f);
+  EXPECT_EQ(textErrorAt(path), path + ": cannot open profile file: larger than 32 MiB (32 MiB)");
+  std::remove(path.c_str());
+}
+
+TEST(ProfileFiles, RefusesFifosAndFolders) {
+  const std::string fifo = tempPath("fifo.txt");
+  std::remove(fifo.c_str());
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // Opening a FIFO for reading would block until a writer comes: it must be refused before.
+  EXPECT_EQ(textErrorAt(fifo), fifo + ": cannot open profile file: not a regular file (a FIFO)");
+  std::remove(fifo.c_str());
+  const std::string dir = ::testing::TempDir();
+  EXPECT_EQ(errorOf([&] { readSimpackProfile(dir); }),
+            dir + ": cannot open profile file: not a regular file (a folder)");
+}
+
+TEST(ProfileFiles, ReportsAtMostTwentyProblemsPerFile) {
+  std::string text;
+  for (int i = 0; i < 1000; ++i) text += "1 x\n";
+  try {
+    parseTextPoints("0 0\n" + text, "garbage.txt", ProfileKind::Rail, LengthUnit::Millimetre);
+    ADD_FAILURE() << "no error";
+  } catch (const rb::InputError& e) {
+    ASSERT_EQ(e.diagnostics().size(), 21u);
+    EXPECT_EQ(e.diagnostics()[0].str(), "garbage.txt:2: non-numeric profile data \"x\"");
+    EXPECT_EQ(e.diagnostics()[20].str(),
+              "garbage.txt:21: too many problems; the rest of the file was not checked");
+  }
+}
+
+TEST(ProfileFiles, ParsingFromMemoryEqualsReadingTheFile) {
+  const std::string text = railPoints(50);
+  const std::string path = writeTemp("same.txt", text);
+  const ProfilePoints a = readTextPoints(path, ProfileKind::Rail, LengthUnit::Millimetre);
+  const ProfilePoints b = parseTextPoints(text, path, ProfileKind::Rail, LengthUnit::Millimetre);
+  EXPECT_EQ(a.y, b.y);
+  EXPECT_EQ(a.z, b.z);
+  EXPECT_EQ(a.line, b.line);
+  // A last line without '\n' and CRLF line ends are read too.
+  const ProfilePoints c =
+      parseTextPoints("1 0\r\n2 0.5\r\n3 1", "crlf.txt", ProfileKind::Rail, LengthUnit::Millimetre);
+  EXPECT_EQ(c.y.size(), 3u);
+  EXPECT_EQ(c.line.back(), 3);
+}
+
+TEST(ProfileFiles, RefusesPointSetsTheSplineCannotTake) {
+  // Found by fuzzing: each of these stopped at an internal check (exit 3) before.
+  auto rail = [](const std::string& text) {
+    return errorOf([&] {
+      profileFromPoints(parseTextPoints(text, "p.txt", ProfileKind::Rail, LengthUnit::Millimetre),
+                        {}, "p");
+    });
+  };
+  std::string tiny, close, weights;
+  for (int i = 0; i < 10; ++i) {
+    tiny += std::to_string(0.001 * i) + " 2\n";  // 9 um wide
+    close += (i < 9 ? std::to_string(i) + "e-300" : std::string("30")) + " 2\n";
+    weights += std::to_string(3 * i) + " 0 " + (i == 3 ? "1e-300" : "1") + "\n";
+  }
+  EXPECT_EQ(rail(tiny),
+            "p.txt:10: the kept points span only 0.009 mm along y; the profile grid needs at least "
+            "4 steps of 0.02 mm inside them");
+  EXPECT_EQ(rail(close),
+            "p.txt:2: y = 1e-303 m is closer than 1 nm to the previous point (y = 0 m): merge or "
+            "drop duplicate points");
+  EXPECT_EQ(rail(weights),
+            "p.txt:4: point weight 1e-300 is outside 1e-06 .. 1e+06 (weights are relative: scale "
+            "them)");
+}
+
+}  // namespace bounded
 
 }  // namespace

@@ -100,3 +100,43 @@ TEST(Study, ShippedStudiesValidate) {
     }
   }
 }
+
+namespace {
+std::string loadError(const std::string& file) {
+  try {
+    loadStudy(kDir + file, RB_SOURCE_DIR);
+  } catch (const rb::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+// Case ids are 64-bit (16 hex digits): with 32 bits, two of a few ten thousand cases share a
+// file name with a probability of several percent.
+TEST(Study, CaseIdsAre64Bit) {
+  auto st = loadStudy(kDir + "labels.lua", RB_SOURCE_DIR);
+  for (const auto& c : st.cases) {
+    ASSERT_EQ(c.id.size(), 5u + 16u) << c.id;
+    EXPECT_EQ(c.id.substr(0, 5), "case_");
+    EXPECT_EQ(c.id.find_first_not_of("0123456789abcdef", 5), std::string::npos) << c.id;
+  }
+}
+
+// A 1e8-case matrix is refused at its study{} line before anything is expanded (this test would
+// otherwise need gigabytes and minutes), naming the sizes and the key that raises the limit.
+TEST(Study, HugeMatrixRefusedWithTheLimit) {
+  const std::string what = loadError("huge.lua");
+  EXPECT_NE(what.find(kDir + "huge.lua:4: study: 100000000 cases (100 x 100 x 100 x 100 x 1) "
+                             "exceed max_cases = 10000; raise study.max_cases"),
+            std::string::npos)
+      << what;
+}
+
+TEST(Study, MaxCasesIsTheLimit) {
+  const std::string what = loadError("max_cases.lua");
+  EXPECT_NE(what.find("study: 3 cases (3 x 1) exceed max_cases = 2"), std::string::npos) << what;
+  EXPECT_NE(loadError("max_cases_bad.lua").find("max_cases must be a whole number in [1, "),
+            std::string::npos);
+  EXPECT_EQ(loadStudy(kDir + "labels.lua", RB_SOURCE_DIR).max_cases, 10000);
+}

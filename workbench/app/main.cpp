@@ -1,6 +1,8 @@
 // The `workbench` command line: run, check, help scenario, --version. Never prompts; every problem
 // is reported as file:line: message with a non-zero exit code.
-//   exit 0: ok; 1: bad input (scenario, options); 2: the run failed (results kept); 3: internal.
+//   exit 0: ok; 1: bad input (scenario, options; nothing was run); 2: the run failed (partial
+//   results kept), or its result could not be written (an earlier result is unchanged);
+//   3: internal error (a bug).
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -13,6 +15,7 @@
 #include "workbench/app/study.hpp"
 #include "workbench/app/tables.hpp"
 #include "workbench/core/error.hpp"
+#include "workbench/io/result_file.hpp"
 #include "workbench/scenario/schema.hpp"
 
 namespace fs = std::filesystem;
@@ -104,6 +107,11 @@ int main(int argc, char** argv) {
   } catch (const rb::InputError& e) {
     printInputError(e);
     return 1;
+  } catch (const rb::io::WriteError& e) {
+    // An environment problem (disk full, no permission): the run's result could not be written,
+    // and an earlier result under that name is unchanged.
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 3;

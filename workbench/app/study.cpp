@@ -1,44 +1,172 @@
 #include "workbench/app/study.hpp"
 
 #include <fcntl.h>
+#include <sys/file.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <random>
+#include <sstream>
+#include <stdexcept>
 #include <thread>
 
+#include "railbench/version.hpp"
+#include "workbench/contact/table_io.hpp"
+#include "workbench/core/error.hpp"
+#include "workbench/core/files.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/io/read_stats.hpp"
 #include "workbench/io/result_file.hpp"
+#include "workbench/io/root_text.hpp"
 #include "workbench/scenario/study.hpp"
+#include "workbench/track/spec.hpp"
 
 namespace fs = std::filesystem;
 
 namespace rb::app {
 namespace {
 
+// FNV-1a 64 over length-prefixed fields: no two different field lists give the same byte stream.
+class Hasher {
+ public:
+  void field(const std::string& name, const std::string& bytes) {
+    raw(name);
+    raw(std::string(1, '\0') + std::to_string(bytes.size()) + '\0');
+    raw(bytes);
+  }
+  std::uint64_t value() const { return h_; }
+
+ private:
+  void raw(const std::string& s) {
+    for (unsigned char c : s) {
+      h_ ^= c;
+      h_ *= 1099511628211ull;
+    }
+  }
+  std::uint64_t h_ = 1469598103934665603ull;
+};
+
+std::string hex16(std::uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+// What is known about one run of a case.
+enum class Outcome { Pending, Ran, Skipped };
+
 struct Job {
   const scenario::StudyCase* c = nullptr;
   int repeat = 0;
-  std::string h5, log;
+  std::string name;  // <id>_r<k>
+  std::string h5, log, lock, work;
+  const std::string* hash = nullptr;  // the case's input hash ("" when it does not load)
+  int lock_fd = -1;
+  Outcome outcome = Outcome::Pending;
+  std::string note;  // why a run left no result (stamping, changed inputs, no process)
 };
 
-// Starts `workbench run` for one job with stdout/stderr to its log; returns the pid.
+// Is `h5` a complete result of exactly these inputs?
+bool isDone(const std::string& h5, const std::string& hash) {
+  if (hash.empty() || !isRegularFile(h5)) return false;
+  auto rec = io::readStats(h5);
+  if (!rec || !rec->text.count("status")) return false;
+  auto stamp = io::readRootText(h5, "input_hash");
+  return stamp && *stamp == hash;
+}
+
+// A name no other process or call uses.
+std::string uniqueSuffix() {
+  static std::uint64_t counter = 0;
+  std::uint64_t salt =
+      static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()) ^
+      (++counter << 40);
+  try {
+    std::random_device rd;
+    salt ^= (static_cast<std::uint64_t>(rd()) << 32) ^ rd();
+  } catch (const std::exception&) {  // no entropy source: clock and counter only
+  }
+  return std::to_string(getpid()) + "-" + hex16(salt).substr(8);
+}
+
+enum class Lock { Held, Busy, Error };
+
+// Exclusive, non-blocking lock on the job's lock file. The descriptor is close-on-exec so that
+// no case's run holds the lock of another case.
+Lock tryLock(Job& j, std::string& why) {
+  int fd = ::open(j.lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+  if (fd < 0) {
+    why = "cannot open the lock file " + j.lock + ": " + std::strerror(errno);
+    return Lock::Error;
+  }
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    const int err = errno;
+    ::close(fd);
+    if (err == EWOULDBLOCK) return Lock::Busy;
+    why = "cannot lock " + j.lock + ": " + std::strerror(err);
+    return Lock::Error;
+  }
+  j.lock_fd = fd;
+  return Lock::Held;
+}
+
+void unlock(Job& j) {
+  if (j.lock_fd >= 0) ::close(j.lock_fd);  // releases the flock
+  j.lock_fd = -1;
+}
+
+// Files of earlier, killed attempts (<name>.run-*, with the runs' own .tmp files), by job name,
+// from one listing of the folder (a listing per case would cost O(cases^2) on a big study).
+std::map<std::string, std::vector<fs::path>> leftovers(const fs::path& dir) {
+  std::map<std::string, std::vector<fs::path>> out;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string f = it->path().filename().string();
+    if (auto at = f.find(".run-"); at != std::string::npos) out[f.substr(0, at)].push_back(*it);
+  }
+  return out;
+}
+
+// Removes them for one job; called only while holding the job's lock, when no live process can
+// be writing them.
+void removeLeftovers(std::map<std::string, std::vector<fs::path>>& stray, const Job& j) {
+  auto it = stray.find(j.name);
+  if (it == stray.end()) return;
+  for (const fs::path& p : it->second) {
+    std::error_code ignored;
+    fs::remove(p, ignored);
+  }
+  stray.erase(it);
+}
+
+// Starts `workbench run` for one job with stdout/stderr to its log; returns the pid. The run is
+// killed when the runner dies (PR_SET_PDEATHSIG), so a killed runner leaves no orphan writing
+// into the folder after its locks are gone.
 pid_t launch(const StudyOptions& o, const Job& j) {
   std::vector<std::string> args = {o.program, "--root", o.root, "run",
-                                   j.c->base, "--out",  j.h5,   "--quiet"};
+                                   j.c->base, "--out",  j.work, "--quiet"};
   for (const auto& ov : j.c->overrides) {
     args.push_back("--set");
     args.push_back(ov);
   }
+  const pid_t parent = getpid();
   pid_t pid = fork();
   if (pid == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(127);  // the runner died before prctl
     int fd = open(j.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd >= 0) {
       dup2(fd, 1);
@@ -54,6 +182,29 @@ pid_t launch(const StudyOptions& o, const Job& j) {
     _exit(127);
   }
   return pid;
+}
+
+// Writes `text` to `path` through a unique temporary file and a rename, so a reader (or another
+// runner writing the same summary) never sees a partial file.
+void writeAtomically(const fs::path& path, const std::string& text) {
+  const std::string tmp = path.string() + ".tmp." + uniqueSuffix();
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.close();
+    if (!out) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      throw std::runtime_error("cannot write " + tmp);
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw std::runtime_error("cannot rename " + tmp + " to " + path.string() + ": " + ec.message());
+  }
 }
 
 std::string csvField(std::string s) {
@@ -107,62 +258,180 @@ int plotStudy(const StudyOptions& o, const std::string& dir) {
 
 }  // namespace
 
+std::string buildId(const std::string& program) {
+  std::string why;
+  auto bytes = readRegularFile(program, why, std::size_t{1} << 31);
+  if (!bytes) return "build:unknown";
+  Hasher h;
+  h.field("program", *bytes);
+  return "build:" + hex16(h.value());
+}
+
+std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string& build_id) {
+  Hasher h;
+  h.field("railbench case inputs", "1");
+  h.field("workbench", kVersion);
+  h.field("table_algorithm", std::to_string(contact::kTableAlgorithmVersion));
+  h.field("build", build_id);
+  h.field("scenario", spec.text);
+  for (const auto& [path, text] : spec.modules) h.field("module " + path, text);
+  for (const auto& ov : spec.overrides) h.field("set", ov);
+  // Data files by content (their paths may differ between machines with the same inputs).
+  auto data = [&](const std::string& role, const std::string& path) {
+    std::string why;
+    auto bytes = readRegularFile(path, why);
+    h.field("data " + role, bytes ? *bytes : "unreadable: " + why);
+  };
+  if (spec.profiles.wheel != "s1002") data("wheel", spec.profiles.wheel);
+  if (spec.profiles.rail != "60e1") data("rail", spec.profiles.rail);
+  if (spec.track.irregularities.source == track::IrregularitySource::Csv)
+    data("irregularities", spec.track.irregularities.csv_path);
+  return hex16(h.value());
+}
+
 int runStudy(const StudyOptions& o) {
   scenario::StudySpec st = scenario::loadStudy(o.file, o.root);
   fs::path dir = o.out.empty() ? fs::path("out") / fs::path(o.file).stem() : fs::path(o.out);
-  fs::create_directories(dir);
+  std::error_code ec;
+  fs::create_directories(dir / ".locks", ec);
+  if (ec)
+    throw InputError({o.file, 0}, "cannot create the study's output folder " +
+                                      (dir / ".locks").string() + ": " + ec.message());
   int jobs = o.jobs > 0    ? o.jobs
              : st.jobs > 0 ? st.jobs
                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 
-  std::vector<Job> all, todo;
+  // The input hash of every case, from the scenario as the run will load it. A case that does
+  // not load gets no hash: it is always run (and its log says why it fails).
+  const std::string build = buildId(o.program);
+  auto hashOf = [&](const scenario::StudyCase& c) {
+    try {
+      scenario::LoadOptions lo;
+      lo.root = o.root;
+      lo.overrides = c.overrides;
+      return caseInputHash(scenario::loadScenario(c.base, lo), build);
+    } catch (const InputError&) {
+      return std::string();
+    }
+  };
+  std::map<std::string, std::string> hashes;
+  for (const auto& c : st.cases) hashes[c.id] = hashOf(c);
+
+  std::vector<Job> all;
   for (const auto& c : st.cases)
     for (int r = 0; r < st.repeats; ++r) {
-      Job j{&c, r, (dir / (c.id + "_r" + std::to_string(r) + ".h5")).string(),
-            (dir / (c.id + "_r" + std::to_string(r) + ".log")).string()};
+      Job j;
+      j.c = &c;
+      j.repeat = r;
+      j.name = c.id + "_r" + std::to_string(r);
+      j.h5 = (dir / (j.name + ".h5")).string();
+      j.log = (dir / (j.name + ".log")).string();
+      j.lock = (dir / ".locks" / (j.name + ".lock")).string();
+      j.hash = &hashes[c.id];
       all.push_back(j);
-      // A result file exists only once its run finished (written as .tmp, renamed at the end),
-      // ok or failed: such cases are not run again.
-      if (!fs::exists(j.h5)) todo.push_back(j);
     }
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (!isDone(all[i].h5, *all[i].hash)) todo.push_back(i);
   std::cerr << st.file << ": " << st.cases.size() << " cases x " << st.repeats << " repeats, "
             << all.size() - todo.size() << " already done, running " << todo.size() << " with "
             << jobs << " jobs\n";
 
+  auto stray = leftovers(dir);
   std::map<pid_t, std::size_t> running;
-  std::map<std::string, int> exitCode;
-  std::size_t next = 0, done = 0;
+  std::size_t next = 0, done = 0, skipped = 0;
+  auto report = [&](const Job& j, const std::string& what) {
+    std::cerr << "  [" << ++done << "/" << todo.size() << "] " << j.c->id << " r" << j.repeat
+              << ": " << what << "  " << j.c->label << "\n";
+  };
   while (next < todo.size() || !running.empty()) {
     while (next < todo.size() && static_cast<int>(running.size()) < jobs) {
-      pid_t pid = launch(o, todo[next]);
-      if (pid < 0) {
-        std::cerr << "cannot start a process for " << todo[next].c->id << "\n";
-        exitCode[todo[next].h5] = -1;
-      } else {
-        running[pid] = next;
+      Job& j = all[todo[next++]];
+      std::string why;
+      const Lock l = tryLock(j, why);
+      if (l == Lock::Busy) {
+        j.outcome = Outcome::Skipped;
+        ++skipped;
+        report(j, "skipped: being run by another runner");
+        continue;
       }
-      ++next;
+      if (l == Lock::Error) {
+        j.outcome = Outcome::Ran;
+        j.note = why;
+        report(j, "error: " + why);
+        continue;
+      }
+      if (isDone(j.h5, *j.hash)) {  // finished by another runner since the listing
+        unlock(j);
+        j.outcome = Outcome::Ran;
+        report(j, "done by another runner");
+        continue;
+      }
+      removeLeftovers(stray, j);
+      std::error_code ignored;
+      fs::remove(j.h5, ignored);  // a result of other inputs: never to be mistaken for this one
+      j.work = (dir / (j.name + ".run-" + uniqueSuffix() + ".h5")).string();
+      pid_t pid = launch(o, j);
+      if (pid < 0) {
+        j.outcome = Outcome::Ran;
+        j.note = "cannot start a process: " + std::string(std::strerror(errno));
+        unlock(j);
+        report(j, "error: " + j.note);
+        continue;
+      }
+      running[pid] = todo[next - 1];
     }
+    if (running.empty()) continue;
     int status = 0;
     pid_t pid = wait(&status);
+    if (pid < 0 && errno == EINTR) continue;
     if (pid < 0) break;
     auto it = running.find(pid);
     if (it == running.end()) continue;
-    const Job& j = todo[it->second];
+    Job& j = all[it->second];
+    running.erase(it);
+    j.outcome = Outcome::Ran;
     int code = WIFEXITED(status) ? WEXITSTATUS(status)
                                  : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-    exitCode[j.h5] = code;
-    running.erase(it);
-    ++done;
-    std::cerr << "  [" << done << "/" << todo.size() << "] " << j.c->id << " r" << j.repeat << ": "
-              << (code == 0   ? "ok"
-                  : code == 2 ? "failed (result kept)"
-                              : "error " + std::to_string(code))
-              << "  " << j.c->label << "\n";
+    // Only a complete result of unchanged inputs gets the final name, stamped with their hash.
+    // A run that exits with another code than ok (0) or failed (2) has no result: its log says
+    // why, and whatever file it left is removed.
+    if (isRegularFile(j.work) && code != 0 && code != 2) {
+      std::error_code ignored;
+      fs::remove(j.work, ignored);
+    } else if (isRegularFile(j.work)) {
+      const auto rec = io::readStats(j.work);
+      const std::string after = hashOf(*j.c);
+      if (!rec || !rec->text.count("status")) {
+        j.note = "the run left an incomplete result file (no /stats/status); discarded";
+      } else if (j.hash->empty() || after != *j.hash) {
+        j.note =
+            "the case's input files changed while it ran; its result was discarded (run "
+            "the study again)";
+      } else if (!io::writeRootText(j.work, "input_hash", *j.hash)) {
+        j.note = "cannot stamp the input hash into " + j.work;
+      } else {
+        fs::rename(j.work, j.h5, ec);
+        if (ec) j.note = "cannot rename " + j.work + " to " + j.h5 + ": " + ec.message();
+      }
+      std::error_code ignored;
+      if (!j.note.empty()) fs::remove(j.work, ignored);
+    }
+    unlock(j);
+    report(j, !j.note.empty() ? "error: " + j.note
+              : code == 0     ? "ok"
+              : code == 2     ? "failed (result kept)"
+                              : "error " + std::to_string(code));
   }
 
+  // Summaries of everything this folder holds for the study, written under a study-wide lock so
+  // that runners finishing together do not interleave them.
+  int summaryLock = ::open((dir / ".locks" / "summary.lock").c_str(),
+                           O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+  if (summaryLock >= 0) ::flock(summaryLock, LOCK_EX);
+
   // Summary: one row per run, then per case the median CPU time over the repeats.
-  std::ofstream csv(dir / "summary.csv");
+  std::ostringstream csv;
   csv.precision(12);  // counts above 1e6 exactly, CPU times to the nanosecond
   const std::vector<std::string> nums = {
       "cpu_time_s",     "wall_time_s",    "rhs_evals",       "rhs_evals_jac", "steps",
@@ -179,18 +448,28 @@ int runStudy(const StudyOptions& o) {
   std::map<std::string, CaseSum> sum;
   std::vector<double> colStatus;
   std::map<std::string, std::vector<double>> cols;
+  std::size_t runsOk = 0, runsKnown = 0, runsElsewhere = 0;
   for (const auto& j : all) {
-    auto rec = fs::exists(j.h5) ? io::readStats(j.h5) : std::nullopt;
+    const bool valid = isDone(j.h5, *j.hash);
+    auto rec = valid ? io::readStats(j.h5) : std::nullopt;
     std::string status = rec ? rec->text["status"] : "error";
     std::string message = rec ? rec->text["message"] : "";
-    if (!rec) {
-      // No result file: the run stopped on bad input or crashed; its log says why.
+    if (!rec && j.outcome == Outcome::Skipped) {
+      status = "skipped";
+      message = "being run by another runner when this summary was written";
+      ++runsElsewhere;
+    } else if (!rec && !j.note.empty()) {
+      message = j.note;
+    } else if (!rec) {
+      // No valid result: the run stopped on bad input or crashed; its log says why.
       std::ifstream log(j.log);
       std::string line, last;
       while (std::getline(log, line))
         if (!line.empty()) last += (last.empty() ? "" : " | ") + line;
-      message = last.substr(0, 500);
+      message = last.empty() ? "no result" : last.substr(0, 500);
     }
+    if (status != "skipped") ++runsKnown;
+    if (status == "ok") ++runsOk;
     csv << j.c->id << "," << j.repeat << "," << csvField(j.c->label) << "," << j.c->role << ","
         << csvField(j.c->base) << "," << csvField(join(j.c->overrides, " ")) << "," << status;
     for (const auto& k : nums) {
@@ -198,7 +477,7 @@ int runStudy(const StudyOptions& o) {
       csv << "," << v;
       cols[k].push_back(v);
     }
-    csv << "," << csvField(message) << "," << csvField(j.h5) << "\n";
+    csv << "," << csvField(message) << "," << csvField(valid ? j.h5 : "") << "\n";
     colStatus.push_back(status == "ok" ? 1.0 : 0.0);
     CaseSum& cs = sum[j.c->id];
     ++cs.runs;
@@ -207,11 +486,11 @@ int runStudy(const StudyOptions& o) {
     if (cs.status.empty() || (cs.status == "ok" && status != "ok")) {
       cs.status = status;
       cs.message = message;
-      cs.file = fs::exists(j.h5) ? j.h5 : "";
+      cs.file = valid ? j.h5 : "";
       for (const auto& k : nums) cs.first[k] = rec && rec->number.count(k) ? rec->number[k] : 0.0;
     }
   }
-  std::ofstream cases(dir / "summary_cases.csv");
+  std::ostringstream cases;
   cases.precision(12);
   cases << "case,label,role,base,overrides,runs,runs_ok,status,median_cpu_time_s,min_cpu_time_s,"
            "max_cpu_time_s";
@@ -231,30 +510,46 @@ int runStudy(const StudyOptions& o) {
       if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << cs.first[k];
     cases << "," << csvField(cs.message) << "," << csvField(cs.file) << "\n";
   }
-  csv.close();
-  cases.close();
+  try {
+    writeAtomically(dir / "summary.csv", csv.str());
+    writeAtomically(dir / "summary_cases.csv", cases.str());
 
-  io::ResultFile h5((dir / "summary.h5").string());
-  h5.attr("/", "study_file", st.file);
-  h5.attr("/", "base", st.base);
-  std::string caseIds, overrides;
-  for (const auto& j : all) {
-    caseIds += (caseIds.empty() ? "" : "\n") + j.c->id + "_r" + std::to_string(j.repeat);
-    overrides += (overrides.empty() ? "" : "\n") + join(j.c->overrides, " ");
+    io::ResultFile h5((dir / "summary.h5").string());
+    h5.attr("/", "study_file", st.file);
+    h5.attr("/", "base", st.base);
+    std::string caseIds, overrides;
+    for (const auto& j : all) {
+      caseIds += (caseIds.empty() ? "" : "\n") + j.name;
+      overrides += (overrides.empty() ? "" : "\n") + join(j.c->overrides, " ");
+    }
+    std::string labels;
+    for (const auto& j : all) labels += (labels.empty() ? "" : "\n") + j.c->label;
+    h5.attr("/runs", "labels", labels);
+    h5.attr("/runs", "ids", caseIds);
+    h5.attr("/runs", "overrides", overrides);
+    h5.dataset("/runs/ok", colStatus, "-");
+    for (const auto& k : nums)
+      h5.dataset("/runs/" + k, cols[k],
+                 k == "cpu_time_s" || k == "wall_time_s" || k == "t_reached" ? "s" : "-");
+    h5.finalize();
+  } catch (const std::exception& e) {
+    if (summaryLock >= 0) ::close(summaryLock);
+    std::cerr << "study: cannot write the summary in " << dir.string() << ": " << e.what() << "\n";
+    return 2;
   }
-  std::string labels;
-  for (const auto& j : all) labels += (labels.empty() ? "" : "\n") + j.c->label;
-  h5.attr("/runs", "labels", labels);
-  h5.attr("/runs", "ids", caseIds);
-  h5.attr("/runs", "overrides", overrides);
-  h5.dataset("/runs/ok", colStatus, "-");
-  for (const auto& k : nums)
-    h5.dataset("/runs/" + k, cols[k],
-               k == "cpu_time_s" || k == "wall_time_s" || k == "t_reached" ? "s" : "-");
-  h5.finalize();
+  if (summaryLock >= 0) ::close(summaryLock);
   std::cout << "study " << st.file << ": " << all.size() << " runs, summary in "
             << (dir / "summary.csv").string() << "\n";
-  return plotStudy(o, dir.string());
+  if (skipped > 0 || runsElsewhere > 0)
+    std::cerr << "study: " << runsElsewhere
+              << " runs were being run by another runner; run the study again once it has "
+                 "finished to summarise them\n";
+  const int plots = plotStudy(o, dir.string());
+  if (runsKnown > 0 && runsOk == 0) {
+    std::cerr << "study: no run of the study is ok (" << runsKnown << " failed or could not run)\n";
+    return 2;
+  }
+  return plots;
 }
 
 }  // namespace rb::app

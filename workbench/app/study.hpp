@@ -1,8 +1,24 @@
 #pragma once
 // `workbench study FILE.lua`: runs every case of a study as its own `workbench run` process (so a
 // crash or failure of one case never aborts the study), at most `jobs` at once, each writing its
-// own HDF5; finished cases are skipped when the study is run again; a summary CSV and HDF5
-// collect /stats of every run:
+// own HDF5; a summary CSV and HDF5 collect /stats of every run.
+//
+// Reuse is keyed on content. Every result file carries the root attribute `input_hash`: a 64-bit
+// hash of everything that determines the case's result (caseInputHash: the base scenario's text
+// and every module it requires, the overrides, the bytes of every profile and irregularity CSV it
+// reads, the workbench version, the table-algorithm version and the build, i.e. the bytes of the
+// workbench program). A case counts as done only when its file <id>_r<k>.h5 is a readable result
+// with /stats/status and an `input_hash` equal to the one computed now; anything else is run again,
+// so editing one number of the base scenario re-runs every case and changing nothing re-runs none.
+//
+// Several runners may share one output folder: each case is run under an exclusive lock
+// (flock on .locks/<id>_r<k>.lock, released by the kernel when its holder dies); a runner that
+// finds a case locked skips it and says so. A case's run writes <id>_r<k>.run-<unique>.h5; the
+// runner stamps `input_hash` into it and renames it to <id>_r<k>.h5, so the final name only ever
+// holds a complete, stamped file (a runner or run killed at any point leaves at most a stray
+// .run-* file, removed the next time the case is run). Runs die with their runner.
+//
+// Outputs:
 //   summary.csv        one row per run: case, repeat, label, role, base, overrides, status, the
 //                      /stats numbers, message (the reason of a failure), file
 //   summary_cases.csv  one row per case: label, role, status (ok only if every repeat is), median
@@ -12,6 +28,8 @@
 // Then plots/plot_study.py draws the study's figures and tables into the same folder (skipped with
 // RAILBENCH_STUDY_PLOTS=0; RAILBENCH_PYTHON names another interpreter than /usr/bin/python3).
 #include <string>
+
+#include "workbench/scenario/scenario.hpp"
 
 namespace rb::app {
 
@@ -23,8 +41,17 @@ struct StudyOptions {
   int jobs = 0;         // 0: from the study file, else the number of cores
 };
 
-// Returns 0 when every case ran (ok or failed: a failed case is a result), 1 on bad input, 4 when
+// Returns 0 when the study ran and at least one of its runs is ok (a failed case is a result),
+// 1 on bad input (nothing was run), 2 when every run of the study failed or could not run, 4 when
 // the figures failed (the summaries are complete).
 int runStudy(const StudyOptions& options);
+
+// Identifies the build that runs the cases: "build:<hash of the program's bytes>", or
+// "build:unknown" when the program cannot be read.
+std::string buildId(const std::string& program);
+
+// 16 hex digits: the hash of everything that determines the result of a run of `spec` (see the
+// header comment) by the build `build_id`.
+std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string& build_id);
 
 }  // namespace rb::app

@@ -15,6 +15,9 @@
 #include <utility>
 #include <vector>
 
+#include "railbench/version.hpp"
+#include "workbench/core/files.hpp"
+
 namespace rb::contact {
 namespace {
 
@@ -29,8 +32,8 @@ constexpr Magic makeMagic(const char* s) {
 constexpr Magic kLutMagic = makeMagic("railbench-lut");
 constexpr Magic kKecMagic = makeMagic("railbench-kec");
 constexpr std::uint64_t kByteOrderMark = 0x0102030405060708ULL;
-// magic, byte order, version, hash, payload size
-constexpr std::size_t kHeaderBytes = sizeof(Magic) + 4 * sizeof(std::uint64_t);
+// Cache files above this size are not read (a refined S1002 KEC table is about 10 MB).
+constexpr std::size_t kMaxTableFileBytes = std::size_t{1} << 30;
 
 // FNV-1a 64 over 8-byte words (then the tail bytes): a cheap corruption check, ~1 ms per 5 MB.
 std::uint64_t checksum(const char* p, std::size_t n) {
@@ -180,14 +183,15 @@ class Reader {
   bool ok_ = true;
 };
 
-// Header + payload + checksum, written to a unique temporary file renamed over `path`.
-void writeFile(const std::string& path, const Magic& magic, std::uint64_t hash,
+// Header + key + payload + checksum, written to a unique temporary file renamed over `path`.
+void writeFile(const std::string& path, const Magic& magic, const std::string& key,
                const std::string& payload) {
   Writer file;
   file.raw(magic.data(), magic.size());
   file.u64(kByteOrderMark);
   file.u64(kTableFormatVersion);
-  file.u64(hash);
+  file.u64(kTableAlgorithmVersion);
+  file.str(key);
   file.u64(payload.size());
   file.raw(payload.data(), payload.size());
   file.u64(checksum(file.buffer().data(), file.buffer().size()));
@@ -226,45 +230,52 @@ void writeFile(const std::string& path, const Magic& magic, std::uint64_t hash,
   }
 }
 
-// The whole content of a valid file (payload at kHeaderBytes, checksum at the end), or nullopt.
-// Never throws.
-std::optional<std::string> readFile(const std::string& path, const Magic& magic,
-                                    std::uint64_t expected_hash) noexcept {
-  try {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    in.seekg(0, std::ios::end);
-    const std::streamoff size = in.tellg();
-    if (size < static_cast<std::streamoff>(kHeaderBytes + sizeof(std::uint64_t))) {
-      return std::nullopt;
-    }
-    in.seekg(0, std::ios::beg);
-    std::string bytes(static_cast<std::size_t>(size), '\0');
-    in.read(bytes.data(), size);
-    if (!in || in.gcount() != size) return std::nullopt;
+// Where the payload of a file accepted by readFile starts and how long it is.
+struct Accepted {
+  std::string bytes;
+  std::size_t payload_at = 0, payload_size = 0;
+};
 
-    Reader r(bytes.data(), bytes.size());
+// The whole content of a valid file for `key`, or nullopt. Never throws.
+std::optional<Accepted> readFile(const std::string& path, const Magic& magic,
+                                 const std::string& key) noexcept {
+  try {
+    std::string why;
+    std::optional<std::string> bytes = readRegularFile(path, why, kMaxTableFileBytes);
+    if (!bytes || bytes->size() < sizeof(Magic) + 6 * sizeof(std::uint64_t)) return std::nullopt;
+    const std::size_t body = bytes->size() - sizeof(std::uint64_t);
+    std::uint64_t stored = 0;
+    std::memcpy(&stored, bytes->data() + body, sizeof stored);
+    if (stored != checksum(bytes->data(), body)) return std::nullopt;
+
+    Reader r(bytes->data(), body);
     Magic m{};
     r.raw(m.data(), m.size());
     if (m != magic || r.u64() != kByteOrderMark || r.u64() != kTableFormatVersion ||
-        r.u64() != expected_hash) {
+        r.u64() != kTableAlgorithmVersion) {
       return std::nullopt;
     }
+    // The full key, not a hash of it: a file made for other inputs never matches.
+    if (r.str() != key || !r.ok()) return std::nullopt;
     const std::uint64_t payload = r.u64();
-    if (payload != bytes.size() - kHeaderBytes - sizeof(std::uint64_t)) return std::nullopt;
-    const std::size_t body = bytes.size() - sizeof(std::uint64_t);
-    std::uint64_t stored = 0;
-    std::memcpy(&stored, bytes.data() + body, sizeof stored);
-    if (stored != checksum(bytes.data(), body)) return std::nullopt;
-    return bytes;
+    if (!r.ok() || payload != r.remaining()) return std::nullopt;
+    Accepted a;
+    a.payload_at = body - static_cast<std::size_t>(payload);
+    a.payload_size = static_cast<std::size_t>(payload);
+    a.bytes = std::move(*bytes);
+    return a;
   } catch (...) {
     return std::nullopt;
   }
 }
 
 // A reader over the payload of a file accepted by readFile.
-Reader payloadOf(const std::string& file) {
-  return Reader(file.data() + kHeaderBytes, file.size() - kHeaderBytes - sizeof(std::uint64_t));
+Reader payloadOf(const Accepted& file) {
+  return Reader(file.bytes.data() + file.payload_at, file.payload_size);
+}
+
+std::uint64_t keyHash(const std::string& key) {
+  return checksum(key.data(), key.size());
 }
 
 }  // namespace
@@ -431,29 +442,67 @@ std::string hashHex(std::uint64_t hash) {
   return b;
 }
 
-void saveTable(const LutTable& table, const std::string& path) {
-  writeFile(path, kLutMagic, table.configHash(), TableIo::payload(table));
+std::string tableInputKey(const ContactGeometryConfig& c, TableKind kind) {
+  Writer w;
+  const std::string head =
+      std::string("railbench contact table\nkind=") + (kind == TableKind::Lut ? "lut" : "kec") +
+      "\nalgorithm=" + std::to_string(kTableAlgorithmVersion) + "\nworkbench=" + kVersion + "\n";
+  w.raw(head.data(), head.size());
+  const auto num = [&](double v) { w.f64(v == 0.0 ? 0.0 : v); };  // -0 and +0 are one input
+  for (const auto* p :
+       {c.left_wheel.get(), c.right_wheel.get(), c.left_rail.get(), c.right_rail.get()}) {
+    if (!p) {
+      w.u64(0);
+      continue;
+    }
+    w.u64(p->kind() == profiles::ProfileKind::Wheel ? 1 : 2);
+    w.flag(p->isMirrored());
+    num(p->step());
+    w.vec(p->knots());
+    w.vec(p->values());
+  }
+  for (double x : {c.wheel_lw, c.rail_lr, c.beta, c.r0, c.flange_boundary, c.flange_angle}) num(x);
+  for (const GridSpec* g : {&c.lut_y, &c.lut_gauge, &c.kec_s}) {
+    num(g->min);
+    num(g->max);
+    num(g->step);
+  }
+  for (double x :
+       {c.kec_dhat, c.kec_dbar, c.kec_min_transition, c.kec_max_curvature, c.kec_max_map_slope,
+        c.kec_sample_step, c.jump_threshold, c.search_step, c.newton_tol}) {
+    num(x);
+  }
+  w.u64(static_cast<std::uint64_t>(static_cast<std::int64_t>(c.newton_max_iter)));
+  return std::move(w.buffer());
 }
 
-void saveTable(const KecTable& table, const std::string& path) {
-  writeFile(path, kKecMagic, table.configHash(), TableIo::payload(table));
+void saveTable(const LutTable& table, const ContactGeometryConfig& config,
+               const std::string& path) {
+  writeFile(path, kLutMagic, tableInputKey(config, TableKind::Lut), TableIo::payload(table));
 }
 
-std::optional<LutTable> loadLut(const std::string& path, std::uint64_t expected_hash) {
+void saveTable(const KecTable& table, const ContactGeometryConfig& config,
+               const std::string& path) {
+  writeFile(path, kKecMagic, tableInputKey(config, TableKind::Kec), TableIo::payload(table));
+}
+
+std::optional<LutTable> loadLut(const std::string& path, const ContactGeometryConfig& config) {
   try {
-    const std::optional<std::string> file = readFile(path, kLutMagic, expected_hash);
+    const std::optional<Accepted> file =
+        readFile(path, kLutMagic, tableInputKey(config, TableKind::Lut));
     if (!file) return std::nullopt;
-    return TableIo::lut(payloadOf(*file), expected_hash);
+    return TableIo::lut(payloadOf(*file), configHash(config));
   } catch (const std::exception&) {  // e.g. bad_alloc on a huge but self-consistent file
     return std::nullopt;
   }
 }
 
-std::optional<KecTable> loadKec(const std::string& path, std::uint64_t expected_hash) {
+std::optional<KecTable> loadKec(const std::string& path, const ContactGeometryConfig& config) {
   try {
-    const std::optional<std::string> file = readFile(path, kKecMagic, expected_hash);
+    const std::optional<Accepted> file =
+        readFile(path, kKecMagic, tableInputKey(config, TableKind::Kec));
     if (!file) return std::nullopt;
-    return TableIo::kec(payloadOf(*file), expected_hash);
+    return TableIo::kec(payloadOf(*file), configHash(config));
   } catch (const std::exception&) {
     return std::nullopt;
   }
@@ -465,43 +514,53 @@ DiskTableCache::DiskTableCache(std::string directory) : dir_(std::move(directory
   std::error_code ec;
   fs::create_directories(dir_, ec);
   if (ec || !fs::is_directory(dir_, ec)) {
-    throw std::runtime_error("DiskTableCache: cannot create the directory '" + dir_ + "'" +
+    throw std::runtime_error("cannot create the folder '" + dir_ + "'" +
                              (ec ? ": " + ec.message() : std::string()));
   }
 }
 
 std::string DiskTableCache::lutPath(const ContactGeometryConfig& config) const {
-  return (fs::path(dir_) / (hashHex(configHash(config)) + ".lut")).string();
+  return (fs::path(dir_) / (hashHex(keyHash(tableInputKey(config, TableKind::Lut))) + ".lut"))
+      .string();
 }
 
 std::string DiskTableCache::kecPath(const ContactGeometryConfig& config) const {
-  return (fs::path(dir_) / (hashHex(configHash(config)) + ".kec")).string();
+  return (fs::path(dir_) / (hashHex(keyHash(tableInputKey(config, TableKind::Kec))) + ".kec"))
+      .string();
 }
 
-std::shared_ptr<const LutTable> DiskTableCache::lut(const ContactGeometryConfig& config,
-                                                    bool* built) const {
-  const std::string path = lutPath(config);
-  if (std::optional<LutTable> t = loadLut(path, configHash(config))) {
+namespace {
+
+// Load, else build and save; a failed save keeps the built table (see the header).
+template <class Table, class Load, class Build>
+std::shared_ptr<const Table> loadOrBuild(const std::string& path,
+                                         const ContactGeometryConfig& config, Load load,
+                                         Build build, bool* built, std::string* save_error) {
+  if (std::optional<Table> t = load(path, config)) {
     if (built) *built = false;
-    return std::make_shared<const LutTable>(std::move(*t));
+    return std::make_shared<const Table>(std::move(*t));
   }
-  auto t = std::make_shared<const LutTable>(buildLut(config));
-  saveTable(*t, path);
+  auto t = std::make_shared<const Table>(build(config));
   if (built) *built = true;
+  try {
+    saveTable(*t, config, path);
+  } catch (const std::exception& e) {
+    if (!save_error) throw;
+    *save_error = e.what();
+  }
   return t;
+}
+
+}  // namespace
+
+std::shared_ptr<const LutTable> DiskTableCache::lut(const ContactGeometryConfig& config,
+                                                    bool* built, std::string* save_error) const {
+  return loadOrBuild<LutTable>(lutPath(config), config, loadLut, buildLut, built, save_error);
 }
 
 std::shared_ptr<const KecTable> DiskTableCache::kec(const ContactGeometryConfig& config,
-                                                    bool* built) const {
-  const std::string path = kecPath(config);
-  if (std::optional<KecTable> t = loadKec(path, configHash(config))) {
-    if (built) *built = false;
-    return std::make_shared<const KecTable>(std::move(*t));
-  }
-  auto t = std::make_shared<const KecTable>(buildKec(config));
-  saveTable(*t, path);
-  if (built) *built = true;
-  return t;
+                                                    bool* built, std::string* save_error) const {
+  return loadOrBuild<KecTable>(kecPath(config), config, loadKec, buildKec, built, save_error);
 }
 
 }  // namespace rb::contact

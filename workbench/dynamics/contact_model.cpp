@@ -3,6 +3,7 @@
 #include "workbench/contact/table_io.hpp"
 
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include "workbench/profiles/positioning.hpp"
@@ -117,14 +118,59 @@ const char* ContactModel::couplingName(NormalForceCoupling c) {
   return c == NormalForceCoupling::Lagged ? "lagged" : "consistent";
 }
 
+void TableCache::diskProblem(const std::string& why) {
+  if (disk_failed_) return;
+  disk_failed_ = true;
+  warnings_.push_back("the table cache folder '" + disk_dir_ + "' cannot be used (" + why +
+                      "); tables are built in memory for this run");
+}
+
+std::vector<std::string> TableCache::takeWarnings() {
+  std::vector<std::string> out;
+  out.swap(warnings_);
+  return out;
+}
+
+namespace {
+
+// From the disk cache when it is usable, else built in memory; rb::InputError (a bad
+// configuration) passes through, any other problem with the folder only disables it.
+template <class Table, class FromDisk, class Build>
+std::shared_ptr<const Table> tableFor(const std::string& dir, bool& disk_failed,
+                                      const std::function<void(const std::string&)>& problem,
+                                      FromDisk from_disk, Build build, bool& built) {
+  built = true;
+  if (!dir.empty() && !disk_failed) {
+    std::string save_error;
+    std::shared_ptr<const Table> t;
+    try {
+      t = from_disk(contact::DiskTableCache(dir), built, save_error);
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception& e) {
+      problem(e.what());
+    }
+    if (!save_error.empty()) problem(save_error);
+    if (t) return t;
+  }
+  built = true;
+  return std::make_shared<const Table>(build());
+}
+
+}  // namespace
+
 std::shared_ptr<const contact::KecTable> TableCache::kec(
     const contact::ContactGeometryConfig& config) {
   const std::uint64_t h = contact::configHash(config);
   auto it = kec_.find(h);
   if (it != kec_.end()) return it->second;
   bool built = true;
-  auto t = disk_dir_.empty() ? std::make_shared<const contact::KecTable>(contact::buildKec(config))
-                             : contact::DiskTableCache(disk_dir_).kec(config, &built);
+  auto t = tableFor<contact::KecTable>(
+      disk_dir_, disk_failed_, [this](const std::string& why) { diskProblem(why); },
+      [&](const contact::DiskTableCache& disk, bool& b, std::string& err) {
+        return disk.kec(config, &b, &err);
+      },
+      [&] { return contact::buildKec(config); }, built);
   builds_ += built ? 1 : 0;
   kec_.emplace(h, t);
   return t;
@@ -136,8 +182,12 @@ std::shared_ptr<const contact::LutTable> TableCache::lut(
   auto it = lut_.find(h);
   if (it != lut_.end()) return it->second;
   bool built = true;
-  auto t = disk_dir_.empty() ? std::make_shared<const contact::LutTable>(contact::buildLut(config))
-                             : contact::DiskTableCache(disk_dir_).lut(config, &built);
+  auto t = tableFor<contact::LutTable>(
+      disk_dir_, disk_failed_, [this](const std::string& why) { diskProblem(why); },
+      [&](const contact::DiskTableCache& disk, bool& b, std::string& err) {
+        return disk.lut(config, &b, &err);
+      },
+      [&] { return contact::buildLut(config); }, built);
   builds_ += built ? 1 : 0;
   lut_.emplace(h, t);
   return t;
@@ -210,6 +260,7 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
   m.creep = c.creep;
   m.coupling = c.normal_forces;
   m.spin = c.wheelset_spin;
+  m.min_normal_force = c.min_normal_force;
   m.loc = c.loc;
   for (std::size_t b = 0; b < v.bodies.size(); ++b)
     if (v.bodies[b].kind == vehicle::BodyKind::Wheelset) m.wheelsets.push_back(static_cast<int>(b));
@@ -268,6 +319,9 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
   }
   for (const std::string& w : m.tableStats().warnings)
     m.warnings.push_back(c.loc.str() + ": warning: " + w);
+  if (cache)
+    for (const std::string& w : cache->takeWarnings())
+      m.warnings.push_back(c.loc.str() + ": warning: " + w);
   m.flange_boundary[0] = m.solver->flangeBoundary(contact::Side::Left);
   m.flange_boundary[1] = m.solver->flangeBoundary(contact::Side::Right);
 

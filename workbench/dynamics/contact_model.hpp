@@ -52,6 +52,7 @@ struct ContactModel {
   CreepModel creep = CreepModel::Polach;
   NormalForceCoupling coupling = NormalForceCoupling::Lagged;
   WheelsetSpin spin = WheelsetSpin::Free;  // spin a state, or theta_dot = V(t) / centredRadius()
+  double min_normal_force = 0.0;  // [N] below it a wheel has lifted: the rhs refuses the state
 
   // Profiles, positioning (Lw, Lr, beta, r0), grids and KEC transition lengths.
   contact::ContactGeometryConfig geometry;
@@ -101,9 +102,15 @@ struct ContactModel {
   static const char* spinName(WheelsetSpin s);  // "free" / "prescribed"
 };
 
-// Tables by content (contact::configHash): compileContact builds a table only when the cache does
-// not hold one for the same configuration. Not thread-safe; the tables themselves are immutable
-// and may be shared by any number of models and threads.
+// Tables by content (contact::configHash in memory, contact::tableInputKey on disk):
+// compileContact builds a table only when the cache does not hold one for the same configuration.
+// Not thread-safe; the tables themselves are immutable and may be shared by any number of models
+// and threads.
+//
+// The disk folder is only an optimisation: when it cannot be created, read or written (read-only,
+// a file in its place, full disk), tables are built in memory and the run goes on; the problem is
+// reported once, as a warning taken by takeWarnings(), and the folder is not tried again by this
+// cache.
 class TableCache {
  public:
   TableCache() = default;
@@ -114,12 +121,18 @@ class TableCache {
   std::shared_ptr<const contact::LutTable> lut(const contact::ContactGeometryConfig& config);
   std::size_t size() const { return kec_.size() + lut_.size(); }
   int builds() const { return builds_; }  // tables built (cache misses)
+  bool diskUsable() const { return !disk_dir_.empty() && !disk_failed_; }
+  // Warnings not yet handed out (at most one about the folder per cache), then cleared.
+  std::vector<std::string> takeWarnings();
 
  private:
+  void diskProblem(const std::string& why);
   std::map<std::uint64_t, std::shared_ptr<const contact::KecTable>> kec_;
   std::map<std::uint64_t, std::shared_ptr<const contact::LutTable>> lut_;
   int builds_ = 0;
   std::string disk_dir_;
+  bool disk_failed_ = false;
+  std::vector<std::string> warnings_;
 };
 
 // The four profiles and their positioning, grids and KEC transition lengths of a scenario:

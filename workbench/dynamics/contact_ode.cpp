@@ -796,11 +796,32 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, Mode m
       if (spin_free) ydot[l.wsRate(w, 1)] = x(3);
       ydot[l.wsRate(w, 2)] = x(4);
     }
-    // Normal forces of the wheels at the solution (outputs, lift).
+    // Wheel lift: the constraint normal force of a wheel (KEC: both patches, which share the
+    // wheel's lambda, Eq. 26; LUT: the tread patch, the Hertz flange force being applied) below
+    // the threshold means the constraint pulls the wheel onto the rail, which no wheel/rail pair
+    // can do. The state is refused as recoverable: an adaptive method retries a smaller step, so
+    // an overshooting trial step is not taken for a lift, while a real lift stops the run here.
     for (int s = 0; s < 2; ++s) {
-      for (int p = 0; p < 2; ++p) {
+      double qn = 0.0;
+      bool any = false;
+      for (int p = 0; p < (kMethod == ContactMethod::Kec ? 2 : 1); ++p) {
         const Patch& pp = W.patch[s][p];
-        if (pp.active && p == 0 && pp.q0 + pp.ql.dot(W.lambda) < 0.0) lift = true;
+        if (!pp.active) continue;
+        any = true;
+        qn += pp.q0 + pp.ql.dot(W.lambda);
+      }
+      if (!any || qn >= c.min_normal_force) continue;
+      lift = true;
+      if (mode != Mode::Output) {
+        std::ostringstream os;
+        os << "wheel lift: wheelset '" << m.bodies[b].name << "', " << (s == 0 ? "left" : "right")
+           << " wheel: constraint normal force " << qn / 1e3
+           << " kN < contact.min_normal_force = " << c.min_normal_force / 1e3 << " kN at t = " << t
+           << " s (a constraint contact cannot lift a wheel: the model is not valid past this "
+              "point)";
+        last_error_ = os.str();
+        ++stats_.lift_evaluations;
+        return 1;
       }
     }
     if (mode == Mode::Output) {

@@ -44,6 +44,10 @@ struct ContactSpec {
   // 2.5). Consistent: normal and tangential forces solved together at every evaluation.
   NormalForceCoupling normal_forces = NormalForceCoupling::Lagged;
   WheelsetSpin wheelset_spin = WheelsetSpin::Free;
+  // [N] A wheel whose constraint normal force falls below this stops the run: a constraint
+  // contact keeps the wheel on the rail by pulling when the load would lift it, which no real
+  // wheel/rail pair can do, so results past that point are not physical.
+  double min_normal_force = 0.0;
   SourceLoc loc;
 };
 

@@ -2,6 +2,8 @@
 
 #include <hdf5.h>
 
+#include "workbench/io/hdf5_init.hpp"
+
 namespace rb::io {
 namespace {
 
@@ -31,7 +33,7 @@ herr_t readAttr(hid_t loc, const char* name, const H5A_info_t*, void* data) {
 }  // namespace
 
 std::optional<StatsRecord> readStats(const std::string& path) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  initHdf5();
   hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (f < 0) return std::nullopt;
   std::optional<StatsRecord> out;

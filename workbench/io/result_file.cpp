@@ -1,187 +1,272 @@
 #include "workbench/io/result_file.hpp"
 
-#include <hdf5.h>
+#include "workbench/io/hdf5_init.hpp"
 
+#include <fcntl.h>
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
-#include <stdexcept>
+#include <cstring>
 
 namespace rb::io {
 namespace {
 
 constexpr hsize_t kChunk = 1024;
 
-[[noreturn]] void fail(const std::string& what, const std::string& path) {
-  throw std::runtime_error("HDF5: " + what + " '" + path + "'");
-}
-
-hid_t linkCreateProps() {
-  hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
-  H5Pset_create_intermediate_group(lcpl, 1);
-  return lcpl;
-}
-
-void writeStringAttr(hid_t obj, const std::string& name, const std::string& value) {
-  hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, value.empty() ? 1 : value.size());
-  H5Tset_strpad(type, H5T_STR_NULLPAD);
-  H5Tset_cset(type, H5T_CSET_UTF8);
-  hid_t space = H5Screate(H5S_SCALAR);
-  if (H5Aexists(obj, name.c_str()) > 0) H5Adelete(obj, name.c_str());
-  hid_t a = H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
-  const char* data = value.empty() ? "" : value.c_str();
-  if (a < 0 || H5Awrite(a, type, data) < 0) {
-    H5Sclose(space);
-    H5Tclose(type);
-    fail("cannot write attribute", name);
+// Owns one HDF5 identifier and closes it with the matching H5*close on scope exit.
+class Handle {
+ public:
+  using Closer = herr_t (*)(hid_t);
+  Handle(hid_t id, Closer close) : id_(id), close_(close) {}
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
   }
-  H5Aclose(a);
-  H5Sclose(space);
-  H5Tclose(type);
-}
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  hid_t get() const { return id_; }
+  bool ok() const { return id_ >= 0; }
 
-template <typename T>
-void writeScalarAttr(hid_t obj, const std::string& name, hid_t type, T value) {
-  hid_t space = H5Screate(H5S_SCALAR);
-  if (H5Aexists(obj, name.c_str()) > 0) H5Adelete(obj, name.c_str());
-  hid_t a = H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
-  if (a < 0 || H5Awrite(a, type, &value) < 0) {
-    H5Sclose(space);
-    fail("cannot write attribute", name);
+ private:
+  hid_t id_;
+  Closer close_;
+};
+
+// A unique temporary name beside `path`, created exclusively so that no other run (or a second
+// run of the same scenario) can write to it. The HDF5 file is then created over the empty file.
+std::string claimTemporary(const std::string& path) {
+  const std::string base = path + ".tmp." + std::to_string(::getpid()) + ".";
+  for (int n = 0; n < 1000; ++n) {
+    std::string name = base + std::to_string(n);
+    const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd >= 0) {
+      ::close(fd);
+      return name;
+    }
+    if (errno != EEXIST)
+      throw WriteError("cannot create the result file '" + name + "': " + std::strerror(errno));
   }
-  H5Aclose(a);
-  H5Sclose(space);
+  throw WriteError("cannot create a temporary result file beside '" + path + "'");
 }
 
 }  // namespace
 
-ResultFile::ResultFile(std::string path) : path_(std::move(path)) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by us, not printed by HDF5
-  file_ = H5Fcreate(tmpPath().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) fail("cannot create file", tmpPath());
+void initHdf5() {
+  static const bool done = [] {
+    H5dont_atexit();
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    return true;
+  }();
+  (void)done;
 }
 
-ResultFile::~ResultFile() {
-  try {
-    finalize();
-  } catch (...) {
-    // Destructors must not throw; the .tmp file stays for inspection.
+void ResultFile::fail(const std::string& what, const std::string& name) {
+  discard();
+  throw WriteError("cannot write the result '" + path_ + "' (" + what + " '" + name +
+                   "'; disk full or not writable?); nothing was written under that name");
+}
+
+ResultFile::ResultFile(std::string path) : path_(std::move(path)) {
+  initHdf5();
+  tmp_ = claimTemporary(path_);
+  // Dense attribute storage (file format 1.8 or later) lifts the 64 KiB limit of an attribute in
+  // an object header, so a large scenario text fits in its provenance attribute.
+  Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
+  if (!fapl.ok() || !fcpl.ok() ||
+      H5Pset_libver_bounds(fapl.get(), H5F_LIBVER_V18, H5F_LIBVER_LATEST) < 0 ||
+      H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG) < 0 ||
+      H5Pset_attr_phase_change(fcpl.get(), 0, 0) < 0) {
+    std::remove(tmp_.c_str());
+    throw WriteError("HDF5: cannot set up the result file '" + tmp_ + "'");
+  }
+  file_ = H5Fcreate(tmp_.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get());
+  if (file_ < 0) {
+    std::remove(tmp_.c_str());
+    throw WriteError("HDF5: cannot create the result file '" + tmp_ + "'");
   }
 }
 
+ResultFile::~ResultFile() {
+  if (!finalized_) discard();
+}
+
+void ResultFile::closeAll() noexcept {
+  for (auto& s : series_) H5Dclose(static_cast<hid_t>(s->dataset_));
+  series_.clear();
+  if (file_ >= 0) H5Fclose(static_cast<hid_t>(file_));
+  file_ = -1;
+}
+
+void ResultFile::discard() noexcept {
+  if (finalized_) return;
+  closeAll();
+  if (!tmp_.empty()) std::remove(tmp_.c_str());
+}
+
 std::int64_t ResultFile::group(const std::string& path) {
-  if (path.empty() || path == "/") return H5Gopen2(file_, "/", H5P_DEFAULT);
-  if (H5Lexists(file_, path.c_str(), H5P_DEFAULT) > 0)
-    return H5Gopen2(file_, path.c_str(), H5P_DEFAULT);
-  hid_t lcpl = linkCreateProps();
-  hid_t g = H5Gcreate2(file_, path.c_str(), lcpl, H5P_DEFAULT, H5P_DEFAULT);
-  H5Pclose(lcpl);
+  if (file_ < 0) fail("file already closed", path);
+  const hid_t f = static_cast<hid_t>(file_);
+  if (path.empty() || path == "/") {
+    const hid_t g = H5Gopen2(f, "/", H5P_DEFAULT);
+    if (g < 0) fail("cannot open group", path);
+    return g;
+  }
+  const htri_t exists = H5Lexists(f, path.c_str(), H5P_DEFAULT);
+  if (exists > 0) {
+    const hid_t g = H5Gopen2(f, path.c_str(), H5P_DEFAULT);
+    if (g < 0) fail("cannot open group", path);
+    return g;
+  }
+  // Intermediate groups are created one level at a time so each gets dense attribute storage.
+  const auto slash = path.find_last_of('/');
+  if (slash != 0 && slash != std::string::npos)
+    H5Gclose(static_cast<hid_t>(group(path.substr(0, slash))));
+  Handle gcpl(H5Pcreate(H5P_GROUP_CREATE), H5Pclose);
+  if (!gcpl.ok() || H5Pset_attr_phase_change(gcpl.get(), 0, 0) < 0)
+    fail("cannot create group", path);
+  const hid_t g = H5Gcreate2(f, path.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT);
   if (g < 0) fail("cannot create group", path);
   return g;
 }
 
 void ResultFile::attr(const std::string& grp, const std::string& name, const std::string& value) {
-  hid_t g = group(grp);
-  writeStringAttr(g, name, value);
-  H5Gclose(g);
+  Handle g(static_cast<hid_t>(group(grp)), H5Gclose);
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  if (!type.ok() || !space.ok() || H5Tset_size(type.get(), value.empty() ? 1 : value.size()) < 0 ||
+      H5Tset_strpad(type.get(), H5T_STR_NULLPAD) < 0 || H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
+    fail("cannot write attribute", name);
+  if (H5Aexists(g.get(), name.c_str()) > 0 && H5Adelete(g.get(), name.c_str()) < 0)
+    fail("cannot replace attribute", name);
+  Handle a(H5Acreate2(g.get(), name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+           H5Aclose);
+  const char* data = value.empty() ? "" : value.c_str();
+  if (!a.ok() || H5Awrite(a.get(), type.get(), data) < 0) fail("cannot write attribute", name);
 }
 
+namespace {
+template <typename T>
+bool writeScalarAttr(hid_t obj, const std::string& name, hid_t type, T value) {
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  if (!space.ok()) return false;
+  if (H5Aexists(obj, name.c_str()) > 0 && H5Adelete(obj, name.c_str()) < 0) return false;
+  Handle a(H5Acreate2(obj, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  return a.ok() && H5Awrite(a.get(), type, &value) >= 0;
+}
+
+bool writeUnits(hid_t obj, const std::string& units) {
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+  if (!type.ok() || !space.ok() || H5Tset_size(type.get(), units.empty() ? 1 : units.size()) < 0 ||
+      H5Tset_strpad(type.get(), H5T_STR_NULLPAD) < 0 || H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
+    return false;
+  Handle a(H5Acreate2(obj, "units", type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  return a.ok() && H5Awrite(a.get(), type.get(), units.empty() ? "" : units.c_str()) >= 0;
+}
+}  // namespace
+
 void ResultFile::attr(const std::string& grp, const std::string& name, double value) {
-  hid_t g = group(grp);
-  writeScalarAttr(g, name, H5T_NATIVE_DOUBLE, value);
-  H5Gclose(g);
+  Handle g(static_cast<hid_t>(group(grp)), H5Gclose);
+  if (!writeScalarAttr(g.get(), name, H5T_NATIVE_DOUBLE, value))
+    fail("cannot write attribute", name);
 }
 
 void ResultFile::attr(const std::string& grp, const std::string& name, std::int64_t value) {
-  hid_t g = group(grp);
-  writeScalarAttr(g, name, H5T_NATIVE_INT64, value);
-  H5Gclose(g);
+  Handle g(static_cast<hid_t>(group(grp)), H5Gclose);
+  if (!writeScalarAttr(g.get(), name, H5T_NATIVE_INT64, value))
+    fail("cannot write attribute", name);
 }
 
 void ResultFile::dataset(const std::string& path, const std::vector<double>& data,
                          const std::string& units) {
-  hsize_t n = data.size();
-  hid_t space = H5Screate_simple(1, &n, nullptr);
-  hid_t lcpl = linkCreateProps();
-  hid_t d =
-      H5Dcreate2(file_, path.c_str(), H5T_NATIVE_DOUBLE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
-  H5Pclose(lcpl);
-  H5Sclose(space);
-  if (d < 0) fail("cannot create dataset", path);
-  if (n > 0 && H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0) {
-    H5Dclose(d);
-    fail("cannot write dataset", path);
-  }
-  writeStringAttr(d, "units", units);
-  H5Dclose(d);
+  dataset2d(path, data.size(), 0, data, units);
 }
 
 void ResultFile::dataset2d(const std::string& path, std::size_t rows, std::size_t cols,
                            const std::vector<double>& data, const std::string& units) {
-  if (data.size() != rows * cols) fail("2-D data of the wrong size for", path);
+  // cols == 0: a 1-D dataset of `rows` values.
+  const int rank = cols == 0 ? 1 : 2;
+  if (data.size() != rows * (cols == 0 ? 1 : cols))
+    throw std::logic_error("result file: data of the wrong size for '" + path + "'");
+  const auto slash = path.find_last_of('/');
+  if (slash != 0 && slash != std::string::npos)
+    H5Gclose(static_cast<hid_t>(group(path.substr(0, slash))));
   hsize_t dims[2] = {rows, cols};
-  hid_t space = H5Screate_simple(2, dims, nullptr);
-  hid_t lcpl = linkCreateProps();
-  hid_t d =
-      H5Dcreate2(file_, path.c_str(), H5T_NATIVE_DOUBLE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
-  H5Pclose(lcpl);
-  H5Sclose(space);
-  if (d < 0) fail("cannot create dataset", path);
+  Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
+  if (!space.ok()) fail("cannot create dataset", path);
+  Handle d(H5Dcreate2(static_cast<hid_t>(file_), path.c_str(), H5T_NATIVE_DOUBLE, space.get(),
+                      H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+           H5Dclose);
+  if (!d.ok()) fail("cannot create dataset", path);
   if (!data.empty() &&
-      H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0) {
-    H5Dclose(d);
+      H5Dwrite(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
     fail("cannot write dataset", path);
-  }
-  writeStringAttr(d, "units", units);
-  H5Dclose(d);
+  if (!writeUnits(d.get(), units)) fail("cannot write units of", path);
 }
 
 Series& ResultFile::series(const std::string& path, const std::string& units) {
+  const auto slash = path.find_last_of('/');
+  if (slash != 0 && slash != std::string::npos)
+    H5Gclose(static_cast<hid_t>(group(path.substr(0, slash))));
   hsize_t zero = 0, unlimited = H5S_UNLIMITED, chunk = kChunk;
-  hid_t space = H5Screate_simple(1, &zero, &unlimited);
-  hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
-  H5Pset_chunk(dcpl, 1, &chunk);
-  hid_t lcpl = linkCreateProps();
-  hid_t d = H5Dcreate2(file_, path.c_str(), H5T_NATIVE_DOUBLE, space, lcpl, dcpl, H5P_DEFAULT);
-  H5Pclose(lcpl);
-  H5Pclose(dcpl);
-  H5Sclose(space);
+  Handle space(H5Screate_simple(1, &zero, &unlimited), H5Sclose);
+  Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  if (!space.ok() || !dcpl.ok() || H5Pset_chunk(dcpl.get(), 1, &chunk) < 0)
+    fail("cannot create dataset", path);
+  const hid_t d = H5Dcreate2(static_cast<hid_t>(file_), path.c_str(), H5T_NATIVE_DOUBLE,
+                             space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT);
   if (d < 0) fail("cannot create dataset", path);
-  writeStringAttr(d, "units", units);
   series_.push_back(std::unique_ptr<Series>(new Series(this, d)));
+  if (!writeUnits(d, units)) fail("cannot write units of", path);
   return *series_.back();
 }
 
 void ResultFile::flushSeries(Series& s) {
   if (s.buffer_.empty()) return;
   hsize_t newSize = s.written_ + s.buffer_.size();
-  hid_t d = static_cast<hid_t>(s.dataset_);
+  const hid_t d = static_cast<hid_t>(s.dataset_);
   if (H5Dset_extent(d, &newSize) < 0) fail("cannot extend dataset", "series");
-  hid_t fspace = H5Dget_space(d);
+  Handle fspace(H5Dget_space(d), H5Sclose);
   hsize_t start = s.written_, count = s.buffer_.size();
-  H5Sselect_hyperslab(fspace, H5S_SELECT_SET, &start, nullptr, &count, nullptr);
-  hid_t mspace = H5Screate_simple(1, &count, nullptr);
-  herr_t rc = H5Dwrite(d, H5T_NATIVE_DOUBLE, mspace, fspace, H5P_DEFAULT, s.buffer_.data());
-  H5Sclose(mspace);
-  H5Sclose(fspace);
-  if (rc < 0) fail("cannot append to dataset", "series");
+  Handle mspace(H5Screate_simple(1, &count, nullptr), H5Sclose);
+  if (!fspace.ok() || !mspace.ok() ||
+      H5Sselect_hyperslab(fspace.get(), H5S_SELECT_SET, &start, nullptr, &count, nullptr) < 0 ||
+      H5Dwrite(d, H5T_NATIVE_DOUBLE, mspace.get(), fspace.get(), H5P_DEFAULT, s.buffer_.data()) < 0)
+    fail("cannot append to dataset", "series");
   s.written_ = newSize;
   s.buffer_.clear();
 }
 
 void ResultFile::flush() {
   if (finalized_) return;
+  if (file_ < 0) fail("file already closed", tmp_);
   for (auto& s : series_) flushSeries(*s);
-  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+  if (H5Fflush(static_cast<hid_t>(file_), H5F_SCOPE_GLOBAL) < 0) fail("cannot flush", tmp_);
 }
 
 void ResultFile::finalize() {
   if (finalized_) return;
   flush();
-  for (auto& s : series_) H5Dclose(static_cast<hid_t>(s->dataset_));
+  for (auto& s : series_) {
+    if (H5Dclose(static_cast<hid_t>(s->dataset_)) < 0) {
+      s->dataset_ = -1;
+      fail("cannot close dataset", "series");
+    }
+  }
   series_.clear();
-  H5Fclose(file_);
+  const herr_t rc = H5Fclose(static_cast<hid_t>(file_));
+  file_ = -1;
+  if (rc < 0) fail("cannot close", tmp_);
+  // The data must be on disk before the rename makes it the result (a crash in between must not
+  // leave a renamed, incomplete file).
+  const int fd = ::open(tmp_.c_str(), O_RDONLY | O_CLOEXEC);
+  const bool synced = fd >= 0 && ::fsync(fd) == 0;
+  if (fd >= 0) ::close(fd);
+  if (!synced) fail("cannot sync", tmp_);
+  if (std::rename(tmp_.c_str(), path_.c_str()) != 0) fail("cannot rename to", path_);
   finalized_ = true;
-  if (std::rename(tmpPath().c_str(), path_.c_str()) != 0) fail("cannot rename to", path_);
 }
 
 }  // namespace rb::io

@@ -2,16 +2,28 @@
 // The HDF5 result file (architecture.md, "Output layout"). This folder is the only code that
 // includes HDF5 headers; the rest of the engine sees this small interface.
 //
-// A file is written under "<path>.tmp" and renamed to <path> by finalize(), so a reader never sees
-// a half-written result under the final name. Time series are appendable and flushed in chunks so
-// a run that fails keeps everything written so far (finalize() is still called, with
-// /stats/status = "failed").
+// Life cycle: a file is written under a temporary name of its own, "<path>.tmp.<pid>.<n>", created
+// exclusively (two runs writing the same <path> never share a temporary). finalize() flushes,
+// closes and only then renames it over <path>, so <path> only ever holds a complete, closed file.
+// A file that is not finalized (an exception, a run that did not start) is closed and deleted by
+// the destructor: an earlier result at <path> is never replaced by a run that did not run. Every
+// HDF5 call is checked; a failure (disk full, I/O error) throws WriteError and the temporary is
+// deleted. Time series are appendable and flushed in chunks so a run that fails keeps everything
+// written so far (its caller finalizes it with /stats/status = "failed").
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace rb::io {
+
+// The result could not be written (disk full, I/O error, no permission): an environment problem,
+// not a bug. Nothing was left under the final name.
+class WriteError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 class ResultFile;
 
@@ -32,16 +44,18 @@ class Series {
 
 class ResultFile {
  public:
-  // Creates "<path>.tmp" (truncating). Throws std::runtime_error naming the path on failure.
+  // Creates the temporary beside `path`. Throws WriteError naming the path on failure.
   explicit ResultFile(std::string path);
+  // Closes and deletes the temporary unless finalize() succeeded; never throws.
   ~ResultFile();
   ResultFile(const ResultFile&) = delete;
   ResultFile& operator=(const ResultFile&) = delete;
 
   const std::string& path() const { return path_; }
-  std::string tmpPath() const { return path_ + ".tmp"; }
+  const std::string& tmpPath() const { return tmp_; }
 
-  // Attributes on a group (created with intermediate groups as needed; "/" is the root).
+  // Attributes on a group (created with intermediate groups as needed; "/" is the root). String
+  // attributes may be large (a whole scenario text): they use HDF5's dense attribute storage.
   void attr(const std::string& group, const std::string& name, const std::string& value);
   void attr(const std::string& group, const std::string& name, double value);
   void attr(const std::string& group, const std::string& name, std::int64_t value);
@@ -54,15 +68,22 @@ class ResultFile {
   // An appendable dataset; the returned Series lives as long as this file.
   Series& series(const std::string& path, const std::string& units);
 
-  // Writes buffered series data and flushes the file to disk.
+  // Writes buffered series data and flushes the file to disk. Throws WriteError.
   void flush();
-  // Flushes, closes and renames "<path>.tmp" to <path>. Idempotent.
+  // Flushes, closes and renames the temporary to path(). Throws WriteError (the temporary is then
+  // deleted and path() is left as it was). Idempotent after success.
   void finalize();
+  // Closes and deletes the temporary; path() is left as it was. Never throws.
+  void discard() noexcept;
+  bool finalized() const { return finalized_; }
 
  private:
   std::int64_t group(const std::string& path);  // opens or creates; caller closes
   void flushSeries(Series& s);
+  void closeAll() noexcept;
+  [[noreturn]] void fail(const std::string& what, const std::string& name);
   std::string path_;
+  std::string tmp_;
   std::int64_t file_ = -1;
   bool finalized_ = false;
   std::vector<std::unique_ptr<Series>> series_;

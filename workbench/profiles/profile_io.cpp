@@ -5,11 +5,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <string_view>
 #include <utility>
 
 #include "workbench/core/error.hpp"
+#include "workbench/core/files.hpp"
 #include "workbench/profiles/sampling.hpp"
 #include "workbench/profiles/smoothing_spline.hpp"
 
@@ -17,6 +18,22 @@ namespace rb::profiles {
 namespace {
 
 constexpr std::size_t kMinPoints = 10;
+constexpr std::size_t kMaxDiagnostics = 20;
+// [m] Kept points closer than this are duplicates for any profile measurement (the benchmark
+// files have 1 nm steps only on the vertical flanks, which the slope filter cuts), and at subnormal
+// spacings the spline system becomes singular.
+constexpr double kMinPointSpacing = 1e-9;
+// Point weights are relative; with ratios beyond this range the smoothing-spline system (terms
+// lambda / w) loses its positive definiteness in floating point.
+constexpr double kMinWeight = 1e-6;
+constexpr double kMaxWeight = 1e6;
+
+// True when alignedGrid(a, b, ds) has its minimum of 4 nodes inside [a, b] (the same test).
+bool gridFits(double a, double b, double ds) {
+  const double tol = 1e-9;
+  return std::floor(b / ds + tol) - std::ceil(a / ds - tol) >= 3.0;
+}
+
 constexpr double kMinWheelRadius = 0.2;  // [m]
 constexpr double kMaxWheelRadius = 0.7;  // [m]
 
@@ -68,17 +85,62 @@ bool parseNumber(std::string_view t, double& v) {
   return r.ec == std::errc() && r.ptr == t.data() + t.size() && std::isfinite(v);
 }
 
-std::vector<std::string> readLines(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(SourceLoc{path, 0}, "cannot open profile file");
-  std::vector<std::string> lines;
-  std::string line;
-  while (std::getline(in, line)) lines.push_back(line);
-  return lines;
+// The lines of a text one at a time (without their '\n'), as views into it: a file of millions of
+// lines costs no index of them.
+class Lines {
+ public:
+  explicit Lines(std::string_view text) : text_(text) {}
+  bool next(std::string_view& line) {
+    if (pos_ >= text_.size()) return false;
+    const std::size_t e = text_.find('\n', pos_);
+    const std::size_t end = e == std::string_view::npos ? text_.size() : e;
+    line = text_.substr(pos_, end - pos_);
+    pos_ = end + 1;
+    ++count_;
+    return true;
+  }
+  int count() const { return count_; }  // lines returned so far = number of the last one
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  int count_ = 0;
+};
+
+std::string readProfileText(const std::string& path) {
+  std::string why;
+  std::optional<std::string> text = readRegularFile(path, why, kMaxProfileFileBytes);
+  if (!text) {
+    throw InputError(SourceLoc{path, 0},
+                     "cannot open profile file" + (why == "no such file" ? "" : ": " + why));
+  }
+  return std::move(*text);
+}
+
+// Diagnostics of one file, bounded: a file of garbage reports its first problems, not millions.
+class FileDiagnostics {
+ public:
+  bool full() const { return diags_.size() >= kMaxDiagnostics; }
+  void add(const SourceLoc& loc, std::string message) {
+    if (full()) return;
+    diags_.add(loc, std::move(message));
+    if (full()) {
+      diags_.add(loc, "too many problems; the rest of the file was not checked");
+    }
+  }
+  void throwIfAny() const { diags_.throwIfAny(); }
+
+ private:
+  Diagnostics diags_;
+};
+
+std::string tooManyPoints() {
+  return "more than " + std::to_string(kMaxProfilePoints) +
+         " profile points (a measured profile has a few thousand): thin the data";
 }
 
 // Parses "y z [weight]"; on failure adds a diagnostic and returns false.
-bool parsePoint(std::string_view text, const SourceLoc& loc, Diagnostics& diags, double& y,
+bool parsePoint(std::string_view text, const SourceLoc& loc, FileDiagnostics& diags, double& y,
                 double& z, double& w) {
   const auto tk = tokens(text);
   double v[3] = {0.0, 0.0, 1.0};
@@ -97,6 +159,11 @@ bool parsePoint(std::string_view text, const SourceLoc& loc, Diagnostics& diags,
     diags.add(loc, "point weight must be positive, got " + num(v[2]));
     return false;
   }
+  if (v[2] < kMinWeight || v[2] > kMaxWeight) {
+    diags.add(loc, "point weight " + num(v[2]) + " is outside " + num(kMinWeight) + " .. " +
+                       num(kMaxWeight) + " (weights are relative: scale them)");
+    return false;
+  }
   y = v[0];
   z = v[1];
   w = v[2];
@@ -110,10 +177,14 @@ std::string stem(const std::string& path) {
 }  // namespace
 
 ProfilePoints readSimpackPoints(const std::string& path) {
-  const std::vector<std::string> lines = readLines(path);
+  return parseSimpackPoints(readProfileText(path), path);
+}
+
+ProfilePoints parseSimpackPoints(std::string_view fileText, const std::string& path) {
+  Lines lines(fileText);
   ProfilePoints pts;
   pts.file = path;
-  Diagnostics diags;
+  FileDiagnostics diags;
   enum class Block { None, Header, Spline } block = Block::None;
   int typeValue = -1, typeLine = 0, pointBegin = 0, pointEnd = 0;
   double unitFactor = 1.0, mirrorY = 0.0, mirrorZ = 0.0;
@@ -122,10 +193,11 @@ ProfilePoints readSimpackPoints(const std::string& path) {
   std::vector<double> ry, rz, rw;
   std::vector<int> rl;
   bool inPoints = false, unterminated = false;
-  for (std::size_t k = 0; k < lines.size(); ++k) {
-    const int ln = static_cast<int>(k) + 1;
+  std::string_view raw;
+  while (!diags.full() && lines.next(raw)) {
+    const int ln = lines.count();
     const SourceLoc loc{path, ln};
-    const std::string_view text = trim(stripBang(lines[k]));
+    const std::string_view text = trim(stripBang(raw));
     if (text.empty()) continue;
     if (inPoints) {
       if (text == "point.end") {
@@ -141,6 +213,10 @@ ProfilePoints readSimpackPoints(const std::string& path) {
                 : text == "spline.begin" ? Block::Spline
                                          : Block::None;
         continue;
+      }
+      if (ry.size() == kMaxProfilePoints) {
+        diags.add(loc, tooManyPoints());
+        diags.throwIfAny();
       }
       double y = 0, z = 0, w = 1;
       if (parsePoint(text, loc, diags, y, z, w)) {
@@ -173,7 +249,9 @@ ProfilePoints readSimpackPoints(const std::string& path) {
       double v = 0.0;
       if (block == Block::Header && key == "type") {
         number(v);
-        typeValue = static_cast<int>(v);
+        // Only the exact values 0 and 1 name a type; anything else (0.5, 1e300, nan) must stay
+        // invalid rather than be truncated, and a cast of a huge value to int is undefined.
+        typeValue = v == 0.0 ? 0 : v == 1.0 ? 1 : -2;
         typeLine = ln;
       } else if (block == Block::Spline) {
         if (key == "units.len.f") {
@@ -199,7 +277,7 @@ ProfilePoints readSimpackPoints(const std::string& path) {
       }
     }
   }
-  const int lastLine = static_cast<int>(lines.size());
+  const int lastLine = lines.count();
   if (inPoints || unterminated) {
     diags.add(SourceLoc{path, pointBegin}, "point.begin without point.end");
   } else if (pointBegin == 0) {
@@ -240,18 +318,24 @@ ProfilePoints readSimpackPoints(const std::string& path) {
 }
 
 ProfilePoints readTextPoints(const std::string& path, ProfileKind kind, LengthUnit units) {
-  const std::vector<std::string> lines = readLines(path);
+  return parseTextPoints(readProfileText(path), path, kind, units);
+}
+
+ProfilePoints parseTextPoints(std::string_view fileText, const std::string& path, ProfileKind kind,
+                              LengthUnit units) {
+  Lines lines(fileText);
   ProfilePoints pts;
   pts.file = path;
   pts.kind = kind;
   pts.unitsHint =
       units == LengthUnit::Metre ? "the units argument says m" : "the units argument says mm";
   const double f = units == LengthUnit::Metre ? 1.0 : 1e-3;
-  Diagnostics diags;
+  FileDiagnostics diags;
   bool dataStarted = false;
-  for (std::size_t k = 0; k < lines.size(); ++k) {
-    const int ln = static_cast<int>(k) + 1;
-    std::string_view text = trim(lines[k]);
+  std::string_view raw;
+  while (!diags.full() && lines.next(raw)) {
+    const int ln = lines.count();
+    std::string_view text = trim(raw);
     if (text.empty() || text.front() == '#' || text.front() == '!' || text.front() == '%' ||
         text.substr(0, 2) == "//") {
       continue;
@@ -260,8 +344,13 @@ ProfilePoints readTextPoints(const std::string& path, ProfileKind kind, LengthUn
     if (text.empty()) continue;
     const auto tk = tokens(text);
     double first = 0.0;
-    if (!dataStarted && !parseNumber(tk.front(), first)) continue;  // header line
+    // A header line (or one of separators only) before the data.
+    if (!dataStarted && (tk.empty() || !parseNumber(tk.front(), first))) continue;
     dataStarted = true;
+    if (pts.y.size() == kMaxProfilePoints) {
+      diags.add(SourceLoc{path, ln}, tooManyPoints());
+      diags.throwIfAny();
+    }
     double y = 0, z = 0, w = 1;
     if (parsePoint(text, SourceLoc{path, ln}, diags, y, z, w)) {
       pts.y.push_back(f * y);
@@ -272,7 +361,7 @@ ProfilePoints readTextPoints(const std::string& path, ProfileKind kind, LengthUn
     }
   }
   diags.throwIfAny();
-  if (pts.endLine == 0) pts.endLine = static_cast<int>(lines.size());
+  if (pts.endLine == 0) pts.endLine = lines.count();
   return pts;
 }
 
@@ -368,9 +457,20 @@ Profile profileFromPoints(const ProfilePoints& p, const ProfileReadOptions& opt,
                        "after the rotation by " + num(opt.rotate) +
                            " rad the points are no longer ordered along y (lower maxSlope)");
     }
+    if (!(s[k] - s[k - 1] >= kMinPointSpacing)) {
+      throw InputError(SourceLoc{p.file, lines[k]},
+                       "y = " + num(s[k]) + " m is closer than 1 nm to the previous point (y = " +
+                           num(s[k - 1]) + " m): merge or drop duplicate points");
+    }
+  }
+  const double s0 = s.front(), s1 = s.back();
+  if (!gridFits(s0, s1, opt.ds)) {
+    throw InputError(SourceLoc{p.file, p.endLine},
+                     "the kept points span only " + num(1e3 * (s1 - s0)) +
+                         " mm along y; the profile grid needs at least 4 steps of " +
+                         num(1e3 * opt.ds) + " mm inside them");
   }
   const double lambda = SmoothingSpline::lambdaForLength(s, w, opt.smoothingLength);
-  const double s0 = s.front(), s1 = s.back();
   const SmoothingSpline fit(std::move(s), h, std::move(w), lambda, SplineEnd::NotAKnot);
   const UniformGrid g = alignedGrid(s0, s1, opt.ds);
   std::vector<double> hv(g.n);

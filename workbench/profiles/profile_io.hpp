@@ -14,7 +14,8 @@
 //   field side). Wheel: z is the radius increase over the tape circle, UP (the benchmark file
 //   MBench_S1002_v3.prw has y = -S with mirror.y = 1, z = F), h = r0 + z. Rail: z is DOWNWARD
 //   (SIMPACK rail convention), h = -z.
-// - Plain text: two columns `y z` (a third column, if any, is a weight), separated by blanks, tabs,
+// - Plain text: two columns `y z` (a third column, if any, is a weight in 1e-6 .. 1e6), separated
+// by blanks, tabs,
 //   commas or semicolons, in mm or m (the `units` argument). Lines starting with #, !, % or // are
 //   comments; non-numeric lines before the first data line are headers; a trailing # or ! comment
 //   is allowed. Rail: z up, h = z. Wheel: h = r0 + z, or h = z (z is the radius) when r0 = 0.
@@ -26,10 +27,17 @@
 // grid of step ds aligned on multiples of ds inside the kept points.
 //
 // Errors: bad files throw rb::InputError whose diagnostic is "file:line: message", the line being
-// the offending one: non-numeric data, fewer than 10 points, y not strictly monotone, implausible
-// units (a coordinate > 1 m, or all coordinates < 1 mm), a wheel radius outside 0.2 .. 0.7 m, a
-// missing or unterminated point block, a wrong profile type, unsupported processing keys.
+// the offending one: non-numeric data, fewer than 10 points, y not strictly monotone or two points
+// closer than 1 nm, implausible units (a coordinate > 1 m, or all coordinates < 1 mm), a wheel
+// radius outside 0.2 .. 0.7 m, kept points spanning fewer than 4 grid steps ds, a missing or
+// unterminated point block, a wrong profile type, unsupported processing keys.
+// A file that is not a regular file (a FIFO, a device, a folder) or larger than
+// kMaxProfileFileBytes (32 MiB) is refused (rb::readRegularFile), and so are more than
+// kMaxProfilePoints (200 000) points: measured profiles have a few thousand, and the bounds keep a
+// runaway file from taking gigabytes. At most 20 problems are reported per file.
+#include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "workbench/profiles/profile.hpp"
@@ -37,6 +45,11 @@
 namespace rb::profiles {
 
 enum class LengthUnit { Millimetre, Metre };
+
+// Most points, and most bytes, a profile file may hold (see "Errors" above): 200 000 points take
+// about 8 MiB of text.
+inline constexpr std::size_t kMaxProfilePoints = 200'000;
+inline constexpr std::size_t kMaxProfileFileBytes = std::size_t{32} << 20;
 
 struct ProfileReadOptions {
   double r0 = 0.0;               // wheel: tape-circle radius [m] (h = r0 + z); 0 for text files
@@ -67,6 +80,11 @@ struct ProfilePoints {
 
 ProfilePoints readSimpackPoints(const std::string& path);
 ProfilePoints readTextPoints(const std::string& path, ProfileKind kind, LengthUnit units);
+// The same from the file's text already in memory; `path` names it in messages (and, for SIMPACK,
+// its extension .prw / .prr gives the type when the header has none).
+ProfilePoints parseSimpackPoints(std::string_view text, const std::string& path);
+ProfilePoints parseTextPoints(std::string_view text, const std::string& path, ProfileKind kind,
+                              LengthUnit units);
 
 // Checks, trims, smooths and resamples (see above).
 Profile profileFromPoints(const ProfilePoints& points, const ProfileReadOptions& options,

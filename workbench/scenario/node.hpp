@@ -13,6 +13,9 @@
 namespace rb::scenario {
 
 struct Node {
+  // Declared so that clang 14 with libstdc++ 12 in C++20 accepts the pair of a still-incomplete
+  // Node in `fields` (it otherwise checks pair's conditional explicit constructor too early).
+  Node() = default;
   enum class Type { Nil, Bool, Number, String, Table, Function };
   Type type = Type::Nil;
   bool boolean = false;

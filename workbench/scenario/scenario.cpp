@@ -652,6 +652,7 @@ void buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
                         : dynamics::NormalForceCoupling::Lagged;
   c.wheelset_spin = r.choice("wheelset_spin") == "prescribed" ? dynamics::WheelsetSpin::Prescribed
                                                               : dynamics::WheelsetSpin::Free;
+  c.min_normal_force = r.number("min_normal_force");
   // Options that belong to the other method are conflicts, not silently ignored.
   bool kec = c.method == dynamics::ContactMethod::Kec;
   for (const char* k : {"flange_stiffness", "flange_damping"})
@@ -705,6 +706,7 @@ void buildRun(const Node& n, RunSpec& run, Diagnostics& d) {
     run.output_every = o.number("every");
     if (o.has("elements")) run.output_elements = o.names("elements");
     run.body_accelerations = o.boolean("body_accelerations");
+    run.max_output_samples = o.number("max_samples");
   }
 }
 

@@ -17,6 +17,7 @@ struct RunSpec {
   double output_every = 0.01;                // [s]
   std::vector<std::string> output_elements;  // element names (checked against the vehicle)
   bool body_accelerations = false;
+  double max_output_samples = 1e7;  // refuse runs with more output times (memory, disk)
   SourceLoc loc;
 };
 

@@ -227,7 +227,12 @@ std::vector<BlockSpec> build() {
         choice("wheelset_spin", {"free", "prescribed"}, "free",
                "free: the wheelset spin is a degree of freedom driven by creep (stiff, needs "
                "ABM steps < 0.5 ms at 20 m/s); prescribed: spin rate V(t)/r_c (constant "
-               "rotational speed, the spin torque is a reaction), stable with ABM at 1 ms")}});
+               "rotational speed, the spin torque is a reaction), stable with ABM at 1 ms"),
+        num("min_normal_force", "N", 0,
+            "a wheel whose constraint normal force falls below this stops the run (exit 2): a "
+            "constraint contact cannot lift the wheel, so results past wheel lift are not "
+            "physical",
+            0, 1e7)}});
 
   // Vehicle (issue 5): bodies in track-frame coordinates and suspension elements (Appendix A).
   s.push_back(
@@ -301,8 +306,9 @@ std::vector<BlockSpec> build() {
   s.push_back(
       {"study",
        "A study (issue 7): a matrix of variations over a base scenario. `workbench study FILE` "
-       "runs every case (in parallel, each its own HDF5), skips cases already finished, and "
-       "writes a summary (CSV and HDF5). Keys of matrix and cases are --set paths.",
+       "runs every case (in parallel, each its own HDF5), skips cases already finished with "
+       "the same inputs, and writes a summary (CSV and HDF5). Keys of matrix and cases are --set "
+       "paths.",
        {typed("base", ValueType::String, "-", "base scenario file, relative to the study file",
               true),
         typed("matrix", ValueType::Table, "-",
@@ -311,7 +317,11 @@ std::vector<BlockSpec> build() {
               "{ { [\"solver.method\"] = \"bdf\", [\"solver.rtol\"] = 1e-6 }, ... }: explicit "
               "variants, combined with every matrix combination"),
         integer("repeats", 1, "runs per case (CPU time is reported as the median)", 1, 100),
-        integer("jobs", 0, "cases run at once, 0 = number of cores", 0, 64)}});
+        integer("jobs", 0, "cases run at once, 0 = number of cores", 0, 64),
+        integer("max_cases", 10000,
+                "largest number of cases (matrix combinations x cases) the study may expand to; "
+                "a bigger study is refused before anything runs",
+                1, 100000000)}});
 
   std::vector<std::string> methodNames;
   std::string methodHelp = "integrator:";
@@ -346,7 +356,11 @@ std::vector<BlockSpec> build() {
                 typed("elements", ValueType::StringList, "-",
                       "suspension elements whose deflection and force are written, by name"),
                 boolean("body_accelerations", false,
-                        "write body accelerations (ride analysis) for every body")}});
+                        "write body accelerations (ride analysis) for every body"),
+                num("max_samples", "-", 1e7,
+                    "largest number of output times a run may write (a bound on memory and "
+                    "disk; raise it for long, finely sampled runs)",
+                    1, 1e12)}});
   return s;
 }
 

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <set>
 
 #include "workbench/core/strings.hpp"
 #include "workbench/scenario/lua_host.hpp"
@@ -162,8 +164,9 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
   auto intKey = [&](const char* key, int def, int lo, int hi) {
     const Node* v = n->field(key);
     if (!v) return def;
-    if (v->type != Node::Type::Number || v->number != static_cast<int>(v->number) ||
-        v->number < lo || v->number > hi) {
+    // Range first: converting a double beyond int's range is undefined.
+    if (v->type != Node::Type::Number || !(v->number >= lo && v->number <= hi) ||
+        v->number != std::floor(v->number)) {
       err(std::string(key) + " must be a whole number in [" + std::to_string(lo) + ", " +
           std::to_string(hi) + "]");
       return def;
@@ -172,6 +175,7 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
   };
   st.repeats = intKey("repeats", 1, 1, 100);
   st.jobs = intKey("jobs", 0, 0, 64);
+  st.max_cases = intKey("max_cases", static_cast<int>(StudySpec::kDefaultMaxCases), 1, 100000000);
 
   // Matrix: ordered keys (Node fields are sorted), each a list of scalars.
   std::vector<std::pair<std::string, std::vector<std::string>>> axes;
@@ -241,6 +245,29 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
   if (variants.empty()) variants.push_back({});
   d.throwIfAny();
 
+  // The number of cases before expanding them: a matrix of a few long axes multiplies to more
+  // cases than memory holds (each a list of strings), so it is refused here, with the sizes.
+  {
+    const auto where = [&]() {
+      const Node* m = n->field("matrix");
+      return m ? m->loc : n->loc;
+    }();
+    double count = static_cast<double>(variants.size());
+    std::string sizes;
+    for (const auto& [k, vals] : axes) {
+      count *= static_cast<double>(vals.size());
+      sizes += std::to_string(vals.size()) + " x ";
+    }
+    sizes += std::to_string(variants.size());
+    if (count > static_cast<double>(st.max_cases)) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.0f", count);
+      throw InputError(where, "study: " + std::string(buf) + " cases (" + sizes +
+                                  ") exceed max_cases = " + std::to_string(st.max_cases) +
+                                  "; raise study.max_cases if that many are meant");
+    }
+  }
+
   // Cartesian product: matrix combinations (first key slowest) x explicit variants.
   std::vector<std::vector<std::string>> combos = {{}};
   for (const auto& [k, vals] : axes) {
@@ -253,6 +280,7 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
       }
     combos = next;
   }
+  std::set<std::string> ids;
   std::vector<std::string> given;                    // label given in the case, per case
   std::vector<std::vector<std::string>> matrixPart;  // its matrix overrides
   for (const auto& c : combos)
@@ -269,14 +297,12 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
       std::string key = join(sc.overrides, ";");
       if (!v.base.empty()) key += ";base=" + v.base;
       char buf[32];
-      std::snprintf(buf, sizeof buf, "case_%08llx",
-                    static_cast<unsigned long long>(fnv1a(key) & 0xffffffffull));
+      std::snprintf(buf, sizeof buf, "case_%016llx", static_cast<unsigned long long>(fnv1a(key)));
       sc.id = buf;
-      for (const auto& other : st.cases)
-        if (other.id == sc.id)
-          d.add(n->loc, "study: two cases have the same overrides and base (" +
-                            (v.label.empty() ? join(sc.overrides, " ") : v.label) +
-                            "); give them different values");
+      if (!ids.insert(sc.id).second)
+        d.add(n->loc, "study: two cases have the same overrides and base (" +
+                          (v.label.empty() ? join(sc.overrides, " ") : v.label) +
+                          "); give them different values");
       st.cases.push_back(sc);
     }
   d.throwIfAny();

@@ -1,5 +1,5 @@
 #pragma once
-// A study file (issue 7): study { base = "...", matrix = {...}, cases = {...}, repeats, jobs }.
+// A study file: study { base = "...", matrix = {...}, cases = {...}, repeats, jobs, max_cases }.
 // Loading expands it into the list of cases, each a list of --set overrides on a base scenario.
 //
 // An entry of `cases` holds --set paths ("block.key") and, optionally, three study keys (no dot):
@@ -23,7 +23,7 @@
 namespace rb::scenario {
 
 struct StudyCase {
-  std::string id;                      // stable name: "case_<hash of base and overrides>"
+  std::string id;  // stable file name: "case_<64-bit hash of the overrides and the own base>"
   std::vector<std::string> overrides;  // "key=value", in a fixed order
   std::string label;                   // readable name (given, or made from the overrides)
   std::string base;                    // resolved base scenario path of this case
@@ -36,7 +36,12 @@ struct StudySpec {
   std::vector<StudyCase> cases;
   int repeats = 1;
   int jobs = 0;
+  // Largest number of cases (matrix combinations x entries of `cases`) loadStudy expands: a
+  // study beyond it is refused at its study{} block before anything is expanded or run (key
+  // study.max_cases).
+  long long max_cases = kDefaultMaxCases;
   SourceLoc loc;
+  static constexpr long long kDefaultMaxCases = 10000;
 };
 
 // Throws InputError (file:line) for a bad study file.

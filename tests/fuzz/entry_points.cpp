@@ -1,0 +1,261 @@
+#include "entry_points.hpp"
+
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "workbench/contact/kec.hpp"
+#include "workbench/contact/lut.hpp"
+#include "workbench/contact/table_io.hpp"
+#include "workbench/core/error.hpp"
+#include "workbench/profiles/profile_io.hpp"
+#include "workbench/scenario/scenario.hpp"
+#include "workbench/track/irregularities.hpp"
+
+#ifndef RB_SOURCE_DIR
+#error "RB_SOURCE_DIR must name the source tree (scenarios/, profiles/)"
+#endif
+
+namespace rb::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A private folder for the files the readers need on disk, removed at exit.
+class ScratchDir {
+ public:
+  ScratchDir() {
+    std::string templ = (fs::temp_directory_path() / "railbench_fuzz_XXXXXX").string();
+    if (::mkdtemp(templ.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+    path_ = templ;
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+
+  std::string write(const std::string& name, std::string_view data) const {
+    const std::string file = (path_ / name).string();
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(data.data(), static_cast<std::streamsize>(data.size()));
+    out.close();
+    if (!out) throw std::runtime_error("cannot write " + file);
+    return file;
+  }
+
+ private:
+  fs::path path_;
+};
+
+const ScratchDir& scratch() {
+  static const ScratchDir dir;
+  return dir;
+}
+
+// Splits off the leading "--@set key=value" lines as overrides (the rest stays in the script,
+// where they are comments, so that line numbers do not move).
+std::vector<std::string> overridesOf(std::string_view data) {
+  constexpr std::string_view tag = "--@set ";
+  std::vector<std::string> out;
+  std::size_t b = 0;
+  while (b < data.size() && data.substr(b, tag.size()) == tag) {
+    std::size_t e = data.find('\n', b);
+    if (e == std::string_view::npos) e = data.size();
+    out.emplace_back(data.substr(b + tag.size(), e - b - tag.size()));
+    b = e + 1;
+  }
+  return out;
+}
+
+// Lua instructions per input (the program allows 2e9): an endless loop the guard catches ends as
+// an InputError well within the smoke runs' 10 s per input; one it misses shows as a timeout.
+constexpr long long kFuzzInstructionLimit = 20'000'000;
+
+void touchProfile(const profiles::Profile& p) {
+  volatile double sink = 0.0;
+  const double a = p.sMin(), b = p.sMax();
+  for (int i = 0; i <= 8; ++i) {
+    const double s = a + (b - a) * i / 8.0;
+    sink = sink + p.at(s).h + p.curvature(s);
+  }
+  (void)sink;
+}
+
+// The CSV reader's entry point: the only call to adapt when its interface changes.
+std::optional<track::IrregularityTable> parseCsv(std::string_view data, Diagnostics& diags) {
+  std::istringstream in{std::string(data)};
+  return track::parseIrregularityCsv(in, "fuzz.csv", diags);
+}
+
+// The table file format of table_io.hpp: magic, byte-order mark, version, hash, payload size,
+// payload, FNV-1a 64 checksum (over 8-byte words, then the tail bytes).
+constexpr std::uint64_t kFuzzHash = 0x5eed5eed5eed5eedULL;
+
+std::uint64_t fnv1aWords(const char* p, std::size_t n) {
+  std::uint64_t h = 14695981039346656037ULL;
+  constexpr std::uint64_t prime = 1099511628211ULL;
+  std::size_t i = 0;
+  for (; i + 8 <= n; i += 8) {
+    std::uint64_t w;
+    std::memcpy(&w, p + i, 8);
+    h = (h ^ w) * prime;
+  }
+  for (; i < n; ++i) h = (h ^ static_cast<unsigned char>(p[i])) * prime;
+  return h;
+}
+
+void appendU64(std::string& s, std::uint64_t v) {
+  char b[8];
+  std::memcpy(b, &v, 8);
+  s.append(b, 8);
+}
+
+std::string wrapPayload(bool kec, std::string_view payload) {
+  std::array<char, 16> magic{};
+  const char* name = kec ? "railbench-kec" : "railbench-lut";
+  std::memcpy(magic.data(), name, std::strlen(name));
+  std::string file(magic.data(), magic.size());
+  appendU64(file, 0x0102030405060708ULL);
+  appendU64(file, contact::kTableFormatVersion);
+  appendU64(file, kFuzzHash);
+  appendU64(file, payload.size());
+  file.append(payload);
+  appendU64(file, fnv1aWords(file.data(), file.size()));
+  return file;
+}
+
+void touchLut(const contact::LutTable& t) {
+  volatile double sink = 0.0;
+  contact::LutSample out;
+  const auto& y = t.yGrid();
+  const auto& g = t.gaugeGrid();
+  for (const double fy : {-0.1, 0.0, 0.37, 1.0, 1.1}) {
+    for (const double fg : {-0.1, 0.0, 0.5, 1.0, 1.1}) {
+      const double yy = y.min + fy * (y.max - y.min), gg = g.min + fg * (g.max - g.min);
+      t.eval(yy, gg, out);
+      t.evalValues(yy, gg, out);
+      sink = sink + out.value[0] + t.evalChannel(0, yy, gg).v;
+    }
+  }
+  (void)sink;
+}
+
+void touchKec(const contact::KecTable& t) {
+  volatile double sink = 0.0;
+  contact::KecPoint out;
+  const auto& g = t.grid();
+  for (const contact::Side side : {contact::Side::Left, contact::Side::Right}) {
+    for (const double f : {-0.1, 0.0, 0.37, 1.0, 1.1}) {
+      const double s = g.min + f * (g.max - g.min);
+      t.eval(side, s, out);
+      t.evalValues(side, s, out);
+      sink = sink + out.value[0] + t.f(side, s) + (t.inTransition(side, s) ? 1.0 : 0.0);
+    }
+  }
+  (void)sink;
+}
+
+}  // namespace
+
+void scenario(std::string_view data) {
+  const std::string file = scratch().write("fuzz.lua", data);
+  scenario::LoadOptions options;
+  options.root = RB_SOURCE_DIR;
+  options.overrides = overridesOf(data);
+  options.instruction_limit = kFuzzInstructionLimit;
+  try {
+    (void)scenario::loadScenario(file, options);
+  } catch (const InputError&) {
+  }
+}
+
+void profile(std::string_view data) {
+  if (data.empty()) return;
+  const auto mode = static_cast<unsigned char>(data.front());
+  data.remove_prefix(1);
+  const int format = mode & 3;
+  const auto units =
+      (mode & 4) != 0 ? profiles::LengthUnit::Metre : profiles::LengthUnit::Millimetre;
+  profiles::ProfileReadOptions opt;
+  opt.smoothingLength = (mode & 8) != 0 ? 1e-3 : 0.0;
+  opt.mirrorY = (mode & 16) != 0;
+  opt.rotate = (mode & 32) != 0 ? -std::atan(1.0 / 40.0) : 0.0;
+  opt.r0 = (mode & 64) != 0 ? 0.0 : 0.46;
+  opt.maxSlope = (mode & 128) != 0 ? 2.0 : 10.0;
+  try {
+    const profiles::ProfilePoints pts =
+        format == 0   ? profiles::parseSimpackPoints(data, "fuzz.prw")
+        : format == 1 ? profiles::parseSimpackPoints(data, "fuzz.prr")
+        : format == 2
+            ? profiles::parseTextPoints(data, "fuzz.txt", profiles::ProfileKind::Wheel, units)
+            : profiles::parseTextPoints(data, "fuzz.txt", profiles::ProfileKind::Rail, units);
+    touchProfile(profiles::profileFromPoints(pts, opt, "fuzz"));
+  } catch (const InputError&) {
+  }
+}
+
+void irregularityCsv(std::string_view data) {
+  Diagnostics diags;
+  std::optional<track::IrregularityTable> table;
+  try {
+    table = parseCsv(data, diags);
+  } catch (const InputError&) {
+    return;
+  }
+  if (!table || !diags.empty()) return;
+  const track::Irregularities irr(std::move(*table), 0.75);
+  volatile double sink = 0.0;
+  const double a = irr.sBegin(), b = irr.sEnd();
+  for (int i = -1; i <= 9; ++i) sink = sink + irr.at(a + (b - a) * i / 8.0).delta;
+  (void)sink;
+}
+
+void tables(std::string_view data) {
+  (void)loadTable(data);
+}
+
+bool loadTable(std::string_view data) {
+  if (data.empty()) return false;
+  const auto mode = static_cast<unsigned char>(data.front());
+  data.remove_prefix(1);
+  const bool kec = (mode & 1) != 0;
+  std::string file;
+  std::uint64_t hash = kFuzzHash;
+  if ((mode & 2) != 0) {
+    file = wrapPayload(kec, data);
+  } else {
+    file = std::string(data);
+    if (file.size() >= 40) std::memcpy(&hash, file.data() + 32, 8);  // whatever the file claims
+  }
+  const std::string path = scratch().write(kec ? "fuzz.kec" : "fuzz.lut", file);
+  if (kec) {
+    const auto t = contact::loadKec(path, hash);
+    if (t) touchKec(*t);
+    return t.has_value();
+  }
+  const auto t = contact::loadLut(path, hash);
+  if (t) touchLut(*t);
+  return t.has_value();
+}
+
+EntryPoint entryPoint(const std::string& harness) {
+  if (harness == "scenario") return &scenario;
+  if (harness == "profile") return &profile;
+  if (harness == "csv") return &irregularityCsv;
+  if (harness == "tables") return &tables;
+  return nullptr;
+}
+
+}  // namespace rb::fuzz

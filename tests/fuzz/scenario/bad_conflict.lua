@@ -1,0 +1,2 @@
+track { segments = { tangent { length = 30 } } }
+solver { method = "rk4", step = 1e-3, rtol = 1e-6 }

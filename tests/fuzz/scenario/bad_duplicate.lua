@@ -1,0 +1,2 @@
+track { segments = { tangent { length = 30 } } }
+track { segments = { tangent { length = 40 } } }

@@ -1,0 +1,10 @@
+-- several problems at once: all must be reported together
+track {
+  segments = {
+    tangent { length = 0 },
+    curve { length = 40, raduis = 300 },
+  },
+  stepp = 0.5,
+}
+solver { method = "rk5" }
+run { distance = -1 }

@@ -1,0 +1,4 @@
+track {
+  segments = { tangent { length = 30 } },
+  irregularities = measured { file = "nowhere.csv" },
+}

@@ -1,0 +1,3 @@
+track {
+  segments = { tangent(30) },
+}

@@ -1,0 +1,2 @@
+local f = io.open("/etc/passwd")
+track { segments = { tangent { length = 30 } } }

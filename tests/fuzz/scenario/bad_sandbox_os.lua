@@ -1,0 +1,2 @@
+os.execute("touch /tmp/railbench_sandbox_escape")
+track { segments = { tangent { length = 30 } } }

@@ -1,0 +1,4 @@
+track {
+  segments = { tangent { length = 30 }
+  step = 0.5,
+}

@@ -1,0 +1,5 @@
+track {
+  segments = {
+    tangent { lenght = 30 },
+  },
+}

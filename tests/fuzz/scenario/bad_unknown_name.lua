@@ -1,0 +1,5 @@
+track {
+  segments = {
+    tangnet { length = 30 },
+  },
+}

@@ -1,0 +1,6 @@
+track {
+  segments = {
+    tangent { length = 30 },
+    curve { length = "forty", radius = 300 },
+  },
+}

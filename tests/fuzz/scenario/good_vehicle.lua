@@ -1,0 +1,4 @@
+local make = require "vehicles.two_body"
+track { segments = { tangent { length = 100 } } }
+vehicle (make { speed = 12 })
+solver { method = "abm", step = 1e-3 }

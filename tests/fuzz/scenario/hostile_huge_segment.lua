@@ -1,0 +1,1 @@
+track { segments = { tangent { length = 1e308 } } }

@@ -1,0 +1,259 @@
+#include "workbench/run/compile.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "workbench/core/strings.hpp"
+#include "workbench/dynamics/contact_ode.hpp"
+#include "workbench/integrators/registry.hpp"
+#include "workbench/track/psd.hpp"
+#include "workbench/vehicle/guided.hpp"
+
+namespace rb::run {
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string g(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+// Checks of the speed ramp: V(t) = V0 + a t must stay >= 0 over the run (no clamping: a vehicle
+// that stops and reverses is not what a ramp scenario means).
+void checkRamp(const Model& c, Diagnostics& d) {
+  const auto& spec = c.spec;
+  const double a = spec.vehicle.acceleration;
+  if (a >= 0.0) return;
+  const double t_stop = spec.vehicle.speed / -a;
+  if (spec.run.duration > 0 && spec.run.duration > t_stop)
+    d.add(spec.vehicle.loc, "vehicle: acceleration " + g(a) +
+                                " m/s^2 stops the vehicle at t = " + g(t_stop) +
+                                " s, before run.duration = " + g(spec.run.duration) + " s");
+  if (!(spec.run.duration > 0)) {
+    const double dist = spec.run.distance > 0
+                            ? spec.run.distance
+                            : c.track->geometry().length() - (c.vehicle->start + c.leadingX());
+    if (spec.vehicle.speed * spec.vehicle.speed + 2.0 * a * dist < 0.0)
+      d.add(spec.vehicle.loc, "vehicle: acceleration " + g(a) + " m/s^2 stops the vehicle after " +
+                                  g(spec.vehicle.speed * t_stop / 2.0) +
+                                  " m, before the run's distance " + g(dist) +
+                                  " m; give run.duration or a smaller deceleration");
+  }
+}
+
+// Simulated time of a vehicle run: run.duration, or run.distance (default: until the leading
+// body reaches the end of the track) at the vehicle's speed.
+double endTime(const Model& c) {
+  const auto& run = c.spec.run;
+  if (run.duration > 0) return run.duration;
+  const auto& v = *c.vehicle;
+  double distance =
+      run.distance > 0 ? run.distance : c.track->geometry().length() - (v.start + c.leadingX());
+  distance = std::max(distance, 0.0);
+  const double a = v.acceleration;
+  double t = distance / v.speed;
+  if (a != 0.0) {
+    // Speed ramp: V0 t + a t^2 / 2 = distance (the root reached first; checkRamp() made sure it
+    // is reached before the speed would become negative).
+    const double disc = v.speed * v.speed + 2.0 * a * distance;
+    t = disc <= 0.0 ? 0.0 : 2.0 * distance / (v.speed + std::sqrt(disc));
+  }
+  // A fixed-step method ends on its step grid: the last grid time at or before the distance is
+  // reached (the leading body stops less than one step's travel short; never beyond the track).
+  if (c.solver.step > 0 && (c.solver.method == "rk4" || c.solver.method == "abm")) {
+    const double n = std::floor(t / c.solver.step + 1e-6);
+    t = n * c.solver.step;
+  }
+  return t;
+}
+
+// Every body must stay on the track for the whole run: beyond the end the geometry would be
+// extrapolated, which no result may silently rest on. Before s = 0 the track continues as the
+// straight extension of its start (TrackGeometry::at), which is exact when the track starts with
+// a tangent without gradient: the rear bodies of a vehicle whose reference point starts at s = 0
+// stand there (the paper's validation runs); before any other first segment it is an error.
+void checkTrackRange(const Model& c, Diagnostics& d) {
+  const auto& v = *c.vehicle;
+  const double length = c.track->geometry().length();
+  const double tol = 1e-9 * std::max(1.0, length);
+  const double rear = v.start + c.trailingX();
+  const double lead0 = v.start + c.leadingX();
+  const auto& segs = c.spec.track.segments;
+  const bool straight_start = !segs.empty() && segs.front().kind == track::SegmentKind::Tangent &&
+                              segs.front().gradient == 0.0 && segs.front().cant == 0.0;
+  if (rear < -tol && !straight_start)
+    d.add(c.spec.vehicle.loc,
+          "vehicle: the rearmost body starts at s = " + g(rear) +
+              " m, before the start of the track (s = 0), which does not start with a level "
+              "tangent; give vehicle.start >= " +
+              g(v.start - rear) + " m");
+  if (!(c.t_end > 0)) {
+    d.add(c.spec.run.loc, "run: nothing to simulate: the leading body starts at s = " + g(lead0) +
+                              " m and the track ends at " + g(length) + " m");
+    return;
+  }
+  const double lead_end = lead0 + v.travel(c.t_end);
+  if (lead_end > length + tol)
+    d.add(c.spec.run.loc,
+          "run: the leading body would reach s = " + g(lead_end) + " m after " + g(c.t_end) +
+              " s, beyond the end of the track at " + g(length) +
+              " m (the geometry would be extrapolated); shorten run.distance or run.duration "
+              "(at most " +
+              g(length - lead0) + " m) or lengthen the track");
+}
+
+// The output grid and size are known before the run: a fixed-step method needs every output
+// time on its step grid, and the number of samples is bounded.
+void checkOutputs(const Model& c, Diagnostics& d) {
+  const auto& run = c.spec.run;
+  const double n = std::ceil(c.t_end / run.output_every - 1e-9);
+  if (n > run.max_output_samples) {
+    d.add(run.loc, "run.output.every: " + g(run.output_every) + " s over " + g(c.t_end) +
+                       " s gives " + g(n) + " output times, more than run.output.max_samples = " +
+                       g(run.max_output_samples) + " (raise it if the memory and disk are there)");
+    return;
+  }
+  try {
+    auto integ = integ::makeIntegrator(c.solver);
+    if (!integ->isFixedStep()) return;
+    const double h = c.solver.step;
+    auto onGrid = [h](double t) {
+      const double r = t / h;
+      return std::abs(r - std::round(r)) <= 1e-6;
+    };
+    if (!onGrid(run.output_every))
+      d.add(c.solver.loc.file.empty() ? run.loc : c.solver.loc,
+            "solver.step: the output interval run.output.every = " + g(run.output_every) +
+                " s is not a multiple of the " + std::string(integ->name()) + " step " + g(h) +
+                " s; choose an output interval that is a multiple of the step");
+    else if (!onGrid(c.t_end))
+      d.add(c.solver.loc.file.empty() ? run.loc : c.solver.loc,
+            "solver.step: the run ends at t = " + g(c.t_end) + " s, which is not on the " +
+                std::string(integ->name()) + " step grid k * " + g(h) +
+                " s; choose run.duration (or run.distance / speed) on the grid");
+  } catch (const InputError& e) {
+    d.add(e);
+  }
+}
+
+}  // namespace
+
+double Model::leadingX() const {
+  double lead = -1e300;
+  for (const auto& b : vehicle->bodies) lead = std::max(lead, b.x);
+  return lead;
+}
+
+double Model::trailingX() const {
+  double rear = 1e300;
+  for (const auto& b : vehicle->bodies) rear = std::min(rear, b.x);
+  return rear;
+}
+
+Model compile(const CompileOptions& o) {
+  scenario::LoadOptions lo;
+  lo.root = o.root;
+  lo.overrides = o.overrides;
+  Model c;
+  c.spec = scenario::loadScenario(o.scenario, lo);
+  const auto& spec = c.spec;
+  Diagnostics d;
+  auto t0 = std::chrono::steady_clock::now();
+  try {
+    c.track = track::compileTrack(spec.track);
+  } catch (const InputError& e) {
+    d.add(e);
+  }
+  c.track_build_s = seconds(t0);
+  if (spec.has_solver) {
+    c.solver = spec.solver;
+    try {
+      (void)integ::makeIntegrator(c.solver);
+    } catch (const InputError& e) {
+      d.add(e);
+    }
+  } else {
+    c.solver.method = "abm";  // the paper's validation runs: ABM with 1 ms steps (section 5.2)
+    c.solver.step = 1e-3;
+  }
+  if (spec.has_vehicle && c.track) {
+    try {
+      c.vehicle = vehicle::compileVehicle(spec.vehicle, *c.track);
+    } catch (const InputError& e) {
+      d.add(e);
+    }
+  }
+  if (c.vehicle && spec.has_contact) {
+    try {
+      dynamics::TableCache cache =
+          o.table_cache.empty() ? dynamics::TableCache() : dynamics::TableCache(o.table_cache);
+      c.contact =
+          dynamics::compileContact(spec.profiles, spec.contact, *c.vehicle, *c.track, &cache);
+    } catch (const InputError& e) {
+      d.add(e);
+    }
+  }
+  if (!spec.has_vehicle) {
+    if (spec.has_contact) d.add(spec.contact.loc, "contact: needs a vehicle { ... } block");
+    if (!spec.run.output_elements.empty())
+      d.add(spec.run.loc, "run.output.elements: the scene has no vehicle");
+    if (spec.run.body_accelerations)
+      d.add(spec.run.loc, "run.output.body_accelerations: the scene has no vehicle");
+  }
+  if (c.vehicle) {
+    for (const auto& name : spec.run.output_elements) {
+      if (auto id = c.vehicle->findElement(name)) {
+        c.output_elements.push_back(*id);
+        continue;
+      }
+      std::vector<std::string> names;
+      for (auto id : c.vehicle->elements()) names.push_back(c.vehicle->elementName(id));
+      std::string hint = closestMatch(name, names);
+      d.add(spec.run.loc, "run.output.elements: no element named '" + name + "'" +
+                              (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+    }
+    if (!(spec.vehicle.speed > 0) && !(spec.run.duration > 0))
+      d.add(spec.vehicle.loc, "vehicle: speed is 0, so give run.duration");
+    else {
+      checkRamp(c, d);
+      if (d.empty()) {
+        c.t_end = endTime(c);
+        checkTrackRange(c, d);
+      }
+      if (d.empty()) checkOutputs(c, d);
+    }
+  }
+  d.throwIfAny();
+
+  // The initial state must exist: a contact vehicle's static equilibrium on its constraints
+  // (the contact points inside the tables, no wheel lift), a guided vehicle's on its suspension.
+  // The run computes it again on its own system (the lagged normal-force memory starts there).
+  if (c.vehicle) {
+    if (c.contact) {
+      dynamics::ContactVehicleOde ode(*c.vehicle, *c.contact, *c.track);
+      (void)ode.initialState(0.0);
+    } else {
+      vehicle::GuidedVehicleOde ode(*c.vehicle);
+      (void)ode.staticState(0.0);
+    }
+  }
+
+  const auto& irr = spec.track.irregularities;
+  if (irr.source == track::IrregularitySource::Psd && !track::psdVerified(irr.spectrum))
+    c.warnings.push_back(irr.loc.str() + ": warning: the parameters of spectrum '" + irr.spectrum +
+                         "' are UNVERIFIED against a primary source (see docs/track.md)");
+  if (c.contact)
+    for (const auto& w : c.contact->warnings)
+      c.warnings.push_back(w);  // already "file:line: warning: ..."
+  if (c.vehicle && !spec.has_contact)
+    c.warnings.push_back(spec.vehicle.loc.str() +
+                         ": note: no contact{} block: wheelsets follow the track kinematically");
+  return c;
+}
+
+}  // namespace rb::run

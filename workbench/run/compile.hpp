@@ -1,0 +1,55 @@
+#pragma once
+// Spec -> Model for a whole run (architecture.md): compile() loads a scenario, validates every
+// block and builds the immutable Model of the run (track, vehicle, contact tables, solver,
+// outputs) with every problem collected and reported at once as one InputError. Everything that
+// can be known before integrating is checked here, so `workbench check` accepts exactly what
+// `workbench run` can start: the initial state (static equilibrium on the contact constraints),
+// the output grid of fixed-step methods, the travelled range against the track's length and the
+// size of the output. The app, the benchmarks and the tests all build their runs from it.
+#include <Eigen/Dense>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "workbench/dynamics/contact_model.hpp"
+#include "workbench/integrators/spec.hpp"
+#include "workbench/scenario/scenario.hpp"
+#include "workbench/track/track.hpp"
+#include "workbench/vehicle/model.hpp"
+
+namespace rb::run {
+
+struct CompileOptions {
+  std::string scenario;                // scenario file
+  std::vector<std::string> overrides;  // --set key=value, in order
+  std::string root;                    // project root holding scenarios/ and profiles/
+  // Folder of the contact-table disk cache; empty: tables are built in memory only.
+  std::string table_cache;
+};
+
+struct Model {
+  scenario::ScenarioSpec spec;
+  std::optional<track::TrackModel> track;
+  std::optional<vehicle::VehicleModel> vehicle;
+  std::optional<dynamics::ContactModel> contact;
+  integ::SolverSpec solver;  // the scenario's, or the paper's default (ABM, 1 ms)
+  std::vector<vehicle::ElementId> output_elements;
+  double track_build_s = 0.0;         // [s] wall time of the track build
+  double t_end = 0.0;                 // [s] simulated time of a vehicle run
+  std::vector<std::string> warnings;  // "file:line: warning: ...", printed by the app
+
+  bool hasVehicle() const { return vehicle.has_value(); }
+  bool hasContact() const { return contact.has_value(); }
+  // Body position x of the leading body (largest x: the first wheelset of the wagon) relative to
+  // the vehicle's reference point. A run's distance and a failure's distance are measured there.
+  double leadingX() const;
+  double trailingX() const;
+};
+
+// Throws InputError with every problem found.
+Model compile(const CompileOptions& options);
+
+// Upper bound of output samples per run unless run.output.max_samples says otherwise.
+inline constexpr double kDefaultMaxOutputSamples = 1e7;
+
+}  // namespace rb::run

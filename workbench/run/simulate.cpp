@@ -1,0 +1,149 @@
+#include "workbench/run/simulate.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "workbench/integrators/registry.hpp"
+
+namespace rb::run {
+namespace {
+
+double wallNow() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+std::vector<double> outputTimes(double t0, double t_end, double every) {
+  RB_CHECK(every > 0 && t_end > t0, "output interval and end time must be positive");
+  const long n = static_cast<long>(std::ceil((t_end - t0) / every - 1e-9));
+  std::vector<double> times;
+  times.reserve(static_cast<std::size_t>(n));
+  for (long k = 1; k <= n; ++k)
+    times.push_back(std::min(t0 + static_cast<double>(k) * every, t_end));
+  return times;
+}
+
+integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
+  RB_CHECK(r.system != nullptr, "no system to simulate");
+  auto integrator = integ::makeIntegrator(r.solver);
+  std::vector<double> times = outputTimes(r.t0, r.t_end, r.output_every);
+
+  io::Series& time = f.series("/time", "s");
+  std::vector<io::Series*> series;
+  for (const auto& o : r.outputs) series.push_back(&f.series(o.path, o.units));
+  RB_CHECK(r.outputs.empty() || r.sample, "output channels need a sampler");
+  std::vector<double> values(r.outputs.size());
+  double lastFlush = wallNow();
+  double start = lastFlush;
+  double lastDistance = 0.0;
+
+  std::string invalid;  // why the observer stopped the run, if it did
+  double t_invalid = 0.0;
+  double t_written = r.t0;
+  auto observer = [&](double t, const Eigen::VectorXd& y) {
+    if (!series.empty()) {
+      r.sample(t, y, values.data());
+      for (std::size_t i = 0; i < series.size(); ++i) {
+        if (std::isfinite(values[i])) continue;
+        invalid = "non-finite output " + r.outputs[i].path + " = " + std::to_string(values[i]) +
+                  " at t = " + std::to_string(t) + " s";
+        t_invalid = t;
+        return false;  // not written: the file ends at the last valid sample
+      }
+      if (r.check) {
+        invalid = r.check(t, values.data());
+        if (!invalid.empty()) {
+          t_invalid = t;
+          return false;
+        }
+      }
+    }
+    time.append(t);
+    t_written = t;
+    for (std::size_t i = 0; i < series.size(); ++i) series[i]->append(values[i]);
+    if (r.distance) lastDistance = r.distance(t, y);
+    double now = wallNow();
+    if (now - lastFlush > 1.0) {  // keep results on disk as the run goes
+      f.flush();
+      lastFlush = now;
+    }
+    return true;
+  };
+  double lastPrint = start;
+  bool printed = false;
+  auto progress = [&](double t, const integ::Stats& s) {
+    double now = wallNow();
+    if (!r.progress || now - start < 2.0 || now - lastPrint < 0.25) return;
+    lastPrint = now;
+    printed = true;
+    double rtf = (t - r.t0) / std::max(now - start, 1e-9);
+    std::fprintf(stderr, "\r  t = %8.3f s  s = %8.1f m  %6.1fx real time  %ld evaluations   ", t,
+                 lastDistance, rtf, s.rhs_evals + s.rhs_evals_jac);
+    std::fflush(stderr);
+  };
+  integ::RunResult res =
+      integ::integrate(*r.system, *integrator, r.t0, r.y0, times, observer, progress);
+  if (printed) std::fprintf(stderr, "\n");
+  if (!invalid.empty() && res.stopped_by_observer) {
+    res.ok = false;
+    res.stopped_by_observer = false;
+    res.t_fail = t_invalid;
+    res.t_reached = t_written;
+    res.message = std::string(integrator->name()) +
+                  ": stopped at t = " + std::to_string(t_invalid) + " s: " + invalid;
+  }
+  if (!res.ok) {
+    std::ostringstream os;
+    os << res.message;
+    if (r.distance) {
+      const double t_fail = std::isfinite(res.t_fail) ? res.t_fail : res.t_reached;
+      os << " (leading wheelset at s = " << r.distance(t_fail, r.y0) << " m)";
+    }
+    res.message = os.str();
+  }
+  writeStats(f, res, std::string(integrator->name()));
+  f.flush();
+  return res;
+}
+
+void writeStats(io::ResultFile& f, const integ::RunResult& res, const std::string& method) {
+  const auto& s = res.stats;
+  f.attr("/stats", "status", std::string(res.ok ? "ok" : "failed"));
+  f.attr("/stats", "message", res.message);
+  f.attr("/stats", "method", method);
+  f.attr("/stats", "t_reached", res.t_reached);
+  f.attr("/stats", "cpu_time_s", s.cpu_time_s);
+  f.attr("/stats", "wall_time_s", s.wall_time_s);
+  f.attr("/stats", "callback_wall_time_s", s.callback_wall_time_s);
+  f.attr("/stats", "rhs_evals", std::int64_t{s.rhs_evals});
+  f.attr("/stats", "rhs_evals_jac", std::int64_t{s.rhs_evals_jac});
+  f.attr("/stats", "steps", std::int64_t{s.steps});
+  f.attr("/stats", "rejected_steps", std::int64_t{s.rejected_steps});
+  f.attr("/stats", "jacobian_evals", std::int64_t{s.jacobian_evals});
+  f.attr("/stats", "nonlinear_iters", std::int64_t{s.nonlinear_iters});
+  f.attr("/stats", "nonlinear_conv_fails", std::int64_t{s.nonlinear_conv_fails});
+  f.attr("/stats", "recoverable_rhs_failures", std::int64_t{s.recoverable_rhs_failures});
+}
+
+void writeWarnings(io::ResultFile& f, const std::vector<std::string>& warnings) {
+  std::string all;
+  for (const auto& w : warnings) all += (all.empty() ? "" : "\n") + w;
+  f.attr("/stats", "warnings", all);
+  f.attr("/stats", "warning_count", static_cast<std::int64_t>(warnings.size()));
+}
+
+std::string statsLine(const integ::RunResult& res, double simulated_s) {
+  const auto& s = res.stats;
+  std::ostringstream os;
+  os << (res.ok ? "ok" : "FAILED") << ": " << simulated_s << " s simulated in " << s.cpu_time_s
+     << " s CPU (" << (s.cpu_time_s > 0 ? simulated_s / s.cpu_time_s : 0.0) << "x real time), "
+     << s.rhs_evals << " rhs evaluations + " << s.rhs_evals_jac << " for Jacobians, " << s.steps
+     << " steps, " << s.rejected_steps << " rejected, " << s.jacobian_evals << " Jacobians, "
+     << s.nonlinear_iters << " Newton iterations (" << s.nonlinear_conv_fails << " failed)";
+  return os.str();
+}
+
+}  // namespace rb::run

@@ -1,0 +1,43 @@
+#pragma once
+// The one vehicle-run path: a compiled Model with a vehicle (wheelsets guided along the track, or
+// on wheel/rail contact by the KEC or LUT method) is integrated into a result file with one set
+// of outputs, so every run.output key means the same in every vehicle run:
+//   /vehicle/speed; /bodies/<b>/{s, y, z, roll, pitch, yaw} (track frame of the body);
+//   with run.output.body_accelerations /bodies/<b>/{ax, ay, az}: the absolute acceleration of the
+//     centre of mass in the body's track-frame components [m/s^2];
+//   with run.output.elements /elements/<name>/{deflection, force};
+//   with contact /contact/<ws>/<left|right>/... per wheel.
+// Validity checks stop the run as a failure (exit 2, partial results kept): wheel lift (the rhs
+// refuses the state, see ContactVehicleOde), non-finite outputs, a contact point leaving its
+// table. Questionable but valid results are recorded as warnings in /stats/warnings.
+#include <string>
+#include <vector>
+
+#include "workbench/integrators/integrator.hpp"
+#include "workbench/io/result_file.hpp"
+#include "workbench/run/compile.hpp"
+
+namespace rb::run {
+
+struct VehicleRunOptions {
+  bool progress = false;  // progress line on stderr
+};
+
+struct VehicleRunResult {
+  integ::RunResult result;
+  std::vector<std::string> warnings;  // also written to /stats/warnings
+};
+
+// Integrates m (which must have a vehicle) and writes outputs, /stats and warnings into f (not
+// finalized). Throws InputError only for problems compile() could not know.
+VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunOptions& options);
+
+// Root provenance attributes (version, scenario text and modules, overrides, effects, seeds) and
+// the /track group of a compiled model.
+void writeProvenance(const Model& m, io::ResultFile& f, const std::string& created);
+
+// Creepage above which the creep laws leave the range they are calibrated for (assumption, see
+// docs/contact_dynamics.md): a run that exceeds it is recorded with a warning.
+inline constexpr double kCreepageWarning = 0.1;
+
+}  // namespace rb::run
