@@ -2,9 +2,14 @@
 // all problems at once, and the sandbox holds.
 #include <gtest/gtest.h>
 
-#include <filesystem>
+#include <unistd.h>
 
+#include <filesystem>
+#include <fstream>
+
+#include "workbench/scenario/lua_host.hpp"
 #include "workbench/scenario/scenario.hpp"
+#include "workbench/scenario/schema.hpp"
 
 using rb::scenario::LoadOptions;
 using rb::scenario::loadScenario;
@@ -129,8 +134,9 @@ TEST(ScenarioSandbox, NoOsNoIoNoEscapeByRequire) {
   EXPECT_EQ(errorsOf(kBad + "sandbox_io.lua"), kBad + "sandbox_io.lua:1: unknown name 'io'");
   EXPECT_EQ(errorsOf(kBad + "sandbox_require.lua"),
             kBad +
-                "sandbox_require.lua:1: require \"../../../etc/passwd\": module names may contain "
-                "only letters, digits, '_' and '.'");
+                "sandbox_require.lua:1: require \"../../../etc/passwd\": module names are names "
+                "separated by dots (letters, digits and '_', not starting with a digit), e.g. "
+                "\"vehicles.wagon\"");
 }
 
 TEST(ScenarioSandbox, EndlessLoopStopsWithBudgetError) {
@@ -143,15 +149,16 @@ TEST(ScenarioSandbox, EndlessLoopStopsWithBudgetError) {
 
 TEST(ScenarioErrors, MissingScenarioFile) {
   EXPECT_EQ(errorsOf("tests/scenario/bad/does_not_exist.lua"),
-            "tests/scenario/bad/does_not_exist.lua: cannot open scenario file");
+            "tests/scenario/bad/does_not_exist.lua: cannot open scenario file: no such file");
 }
 
 TEST(ScenarioOverrides, SetValuesAndReportBadOnes) {
   auto spec = loadScenario("scenarios/tracks/manchester_r500_irregular.lua",
-                           opts({"track.irregularities.seed=7", "track.segments[3].length=200",
-                                 "solver.method=bdf", "solver.rtol=1e-5"}));
+                           opts({"track.irregularities.seed=7", "track.segments[3].length=200"}));
   EXPECT_EQ(spec.track.irregularities.seed, 7u);
   EXPECT_DOUBLE_EQ(spec.track.segments[2].length, 200.0);
+  spec = loadScenario("tests/scenario/good/vehicle.lua",
+                      opts({"solver.method=bdf", "solver.rtol=1e-5"}));
   EXPECT_TRUE(spec.has_solver);
   EXPECT_EQ(spec.solver.method, "bdf");
   EXPECT_DOUBLE_EQ(spec.solver.rtol, 1e-5);
@@ -163,7 +170,9 @@ TEST(ScenarioOverrides, SetValuesAndReportBadOnes) {
             "<command line>: --set track.segments[9].length=1: list position 9 out of range 1..3\n"
             "<command line>: --set nonsense: expected key=value, e.g. solver.step=5e-4\n"
             "<command line>: track: step must be a number [m], got string \"abc\"\n"
-            "<command line>: solver: unknown key 'stpe' (did you mean 'step'?)");
+            "<command line>: solver: unknown key 'stpe' (did you mean 'step'?)\n"
+            "<command line>: solver{} has no effect without a vehicle{} block (nothing is "
+            "integrated)");
 }
 
 TEST(ScenarioGood, UserPsdFunctionTableLoopsAndRequire) {
@@ -262,4 +271,197 @@ TEST(ScenarioContact, ConflictsAndMissingProfileFile) {
                 f +
                 ":3: contact: flange_stiffness applies to method 'lut' only (KEC treats the flange "
                 "as a constraint)");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Hostile input: each class is bounded with a file:line error (the corpus in tests/hostile/ runs
+// the same classes through the command line).
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh folder per test, removed at the end.
+struct TempDir {
+  fs::path path;
+  explicit TempDir(const std::string& name)
+      : path(fs::temp_directory_path() /
+             ("rb_hostile_" + name + "_" + std::to_string(::getpid()))) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+  std::string write(const std::string& file, const std::string& text) const {
+    fs::path p = path / file;
+    fs::create_directories(p.parent_path());
+    std::ofstream(p) << text;
+    return p.string();
+  }
+};
+
+const std::string kTrack = "track { segments = { tangent { length = 100 } } }\n";
+
+}  // namespace
+
+TEST(ScenarioHostile, DeepNestingIsAnErrorNotACrash) {
+  TempDir t("nesting");
+  std::string f = t.write("deep.lua",
+                          "local t = {}\nfor i = 1, 200 do t = { t } end\n"
+                          "track { segments = { tangent { length = 100 } }, deep = t }\n");
+  std::string e = errorsOf(f);
+  EXPECT_NE(e.find(f + ":3: track.deep"), std::string::npos) << e;
+  EXPECT_NE(e.find("tables nested more than 32 levels deep"), std::string::npos) << e;
+}
+
+TEST(ScenarioHostile, ConversionLimitsValuesAndStrings) {
+  TempDir t("values");
+  std::string wide = t.write("wide.lua",
+                             "local row = {}\nfor i = 1, 1000 do row[i] = i end\n"
+                             "local g = {}\nfor i = 1, 1000 do g[i] = row end\n"
+                             "track { segments = { tangent { length = 100 } }, g = g }\n");
+  EXPECT_NE(errorsOf(wide).find("more than 500000 values"), std::string::npos);
+  std::string str = t.write("str.lua",
+                            "track { segments = { tangent { length = 100 } }, name = "
+                            "string.rep('x', 2 << 20) }\n");
+  EXPECT_NE(errorsOf(str).find(str + ":1: track.name: string of 2097152 bytes"), std::string::npos);
+}
+
+TEST(ScenarioHostile, BudgetErrorCannotBeSwallowedByPcall) {
+  TempDir t("pcall");
+  LoadOptions o = opts();
+  o.instruction_limit = 5'000'000;
+  std::string loop =
+      t.write("loop.lua", "while true do\n  pcall(function() while true do end end)\nend\n");
+  EXPECT_NE(errorsOf(loop, o).find("scenario exceeded its budget of 5000000 Lua instructions"),
+            std::string::npos);
+  // Caught, and the script then ends normally: still an error, at the loop's line.
+  std::string caught =
+      t.write("caught.lua", "pcall(function()\n  while true do end\nend)\n" + kTrack);
+  EXPECT_EQ(
+      errorsOf(caught, o),
+      caught + ":2: scenario exceeded its budget of 5000000 Lua instructions (endless loop?)");
+}
+
+TEST(ScenarioHostile, FinalizersAndCostlyPatternsRefused) {
+  TempDir t("gc");
+  std::string gc = t.write("gc.lua", "setmetatable({}, { __gc = function() end })\n");
+  EXPECT_EQ(errorsOf(gc), gc + ":1: setmetatable: finalizers (__gc) are not allowed in a scenario");
+  std::string pat =
+      t.write("pat.lua",
+              "local s = string.rep('a', 5000)\nlocal i = s:find(string.rep('a*', 30) .. 'b')\n");
+  EXPECT_NE(errorsOf(pat).find(pat + ":2: string.find: pattern too costly"), std::string::npos);
+  std::string ok = t.write("ok.lua",
+                           "assert(('  ab  '):gsub('^%s*(.-)%s*$', '%1') == 'ab')\n"
+                           "assert(select(2, string.rep('w ', 2000):gsub('%s+', ' ')) == 2000)\n" +
+                               kTrack);
+  EXPECT_NO_THROW(loadScenario(ok, opts()));
+}
+
+TEST(ScenarioHostile, MemoryExhaustedAtTheEndOfTheScriptIsAnInputError) {
+  TempDir t("memory");
+  std::string f = t.write(
+      "mem.lua",
+      "local hold = {}\n"
+      "pcall(function() while true do hold[#hold + 1] = string.rep('y', 1 << 16) .. #hold end "
+      "end)\n"
+      "track { segments = { tangent { length = 400 } }, irregularities = psd { spectrum = 'user',\n"
+      "  channels = { 'alignment' }, alignment = function(om) return 1e-7 end } }\n");
+  rb::scenario::HostOptions ho;
+  ho.memory_limit = std::size_t{32} << 20;
+  rb::scenario::LuaHost host(ho);
+  try {
+    host.runFile(f);
+    ADD_FAILURE() << "no error";
+  } catch (const rb::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("scenario exceeded its memory budget of 32 MiB"),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.diagnostics().front().loc.file, f);
+  }
+}
+
+TEST(ScenarioHostile, ErrorValuesKeepTheirLine) {
+  TempDir t("errors");
+  std::string a = t.write("a.lua", "local x = 1\nerror({})\n");
+  EXPECT_EQ(errorsOf(a), a + ":2: error called with a table value (no message)");
+  std::string b = t.write("b.lua", "\n\nerror(nil)\n");
+  EXPECT_EQ(errorsOf(b), b + ":3: error called with nil (no message)");
+  std::string c = t.write("c.lua", "error(42)\n");
+  EXPECT_EQ(errorsOf(c), c + ":1: error 42");
+  std::string psd =
+      t.write("psd.lua",
+              "track {\n  segments = { tangent { length = 400 } },\n"
+              "  irregularities = psd { spectrum = 'user', channels = { 'vertical' },\n"
+              "    vertical = function(om)\n      error('bad omega')\n    end },\n}\n");
+  EXPECT_EQ(errorsOf(psd), psd + ":5: track.irregularities (psd): vertical: bad omega");
+}
+
+TEST(ScenarioHostile, RequireAcceptsOnlyPlainNamesInsideTheAllowedFolders) {
+  TempDir t("require");
+  TempDir outside("require_outside");
+  outside.write("secret.lua", "return 'SECRET'\n");
+  outside.write("pkg/secret.lua", "return 'SECRET'\n");
+  fs::create_directory_symlink(outside.path / "pkg", t.path / "pkg");
+  fs::create_symlink(outside.path / "secret.lua", t.path / "evil.lua");
+  t.write("real.lua", "return { tangent { length = 100 } }\n");
+  fs::create_symlink("real.lua", t.path / "alias.lua");
+  for (const char* name : {"evil", "pkg.secret"}) {
+    std::string f = t.write("s.lua", std::string("error(require '") + name + "')\n");
+    std::string e = errorsOf(f);
+    EXPECT_NE(e.find(f + ":1: require \"" + name + "\": "), std::string::npos) << e;
+    EXPECT_NE(e.find("leads outside the folders modules may come from"), std::string::npos) << e;
+  }
+  for (std::string name : {std::string(".etc.passwd"), std::string("a..b"), std::string("1a"),
+                           std::string(5000, 'a')}) {
+    std::string f = t.write("n.lua", "require '" + name + "'\n");
+    std::string e = errorsOf(f);
+    EXPECT_EQ(e.rfind(f + ":1: require", 0), 0u) << e;
+  }
+  std::string ok = t.write("ok.lua", "track { segments = require 'alias' }\n");
+  EXPECT_NO_THROW(loadScenario(ok, opts()));
+  t.write("a.lua", "return require 'b'\n");
+  t.write("b.lua", "return require 'a'\n");
+  std::string cyc = t.write("cyc.lua", "require 'a'\n");
+  EXPECT_NE(errorsOf(cyc).find("require cycle: a -> b -> a"), std::string::npos) << errorsOf(cyc);
+}
+
+TEST(ScenarioOverrides, BadListPositionsAreCommandLineErrors) {
+  EXPECT_EQ(errorsOf("scenarios/tracks/manchester_r500.lua",
+                     opts({"track.segments[-1].length=5",
+                           "track.segments[99999999999999999999999].length=5"})),
+            "<command line>: --set track.segments[-1].length=5: '-1' is neither a key name nor a "
+            "list position (1, 2, ...)\n"
+            "<command line>: --set track.segments[99999999999999999999999].length=5: list "
+            "position 99999999999999999999999 out of range 1..3");
+}
+
+TEST(ScenarioErrors, StudyBlockAndSolverWithoutVehicleAreErrors) {
+  TempDir t("blocks");
+  std::string f =
+      t.write("s.lua", kTrack + "study { base = 'x.lua' }\nsolver { method = 'rk4' }\n");
+  EXPECT_EQ(errorsOf(f),
+            f +
+                ":2: study{} belongs in a study file of its own, run with `workbench study FILE`; "
+                "a scenario cannot hold one\n" +
+                f + ":3: solver{} has no effect without a vehicle{} block (nothing is integrated)");
+}
+
+TEST(ScenarioSchema, HelpAndValidatorAgreeOnRanges) {
+  const std::string help = rb::scenario::referenceText();
+  EXPECT_NE(help.find("rtol (number) default 1e-06, range (0, 1)\n"), std::string::npos);
+  EXPECT_NE(help.find("components (integer) default 2000, range [1, 100000]\n"), std::string::npos);
+  TempDir t("ranges");
+  std::string f =
+      t.write("r.lua",
+              "track { segments = { tangent { length = 400 } },\n"
+              "  irregularities = psd { spectrum = 'ore_b176_low', components = 100001 } }\n"
+              "vehicle (require 'vehicles.manchester_wagon1' { speed = 10 })\n"
+              "solver { method = 'bdf', rtol = 1 }\n");
+  EXPECT_EQ(errorsOf(f), f +
+                             ":2: track.irregularities (psd): components must be <= 100000, got "
+                             "100001\n" +
+                             f + ":4: solver: rtol must be < 1, got 1");
 }

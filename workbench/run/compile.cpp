@@ -251,7 +251,7 @@ Model compile(const CompileOptions& o) {
     c.warnings.push_back(w.loc.str() + ": warning: " + w.message);
   if (c.contact)
     for (const auto& w : c.contact->warnings)
-      c.warnings.push_back(spec.contact.loc.str() + ": warning: " + w);
+      c.warnings.push_back(w);  // already "file:line: warning: ..."
   if (c.vehicle && !spec.has_contact)
     c.warnings.push_back(spec.vehicle.loc.str() +
                          ": note: no contact{} block: wheelsets follow the track kinematically");

@@ -2,13 +2,20 @@
 
 #include <lua.hpp>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <iomanip>
+#include <optional>
 #include <set>
 #include <sstream>
+#include <string_view>
 
+#include "workbench/core/files.hpp"
 #include "workbench/core/strings.hpp"
 
 namespace fs = std::filesystem;
@@ -35,6 +42,11 @@ const char* const kMetaKey = "railbench.meta";      // registry: table -> {kind,
 const char* const kBlocksKey = "railbench.blocks";  // registry: array of top-level tables
 const char* const kLoadedKey = "railbench.loaded";  // registry: module name -> value
 
+// Memory the host itself may use beyond the script's budget once the script has ended (converting
+// the tree, references to PSD functions): an allocation refused outside a protected call would
+// abort the process, so the host never runs out where the script stopped.
+constexpr std::size_t kHostReserve = std::size_t{64} << 20;
+
 std::string displayPath(const fs::path& p) {
   std::error_code ec;
   fs::path rel = fs::proximate(p, fs::current_path(ec), ec);
@@ -42,21 +54,20 @@ std::string displayPath(const fs::path& p) {
   return p.string();
 }
 
+// True if `file` lies below `root`; both must already be canonical (symlinks resolved).
+bool isBelowCanonical(const fs::path& file, const fs::path& root) {
+  auto [rootEnd, fileIt] = std::mismatch(root.begin(), root.end(), file.begin(), file.end());
+  (void)fileIt;
+  return rootEnd == root.end();
+}
+
 bool isBelow(const fs::path& file, const fs::path& root) {
   std::error_code ec;
   fs::path f = fs::weakly_canonical(file, ec);
+  if (ec) return false;
   fs::path r = fs::weakly_canonical(root, ec);
-  auto [rootEnd, fileIt] = std::mismatch(r.begin(), r.end(), f.begin(), f.end());
-  return rootEnd == r.end();
-}
-
-bool readText(const fs::path& p, std::string& out) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  out = ss.str();
-  return true;
+  if (ec) return false;
+  return isBelowCanonical(f, r);
 }
 
 // "file:line: message" -> Diagnostic; anything else keeps an empty location.
@@ -65,8 +76,11 @@ Diagnostic parseLuaMessage(const std::string& msg, const std::string& fallbackFi
   for (std::size_t colon = msg.find(':'); colon != std::string::npos;
        colon = msg.find(':', colon + 1)) {
     std::size_t digits = colon + 1;
-    while (digits < msg.size() && std::isdigit(static_cast<unsigned char>(msg[digits]))) ++digits;
-    if (digits > colon + 1 && msg.compare(digits, 2, ": ") == 0 && msg.find('\n') > colon) {
+    while (digits < msg.size() && digits - colon <= 9 &&
+           std::isdigit(static_cast<unsigned char>(msg[digits])))
+      ++digits;
+    if (digits > colon + 1 && digits - colon <= 9 && msg.compare(digits, 2, ": ") == 0 &&
+        msg.find('\n') > colon) {
       return Diagnostic{
           {msg.substr(0, colon), std::stoi(msg.substr(colon + 1, digits - colon - 1))},
           msg.substr(digits + 2)};
@@ -75,17 +89,96 @@ Diagnostic parseLuaMessage(const std::string& msg, const std::string& fallbackFi
   return Diagnostic{{fallbackFile, 0}, msg};
 }
 
+bool hasLocation(const std::string& msg) {
+  return parseLuaMessage(msg, "").loc.line > 0;
+}
+
+bool isPlainName(const std::string& name) {
+  if (name.empty() || name.size() > kMaxModuleName) return false;
+  bool segmentStart = true;
+  for (char c : name) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '.') {
+      if (segmentStart) return false;
+      segmentStart = true;
+    } else if (std::isalpha(u) || c == '_' || (!segmentStart && std::isdigit(u))) {
+      segmentStart = false;
+    } else {
+      return false;
+    }
+  }
+  return !segmentStart;
+}
+
+// Worst-case work of one call of a Lua pattern function (see lua_host.hpp for the bound).
+double patternWork(std::string_view pat, std::size_t subjectLen, bool anchorable) {
+  const double n1 = static_cast<double>(subjectLen) + 1.0;
+  double q = 0, s = 0;
+  std::size_t i = 0;
+  const bool anchored = anchorable && !pat.empty() && pat[0] == '^';
+  if (anchored) i = 1;
+  while (i < pat.size()) {
+    const char c = pat[i];
+    bool single = true;  // a single-character class that a quantifier may follow
+    if (c == '(' || c == ')') {
+      ++i;
+      single = false;
+    } else if (c == '%' && i + 1 < pat.size()) {
+      const char d = pat[i + 1];
+      if (d == 'b') {
+        s += 1;
+        i += 4;
+        single = false;
+      } else if (d == 'f') {
+        i += 2;
+        single = false;  // the set that follows is skipped as a class below
+      } else {
+        if (std::isdigit(static_cast<unsigned char>(d))) s += 1;
+        i += 2;
+      }
+    } else if (c == '[') {
+      ++i;
+      if (i < pat.size() && pat[i] == '^') ++i;
+      if (i < pat.size()) ++i;  // a ']' first in the set is literal
+      while (i < pat.size() && pat[i] != ']') i += pat[i] == '%' ? 2 : 1;
+      ++i;
+    } else {
+      ++i;
+    }
+    if (single && i < pat.size() &&
+        (pat[i] == '*' || pat[i] == '+' || pat[i] == '-' || pat[i] == '?')) {
+      q += 1;
+      ++i;
+    }
+  }
+  const double starts = anchored ? 1.0 : n1;
+  return starts * 2.0 * std::pow(n1, q) * (static_cast<double>(pat.size()) + 2.0 + s * n1);
+}
+
+bool hasPatternSpecials(std::string_view pat) {
+  return pat.find_first_of("^$*+?.([%-") != std::string_view::npos;
+}
+
 }  // namespace
 
 struct LuaHost::Impl {
   lua_State* L = nullptr;
   LuaHost* host = nullptr;
   std::size_t memory = 0;
-  std::size_t memoryLimit = 0;
+  std::size_t memoryLimit = 0;  // the script's budget
+  bool hostPhase = false;       // the script has ended: allow kHostReserve beyond the budget
+  bool memoryRefused = false;   // an allocation was refused: the state is dead
   long long instructions = 0;
   long long instructionLimit = 0;
-  std::vector<std::string> moduleRoots;                      // scenario dir, <root>/scenarios
+  double timeLimit = kDefaultTimeLimit;
+  std::chrono::steady_clock::time_point deadline;
+  bool dead = false;      // a budget was exceeded: every further Lua instruction raises
+  std::string deathMsg;   // "file:line: ..." of the first budget error
+  SourceLoc memoryLoc;    // last place seen by the hook while memory was high
+  std::string chunkFile;  // the scenario file as shown
+  std::vector<std::string> moduleRoots;                      // canonical: scenario dir, scenarios/
   std::vector<std::pair<std::string, std::string>> modules;  // required files: path, text
+  std::vector<std::string> loading;                          // require calls in progress
 
   static Impl* from(lua_State* L) { return *static_cast<Impl**>(lua_getextraspace(L)); }
 
@@ -97,49 +190,134 @@ struct LuaHost::Impl {
       std::free(ptr);
       return nullptr;
     }
-    if (self->memory - old + nsize > self->memoryLimit)
-      return nullptr;  // Lua raises "not enough memory"
+    // After a refusal the reserve is open too: the script is dead from the next hook on, and the
+    // error handling between (messages, constructors) must not fail again at the limit.
+    const bool reserve = self->hostPhase || self->memoryRefused;
+    const std::size_t limit = self->memoryLimit + (reserve ? kHostReserve : 0);
+    if (nsize > old && self->memory - old + nsize > limit) {
+      // Lua raises "not enough memory"; the refusal itself ends the scenario (below), so a
+      // script that catches the error cannot carry on at the limit.
+      self->memoryRefused = true;
+      return nullptr;
+    }
     void* p = std::realloc(ptr, nsize);
     if (p) self->memory = self->memory - old + nsize;
     return p;
   }
 
+  std::string memoryMessage() const {
+    return "scenario exceeded its memory budget of " + std::to_string(memoryLimit >> 20) +
+           " MiB (not enough memory)";
+  }
+
   // Lua reports errors by longjmp, which skips C++ destructors. So every C function below does
   // its C++ work in a *Body function that returns false with the message pushed on the Lua stack;
   // the thin wrapper calls lua_error only after all C++ objects are gone (architecture.md: never
-  // throw across a Lua longjmp).
+  // throw across a Lua longjmp). Bodies also catch C++ exceptions, which must not cross Lua frames.
 
-  static constexpr int kHookEvery = 10000;
-  static bool countHookBody(lua_State* L) {
-    Impl* self = from(L);
-    self->instructions += kHookEvery;
-    if (self->instructions <= self->instructionLimit) return true;
-    // Level 0 is the Lua function that was running when the hook fired.
-    lua_Debug ar;
-    SourceLoc loc{"?", 0};
-    if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "Sl", &ar)) {
-      loc.file = ar.source && ar.source[0] == '@' ? ar.source + 1 : "?";
-      loc.line = ar.currentline;
-    }
-    push(L, loc,
-         "scenario exceeded its budget of " + std::to_string(self->instructionLimit) +
-             " Lua instructions (endless loop?)");
-    return false;
-  }
-  static void countHook(lua_State* L, lua_Debug*) {
-    if (!countHookBody(L)) lua_error(L);
-  }
+  static constexpr int kHookEvery = 1000;
 
-  // Location of the Lua code that called the current C function.
-  static SourceLoc callerLoc(lua_State* L) {
+  // Location of the innermost Lua function on the stack at or above `level`.
+  static SourceLoc luaLoc(lua_State* L, int level) {
     lua_Debug ar;
-    if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar)) {
+    for (int lv = level; lua_getstack(L, lv, &ar); ++lv) {
+      if (!lua_getinfo(L, "Sl", &ar) || ar.currentline <= 0) continue;
       std::string src = ar.source ? ar.source : "?";
       if (!src.empty() && src[0] == '@') src.erase(0, 1);
       return {src, ar.currentline};
     }
     return {"?", 0};
   }
+
+  // Marks the state dead with `msg` at the current Lua line and pushes the message.
+  void die(lua_State* state, const std::string& msg) {
+    if (!dead) {
+      dead = true;
+      SourceLoc loc = luaLoc(state, 0);
+      if (loc.line == 0) loc.file = chunkFile;
+      deathMsg = loc.str() + ": " + msg;
+      // From now on the hook fires on every instruction, so the error is raised again as soon as
+      // a pcall that caught it returns.
+      lua_sethook(state, &Impl::countHook, LUA_MASKCOUNT, 1);
+    }
+    lua_pushlstring(state, deathMsg.data(), deathMsg.size());
+  }
+
+  // Checks the budgets that do not count instructions; false with the error pushed if exceeded.
+  bool checkBudgets(lua_State* state) {
+    if (dead) {
+      lua_pushlstring(state, deathMsg.data(), deathMsg.size());
+      return false;
+    }
+    if (memoryRefused || memory > memoryLimit + (hostPhase ? kHostReserve : 0)) {
+      die(state, memoryMessage());
+      return false;
+    }
+    if (std::chrono::steady_clock::now() > deadline) {
+      std::ostringstream os;
+      os << "scenario exceeded its time budget of " << timeLimit << " s (endless loop?)";
+      die(state, os.str());
+      return false;
+    }
+    return true;
+  }
+
+  static bool countHookBody(lua_State* L) {
+    Impl* self = from(L);
+    if (self->dead) return self->checkBudgets(L);
+    self->instructions += kHookEvery;
+    if (self->memory > self->memoryLimit / 2) self->memoryLoc = luaLoc(L, 0);
+    if (self->instructions > self->instructionLimit) {
+      self->die(L, "scenario exceeded its budget of " + std::to_string(self->instructionLimit) +
+                       " Lua instructions (endless loop?)");
+      return false;
+    }
+    return self->checkBudgets(L);
+  }
+  static void countHook(lua_State* L, lua_Debug*) {
+    if (!countHookBody(L)) lua_error(L);
+  }
+
+  // Message handler of every protected call the host makes: gives every error a location (the
+  // Lua line that raised it) and a string message, whatever value was raised.
+  static void messageBody(lua_State* L) {
+    Impl* self = from(L);
+    if (self->dead) {
+      lua_pushlstring(L, self->deathMsg.data(), self->deathMsg.size());
+      return;
+    }
+    std::string msg;
+    const int t = lua_type(L, 1);
+    if (t == LUA_TSTRING) {
+      std::size_t len = 0;
+      const char* s = lua_tolstring(L, 1, &len);
+      msg.assign(s, std::min(len, std::size_t{4096}));
+      if (hasLocation(msg)) {
+        lua_pushlstring(L, msg.data(), msg.size());
+        return;
+      }
+      if (msg.empty()) msg = "error called with an empty message";
+    } else if (t == LUA_TNUMBER) {
+      lua_pushvalue(L, 1);
+      msg = std::string("error ") + lua_tostring(L, -1);
+      lua_pop(L, 1);
+    } else if (t == LUA_TNIL || t == LUA_TNONE) {
+      msg = "error called with nil (no message)";
+    } else {
+      msg = std::string("error called with a ") + lua_typename(L, t) + " value (no message)";
+    }
+    // Level 0 is this handler; the first Lua function above it is where the error was raised.
+    SourceLoc loc = luaLoc(L, 1);
+    if (loc.line == 0) loc.file = self->chunkFile;
+    push(L, loc, msg);
+  }
+  static int messageHandler(lua_State* L) {
+    messageBody(L);
+    return 1;
+  }
+
+  // Location of the Lua code that called the current C function.
+  static SourceLoc callerLoc(lua_State* L) { return luaLoc(L, 1); }
 
   // Pushes "file:line: msg" as the pending error value.
   static void push(lua_State* L, const SourceLoc& loc, const std::string& msg) {
@@ -156,6 +334,10 @@ struct LuaHost::Impl {
       push(L, callerLoc(L),
            std::string(kind) + " expects one table of named values, e.g. " + kind +
                " { ... }, got " + got);
+      return false;
+    }
+    if (!lua_checkstack(L, 8)) {
+      push(L, callerLoc(L), "Lua stack exhausted");
       return false;
     }
     SourceLoc loc = callerLoc(L);
@@ -181,63 +363,132 @@ struct LuaHost::Impl {
   }
   static int construct(lua_State* L) { return constructBody(L) ? 1 : lua_error(L); }
 
-  static bool requireBody(lua_State* L) {
+  // Finds and reads the module file; false with the error pushed.
+  bool findModule(lua_State* state, const std::string& name, const SourceLoc& loc,
+                  std::string& shown, std::string& text) {
+    std::string rel = name;
+    for (char& c : rel)
+      if (c == '.') c = '/';
+    rel += ".lua";
+    std::string tried;
+    for (const auto& root : moduleRoots) {
+      const fs::path cand = fs::path(root) / rel;
+      tried += "\n\t" + displayPath(cand);
+      std::error_code ec;
+      if (!fs::exists(cand, ec)) continue;
+      const fs::path real = fs::canonical(cand, ec);
+      if (ec || !isBelowCanonical(real, fs::path(root))) {
+        push(state, loc,
+             "require \"" + name + "\": " + displayPath(cand) +
+                 " leads outside the folders modules may come from (the scenario's folder, "
+                 "scenarios/)");
+        return false;
+      }
+      shown = displayPath(cand);
+      std::string why;
+      std::optional<std::string> content = readRegularFile(real.string(), why, kMaxScenarioBytes);
+      if (!content) {
+        push(state, loc, "require \"" + name + "\": cannot read " + shown + ": " + why);
+        return false;
+      }
+      text = std::move(*content);
+      return true;
+    }
+    push(state, loc, "require \"" + name + "\": module not found; tried:" + tried);
+    return false;
+  }
+
+  // Checks the name and loads the chunk; on success the chunk is pushed and `name` set.
+  static bool requireLoadBody(lua_State* L, std::string& name) {
     Impl* self = from(L);
     SourceLoc loc = callerLoc(L);
     if (lua_type(L, 1) != LUA_TSTRING) {
       push(L, loc, "require expects a module name string, e.g. require \"vehicles.wagon\"");
       return false;
     }
-    std::string name = lua_tostring(L, 1);
-    for (char c : name) {
-      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.')) {
-        push(
-            L, loc,
-            "require \"" + name + "\": module names may contain only letters, digits, '_' and '.'");
-        return false;
-      }
-    }
-    lua_getfield(L, LUA_REGISTRYINDEX, kLoadedKey);
-    lua_getfield(L, -1, name.c_str());
-    if (!lua_isnil(L, -1)) return true;
-    lua_pop(L, 1);
-    std::string rel = name;
-    for (char& c : rel)
-      if (c == '.') c = '/';
-    rel += ".lua";
-    fs::path found;
-    std::string tried;
-    for (const auto& root : self->moduleRoots) {
-      fs::path cand = fs::path(root) / rel;
-      tried += "\n\t" + displayPath(cand);
-      if (fs::is_regular_file(cand)) {
-        found = cand;
-        break;
-      }
-    }
-    if (found.empty()) {
-      push(L, loc, "require \"" + name + "\": module not found; tried:" + tried);
+    std::size_t len = 0;
+    const char* raw = lua_tolstring(L, 1, &len);
+    name.assign(raw, std::min(len, kMaxModuleName + 1));
+    // Shown in messages: control characters (a NUL would cut the message short) become '?'.
+    for (char& c : name)
+      if (std::iscntrl(static_cast<unsigned char>(c))) c = '?';
+    if (len > kMaxModuleName) {
+      push(L, loc,
+           "require: module name longer than " + std::to_string(kMaxModuleName) + " characters");
       return false;
     }
-    std::string text;
-    if (!readText(found, text)) {
-      push(L, loc, "require \"" + name + "\": cannot read " + displayPath(found));
+    if (!isPlainName(name)) {
+      push(L, loc,
+           "require \"" + name +
+               "\": module names are names separated by dots (letters, digits and '_', not "
+               "starting with a digit), e.g. \"vehicles.wagon\"");
       return false;
     }
-    std::string chunk = "@" + displayPath(found);
-    self->modules.push_back({displayPath(found), text});  // provenance: every file the run read
+    for (std::size_t i = 0; i < self->loading.size(); ++i) {
+      if (self->loading[i] != name) continue;
+      std::string chain;
+      for (std::size_t j = i; j < self->loading.size(); ++j) chain += self->loading[j] + " -> ";
+      push(L, loc, "require \"" + name + "\": require cycle: " + chain + name);
+      return false;
+    }
+    if (static_cast<int>(self->loading.size()) >= kMaxRequireDepth) {
+      push(L, loc,
+           "require \"" + name + "\": more than " + std::to_string(kMaxRequireDepth) +
+               " nested require calls");
+      return false;
+    }
+    std::string shown, text;
+    if (!self->findModule(L, name, loc, shown, text)) return false;
+    std::string chunk = "@" + shown;
     if (luaL_loadbufferx(L, text.data(), text.size(), chunk.c_str(), "t") != LUA_OK) return false;
-    lua_pushstring(L, name.c_str());
-    if (lua_pcall(L, 1, 1, 0) != LUA_OK) return false;
+    self->modules.push_back({shown, std::move(text)});  // provenance: every file the run read
+    return true;
+  }
+  static bool requireLoad(lua_State* L, std::string& name) {
+    try {
+      return requireLoadBody(L, name);
+    } catch (const std::exception& e) {
+      push(L, callerLoc(L), std::string("require: ") + e.what());
+      return false;
+    }
+  }
+
+  // require: stack [name]; the loaded value is cached in the registry by name.
+  static int require(lua_State* L) {
+    if (!lua_checkstack(L, 8)) return luaL_error(L, "Lua stack exhausted");
+    lua_settop(L, 1);
+    if (lua_type(L, 1) == LUA_TSTRING) {
+      lua_getfield(L, LUA_REGISTRYINDEX, kLoadedKey);
+      lua_pushvalue(L, 1);
+      lua_rawget(L, -2);
+      if (!lua_isnil(L, -1)) return 1;
+      lua_settop(L, 1);
+    }
+    bool ok = false;
+    {
+      std::string name;
+      ok = requireLoad(L, name);
+      if (ok) from(L)->loading.push_back(name);
+    }
+    if (!ok) return lua_error(L);
+    // Stack: [name, chunk]. Run it under the message handler so errors keep their own line.
+    lua_pushcfunction(L, &Impl::messageHandler);
+    lua_insert(L, 2);
+    lua_pushvalue(L, 1);
+    const int status = lua_pcall(L, 1, 1, 2);
+    from(L)->loading.pop_back();
+    if (status != LUA_OK) return lua_error(L);
     if (lua_isnil(L, -1)) {
       lua_pop(L, 1);
       lua_pushboolean(L, 1);
     }
-    lua_pushvalue(L, -1);
-    lua_setfield(L, -3, name.c_str());
-    return true;
+    lua_getfield(L, LUA_REGISTRYINDEX, kLoadedKey);
+    lua_pushvalue(L, 1);
+    lua_pushvalue(L, -3);
+    lua_rawset(L, -3);
+    lua_pop(L, 1);
+    return 1;
   }
-  static int require(lua_State* L) { return requireBody(L) ? 1 : lua_error(L); }
 
   static int print(lua_State* L) {
     int n = lua_gettop(L);
@@ -250,13 +501,98 @@ struct LuaHost::Impl {
     return 0;
   }
 
+  // setmetatable without finalizers: Lua runs __gc with hooks off, so the guard could not stop
+  // an endless loop inside one. Upvalue 1: the library's setmetatable.
+  static int setmetatableGuarded(lua_State* L) {
+    if (lua_type(L, 2) == LUA_TTABLE) {
+      lua_pushstring(L, "__gc");
+      lua_rawget(L, 2);
+      const bool gc = !lua_isnil(L, -1);
+      lua_pop(L, 1);
+      if (gc) {
+        unknownHelper(L, "setmetatable: finalizers (__gc) are not allowed in a scenario");
+        return lua_error(L);
+      }
+    }
+    const int n = lua_gettop(L);
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, n, 1);
+    return 1;
+  }
+  static void unknownHelper(lua_State* L, const char* msg) { push(L, callerLoc(L), msg); }
+
+  // xpcall with the message handler guarded: Lua calls the handler of an error raised by a hook
+  // with hooks still off, so a handler that loops could not be stopped. Once the state is dead
+  // (the only time the hook raises) the handler is skipped and the budget error kept.
+  // Upvalue 1: the library's xpcall.
+  static int xpcallGuarded(lua_State* L) {
+    if (lua_type(L, 2) == LUA_TFUNCTION) {
+      lua_pushvalue(L, 2);
+      lua_pushcclosure(L, &Impl::handlerGuard, 1);
+      lua_replace(L, 2);
+    }
+    const int n = lua_gettop(L);
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, n, LUA_MULTRET);
+    return lua_gettop(L);
+  }
+  // Upvalue 1: the script's message handler.
+  static int handlerGuard(lua_State* L) {
+    Impl* self = from(L);
+    if (self->dead) {
+      lua_pushlstring(L, self->deathMsg.data(), self->deathMsg.size());
+      return 1;
+    }
+    const int n = lua_gettop(L);
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, n, 1);
+    return 1;
+  }
+
+  // string.find/match/gmatch/gsub: refuses calls whose worst-case work is beyond the limit, then
+  // runs the library function (upvalue 1). Upvalue 2: function name; upvalue 3: true if a leading
+  // '^' anchors the pattern; upvalue 4: true for find (argument 4 asks for a plain search).
+  static bool patternCheckBody(lua_State* L) {
+    Impl* self = from(L);
+    if (!self->checkBudgets(L)) return false;
+    if (lua_toboolean(L, lua_upvalueindex(4)) && lua_toboolean(L, 4)) return true;
+    if (lua_type(L, 1) != LUA_TSTRING && lua_type(L, 1) != LUA_TNUMBER) return true;
+    if (lua_type(L, 2) != LUA_TSTRING) return true;  // the library reports the wrong type
+    std::size_t n = 0, m = 0;
+    lua_tolstring(L, 1, &n);  // numbers are converted in place, as the library would
+    const char* pat = lua_tolstring(L, 2, &m);
+    std::string_view p(pat, m);
+    if (!hasPatternSpecials(p)) return true;
+    const double work = patternWork(p, n, lua_toboolean(L, lua_upvalueindex(3)));
+    if (work <= kPatternWorkLimit) return true;
+    std::ostringstream os;
+    os << "string." << lua_tostring(L, lua_upvalueindex(2)) << ": pattern too costly for a " << n
+       << "-character subject (worst case " << std::setprecision(3) << work << " steps, limit "
+       << kPatternWorkLimit << "); use fewer repetition items (* + - ?) or shorter strings";
+    push(L, callerLoc(L), os.str());
+    return false;
+  }
+  static int patternGuarded(lua_State* L) {
+    if (!patternCheckBody(L)) return lua_error(L);
+    const int n = lua_gettop(L);
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, n, LUA_MULTRET);
+    return lua_gettop(L);
+  }
+
   // __index on the globals: an unknown name is an error with a hint, not a silent nil.
   static void unknownGlobalBody(lua_State* L) {
-    std::string name = lua_isstring(L, 2) ? lua_tostring(L, 2) : "?";
+    std::string name = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : "?";
+    if (name.size() > 100) name = name.substr(0, 100) + "...";
     std::vector<std::string> known;
     lua_pushnil(L);
     while (lua_next(L, 1)) {
-      if (lua_type(L, -2) == LUA_TSTRING) known.emplace_back(lua_tostring(L, -2));
+      if (lua_type(L, -2) == LUA_TSTRING && known.size() < 1000)
+        known.emplace_back(lua_tostring(L, -2));
       lua_pop(L, 1);
     }
     std::string msg = "unknown name '" + name + "'";
@@ -268,12 +604,52 @@ struct LuaHost::Impl {
     unknownGlobalBody(L);
     return lua_error(L);
   }
+
+  // A Lua error outside any protected call: nothing can be recovered, but say what happened
+  // instead of aborting silently. The host keeps a memory reserve so this is never expected.
+  static int panic(lua_State* L) {
+    const char* m = lua_tostring(L, -1);
+    std::fprintf(stderr, "internal error: unprotected Lua error: %s\n", m ? m : "?");
+    std::fflush(stderr);
+    std::_Exit(3);
+  }
+
+  // The error of a failed protected call, as an InputError.
+  InputError errorOf(int status) {
+    if (dead) return InputError({parseLuaMessage(deathMsg, chunkFile)});
+    if (status == LUA_ERRMEM || memoryRefused) {
+      SourceLoc loc = memoryLoc.line > 0 ? memoryLoc : SourceLoc{chunkFile, 0};
+      return InputError(loc, memoryMessage());
+    }
+    std::string msg = "unknown Lua error";
+    if (lua_type(L, -1) == LUA_TSTRING) {
+      std::size_t len = 0;
+      const char* s = lua_tolstring(L, -1, &len);
+      msg.assign(s, len);
+    }
+    if (status == LUA_ERRERR) msg = "error while handling an error (" + msg + ")";
+    return InputError({parseLuaMessage(msg, chunkFile)});
+  }
 };
 
 LuaHost::LuaHost(HostOptions options) : impl_(new Impl), options_(std::move(options)) {
   impl_->host = this;
   impl_->memoryLimit = options_.memory_limit;
   impl_->instructionLimit = options_.instruction_limit;
+  impl_->timeLimit = options_.time_limit;
+  if (!(impl_->timeLimit > 0)) {
+    impl_->timeLimit = kDefaultTimeLimit;
+    if (const char* env = std::getenv("RAILBENCH_LUA_SECONDS")) {
+      char* end = nullptr;
+      const double v = std::strtod(env, &end);
+      if (end != env && *end == '\0' && v > 0 && v < 1e6) impl_->timeLimit = v;
+    }
+  }
+  impl_->deadline = std::chrono::steady_clock::now() +
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                        std::chrono::duration<double>(impl_->timeLimit));
+  // Opening the libraries is the host's own work, not the script's.
+  impl_->hostPhase = true;
   lua_State* L = lua_newstate(&Impl::alloc, impl_);
   if (!L) {
     delete impl_;
@@ -281,6 +657,7 @@ LuaHost::LuaHost(HostOptions options) : impl_(new Impl), options_(std::move(opti
   }
   impl_->L = L;
   *static_cast<Impl**>(lua_getextraspace(L)) = impl_;
+  lua_atpanic(L, &Impl::panic);
 
   // Only safe libraries: base, string, table, math, utf8.
   luaL_requiref(L, LUA_GNAME, luaopen_base, 1);
@@ -293,6 +670,29 @@ LuaHost::LuaHost(HostOptions options) : impl_(new Impl), options_(std::move(opti
     lua_pushnil(L);
     lua_setglobal(L, banned);
   }
+  lua_getglobal(L, "setmetatable");
+  lua_pushcclosure(L, &Impl::setmetatableGuarded, 1);
+  lua_setglobal(L, "setmetatable");
+  lua_getglobal(L, "xpcall");
+  lua_pushcclosure(L, &Impl::xpcallGuarded, 1);
+  lua_setglobal(L, "xpcall");
+  // The string table is also the __index of every string, so s:find(...) takes these too.
+  lua_getglobal(L, "string");
+  struct PatternFn {
+    const char* name;
+    bool anchorable;
+    bool plainArg;
+  };
+  for (const PatternFn& f : {PatternFn{"find", true, true}, PatternFn{"match", true, false},
+                             PatternFn{"gmatch", false, false}, PatternFn{"gsub", true, false}}) {
+    lua_getfield(L, -1, f.name);
+    lua_pushstring(L, f.name);
+    lua_pushboolean(L, f.anchorable);
+    lua_pushboolean(L, f.plainArg);
+    lua_pushcclosure(L, &Impl::patternGuarded, 4);
+    lua_setfield(L, -2, f.name);
+  }
+  lua_pop(L, 1);
   lua_pushcfunction(L, &Impl::print);
   lua_setglobal(L, "print");
   lua_pushcfunction(L, &Impl::require);
@@ -320,6 +720,7 @@ LuaHost::LuaHost(HostOptions options) : impl_(new Impl), options_(std::move(opti
   lua_setmetatable(L, -2);
   lua_pop(L, 1);
   lua_sethook(L, &Impl::countHook, LUA_MASKCOUNT, Impl::kHookEvery);
+  impl_->hostPhase = false;
 }
 
 const std::vector<std::pair<std::string, std::string>>& LuaHost::modules() const {
@@ -335,13 +736,31 @@ namespace {
 
 struct Converter {
   lua_State* L;
+  LuaHost::Impl* impl;
   Diagnostics& diags;
   std::set<const void*> active;
+  std::size_t values = 0;
+  bool stopped = false;  // a limit that ends the conversion was hit
+
+  void fail(const SourceLoc& loc, const std::string& msg) {
+    if (diags.size() >= 50) {
+      stopped = true;
+      return;
+    }
+    diags.add(loc, msg);
+  }
 
   Node convert(int idx, const SourceLoc& parentLoc, const std::string& path, int depth) {
     idx = lua_absindex(L, idx);
     Node n;
     n.loc = parentLoc;
+    if (stopped) return n;
+    if (++values > kMaxValues) {
+      fail(parentLoc, path + ": the scenario holds more than " + std::to_string(kMaxValues) +
+                          " values (tables and their entries)");
+      stopped = true;
+      return n;
+    }
     switch (lua_type(L, idx)) {
       case LUA_TNIL:
         n.type = Node::Type::Nil;
@@ -354,85 +773,129 @@ struct Converter {
         n.type = Node::Type::Number;
         n.number = lua_tonumber(L, idx);
         break;
-      case LUA_TSTRING:
+      case LUA_TSTRING: {
         n.type = Node::Type::String;
-        n.string = lua_tostring(L, idx);
-        break;
-      case LUA_TFUNCTION: {
-        n.type = Node::Type::Function;
-        lua_pushvalue(L, idx);
-        int ref = luaL_ref(L, LUA_REGISTRYINDEX);
-        lua_State* state = L;
-        SourceLoc loc = parentLoc;
-        std::string where = path;
-        n.function =
-            std::make_shared<std::function<double(double)>>([state, ref, loc, where](double x) {
-              lua_rawgeti(state, LUA_REGISTRYINDEX, ref);
-              lua_pushnumber(state, x);
-              if (lua_pcall(state, 1, 1, 0) != LUA_OK) {
-                std::string msg = lua_tostring(state, -1) ? lua_tostring(state, -1) : "error";
-                lua_pop(state, 1);
-                throw InputError({parseLuaMessage(msg, loc.file)});
-              }
-              if (!lua_isnumber(state, -1)) {
-                std::string t = luaL_typename(state, -1);
-                lua_pop(state, 1);
-                throw InputError(loc, where + ": function must return a number, got " + t);
-              }
-              double v = lua_tonumber(state, -1);
-              lua_pop(state, 1);
-              return v;
-            });
+        std::size_t len = 0;
+        const char* s = lua_tolstring(L, idx, &len);
+        if (len > kMaxStringBytes) {
+          fail(parentLoc, path + ": string of " + std::to_string(len) + " bytes, longer than " +
+                              std::to_string(kMaxStringBytes) + " bytes");
+          break;
+        }
+        n.string.assign(s, len);
         break;
       }
-      case LUA_TTABLE: {
-        n.type = Node::Type::Table;
-        const void* ptr = lua_topointer(L, idx);
-        if (active.count(ptr) || depth > 32) {
-          diags.add(parentLoc, path + ": table refers to itself (cycle) or is nested too deeply");
-          return n;
-        }
-        active.insert(ptr);
-        lua_getfield(L, LUA_REGISTRYINDEX, kMetaKey);
-        lua_pushvalue(L, idx);
-        lua_gettable(L, -2);
-        if (lua_istable(L, -1)) {
-          lua_getfield(L, -1, "kind");
-          n.kind = lua_tostring(L, -1);
-          lua_getfield(L, -2, "file");
-          n.loc.file = lua_tostring(L, -1);
-          lua_getfield(L, -3, "line");
-          n.loc.line = static_cast<int>(lua_tointeger(L, -1));
-          lua_pop(L, 3);
-        }
-        lua_pop(L, 2);
-        lua_Integer len = static_cast<lua_Integer>(lua_rawlen(L, idx));
-        for (lua_Integer i = 1; i <= len; ++i) {
-          lua_rawgeti(L, idx, i);
-          n.items.push_back(convert(-1, n.loc, path + "[" + std::to_string(i) + "]", depth + 1));
-          lua_pop(L, 1);
-        }
-        lua_pushnil(L);
-        while (lua_next(L, idx)) {
-          if (lua_type(L, -2) == LUA_TSTRING) {
-            std::string key = lua_tostring(L, -2);
-            n.setField(key, convert(-1, n.loc, path + "." + key, depth + 1));
-          } else if (!(lua_isinteger(L, -2) && lua_tointeger(L, -2) >= 1 &&
-                       lua_tointeger(L, -2) <= len)) {
-            diags.add(n.loc, path + ": keys must be names or list positions 1.." +
-                                 std::to_string(len) + ", got a " + luaL_typename(L, -2) + " key");
-          }
-          lua_pop(L, 1);
-        }
-        active.erase(ptr);
+      case LUA_TFUNCTION:
+        convertFunction(idx, n, parentLoc, path);
         break;
-      }
+      case LUA_TTABLE:
+        convertTable(idx, n, parentLoc, path, depth);
+        break;
       default:
         n.type = Node::Type::Nil;
-        diags.add(parentLoc, path + ": values of type " + std::string(luaL_typename(L, idx)) +
-                                 " are not allowed in a scenario");
+        fail(parentLoc, path + ": values of type " + std::string(luaL_typename(L, idx)) +
+                            " are not allowed in a scenario");
     }
     return n;
+  }
+
+  void convertFunction(int idx, Node& n, const SourceLoc& parentLoc, const std::string& path) {
+    n.type = Node::Type::Function;
+    lua_pushvalue(L, idx);
+    int ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    lua_State* state = L;
+    LuaHost::Impl* host = impl;
+    SourceLoc loc = parentLoc;
+    std::string where = path;
+    n.function =
+        std::make_shared<std::function<double(double)>>([state, host, ref, loc, where](double x) {
+          if (!lua_checkstack(state, 4)) throw InputError(loc, where + ": Lua stack exhausted");
+          lua_pushcfunction(state, &LuaHost::Impl::messageHandler);
+          lua_rawgeti(state, LUA_REGISTRYINDEX, ref);
+          lua_pushnumber(state, x);
+          const int status = lua_pcall(state, 1, 1, -3);
+          if (status != LUA_OK) {
+            InputError e = host->errorOf(status);
+            lua_pop(state, 2);
+            throw e;
+          }
+          if (host->dead) {  // the function caught a budget error and returned
+            lua_pop(state, 2);
+            throw host->errorOf(LUA_ERRRUN);
+          }
+          if (!lua_isnumber(state, -1)) {
+            std::string t = luaL_typename(state, -1);
+            lua_pop(state, 2);
+            throw InputError(loc, where + ": function must return a number, got " + t);
+          }
+          double v = lua_tonumber(state, -1);
+          lua_pop(state, 2);
+          return v;
+        });
+  }
+
+  void convertTable(int idx, Node& n, const SourceLoc& parentLoc, const std::string& blockPath,
+                    int depth) {
+    n.type = Node::Type::Table;
+    // Top-level blocks are converted with an empty path and named by their kind below.
+    std::string path = blockPath;
+    const void* ptr = lua_topointer(L, idx);
+    if (active.count(ptr)) {
+      fail(parentLoc, path + ": table refers to itself (cycle)");
+      return;
+    }
+    if (depth >= kMaxNesting) {
+      fail(parentLoc,
+           path + ": tables nested more than " + std::to_string(kMaxNesting) + " levels deep");
+      stopped = true;
+      return;
+    }
+    // Each level keeps a key, a value and the registry lookups on the Lua stack.
+    if (!lua_checkstack(L, 8)) {
+      fail(parentLoc, path + ": tables nested too deeply (Lua stack exhausted)");
+      stopped = true;
+      return;
+    }
+    active.insert(ptr);
+    lua_getfield(L, LUA_REGISTRYINDEX, kMetaKey);
+    lua_pushvalue(L, idx);
+    lua_rawget(L, -2);
+    if (lua_istable(L, -1)) {
+      lua_getfield(L, -1, "kind");
+      n.kind = lua_tostring(L, -1);
+      lua_getfield(L, -2, "file");
+      n.loc.file = lua_tostring(L, -1);
+      lua_getfield(L, -3, "line");
+      n.loc.line = static_cast<int>(lua_tointeger(L, -1));
+      lua_pop(L, 3);
+      if (path.empty()) path = n.kind;
+    }
+    lua_pop(L, 2);
+    lua_Integer len = static_cast<lua_Integer>(lua_rawlen(L, idx));
+    for (lua_Integer i = 1; i <= len && !stopped; ++i) {
+      lua_rawgeti(L, idx, i);
+      n.items.push_back(convert(-1, n.loc, path + "[" + std::to_string(i) + "]", depth + 1));
+      lua_pop(L, 1);
+    }
+    lua_pushnil(L);
+    while (!stopped && lua_next(L, idx)) {
+      if (lua_type(L, -2) == LUA_TSTRING) {
+        std::size_t klen = 0;
+        const char* k = lua_tolstring(L, -2, &klen);
+        std::string key(k, std::min(klen, std::size_t{200}));
+        n.fields.emplace_back(key, convert(-1, n.loc, path + "." + key, depth + 1));
+      } else if (!(lua_isinteger(L, -2) && lua_tointeger(L, -2) >= 1 &&
+                   lua_tointeger(L, -2) <= len)) {
+        fail(n.loc, path + ": keys must be names or list positions 1.." + std::to_string(len) +
+                        ", got a " + luaL_typename(L, -2) + " key");
+      }
+      lua_pop(L, 1);
+    }
+    if (stopped) lua_settop(L, idx);  // lua_next left a key on the stack
+    // Sorted once here rather than by inserting in order (quadratic in the number of keys).
+    std::sort(n.fields.begin(), n.fields.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    active.erase(ptr);
   }
 };
 
@@ -441,34 +904,53 @@ struct Converter {
 Node LuaHost::runFile(const std::string& path) {
   lua_State* L = impl_->L;
   fs::path file(path);
-  if (!fs::is_regular_file(file)) throw InputError({path, 0}, "cannot open scenario file");
-  std::string text;
-  if (!readText(file, text)) throw InputError({path, 0}, "cannot read scenario file");
+  std::string why;
+  std::optional<std::string> content = readRegularFile(path, why, kMaxScenarioBytes);
+  if (!content) throw InputError({path, 0}, "cannot open scenario file: " + why);
+  text_ = std::move(*content);
+  impl_->chunkFile = path;
   std::error_code ec;
-  scenarioDir_ = fs::weakly_canonical(fs::absolute(file).parent_path(), ec).string();
+  scenarioDir_ = fs::weakly_canonical(fs::absolute(file, ec).parent_path(), ec).string();
   roots_ = {scenarioDir_};
   impl_->moduleRoots = {scenarioDir_};
   if (!options_.root.empty()) {
     roots_.push_back((fs::path(options_.root) / "scenarios").string());
     roots_.push_back((fs::path(options_.root) / "profiles").string());
-    impl_->moduleRoots.push_back((fs::path(options_.root) / "scenarios").string());
+    const fs::path scen = fs::canonical(fs::path(options_.root) / "scenarios", ec);
+    if (!ec) impl_->moduleRoots.push_back(scen.string());
   }
   std::string chunk = "@" + path;
-  if (luaL_loadbufferx(L, text.data(), text.size(), chunk.c_str(), "t") != LUA_OK ||
-      lua_pcall(L, 0, 0, 0) != LUA_OK) {
-    std::string msg = lua_tostring(L, -1) ? lua_tostring(L, -1) : "unknown Lua error";
+  lua_pushcfunction(L, &Impl::messageHandler);
+  int status = luaL_loadbufferx(L, text_.data(), text_.size(), chunk.c_str(), "t");
+  if (status != LUA_OK && status != LUA_ERRMEM && lua_type(L, -1) == LUA_TSTRING &&
+      !hasLocation(lua_tostring(L, -1))) {
+    // The parser reports its nesting limit without a line. (The script will not run: the host's
+    // reserve covers the new message.)
+    impl_->hostPhase = true;
+    std::string msg = std::string("cannot parse the scenario: ") + lua_tostring(L, -1);
+    if (msg.find("C stack overflow") != std::string::npos)
+      msg += " (expressions or blocks nested too deeply)";
     lua_pop(L, 1);
-    throw InputError({parseLuaMessage(msg, path)});
+    lua_pushlstring(L, msg.data(), msg.size());
   }
+  if (status == LUA_OK) status = lua_pcall(L, 0, 0, -2);
+  // From here on the host converts the result: give it the reserve beyond the script's budget.
+  impl_->hostPhase = true;
+  if (status != LUA_OK || impl_->dead || impl_->memoryRefused) {
+    InputError e = impl_->errorOf(status);
+    lua_settop(L, 0);
+    throw e;
+  }
+  lua_settop(L, 0);
 
   Diagnostics diags;
-  Converter conv{L, diags, {}};
+  Converter conv{L, impl_, diags, {}};
   Node root;
   root.type = Node::Type::Table;
   root.loc = {path, 0};
   lua_getfield(L, LUA_REGISTRYINDEX, kBlocksKey);
   lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, -1));
-  for (lua_Integer i = 1; i <= n; ++i) {
+  for (lua_Integer i = 1; i <= n && !conv.stopped; ++i) {
     lua_rawgeti(L, -1, i);
     Node block = conv.convert(-1, {path, 0}, "", 0);
     lua_pop(L, 1);
@@ -481,7 +963,7 @@ Node LuaHost::runFile(const std::string& path) {
     // Paths inside the tree are named from the block down, e.g. "track.segments[2]".
     root.setField(kind, std::move(block));
   }
-  lua_pop(L, 1);
+  lua_settop(L, 0);
   diags.throwIfAny();
   return root;
 }
@@ -495,14 +977,19 @@ std::string LuaHost::resolveDataFile(const std::string& name, const SourceLoc& l
     candidates.push_back(fs::path(scenarioDir_) / p);
     if (!options_.root.empty()) candidates.push_back(fs::path(options_.root) / p);
   }
+  // Error-code forms throughout: a name the file system refuses (too long, bad characters) is
+  // the user's input problem, not an exception.
   for (const auto& c : candidates) {
-    if (!fs::exists(c)) continue;
+    std::error_code ec;
+    if (!fs::exists(c, ec)) continue;
     bool allowed = false;
     for (const auto& r : roots_) allowed = allowed || isBelow(c, r);
     if (!allowed)
       throw InputError(loc, "file '" + name + "' is outside the folders a scenario may read (" +
                                 "its own folder, scenarios/, profiles/)");
-    return fs::weakly_canonical(c).string();
+    fs::path real = fs::weakly_canonical(c, ec);
+    if (ec) continue;
+    return real.string();
   }
   throw InputError(
       loc, "file '" + name + "' not found (looked in the scenario's folder and the project root)");

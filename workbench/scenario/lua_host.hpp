@@ -3,9 +3,23 @@
 // This folder is the only code that includes lua.h (architecture.md).
 //
 // Sandbox: base, string, table, math and utf8 libraries only; no io, os, debug, load, dofile or
-// loadfile. `require "a.b"` reads a/b.lua below the scenario's folder or <root>/scenarios, and
-// nothing else. An instruction budget and a memory limit turn endless loops and runaway tables
-// into errors instead of hangs.
+// loadfile. `require "a.b"` accepts plain dotted names only and reads a/b.lua below the scenario's
+// folder or <root>/scenarios; the real path (symlinks resolved) must stay inside those folders.
+//
+// Guard: an instruction budget, a wall-clock budget and a memory budget turn endless loops and
+// runaway tables into errors instead of hangs. They are checked from a count hook that scripts
+// cannot reach (no debug library). Once a budget is exceeded the state is dead: the hook raises
+// the same error on every following instruction, so pcall/xpcall cannot swallow it, and the run
+// fails with it even if the script caught it. Finalizers (__gc) are refused by setmetatable, since
+// Lua runs them with hooks off. The pattern functions of the string library (find, match, gmatch,
+// gsub) run in C where no hook fires: they refuse a call whose worst-case backtracking bound
+//   starts * 2 (n+1)^q * (m + 2 + s (n+1))
+// exceeds kPatternWorkLimit steps (n subject length, m pattern length, q quantifiers * + - ?,
+// s back-references and %b items, starts = 1 if anchored by '^', else n+1). Plain searches and
+// patterns without special characters are not limited.
+//
+// Conversion to the Node tree is bounded too: nesting depth, number of values and string length
+// (limits below), each a file:line error.
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -21,7 +35,19 @@ struct HostOptions {
   std::string root;                                 // project root holding scenarios/ and profiles/
   long long instruction_limit = 2'000'000'000;      // Lua VM instructions for the whole script
   std::size_t memory_limit = std::size_t{1} << 30;  // bytes
+  // Wall-clock budget [s] of everything run in this host (script and PSD functions); 0 takes
+  // RAILBENCH_LUA_SECONDS from the environment, else kDefaultTimeLimit.
+  double time_limit = 0.0;
 };
+
+inline constexpr double kDefaultTimeLimit = 30.0;                     // [s]
+inline constexpr int kMaxNesting = 32;                                // table levels below a block
+inline constexpr std::size_t kMaxValues = 500'000;                    // values in the whole tree
+inline constexpr std::size_t kMaxStringBytes = std::size_t{1} << 20;  // one string value
+inline constexpr std::size_t kMaxScenarioBytes = std::size_t{16} << 20;  // scenario or module file
+inline constexpr std::size_t kMaxModuleName = 200;  // characters of a require name
+inline constexpr int kMaxRequireDepth = 32;         // nested require calls
+inline constexpr double kPatternWorkLimit = 5e8;    // string pattern steps, see above
 
 // Constructor names the host defines. Top-level blocks may appear once per scenario.
 const std::vector<std::string>& topLevelBlocks();
@@ -38,6 +64,9 @@ class LuaHost {
   // are the top-level blocks by name. Throws InputError with file:line on any problem. Lua
   // function values in the tree stay callable while this host lives.
   Node runFile(const std::string& path);
+
+  // The text of the scenario file read by runFile.
+  const std::string& text() const { return text_; }
 
   // Every file loaded by require while running, in load order: (path as shown, full text).
   const std::vector<std::pair<std::string, std::string>>& modules() const;
@@ -56,6 +85,7 @@ class LuaHost {
   HostOptions options_;
   std::vector<std::string> roots_;
   std::string scenarioDir_;
+  std::string text_;
 };
 
 }  // namespace rb::scenario

@@ -5,16 +5,22 @@
 
 namespace rb::scenario {
 
+namespace {
+// Fields are kept sorted by name, so a lookup is a binary search even in a table of many keys.
+template <typename Fields>
+auto findField(Fields& fields, const std::string& name) {
+  auto it = std::lower_bound(fields.begin(), fields.end(), name,
+                             [](const auto& kv, const std::string& n) { return kv.first < n; });
+  return it != fields.end() && it->first == name ? &it->second : nullptr;
+}
+}  // namespace
+
 const Node* Node::field(const std::string& name) const {
-  for (const auto& [k, v] : fields)
-    if (k == name) return &v;
-  return nullptr;
+  return findField(fields, name);
 }
 
 Node* Node::field(const std::string& name) {
-  for (auto& [k, v] : fields)
-    if (k == name) return &v;
-  return nullptr;
+  return findField(fields, name);
 }
 
 Node& Node::setField(const std::string& name, Node value) {

@@ -21,7 +21,7 @@ struct Node {
   bool boolean = false;
   double number = 0.0;
   std::string string;
-  std::vector<std::pair<std::string, Node>> fields;  // named entries, in a stable (sorted) order
+  std::vector<std::pair<std::string, Node>> fields;  // named entries, sorted by name
   std::vector<Node> items;                           // array part, Lua index 1..n
   std::string kind;  // constructor that made this table ("track", "curve", ...); "" if plain
   SourceLoc loc;     // where the constructor was called (plain tables inherit their parent's)

@@ -1,8 +1,8 @@
 #include "workbench/scenario/scenario.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 #include "workbench/core/strings.hpp"
@@ -46,6 +46,7 @@ class Reader {
   const std::string& path() const { return path_; }
   const SourceLoc& loc() const { return node_.loc; }
   void error(const Node& at, const std::string& msg) { d_.add(at.loc, label_ + ": " + msg); }
+  void errorAt(const SourceLoc& loc, const std::string& msg) { d_.add(loc, label_ + ": " + msg); }
 
   const Node* value(const std::string& name) {
     const KeySpec& k = key(name);
@@ -287,8 +288,9 @@ class Reader {
     } else if (k.min_exclusive ? !(x > k.min) : !(x >= k.min)) {
       error(at, k.name + " must be " + (k.min_exclusive ? "> " : ">= ") + fmt(k.min) + u +
                     ", got " + fmt(x));
-    } else if (!(x <= k.max)) {
-      error(at, k.name + " must be <= " + fmt(k.max) + u + ", got " + fmt(x));
+    } else if (k.max_exclusive ? !(x < k.max) : !(x <= k.max)) {
+      error(at, k.name + " must be " + (k.max_exclusive ? "< " : "<= ") + fmt(k.max) + u +
+                    ", got " + fmt(x));
     }
   }
 
@@ -344,6 +346,15 @@ void applyOverride(Node& root, const std::string& assignment, Diagnostics& d) {
   }
   if (!cur.empty()) tokens.push_back(cur);
   if (tokens.size() < 2) return fail("the key must name a block and a key, e.g. solver.step");
+  for (const auto& t : tokens) {
+    const bool index = t.find_first_not_of("0123456789") == std::string::npos;
+    const bool name = !std::isdigit(static_cast<unsigned char>(t[0])) &&
+                      t.find_first_not_of(
+                          "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_"
+                          "0123456789") == std::string::npos;
+    if (!index && !name)
+      return fail("'" + t + "' is neither a key name nor a list position (1, 2, ...)");
+  }
   const auto& tops = topLevelBlocks();
   Node* node = root.field(tokens[0]);
   if (!node) {
@@ -367,7 +378,8 @@ void applyOverride(Node& root, const std::string& assignment, Diagnostics& d) {
     if (node->type != Node::Type::Table)
       return fail("'" + tokens[i - 1] + "' is not a table, cannot set '" + t + "' in it");
     if (isIndex) {
-      std::size_t idx = std::stoul(t);
+      // More digits than any list can have: out of range, without overflowing the conversion.
+      const std::size_t idx = t.size() > 9 ? 0 : std::stoul(t);
       if (idx < 1 || idx > node->items.size())
         return fail("list position " + t + " out of range 1.." +
                     std::to_string(node->items.size()));
@@ -409,7 +421,9 @@ track::PsdTable readPsdInput(const Node& v, const std::string& path, Reader& r, 
       try {
         g = (*v.function)(om);
       } catch (const InputError& e) {
-        r.error(v, path + ": " + e.diagnostics().front().message);
+        // Where the function raised the error, not where the psd{} block starts.
+        for (const auto& diag : e.diagnostics())
+          r.errorAt(diag.loc.line > 0 ? diag.loc : v.loc, path + ": " + diag.message);
         return {};
       }
       if (!std::isfinite(g) || g < 0) {
@@ -704,17 +718,12 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   ScenarioSpec spec;
   spec.file = path;
   spec.overrides = options.overrides;
-  {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    spec.text = ss.str();
-  }
   HostOptions ho;
   ho.root = options.root;
   ho.instruction_limit = options.instruction_limit;
   LuaHost host(ho);
   Node root = host.runFile(path);
+  spec.text = host.text();  // the bytes that ran, read once (never reopened: it may have changed)
   spec.modules = host.modules();
   Diagnostics d;
   for (const auto& o : options.overrides) applyOverride(root, o, d);
@@ -744,6 +753,13 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
     buildSolver(*s, spec.solver, d);
   }
   if (const Node* r = root.field("run")) buildRun(*r, spec.run, d);
+  // Blocks that a scenario would otherwise silently ignore.
+  if (const Node* st = root.field("study"))
+    d.add(st->loc,
+          "study{} belongs in a study file of its own, run with `workbench study FILE`; a "
+          "scenario cannot hold one");
+  if (const Node* s = root.field("solver"); s && !spec.has_vehicle)
+    d.add(s->loc, "solver{} has no effect without a vehicle{} block (nothing is integrated)");
   d.throwIfAny();
   return spec;
 }

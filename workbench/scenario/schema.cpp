@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "workbench/integrators/registry.hpp"
+#include "workbench/track/spec.hpp"
 
 namespace rb::scenario {
 namespace {
@@ -24,6 +25,13 @@ KeySpec num(std::string name, std::string unit, double def, std::string help, do
   k.min = min;
   k.max = max;
   k.min_exclusive = minExclusive;
+  return k;
+}
+
+// (min, max): both ends excluded.
+KeySpec openRange(KeySpec k) {
+  k.min_exclusive = true;
+  k.max_exclusive = true;
   return k;
 }
 
@@ -164,7 +172,7 @@ std::vector<BlockSpec> build() {
                         "named PSD (FRA values UNVERIFIED, see docs) or \"user\"")),
         integer("seed", 1, "random seed of the phases (recorded in the output)", 0,
                 9.007199254740992e15),
-        wl, integer("components", 2000, "cosines per channel", 1, 1e6),
+        wl, integer("components", 2000, "cosines per channel", 1, track::kMaxPsdComponents),
         num("step", "m", 0.1, "spline sampling step (paper: 0.1 m)", 0, kInf, true),
         num("scale", "-", 1, "amplitude factor on every channel", 0, 100), channels,
         boolean("randomize_frequencies", true,
@@ -346,7 +354,7 @@ std::vector<BlockSpec> build() {
             "fixed step (rk4, abm); for adaptive methods the initial step, automatic "
             "when not given",
             0, 1.0),
-        num("rtol", "-", 1e-6, "relative tolerance (dopri5, bdf, ida)", 0, 1, true),
+        openRange(num("rtol", "-", 1e-6, "relative tolerance (dopri5, bdf, ida)", 0, 1, true)),
         num("atol", "-", 1e-6, "absolute tolerance in state units (dopri5, bdf, ida)", 0, kInf,
             true),
         num("max_step", "s", 0, "largest step, 0 = unlimited (dopri5, bdf, ida)", 0),
@@ -451,7 +459,7 @@ std::string referenceText() {
       if (k.type == ValueType::Number || k.type == ValueType::Integer) {
         if (k.min > -kInf || k.max < kInf) {
           os << ", range " << (k.min_exclusive ? "(" : "[") << k.min << ", " << k.max
-             << (k.max < kInf ? "]" : ")");
+             << (k.max < kInf && !k.max_exclusive ? "]" : ")");
         }
       }
       os << "\n      " << k.help << "\n";

@@ -33,6 +33,7 @@ struct KeySpec {
   double min = -std::numeric_limits<double>::infinity();
   double max = std::numeric_limits<double>::infinity();
   bool min_exclusive = false;  // min < value rather than min <= value
+  bool max_exclusive = false;  // value < max rather than value <= max
   bool required = false;
   std::vector<std::string> choices;  // Choice, StringList
   std::vector<std::string> kinds;    // constructors allowed for Block, BlockList

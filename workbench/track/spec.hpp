@@ -61,6 +61,10 @@ struct PsdTable {
   std::vector<double> value;  // [m^2/(rad/m)], >= 0
 };
 
+// Most cosines per channel a PSD synthesis may use (the track validator and the scenario schema
+// both take this bound).
+inline constexpr int kMaxPsdComponents = 100000;
+
 struct IrregularitySpec {
   IrregularitySource source = IrregularitySource::None;
   // Psd: named spectrum "ore_b176_low", "ore_b176_high", "fra_class_1" .. "fra_class_6", or "user".
@@ -71,7 +75,7 @@ struct IrregularitySpec {
   std::uint64_t seed = 1;        // random phases; recorded in the output
   double wavelength_min = 3.0;   // [m] synthesis band (EN 13848 D1+D2: 3..70 m)
   double wavelength_max = 70.0;  // [m]
-  int components = 2000;         // number of cosines per channel
+  int components = 2000;         // number of cosines per channel, 1..kMaxPsdComponents
   double step = 0.1;             // [m] spline sampling step (paper: 0.1 m)
   // (Added by the track module.) Draw each cosine's frequency uniformly inside its band of width
   // dOmega (true), or put it at the band centre (false: the realisation then repeats every

@@ -21,7 +21,7 @@ constexpr double kMinRadius = 10.0;            // [m]
 constexpr double kMaxCantPerBase = 0.2 / 1.5;  // [-] 0.2 m on a 1.5 m base
 constexpr double kMaxGradient = 0.1;           // [-]
 constexpr double kMaxInclination = 0.1;        // [rad]
-constexpr int kMaxComponents = 100000;
+constexpr int kMaxComponents = kMaxPsdComponents;
 constexpr double kJumpTol = 1e-9;  // [m], [-], [1/m] tolerance of the continuity checks
 
 const char* kindName(SegmentKind k) {

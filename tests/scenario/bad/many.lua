@@ -8,3 +8,4 @@ track {
 }
 solver { method = "rk5" }
 run { distance = -1 }
+vehicle (require "vehicles.manchester_wagon1" { speed = 10 })

@@ -18,3 +18,4 @@ track {
 }
 solver { method = "bdf", rtol = 1e-5, atol = 1e-7, max_step = 1e-3 }
 run { distance = 300, output = { every = 0.005 } }
+vehicle (require "vehicles.two_body" { speed = 10 })

@@ -1,0 +1,4 @@
+-- hostile: args="check bin.lua"
+-- hostile: expect="bin.lua:"
+-- hostile: expect="binary chunk"
+-- Precompiled chunks are refused (text only).

@@ -1,0 +1,3 @@
+-- a module that fails
+local x = 1
+error({})

@@ -1,0 +1,3 @@
+-- hostile: expect="module names are names separated by dots"
+-- Path separators.
+require "../../../etc/passwd"

@@ -1,0 +1,1 @@
+return { tangent { length = 100 } }

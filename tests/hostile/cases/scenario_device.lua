@@ -1,0 +1,5 @@
+-- hostile: symlink=zero.lua:/dev/zero
+-- hostile: args="run zero.lua --out z.h5"
+-- hostile: expect="zero.lua: cannot open scenario file: not a regular file (a device)"
+-- hostile: timeout=30
+-- The scenario is a device that never ends.

@@ -1,0 +1,5 @@
+-- hostile: fifo=pipe.lua
+-- hostile: args="check pipe.lua"
+-- hostile: expect="pipe.lua: cannot open scenario file: not a regular file (a FIFO)"
+-- hostile: timeout=30
+-- The scenario itself is a FIFO.

@@ -1,0 +1,3 @@
+-- hostile: args="check sub.lua"
+-- hostile: expect="sub.lua: cannot open scenario file: not a regular file (a folder)"
+-- The scenario is a folder.

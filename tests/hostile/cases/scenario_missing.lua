@@ -1,0 +1,3 @@
+-- hostile: args="check nothere.lua"
+-- hostile: expect="nothere.lua: cannot open scenario file: no such file"
+-- No such file.
