@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "coupling_refinement.hpp"
 #include "dyn_fixtures.hpp"
 
 namespace rbtest {
@@ -135,23 +134,6 @@ TEST(Long, Case1LaggedAgainstConsistent) {
 // first 10 s (tangent, transition and the leading wheelset's two-point contact from t ~ 7.5 s), RK4
 // at 0.25, 0.125 and 0.0625 ms. Measured: lagged max |dy| 0.036 mm (0.25 -> 0.125 ms) and
 // 0.045 mm (0.125 -> 0.0625 ms): no convergence; consistent 0.017 and 0.0043 mm (4x per halving).
-TEST(Long, Case3CouplingStepHalving) {
-  const std::string f = "scenarios/validation/case3_kec.lua";
-  const std::vector<double> steps = {2.5e-4, 1.25e-4, 6.25e-5};
-  const Refinement con = refine(f, {}, "consistent", steps, 10.0);
-  const Refinement lag = refine(f, {}, "lagged", steps, 10.0);
-  writeRefinementCsv("coupling_case3",
-                     "RK4 step halving, " + f +
-                         ", t = 0 .. 10 s, max |dy| of ws1..ws4 (test_dynamics_long "
-                         "Long.Case3CouplingStepHalving)",
-                     {con, lag});
-  // Consistent: the difference at least halves per halving (measured 4x); lagged: it does not
-  // (measured 1.3x larger at the finer step), and it is several times the consistent one.
-  EXPECT_LT(con.runs[1].diff_to_half, 0.5 * con.runs[0].diff_to_half);
-  EXPECT_GT(lag.runs[1].diff_to_half, 0.5 * lag.runs[0].diff_to_half);
-  EXPECT_GT(lag.runs[1].diff_to_half, 3.0 * con.runs[1].diff_to_half);
-}
-
 TEST(Long, Case1PaperStepIsUnstable) {
   // ABM at the paper's 1 ms: beyond the stability limit of the spin creep mode (~ -4700 1/s at
   // 10 m/s); the run stays bounded because the creep forces saturate, but it is wrong.

@@ -55,7 +55,10 @@ RUNS = {
     "nogauge": ("tests/plots/track_no_gauge.lua", [], 0),
     "plain": ("scenarios/tracks/manchester_r500.lua", [], 0),
     "kec": ("tests/plots/contact_short.lua", [], 0),
-    "lut": ("tests/plots/contact_short.lua", ["contact.method=lut"], 0),
+    # At the scenario's 16 m/s, started with centred wheelsets inside the R = 150 m curve, the LUT
+    # tread constraint force of ws1's outer wheel falls below zero within 50 ms (wheel lift), which
+    # stops the run; at 8 m/s the LUT run stays valid (it need not reach the flange here).
+    "lut": ("tests/plots/contact_short.lua", ["contact.method=lut", "vehicle.speed=8"], 0),
     "guided": ("scenarios/vehicle/manchester_guided_r500.lua",
                ["vehicle.start=120", "run.duration=0.5"], 0),
     "nocreep": ("tests/plots/contact_short.lua", ["contact.creep=none", "run.duration=0.05"], 0),

@@ -119,7 +119,7 @@ def coupling_only():
                  cpu_s="0.62", rhs_evals="41600", us_per_rhs="14.9", iterations_per_solve="3.92"),
             dict(coupling="lagged", step_ms="0.0625", diff_to_half_step_mm="", cpu_s="0.70",
                  rhs_evals="83200", us_per_rhs="8.4", iterations_per_solve="0")]
-    write_csv(os.path.join(build, "dynamics", "coupling_flange_curve.csv"), rows)
+    write_csv(os.path.join(build, "dynamics", "coupling_case3.csv"), rows)
     rc = ud.main(["-", "--build", build, "--docs", docs, "--only", "contact_dynamics"])
     text = open(md).read()
     block = text.split("generated: coupling_convergence")[1].split("end: coupling_convergence")[0]
