@@ -1,0 +1,1 @@
+while true do pcall(function() while trud do end end) end
