@@ -763,6 +763,9 @@ def main(argv=None) -> int:
     ap.add_argument("--only", choices=("contact_dynamics",),
                     help="regenerate only the blocks of docs/NAME.md (inputs from --build, no "
                          "studies needed)")
+    ap.add_argument("--pages", nargs="+", metavar="PAGE",
+                    help="rewrite only these pages (e.g. validation.md hard_cases.md) after a "
+                         "partial ./wb studies run; the other pages keep their blocks")
     a = ap.parse_args(argv)
     coupling = coupling_block(a.build)
     if a.only == "contact_dynamics":
@@ -779,6 +782,13 @@ def main(argv=None) -> int:
         print(f"updated {path}")
         return 0
     blocks = generate(a.outdir, a.build)
+    if a.pages:
+        unknown = [p for p in a.pages if p not in blocks]
+        if unknown:
+            print(f"update_docs: no generated page {unknown} (pages: {sorted(blocks)})",
+                  file=sys.stderr)
+            return 1
+        blocks = {md: items for md, items in blocks.items() if md in a.pages}
     for md, items in blocks.items():
         path = os.path.join(a.docs, md)
         with open(path) as f:

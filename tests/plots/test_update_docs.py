@@ -93,6 +93,19 @@ def main():
     ud.main([out, "--build", os.path.join(TMP, "nobuild"), "--docs", docs])
     check(open(os.path.join(docs, "studies.md")).read() == s, "a second run changes nothing")
     check(ud.main([out, "--docs", docs]) == 0, "update_docs returns 0 (second run)")
+    # --pages: a partial regeneration leaves the other pages as they are.
+    with open(os.path.join(docs, "studies.md")) as f:
+        before = f.read()
+    with open(os.path.join(docs, "studies.md"), "w") as f:
+        f.write(before.replace("(49x)", "(KEPT)"))
+    check(ud.main([out, "--build", os.path.join(TMP, "nobuild"), "--docs", docs, "--pages",
+                   "performance.md"]) == 0, "--pages performance.md returns 0")
+    check("(KEPT)" in open(os.path.join(docs, "studies.md")).read(),
+          "--pages leaves the pages not named alone")
+    check(ud.main([out, "--docs", docs, "--pages", "nosuch.md"]) == 1,
+          "--pages with an unknown page is an error")
+    with open(os.path.join(docs, "studies.md"), "w") as f:
+        f.write(before)
     stamps(docs, out)
     git_state()
     repository_docs()
