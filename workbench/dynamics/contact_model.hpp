@@ -50,7 +50,7 @@ class HertzShapeTable {
 struct ContactModel {
   ContactMethod method = ContactMethod::Kec;
   CreepModel creep = CreepModel::Polach;
-  NormalForceCoupling coupling = NormalForceCoupling::Lagged;
+  NormalForceCoupling coupling = NormalForceCoupling::Consistent;  // as ContactSpec
   WheelsetSpin spin = WheelsetSpin::Free;  // spin a state, or theta_dot = V(t) / centredRadius()
   double min_normal_force = 0.0;  // [N] below it a wheel has lifted: the rhs refuses the state
 
