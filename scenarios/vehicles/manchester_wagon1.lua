@@ -10,7 +10,8 @@
 --                            fewer states (the damper forces)
 -- (scenarios/studies/effects.lua measures what each of these costs.)
 -- Sources: [T2] paper Table 2 (masses, inertias); [T4] paper Table 4 (suspension);
--- [MB] ../shared/reference/manchester_benchmark_vehicle1.md (geometry, Source A);
+-- [MB] Manchester benchmark vehicle 1 (Iwnicki, Vehicle System Dynamics 30, 1998), geometry as
+-- recovered from a public parameter file of it (Source A of the project's reference notes);
 -- ASSUMPTION marks values that are not published. docs/vehicle.md explains the element count.
 --
 -- Coordinates: body x is the CoM position along the track relative to the vehicle reference point

@@ -6,8 +6,8 @@
 -- applied as a constant vertical load on each axle box.
 -- Usage:  local ws = require "vehicles.single_wheelset"
 --         vehicle (ws { speed = 10 })
--- Sources: [T2] paper Table 2; [T4] paper Table 4; [MB] ../shared/reference/
--- manchester_benchmark_vehicle1.md.
+-- Sources: [T2] paper Table 2; [T4] paper Table 4; [MB] Manchester benchmark vehicle 1 (Iwnicki,
+-- Vehicle System Dynamics 30, 1998).
 return function(opts)
   opts = opts or {}
   local r0 = 0.46       -- [MB] nominal wheel radius

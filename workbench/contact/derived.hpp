@@ -1,5 +1,5 @@
 #pragma once
-// Derived wheelset geometry from the LUT (issue 4, item 4): rolling radius difference and contact
+// Derived wheelset geometry from the LUT: rolling radius difference and contact
 // angle difference as plain arrays, the input of the EN 15302 equivalent conicity
 // (rb::profiles::RollingRadiusDifference, workbench/profiles/conicity.hpp).
 //

@@ -20,7 +20,7 @@
 // Hertz theory needs A > 0 and B > 0 (isHertzian()).
 //
 // Ellipse (Hertz theory, e.g. Johnson, Contact Mechanics, 1985, sections 3.5 and 4.2; the same
-// equations as CONTACT's hzcalc3d, see ../shared/reference/polach_creep_force_and_hertz.md s.4).
+// equations as CONTACT's hzcalc3d; their m, n table: tests/data/creep/derived_hertz_m_n_table.txt).
 // With E* = E / (2 (1 - nu^2)) (equal materials), major semi-axis a_M along the direction of the
 // SMALLER relative curvature, minor semi-axis b_m, g = b_m / a_M <= 1, e^2 = 1 - g^2 and K = K(e),
 // E = E(e) the complete elliptic integrals:

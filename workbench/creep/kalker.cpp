@@ -10,7 +10,7 @@ namespace rb::creep {
 
 namespace {
 
-// Kalker (1990) Table E.3 via ../shared/reference/kalker_creep_coefficients_tableE3.txt.
+// Kalker (1990) Table E.3 via tests/data/creep/kalker_creep_coefficients_tableE3.txt (copied with its source).
 // C23(a<b, g = 0.8, nu = 0.25) = 1.25 as in CONTACT m_hertz.f90 (usetab_table.f90 has the
 // typo 1.15). 'a<b' rows, g = a/b = 0.1 ... 1.0; columns C11(nu = 0, .25, .5), C22(...), C23(...),
 // C33(...) (C33 UNVERIFIED).

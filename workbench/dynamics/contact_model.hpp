@@ -1,5 +1,5 @@
 #pragma once
-// The compiled wheel/rail contact model (issue 6, docs/contact_dynamics.md): ProfilesSpec +
+// The compiled wheel/rail contact model (docs/contact_dynamics.md): ProfilesSpec +
 // ContactSpec + the vehicle and track -> ContactModel (immutable, validated). It holds the four
 // profiles and their positioning (paper Table 1, Eq. 5, 10), the contact geometry configuration
 // and ONLY the table the chosen method needs (KEC table for "kec", LUT for "lut"), shared through

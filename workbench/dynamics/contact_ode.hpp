@@ -1,5 +1,5 @@
 #pragma once
-// Vehicle dynamics with wheel/rail contact (issue 6, paper sections 2.3-2.5 and 3; the
+// Vehicle dynamics with wheel/rail contact (paper sections 2.3-2.5 and 3; the
 // formulation is derived in docs/contact_dynamics.md).
 //
 // Imposed motion: every body's arc length s_i = start + x_i + V0 t + a t^2 / 2 (VehicleModel::

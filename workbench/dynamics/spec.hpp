@@ -1,5 +1,5 @@
 #pragma once
-// Plain input structs for wheel/rail profiles and the contact model (issue 4 and 6), built by
+// Plain input structs for wheel/rail profiles and the contact model built by
 // workbench/scenario from the profiles{} and contact{} blocks. SI units.
 #include <string>
 

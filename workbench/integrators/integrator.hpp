@@ -1,5 +1,5 @@
 #pragma once
-// Integrator interface and the driver integrate() (issue 3, paper section 4). One Integrator per
+// Integrator interface and the driver integrate() (paper section 4). One Integrator per
 // method (made by makeIntegrator() in registry.hpp from a SolverSpec); integrate() runs it over a
 // list of output times and turns every failure into a RunResult instead of a crash.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// The one narrow interface between models and integrators (issue 3). Integrators see vectors only.
+// The one narrow interface between models and integrators. Integrators see vectors only.
 // Return-code contract of the right-hand side follows SUNDIALS: 0 ok, > 0 recoverable (the step is
 // retried smaller where the method allows: a contact point outside its table, a Newton iteration
 // that did not converge), < 0 fatal.
@@ -26,7 +26,7 @@ class OdeSystem {
   virtual std::string lastError() const { return {}; }
 };
 
-// Index-reduced DAE F(t, y, yp) = 0 for IDA (embedding vs. DAE comparisons, issue 3/6).
+// Index-reduced DAE F(t, y, yp) = 0 for IDA (embedding vs. DAE comparisons).
 class DaeSystem {
  public:
   virtual ~DaeSystem() = default;

@@ -249,7 +249,7 @@ std::vector<BlockSpec> build() {
             "physical",
             0, 1e7)}});
 
-  // Vehicle (issue 5): bodies in track-frame coordinates and suspension elements (Appendix A).
+  // Vehicle: bodies in track-frame coordinates and suspension elements (Appendix A).
   s.push_back(
       {"vehicle",
        "A vehicle: rigid bodies with coordinates relative to their own track frames (paper Eq. "
@@ -320,7 +320,7 @@ std::vector<BlockSpec> build() {
 
   s.push_back(
       {"study",
-       "A study (issue 7): a matrix of variations over a base scenario. `workbench study FILE` "
+       "A study: a matrix of variations over a base scenario. `workbench study FILE` "
        "runs every case (in parallel, each its own HDF5), skips cases already finished with "
        "the same inputs, and writes a summary (CSV and HDF5). Keys of matrix and cases are --set "
        "paths.",

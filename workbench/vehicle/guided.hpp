@@ -1,6 +1,6 @@
 #pragma once
-// OdeSystem adapter for issue 5: wheelsets follow the track kinematically, all other bodies are
-// free in (y, z, phi, theta, psi), series damper forces are states (docs/vehicle.md).
+// OdeSystem adapter of the guided vehicle: wheelsets follow the track kinematically, all other
+// bodies are free in (y, z, phi, theta, psi), series damper forces are states (docs/vehicle.md).
 //
 // Imposed motion (holonomic, rheonomic constraints):
 // - every body: s_i(t) = start + x_i + V0 t + a t^2 / 2 (speed V(t) = V0 + a t, VehicleModel::
