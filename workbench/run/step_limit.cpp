@@ -1,0 +1,122 @@
+#include "workbench/run/step_limit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+namespace rb::run {
+namespace {
+
+double rk4Amplification(std::complex<double> z) {
+  // R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24 (Horner).
+  return std::abs(1.0 + z * (1.0 + z * (0.5 + z * (1.0 / 6.0 + z / 24.0))));
+}
+
+// ABM PECE on y' = lambda y (fixed_step.cpp): with f = lambda y and z = h lambda,
+//   y* = y_n + z/24 (55 y_n - 59 y_n-1 + 37 y_n-2 - 9 y_n-3)
+//   y_n+1 = y_n + z/24 (9 y* + 19 y_n - 5 y_n-1 + y_n-2),
+// so y_n = zeta^n solves zeta^4 - c3 zeta^3 - c2 zeta^2 - c1 zeta - c0 = 0 with the coefficients
+// below; the step is stable when every root has |zeta| <= 1.
+double abmAmplification(std::complex<double> z) {
+  const std::complex<double> a = z / 24.0, p = 9.0 * a * a;
+  const std::complex<double> c3 = 1.0 + 28.0 * a + 55.0 * p;
+  const std::complex<double> c2 = -5.0 * a - 59.0 * p;
+  const std::complex<double> c1 = a + 37.0 * p;
+  const std::complex<double> c0 = -9.0 * p;
+  Eigen::Matrix4cd companion = Eigen::Matrix4cd::Zero();
+  companion(0, 0) = c3;
+  companion(0, 1) = c2;
+  companion(0, 2) = c1;
+  companion(0, 3) = c0;
+  companion(1, 0) = companion(2, 1) = companion(3, 2) = 1.0;
+  const Eigen::Vector4cd roots = companion.eigenvalues();
+  return roots.cwiseAbs().maxCoeff();
+}
+
+}  // namespace
+
+double amplification(FixedStepMethod method, std::complex<double> z) {
+  return method == FixedStepMethod::Rk4 ? rk4Amplification(z) : abmAmplification(z);
+}
+
+double stableStep(FixedStepMethod method, std::complex<double> lambda) {
+  const double mod = std::abs(lambda);
+  if (!(mod > 0.0) || lambda.real() >= 0.0) return std::numeric_limits<double>::infinity();
+  const std::complex<double> dir = lambda / mod;
+  const auto unstable = [&](double rho) {
+    return amplification(method, rho * dir) > 1.0 + kGrowthTolerance;
+  };
+  // March out along the ray (both regions are bounded by |z| < 3), then bisect the first exit.
+  constexpr double kRhoStep = 0.01, kRhoMax = 4.0;
+  double lo = 0.0;
+  for (double rho = kRhoStep; rho <= kRhoMax; rho += kRhoStep) {
+    if (unstable(rho)) {
+      double hi = rho;
+      for (int i = 0; i < 50; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (unstable(mid) ? hi : lo) = mid;
+      }
+      return lo / mod;
+    }
+    lo = rho;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+StepLimit fixedStepLimit(integ::OdeSystem& ode, double t0, const Eigen::VectorXd& y0,
+                         FixedStepMethod method) {
+  StepLimit out;
+  const int n = ode.size();
+  Eigen::MatrixXd jac(n, n);
+  Eigen::VectorXd y = y0, fp(n), fm(n);
+  // Central differences with a relative increment of eps^(1/3) (the optimum for a central
+  // quotient), at least 1e-8 in the component's unit (m, rad, m/s, N).
+  const double rel = std::cbrt(std::numeric_limits<double>::epsilon());
+  for (int j = 0; j < n; ++j) {
+    const double dj = rel * std::max(std::abs(y0(j)), 1e-8 / rel);
+    y(j) = y0(j) + dj;
+    int rc = ode.rhs(t0, y.data(), fp.data());
+    y(j) = y0(j) - dj;
+    if (rc == 0) rc = ode.rhs(t0, y.data(), fm.data());
+    y(j) = y0(j);
+    out.evaluations += 2;
+    if (rc != 0) {
+      out.why_not = ode.lastError();
+      return out;
+    }
+    jac.col(j) = (fp - fm) / (2.0 * dj);
+  }
+  if (!jac.allFinite()) {
+    out.why_not = "non-finite Jacobian";
+    return out;
+  }
+  Eigen::EigenSolver<Eigen::MatrixXd> eig(jac, true);
+  if (eig.info() != Eigen::Success) {
+    out.why_not = "eigenvalues did not converge";
+    return out;
+  }
+  out.computed = true;
+  out.h_max = std::numeric_limits<double>::infinity();
+  int limiting = -1;
+  for (int k = 0; k < n; ++k) {
+    const std::complex<double> lam = eig.eigenvalues()(k);
+    if (lam.real() < 0.0) out.stiffest = std::max(out.stiffest, std::abs(lam));
+    const double h = stableStep(method, lam);
+    if (h < out.h_max) {
+      out.h_max = h;
+      out.lambda = lam;
+      limiting = k;
+    }
+  }
+  if (limiting >= 0) {
+    Eigen::Index i = 0;
+    eig.eigenvectors().col(limiting).cwiseAbs().maxCoeff(&i);
+    out.mode = ode.componentName(static_cast<int>(i));
+  }
+  return out;
+}
+
+}  // namespace rb::run
