@@ -75,9 +75,8 @@ def parser(command: str, description: str) -> argparse.ArgumentParser:
 
 def add_figure_options(ap: argparse.ArgumentParser, input_help: str, name: str = "input") -> None:
     """The input file, --outdir and --dpi of the commands that draw one file's figures."""
-    ap.add_argument(name, help=input_help)
-    ap.add_argument("--outdir", default=None,
-                    help=f"output folder (default: the folder of {name.upper()})")
+    ap.add_argument(name, metavar="FILE", help=input_help)
+    ap.add_argument("--outdir", default=None, help="output folder (default: the folder of FILE)")
     ap.add_argument("--dpi", type=int, default=DPI, help=f"resolution (default {DPI})")
 
 
@@ -100,3 +99,26 @@ def guarded(command: str, action: Callable[[], int], errors: tuple) -> int:
         return error(command, str(e))
     except OSError as e:
         return error(command, f"{e.strerror or e}: {e.filename or ''}".rstrip(": "))
+
+
+def figure_command(argv, command: str, description: str, input_help: str, load: Callable,
+                   make: Callable, summary: Callable, errors: tuple) -> int:
+    """The commands that draw the figures of one file: load it, write its figures, print the
+    summary line (if any) and the written paths."""
+    ap = parser(command, description)
+    add_figure_options(ap, input_help, "input")
+    args = ap.parse_args(argv)
+
+    def draw() -> int:
+        item = load(args.input)
+        paths = make(item, outdir=args.outdir, dpi=args.dpi)
+        line = summary(item)
+        if line:
+            print(line)
+        for p in paths:
+            print(p)
+        if not paths:
+            note(command, "nothing to plot in this file")
+        return 0
+
+    return guarded(command, draw, errors)

@@ -299,23 +299,23 @@ def effects_block(outdir: str) -> str:
         if strip(r["label"]) not in labels:
             labels.append(strip(r["label"]))
 
+    def cell(source, key, text, method, lab):
+        """The variant's value of `key` for one contact method: "failed" when empty, "–" when
+        the variant is not in `source`."""
+        r = next((r for r in source if r["method"] == method and strip(r["label"]) == lab), None)
+        if r is None:
+            return "–"
+        return text(r) if r[key] else "failed"
+
     def time_cell(method, lab):
-        for r in rows:
-            if r["method"] == method and strip(r["label"]) == lab:
-                if not r["us_per_eval"]:
-                    return "failed"
-                return (f"{num(r['us_per_eval']):.2f} µs ({num(r['relative_to_baseline']):.2f}, "
-                        f"±{r['spread_percent'] or '?'} %)")
-        return "–"
+        return cell(rows, "us_per_eval", lambda r: (
+            f"{num(r['us_per_eval']):.2f} µs ({num(r['relative_to_baseline']):.2f}, "
+            f"±{r['spread_percent'] or '?'} %)"), method, lab)
 
     def instr_cell(method, lab):
-        for r in instr:
-            if r["method"] == method and strip(r["label"]) == lab:
-                if not r["instructions_per_eval"]:
-                    return "failed"
-                return (f"{num(r['instructions_per_eval']) / 1e3:.1f}k "
-                        f"({num(r['relative_to_baseline']):.3f})")
-        return "–"
+        return cell(instr, "instructions_per_eval", lambda r: (
+            f"{num(r['instructions_per_eval']) / 1e3:.1f}k "
+            f"({num(r['relative_to_baseline']):.3f})"), method, lab)
 
     head = ["variant", "KEC instructions / eval (rel.)", "LUT instructions / eval (rel.)",
             "KEC CPU / eval (rel., spread)", "LUT CPU / eval (rel., spread)"]
@@ -354,12 +354,25 @@ def speed_block(outdir: str) -> str:
                   "Jacobian evals", "steps", "µs / eval", "target", ""], body)
 
 
-def bench_block(outdir: str) -> str:
-    path = os.path.join(outdir, "bench_wagon.json")
+def _bench_json(outdir: str, name: str) -> Optional[dict]:
+    """OUT_DIR/NAME.json, the Google Benchmark output (None when missing)."""
+    path = os.path.join(outdir, name + ".json")
     if not os.path.exists(path):
-        return missing("out/studies/bench_wagon.json")
+        return None
     with open(path) as f:
-        data = json.load(f)
+        return json.load(f)
+
+
+def _bench_machine(data: dict) -> str:
+    ctx = data.get("context", {})
+    return (f"Google Benchmark on {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs at "
+            f"{ctx.get('mhz_per_cpu', '?')} MHz, {ctx.get('date', '')}")
+
+
+def bench_block(outdir: str) -> str:
+    data = _bench_json(outdir, "bench_wagon")
+    if data is None:
+        return missing("out/studies/bench_wagon.json")
     body = []
     for b in data.get("benchmarks", []):
         if b.get("run_type") == "aggregate" and b.get("aggregate_name") not in ("median", "cv"):
@@ -373,19 +386,15 @@ def bench_block(outdir: str) -> str:
             unit = b.get("time_unit", "ns")
             scale = {"ns": 1e-3, "us": 1.0, "ms": 1e3, "s": 1e6}[unit]
             body.append([name, f"{b['cpu_time'] * scale:.3f}"])
-    ctx = data.get("context", {})
-    return (f"Google Benchmark on {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs at "
-            f"{ctx.get('mhz_per_cpu', '?')} MHz, {ctx.get('date', '')}:\n\n" +
+    return (_bench_machine(data) + ":\n\n" +
             table(["benchmark (median of the repetitions)", "CPU µs per evaluation"], body))
 
 
 def bench_integrators_block(outdir: str) -> str:
     """docs/integrators.md: bench/bench_integrators (the integrators' overhead per step)."""
-    path = os.path.join(outdir, "bench_integrators.json")
-    if not os.path.exists(path):
+    data = _bench_json(outdir, "bench_integrators")
+    if data is None:
         return missing("out/studies/bench_integrators.json")
-    with open(path) as f:
-        data = json.load(f)
     body = []
     for b in data.get("benchmarks", []):
         if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
@@ -398,10 +407,7 @@ def bench_integrators_block(outdir: str) -> str:
             unit = b.get("time_unit", "ns")
             scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[unit]
             body.append([name, "–", "–", "–", f"rhs {b['cpu_time'] * scale:.0f} ns"])
-    ctx = data.get("context", {})
-    return (f"Google Benchmark on {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs at "
-            f"{ctx.get('mhz_per_cpu', '?')} MHz, {ctx.get('date', '')} (median of the "
-            f"repetitions):\n\n" +
+    return (_bench_machine(data) + " (median of the repetitions):\n\n" +
             table(["benchmark", "ns / step", "rhs / step", "overhead ns / step",
                    "steps (or rhs cost)"], body))
 

@@ -8,7 +8,7 @@ import numpy as np
 from .style import RUN_COLORS, report_style
 from .result import Result, body_title
 from .track_figs import _segment_legend_handles, _shade_segments
-from .layout import _bottom_legend, _fail_handle, _fail_marker, _grid, _min_span, _pair, _run_info, _set_distance_range, _share_rows
+from .layout import _bottom_legend, _label_cell, _x_range, _fail_handle, _fail_marker, _grid, _min_span, _pair, _run_info, _set_distance_range, _share_rows
 
 
 # Rows of the acceleration figure: dataset, label, minimum y span [m/s^2].
@@ -82,13 +82,9 @@ def fig_accelerations(result: Result):
                         ax.legend([Line2D([], [], ls="none")], [f"RMS {rms:.3g} m/s²"],
                                   loc="best", handlelength=0, handletextpad=0, fontsize=6.5,
                                   borderpad=0.25, framealpha=0.85)
-                    fin = x[np.isfinite(x)]
-                    if fin.size:
-                        xmin, xmax = min(xmin, fin.min()), max(xmax, fin.max())
-                if q == 0:
-                    ax.set_title(body_title(n), fontsize=8.5)
-                if q == len(rows) - 1:
-                    ax.set_xlabel("distance s [m]" if use_s else "time t [s]")
+                    xmin, xmax = _x_range(x, xmin, xmax)
+                _label_cell(ax, q, len(rows), body_title(n),
+                            "distance s [m]" if use_s else "time t [s]")
             _set_distance_range(col[0], xmin, xmax, tr if use_s else None, result.failed)
         for col in cells:
             for q, r in enumerate(rows):

@@ -1,6 +1,7 @@
 """Reading HDF5 result and tables files: string attributes, unit-checked datasets."""
 from __future__ import annotations
 
+import os
 import sys
 from typing import Dict, Optional
 
@@ -64,3 +65,19 @@ def _read_ds(group, name: str, where: str, units: Optional[str] = None) -> np.nd
             print(f"railbench: warning: {where}/{name} has units '{got}', expected '{units}'",
                   file=sys.stderr)
     return a
+
+
+def open_h5(path: str, error: type, what: str, hint: str = ""):
+    """The HDF5 file at `path`, open for reading; `error` (a ResultFileError class) with a
+    one-line message when it is missing, a directory or not HDF5."""
+    import h5py
+
+    if not os.path.exists(path):
+        raise error(f"no such file: {path}{hint}")
+    if os.path.isdir(path):
+        raise error(f"is a directory, not a {what}: {path}")
+    try:
+        return h5py.File(path, "r")
+    except OSError as e:
+        msg = str(e).splitlines()[0] if str(e) else type(e).__name__
+        raise error(f"not a readable HDF5 file: {path} ({msg})") from None

@@ -215,3 +215,17 @@ def _run_style(k: int) -> Dict[str, object]:
     ls = RUN_STYLES[k % len(RUN_STYLES)]
     dotted = isinstance(ls, tuple) and ls[1][0] < 2
     return dict(color=RUN_COLORS[k % len(RUN_COLORS)], ls=ls, lw=1.3 if dotted else 1.0)
+
+
+def _x_range(x: np.ndarray, xmin: float, xmax: float) -> Tuple[float, float]:
+    """(xmin, xmax) widened to the finite values of x."""
+    fin = x[np.isfinite(x)]
+    return (min(xmin, fin.min()), max(xmax, fin.max())) if fin.size else (xmin, xmax)
+
+
+def _label_cell(ax, q: int, n_rows: int, title: str, xlabel: str):
+    """Body name above the first row of a column, the x label below its last row."""
+    if q == 0:
+        ax.set_title(title, fontsize=8.5)
+    if q == n_rows - 1:
+        ax.set_xlabel(xlabel)

@@ -10,7 +10,7 @@ from typing import Dict, List, Optional, Sequence, Tuple
 import numpy as np
 
 from .style import CHANNELS, KINEMATIC_KINDS
-from .h5 import ResultFileError, _attrs, _read_ds, _str
+from .h5 import ResultFileError, open_h5, _attrs, _read_ds, _str
 
 
 @dataclass
@@ -300,19 +300,8 @@ def _load_dynamics(f, res: Result) -> None:
 
 def load_result(path: str) -> Result:
     """Open and validate a result file. Raises ResultFileError with a one-line message."""
-    import h5py
-
-    if not os.path.exists(path):
-        hint = " (a run still in progress writes '<name>.tmp')" if os.path.exists(path + ".tmp") \
-            else ""
-        raise ResultFileError(f"no such file: {path}{hint}")
-    if os.path.isdir(path):
-        raise ResultFileError(f"is a directory, not a result file: {path}")
-    try:
-        f = h5py.File(path, "r")
-    except OSError as e:
-        msg = str(e).splitlines()[0] if str(e) else type(e).__name__
-        raise ResultFileError(f"not a readable HDF5 file: {path} ({msg})") from None
+    hint = " (a run still in progress writes '<name>.tmp')" if os.path.exists(path + ".tmp") else ""
+    f = open_h5(path, ResultFileError, "result file", hint)
     try:
         with f:
             res = Result(path=path, attrs=_attrs(f), groups=sorted(f.keys()))

@@ -69,7 +69,7 @@ from typing import Dict, List, Optional, Sequence
 
 import numpy as np
 
-from .common import FigureSpec, add_figure_options, guarded, note, parser, write_figures
+from .common import FigureSpec, figure_command, write_figures
 from .h5 import ResultFileError
 from .style import DPI, KINEMATIC_KINDS, plt
 from .result import Result, load_result
@@ -220,20 +220,6 @@ def make_figures(result: Result, outdir: Optional[str] = None, stem: Optional[st
 
 
 def main(argv=None) -> int:
-    ap = parser("run", "Draw report figures from a railbench HDF5 result.")
-    add_figure_options(ap, "result file (.h5) written by railbench", "result")
-    args = ap.parse_args(argv)
-
-    def draw() -> int:
-        res = load_result(args.result)
-        paths = make_figures(res, outdir=args.outdir, dpi=args.dpi)
-        summary = stats_summary(res)
-        if summary:
-            print(summary)
-        for p in paths:
-            print(p)
-        if not paths:
-            note("run", "nothing to plot in this file")
-        return 0
-
-    return guarded("run", draw, (ResultFileError,))
+    return figure_command(argv, "run", "Draw report figures from a railbench HDF5 result.",
+                          "result file (.h5) written by railbench", load_result, make_figures,
+                          stats_summary, (ResultFileError,))

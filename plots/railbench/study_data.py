@@ -59,31 +59,6 @@ def parse_overrides(text: str) -> Dict[str, str]:
     return out
 
 
-def solver_text(ov: Dict[str, str]) -> str:
-    """'rk4 h=0.25ms', 'bdf tol=1e-6 hmax=1ms' from the solver.* overrides ('' if none)."""
-    parts = []
-    if "solver.method" in ov:
-        parts.append(ov["solver.method"])
-    if "solver.step" in ov and _num(ov["solver.step"]) is not None:
-        parts.append(f"h={compact(_num(ov['solver.step']) * 1e3)}ms")
-    r, a = ov.get("solver.rtol"), ov.get("solver.atol")
-    if r is not None and r == a:
-        parts.append(f"tol={compact(_num(r, 0))}")
-    else:
-        if r is not None:
-            parts.append(f"rtol={compact(_num(r, 0))}")
-        if a is not None:
-            parts.append(f"atol={compact(_num(a, 0))}")
-    if "solver.max_step" in ov and _num(ov["solver.max_step"]) is not None:
-        parts.append(f"hmax={compact(_num(ov['solver.max_step']) * 1e3)}ms")
-    for k in sorted(ov):
-        if k.startswith("solver.") and k not in ("solver.method", "solver.step", "solver.rtol",
-                                                 "solver.atol", "solver.max_step",
-                                                 "solver.max_steps"):
-            parts.append(f"{k[7:]}={ov[k]}")
-    return " ".join(parts)
-
-
 @dataclass
 class Case:
     id: str
@@ -100,6 +75,7 @@ class Case:
     cpu_max: float
     counts: Dict[str, float]
     file: str
+    solver: str = ""  # the solver part of the label (summary_cases.csv), "" for the base's solver
     repeats: List[dict] = field(default_factory=list)
     common: frozenset = frozenset()  # (key, value) overrides every case of the study has
     main_base: str = ""  # the base scenario of most cases
@@ -165,7 +141,7 @@ class Case:
 
     @property
     def solver_key(self) -> str:
-        return solver_text(self.overrides) or self.integrator
+        return self.solver or self.integrator
 
     @property
     def model_key(self) -> str:
@@ -224,9 +200,9 @@ def load_study(outdir: str) -> Study:
         per_case.setdefault(r["case"], []).append(r)
     cases = []
     for r in read_csv(sc):
-        if "label" not in r:
-            raise StudyError(f"{sc}: no label column (written by an older workbench; run the "
-                             f"study again to refresh the summary)")
+        if "label" not in r or "solver" not in r:
+            raise StudyError(f"{sc}: no label or solver column (written by an older workbench; "
+                             f"run the study again to refresh the summary)")
         counts = {k: _num(r.get(k), 0.0) for k in (
             "rhs_evals", "rhs_evals_jac", "steps", "rejected_steps", "jacobian_evals",
             "nonlinear_iters", "t_reached", "model_evaluations")}
@@ -246,7 +222,7 @@ def load_study(outdir: str) -> Study:
             message=r.get("message", ""), runs=int(_num(r.get("runs"), 0)),
             runs_ok=int(_num(r.get("runs_ok"), 0)), cpu_median=_num(r["median_cpu_time_s"], 0.0),
             cpu_min=_num(r.get("min_cpu_time_s"), 0.0), cpu_max=_num(r.get("max_cpu_time_s"), 0.0),
-            counts=counts, file=f, repeats=reps))
+            counts=counts, file=f, solver=r["solver"], repeats=reps))
     if len(cases) > 1:
         common = frozenset.intersection(*(frozenset(c.overrides.items()) for c in cases))
         bases = [c.base for c in cases]

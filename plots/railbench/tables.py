@@ -44,7 +44,7 @@ from __future__ import annotations
 
 from typing import Dict, List, Optional
 
-from .common import FigureSpec, add_figure_options, guarded, note, parser, write_figures
+from .common import FigureSpec, figure_command, write_figures
 from .style import DPI
 from .tables_data import Tables, TablesFileError, load_tables
 from .tables_figs import fig_lut_z, fig_profiles_contact
@@ -121,18 +121,6 @@ def summary_line(t: Tables) -> str:
 
 
 def main(argv=None) -> int:
-    ap = parser("tables", "Draw report figures from a railbench tables file.")
-    add_figure_options(ap, "tables file (.h5) written by `workbench tables`", "tables")
-    args = ap.parse_args(argv)
-
-    def draw() -> int:
-        t = load_tables(args.tables)
-        paths = make_figures(t, outdir=args.outdir, dpi=args.dpi)
-        print(summary_line(t))
-        for p in paths:
-            print(p)
-        if not paths:
-            note("tables", "nothing to plot in this file")
-        return 0
-
-    return guarded("tables", draw, (TablesFileError,))
+    return figure_command(argv, "tables", "Draw report figures from a railbench tables file.",
+                          "tables file (.h5) written by `workbench tables`", load_tables,
+                          make_figures, summary_line, (TablesFileError,))

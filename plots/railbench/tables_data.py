@@ -9,7 +9,7 @@ from typing import Dict, List, Optional, Tuple
 
 import numpy as np
 
-from .h5 import ResultFileError, _attrs, _read_ds, _str
+from .h5 import ResultFileError, open_h5, _attrs, _read_ds, _str
 
 
 # y values [m] of the contact figure (paper Fig. 1 uses a "set of discrete values")
@@ -208,17 +208,7 @@ def _read_derived(g) -> Dict[str, np.ndarray]:
 
 def load_tables(path: str) -> Tables:
     """Open and validate a tables file. Raises TablesFileError with a one-line message."""
-    import h5py
-
-    if not os.path.exists(path):
-        raise TablesFileError(f"no such file: {path}")
-    if os.path.isdir(path):
-        raise TablesFileError(f"is a directory, not a tables file: {path}")
-    try:
-        f = h5py.File(path, "r")
-    except OSError as e:
-        msg = str(e).splitlines()[0] if str(e) else type(e).__name__
-        raise TablesFileError(f"not a readable HDF5 file: {path} ({msg})") from None
+    f = open_h5(path, TablesFileError, "tables file")
     try:
         with f:
             if "tables" not in f and "profiles" not in f:

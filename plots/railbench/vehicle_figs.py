@@ -11,7 +11,7 @@ import numpy as np
 from .style import SIDE_STYLE, report_style
 from .result import Result, WheelsetContact, body_title
 from .track_figs import _segment_legend_handles, _shade_segments
-from .layout import _bottom_legend, _fail_handle, _fail_marker, _grid, _min_span, _num, _pair, _run_info, _run_style, _set_distance_range, _share_rows
+from .layout import _bottom_legend, _label_cell, _x_range, _fail_handle, _fail_marker, _grid, _min_span, _num, _pair, _run_info, _run_style, _set_distance_range, _share_rows
 
 
 # Rows of the kinematics figures: dataset, scale to display unit, y label, minimum y span.
@@ -60,13 +60,8 @@ def fig_kinematics(runs: Sequence[Tuple[Result, str]], names: Sequence[str], tit
                     ax.plot(x, v, zorder=2 + k, gid="data", **_run_style(k))
                     if r.failed:
                         _fail_marker(ax, x, v)
-                    fin = x[np.isfinite(x)]
-                    if fin.size:
-                        xmin, xmax = min(xmin, fin.min()), max(xmax, fin.max())
-                if q == 0:
-                    ax.set_title(body_title(n), fontsize=8.5)
-                if q == len(_KIN_ROWS) - 1:
-                    ax.set_xlabel("distance s [m]")
+                    xmin, xmax = _x_range(x, xmin, xmax)
+                _label_cell(ax, q, len(_KIN_ROWS), body_title(n), "distance s [m]")
             _set_distance_range(col[0], xmin, xmax, tr, any_failed)
         for col in cells:
             for q, row in enumerate(_KIN_ROWS):

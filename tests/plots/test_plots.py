@@ -110,7 +110,7 @@ def res(name):
         import contextlib
         import io
         with contextlib.redirect_stderr(io.StringIO()):
-            _results[name] = rp.load_result(_f(name))
+            _results[name] = load_result(_f(name))
     return _results[name]
 
 
@@ -135,7 +135,7 @@ class Drawn:
     lines and of its other lines (reference lines such as the Nadal limit)."""
 
     def __init__(self, fig):
-        self.points = rp.panel_points(fig)
+        self.points = panel_points(fig)
         self.text = _fig_text(fig)
         self.data, self.other = {}, {}
         for ax in fig.axes:
@@ -153,9 +153,9 @@ _drawn = {}
 def drawn(name, suffix):
     """Figure `suffix` of run `name`, made once (figures are slow to build) and closed."""
     if (name, suffix) not in _drawn:
-        fig = rp.build_figure(res(name), suffix)
+        fig = build_figure(res(name), suffix)
         _drawn[name, suffix] = Drawn(fig)
-        rp.plt.close(fig)
+        plt.close(fig)
     return _drawn[name, suffix]
 
 
@@ -221,7 +221,7 @@ def a_figure_set_follows_file_content():
     """Every run kind gets exactly the figures its file's content calls for."""
     for name in ("irr", "plain", "kec", "lut", "guided", "fail", "nocreep"):
         r = res(name)
-        got = [s.suffix for s in rp.FIGURES if s.is_available(r)]
+        got = [s.suffix for s in FIGURES if s.is_available(r)]
         want = expected_figures(r)
         check(sorted(got) == sorted(want), f"{name}: figures {got}, want {want}")
     # Without a creep law creepages and creep forces are zeros in the file, not results.
@@ -241,9 +241,9 @@ def b_welch_recovers_target_per_octave_on_engine_output():
     ir = res("irr").irregularities
     lo, hi = ir.band()
     bad, rows = [], []
-    for c in rp.CHANNELS:
-        om, g = rp.welch_psd(ir.data[c], ir.step, wavelength_max=hi)
-        bands = rp.octave_band_ratios(om, g, ir.target["omega"], ir.target[c], lo, hi)
+    for c in CHANNELS:
+        om, g = welch_psd(ir.data[c], ir.step, wavelength_max=hi)
+        bands = octave_band_ratios(om, g, ir.target["omega"], ir.target[c], lo, hi)
         check(len(bands) == 4, f"{c}: expected 4 full octaves in 3-70 m, got {len(bands)}")
         rows.append(f"{c}: " + " ".join(f"{r:.2f}" for _, _, r in bands))
         bad += [f"{c} {2 * np.pi / b:.0f}-{2 * np.pi / a:.0f} m: {r:.2f}"
@@ -261,15 +261,15 @@ def b_welch_long_record_tight():
     ds, n = 0.1, 200_000
     rng = np.random.default_rng(7)
     f = np.fft.rfftfreq(n, ds)
-    gf = 2 * np.pi * np.nan_to_num(rp.interp_loglog(2 * np.pi * f, ot, gt))  # m^2/(cycle/m)
+    gf = 2 * np.pi * np.nan_to_num(interp_loglog(2 * np.pi * f, ot, gt))  # m^2/(cycle/m)
     band = (f >= 1 / 70.0) & (f <= 1 / 3.0)
     mag = np.where(band, np.sqrt(n * gf / (2 * ds)), 0.0)
     spec = mag * np.exp(1j * rng.uniform(0, 2 * np.pi, f.size))
     spec[0] = 0.0
     spec[-1] = 0.0
     x = np.fft.irfft(spec, n)
-    om, g = rp.welch_psd(x, ds, wavelength_max=70.0)
-    bands = rp.octave_band_ratios(om, g, ot, gt, 3, 70)
+    om, g = welch_psd(x, ds, wavelength_max=70.0)
+    bands = octave_band_ratios(om, g, ot, gt, 3, 70)
     r = [b[2] for b in bands]
     print("    ratios: " + " ".join(f"{v:.3f}" for v in r))
     check(all(0.9 <= v <= 1.1 for v in r), f"ratios {r}")
@@ -281,9 +281,9 @@ def b_welch_parseval_and_white_noise():
     rng = np.random.default_rng(3)
     ds, n, m = 0.25, 3000, 512
     x = rng.standard_normal(n) * 2e-3
-    om, g = rp.welch_psd(x, ds, nperseg=m)
+    om, g = welch_psd(x, ds, nperseg=m)
     w = 0.5 - 0.5 * np.cos(2 * np.pi * np.arange(m) / m)
-    st = rp.welch_segment_starts(n, m)
+    st = welch_segment_starts(n, m)
     check(np.all(np.diff(st) <= m // 2) and st[-1] == n - m and st[0] == 0,
           f"segments {st} do not cover the record with >= 50 % overlap")
     pw = np.mean([np.sum((w * (x[a:a + m] - x[a:a + m].mean())) ** 2) / np.sum(w ** 2)
@@ -293,17 +293,17 @@ def b_welch_parseval_and_white_noise():
     check(abs(d_om - 2 * np.pi / (m * ds)) < 1e-12, "omega spacing")
     # White noise of variance s2 and spacing ds: G(Omega) = s2 * ds / pi over (0, pi/ds).
     x = rng.standard_normal(400_000)
-    om, g = rp.welch_psd(x, ds, nperseg=1024)
+    om, g = welch_psd(x, ds, nperseg=1024)
     lvl = np.mean(g[1:-1]) / (ds / np.pi)
     check(abs(lvl - 1) < 0.02, f"white-noise level {lvl:.4f} x expected")
 
 
 @test
 def b_default_nperseg_rule():
-    check(rp.default_nperseg(5001, 0.1, 70.0) == 2048, "4*70/0.1=2800 -> 2048")
-    check(rp.default_nperseg(1000, 0.1, 70.0) == 512, "capped by N=1000 -> 512")
-    check(rp.default_nperseg(4096, 0.1, None) == 1024, "N/4 without lambda_max")
-    check(rp.default_nperseg(10, 0.1, 70.0) == 10, "short record -> N")
+    check(default_nperseg(5001, 0.1, 70.0) == 2048, "4*70/0.1=2800 -> 2048")
+    check(default_nperseg(1000, 0.1, 70.0) == 512, "capped by N=1000 -> 512")
+    check(default_nperseg(4096, 0.1, None) == 1024, "N/4 without lambda_max")
+    check(default_nperseg(10, 0.1, 70.0) == 10, "short record -> N")
 
 
 # ---- (c) a disabled irregularity channel ------------------------------------------------------
@@ -311,10 +311,10 @@ def b_default_nperseg_rule():
 def c_disabled_channel_still_plots():
     r = res("nogauge")
     check(not np.any(r.irregularities.data["gauge"]), "gauge should be all zeros")
-    for make in (rp.fig_irregularity_psd, rp.fig_irregularities):
+    for make in (fig_irregularity_psd, fig_irregularities):
         fig = make(r)
         txt = _fig_text(fig)
-        rp.plt.close(fig)
+        plt.close(fig)
         check("disabled" in txt, f"{make.__name__}: the gauge channel is not marked disabled")
 
 
@@ -372,7 +372,7 @@ def e_cli_contact_run_figures_and_stats_line():
     for p in want[2:]:
         check(_is_png(p), f"not a PNG: {p}")
         w = mpimg.imread(p).shape[1]
-        check(w == round(rp.A4_WIDTH_IN * rp.DPI), f"{os.path.basename(p)} is {w} px wide")
+        check(w == round(A4_WIDTH_IN * DPI), f"{os.path.basename(p)} is {w} px wide")
         ink = _ink(p)
         # The element figure of this run has two elements (two panels): less ink than the others.
         small = p.endswith("_elements.png")
@@ -409,13 +409,13 @@ def e_nadal_limit_when_the_file_gives_mu_and_flange_angle():
         f["contact"].attrs["mu"] = 0.2364
         f["contact"].attrs["flange_angle"] = np.radians(70.0)
     want = (np.tan(np.radians(70)) - 0.2364) / (1 + 0.2364 * np.tan(np.radians(70)))
-    r = rp.load_result(p)
-    check(abs(rp.nadal_from_file(r)[0] - want) < 1e-12, "Nadal limit formula")
-    fig = rp.fig_contact_forces(r)
+    r = load_result(p)
+    check(abs(nadal_from_file(r)[0] - want) < 1e-12, "Nadal limit formula")
+    fig = fig_contact_forces(r)
     ax = next(a for a in fig.axes if a.get_gid() == "y_over_q:ws1")
     ys = [ln.get_ydata() for ln in ax.get_lines() if ln.get_gid() != "data"]
     txt = _fig_text(fig)
-    rp.plt.close(fig)
+    plt.close(fig)
     check(any(len(y) == 2 and abs(y[0] - want) < 1e-12 for y in ys), "no Nadal line")
     check(f"Nadal limit {want:.2f}" in txt, "legend lacks the Nadal limit")
 
@@ -457,7 +457,7 @@ def e_no_vehicle_panel_without_data():
     """Every panel of every vehicle figure of every run shows data from the file."""
     for name in ("kec", "lut", "guided", "fail", "nocreep"):
         r = res(name)
-        for spec in rp.FIGURES:
+        for spec in FIGURES:
             if spec.suffix.startswith(("track", "irregularit")) or not spec.is_available(r):
                 continue
             pts = drawn(name, spec.suffix).points
@@ -473,7 +473,7 @@ def e_accelerations_and_elements_when_the_file_has_them():
     for name in ("guided", "kec"):
         r = res(name)
         has_acc = any(b.has("ay") for b in r.bodies.values())
-        spec = {s.suffix: s for s in rp.FIGURES}
+        spec = {s.suffix: s for s in FIGURES}
         check(spec["accelerations"].is_available(r) == has_acc, f"{name}: accelerations figure")
         check(spec["elements"].is_available(r) == bool(r.elements), f"{name}: elements figure")
         if has_acc:
@@ -494,7 +494,7 @@ def e_accelerations_and_elements_when_the_file_has_them():
             check(np.allclose(d.data["force:sec_z_bogie1_l"][0],
                               r.elements["sec_z_bogie1_l"]["force"] * 1e-3),
                   f"{name}: element force not in kN")
-    check(rp.acceleration_bodies(res("guided")), "the guided run lost its accelerations")
+    check(acceleration_bodies(res("guided")), "the guided run lost its accelerations")
 
 
 @test
@@ -507,7 +507,7 @@ def e_guided_run_has_no_contact_figures():
     ws = r.bodies["ws1"].data
     check(not np.any(ws["y"]) and not np.any(ws["yaw"]),
           "guided wheelsets moved: their figure would be a result again")
-    check(not next(s for s in rp.FIGURES if s.suffix == "wheelsets").is_available(r),
+    check(not next(s for s in FIGURES if s.suffix == "wheelsets").is_available(r),
           "wheelsets figure drawn for guided wheelsets (all zeros)")
 
 
@@ -519,7 +519,7 @@ def e_failed_run_still_plots_with_banner():
     r = res("fail")
     check(r.failed, "result not flagged as failed")
     t = r.t_reached()
-    line = rp.stats_summary(r)
+    line = stats_summary(r)
     # RK4 at 10 ms: the first invalid state is a wheel lift or a contact point off the table.
     check(line.startswith("stats: FAILED") and
           ("left the KEC table" in line or "wheel lift" in line), f"stats {line!r}")
@@ -527,11 +527,11 @@ def e_failed_run_still_plots_with_banner():
     os.makedirs(out)
     head = f"FAILED at t = {t:.6g} s: rk4"
     done = []
-    for spec in rp.FIGURES:
+    for spec in FIGURES:
         if not spec.is_available(r):
             continue
         if spec.suffix in ("flange_contact", "wheelsets"):
-            fig = rp.build_figure(r, spec)
+            fig = build_figure(r, spec)
             banner = [x for x in fig.texts if x.get_text().startswith(head)]
             check(banner, f"{spec.suffix}: no FAILED banner")
             p = os.path.join(out, f"{spec.suffix}.png")
@@ -539,7 +539,7 @@ def e_failed_run_still_plots_with_banner():
             top = max((ax.get_tightbbox().y1 for ax in fig.axes if ax.get_visible()), default=0)
             b_y0 = banner[0].get_window_extent().y0
             rgb = to_rgb(banner[0].get_color())
-            rp.plt.close(fig)
+            plt.close(fig)
             check(b_y0 >= top - 1,
                   f"{spec.suffix}: banner overlaps the axes ({b_y0:.0f} < {top:.0f})")
             check(os.path.getsize(p) > 30_000, f"{spec.suffix}: {os.path.getsize(p)} bytes")
@@ -554,7 +554,7 @@ def e_failed_run_still_plots_with_banner():
 @test
 def e_steady_state_is_the_mean_over_the_last_fifth():
     r = res("kec")
-    rows = {row["body"]: row for row in rp.steady_state(r)}
+    rows = {row["body"]: row for row in steady_state(r)}
     check(sorted(rows) == sorted(r.bodies), f"bodies {sorted(rows)}")
     for n, b in r.bodies.items():
         s = b.data["s"]
@@ -585,7 +585,7 @@ def e_compare_runs_figures_and_steady_csv():
     with open(os.path.join(out, names[2]), newline="") as f:
         rows = list(csv.DictReader(f))
     check(len(rows) == 14, f"{len(rows)} CSV rows, want 2 runs x 7 bodies")
-    ref = {lab: {row["body"]: row for row in rp.steady_state(res(name))}  # CSV: 4 decimals
+    ref = {lab: {row["body"]: row for row in steady_state(res(name))}  # CSV: 4 decimals
            for lab, name in (("KEC", "kec"), ("LUT", "lut"))}
     bad = [f"{row['label']} {row['body']}" for row in rows
            if abs(float(row["y_mm"]) - ref[row["label"]][row["body"]]["y_mm"]) > 1e-4

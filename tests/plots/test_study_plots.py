@@ -113,11 +113,11 @@ make_study(DIR)
 
 @test
 def labels_and_keys():
-    assert rs.compact(1e-06) == "1e-6" and rs.compact(7.075e13) == "7.075e13"
-    ov = rs.parse_overrides("solver.method=bdf solver.rtol=1e-06 solver.atol=1e-06 "
+    assert compact(1e-06) == "1e-6" and compact(7.075e13) == "7.075e13"
+    ov = parse_overrides("solver.method=bdf solver.rtol=1e-06 solver.atol=1e-06 "
                             "solver.max_step=0.001")
     assert rs.solver_text(ov) == "bdf tol=1e-6 hmax=1ms", rs.solver_text(ov)
-    st = rs.load_study(DIR)
+    st = load_study(DIR)
     c = {x.id: x for x in st.cases}
     assert c["case_b"].method == "lut" and c["case_b"].K == 1e10 and c["case_a"].K is None
     assert c["case_b"].solver_key == "abm h=0.25ms"
@@ -128,8 +128,8 @@ def labels_and_keys():
 
 @test
 def accuracy_pairs_eq33():
-    st = rs.load_study(DIR)
-    rows = rs.accuracy_rows(st)
+    st = load_study(DIR)
+    rows = accuracy_rows(st)
     by = {(r["lut_case"], r["wheelset"]): r for r in rows}
     # LUT K=1e10 = KEC + 1 mm on every wheelset (times k for wheelset k: y scales, offset too).
     r = by[("case_b", "ws1")]
@@ -145,8 +145,8 @@ def accuracy_pairs_eq33():
 
 @test
 def work_precision_against_reference():
-    st = rs.load_study(DIR)
-    rows = {r["case"]: r for r in rs.work_precision_rows(st)}
+    st = load_study(DIR)
+    rows = {r["case"]: r for r in work_precision_rows(st)}
     assert abs(float(rows["case_d"]["y_max_mm"]) - 0.4) < 1e-6, rows["case_d"]  # 0.1 mm x ws4
     assert abs(float(rows["case_d"]["y_rms_mm"]) - 0.1 * np.sqrt(7.5)) < 1e-3
     assert rows["case_q"]["note"].startswith("reference_check")
@@ -156,8 +156,8 @@ def work_precision_against_reference():
 
 @test
 def effects_relative():
-    st = rs.load_study(DIR)
-    rows = {r["case"]: r for r in rs.effect_rows(st)}
+    st = load_study(DIR)
+    rows = {r["case"]: r for r in effect_rows(st)}
     assert float(rows["case_a"]["us_per_eval"]) == 2000.0
     assert float(rows["case_b"]["relative_to_baseline"]) == 1.5
     assert rows["case_c"]["us_per_eval"] == ""  # failed

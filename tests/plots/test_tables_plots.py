@@ -415,13 +415,13 @@ def a_default_outdir_is_next_to_file():
 @test
 def a_summary_line():
     import railbench_tables as rt
-    t = rt.load_tables(FIX)
-    s = rt.summary_line(t)
+    t = load_tables(FIX)
+    s = summary_line(t)
     check("\n" not in s and s.startswith("tables: "), s)
     for part in ("LUT 121 x 5 (y x xi_g)", "KEC 801 points", "tan(gamma_e) at 3 mm = 0.05",
                  "two-point contact at y = -5.7", "+5.7", "config 0123456789abcdef", " MB", " kB"):
         check(part in s, f"{part!r} not in {s!r}")
-    v = rt.conicity_at(t, 3e-3)
+    v = conicity_at(t, 3e-3)
     check(v is not None and abs(v - 0.0526) < 0.002, f"conicity at 3 mm {v}")
 
 
@@ -429,7 +429,7 @@ def a_summary_line():
 @test
 def b_load_shapes_and_two_point():
     import railbench_tables as rt
-    t = rt.load_tables(FIX)
+    t = load_tables(FIX)
     check(t.lut.ch["z"].shape == (5, 121) and t.lut.y.size == 121, "LUT shape")
     check({"left_s_w", "right_flange_delta", "phi"} <= set(t.lut.ch), "channels missing")
     tp = t.lut.two_points(0.0)
@@ -446,8 +446,8 @@ def _contact_mismatch(t):
     worst = 0.0
     for row in range(t.lut.xi_g.size):
         y, z, phi = t.lut.y, t.lut.ch["z"][row], t.lut.ch["phi"][row]
-        wy, wz = rt._wheel_track(t.wheel, y, z, phi, t.g("lw"), s=t.lut.ch["left_s_w"][row])
-        ry, rz = rt._rail_track(t.rail, t.g("lr"), t.g("beta"), t.lut.xi_g[row],
+        wy, wz = _wheel_track(t.wheel, y, z, phi, t.g("lw"), s=t.lut.ch["left_s_w"][row])
+        ry, rz = _rail_track(t.rail, t.g("lr"), t.g("beta"), t.lut.xi_g[row],
                                 s=t.lut.ch["left_s_r"][row])
         worst = max(worst, float(np.max(np.hypot(wy - ry, wz - rz))))
     return worst
@@ -456,7 +456,7 @@ def _contact_mismatch(t):
 @test
 def b_contact_points_coincide_in_track_frame():
     import railbench_tables as rt
-    d = _contact_mismatch(rt.load_tables(FIX))
+    d = _contact_mismatch(load_tables(FIX))
     check(d < 2e-6, f"wheel and rail contact points {d * 1e3:.4f} mm apart")
 
 
@@ -467,7 +467,7 @@ def _kec_vs_lut(t, ys):
     dz = dp = 0.0
     for yv in ys:
         i = int(np.argmin(np.abs(t.lut.y - yv)))
-        sol = rt.kec_solve(t.kec, float(t.lut.y[i]), t.g("r0"), t.g("lr"))
+        sol = kec_solve(t.kec, float(t.lut.y[i]), t.g("r0"), t.g("lr"))
         check(sol is not None, f"KEC solve failed at y = {yv}")
         dz = max(dz, abs(sol[0] - t.lut.ch["z"][row, i]))
         dp = max(dp, abs(sol[1] - t.lut.ch["phi"][row, i]))
@@ -477,8 +477,8 @@ def _kec_vs_lut(t, ys):
 @test
 def b_kec_solve_matches_lut_before_two_point():
     import railbench_tables as rt
-    t = rt.load_tables(FIX)
-    s, f = rt.knife_point(0.0, rt.load_tables(FIX).lut.ch["z"][2, 60], 0.0, FX_R0, FX_LR)
+    t = load_tables(FIX)
+    s, f = knife_point(0.0, load_tables(FIX).lut.ch["z"][2, 60], 0.0, FX_R0, FX_LR)
     check(abs(s) < 1e-15, f"knife point at y = 0: s_k = {s}")
     dz, dp = _kec_vs_lut(t, [-4e-3, -2e-3, 0.0, 1.5e-3, 3e-3, 4e-3])
     check(dz < 1e-7 and dp < 1e-7, f"|dz| {dz:.2e} m, |dphi| {dp:.2e}")
@@ -582,18 +582,18 @@ def e_real_file():
         print("  (skipped: no /tmp/tables.h5 and RB_TABLES_H5 not set)")
         return
     import railbench_tables as rt
-    t = rt.load_tables(REAL)
+    t = load_tables(REAL)
     stem = os.path.splitext(os.path.basename(REAL))[0]
     outdir = os.path.join(TMP, "out_real")
     code, out, err = run_main(REAL, "--outdir", outdir)
     check(code == 0, f"exit {code}: {err}")
     paths = _written(out)
-    expect = [spec.suffix for spec in rt.FIGURES if spec.is_available(t)]
+    expect = [spec.suffix for spec in FIGURES if spec.is_available(t)]
     check(_suffixes(paths, stem) == sorted(expect), f"written {paths}, expected {expect}")
     for p in paths:
         _png_ok(p)
     s = out.splitlines()[0]
-    check(s == rt.summary_line(t) and s.startswith("tables: LUT "), f"summary {s!r}")
+    check(s == summary_line(t) and s.startswith("tables: LUT "), f"summary {s!r}")
     if t.lut is not None and t.wheel is not None and t.has_geometry:
         d = _contact_mismatch(t)
         check(d < 1e-7, f"real file: contact points {d * 1e3:.5f} mm apart in the track frame")

@@ -224,33 +224,67 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-// Figures and tables of the study (plots/plot_study.py, Debian's python3 as in ./wb run): 0 when
-// drawn or switched off (RAILBENCH_STUDY_PLOTS=0) or when python3 / the script is missing (a
-// note), 4 when the script failed (the study's results are complete all the same).
+// The solver part of a case's label (caseLabel of its solver.* overrides: "rk4 h=0.25ms",
+// "bdf tol=1e-6 hmax=1ms"), "" when the case keeps the base scenario's solver. The figures
+// group cases by it, so they read it from summary_cases.csv instead of deriving it again.
+std::string solverLabel(const std::vector<std::string>& overrides) {
+  std::vector<std::string> solver;
+  for (const auto& o : overrides)
+    if (o.rfind("solver.", 0) == 0) solver.push_back(o);
+  const std::string label = scenario::caseLabel(solver);
+  return solver.empty() || label == "base" ? std::string() : label;
+}
+
+// The environment of the figures' python: this one with <root>/plots first on PYTHONPATH, so
+// that `python3 -m railbench` finds the package (built before fork: the child only execs).
+std::vector<std::string> plotsEnvironment(const fs::path& plots) {
+  std::vector<std::string> env;
+  std::string path = plots.string();
+  for (char** e = environ; e && *e; ++e) {
+    std::string kv = *e;
+    if (kv.rfind("PYTHONPATH=", 0) == 0) {
+      if (kv.size() > 11) path += ":" + kv.substr(11);
+      continue;
+    }
+    env.push_back(std::move(kv));
+  }
+  env.push_back("PYTHONPATH=" + path);
+  return env;
+}
+
+// Figures and tables of the study (`plots/rbplot study DIR`, run as `python3 -m railbench study
+// DIR` with Debian's python3 as in ./wb run): 0 when drawn or switched off
+// (RAILBENCH_STUDY_PLOTS=0) or when python3 / the package is missing (a note), 4 when the
+// command failed (the study's results are complete all the same).
 int plotStudy(const StudyOptions& o, const std::string& dir) {
   if (const char* e = std::getenv("RAILBENCH_STUDY_PLOTS"); e && std::string(e) == "0") return 0;
   const char* env = std::getenv("RAILBENCH_PYTHON");
   std::string python = env && *env ? env : "/usr/bin/python3";
-  fs::path script = fs::path(o.root) / "plots" / "plot_study.py";
-  if (!fs::exists(python) || !fs::exists(script)) {
-    std::cerr << "study: note: no figures (" << (fs::exists(python) ? script.string() : python)
+  const fs::path plots = fs::path(o.root) / "plots";
+  const fs::path entry = plots / "railbench" / "__main__.py";
+  if (!fs::exists(python) || !fs::exists(entry)) {
+    std::cerr << "study: note: no figures (" << (fs::exists(python) ? entry.string() : python)
               << " not found)\n";
     return 0;
   }
+  std::vector<std::string> args = {python, "-m", "railbench", "study", dir};
+  std::vector<std::string> envs = plotsEnvironment(plots);
+  std::vector<char*> argv;
+  std::vector<char*> envp;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  for (auto& e : envs) envp.push_back(e.data());
+  envp.push_back(nullptr);
   std::cout.flush();
   pid_t pid = fork();
   if (pid == 0) {
-    std::vector<std::string> args = {python, script.string(), dir};
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(python.c_str(), argv.data());
+    execve(python.c_str(), argv.data(), envp.data());
     _exit(127);
   }
   int status = 0;
   if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::cerr << "study: the figures failed: " << python << " " << script.string() << " " << dir
-              << "\n";
+    std::cerr << "study: the figures failed: PYTHONPATH=" << plots.string() << " " << python
+              << " -m railbench study " << dir << "\n";
     return 4;
   }
   return 0;
@@ -492,8 +526,8 @@ int runStudy(const StudyOptions& o) {
   }
   std::ostringstream cases;
   cases.precision(12);
-  cases << "case,label,role,base,overrides,runs,runs_ok,status,median_cpu_time_s,min_cpu_time_s,"
-           "max_cpu_time_s";
+  cases << "case,label,role,base,overrides,solver,runs,runs_ok,status,median_cpu_time_s,"
+           "min_cpu_time_s,max_cpu_time_s";
   for (const auto& k : nums)
     if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << k;
   cases << ",message,file\n";
@@ -504,8 +538,9 @@ int runStudy(const StudyOptions& o) {
                        : std::pair<double, double>{*std::min_element(cs.cpu.begin(), cs.cpu.end()),
                                                    *std::max_element(cs.cpu.begin(), cs.cpu.end())};
     cases << c.id << "," << csvField(c.label) << "," << c.role << "," << csvField(c.base) << ","
-          << csvField(join(c.overrides, " ")) << "," << cs.runs << "," << cs.cpu.size() << ","
-          << cs.status << "," << median(cs.cpu) << "," << lo << "," << hi;
+          << csvField(join(c.overrides, " ")) << "," << csvField(solverLabel(c.overrides)) << ","
+          << cs.runs << "," << cs.cpu.size() << "," << cs.status << "," << median(cs.cpu) << ","
+          << lo << "," << hi;
     for (const auto& k : nums)
       if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << cs.first[k];
     cases << "," << csvField(cs.message) << "," << csvField(cs.file) << "\n";
