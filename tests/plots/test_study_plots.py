@@ -8,7 +8,6 @@ usage: /usr/bin/python3 -m pytest -q tests/plots/test_study_plots.py
 """
 import csv
 import os
-import shutil
 import subprocess
 import tempfile
 
@@ -16,28 +15,15 @@ import h5py
 import numpy as np
 import pytest
 
+from helpers import RBPLOT, ROOT, work_folder
+
 from railbench.study_cost import accuracy_rows
 from railbench.study_data import compact, load_study, parse_overrides
 from railbench.study_precision import effect_rows, work_precision_rows
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-PLOTS = os.path.join(ROOT, "plots")
-RBPLOT = os.path.join(PLOTS, "rbplot")
-
 TMP = tempfile.mkdtemp(prefix="rb_study_test_")
 WS = ["ws1", "ws2", "ws3", "ws4"]
-
-
-@pytest.fixture(scope="module", autouse=True)
-def work_files(request):
-    """Removed when every test passed (kept on a failure, or always with RB_KEEP_TMP=1)."""
-    failed = request.session.testsfailed
-    yield
-    if request.session.testsfailed == failed and not os.environ.get("RB_KEEP_TMP"):
-        shutil.rmtree(TMP, ignore_errors=True)
-    else:
-        print(f"work files kept in {TMP}")
+work_files = work_folder(TMP)
 
 
 def write_case(path, t, y, flange=0.0, status="ok", method="kec"):
