@@ -1,12 +1,9 @@
-#!/usr/bin/python3
-"""Tests of plots/plot_run.py, plots/railbench_plots.py and plots/compare_runs.py on real result
-files (plain script, no pytest).
+"""Tests of `plots/rbplot run` and `plots/rbplot compare-runs` (railbench/run.py and the
+figure modules, railbench/compare.py) on real result files.
 
-usage: /usr/bin/python3 tests/plots/test_plots.py [WORKBENCH]
-    WORKBENCH: the workbench program (default $RAILBENCH_WORKBENCH, else
-    build/workbench/app/workbench).  Exit 0 if all pass, 1 otherwise; the last line is
-    "N passed, M failed".  Work files go to a temp dir, removed on success (kept on failure, or
-    always with RB_KEEP_TMP=1).
+usage: /usr/bin/python3 -m pytest -q tests/plots/test_plots.py
+    The workbench program: $RAILBENCH_WORKBENCH, else build/workbench/app/workbench.  Work files
+    go to a temp dir, removed on success (kept on failure, or always with RB_KEEP_TMP=1).
 
 The result files are written by the workbench itself, so the plots are tested against the
 layout the engine really writes (workbench/app/run.cpp), not against a copy of it:
@@ -21,22 +18,21 @@ layout the engine really writes (workbench/app/run.cpp), not against a copy of i
 import os
 import shutil
 import subprocess
-import sys
 import tempfile
-import time
-import traceback
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-PLOTS = os.path.join(ROOT, "plots")
-PLOT_RUN = os.path.join(PLOTS, "plot_run.py")
-COMPARE = os.path.join(PLOTS, "compare_runs.py")
-PY = "/usr/bin/python3"
-sys.path[:0] = [PLOTS]
-
-import railbench_plots as rp  # noqa: E402
+from helpers import ROOT, check, in_process, one_line_error, rbplot, work_folder
+from railbench import compare as cr
+from railbench import run as run_command
+from railbench.dynamics_figs import acceleration_bodies
+from railbench.psd import (default_nperseg, interp_loglog, octave_band_ratios, welch_psd,
+                           welch_segment_starts)
+from railbench.result import load_result
+from railbench.run import FIGURES, build_figure, panel_points, stats_summary, steady_state
+from railbench.style import A4_WIDTH_IN, CHANNELS, DPI, plt
+from railbench.track_figs import fig_irregularities, fig_irregularity_psd
+from railbench.vehicle_figs import fig_contact_forces, nadal_from_file
 
 TRACK_FIGS = ["track_plan", "track_curvature_cant"]
 IRR_FIGS = TRACK_FIGS + ["irregularities", "irregularity_psd"]
@@ -67,22 +63,8 @@ RUNS = {
 }
 _results = {}
 
-_tests = []
-
-
-def test(fn):
-    _tests.append(fn)
-    return fn
-
-
-def check(cond, msg):
-    if not cond:
-        raise AssertionError(msg)
-
 
 def workbench():
-    if len(sys.argv) > 1:
-        return os.path.abspath(sys.argv[1])
     return os.environ.get("RAILBENCH_WORKBENCH") or \
         os.path.join(ROOT, "build", "workbench", "app", "workbench")
 
@@ -91,7 +73,7 @@ def make_runs():
     """Run every scenario of RUNS once; a run that does not end as expected stops the test."""
     wb = workbench()
     if not os.access(wb, os.X_OK):
-        raise SystemExit(f"test_plots: no workbench program at {wb} (pass it as the argument)")
+        raise RuntimeError(f"test_plots: no workbench program at {wb} (set RAILBENCH_WORKBENCH)")
     env = dict(os.environ, RAILBENCH_ROOT=ROOT)
     for name, (scenario, sets, want) in RUNS.items():
         cmd = [wb, "run", scenario, "--out", _f(name), "--quiet"]
@@ -100,7 +82,7 @@ def make_runs():
         r = subprocess.run(cmd, cwd=ROOT, env=env, capture_output=True, text=True, timeout=120,
                            stdin=subprocess.DEVNULL)
         if r.returncode != want or not os.path.isfile(_f(name)):
-            raise SystemExit(f"test_plots: {' '.join(cmd)} exited {r.returncode} (want {want}):"
+            raise RuntimeError(f"test_plots: {' '.join(cmd)} exited {r.returncode} (want {want}):"
                              f"\n{r.stdout}{r.stderr}")
 
 
@@ -110,12 +92,15 @@ def res(name):
         import contextlib
         import io
         with contextlib.redirect_stderr(io.StringIO()):
-            _results[name] = rp.load_result(_f(name))
+            _results[name] = load_result(_f(name))
     return _results[name]
 
 
+work_files = work_folder(TMP, make_runs)
+
+
 def run_cli(*args):
-    return subprocess.run([PY, PLOT_RUN, *args], capture_output=True, text=True, timeout=120)
+    return rbplot("run", *args)
 
 
 def _is_png(path):
@@ -135,7 +120,7 @@ class Drawn:
     lines and of its other lines (reference lines such as the Nadal limit)."""
 
     def __init__(self, fig):
-        self.points = rp.panel_points(fig)
+        self.points = panel_points(fig)
         self.text = _fig_text(fig)
         self.data, self.other = {}, {}
         for ax in fig.axes:
@@ -153,9 +138,9 @@ _drawn = {}
 def drawn(name, suffix):
     """Figure `suffix` of run `name`, made once (figures are slow to build) and closed."""
     if (name, suffix) not in _drawn:
-        fig = rp.build_figure(res(name), suffix)
+        fig = build_figure(res(name), suffix)
         _drawn[name, suffix] = Drawn(fig)
-        rp.plt.close(fig)
+        plt.close(fig)
     return _drawn[name, suffix]
 
 
@@ -193,8 +178,7 @@ def expected_figures(r):
 
 
 # ---- (a) track-only runs: the track figures, through the command line -------------------------
-@test
-def a_cli_writes_four_pngs_next_to_h5():
+def test_a_cli_writes_four_pngs_next_to_h5():
     r = run_cli(_f("irr"))
     check(r.returncode == 0, f"exit {r.returncode}: {r.stderr.strip()}")
     lines = [ln for ln in r.stdout.splitlines() if ln.strip()]
@@ -207,8 +191,7 @@ def a_cli_writes_four_pngs_next_to_h5():
         check(sz > 10_000, f"{os.path.basename(p)} only {sz} bytes")
 
 
-@test
-def a_cli_outdir_option_and_track_without_irregularities():
+def test_a_cli_outdir_option_and_track_without_irregularities():
     out = os.path.join(TMP, "figs", "sub")  # created on demand
     r = run_cli(_f("plain"), "--outdir", out)
     check(r.returncode == 0, f"exit {r.returncode}: {r.stderr.strip()}")
@@ -216,12 +199,11 @@ def a_cli_outdir_option_and_track_without_irregularities():
     check(got == ["plain_track_curvature_cant.png", "plain_track_plan.png"], f"outdir holds {got}")
 
 
-@test
-def a_figure_set_follows_file_content():
+def test_a_figure_set_follows_file_content():
     """Every run kind gets exactly the figures its file's content calls for."""
     for name in ("irr", "plain", "kec", "lut", "guided", "fail", "nocreep"):
         r = res(name)
-        got = [s.suffix for s in rp.FIGURES if s.is_available(r)]
+        got = [s.suffix for s in FIGURES if s.is_available(r)]
         want = expected_figures(r)
         check(sorted(got) == sorted(want), f"{name}: figures {got}, want {want}")
     # Without a creep law creepages and creep forces are zeros in the file, not results.
@@ -233,17 +215,16 @@ def a_figure_set_follows_file_content():
 
 
 # ---- (b) Welch estimator scaling ---------------------------------------------------------------
-@test
-def b_welch_recovers_target_per_octave_on_engine_output():
+def test_b_welch_recovers_target_per_octave_on_engine_output():
     """Mean of estimate/target per full octave inside 3-70 m within +-25 % on the engine's 3 km
     record (seed 1; measured 0.87-1.12): checks the estimator's scaling (a factor 2 or 2 pi
     error shows as 0.5/2/0.16/6.3) and that the written target matches the written signal."""
     ir = res("irr").irregularities
     lo, hi = ir.band()
     bad, rows = [], []
-    for c in rp.CHANNELS:
-        om, g = rp.welch_psd(ir.data[c], ir.step, wavelength_max=hi)
-        bands = rp.octave_band_ratios(om, g, ir.target["omega"], ir.target[c], lo, hi)
+    for c in CHANNELS:
+        om, g = welch_psd(ir.data[c], ir.step, wavelength_max=hi)
+        bands = octave_band_ratios(om, g, ir.target["omega"], ir.target[c], lo, hi)
         check(len(bands) == 4, f"{c}: expected 4 full octaves in 3-70 m, got {len(bands)}")
         rows.append(f"{c}: " + " ".join(f"{r:.2f}" for _, _, r in bands))
         bad += [f"{c} {2 * np.pi / b:.0f}-{2 * np.pi / a:.0f} m: {r:.2f}"
@@ -252,8 +233,7 @@ def b_welch_recovers_target_per_octave_on_engine_output():
     check(not bad, "outside +-25 %: " + ", ".join(bad))
 
 
-@test
-def b_welch_long_record_tight():
+def test_b_welch_long_record_tight():
     """20 km realisation (IFFT method) of the vertical target PSD the engine wrote: per-octave
     ratio within +-10 % (statistical scatter here is a few %)."""
     ir = res("irr").irregularities
@@ -261,29 +241,28 @@ def b_welch_long_record_tight():
     ds, n = 0.1, 200_000
     rng = np.random.default_rng(7)
     f = np.fft.rfftfreq(n, ds)
-    gf = 2 * np.pi * np.nan_to_num(rp.interp_loglog(2 * np.pi * f, ot, gt))  # m^2/(cycle/m)
+    gf = 2 * np.pi * np.nan_to_num(interp_loglog(2 * np.pi * f, ot, gt))  # m^2/(cycle/m)
     band = (f >= 1 / 70.0) & (f <= 1 / 3.0)
     mag = np.where(band, np.sqrt(n * gf / (2 * ds)), 0.0)
     spec = mag * np.exp(1j * rng.uniform(0, 2 * np.pi, f.size))
     spec[0] = 0.0
     spec[-1] = 0.0
     x = np.fft.irfft(spec, n)
-    om, g = rp.welch_psd(x, ds, wavelength_max=70.0)
-    bands = rp.octave_band_ratios(om, g, ot, gt, 3, 70)
+    om, g = welch_psd(x, ds, wavelength_max=70.0)
+    bands = octave_band_ratios(om, g, ot, gt, 3, 70)
     r = [b[2] for b in bands]
     print("    ratios: " + " ".join(f"{v:.3f}" for v in r))
     check(all(0.9 <= v <= 1.1 for v in r), f"ratios {r}")
 
 
-@test
-def b_welch_parseval_and_white_noise():
+def test_b_welch_parseval_and_white_noise():
     # Parseval: sum(G) dOmega equals the mean of the windowed segment powers (exact identity).
     rng = np.random.default_rng(3)
     ds, n, m = 0.25, 3000, 512
     x = rng.standard_normal(n) * 2e-3
-    om, g = rp.welch_psd(x, ds, nperseg=m)
+    om, g = welch_psd(x, ds, nperseg=m)
     w = 0.5 - 0.5 * np.cos(2 * np.pi * np.arange(m) / m)
-    st = rp.welch_segment_starts(n, m)
+    st = welch_segment_starts(n, m)
     check(np.all(np.diff(st) <= m // 2) and st[-1] == n - m and st[0] == 0,
           f"segments {st} do not cover the record with >= 50 % overlap")
     pw = np.mean([np.sum((w * (x[a:a + m] - x[a:a + m].mean())) ** 2) / np.sum(w ** 2)
@@ -293,59 +272,43 @@ def b_welch_parseval_and_white_noise():
     check(abs(d_om - 2 * np.pi / (m * ds)) < 1e-12, "omega spacing")
     # White noise of variance s2 and spacing ds: G(Omega) = s2 * ds / pi over (0, pi/ds).
     x = rng.standard_normal(400_000)
-    om, g = rp.welch_psd(x, ds, nperseg=1024)
+    om, g = welch_psd(x, ds, nperseg=1024)
     lvl = np.mean(g[1:-1]) / (ds / np.pi)
     check(abs(lvl - 1) < 0.02, f"white-noise level {lvl:.4f} x expected")
 
 
-@test
-def b_default_nperseg_rule():
-    check(rp.default_nperseg(5001, 0.1, 70.0) == 2048, "4*70/0.1=2800 -> 2048")
-    check(rp.default_nperseg(1000, 0.1, 70.0) == 512, "capped by N=1000 -> 512")
-    check(rp.default_nperseg(4096, 0.1, None) == 1024, "N/4 without lambda_max")
-    check(rp.default_nperseg(10, 0.1, 70.0) == 10, "short record -> N")
+def test_b_default_nperseg_rule():
+    check(default_nperseg(5001, 0.1, 70.0) == 2048, "4*70/0.1=2800 -> 2048")
+    check(default_nperseg(1000, 0.1, 70.0) == 512, "capped by N=1000 -> 512")
+    check(default_nperseg(4096, 0.1, None) == 1024, "N/4 without lambda_max")
+    check(default_nperseg(10, 0.1, 70.0) == 10, "short record -> N")
 
 
 # ---- (c) a disabled irregularity channel ------------------------------------------------------
-@test
-def c_disabled_channel_still_plots():
+def test_c_disabled_channel_still_plots():
     r = res("nogauge")
     check(not np.any(r.irregularities.data["gauge"]), "gauge should be all zeros")
-    for make in (rp.fig_irregularity_psd, rp.fig_irregularities):
+    for make in (fig_irregularity_psd, fig_irregularities):
         fig = make(r)
         txt = _fig_text(fig)
-        rp.plt.close(fig)
+        plt.close(fig)
         check("disabled" in txt, f"{make.__name__}: the gauge channel is not marked disabled")
 
 
 # ---- (d) bad input -> non-zero exit and one line ------------------------------------------------
 def _one_line_error(r, needle):
-    check(r.returncode != 0, "exit status 0")
-    lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
-    check(len(lines) == 1, f"stderr has {len(lines)} lines: {r.stderr!r}")
-    check(lines[0].startswith("plot_run: error:") and needle in lines[0], f"message {lines[0]!r}")
-    check(r.stdout.strip() == "", f"stdout {r.stdout!r}")
+    one_line_error(r, "run", needle)
 
 
-@test
-def d_missing_file():
+def test_d_missing_file():
     _one_line_error(run_cli(os.path.join(TMP, "does_not_exist.h5")), "no such file")
 
 
 def _plot_run_in_process(*args):
-    """plot_run.main in this process (a subprocess costs a matplotlib import)."""
-    import contextlib
-    import io
-    import types
-    import plot_run
-    o, e = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(o), contextlib.redirect_stderr(e):
-        code = plot_run.main(list(args))
-    return types.SimpleNamespace(returncode=code, stdout=o.getvalue(), stderr=e.getvalue())
+    return in_process(run_command.main, *args)
 
 
-@test
-def d_not_hdf5_and_not_railbench():
+def test_d_not_hdf5_and_not_railbench():
     bad = os.path.join(TMP, "garbage.h5")
     with open(bad, "w") as f:
         f.write("this is not HDF5\n")
@@ -358,8 +321,7 @@ def d_not_hdf5_and_not_railbench():
 
 
 # ---- (e) vehicle runs ---------------------------------------------------------------------------
-@test
-def e_cli_contact_run_figures_and_stats_line():
+def test_e_cli_contact_run_figures_and_stats_line():
     out = os.path.join(TMP, "kec_figs")
     r = run_cli(_f("kec"), "--outdir", out)
     check(r.returncode == 0, f"exit {r.returncode}: {r.stderr.strip()}")
@@ -372,7 +334,7 @@ def e_cli_contact_run_figures_and_stats_line():
     for p in want[2:]:
         check(_is_png(p), f"not a PNG: {p}")
         w = mpimg.imread(p).shape[1]
-        check(w == round(rp.A4_WIDTH_IN * rp.DPI), f"{os.path.basename(p)} is {w} px wide")
+        check(w == round(A4_WIDTH_IN * DPI), f"{os.path.basename(p)} is {w} px wide")
         ink = _ink(p)
         # The element figure of this run has two elements (two panels): less ink than the others.
         small = p.endswith("_elements.png")
@@ -380,8 +342,7 @@ def e_cli_contact_run_figures_and_stats_line():
               f"{os.path.basename(p)}: {os.path.getsize(p)} bytes, {ink:.0%} ink")
 
 
-@test
-def e_y_over_q_drawn_for_every_wheel():
+def test_e_y_over_q_drawn_for_every_wheel():
     """The file stores /contact/<ws>/<side>/y_over_q; every wheelset gets a Y/Q panel with both
     wheels, drawn from exactly those values."""
     import h5py
@@ -400,8 +361,7 @@ def e_y_over_q_drawn_for_every_wheel():
         check("Nadal limit not drawn" in d.text, f"{name}: legend does not explain the Nadal line")
 
 
-@test
-def e_nadal_limit_when_the_file_gives_mu_and_flange_angle():
+def test_e_nadal_limit_when_the_file_gives_mu_and_flange_angle():
     import h5py
     p = os.path.join(TMP, "kec_mu.h5")
     shutil.copy(_f("kec"), p)
@@ -409,19 +369,18 @@ def e_nadal_limit_when_the_file_gives_mu_and_flange_angle():
         f["contact"].attrs["mu"] = 0.2364
         f["contact"].attrs["flange_angle"] = np.radians(70.0)
     want = (np.tan(np.radians(70)) - 0.2364) / (1 + 0.2364 * np.tan(np.radians(70)))
-    r = rp.load_result(p)
-    check(abs(rp.nadal_from_file(r)[0] - want) < 1e-12, "Nadal limit formula")
-    fig = rp.fig_contact_forces(r)
+    r = load_result(p)
+    check(abs(nadal_from_file(r)[0] - want) < 1e-12, "Nadal limit formula")
+    fig = fig_contact_forces(r)
     ax = next(a for a in fig.axes if a.get_gid() == "y_over_q:ws1")
     ys = [ln.get_ydata() for ln in ax.get_lines() if ln.get_gid() != "data"]
     txt = _fig_text(fig)
-    rp.plt.close(fig)
+    plt.close(fig)
     check(any(len(y) == 2 and abs(y[0] - want) < 1e-12 for y in ys), "no Nadal line")
     check(f"Nadal limit {want:.2f}" in txt, "legend lacks the Nadal limit")
 
 
-@test
-def e_kec_flange_load_from_the_two_point_split():
+def test_e_kec_flange_load_from_the_two_point_split():
     """KEC carries flange load in normal_flange (the flange point of the two-point contact):
     the flange figure draws it (the leading wheelset's outer wheel flanges in this run) and
     never the LUT-only Hertz flange force / indentation that KEC files hold as zeros."""
@@ -439,8 +398,7 @@ def e_kec_flange_load_from_the_two_point_split():
     check(not any(k.startswith("flange_force") for k in pts), f"contact figure: {sorted(pts)}")
 
 
-@test
-def e_lut_hertz_flange_force_and_indentation():
+def test_e_lut_hertz_flange_force_and_indentation():
     import h5py
     d = drawn("lut", "flange_contact")
     for w in WS:
@@ -452,12 +410,11 @@ def e_lut_hertz_flange_force_and_indentation():
           "indentation not drawn in mm from the file")
 
 
-@test
-def e_no_vehicle_panel_without_data():
+def test_e_no_vehicle_panel_without_data():
     """Every panel of every vehicle figure of every run shows data from the file."""
     for name in ("kec", "lut", "guided", "fail", "nocreep"):
         r = res(name)
-        for spec in rp.FIGURES:
+        for spec in FIGURES:
             if spec.suffix.startswith(("track", "irregularit")) or not spec.is_available(r):
                 continue
             pts = drawn(name, spec.suffix).points
@@ -466,14 +423,13 @@ def e_no_vehicle_panel_without_data():
             check(not empty, f"{name} {spec.suffix}: panels without data {empty}")
 
 
-@test
-def e_accelerations_and_elements_when_the_file_has_them():
+def test_e_accelerations_and_elements_when_the_file_has_them():
     """Car body and bogie accelerations and element outputs are drawn from the file (the guided
     run writes them; contact runs too once the engine does), and only then."""
     for name in ("guided", "kec"):
         r = res(name)
         has_acc = any(b.has("ay") for b in r.bodies.values())
-        spec = {s.suffix: s for s in rp.FIGURES}
+        spec = {s.suffix: s for s in FIGURES}
         check(spec["accelerations"].is_available(r) == has_acc, f"{name}: accelerations figure")
         check(spec["elements"].is_available(r) == bool(r.elements), f"{name}: elements figure")
         if has_acc:
@@ -494,11 +450,10 @@ def e_accelerations_and_elements_when_the_file_has_them():
             check(np.allclose(d.data["force:sec_z_bogie1_l"][0],
                               r.elements["sec_z_bogie1_l"]["force"] * 1e-3),
                   f"{name}: element force not in kN")
-    check(rp.acceleration_bodies(res("guided")), "the guided run lost its accelerations")
+    check(acceleration_bodies(res("guided")), "the guided run lost its accelerations")
 
 
-@test
-def e_guided_run_has_no_contact_figures():
+def test_e_guided_run_has_no_contact_figures():
     r = res("guided")
     check(r.contact is None and len(r.bodies) == 7, "guided run content")
     check(r.contact_method is None and r.guided, f"contact method {r.contact_method!r}")
@@ -507,19 +462,18 @@ def e_guided_run_has_no_contact_figures():
     ws = r.bodies["ws1"].data
     check(not np.any(ws["y"]) and not np.any(ws["yaw"]),
           "guided wheelsets moved: their figure would be a result again")
-    check(not next(s for s in rp.FIGURES if s.suffix == "wheelsets").is_available(r),
+    check(not next(s for s in FIGURES if s.suffix == "wheelsets").is_available(r),
           "wheelsets figure drawn for guided wheelsets (all zeros)")
 
 
-@test
-def e_failed_run_still_plots_with_banner():
+def test_e_failed_run_still_plots_with_banner():
     """Every available figure is drawn from the partial results, with the red banner above
     the axes (drawn and measured for two of them; the others only carry it)."""
     from matplotlib.colors import to_rgb
     r = res("fail")
     check(r.failed, "result not flagged as failed")
     t = r.t_reached()
-    line = rp.stats_summary(r)
+    line = stats_summary(r)
     # RK4 at 10 ms: the first invalid state is a wheel lift or a contact point off the table.
     check(line.startswith("stats: FAILED") and
           ("left the KEC table" in line or "wheel lift" in line), f"stats {line!r}")
@@ -527,11 +481,11 @@ def e_failed_run_still_plots_with_banner():
     os.makedirs(out)
     head = f"FAILED at t = {t:.6g} s: rk4"
     done = []
-    for spec in rp.FIGURES:
+    for spec in FIGURES:
         if not spec.is_available(r):
             continue
         if spec.suffix in ("flange_contact", "wheelsets"):
-            fig = rp.build_figure(r, spec)
+            fig = build_figure(r, spec)
             banner = [x for x in fig.texts if x.get_text().startswith(head)]
             check(banner, f"{spec.suffix}: no FAILED banner")
             p = os.path.join(out, f"{spec.suffix}.png")
@@ -539,7 +493,7 @@ def e_failed_run_still_plots_with_banner():
             top = max((ax.get_tightbbox().y1 for ax in fig.axes if ax.get_visible()), default=0)
             b_y0 = banner[0].get_window_extent().y0
             rgb = to_rgb(banner[0].get_color())
-            rp.plt.close(fig)
+            plt.close(fig)
             check(b_y0 >= top - 1,
                   f"{spec.suffix}: banner overlaps the axes ({b_y0:.0f} < {top:.0f})")
             check(os.path.getsize(p) > 30_000, f"{spec.suffix}: {os.path.getsize(p)} bytes")
@@ -551,10 +505,9 @@ def e_failed_run_still_plots_with_banner():
         check(n in done, f"{n} not drawn for the failed run ({done})")
 
 
-@test
-def e_steady_state_is_the_mean_over_the_last_fifth():
+def test_e_steady_state_is_the_mean_over_the_last_fifth():
     r = res("kec")
-    rows = {row["body"]: row for row in rp.steady_state(r)}
+    rows = {row["body"]: row for row in steady_state(r)}
     check(sorted(rows) == sorted(r.bodies), f"bodies {sorted(rows)}")
     for n, b in r.bodies.items():
         s = b.data["s"]
@@ -565,11 +518,10 @@ def e_steady_state_is_the_mean_over_the_last_fifth():
 
 
 def _run_compare(*args):
-    return subprocess.run([PY, COMPARE, *args], capture_output=True, text=True, timeout=120)
+    return rbplot("compare-runs", *args)
 
 
-@test
-def e_compare_runs_figures_and_steady_csv():
+def test_e_compare_runs_figures_and_steady_csv():
     import csv
     out = os.path.join(TMP, "cmp")
     r = _run_compare(_f("kec"), _f("lut"), "--outdir", out, "--prefix", "r150")
@@ -585,7 +537,7 @@ def e_compare_runs_figures_and_steady_csv():
     with open(os.path.join(out, names[2]), newline="") as f:
         rows = list(csv.DictReader(f))
     check(len(rows) == 14, f"{len(rows)} CSV rows, want 2 runs x 7 bodies")
-    ref = {lab: {row["body"]: row for row in rp.steady_state(res(name))}  # CSV: 4 decimals
+    ref = {lab: {row["body"]: row for row in steady_state(res(name))}  # CSV: 4 decimals
            for lab, name in (("KEC", "kec"), ("LUT", "lut"))}
     bad = [f"{row['label']} {row['body']}" for row in rows
            if abs(float(row["y_mm"]) - ref[row["label"]][row["body"]]["y_mm"]) > 1e-4
@@ -593,13 +545,9 @@ def e_compare_runs_figures_and_steady_csv():
     check(not bad, "CSV differs from steady_state: " + ", ".join(bad))
 
 
-@test
-def e_compare_runs_partial_and_no_common_bodies():
-    """compare_runs.main in-process: a body missing in one run, none in common, bad --labels."""
-    import contextlib
+def test_e_compare_runs_partial_and_no_common_bodies():
+    """compare-runs in-process: a body missing in one run, none in common, bad --labels."""
     import h5py
-    import io
-    import compare_runs as cr
     part = os.path.join(TMP, "lut_no_ws4.h5")
     other = os.path.join(TMP, "lut_renamed.h5")
     shutil.copy(_f("lut"), part)
@@ -613,10 +561,8 @@ def e_compare_runs_partial_and_no_common_bodies():
         f["bodies"].attrs["names"] = np.bytes_("")
 
     def run(*args):
-        o, e = io.StringIO(), io.StringIO()
-        with contextlib.redirect_stdout(o), contextlib.redirect_stderr(e):
-            code = cr.main(list(args))
-        return code, o.getvalue(), e.getvalue()
+        r = in_process(cr.main, *args)
+        return r.returncode, r.stdout, r.stderr
 
     out = os.path.join(TMP, "cmp2")
     code, so, se = run(_f("kec"), part, "--labels", "A,B", "--outdir", out)
@@ -627,45 +573,8 @@ def e_compare_runs_partial_and_no_common_bodies():
     check(n == 1 + 2 * 6, f"CSV has {n} lines, want header + 2 x 6")
     code, so, se = run(_f("kec"), other, "--outdir", out)
     lines = [ln for ln in se.splitlines() if ln.strip()]
-    check(code == 1 and len(lines) == 1 and lines[0].startswith("compare_runs: error:")
+    check(code == 1 and len(lines) == 1 and lines[0].startswith("railbench compare-runs: error:")
           and "no bodies in common" in lines[0], f"exit {code}, stderr {se!r}")
     code, so, se = run(_f("kec"), _f("lut"), "--labels", "only-one")
     check(code == 1 and "--labels" in se, f"labels mismatch: exit {code}, {se!r}")
 
-
-def _cpu():
-    """CPU seconds of this process and its finished children (the machine may be shared: wall
-    time alone does not say what the test costs)."""
-    import resource
-    a, b = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
-    return a.ru_utime + a.ru_stime + b.ru_utime + b.ru_stime
-
-
-def main():
-    t0 = time.time()
-    make_runs()
-    print(f"({len(RUNS)} workbench runs, {time.time() - t0:.1f} s, CPU {_cpu():.1f} s)")
-    passed = failed = 0
-    for fn in _tests:
-        t, c = time.time(), _cpu()
-        try:
-            fn()
-            passed += 1
-            print(f"PASS {fn.__name__} ({time.time() - t:.1f} s, CPU {_cpu() - c:.1f} s)")
-        except Exception as e:  # noqa: BLE001
-            failed += 1
-            print(f"FAIL {fn.__name__}: {e}")
-            if not isinstance(e, AssertionError):
-                traceback.print_exc()
-    if failed == 0 and not os.environ.get("RB_KEEP_TMP"):
-        shutil.rmtree(TMP, ignore_errors=True)
-        print(f"({time.time() - t0:.1f} s, CPU {_cpu():.1f} s)")
-    else:
-        print(f"(files kept in {TMP}, {time.time() - t0:.1f} s, CPU {_cpu():.1f} s)")
-    print(f"{passed} passed, {failed} failed")
-    return 0 if failed == 0 else 1
-
-
-if __name__ == "__main__":
-    sys.path.insert(0, PLOTS)
-    sys.exit(main())

@@ -1,37 +1,29 @@
-#!/usr/bin/python3
-"""Tests of plots/plot_study.py and plots/railbench_study.py on a synthetic study folder (plain
-script, no pytest; no workbench needed).
+"""Tests of `plots/rbplot study` (railbench/study*.py) on a synthetic study folder, and of the
+figures `workbench study` draws itself on a real (tiny) study.
 
-usage: /usr/bin/python3 tests/plots/test_study_plots.py   -> exit 0 if all pass, 1 otherwise;
-the last line is "N passed, M failed".  Work files go to a temp dir, removed on success (kept on
-failure, or always with RB_KEEP_TMP=1).
+usage: /usr/bin/python3 -m pytest -q tests/plots/test_study_plots.py
+    The real study needs the workbench program: $RAILBENCH_WORKBENCH, else
+    build/workbench/app/workbench.  Work files go to a temp dir, removed on success (kept on
+    failure, or always with RB_KEEP_TMP=1).
 """
 import csv
 import os
-import shutil
 import subprocess
-import sys
 import tempfile
-import traceback
 
 import h5py
 import numpy as np
+import pytest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-PLOTS = os.path.join(ROOT, "plots")
-sys.path.insert(0, PLOTS)
+from helpers import RBPLOT, ROOT, work_folder
 
-import railbench_study as rs  # noqa: E402
+from railbench.study_cost import accuracy_rows
+from railbench.study_data import compact, load_study, parse_overrides
+from railbench.study_precision import effect_rows, work_precision_rows
 
 TMP = tempfile.mkdtemp(prefix="rb_study_test_")
 WS = ["ws1", "ws2", "ws3", "ws4"]
-_tests = []
-
-
-def test(fn):
-    _tests.append(fn)
-    return fn
+work_files = work_folder(TMP)
 
 
 def write_case(path, t, y, flange=0.0, status="ok", method="kec"):
@@ -61,25 +53,26 @@ def write_case(path, t, y, flange=0.0, status="ok", method="kec"):
         s.attrs["cpu_time_s"] = 1.0
 
 
-# case id, label, role, overrides, status, cpu, evals, y offset [m], t_end
+# case id, label, role, overrides, solver (as workbench study writes it), status, cpu, evals,
+# y offset [m], t_end
 CASES = [
     ("case_a", "KEC abm", "baseline", "contact.method=kec solver.method=abm solver.step=0.00025",
-     "ok", 2.0, 1000, 0.0, 1.0),
+     "abm h=0.25ms", "ok", 2.0, 1000, 0.0, 1.0),
     ("case_b", "LUT K=1e10 abm", "",
      "contact.flange_stiffness=1e10 contact.method=lut solver.method=abm solver.step=0.00025",
-     "ok", 3.0, 1000, 1e-3, 1.0),
+     "abm h=0.25ms", "ok", 3.0, 1000, 1e-3, 1.0),
     ("case_c", "LUT K=1e12 abm", "",
      "contact.flange_stiffness=1e12 contact.method=lut solver.method=abm solver.step=0.00025",
-     "failed", 0.0, 500, 2e-3, 0.5),
+     "abm h=0.25ms", "failed", 0.0, 500, 2e-3, 0.5),
     ("case_d", "KEC bdf tol=1e-6", "",
-     "contact.method=kec solver.atol=1e-06 solver.method=bdf solver.rtol=1e-06", "ok", 4.0, 800,
-     1e-4, 1.0),
+     "contact.method=kec solver.atol=1e-06 solver.method=bdf solver.rtol=1e-06", "bdf tol=1e-6",
+     "ok", 4.0, 800, 1e-4, 1.0),
     ("case_r", "KEC ref", "reference",
      "contact.method=kec profiles.refined_tables=true solver.atol=1e-10 solver.method=bdf "
-     "solver.rtol=1e-09", "ok", 9.0, 5000, 0.0, 1.0),
+     "solver.rtol=1e-09", "bdf rtol=1e-9 atol=1e-10", "ok", 9.0, 5000, 0.0, 1.0),
     ("case_q", "KEC ref check", "reference_check",
      "contact.method=kec profiles.refined_tables=true solver.atol=1e-11 solver.method=bdf "
-     "solver.rtol=1e-10", "ok", 12.0, 9000, 1e-6, 1.0),
+     "solver.rtol=1e-10", "bdf rtol=1e-10 atol=1e-11", "ok", 12.0, 9000, 1e-6, 1.0),
 ]
 
 
@@ -92,32 +85,33 @@ def make_study(d):
         wr, wc = csv.writer(fr), csv.writer(fc)
         wr.writerow(["case", "repeat", "label", "role", "base", "overrides", "status",
                      "cpu_time_s", "rhs_evals", "t_reached", "message", "file"])
-        wc.writerow(["case", "label", "role", "base", "overrides", "runs", "runs_ok", "status",
+        wc.writerow(["case", "label", "role", "base", "overrides", "solver", "runs", "runs_ok",
+                     "status",
                      "median_cpu_time_s", "min_cpu_time_s", "max_cpu_time_s", "rhs_evals",
                      "rhs_evals_jac", "steps", "rejected_steps", "jacobian_evals",
                      "nonlinear_iters", "t_reached", "model_evaluations", "message", "file"])
-        for cid, lab, role, ov, st, cpu, ev, dy, tend in CASES:
+        for cid, lab, role, ov, solver, st, cpu, ev, dy, tend in CASES:
             n = int(round(tend * 100)) + 1
             h5 = os.path.join(d, f"{cid}_r0.h5")
             write_case(h5, t_full[:n], base_y[:n] + dy, flange=1.0 if "lut" in ov else 0.0,
                        status=st, method="lut" if "lut" in ov else "kec")
             msg = "step size too small at t = 0.5" if st != "ok" else ""
             wr.writerow([cid, 0, lab, role, "b.lua", ov, st, cpu, ev, tend, msg, h5])
-            wc.writerow([cid, lab, role, "b.lua", ov, 1, int(st == "ok"), st, cpu, cpu, cpu, ev,
-                         0, ev, 0, 0, 0, tend, ev, msg, h5])
+            wc.writerow([cid, lab, role, "b.lua", ov, solver, 1, int(st == "ok"), st, cpu, cpu,
+                         cpu, ev, 0, ev, 0, 0, 0, tend, ev, msg, h5])
 
 
 DIR = os.path.join(TMP, "study")
 make_study(DIR)
 
 
-@test
-def labels_and_keys():
-    assert rs.compact(1e-06) == "1e-6" and rs.compact(7.075e13) == "7.075e13"
-    ov = rs.parse_overrides("solver.method=bdf solver.rtol=1e-06 solver.atol=1e-06 "
+def test_labels_and_keys():
+    assert compact(1e-06) == "1e-6" and compact(7.075e13) == "7.075e13"
+    ov = parse_overrides("solver.method=bdf solver.rtol=1e-06 solver.atol=1e-06 "
                             "solver.max_step=0.001")
-    assert rs.solver_text(ov) == "bdf tol=1e-6 hmax=1ms", rs.solver_text(ov)
-    st = rs.load_study(DIR)
+    assert ov == {"solver.method": "bdf", "solver.rtol": "1e-06", "solver.atol": "1e-06",
+                  "solver.max_step": "0.001"}
+    st = load_study(DIR)
     c = {x.id: x for x in st.cases}
     assert c["case_b"].method == "lut" and c["case_b"].K == 1e10 and c["case_a"].K is None
     assert c["case_b"].solver_key == "abm h=0.25ms"
@@ -126,10 +120,9 @@ def labels_and_keys():
     assert c["case_b"].physical_key() != c["case_d"].physical_key()
 
 
-@test
-def accuracy_pairs_eq33():
-    st = rs.load_study(DIR)
-    rows = rs.accuracy_rows(st)
+def test_accuracy_pairs_eq33():
+    st = load_study(DIR)
+    rows = accuracy_rows(st)
     by = {(r["lut_case"], r["wheelset"]): r for r in rows}
     # LUT K=1e10 = KEC + 1 mm on every wheelset (times k for wheelset k: y scales, offset too).
     r = by[("case_b", "ws1")]
@@ -143,10 +136,9 @@ def accuracy_pairs_eq33():
     assert ("case_d", "ws1") not in by  # BDF has no LUT partner
 
 
-@test
-def work_precision_against_reference():
-    st = rs.load_study(DIR)
-    rows = {r["case"]: r for r in rs.work_precision_rows(st)}
+def test_work_precision_against_reference():
+    st = load_study(DIR)
+    rows = {r["case"]: r for r in work_precision_rows(st)}
     assert abs(float(rows["case_d"]["y_max_mm"]) - 0.4) < 1e-6, rows["case_d"]  # 0.1 mm x ws4
     assert abs(float(rows["case_d"]["y_rms_mm"]) - 0.1 * np.sqrt(7.5)) < 1e-3
     assert rows["case_q"]["note"].startswith("reference_check")
@@ -154,19 +146,16 @@ def work_precision_against_reference():
     assert rows["case_b"]["note"] == "no reference case with the same model"
 
 
-@test
-def effects_relative():
-    st = rs.load_study(DIR)
-    rows = {r["case"]: r for r in rs.effect_rows(st)}
+def test_effects_relative():
+    st = load_study(DIR)
+    rows = {r["case"]: r for r in effect_rows(st)}
     assert float(rows["case_a"]["us_per_eval"]) == 2000.0
     assert float(rows["case_b"]["relative_to_baseline"]) == 1.5
     assert rows["case_c"]["us_per_eval"] == ""  # failed
 
 
-@test
-def plot_study_writes_everything():
-    out = subprocess.run(["/usr/bin/python3", os.path.join(PLOTS, "plot_study.py"), DIR],
-                         capture_output=True, text=True)
+def test_plot_study_writes_everything():
+    out = subprocess.run([RBPLOT, "study", DIR], capture_output=True, text=True)
     assert out.returncode == 0, out.stderr
     names = {os.path.basename(p) for p in out.stdout.split()}
     for n in ("study_cost.png", "study_cost.csv", "study_failures.csv",
@@ -180,31 +169,38 @@ def plot_study_writes_everything():
     assert cost["case_b"]["K"] == "1e10" and cost["case_b"]["us_per_eval"] == "3000.000"
 
 
-@test
-def not_a_study_folder():
-    out = subprocess.run(["/usr/bin/python3", os.path.join(PLOTS, "plot_study.py"), TMP],
-                         capture_output=True, text=True)
-    assert out.returncode == 1 and out.stderr.startswith("plot_study: error: "), out.stderr
+def test_not_a_study_folder():
+    out = subprocess.run([RBPLOT, "study", TMP], capture_output=True, text=True)
+    assert out.returncode == 1 and out.stderr.startswith("railbench study: error: "), out.stderr
 
 
-def main():
-    passed = failed = 0
-    for fn in _tests:
-        try:
-            fn()
-            passed += 1
-            print(f"ok: {fn.__name__}")
-        except Exception:  # noqa: BLE001
-            failed += 1
-            print(f"FAILED: {fn.__name__}")
-            traceback.print_exc()
-    print(f"{passed} passed, {failed} failed")
-    if failed == 0 and not os.environ.get("RB_KEEP_TMP"):
-        shutil.rmtree(TMP, ignore_errors=True)
-    else:
-        print(f"work files kept in {TMP}")
-    return 0 if failed == 0 else 1
 
-
-if __name__ == "__main__":
-    sys.exit(main())
+def test_workbench_study_writes_the_solver_labels_and_draws_the_figures():
+    """A real study (tests/scenarios/data/study_plots.lua: 7 cases of 2 m): `workbench study`
+    writes each case's solver label into summary_cases.csv and runs `python3 -m railbench study`,
+    whose cost table groups the cases by that label."""
+    wb = os.environ.get("RAILBENCH_WORKBENCH") or \
+        os.path.join(ROOT, "build", "workbench", "app", "workbench")
+    if not os.access(wb, os.X_OK):
+        pytest.fail(f"no workbench program at {wb} (set RAILBENCH_WORKBENCH)")
+    out = os.path.join(TMP, "real_study")
+    env = dict(os.environ, RAILBENCH_ROOT=ROOT)
+    env.pop("RAILBENCH_STUDY_PLOTS", None)
+    r = subprocess.run([wb, "study", "tests/scenarios/data/study_plots.lua", "--out", out],
+                       cwd=ROOT, env=env, capture_output=True, text=True, timeout=280,
+                       stdin=subprocess.DEVNULL)
+    assert r.returncode == 0, r.stdout + r.stderr
+    with open(os.path.join(out, "summary_cases.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert sorted({row["solver"] for row in rows}) == ["", "dopri5 tol=1e-7", "dopri5 tol=1e-8",
+                                                      "rk4 h=0.5ms"], rows
+    for row in rows:  # the label holds the solver label the figures group by
+        assert row["solver"] in row["label"], row
+    with open(os.path.join(out, "study_cost.csv"), newline="") as f:
+        cost = {row["case"]: row for row in csv.DictReader(f)}
+    by_case = {row["case"]: row for row in rows}
+    for cid, row in cost.items():
+        assert row["solver"] == (by_case[cid]["solver"] or row["integrator"]), row
+    for name in ("study_cost.png", "study_accuracy_lut_vs_kec.png", "study_work_precision.png",
+                 "study_effects.png"):
+        assert os.path.getsize(os.path.join(out, name)) > 10000, name

@@ -1,10 +1,10 @@
-#!/usr/bin/python3
-"""Tests of plots/plot_tables.py and plots/railbench_tables.py (plain script, no pytest).
+"""Tests of `plots/rbplot tables` (railbench/tables*.py).
 
-usage: /usr/bin/python3 tests/plots/test_tables_plots.py               -> runs the tests
-       /usr/bin/python3 tests/plots/test_tables_plots.py --fixture OUT.h5  -> writes the fixture
+usage: /usr/bin/python3 -m pytest -q tests/plots/test_tables_plots.py   -> runs the tests
+       PYTHONPATH=plots:tests/plots /usr/bin/python3 -c \
+         'import test_tables_plots as t; t.make_tables_fixture("OUT.h5")'   -> writes the fixture
 
-Exit 0 if all pass, 1 otherwise; the last line is "N passed, M failed".  Work files go to a temp
+Work files go to a temp
 dir, removed on success (kept on failure, or always with RB_KEEP_TMP=1).  A real file written by
 `workbench tables` is tested too when RB_TABLES_H5 names one or /tmp/tables.h5 exists.
 
@@ -20,20 +20,18 @@ through the knife points (Eq. 22 with the solved z, phi) and bridge its jumps li
 """
 import os
 import shutil
-import subprocess
-import sys
 import tempfile
 import time
-import traceback
+import types
 
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-PLOTS = os.path.join(ROOT, "plots")
-PLOT_TABLES = os.path.join(PLOTS, "plot_tables.py")
-PY = "/usr/bin/python3"
-sys.path[:0] = [PLOTS]
+from helpers import check, in_process, one_line_error, rbplot, work_folder
+from railbench import tables as tables_command
+from railbench.tables import FIGURES, summary_line
+from railbench.tables_data import _rail_track, _wheel_track, knife_point, load_tables
+from railbench.tables_figs import kec_solve
+from railbench.tables_maps import conicity_at
 
 FIGS = ["profiles_contact", "lut_z", "kec_map", "rolling_radius", "conicity"]
 
@@ -306,34 +304,19 @@ FIX = os.path.join(TMP, "fx.h5")
 REAL = os.environ.get("RB_TABLES_H5") or ("/tmp/tables.h5" if os.path.exists("/tmp/tables.h5")
                                           else None)
 
-_tests = []
-
-
-def test(fn):
-    _tests.append(fn)
-    return fn
-
-
-def check(cond, msg):
-    if not cond:
-        raise AssertionError(msg)
+work_files = work_folder(TMP, lambda: make_tables_fixture(FIX))
 
 
 def run_cli(*args):
-    """plot_tables.py as a process: (exit code, stdout, stderr)."""
-    r = subprocess.run([PY, PLOT_TABLES, *args], capture_output=True, text=True, timeout=120)
+    """`plots/rbplot tables` as a process: (exit code, stdout, stderr)."""
+    r = rbplot("tables", *args)
     return r.returncode, r.stdout, r.stderr
 
 
 def run_main(*args):
-    """plot_tables.main in this process (faster than a new interpreter)."""
-    import contextlib
-    import io
-    import plot_tables
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = plot_tables.main(list(args))
-    return code, out.getvalue(), err.getvalue()
+    """The tables command's main in this process (faster than a new interpreter)."""
+    r = in_process(tables_command.main, *args)
+    return r.returncode, r.stdout, r.stderr
 
 
 def _variant(name, drop=(), edit=None):
@@ -376,17 +359,12 @@ def _suffixes(paths, stem):
 
 
 def _one_line_error(code, out, err, needle):
-    check(code == 1, f"exit {code}, expected 1")
-    lines = [ln for ln in err.splitlines() if ln.strip()]
-    check(len(lines) == 1, f"stderr has {len(lines)} lines: {err!r}")
-    check(lines[0].startswith("plot_tables: error:") and needle in lines[0],
-          f"message {lines[0]!r} lacks {needle!r}")
-    check(out.strip() == "", f"stdout {out!r}")
+    one_line_error(types.SimpleNamespace(returncode=code, stdout=out, stderr=err), "tables",
+                   needle)
 
 
 # ---- (a) the full fixture through the CLI -------------------------------------------------------
-@test
-def a_cli_writes_all_figures():
+def test_a_cli_writes_all_figures():
     outdir = os.path.join(TMP, "out_full")
     code, out, err = run_cli(FIX, "--outdir", outdir)
     check(code == 0, f"exit {code}: {err.strip()}")
@@ -400,8 +378,7 @@ def a_cli_writes_all_figures():
     check(err.strip() == "", f"stderr {err!r}")
 
 
-@test
-def a_default_outdir_is_next_to_file():
+def test_a_default_outdir_is_next_to_file():
     d = os.path.join(TMP, "beside")
     os.makedirs(d)
     src = os.path.join(d, "tab.h5")
@@ -412,24 +389,20 @@ def a_default_outdir_is_next_to_file():
           f"folder has {sorted(os.listdir(d))}")
 
 
-@test
-def a_summary_line():
-    import railbench_tables as rt
-    t = rt.load_tables(FIX)
-    s = rt.summary_line(t)
+def test_a_summary_line():
+    t = load_tables(FIX)
+    s = summary_line(t)
     check("\n" not in s and s.startswith("tables: "), s)
     for part in ("LUT 121 x 5 (y x xi_g)", "KEC 801 points", "tan(gamma_e) at 3 mm = 0.05",
                  "two-point contact at y = -5.7", "+5.7", "config 0123456789abcdef", " MB", " kB"):
         check(part in s, f"{part!r} not in {s!r}")
-    v = rt.conicity_at(t, 3e-3)
+    v = conicity_at(t, 3e-3)
     check(v is not None and abs(v - 0.0526) < 0.002, f"conicity at 3 mm {v}")
 
 
 # ---- (b) reading and geometry on the fixture ----------------------------------------------------
-@test
-def b_load_shapes_and_two_point():
-    import railbench_tables as rt
-    t = rt.load_tables(FIX)
+def test_b_load_shapes_and_two_point():
+    t = load_tables(FIX)
     check(t.lut.ch["z"].shape == (5, 121) and t.lut.y.size == 121, "LUT shape")
     check({"left_s_w", "right_flange_delta", "phi"} <= set(t.lut.ch), "channels missing")
     tp = t.lut.two_points(0.0)
@@ -442,51 +415,44 @@ def b_load_shapes_and_two_point():
 def _contact_mismatch(t):
     """Largest distance [m] between the LUT's wheel and rail contact points, both placed in the
     track frame the way fig_profiles_contact places them (checks the frame conventions)."""
-    import railbench_tables as rt
     worst = 0.0
     for row in range(t.lut.xi_g.size):
         y, z, phi = t.lut.y, t.lut.ch["z"][row], t.lut.ch["phi"][row]
-        wy, wz = rt._wheel_track(t.wheel, y, z, phi, t.g("lw"), s=t.lut.ch["left_s_w"][row])
-        ry, rz = rt._rail_track(t.rail, t.g("lr"), t.g("beta"), t.lut.xi_g[row],
+        wy, wz = _wheel_track(t.wheel, y, z, phi, t.g("lw"), s=t.lut.ch["left_s_w"][row])
+        ry, rz = _rail_track(t.rail, t.g("lr"), t.g("beta"), t.lut.xi_g[row],
                                 s=t.lut.ch["left_s_r"][row])
         worst = max(worst, float(np.max(np.hypot(wy - ry, wz - rz))))
     return worst
 
 
-@test
-def b_contact_points_coincide_in_track_frame():
-    import railbench_tables as rt
-    d = _contact_mismatch(rt.load_tables(FIX))
+def test_b_contact_points_coincide_in_track_frame():
+    d = _contact_mismatch(load_tables(FIX))
     check(d < 2e-6, f"wheel and rail contact points {d * 1e3:.4f} mm apart")
 
 
 def _kec_vs_lut(t, ys):
     """Largest |dz|, |dphi| between the KEC solve (Eq. 22) and the LUT at xi_g = 0."""
-    import railbench_tables as rt
     row = t.lut.row(0.0)
     dz = dp = 0.0
     for yv in ys:
         i = int(np.argmin(np.abs(t.lut.y - yv)))
-        sol = rt.kec_solve(t.kec, float(t.lut.y[i]), t.g("r0"), t.g("lr"))
+        sol = kec_solve(t.kec, float(t.lut.y[i]), t.g("r0"), t.g("lr"))
         check(sol is not None, f"KEC solve failed at y = {yv}")
         dz = max(dz, abs(sol[0] - t.lut.ch["z"][row, i]))
         dp = max(dp, abs(sol[1] - t.lut.ch["phi"][row, i]))
     return dz, dp
 
 
-@test
-def b_kec_solve_matches_lut_before_two_point():
-    import railbench_tables as rt
-    t = rt.load_tables(FIX)
-    s, f = rt.knife_point(0.0, rt.load_tables(FIX).lut.ch["z"][2, 60], 0.0, FX_R0, FX_LR)
+def test_b_kec_solve_matches_lut_before_two_point():
+    t = load_tables(FIX)
+    s, f = knife_point(0.0, load_tables(FIX).lut.ch["z"][2, 60], 0.0, FX_R0, FX_LR)
     check(abs(s) < 1e-15, f"knife point at y = 0: s_k = {s}")
     dz, dp = _kec_vs_lut(t, [-4e-3, -2e-3, 0.0, 1.5e-3, 3e-3, 4e-3])
     check(dz < 1e-7 and dp < 1e-7, f"|dz| {dz:.2e} m, |dphi| {dp:.2e}")
 
 
 # ---- (c) missing groups: their figures are skipped ----------------------------------------------
-@test
-def c_missing_groups_skip_figures():
+def test_c_missing_groups_skip_figures():
     cases = [
         ("no_kec", ["tables/kec"], None, [f for f in FIGS if f != "kec_map"]),
         ("no_lut", ["tables/lut"], None, ["kec_map", "rolling_radius", "conicity"]),
@@ -515,8 +481,7 @@ def c_missing_groups_skip_figures():
             check(err.strip() == "", f"{name}: stderr {err!r}")
 
 
-@test
-def c_kec_with_left_wheel_only():
+def test_c_kec_with_left_wheel_only():
     def edit(f):
         for k in list(f["tables/kec"]):
             if k.startswith("right_"):
@@ -528,8 +493,7 @@ def c_kec_with_left_wheel_only():
 
 
 # ---- (d) bad files: one line on stderr, exit 1 --------------------------------------------------
-@test
-def d_missing_and_garbage_files_as_process():
+def test_d_missing_and_garbage_files_as_process():
     _one_line_error(*run_cli(os.path.join(TMP, "nope.h5")), "no such file")
     bad = os.path.join(TMP, "garbage.h5")
     with open(bad, "w") as fh:
@@ -537,8 +501,7 @@ def d_missing_and_garbage_files_as_process():
     _one_line_error(*run_cli(bad), "not a readable HDF5 file")
 
 
-@test
-def d_not_a_tables_file_and_broken_groups():
+def test_d_not_a_tables_file_and_broken_groups():
     import h5py
     other = os.path.join(TMP, "other.h5")
     with h5py.File(other, "w") as f:
@@ -567,33 +530,30 @@ def d_not_a_tables_file_and_broken_groups():
     _one_line_error(*run_main(_variant("text_y", edit=text_y)), "not numeric")
 
 
-@test
-def d_unwritable_outdir():
+def test_d_unwritable_outdir():
     blocker = os.path.join(TMP, "a_file")
     with open(blocker, "w") as fh:
         fh.write("x")
-    _one_line_error(*run_main(FIX, "--outdir", os.path.join(blocker, "sub")), "plot_tables")
+    _one_line_error(*run_main(FIX, "--outdir", os.path.join(blocker, "sub")), "a_file")
 
 
 # ---- (e) a real file from `workbench tables` ----------------------------------------------------
-@test
-def e_real_file():
+def test_e_real_file():
     if not REAL or not os.path.exists(REAL):
-        print("  (skipped: no /tmp/tables.h5 and RB_TABLES_H5 not set)")
-        return
-    import railbench_tables as rt
-    t = rt.load_tables(REAL)
+        import pytest
+        pytest.skip("no /tmp/tables.h5 and RB_TABLES_H5 not set")
+    t = load_tables(REAL)
     stem = os.path.splitext(os.path.basename(REAL))[0]
     outdir = os.path.join(TMP, "out_real")
     code, out, err = run_main(REAL, "--outdir", outdir)
     check(code == 0, f"exit {code}: {err}")
     paths = _written(out)
-    expect = [spec.suffix for spec in rt.FIGURES if spec.is_available(t)]
+    expect = [spec.suffix for spec in FIGURES if spec.is_available(t)]
     check(_suffixes(paths, stem) == sorted(expect), f"written {paths}, expected {expect}")
     for p in paths:
         _png_ok(p)
     s = out.splitlines()[0]
-    check(s == rt.summary_line(t) and s.startswith("tables: LUT "), f"summary {s!r}")
+    check(s == summary_line(t) and s.startswith("tables: LUT "), f"summary {s!r}")
     if t.lut is not None and t.wheel is not None and t.has_geometry:
         d = _contact_mismatch(t)
         check(d < 1e-7, f"real file: contact points {d * 1e3:.5f} mm apart in the track frame")
@@ -602,34 +562,3 @@ def e_real_file():
         check(dz < 1e-6 and dp < 1e-6, f"real file: KEC vs LUT |dz| {dz:.2e}, |dphi| {dp:.2e}")
     print(f"  ({REAL}: {s})")
 
-
-def main():
-    t0 = time.time()
-    make_tables_fixture(FIX)
-    print(f"fixture written in {time.time() - t0:.1f} s")
-    passed = failed = 0
-    for fn in _tests:
-        t = time.time()
-        try:
-            fn()
-            passed += 1
-            print(f"PASS {fn.__name__} ({time.time() - t:.1f} s)")
-        except Exception as e:  # noqa: BLE001
-            failed += 1
-            print(f"FAIL {fn.__name__}: {e}")
-            if not isinstance(e, AssertionError):
-                traceback.print_exc()
-    if failed == 0 and not os.environ.get("RB_KEEP_TMP"):
-        shutil.rmtree(TMP, ignore_errors=True)
-        print(f"({time.time() - t0:.1f} s)")
-    else:
-        print(f"(files kept in {TMP}, {time.time() - t0:.1f} s)")
-    print(f"{passed} passed, {failed} failed")
-    return 0 if failed == 0 else 1
-
-
-if __name__ == "__main__":
-    if len(sys.argv) > 2 and sys.argv[1] == "--fixture":
-        make_tables_fixture(sys.argv[2])
-        sys.exit(0)
-    sys.exit(main())

@@ -224,33 +224,67 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-// Figures and tables of the study (plots/plot_study.py, Debian's python3 as in ./wb run): 0 when
-// drawn or switched off (RAILBENCH_STUDY_PLOTS=0) or when python3 / the script is missing (a
-// note), 4 when the script failed (the study's results are complete all the same).
+// The solver part of a case's label (caseLabel of its solver.* overrides: "rk4 h=0.25ms",
+// "bdf tol=1e-6 hmax=1ms"), "" when the case keeps the base scenario's solver. The figures
+// group cases by it, so they read it from summary_cases.csv instead of deriving it again.
+std::string solverLabel(const std::vector<std::string>& overrides) {
+  std::vector<std::string> solver;
+  for (const auto& o : overrides)
+    if (o.rfind("solver.", 0) == 0) solver.push_back(o);
+  const std::string label = scenario::caseLabel(solver);
+  return solver.empty() || label == "base" ? std::string() : label;
+}
+
+// The environment of the figures' python: this one with <root>/plots first on PYTHONPATH, so
+// that `python3 -m railbench` finds the package (built before fork: the child only execs).
+std::vector<std::string> plotsEnvironment(const fs::path& plots) {
+  std::vector<std::string> env;
+  std::string path = plots.string();
+  for (char** e = environ; e && *e; ++e) {
+    std::string kv = *e;
+    if (kv.rfind("PYTHONPATH=", 0) == 0) {
+      if (kv.size() > 11) path += ":" + kv.substr(11);
+      continue;
+    }
+    env.push_back(std::move(kv));
+  }
+  env.push_back("PYTHONPATH=" + path);
+  return env;
+}
+
+// Figures and tables of the study (`plots/rbplot study DIR`, run as `python3 -m railbench study
+// DIR` with Debian's python3 as in ./wb run): 0 when drawn or switched off
+// (RAILBENCH_STUDY_PLOTS=0) or when python3 / the package is missing (a note), 4 when the
+// command failed (the study's results are complete all the same).
 int plotStudy(const StudyOptions& o, const std::string& dir) {
   if (const char* e = std::getenv("RAILBENCH_STUDY_PLOTS"); e && std::string(e) == "0") return 0;
   const char* env = std::getenv("RAILBENCH_PYTHON");
   std::string python = env && *env ? env : "/usr/bin/python3";
-  fs::path script = fs::path(o.root) / "plots" / "plot_study.py";
-  if (!fs::exists(python) || !fs::exists(script)) {
-    std::cerr << "study: note: no figures (" << (fs::exists(python) ? script.string() : python)
+  const fs::path plots = fs::path(o.root) / "plots";
+  const fs::path entry = plots / "railbench" / "__main__.py";
+  if (!fs::exists(python) || !fs::exists(entry)) {
+    std::cerr << "study: note: no figures (" << (fs::exists(python) ? entry.string() : python)
               << " not found)\n";
     return 0;
   }
+  std::vector<std::string> args = {python, "-m", "railbench", "study", dir};
+  std::vector<std::string> envs = plotsEnvironment(plots);
+  std::vector<char*> argv;
+  std::vector<char*> envp;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  for (auto& e : envs) envp.push_back(e.data());
+  envp.push_back(nullptr);
   std::cout.flush();
   pid_t pid = fork();
   if (pid == 0) {
-    std::vector<std::string> args = {python, script.string(), dir};
-    std::vector<char*> argv;
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(python.c_str(), argv.data());
+    execve(python.c_str(), argv.data(), envp.data());
     _exit(127);
   }
   int status = 0;
   if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::cerr << "study: the figures failed: " << python << " " << script.string() << " " << dir
-              << "\n";
+    std::cerr << "study: the figures failed: PYTHONPATH=" << plots.string() << " " << python
+              << " -m railbench study " << dir << "\n";
     return 4;
   }
   return 0;
@@ -289,22 +323,14 @@ std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string&
   return hex16(h.value());
 }
 
-int runStudy(const StudyOptions& o) {
-  scenario::StudySpec st = scenario::loadStudy(o.file, o.root);
-  fs::path dir = o.out.empty() ? fs::path("out") / fs::path(o.file).stem() : fs::path(o.out);
-  std::error_code ec;
-  fs::create_directories(dir / ".locks", ec);
-  if (ec)
-    throw InputError({o.file, 0}, "cannot create the study's output folder " +
-                                      (dir / ".locks").string() + ": " + ec.message());
-  int jobs = o.jobs > 0    ? o.jobs
-             : st.jobs > 0 ? st.jobs
-                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+namespace {
 
-  // The input hash of every case, from the scenario as the run will load it. A case that does
-  // not load gets no hash: it is always run (and its log says why it fails).
-  const std::string build = buildId(o.program);
-  auto hashOf = [&](const scenario::StudyCase& c) {
+// The input hash of a case, from the scenario as the run will load it. A case that does not load
+// gets no hash: it is always run (and its log says why it fails).
+struct CaseHasher {
+  const StudyOptions& o;
+  std::string build;
+  std::string operator()(const scenario::StudyCase& c) const {
     try {
       scenario::LoadOptions lo;
       lo.root = o.root;
@@ -313,10 +339,12 @@ int runStudy(const StudyOptions& o) {
     } catch (const InputError&) {
       return std::string();
     }
-  };
-  std::map<std::string, std::string> hashes;
-  for (const auto& c : st.cases) hashes[c.id] = hashOf(c);
+  }
+};
 
+// Every run of the study (case x repeat) with its file names in `dir`.
+std::vector<Job> listJobs(const scenario::StudySpec& st, const fs::path& dir,
+                          std::map<std::string, std::string>& hashes) {
   std::vector<Job> all;
   for (const auto& c : st.cases)
     for (int r = 0; r < st.repeats; ++r) {
@@ -330,91 +358,66 @@ int runStudy(const StudyOptions& o) {
       j.hash = &hashes[c.id];
       all.push_back(j);
     }
-  std::vector<std::size_t> todo;
-  for (std::size_t i = 0; i < all.size(); ++i)
-    if (!isDone(all[i].h5, *all[i].hash)) todo.push_back(i);
-  std::cerr << st.file << ": " << st.cases.size() << " cases x " << st.repeats << " repeats, "
-            << all.size() - todo.size() << " already done, running " << todo.size() << " with "
-            << jobs << " jobs\n";
+  return all;
+}
 
-  auto stray = leftovers(dir);
-  std::map<pid_t, std::size_t> running;
-  std::size_t next = 0, done = 0, skipped = 0;
-  auto report = [&](const Job& j, const std::string& what) {
-    std::cerr << "  [" << ++done << "/" << todo.size() << "] " << j.c->id << " r" << j.repeat
-              << ": " << what << "  " << j.c->label << "\n";
-  };
-  while (next < todo.size() || !running.empty()) {
-    while (next < todo.size() && static_cast<int>(running.size()) < jobs) {
-      Job& j = all[todo[next++]];
-      std::string why;
-      const Lock l = tryLock(j, why);
-      if (l == Lock::Busy) {
-        j.outcome = Outcome::Skipped;
-        ++skipped;
-        report(j, "skipped: being run by another runner");
-        continue;
-      }
-      if (l == Lock::Error) {
-        j.outcome = Outcome::Ran;
-        j.note = why;
-        report(j, "error: " + why);
-        continue;
-      }
-      if (isDone(j.h5, *j.hash)) {  // finished by another runner since the listing
-        unlock(j);
-        j.outcome = Outcome::Ran;
-        report(j, "done by another runner");
-        continue;
-      }
-      removeLeftovers(stray, j);
-      std::error_code ignored;
-      fs::remove(j.h5, ignored);  // a result of other inputs: never to be mistaken for this one
-      j.work = (dir / (j.name + ".run-" + uniqueSuffix() + ".h5")).string();
-      pid_t pid = launch(o, j);
-      if (pid < 0) {
-        j.outcome = Outcome::Ran;
-        j.note = "cannot start a process: " + std::string(std::strerror(errno));
-        unlock(j);
-        report(j, "error: " + j.note);
-        continue;
-      }
-      running[pid] = todo[next - 1];
+// The process pool of one runner: starts the runs that are not done and no other runner holds,
+// `jobs` at a time, and gives each finished run its final name.
+class Pool {
+ public:
+  Pool(const StudyOptions& o, const fs::path& dir, const CaseHasher& hashOf, std::size_t total)
+      : o_(o), dir_(dir), hashOf_(hashOf), total_(total), stray_(leftovers(dir)) {}
+
+  // Starts the run `index` of `all`, or reports why not (held by another runner, done, error).
+  void start(std::vector<Job>& all, std::size_t index) {
+    Job& j = all[index];
+    std::string why;
+    const Lock l = tryLock(j, why);
+    if (l == Lock::Busy) {
+      j.outcome = Outcome::Skipped;
+      ++skipped;
+      report(j, "skipped: being run by another runner");
+      return;
     }
-    if (running.empty()) continue;
-    int status = 0;
-    pid_t pid = wait(&status);
-    if (pid < 0 && errno == EINTR) continue;
-    if (pid < 0) break;
-    auto it = running.find(pid);
-    if (it == running.end()) continue;
-    Job& j = all[it->second];
-    running.erase(it);
+    if (l == Lock::Error) {
+      j.outcome = Outcome::Ran;
+      j.note = why;
+      report(j, "error: " + why);
+      return;
+    }
+    if (isDone(j.h5, *j.hash)) {  // finished by another runner since the listing
+      unlock(j);
+      j.outcome = Outcome::Ran;
+      report(j, "done by another runner");
+      return;
+    }
+    removeLeftovers(stray_, j);
+    std::error_code ignored;
+    fs::remove(j.h5, ignored);  // a result of other inputs: never to be mistaken for this one
+    j.work = (dir_ / (j.name + ".run-" + uniqueSuffix() + ".h5")).string();
+    pid_t pid = launch(o_, j);
+    if (pid < 0) {
+      j.outcome = Outcome::Ran;
+      j.note = "cannot start a process: " + std::string(std::strerror(errno));
+      unlock(j);
+      report(j, "error: " + j.note);
+      return;
+    }
+    running[pid] = index;
+  }
+
+  // The run `j` exited with `status`.
+  void finish(Job& j, int status) {
     j.outcome = Outcome::Ran;
     int code = WIFEXITED(status) ? WEXITSTATUS(status)
                                  : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-    // Only a complete result of unchanged inputs gets the final name, stamped with their hash.
     // A run that exits with another code than ok (0) or failed (2) has no result: its log says
     // why, and whatever file it left is removed.
+    std::error_code ignored;
     if (isRegularFile(j.work) && code != 0 && code != 2) {
-      std::error_code ignored;
       fs::remove(j.work, ignored);
     } else if (isRegularFile(j.work)) {
-      const auto rec = io::readStats(j.work);
-      const std::string after = hashOf(*j.c);
-      if (!rec || !rec->text.count("status")) {
-        j.note = "the run left an incomplete result file (no /stats/status); discarded";
-      } else if (j.hash->empty() || after != *j.hash) {
-        j.note =
-            "the case's input files changed while it ran; its result was discarded (run "
-            "the study again)";
-      } else if (!io::writeRootText(j.work, "input_hash", *j.hash)) {
-        j.note = "cannot stamp the input hash into " + j.work;
-      } else {
-        fs::rename(j.work, j.h5, ec);
-        if (ec) j.note = "cannot rename " + j.work + " to " + j.h5 + ": " + ec.message();
-      }
-      std::error_code ignored;
+      j.note = keep(j);
       if (!j.note.empty()) fs::remove(j.work, ignored);
     }
     unlock(j);
@@ -424,77 +427,147 @@ int runStudy(const StudyOptions& o) {
                               : "error " + std::to_string(code));
   }
 
-  // Summaries of everything this folder holds for the study, written under a study-wide lock so
-  // that runners finishing together do not interleave them.
-  int summaryLock = ::open((dir / ".locks" / "summary.lock").c_str(),
-                           O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
-  if (summaryLock >= 0) ::flock(summaryLock, LOCK_EX);
+  std::map<pid_t, std::size_t> running;
+  std::size_t skipped = 0;
 
-  // Summary: one row per run, then per case the median CPU time over the repeats.
+ private:
+  // Only a complete result of unchanged inputs gets the final name, stamped with their hash;
+  // "" when it got it, else why not.
+  std::string keep(const Job& j) const {
+    const auto rec = io::readStats(j.work);
+    if (!rec || !rec->text.count("status"))
+      return "the run left an incomplete result file (no /stats/status); discarded";
+    if (j.hash->empty() || hashOf_(*j.c) != *j.hash)
+      return "the case's input files changed while it ran; its result was discarded (run the "
+             "study again)";
+    if (!io::writeRootText(j.work, "input_hash", *j.hash))
+      return "cannot stamp the input hash into " + j.work;
+    std::error_code ec;
+    fs::rename(j.work, j.h5, ec);
+    return ec ? "cannot rename " + j.work + " to " + j.h5 + ": " + ec.message() : std::string();
+  }
+
+  void report(const Job& j, const std::string& what) {
+    std::cerr << "  [" << ++done_ << "/" << total_ << "] " << j.c->id << " r" << j.repeat << ": "
+              << what << "  " << j.c->label << "\n";
+  }
+
+  const StudyOptions& o_;
+  fs::path dir_;
+  const CaseHasher& hashOf_;
+  std::size_t total_;
+  std::map<std::string, std::vector<fs::path>> stray_;
+  std::size_t done_ = 0;
+};
+
+// Runs the runs `todo` of `all`, `jobs` at a time; the number skipped (held by another runner).
+std::size_t runJobs(Pool& pool, std::vector<Job>& all, const std::vector<std::size_t>& todo,
+                    int jobs) {
+  std::size_t next = 0;
+  while (next < todo.size() || !pool.running.empty()) {
+    while (next < todo.size() && static_cast<int>(pool.running.size()) < jobs)
+      pool.start(all, todo[next++]);
+    if (pool.running.empty()) continue;
+    int status = 0;
+    pid_t pid = wait(&status);
+    if (pid < 0 && errno == EINTR) continue;
+    if (pid < 0) break;
+    auto it = pool.running.find(pid);
+    if (it == pool.running.end()) continue;
+    Job& j = all[it->second];
+    pool.running.erase(it);
+    pool.finish(j, status);
+  }
+  return pool.skipped;
+}
+
+const std::vector<std::string> kSummaryNumbers = {
+    "cpu_time_s",     "wall_time_s",    "rhs_evals",       "rhs_evals_jac", "steps",
+    "rejected_steps", "jacobian_evals", "nonlinear_iters", "t_reached",     "model_evaluations"};
+
+// Per case: the CPU times of its ok repeats, and the status, reason and counts of its first
+// problem (or of its first run when every repeat is ok).
+struct CaseSum {
+  std::vector<double> cpu;
+  int runs = 0;
+  std::string status, message, file;
+  std::map<std::string, double> first;  // counts of the first run (exact, equal over repeats)
+};
+
+// What the summaries hold: summary.csv's text, the per-case sums, the columns of summary.h5.
+struct Summary {
   std::ostringstream csv;
-  csv.precision(12);  // counts above 1e6 exactly, CPU times to the nanosecond
-  const std::vector<std::string> nums = {
-      "cpu_time_s",     "wall_time_s",    "rhs_evals",       "rhs_evals_jac", "steps",
-      "rejected_steps", "jacobian_evals", "nonlinear_iters", "t_reached",     "model_evaluations"};
-  csv << "case,repeat,label,role,base,overrides,status";
-  for (const auto& k : nums) csv << "," << k;
-  csv << ",message,file\n";
-  struct CaseSum {
-    std::vector<double> cpu;
-    int runs = 0;
-    std::string status, message, file;
-    std::map<std::string, double> first;  // counts of the first run (exact, equal over repeats)
-  };
-  std::map<std::string, CaseSum> sum;
-  std::vector<double> colStatus;
+  std::map<std::string, CaseSum> cases;
+  std::vector<double> ok;
   std::map<std::string, std::vector<double>> cols;
   std::size_t runsOk = 0, runsKnown = 0, runsElsewhere = 0;
+};
+
+// The status of a run in the summary, and its reason.
+struct RunState {
+  std::string status, message;
+};
+
+// The state of a run that left no valid result.
+RunState noResult(const Job& j, Summary& sm) {
+  if (j.outcome == Outcome::Skipped) {
+    ++sm.runsElsewhere;
+    return {"skipped", "being run by another runner when this summary was written"};
+  }
+  if (!j.note.empty()) return {"error", j.note};
+  // The run stopped on bad input or crashed; its log says why.
+  std::ifstream log(j.log);
+  std::string line, last;
+  while (std::getline(log, line))
+    if (!line.empty()) last += (last.empty() ? "" : " | ") + line;
+  return {"error", last.empty() ? "no result" : last.substr(0, 500)};
+}
+
+// One row of summary.csv per run, and the per-case sums.
+void summariseRuns(const std::vector<Job>& all, Summary& sm) {
+  sm.csv.precision(12);  // counts above 1e6 exactly, CPU times to the nanosecond
+  sm.csv << "case,repeat,label,role,base,overrides,status";
+  for (const auto& k : kSummaryNumbers) sm.csv << "," << k;
+  sm.csv << ",message,file\n";
   for (const auto& j : all) {
     const bool valid = isDone(j.h5, *j.hash);
     auto rec = valid ? io::readStats(j.h5) : std::nullopt;
-    std::string status = rec ? rec->text["status"] : "error";
-    std::string message = rec ? rec->text["message"] : "";
-    if (!rec && j.outcome == Outcome::Skipped) {
-      status = "skipped";
-      message = "being run by another runner when this summary was written";
-      ++runsElsewhere;
-    } else if (!rec && !j.note.empty()) {
-      message = j.note;
-    } else if (!rec) {
-      // No valid result: the run stopped on bad input or crashed; its log says why.
-      std::ifstream log(j.log);
-      std::string line, last;
-      while (std::getline(log, line))
-        if (!line.empty()) last += (last.empty() ? "" : " | ") + line;
-      message = last.empty() ? "no result" : last.substr(0, 500);
+    const RunState run =
+        rec ? RunState{rec->text["status"], rec->text["message"]} : noResult(j, sm);
+    const std::string& status = run.status;
+    const std::string& message = run.message;
+    if (status != "skipped") ++sm.runsKnown;
+    if (status == "ok") ++sm.runsOk;
+    sm.csv << j.c->id << "," << j.repeat << "," << csvField(j.c->label) << "," << j.c->role << ","
+           << csvField(j.c->base) << "," << csvField(join(j.c->overrides, " ")) << "," << status;
+    std::map<std::string, double> numbers;
+    for (const auto& k : kSummaryNumbers) {
+      numbers[k] = rec && rec->number.count(k) ? rec->number[k] : 0.0;
+      sm.csv << "," << numbers[k];
+      sm.cols[k].push_back(numbers[k]);
     }
-    if (status != "skipped") ++runsKnown;
-    if (status == "ok") ++runsOk;
-    csv << j.c->id << "," << j.repeat << "," << csvField(j.c->label) << "," << j.c->role << ","
-        << csvField(j.c->base) << "," << csvField(join(j.c->overrides, " ")) << "," << status;
-    for (const auto& k : nums) {
-      double v = rec && rec->number.count(k) ? rec->number[k] : 0.0;
-      csv << "," << v;
-      cols[k].push_back(v);
-    }
-    csv << "," << csvField(message) << "," << csvField(valid ? j.h5 : "") << "\n";
-    colStatus.push_back(status == "ok" ? 1.0 : 0.0);
-    CaseSum& cs = sum[j.c->id];
+    sm.csv << "," << csvField(message) << "," << csvField(valid ? j.h5 : "") << "\n";
+    sm.ok.push_back(status == "ok" ? 1.0 : 0.0);
+    CaseSum& cs = sm.cases[j.c->id];
     ++cs.runs;
-    if (status == "ok" && rec) cs.cpu.push_back(rec->number["cpu_time_s"]);
+    if (status == "ok" && rec) cs.cpu.push_back(numbers["cpu_time_s"]);
     // The case's status: ok only when every repeat is ok; else the first problem and its reason.
     if (cs.status.empty() || (cs.status == "ok" && status != "ok")) {
       cs.status = status;
       cs.message = message;
       cs.file = valid ? j.h5 : "";
-      for (const auto& k : nums) cs.first[k] = rec && rec->number.count(k) ? rec->number[k] : 0.0;
+      cs.first = numbers;
     }
   }
+}
+
+// summary_cases.csv: one row per case, the median CPU time over its repeats.
+std::string casesCsv(const scenario::StudySpec& st, std::map<std::string, CaseSum>& sum) {
   std::ostringstream cases;
   cases.precision(12);
-  cases << "case,label,role,base,overrides,runs,runs_ok,status,median_cpu_time_s,min_cpu_time_s,"
-           "max_cpu_time_s";
-  for (const auto& k : nums)
+  cases << "case,label,role,base,overrides,solver,runs,runs_ok,status,median_cpu_time_s,"
+           "min_cpu_time_s,max_cpu_time_s";
+  for (const auto& k : kSummaryNumbers)
     if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << k;
   cases << ",message,file\n";
   for (const auto& c : st.cases) {
@@ -504,34 +577,76 @@ int runStudy(const StudyOptions& o) {
                        : std::pair<double, double>{*std::min_element(cs.cpu.begin(), cs.cpu.end()),
                                                    *std::max_element(cs.cpu.begin(), cs.cpu.end())};
     cases << c.id << "," << csvField(c.label) << "," << c.role << "," << csvField(c.base) << ","
-          << csvField(join(c.overrides, " ")) << "," << cs.runs << "," << cs.cpu.size() << ","
-          << cs.status << "," << median(cs.cpu) << "," << lo << "," << hi;
-    for (const auto& k : nums)
+          << csvField(join(c.overrides, " ")) << "," << csvField(solverLabel(c.overrides)) << ","
+          << cs.runs << "," << cs.cpu.size() << "," << cs.status << "," << median(cs.cpu) << ","
+          << lo << "," << hi;
+    for (const auto& k : kSummaryNumbers)
       if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << cs.first[k];
     cases << "," << csvField(cs.message) << "," << csvField(cs.file) << "\n";
   }
-  try {
-    writeAtomically(dir / "summary.csv", csv.str());
-    writeAtomically(dir / "summary_cases.csv", cases.str());
+  return cases.str();
+}
 
-    io::ResultFile h5((dir / "summary.h5").string());
-    h5.attr("/", "study_file", st.file);
-    h5.attr("/", "base", st.base);
-    std::string caseIds, overrides;
-    for (const auto& j : all) {
-      caseIds += (caseIds.empty() ? "" : "\n") + j.name;
-      overrides += (overrides.empty() ? "" : "\n") + join(j.c->overrides, " ");
-    }
-    std::string labels;
-    for (const auto& j : all) labels += (labels.empty() ? "" : "\n") + j.c->label;
-    h5.attr("/runs", "labels", labels);
-    h5.attr("/runs", "ids", caseIds);
-    h5.attr("/runs", "overrides", overrides);
-    h5.dataset("/runs/ok", colStatus, "-");
-    for (const auto& k : nums)
-      h5.dataset("/runs/" + k, cols[k],
-                 k == "cpu_time_s" || k == "wall_time_s" || k == "t_reached" ? "s" : "-");
-    h5.finalize();
+// summary.h5: the per-run numbers as datasets under /runs.
+void writeSummaryH5(const fs::path& path, const scenario::StudySpec& st,
+                    const std::vector<Job>& all, Summary& sm) {
+  io::ResultFile h5(path.string());
+  h5.attr("/", "study_file", st.file);
+  h5.attr("/", "base", st.base);
+  std::string caseIds, overrides, labels;
+  for (const auto& j : all) {
+    caseIds += (caseIds.empty() ? "" : "\n") + j.name;
+    overrides += (overrides.empty() ? "" : "\n") + join(j.c->overrides, " ");
+    labels += (labels.empty() ? "" : "\n") + j.c->label;
+  }
+  h5.attr("/runs", "labels", labels);
+  h5.attr("/runs", "ids", caseIds);
+  h5.attr("/runs", "overrides", overrides);
+  h5.dataset("/runs/ok", sm.ok, "-");
+  for (const auto& k : kSummaryNumbers)
+    h5.dataset("/runs/" + k, sm.cols[k],
+               k == "cpu_time_s" || k == "wall_time_s" || k == "t_reached" ? "s" : "-");
+  h5.finalize();
+}
+
+}  // namespace
+
+int runStudy(const StudyOptions& o) {
+  scenario::StudySpec st = scenario::loadStudy(o.file, o.root);
+  fs::path dir = o.out.empty() ? fs::path("out") / fs::path(o.file).stem() : fs::path(o.out);
+  std::error_code ec;
+  fs::create_directories(dir / ".locks", ec);
+  if (ec)
+    throw InputError({o.file, 0}, "cannot create the study's output folder " +
+                                      (dir / ".locks").string() + ": " + ec.message());
+  int jobs = o.jobs > 0    ? o.jobs
+             : st.jobs > 0 ? st.jobs
+                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+
+  const CaseHasher hashOf{o, buildId(o.program)};
+  std::map<std::string, std::string> hashes;
+  for (const auto& c : st.cases) hashes[c.id] = hashOf(c);
+  std::vector<Job> all = listJobs(st, dir, hashes);
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (!isDone(all[i].h5, *all[i].hash)) todo.push_back(i);
+  std::cerr << st.file << ": " << st.cases.size() << " cases x " << st.repeats << " repeats, "
+            << all.size() - todo.size() << " already done, running " << todo.size() << " with "
+            << jobs << " jobs\n";
+  Pool pool(o, dir, hashOf, todo.size());
+  const std::size_t skipped = runJobs(pool, all, todo, jobs);
+
+  // Summaries of everything this folder holds for the study, written under a study-wide lock so
+  // that runners finishing together do not interleave them.
+  int summaryLock = ::open((dir / ".locks" / "summary.lock").c_str(),
+                           O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+  if (summaryLock >= 0) ::flock(summaryLock, LOCK_EX);
+  Summary sm;
+  summariseRuns(all, sm);
+  try {
+    writeAtomically(dir / "summary.csv", sm.csv.str());
+    writeAtomically(dir / "summary_cases.csv", casesCsv(st, sm.cases));
+    writeSummaryH5(dir / "summary.h5", st, all, sm);
   } catch (const std::exception& e) {
     if (summaryLock >= 0) ::close(summaryLock);
     std::cerr << "study: cannot write the summary in " << dir.string() << ": " << e.what() << "\n";
@@ -540,13 +655,14 @@ int runStudy(const StudyOptions& o) {
   if (summaryLock >= 0) ::close(summaryLock);
   std::cout << "study " << st.file << ": " << all.size() << " runs, summary in "
             << (dir / "summary.csv").string() << "\n";
-  if (skipped > 0 || runsElsewhere > 0)
-    std::cerr << "study: " << runsElsewhere
+  if (skipped > 0 || sm.runsElsewhere > 0)
+    std::cerr << "study: " << sm.runsElsewhere
               << " runs were being run by another runner; run the study again once it has "
                  "finished to summarise them\n";
   const int plots = plotStudy(o, dir.string());
-  if (runsKnown > 0 && runsOk == 0) {
-    std::cerr << "study: no run of the study is ok (" << runsKnown << " failed or could not run)\n";
+  if (sm.runsKnown > 0 && sm.runsOk == 0) {
+    std::cerr << "study: no run of the study is ok (" << sm.runsKnown
+              << " failed or could not run)\n";
     return 2;
   }
   return plots;

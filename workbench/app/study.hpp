@@ -21,12 +21,13 @@
 // Outputs:
 //   summary.csv        one row per run: case, repeat, label, role, base, overrides, status, the
 //                      /stats numbers, message (the reason of a failure), file
-//   summary_cases.csv  one row per case: label, role, status (ok only if every repeat is), median
-//                      / min / max CPU time over the repeats, the counts of its first run,
-//                      message, file
+//   summary_cases.csv  one row per case: label, role, solver (the solver part of the label),
+//                      status (ok only if every repeat is), median / min / max CPU time over
+//                      the repeats, the counts of its first run, message, file
 //   summary.h5         the per-run numbers as datasets under /runs
-// Then plots/plot_study.py draws the study's figures and tables into the same folder (skipped with
-// RAILBENCH_STUDY_PLOTS=0; RAILBENCH_PYTHON names another interpreter than /usr/bin/python3).
+// Then `plots/rbplot study` (python3 -m railbench study) draws the study's figures and tables into
+// the same folder (skipped with RAILBENCH_STUDY_PLOTS=0; RAILBENCH_PYTHON names another
+// interpreter than /usr/bin/python3).
 #include <string>
 
 #include "workbench/scenario/scenario.hpp"

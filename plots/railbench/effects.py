@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """Instruction counts per right-hand-side evaluation of every case of an effects study
 (scenarios/studies/effects.lua), for issue 7 item 5 ("disabled effects must cost nothing
 measurable").
@@ -10,13 +9,12 @@ summary_cases.csv) is run again under callgrind for the first DURATION seconds, 
 inside the integration (rb::integ::integrate: right-hand sides, integrator, output callbacks;
 not the set-up), and the instructions are divided by the rhs evaluations of that run.
 
-    /usr/bin/python3 plots/effects_instructions.py OUT/effects [--workbench BIN] [--root ROOT]
-                                                   [--duration 8] [--match REGEX] [--csv NAME]
+    plots/rbplot effects-instructions OUT/effects [--workbench BIN] [--root ROOT]
+                                        [--duration 8] [--match REGEX] [--csv NAME]
 
 Writes OUT/effects/study_effects_instructions.csv: case, label, method, instructions, rhs_evals,
 instructions_per_eval, relative_to_baseline (the case of role "baseline" with the same method).
 """
-import argparse
 import csv
 import os
 import re
@@ -25,6 +23,9 @@ import sys
 import tempfile
 
 import h5py
+
+from .common import parser
+from .provenance import ROOT
 
 
 def callgrind_total(path: str) -> int:
@@ -42,9 +43,8 @@ def method_of(row: dict) -> str:
 
 
 def main(argv=None) -> int:
-    here = os.path.dirname(os.path.abspath(__file__))
-    root_default = os.path.abspath(os.path.join(here, ".."))
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    root_default = ROOT
+    ap = parser("effects-instructions", __doc__.split("\n\n")[0])
     ap.add_argument("study_dir")
     ap.add_argument("--workbench", default=os.path.join(root_default, "build", "workbench", "app",
                                                         "workbench"))
@@ -59,7 +59,7 @@ def main(argv=None) -> int:
     a = ap.parse_args(argv)
     cases_csv = os.path.join(a.study_dir, "summary_cases.csv")
     if not os.path.exists(cases_csv):
-        print(f"effects_instructions: {cases_csv} not found (run the study first)",
+        print(f"railbench effects-instructions: {cases_csv} not found (run the study first)",
               file=sys.stderr)
         return 1
     with open(cases_csv, newline="") as f:
@@ -77,7 +77,7 @@ def main(argv=None) -> int:
             cmd += ["--set", f"run.duration={a.duration:g}"]
             r = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
             if r.returncode != 0 or not os.path.exists(out):
-                print(f"effects_instructions: {c['label']}: run failed (exit {r.returncode}): "
+                print(f"railbench effects-instructions: {c['label']}: run failed (exit {r.returncode}): "
                       f"{r.stderr.strip()[-300:]}", file=sys.stderr)
                 rows.append(dict(case=c["case"], label=c["label"], role=c["role"],
                                  method=method_of(c), instructions="", rhs_evals="",
@@ -98,7 +98,7 @@ def main(argv=None) -> int:
         if r["instructions_per_eval"] and r["method"] in base:
             r["relative_to_baseline"] = f"{float(r['instructions_per_eval']) / base[r['method']]:.4f}"
     if not rows:
-        print("effects_instructions: no case matches", file=sys.stderr)
+        print("railbench effects-instructions: no case matches", file=sys.stderr)
         return 1
     path = os.path.join(a.study_dir, a.csv)
     with open(path, "w", newline="") as f:
@@ -108,6 +108,3 @@ def main(argv=None) -> int:
     print(path)
     return 0
 
-
-if __name__ == "__main__":
-    sys.exit(main())

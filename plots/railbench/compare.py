@@ -1,8 +1,7 @@
-#!/usr/bin/python3
 """Overlay the vehicle results of several railbench runs (paper Fig. 17, 19-22; Tables 5, 6).
 
-usage: /usr/bin/python3 plots/compare_runs.py A.h5 B.h5 [C.h5 ...] [--labels KEC,LUT,...]
-                                              [--outdir DIR] [--prefix NAME] [--fraction F]
+usage: railbench compare-runs A.h5 B.h5 [C.h5 ...] [--labels KEC,LUT,...]
+                                    [--outdir DIR] [--prefix NAME] [--fraction F]
 
 Writes (default: in the folder of A.h5, prefix = the run stems joined by "_vs_")
     <prefix>_compare_wheelsets.png    y [mm] and yaw [mrad] of the wheelsets vs distance
@@ -13,22 +12,25 @@ and yaw angle [mrad] of every body over the last 20 % (--fraction) of the distan
 travelled in each run.  One colour and line style per run; the track of A.h5 is shaded.
 
 Only bodies present in every run are drawn (the others are named on stderr); with none in
-common, or on a missing/invalid file, one line "compare_runs: error: ..." goes to stderr and
+common, or on a missing/invalid file, one line "railbench compare-runs: error: ..." goes to stderr and
 the exit status is 1.  A failed run is drawn up to where it stopped, marked "(failed)" in the
 legend and table, and named in red above the figure titles.
 
 CSV columns: label, file, status, body, kind, y_mm, yaw_mrad, s_from_m, s_to_m, samples.
 """
-import argparse
 import csv
 import os
 import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-
-import railbench_plots as rp  # noqa: E402
+from .common import error, guarded, note, parser, save_figure
+from .h5 import ResultFileError
+from .layout import add_failure_banner, failure_text
+from .result import load_result
+from .run import steady_state
+from .style import DPI
+from .vehicle_figs import fig_kinematics
 
 
 class CompareError(Exception):
@@ -67,7 +69,7 @@ def steady_table(results, labels, names, fraction):
     """Rows {label, file, status, body, kind, y_mm, yaw_mrad, s_from_m, s_to_m, samples}."""
     rows = []
     for r, lab in zip(results, labels):
-        by = {row["body"]: row for row in rp.steady_state(r, fraction)}
+        by = {row["body"]: row for row in steady_state(r, fraction)}
         status = str((r.stats or {}).get("status", "")) or "-"
         for n in names:
             if n in by:
@@ -118,19 +120,19 @@ def write_csv(path, rows):
 def _banner(results, labels):
     txt = []
     for r, lab in zip(results, labels):
-        f = rp.failure_text(r)
+        f = failure_text(r)
         if f:
             txt.append(f"{lab}: {f}")
     return "; ".join(txt) or None
 
 
-def compare(paths, labels=None, outdir=None, prefix=None, fraction=0.2, dpi=rp.DPI, log=None):
+def compare(paths, labels=None, outdir=None, prefix=None, fraction=0.2, dpi=DPI, log=None):
     """Load the runs, write the figures and the CSV; return (written paths, table text).
     Notes go to `log` (default: sys.stderr at call time)."""
     log = log or sys.stderr
     if len(paths) < 2:
         raise CompareError("need at least two result files")
-    results = [rp.load_result(p) for p in paths]
+    results = [load_result(p) for p in paths]
     for r in results:
         if not r.kinematic_bodies():
             raise CompareError(f"{r.path}: no vehicle bodies with distance (/bodies/<name>/s) "
@@ -142,12 +144,11 @@ def compare(paths, labels=None, outdir=None, prefix=None, fraction=0.2, dpi=rp.D
         raise CompareError(f"the runs have no bodies in common ({lists})")
     others = sorted({n for r in results for n in r.kinematic_bodies()} - set(names))
     if others:
-        print(f"compare_runs: note: not in every run, not compared: {', '.join(others)}",
-              file=log)
+        note("compare-runs", f"not in every run, not compared: {', '.join(others)}", log)
     for r in results[1:]:
         if not _same_track(results[0], r):
-            print(f"compare_runs: note: {r.path} has another track than {results[0].path}; "
-                  f"the segments of the latter are shaded", file=log)
+            note("compare-runs", f"{r.path} has another track than {results[0].path}; "
+                                 f"the segments of the latter are shaded", log)
 
     ref = results[0]
     ws = [n for n in names if ref.bodies[n].kind == "wheelset"]
@@ -166,15 +167,10 @@ def compare(paths, labels=None, outdir=None, prefix=None, fraction=0.2, dpi=rp.D
              f"Bogies and car body: lateral displacement and yaw angle — {what}")):
         if not sel:
             continue
-        fig = rp.fig_kinematics(runs, sel, title)
+        fig = fig_kinematics(runs, sel, title)
         if banner:
-            rp.add_failure_banner(fig, banner)
-        path = os.path.join(outdir, f"{prefix}_{suffix}.png")
-        try:
-            fig.savefig(path, dpi=dpi)
-        finally:
-            rp.plt.close(fig)
-        written.append(path)
+            add_failure_banner(fig, banner)
+        save_figure(fig, os.path.join(outdir, f"{prefix}_{suffix}.png"), written, dpi)
     names = ws + bc  # paper Table 6 order: wheelsets, bogies, car body
     rows = steady_table(results, labels, names, fraction)
     csv_path = os.path.join(outdir, f"{prefix}_steady_state.csv")
@@ -184,8 +180,7 @@ def compare(paths, labels=None, outdir=None, prefix=None, fraction=0.2, dpi=rp.D
 
 
 def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(prog="compare_runs",
-                                 description="Overlay the vehicle results of several runs.")
+    ap = parser("compare-runs", "Overlay the vehicle results of several runs.")
     ap.add_argument("results", nargs="+", help="result files (.h5), at least two")
     ap.add_argument("--labels", default=None,
                     help="comma-separated legend labels, one per run (default: contact method)")
@@ -194,26 +189,17 @@ def main(argv=None) -> int:
                     help="output file prefix (default: the run stems joined by _vs_)")
     ap.add_argument("--fraction", type=float, default=0.2,
                     help="steady-state window: last fraction of the distance (default 0.2)")
-    ap.add_argument("--dpi", type=int, default=rp.DPI, help=f"resolution (default {rp.DPI})")
+    ap.add_argument("--dpi", type=int, default=DPI, help=f"resolution (default {DPI})")
     args = ap.parse_args(argv)
     if not 0 < args.fraction <= 1:
-        print("compare_runs: error: --fraction must be in (0, 1]", file=sys.stderr)
-        return 1
-    try:
+        return error("compare-runs", "--fraction must be in (0, 1]")
+
+    def draw() -> int:
         paths, table = compare(args.results, args.labels, args.outdir, args.prefix,
                                args.fraction, args.dpi)
-    except (CompareError, rp.ResultFileError) as e:
-        print(f"compare_runs: error: {e}", file=sys.stderr)
-        return 1
-    except OSError as e:  # e.g. unwritable output folder
-        print(f"compare_runs: error: {e.strerror or e}: {e.filename or ''}".rstrip(": "),
-              file=sys.stderr)
-        return 1
-    for p in paths:
-        print(p)
-    print(table)
-    return 0
+        for p in paths:
+            print(p)
+        print(table)
+        return 0
 
-
-if __name__ == "__main__":
-    sys.exit(main())
+    return guarded("compare-runs", draw, (CompareError, ResultFileError))

@@ -1,7 +1,6 @@
-#!/usr/bin/python3
 """The numbers of docs/validation.md from the validation study (scenarios/studies/validation.lua):
 
-    /usr/bin/python3 plots/validation_tables.py OUT_DIR    (OUT_DIR = out/studies/validation)
+    plots/rbplot validation-tables OUT_DIR    (OUT_DIR = out/studies/validation)
 
 reads OUT_DIR/summary_cases.csv and the result file of each case and writes, beside them,
 
@@ -15,7 +14,7 @@ reads OUT_DIR/summary_cases.csv and the result file of each case and writes, bes
     validation_cost.csv     per case: status, CPU time (median, min, max over the repeats), real
                             time factor, rhs evaluations, steps
 
-plots/update_docs.py turns them into the generated tables of docs/validation.md. The case is
+`plots/rbplot docs` turns them into the generated tables of docs/validation.md. The case is
 read from its base scenario's name (case1_R300_kec.lua, case2_lut.lua, ...), the solver from the
 result file and the overrides.
 """
@@ -128,7 +127,7 @@ def write_csv(path: str, rows: List[dict], fields: List[str]):
 def make(outdir: str) -> List[str]:
     sc = os.path.join(outdir, "summary_cases.csv")
     if not os.path.exists(sc):
-        raise SystemExit(f"validation_tables: {sc} missing (run ./wb studies --only validation)")
+        raise SystemExit(f"railbench validation-tables: {sc} missing (run ./wb studies --only validation)")
     with open(sc, newline="") as fh:
         cases = list(csv.DictReader(fh))
     steady_rows, cost_rows = [], []
@@ -188,12 +187,9 @@ def make(outdir: str) -> List[str]:
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 1:
-        print("usage: validation_tables.py OUT_DIR", file=sys.stderr)
+        print("usage: railbench validation-tables OUT_DIR", file=sys.stderr)
         return 1
     for p in make(argv[0]):
         print(f"wrote {p}")
     return 0
 
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -1,0 +1,415 @@
+"""Generated documentation blocks: efficiency, accuracy, refinement, work precision,
+effects, speed and benchmark tables."""
+from __future__ import annotations
+
+import csv
+import json
+import os
+import re
+from typing import Dict, List, Optional
+
+from .provenance import GENERATOR, ROOT
+
+
+def read_csv(path: str) -> List[dict]:
+    if not os.path.exists(path):
+        return []
+    with open(path, newline="") as f:
+        return list(csv.DictReader(row for row in f if not row.startswith("#")))
+
+
+def num(v, default=None) -> Optional[float]:
+    try:
+        x = float(v)
+        return x
+    except (TypeError, ValueError):
+        return default
+
+
+def fmt(x, spec="{:.3g}", empty="–") -> str:
+    return empty if x is None else spec.format(x)
+
+
+def table(header: List[str], rows: List[List[str]]) -> str:
+    out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    out += ["| " + " | ".join(str(c) for c in r) + " |" for r in rows]
+    return "\n".join(out)
+
+
+BLOCK_RE = re.compile(r"<!-- generated: ([\w.-]+) \(" + re.escape(GENERATOR) +
+                      r"\) -->\n(.*?)<!-- end: \1 -->", re.S)
+NOT_GENERATED = "*Not generated: "
+
+
+def replace_block(text: str, name: str, body: str, stamp: str = "") -> str:
+    """Replaces the block NAME by body, with the stamp line first (not for a "Not generated"
+    line: nothing was run)."""
+    start = f"<!-- generated: {name} ({GENERATOR}) -->"
+    end = f"<!-- end: {name} -->"
+    pat = re.compile(re.escape(start) + r".*?" + re.escape(end), re.S)
+    if not pat.search(text):
+        raise KeyError(f"marker '{name}' not found")
+    body = body.strip()
+    if stamp and not body.startswith(NOT_GENERATED):
+        body = stamp + "\n\n" + body
+    return pat.sub(lambda _: start + "\n" + body + "\n" + end, text)
+
+
+def doc_blocks(text: str) -> Dict[str, str]:
+    """The generated blocks of a page: name -> content between the markers."""
+    return {m.group(1): m.group(2) for m in BLOCK_RE.finditer(text)}
+
+
+def missing(what: str) -> str:
+    return NOT_GENERATED + f"{what} is missing. Run `./wb studies` (see the top of this page).*"
+
+
+# ---- efficiency (paper Tables 7, 12-16) --------------------------------------------------------
+
+PAPER_INTEGRATOR = {"dopri5": "ode45", "bdf": "ode15s", "rk4": "RK4", "abm": "ABM"}
+
+
+def solver_setting(r: dict) -> str:
+    if r.get("tol"):
+        return f"{r['integrator']} {r['tol']}"
+    if r.get("step_s"):
+        return f"{r['integrator']} {num(r['step_s']) * 1e3:g} ms"
+    return r.get("integrator", "")
+
+
+def paper_rows() -> List[dict]:
+    return read_csv(os.path.join(ROOT, "docs", "data", "paper_efficiency.csv"))
+
+
+def paper_lookup(paper, method, K, tables, integrator, tol) -> Optional[dict]:
+    pi = PAPER_INTEGRATOR.get(integrator, integrator)
+    for p in paper:
+        if (p["method"] == method and p["integrator"] == pi and p["tables"] == tables and
+                (method == "kec" or num(p["flange_stiffness"]) == num(K)) and
+                (not p["tol"] or num(p["tol"]) == num(tol))):
+            return p
+    return None
+
+
+def total_evals(r: dict) -> int:
+    """rhs evaluations including the finite-difference Jacobian columns (Matlab's ode15s counts
+    its numjac evaluations in nfevals too)."""
+    return int(r["rhs_evals"]) + int(r.get("rhs_evals_jac") or 0)
+
+
+def cost_cell(r: Optional[dict], sim: float) -> str:
+    if r is None:
+        return "–"
+    if r["status"] != "ok":
+        return "failed"
+    cpu = num(r["cpu_median_s"])
+    return f"{cpu:.2f} s / {total_evals(r)} ({sim / cpu:.0f}x)"
+
+
+def efficiency_block(outdir: str, study: str = "efficiency_case3",
+                     name: str = "efficiency") -> Dict[str, str]:
+    rows = read_csv(os.path.join(outdir, study, "study_cost.csv"))
+    if not rows:
+        return {name: missing(f"out/studies/{study}/study_cost.csv"),
+                name + "_paper": missing(f"out/studies/{study}/study_cost.csv")}
+    sim = max(num(r["t_reached_s"], 0) for r in rows)
+    models = [("kec", "")] + [("lut", k) for k in sorted({r["K"] for r in rows if r["K"]},
+                                                         key=lambda k: num(k))]
+    settings = []
+    for r in rows:
+        s = solver_setting(r)
+        if s not in settings:
+            settings.append(s)
+    order = {"rk4": 0, "abm": 1, "dopri5": 2, "bdf": 3, "ida": 4}
+    settings.sort(key=lambda s: (order.get(s.split()[0], 9), s))
+
+    def find(method, K, s):
+        for r in rows:
+            if r["method"] == method and (method == "kec" or r["K"] == K) and \
+                    solver_setting(r) == s:
+                return r
+        return None
+
+    head = ["solver"] + [("KEC" if m == "kec" else f"LUT K={k}") for m, k in models]
+    body = [[s] + [cost_cell(find(m, k, s), sim) for m, k in models] for s in settings]
+    eff = (f"CPU time (median of the repeats) / rhs evaluations incl. finite-difference Jacobian "
+           f"columns (x real time over {sim:.2f} s simulated):\n\n" + table(head, body))
+
+    # Beside the paper: evaluation counts directly, CPU times as LUT/KEC ratios.
+    paper = paper_rows()
+    prow = []
+    for s in settings:
+        integ, _, tol = s.partition(" ")
+        tol = tol if not tol.endswith("ms") else ""
+        kec = find("kec", "", s)
+        pk = paper_lookup(paper, "kec", "", "default", integ, tol)
+        for m, k in models[1:]:
+            lut = find(m, k, s)
+            pl = paper_lookup(paper, "lut", k, "default", integ, tol)
+            if lut is None:
+                continue
+            ours_ratio = (num(lut["cpu_median_s"]) / num(kec["cpu_median_s"])
+                          if kec and lut["status"] == "ok" and kec["status"] == "ok" else None)
+            paper_ratio = (num(pl["cpu_median_s"]) / num(pk["cpu_median_s"])
+                           if pl and pk else None)
+            prow.append([s, k, total_evals(lut) if lut["status"] == "ok" else "failed",
+                         pl["evaluations"] if pl else "–",
+                         total_evals(kec) if kec and kec["status"] == "ok" else "–",
+                         pk["evaluations"] if pk else "–",
+                         fmt(ours_ratio, "{:.2f}"), fmt(paper_ratio, "{:.2f}")])
+    paper_tab = table(["solver", "LUT K", "LUT evals (ours)", "LUT evals (paper)",
+                       "KEC evals (ours)", "KEC evals (paper)", "CPU LUT/KEC (ours)",
+                       "CPU LUT/KEC (paper)"], prow)
+    return {name: eff, name + "_paper": paper_tab}
+
+
+# ---- accuracy (paper Eq. 33, Table 8) ----------------------------------------------------------
+
+def accuracy_block(outdir: str, study: str = "efficiency_case3") -> str:
+    rows = read_csv(os.path.join(outdir, study, "study_accuracy_lut_vs_kec.csv"))
+    rows = [r for r in rows if r.get("wheelset") == "all"]
+    if not rows:
+        return missing(f"out/studies/{study}/study_accuracy_lut_vs_kec.csv")
+    Ks = sorted({r["K"] for r in rows}, key=lambda k: num(k))
+    solvers = []
+    for r in rows:
+        if r["solver"] not in solvers:
+            solvers.append(r["solver"])
+    body = []
+    for s in solvers:
+        line = [s]
+        for k in Ks:
+            r = next((x for x in rows if x["solver"] == s and x["K"] == k), None)
+            if r is None or not r["max_abs_mm"]:
+                line.append("–")
+            else:
+                flag = "" if r["lut_status"] == "ok" and r["kec_status"] == "ok" else " (failed run)"
+                line.append(f"{num(r['max_abs_mm']):.3f} / {num(r['mean_abs_mm']):.3f}{flag}")
+        body.append(line)
+    return ("max / mean |y_KEC - y_LUT| [mm] over all four wheelsets and the whole run:\n\n" +
+            table(["solver"] + [f"K={k}" for k in Ks], body))
+
+
+# ---- refinement (paper Tables 9-11, 17-18) -----------------------------------------------------
+
+def refinement_block(outdir: str) -> str:
+    rows = read_csv(os.path.join(outdir, "refinement", "study_cost.csv"))
+    if not rows:
+        return missing("out/studies/refinement/study_cost.csv")
+    sim = max(num(r["t_reached_s"], 0) for r in rows)
+    keys = []
+    for r in rows:
+        k = (r["method"], r["K"], solver_setting(r))
+        if k not in keys:
+            keys.append(k)
+    body = []
+    for method, K, s in keys:
+        d = next((r for r in rows if (r["method"], r["K"], solver_setting(r)) == (method, K, s)
+                  and r["refined_tables"] == "false"), None)
+        f = next((r for r in rows if (r["method"], r["K"], solver_setting(r)) == (method, K, s)
+                  and r["refined_tables"] == "true"), None)
+        ratio = (num(f["cpu_median_s"]) / num(d["cpu_median_s"])
+                 if d and f and d["status"] == "ok" and f["status"] == "ok" else None)
+        body.append([method.upper() + (f" K={K}" if K else ""), s, cost_cell(d, sim),
+                     cost_cell(f, sim), fmt(ratio, "{:.2f}")])
+    builds = []
+    for method in ("kec", "lut"):
+        for ref in ("false", "true"):
+            r = next((x for x in rows if x["method"] == method and x["refined_tables"] == ref
+                      and x["table_build_time_s"]), None)
+            if r:
+                builds.append([method.upper(), "refined" if ref == "true" else "default",
+                               f"{num(r['table_build_time_s']):.3f} s",
+                               f"{num(r['table_bytes']) / 1e6:.2f} MB"])
+    return (table(["model", "solver", "default tables", "refined tables", "CPU refined/default"],
+                  body) + "\n\nContact tables (as recorded in the result files; a run that "
+                  "loaded them from the disk cache records the load time):\n\n" +
+            table(["method", "tables", "build or load time", "size"], builds))
+
+
+# ---- work precision ----------------------------------------------------------------------------
+
+def work_precision_block(outdir: str) -> str:
+    rows = read_csv(os.path.join(outdir, "work_precision", "study_work_precision.csv"))
+    if not rows:
+        return missing("out/studies/work_precision/study_work_precision.csv")
+    total = [r for r in rows if r["against"] == "reference"]
+    out = []
+    special = [r for r in total if r["kind"] in ("reference_check", "table_error")]
+    if special:
+        out.append("Reference quality (max error of wheelset y [mm] / yaw [mrad] / normal force "
+                   "[kN]):\n")
+        out.append(table(["model", "what", "y", "yaw", "Q"],
+                         [[r["model"], r["kind"].replace("_", " "),
+                           r.get("y_max_mm", ""), r.get("yaw_max_mrad", ""),
+                           r.get("Q_max_kN", "")] for r in special]))
+    # The cheapest setting per integrator setting that reaches each accuracy level in wheelset y:
+    # total error (against the refined-table reference) and integration error only (against
+    # the reference on the cases' own tables).
+    levels = [1.0, 0.1, 0.01, 0.001]
+    for against, what in (("reference", "total error against the refined-table reference"),
+                          ("reference_same_tables", "integration error only: against the "
+                           "reference on the same (default) tables")):
+        cases = [r for r in rows if r["against"] == against and r["kind"] == "case"]
+        if not cases:
+            continue
+        def group(r):  # the model and the integrator setting apart from tolerance / step
+            return r["model"], re.sub(r"\b(tol|h)=\S+\s*", "", r["solver"]).strip()
+
+        groups = []
+        for r in cases:
+            if group(r) not in groups:
+                groups.append(group(r))
+        body = []
+        for g in sorted(groups):
+            line = list(g)
+            for lev in levels:
+                best = None
+                for r in cases:
+                    if group(r) != g or r["status"] != "ok":
+                        continue
+                    e = num(r.get("y_max_mm"))
+                    if e is not None and e <= lev:
+                        cpu = num(r["cpu_median_s"])
+                        if best is None or cpu < best[0]:
+                            best = (cpu, r["setting"])
+                line.append("–" if best is None else f"{best[0]:.2f} s ({best[1]})")
+            body.append(line)
+        out.append(f"\nCheapest setting that keeps the largest error of the wheelsets' lateral "
+                   f"displacement below each level ({what}; CPU seconds, setting; – = no setting "
+                   f"of the study gets there):\n")
+        out.append(table(["model", "integrator"] + [f"y err <= {lev:g} mm" for lev in levels],
+                         body))
+    return "\n".join(out)
+
+
+# ---- effects -----------------------------------------------------------------------------------
+
+def effects_block(outdir: str) -> str:
+    rows = read_csv(os.path.join(outdir, "effects", "study_effects.csv"))
+    if not rows:
+        return missing("out/studies/effects/study_effects.csv")
+    instr = read_csv(os.path.join(outdir, "effects", "study_effects_instructions.csv"))
+
+    def strip(label: str) -> str:
+        return re.sub(r"\b(kec|lut)\b", "", label, flags=re.I).strip(" ,")
+
+    labels = []
+    for r in rows:
+        if strip(r["label"]) not in labels:
+            labels.append(strip(r["label"]))
+
+    def cell(source, key, text, method, lab):
+        """The variant's value of `key` for one contact method: "failed" when empty, "–" when
+        the variant is not in `source`."""
+        r = next((r for r in source if r["method"] == method and strip(r["label"]) == lab), None)
+        if r is None:
+            return "–"
+        return text(r) if r[key] else "failed"
+
+    def time_cell(method, lab):
+        return cell(rows, "us_per_eval", lambda r: (
+            f"{num(r['us_per_eval']):.2f} µs ({num(r['relative_to_baseline']):.2f}, "
+            f"±{r['spread_percent'] or '?'} %)"), method, lab)
+
+    def instr_cell(method, lab):
+        return cell(instr, "instructions_per_eval", lambda r: (
+            f"{num(r['instructions_per_eval']) / 1e3:.1f}k "
+            f"({num(r['relative_to_baseline']):.3f})"), method, lab)
+
+    head = ["variant", "KEC instructions / eval (rel.)", "LUT instructions / eval (rel.)",
+            "KEC CPU / eval (rel., spread)", "LUT CPU / eval (rel., spread)"]
+    body = [[lab, instr_cell("kec", lab), instr_cell("lut", lab), time_cell("kec", lab),
+             time_cell("lut", lab)] for lab in labels]
+    note = ("" if instr else "\n\n" + missing("out/studies/effects/study_effects_instructions.csv "
+                                               "(plots/rbplot effects-instructions)"))
+    return ("Per right-hand-side evaluation, each variant relative to the full model: callgrind "
+            "instructions (repeatable; first 8 s of the run, integration only, "
+            "`plots/rbplot effects-instructions`) and CPU time (median of 5 repeats over the whole "
+            "run, ABM 0.25 ms, free spin; spread = (max - min) / median):\n\n" +
+            table(head, body) + note)
+
+
+# ---- speed targets -----------------------------------------------------------------------------
+
+def speed_block(outdir: str) -> str:
+    rows = read_csv(os.path.join(outdir, "speed", "study_cost.csv"))
+    if not rows:
+        return missing("out/studies/speed/study_cost.csv")
+    body = []
+    for r in rows:
+        sim = num(r["t_reached_s"], 0)
+        cpu = num(r["cpu_median_s"])
+        ok = r["status"] == "ok"
+        factor = sim / cpu if ok and cpu else None
+        target = ("100x" if "target 1" in r["label"] else "1x" if "target 2" in r["label"]
+                  else "")
+        met = ""
+        if target and factor is not None:
+            met = "met" if factor >= float(target[:-1]) else "NOT met"
+        body.append([r["label"], r["status"], f"{cpu:.3f} s ({r['cpu_min_s']}-{r['cpu_max_s']})",
+                     fmt(factor, "{:.1f}x"), r["rhs_evals"], r["rhs_evals_jac"] or "0",
+                     r["steps"], fmt(num(r["us_per_eval"]), "{:.2f}"), target, met])
+    return table(["case", "status", "CPU median (min-max)", "x real time", "rhs evals",
+                  "Jacobian evals", "steps", "µs / eval", "target", ""], body)
+
+
+def _bench_json(outdir: str, name: str) -> Optional[dict]:
+    """OUT_DIR/NAME.json, the Google Benchmark output (None when missing)."""
+    path = os.path.join(outdir, name + ".json")
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return json.load(f)
+
+
+def _bench_machine(data: dict) -> str:
+    ctx = data.get("context", {})
+    return (f"Google Benchmark on {ctx.get('host_name', '?')}, {ctx.get('num_cpus', '?')} CPUs at "
+            f"{ctx.get('mhz_per_cpu', '?')} MHz, {ctx.get('date', '')}")
+
+
+def bench_block(outdir: str) -> str:
+    data = _bench_json(outdir, "bench_wagon")
+    if data is None:
+        return missing("out/studies/bench_wagon.json")
+    body = []
+    for b in data.get("benchmarks", []):
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") not in ("median", "cv"):
+            continue
+        if b.get("aggregate_name") == "cv":
+            continue
+        name = b.get("run_name", b["name"])
+        if "us_per_eval" in b:  # bench_wagon's counter: CPU microseconds per evaluation
+            body.append([name, f"{b['us_per_eval']:.2f}"])
+        else:
+            unit = b.get("time_unit", "ns")
+            scale = {"ns": 1e-3, "us": 1.0, "ms": 1e3, "s": 1e6}[unit]
+            body.append([name, f"{b['cpu_time'] * scale:.3f}"])
+    return (_bench_machine(data) + ":\n\n" +
+            table(["benchmark (median of the repetitions)", "CPU µs per evaluation"], body))
+
+
+def bench_integrators_block(outdir: str) -> str:
+    """docs/integrators.md: bench/bench_integrators (the integrators' overhead per step)."""
+    data = _bench_json(outdir, "bench_integrators")
+    if data is None:
+        return missing("out/studies/bench_integrators.json")
+    body = []
+    for b in data.get("benchmarks", []):
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+            continue
+        name = b.get("run_name", b["name"])
+        if "ns/step" in b:
+            body.append([name, f"{b['ns/step']:.0f}", f"{b.get('rhs/step', 0):.2f}",
+                         f"{b.get('overhead_ns', 0):.0f}", f"{b.get('steps', 0):.0f}"])
+        else:  # BM_rhs: the cost of one right-hand side
+            unit = b.get("time_unit", "ns")
+            scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[unit]
+            body.append([name, "–", "–", "–", f"rhs {b['cpu_time'] * scale:.0f} ns"])
+    return (_bench_machine(data) + " (median of the repetitions):\n\n" +
+            table(["benchmark", "ns / step", "rhs / step", "overhead ns / step",
+                   "steps (or rhs cost)"], body))
+
+
+# ---- hard cases --------------------------------------------------------------------------------

@@ -1,0 +1,357 @@
+"""In-memory, validated copy of the groups of a railbench result file (load_result)."""
+from __future__ import annotations
+
+import math
+import os
+import sys
+from dataclasses import dataclass, field
+from typing import Dict, List, Optional, Sequence, Tuple
+
+import numpy as np
+
+from .style import CHANNELS, KINEMATIC_KINDS
+from .h5 import ResultFileError, open_h5, _attrs, _read_ds, _str
+
+
+@dataclass
+class Track:
+    attrs: Dict[str, object]
+    centreline: Dict[str, np.ndarray]  # s x y z heading slope cant_angle curvature cant
+    segments: Dict[str, np.ndarray]    # start length kind radius side cant
+
+    @property
+    def n_segments(self) -> int:
+        return int(self.segments["start"].size)
+
+    def segment_bounds(self) -> np.ndarray:
+        """Arc length of every segment boundary, start of the first to end of the last."""
+        st, ln = self.segments["start"], self.segments["length"]
+        if st.size == 0:
+            s = self.centreline["s"]
+            return np.array([s[0], s[-1]])
+        return np.append(st, st[-1] + ln[-1])
+
+
+@dataclass
+class Irregularities:
+    attrs: Dict[str, object]
+    data: Dict[str, np.ndarray]                 # s, alignment, vertical, gauge, cross_level, ...
+    target: Optional[Dict[str, np.ndarray]]     # omega + channels, or None (e.g. csv source)
+
+    @property
+    def step(self) -> float:
+        s = self.data["s"]
+        return float(np.median(np.diff(s))) if s.size > 1 else float("nan")
+
+    def band(self) -> Tuple[Optional[float], Optional[float]]:
+        lo, hi = self.attrs.get("wavelength_min"), self.attrs.get("wavelength_max")
+        lo = float(lo) if isinstance(lo, (int, float)) and lo > 0 else None
+        hi = float(hi) if isinstance(hi, (int, float)) and hi > 0 else None
+        return lo, hi
+
+    def describe(self) -> str:
+        a = self.attrs
+        src = a.get("source", "?")
+        if src == "psd":
+            txt = f"spectrum {a.get('spectrum', '?')}, seed {a.get('seed', '?')}"
+        else:
+            txt = f"source {src}"
+        lo, hi = self.band()
+        if lo and hi:
+            txt += f", λ = {lo:g}–{hi:g} m"
+        sc = a.get("scale")
+        if isinstance(sc, (int, float)) and sc != 1:
+            txt += f", scale {sc:g}"
+        return txt
+
+
+@dataclass
+class Body:
+    name: str
+    kind: str                        # "car", "bogie", "wheelset", "frame" (or as the file says)
+    data: Dict[str, np.ndarray]      # s y z roll pitch yaw (+ rates etc.), SI units as stored
+
+    def has(self, *keys: str) -> bool:
+        return all(k in self.data and self.data[k].size > 0 for k in keys)
+
+    @property
+    def title(self) -> str:
+        return body_title(self.name)
+
+
+def body_title(name: str) -> str:
+    """Display name: "ws1" -> "wheelset 1", "bogie2" -> "bogie 2", "car" -> "car body"."""
+    import re
+    m = re.fullmatch(r"(ws|wheelset|bogie|car|carbody|car_body)[ _]?(\d*)", name, re.IGNORECASE)
+    if not m:
+        return name
+    word = {"ws": "wheelset", "carbody": "car body", "car_body": "car body",
+            "car": "car body"}.get(m.group(1).lower(), m.group(1).lower())
+    return f"{word} {m.group(2)}".strip()
+
+
+@dataclass
+class WheelsetContact:
+    name: str                                              # wheelset (body) name
+    sides: Dict[str, Dict[str, np.ndarray]]                # "left"/"right" -> datasets
+    data: Dict[str, np.ndarray]                            # datasets of the wheelset itself
+
+    def side(self, side: str, key: str) -> Optional[np.ndarray]:
+        v = self.sides.get(side, {}).get(key)
+        return v if v is not None and v.size > 0 else None
+
+
+@dataclass
+class Contact:
+    attrs: Dict[str, object]
+    wheelsets: Dict[str, WheelsetContact]                  # in vehicle order
+
+    def has_any(self, keys: Sequence[str]) -> bool:
+        for wc in self.wheelsets.values():
+            for k in keys:
+                if any(wc.side(sd, k) is not None for sd in ("left", "right")):
+                    return True
+                if k in wc.data and wc.data[k].size:
+                    return True
+        return False
+
+
+@dataclass
+class Result:
+    path: str
+    attrs: Dict[str, object]
+    groups: List[str]                    # top-level group/dataset names present in the file
+    track: Optional[Track] = None
+    irregularities: Optional[Irregularities] = None
+    extra: Dict[str, object] = field(default_factory=dict)  # room for later groups
+    time: Optional[np.ndarray] = None                       # /time [s]
+    bodies: Dict[str, Body] = field(default_factory=dict)   # /bodies, in vehicle order
+    contact: Optional[Contact] = None                       # /contact
+    elements: Dict[str, Dict[str, np.ndarray]] = field(default_factory=dict)  # /elements
+    element_units: Dict[str, Dict[str, str]] = field(default_factory=dict)    # their units
+    stats: Optional[Dict[str, object]] = None               # /stats attributes
+
+    @property
+    def stem(self) -> str:
+        return os.path.splitext(os.path.basename(self.path))[0]
+
+    @property
+    def failed(self) -> bool:
+        return bool(self.stats) and str(self.stats.get("status", "ok")).strip().lower() == "failed"
+
+    @property
+    def contact_method(self) -> Optional[str]:
+        """The wheel/rail contact method ("kec", "lut"); None without contact (track-only
+        runs, and guided runs, whose file says "none (wheelsets guided)")."""
+        m = self.attrs.get("contact_method")
+        if not m and self.contact is not None:
+            m = self.contact.attrs.get("method")
+        m = str(m).strip() if m else ""
+        return m if m and not m.lower().startswith("none") else None
+
+    @property
+    def guided(self) -> bool:
+        """A vehicle run whose wheelsets follow the track (no contact block)."""
+        return str(self.attrs.get("contact_method", "")).strip().lower().startswith("none")
+
+    def label(self) -> str:
+        """Short run label for legends: contact method in capitals (KEC, LUT), else the stem."""
+        m = self.contact_method
+        return m.upper() if m else self.stem
+
+    def kinematic_bodies(self, kinds: Sequence[str] = KINEMATIC_KINDS) -> List[str]:
+        """Names of bodies of the given kinds that can be drawn against distance (have s)."""
+        return [n for n, b in self.bodies.items() if b.kind in kinds and b.has("s")]
+
+    def t_reached(self) -> Optional[float]:
+        t = self.stats.get("t_reached") if self.stats else None
+        if isinstance(t, (int, float)) and math.isfinite(t):
+            return float(t)
+        if self.time is not None and self.time.size:
+            ok = self.time[np.isfinite(self.time)]
+            return float(ok[-1]) if ok.size else None
+        return None
+
+    def read_group(self, group: str) -> Dict[str, np.ndarray]:
+        """All 1-D datasets directly under `group` (lazy reader for figures added later)."""
+        import h5py
+        with h5py.File(self.path, "r") as f:
+            if group not in f:
+                raise ResultFileError(f"missing group {group}")
+            g = f[group]
+            return {k: np.asarray(v[()], dtype=float) for k, v in g.items()
+                    if isinstance(v, h5py.Dataset)}
+
+
+_CENTRELINE = {"s": "m", "x": "m", "y": "m", "z": "m", "heading": "rad", "slope": "rad",
+               "cant_angle": "rad", "curvature": "1/m", "cant": "m"}
+_SEGMENTS = {"start": "m", "length": "m", "kind": "-", "radius": "m", "side": "-", "cant": "m"}
+_IRR = {"s": "m", "alignment": "m", "vertical": "m", "gauge": "m", "cross_level": "m"}
+_IRR_OPTIONAL = {"left_y": "m", "left_z": "m", "right_y": "m", "right_z": "m", "delta": "rad"}
+
+# Vehicle groups.  Only these names are unit-checked; other 1-D numeric datasets (rates such as
+# y_dot, later additions) are read as they are and ignored by the figures.
+_BODY_DS = {"s": "m", "x": "m", "y": "m", "z": "m", "roll": "rad", "pitch": "rad", "yaw": "rad",
+            "ax": "m/s^2", "ay": "m/s^2", "az": "m/s^2"}
+# Per wheel, /contact/<wheelset>/<left|right>/ (workbench/app/run.cpp, runContact).
+_CONTACT_DS = {"normal_force": "N", "normal_tread": "N", "normal_flange": "N",
+               "creep_force_x": "N", "creep_force_y": "N", "creepage_x": "-", "creepage_y": "-",
+               "spin": "1/m", "wheel_s": "m", "rail_s": "m", "contact_angle": "rad",
+               "flange_indentation": "m", "flange_force": "N", "regime": "-", "y_over_q": "-"}
+
+
+def _guess_kind(name: str) -> str:
+    n = name.lower()
+    if n.startswith(("ws", "wheelset")):
+        return "wheelset"
+    if n.startswith("bogie"):
+        return "bogie"
+    if n.startswith("car"):
+        return "car"
+    return "other"
+
+
+def _names_attr(v) -> List[str]:
+    """A newline-separated string (or an array of strings) -> list of names."""
+    if isinstance(v, np.ndarray) and v.ndim == 1:
+        items = [_str(x) for x in v]
+    else:
+        items = _str(v).splitlines()
+    return [x.strip() for x in items if x.strip()]
+
+
+def _read_series(group, where: str, units: Dict[str, str]) -> Dict[str, np.ndarray]:
+    """All 1-D numeric datasets directly under `group` (others are skipped silently)."""
+    import h5py
+    out = {}
+    for k, d in group.items():
+        if not isinstance(d, h5py.Dataset) or d.dtype.kind not in "fiub" or d.ndim > 1:
+            continue
+        out[k] = _read_ds(group, k, where, units.get(k))
+    return out
+
+
+def _load_dynamics(f, res: Result) -> None:
+    """Optional groups /time, /bodies, /contact, /elements, /stats into `res`."""
+    import h5py
+    ragged: List[str] = []
+    n_t = None
+    if "time" in f and isinstance(f["time"], h5py.Dataset):
+        res.time = _read_ds(f, "time", "", "s")
+        n_t = res.time.size
+
+    def note_len(where, arrays):
+        if n_t is not None:
+            ragged.extend(f"{where}/{k}" for k, v in arrays.items() if v.size != n_t)
+
+    if "bodies" in f and isinstance(f["bodies"], h5py.Group):
+        g = f["bodies"]
+        present = [k for k, v in g.items() if isinstance(v, h5py.Group)]
+        names = _names_attr(g.attrs["names"]) if "names" in g.attrs else []
+        missing = [n for n in names if n not in present]
+        if missing:
+            print(f"railbench: warning: {res.path}: /bodies names {', '.join(missing)} "
+                  f"without a group", file=sys.stderr)
+        order = [n for n in names if n in present] + [n for n in present if n not in names]
+        for n in order:
+            bg = g[n]
+            kind = _str(bg.attrs["kind"]).strip().lower() if "kind" in bg.attrs else _guess_kind(n)
+            data = _read_series(bg, f"/bodies/{n}", _BODY_DS)
+            note_len(f"/bodies/{n}", data)
+            res.bodies[n] = Body(name=n, kind=kind, data=data)
+        if res.bodies and not any("s" in b.data for b in res.bodies.values()):
+            print(f"railbench: warning: {res.path}: no body has an 's' dataset (distance); "
+                  f"body figures skipped", file=sys.stderr)
+
+    if "contact" in f and isinstance(f["contact"], h5py.Group):
+        g = f["contact"]
+        wss = [k for k, v in g.items() if isinstance(v, h5py.Group)]
+        body_order = [n for n in res.bodies if n in wss]
+        wss = body_order + sorted(n for n in wss if n not in body_order)
+        cws = {}
+        for w in wss:
+            wg = g[w]
+            sides = {}
+            for side in ("left", "right"):
+                if side in wg and isinstance(wg[side], h5py.Group):
+                    sides[side] = _read_series(wg[side], f"/contact/{w}/{side}", _CONTACT_DS)
+                    note_len(f"/contact/{w}/{side}", sides[side])
+            data = _read_series(wg, f"/contact/{w}", {})
+            note_len(f"/contact/{w}", data)
+            cws[w] = WheelsetContact(name=w, sides=sides, data=data)
+        res.contact = Contact(attrs=_attrs(g), wheelsets=cws)
+
+    if "elements" in f and isinstance(f["elements"], h5py.Group):
+        for k, v in f["elements"].items():
+            if isinstance(v, h5py.Group):
+                res.elements[k] = _read_series(v, f"/elements/{k}", {})
+                res.element_units[k] = {d: _str(v[d].attrs["units"]).strip()
+                                        for d in res.elements[k] if "units" in v[d].attrs}
+                note_len(f"/elements/{k}", res.elements[k])
+
+    if "stats" in f:
+        res.stats = _attrs(f["stats"])
+
+    if ragged:
+        print(f"railbench: warning: {res.path}: {len(ragged)} time series differ in length "
+              f"from /time ({n_t} samples; interrupted run?), e.g. {ragged[0]}; plotted up to "
+              f"their common length", file=sys.stderr)
+
+
+def load_result(path: str) -> Result:
+    """Open and validate a result file. Raises ResultFileError with a one-line message."""
+    hint = " (a run still in progress writes '<name>.tmp')" if os.path.exists(path + ".tmp") else ""
+    f = open_h5(path, ResultFileError, "result file", hint)
+    try:
+        with f:
+            res = Result(path=path, attrs=_attrs(f), groups=sorted(f.keys()))
+            if "track" not in f:
+                raise ResultFileError(f"{path}: no /track group (not a railbench result file?)")
+            g = f["track"]
+            for sub in ("centreline", "segments"):
+                if sub not in g:
+                    raise ResultFileError(f"{path}: missing group /track/{sub}")
+            cl = {k: _read_ds(g["centreline"], k, "/track/centreline", u)
+                  for k, u in _CENTRELINE.items()}
+            n = cl["s"].size
+            if n < 2:
+                raise ResultFileError(f"{path}: /track/centreline/s has {n} sample(s)")
+            bad = [k for k, v in cl.items() if v.size != n]
+            if bad:
+                raise ResultFileError(f"{path}: /track/centreline datasets differ in length "
+                                      f"({', '.join(bad)} vs s={n})")
+            sg = {k: _read_ds(g["segments"], k, "/track/segments", u) for k, u in _SEGMENTS.items()}
+            m = sg["start"].size
+            if any(v.size != m for v in sg.values()):
+                raise ResultFileError(f"{path}: /track/segments datasets differ in length")
+            res.track = Track(attrs=_attrs(g), centreline=cl, segments=sg)
+
+            if "irregularities" in g:
+                ig = g["irregularities"]
+                data = {k: _read_ds(ig, k, "/track/irregularities", u) for k, u in _IRR.items()}
+                for k, u in _IRR_OPTIONAL.items():
+                    if k in ig:
+                        data[k] = _read_ds(ig, k, "/track/irregularities", u)
+                ni = data["s"].size
+                if any(data[k].size != ni for k in _IRR):
+                    raise ResultFileError(f"{path}: /track/irregularities datasets differ in length")
+                target = None
+                if "target_psd" in ig:
+                    tg = ig["target_psd"]
+                    target = {"omega": _read_ds(tg, "omega", "/track/irregularities/target_psd",
+                                                "rad/m")}
+                    for c in CHANNELS:
+                        if c in tg:
+                            target[c] = _read_ds(tg, c, "/track/irregularities/target_psd",
+                                                 "m^2/(rad/m)")
+                res.irregularities = Irregularities(attrs=_attrs(ig), data=data, target=target)
+            _load_dynamics(f, res)
+            return res
+    except ResultFileError:
+        raise
+    except (OSError, KeyError, ValueError) as e:
+        raise ResultFileError(f"{path}: cannot read ({str(e).splitlines()[0] if str(e) else e!r})") \
+            from None
+
+
+# --------------------------------------------------------------------------------------------
