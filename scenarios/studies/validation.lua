@@ -2,7 +2,7 @@
 -- scenarios/validation/, each run unchanged (its own solver: ABM 0.2 ms for case 1, 0.25 ms for
 -- cases 2 and 3), and cases 2 and 3 also with dopri5 at rtol = atol = 1e-6. The steady-curving
 -- values, the Eq. (33) difference between KEC and LUT on case 3 and the cost table of
--- docs/validation.md come from this study (plots/validation_tables.py; ./wb studies --only
+-- docs/validation.md come from this study (plots/rbplot validation-tables; ./wb studies --only
 -- validation). One case at a time, 3 repeats: the CPU times are medians.
 --   ./wb study scenarios/studies/validation.lua             (out/validation/)
 local lib = require "studies.lib"

@@ -19,7 +19,7 @@ through the real command line and checks every result:
 Per combination it records ok/failed, the failure reason, CPU time, evaluations and steps, and
 the git commit of the tree it ran (`commit`: abc1234 or abc1234+dirty, `run_date`) in
 <out-dir>/<case>.csv and prints a table. `--summary` merges all CSVs into hard_cases.csv, the
-record that plots/update_docs.py turns into the tables of docs/hard_cases.md and docs/studies.md.
+record that plots/rbplot docs turns into the tables of docs/hard_cases.md and docs/studies.md.
 
 usage: hard_cases.py --workbench BIN --case NAME --out-dir DIR
        hard_cases.py --summary --out-dir DIR

@@ -20,7 +20,7 @@ for sc in scenarios/tracks/*.lua; do
   else
     bad "run $sc: $(cat "$TMP/log")"; continue
   fi
-  if "$PY" plots/plot_run.py "$out" >"$TMP/plog" 2>&1; then ok "plots $sc"; else bad "plots $sc: $(cat "$TMP/plog")"; fi
+  if plots/rbplot run "$out" >"$TMP/plog" 2>&1; then ok "plots $sc"; else bad "plots $sc: $(cat "$TMP/plog")"; fi
 done
 n=$(ls "$TMP"/manchester_r500_irregular_*.png 2>/dev/null | wc -l)
 [ "$n" -ge 4 ] && ok "irregular track gives >= 4 figures ($n)" || bad "irregular track gave $n figures"
@@ -30,7 +30,7 @@ for sc in scenarios/vehicle/manchester_guided_r500.lua scenarios/validation/case
           scenarios/validation/case1_R500_lut.lua; do
   out="$TMP/$(basename "$sc" .lua).h5"
   if "$WB" run "$sc" --out "$out" --quiet --set run.duration=2 </dev/null >"$TMP/log" 2>&1 \
-     && "$PY" plots/plot_run.py "$out" >"$TMP/plog" 2>&1; then ok "run+plot $sc"; else bad "run $sc: $(cat "$TMP/log" "$TMP/plog")"; fi
+     && plots/rbplot run "$out" >"$TMP/plog" 2>&1; then ok "run+plot $sc"; else bad "run $sc: $(cat "$TMP/log" "$TMP/plog")"; fi
 done
 "$PY" - "$TMP/case1_R500_kec.h5" <<'PYEOF' && ok "contact outputs: loads balance the weight" || bad "contact outputs"
 import sys, h5py, numpy as np
@@ -74,7 +74,7 @@ grep -q "rtol has no effect with method 'rk4'" "$TMP/study/summary.csv" && ok "s
 grep -q "4 already done, running 4" "$TMP/se2" && ok "study resumes" || bad "study resume: $(head -2 "$TMP/se2")"
 
 # 4b. Study keys of a case (label, role, per-case base) and the study's figures and tables, drawn
-#     by `workbench study` itself (plots/plot_study.py) from the summary and the case files.
+#     by `workbench study` itself (plots/rbplot study) from the summary and the case files.
 "$WB" study tests/scenarios/data/study_plots.lua --out "$TMP/sp" </dev/null >"$TMP/spo" 2>"$TMP/spe"; rc=$?
 [ $rc -eq 0 ] && [ "$(grep -c ",ok," "$TMP/sp/summary.csv" 2>/dev/null)" = 7 ] \
   && ok "study with labels, roles and a per-case base" || bad "study_plots rc=$rc: $(cat "$TMP/spe" "$TMP/spo")"
@@ -105,13 +105,13 @@ assert float(eff["KEC abm"]["relative_to_baseline"]) == 1.0
 assert float(eff["no bump stops"]["us_per_eval"]) > 0
 assert eff["no bump stops"]["rhs_evals"] == eff["KEC abm"]["rhs_evals"]
 PYEOF
-"$PY" plots/plot_study.py "$TMP/nonexistent" >/dev/null 2>"$TMP/pe"; rc=$?
-[ $rc -eq 1 ] && grep -q "^plot_study: error: " "$TMP/pe" && ok "plot_study on a non-study folder" || bad "plot_study error ($rc)"
+plots/rbplot study "$TMP/nonexistent" >/dev/null 2>"$TMP/pe"; rc=$?
+[ $rc -eq 1 ] && grep -q "^railbench study: error: " "$TMP/pe" && ok "rbplot study on a non-study folder" || bad "rbplot study error ($rc)"
 
 # 5. Contact tables of the default profiles, and their figures.
 if "$WB" tables scenarios/tracks/manchester_r500.lua --out "$TMP/tables.h5" </dev/null >"$TMP/to" 2>&1 \
    && grep -q "two-point contact (left wheel) at y = 6.2" "$TMP/to"; then ok "tables"; else bad "tables: $(cat "$TMP/to")"; fi
-if "$PY" plots/plot_tables.py "$TMP/tables.h5" >"$TMP/tp" 2>&1 && [ "$(grep -c '\.png$' "$TMP/tp")" -ge 5 ]; then
+if plots/rbplot tables "$TMP/tables.h5" >"$TMP/tp" 2>&1 && [ "$(grep -c '\.png$' "$TMP/tp")" -ge 5 ]; then
   ok "tables figures"; else bad "tables figures: $(cat "$TMP/tp")"; fi
 
 echo "$pass passed, $fail failed"

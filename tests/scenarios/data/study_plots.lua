@@ -1,5 +1,5 @@
 -- Test study: the study keys of a case (label, role, per-case base) and every figure of
--- plots/plot_study.py on the contact wagon of case 3 over 2 m (0.1 s): LUT/KEC pairs (accuracy),
+-- plots/rbplot study on the contact wagon of case 3 over 2 m (0.1 s): LUT/KEC pairs (accuracy),
 -- references (work precision), a baseline and a variant on another base (effects).
 local base = "../../../scenarios/studies/"
 local short = { ["run.distance"] = 2 }
