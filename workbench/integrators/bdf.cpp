@@ -1,7 +1,7 @@
 #include <cvode/cvode.h>
-#include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "workbench/integrators/dense_lu.hpp"
 #include "workbench/integrators/sundials_common.hpp"
 #include "workbench/integrators/sundials_integrators.hpp"
 
@@ -70,7 +70,7 @@ RunResult BdfIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::VectorXd
   Eigen::VectorXd yout(n);
   const auto nn = static_cast<sunindextype>(n);
   detail::SunMatrix A(SUNDenseMatrix(nn, nn, ctx));
-  detail::SunLinSol LS(SUNLinSol_Dense(y.get(), A.get(), ctx));
+  detail::SunLinSol LS(detail::newDenseLuSolver(n, ctx));
   if (!A || !LS) throw std::bad_alloc();
 
   RunResult res;
