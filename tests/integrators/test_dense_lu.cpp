@@ -141,5 +141,29 @@ TEST(DenseLuSolver, SolveInPlaceWhenXIsB) {
   EXPECT_LT((map(x.get(), 6) - x_exact).cwiseAbs().maxCoeff(), 1e-13);
 }
 
+TEST(DenseMatrix, OperationsBitIdenticalToSunMatrixDense) {
+  SunContext ctx;
+  constexpr long n = 9;
+  const Eigen::MatrixXd m = newtonLike(n, 11U);
+  const SunMatrix ours(newDenseMatrix(n, ctx));
+  const SunMatrix ref = denseMatrix(m, ctx);
+  ASSERT_TRUE(ours);
+  EXPECT_EQ(SUNMatGetID(ours.get()), SUNMATRIX_DENSE);
+  ASSERT_EQ(SUNMatCopy(ref.get(), ours.get()), SUNMAT_SUCCESS);  // SUNDIALS' copy into ours
+  const SunMatrix saved(SUNMatClone(ours.get()));                // a clone has our operations
+  ASSERT_EQ(SUNMatCopy(ours.get(), saved.get()), SUNMAT_SUCCESS);
+  ASSERT_EQ(SUNMatScaleAddI(-0.37, saved.get()), SUNMAT_SUCCESS);
+  ASSERT_EQ(SUNMatScaleAddI(-0.37, ref.get()), SUNMAT_SUCCESS);
+  const auto bytes = static_cast<std::size_t>(n * n) * sizeof(double);
+  EXPECT_EQ(std::memcmp(SUNDenseMatrix_Data(saved.get()), SUNDenseMatrix_Data(ref.get()), bytes),
+            0);
+  ASSERT_EQ(SUNMatZero(saved.get()), SUNMAT_SUCCESS);
+  EXPECT_EQ(
+      Eigen::Map<Eigen::MatrixXd>(SUNDenseMatrix_Data(saved.get()), n, n).cwiseAbs().maxCoeff(),
+      0.0);
+  const SunMatrix wrong(newDenseMatrix(n + 1, ctx));
+  EXPECT_EQ(SUNMatCopy(ours.get(), wrong.get()), SUNMAT_ILL_INPUT);
+}
+
 }  // namespace
 }  // namespace rb::integ::detail

@@ -1,5 +1,4 @@
 #include <cvode/cvode.h>
-#include <sunmatrix/sunmatrix_dense.h>
 
 #include "workbench/integrators/dense_lu.hpp"
 #include "workbench/integrators/sundials_common.hpp"
@@ -68,8 +67,7 @@ RunResult BdfIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::VectorXd
   detail::NVector ele = detail::makeVector(n, ctx);
   detail::map(y.get(), n) = y0;
   Eigen::VectorXd yout(n);
-  const auto nn = static_cast<sunindextype>(n);
-  detail::SunMatrix A(SUNDenseMatrix(nn, nn, ctx));
+  detail::SunMatrix A(detail::newDenseMatrix(n, ctx));
   detail::SunLinSol LS(detail::newDenseLuSolver(n, ctx));
   if (!A || !LS) throw std::bad_alloc();
 

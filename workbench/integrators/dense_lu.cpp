@@ -147,7 +147,52 @@ int freeSolver(SUNLinearSolver s) {
   return SUNLS_SUCCESS;
 }
 
+// Dense matrix operations. SUNDIALS' checks: both matrices dense and of the same shape.
+bool sameShape(SUNMatrix a, SUNMatrix b) {
+  return SUNMatGetID(a) == SUNMATRIX_DENSE && SUNMatGetID(b) == SUNMATRIX_DENSE &&
+         SUNDenseMatrix_Rows(a) == SUNDenseMatrix_Rows(b) &&
+         SUNDenseMatrix_Columns(a) == SUNDenseMatrix_Columns(b);
+}
+
+int matCopy(SUNMatrix a, SUNMatrix b) {  // b := a
+  if (!sameShape(a, b)) return SUNMAT_ILL_INPUT;
+  denseMap(b) = denseMap(a);
+  return SUNMAT_SUCCESS;
+}
+
+int matScaleAddI(double c, SUNMatrix a) {  // a := c a + I
+  if (SUNMatGetID(a) != SUNMATRIX_DENSE) return SUNMAT_ILL_INPUT;
+  auto m = denseMap(a);
+  m *= c;
+  m.diagonal().array() += 1.0;
+  return SUNMAT_SUCCESS;
+}
+
+int matZero(SUNMatrix a) {
+  denseMap(a).setZero();
+  return SUNMAT_SUCCESS;
+}
+
+SUNMatrix withOurOps(SUNMatrix a);
+
+SUNMatrix matClone(SUNMatrix a) {
+  return withOurOps(SUNDenseMatrix(SUNDenseMatrix_Rows(a), SUNDenseMatrix_Columns(a), a->sunctx));
+}
+
+SUNMatrix withOurOps(SUNMatrix a) {
+  if (a == nullptr) return nullptr;
+  a->ops->copy = matCopy;
+  a->ops->scaleaddi = matScaleAddI;
+  a->ops->zero = matZero;
+  a->ops->clone = matClone;
+  return a;
+}
+
 }  // namespace
+
+SUNMatrix newDenseMatrix(long n, SUNContext ctx) {
+  return withOurOps(SUNDenseMatrix(n, n, ctx));
+}
 
 SUNLinearSolver newDenseLuSolver(long n, SUNContext ctx) {
   auto c = std::make_unique<DenseLuContent>(n);

@@ -13,6 +13,7 @@
 // bit-identical to SUNLinSol_Dense; only the speed changes.
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
 
 #include <Eigen/Dense>
 #include <vector>
@@ -42,5 +43,14 @@ class DenseLu {
 // matrix; solve copies b into x and applies the factors. Neither allocates. Returns nullptr if the
 // solver cannot be created; free it with SUNLinSolFree.
 SUNLinearSolver newDenseLuSolver(long n, SUNContext ctx);
+
+// An n x n SUNDenseMatrix (SUNDIALS' column-major content, id SUNMATRIX_DENSE, so CVODE's and
+// IDA's difference-quotient Jacobians fill it as usual) whose operations used once per linear
+// solver setup are ours: copy (the saved Jacobian into the Newton matrix and back), scale-add-I
+// (M = I - gamma J), zero, and clone (so the saved Jacobian CVODE clones from it gets the same
+// operations). Each computes the same element operations as SUNDIALS' dense versions, so the
+// results are bit-identical. Returns nullptr if the matrix cannot be created; free it with
+// SUNMatDestroy.
+SUNMatrix newDenseMatrix(long n, SUNContext ctx);
 
 }  // namespace rb::integ::detail

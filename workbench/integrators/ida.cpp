@@ -203,8 +203,7 @@ RunResult runIda(std::string_view method, const SolverSpec& sp, ResidualModel& m
   for (long i = 0; i < n; ++i)
     detail::data(id.get())[i] = model.isDifferential(static_cast<int>(i)) ? 1.0 : 0.0;
   Eigen::VectorXd yout(n);
-  const auto nn = static_cast<sunindextype>(n);
-  detail::SunMatrix A(SUNDenseMatrix(nn, nn, ctx));
+  detail::SunMatrix A(detail::newDenseMatrix(n, ctx));
   detail::SunLinSol LS(detail::newDenseLuSolver(n, ctx));
   if (!A || !LS) throw std::bad_alloc();
 
