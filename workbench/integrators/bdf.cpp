@@ -1,6 +1,7 @@
 #include <cvode/cvode.h>
 
 #include "workbench/integrators/dense_lu.hpp"
+#include "workbench/integrators/serial_vector_ops.hpp"
 #include "workbench/integrators/sundials_common.hpp"
 #include "workbench/integrators/sundials_integrators.hpp"
 
@@ -66,6 +67,7 @@ RunResult BdfIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::VectorXd
   detail::NVector ewt = detail::makeVector(n, ctx);
   detail::NVector ele = detail::makeVector(n, ctx);
   detail::map(y.get(), n) = y0;
+  detail::useCompiledVectorOps(y.get());  // CVODE's internal vectors are clones of y
   Eigen::VectorXd yout(n);
   detail::SunMatrix A(detail::newDenseMatrix(n, ctx));
   detail::SunLinSol LS(detail::newDenseLuSolver(n, ctx));

@@ -2,6 +2,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include "workbench/integrators/dense_lu.hpp"
+#include "workbench/integrators/serial_vector_ops.hpp"
 #include "workbench/integrators/sundials_common.hpp"
 #include "workbench/integrators/sundials_integrators.hpp"
 
@@ -200,6 +201,8 @@ RunResult runIda(std::string_view method, const SolverSpec& sp, ResidualModel& m
   detail::NVector ele = detail::makeVector(n, ctx);
   detail::map(yy.get(), n) = y0;
   detail::map(yp.get(), n) = yp0;
+  detail::useCompiledVectorOps(yy.get());  // IDA's internal vectors are clones of yy
+  detail::useCompiledVectorOps(yp.get());
   for (long i = 0; i < n; ++i)
     detail::data(id.get())[i] = model.isDifferential(static_cast<int>(i)) ? 1.0 : 0.0;
   Eigen::VectorXd yout(n);
