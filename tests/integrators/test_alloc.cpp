@@ -1,14 +1,17 @@
-// "No allocation in the per-step path of RK4/ABM": the number of heap allocations of a run must
-// not depend on the number of steps. Counts malloc() calls by interposing glibc's malloc (also
-// catches Eigen's allocations, which bypass operator new). Skipped with sanitizers, which
-// intercept malloc themselves.
+// "No allocation in the per-step path of RK4/ABM" (and of the dense LU solver of bdf/ida): the
+// number of heap allocations of a run must not depend on the number of steps. Counts malloc() calls
+// by interposing glibc's malloc (also catches Eigen's allocations, which bypass operator new).
+// Skipped with sanitizers, which intercept malloc themselves.
 #include <gtest/gtest.h>
+#include <sunmatrix/sunmatrix_dense.h>
 
 #include <atomic>
 #include <cstddef>
 
 #include "test_systems.hpp"
+#include "workbench/integrators/dense_lu.hpp"
 #include "workbench/integrators/registry.hpp"
+#include "workbench/integrators/sundials_common.hpp"
 
 #if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)
 #define RB_COUNT_MALLOC 1
@@ -74,6 +77,32 @@ TEST(FixedStep, NoAllocationPerStep) {
     EXPECT_GT(few, 0) << m;  // the counter works: buffers are allocated once per run
     EXPECT_EQ(few, many) << m;
   }
+}
+
+// The dense LU solver of bdf and ida allocates its pivots once: setup (factorisation) and solve
+// never allocate.
+TEST(DenseLuSolver, NoAllocationInSetupOrSolve) {
+#ifndef RB_COUNT_MALLOC
+  GTEST_SKIP() << "malloc counting needs glibc and no sanitizer";
+#else
+  constexpr long n = 70;
+  detail::SunContext ctx;
+  const detail::SunMatrix a(SUNDenseMatrix(n, n, ctx));
+  const detail::NVector b = detail::makeVector(n, ctx);
+  const detail::NVector x = detail::makeVector(n, ctx);
+  const detail::SunLinSol s(detail::newDenseLuSolver(n, ctx));
+  ASSERT_TRUE(a && s);
+  const Eigen::MatrixXd m = Eigen::MatrixXd::Identity(n, n) - 0.01 * Eigen::MatrixXd::Ones(n, n);
+  detail::map(b.get(), n).setLinSpaced(-1.0, 1.0);
+  const long before = g_mallocs.load();
+  for (int rep = 0; rep < 10; ++rep) {
+    Eigen::Map<Eigen::MatrixXd>(SUNDenseMatrix_Data(a.get()), n, n) = m;
+    EXPECT_EQ(SUNLinSolSetup(s.get(), a.get()), SUNLS_SUCCESS);
+    for (int k = 0; k < 5; ++k)
+      EXPECT_EQ(SUNLinSolSolve(s.get(), a.get(), x.get(), b.get(), 0.0), SUNLS_SUCCESS);
+  }
+  EXPECT_EQ(g_mallocs.load() - before, 0);
+#endif
 }
 
 }  // namespace

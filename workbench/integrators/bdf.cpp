@@ -1,7 +1,7 @@
 #include <cvode/cvode.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
 
+#include "workbench/integrators/dense_lu.hpp"
+#include "workbench/integrators/serial_vector_ops.hpp"
 #include "workbench/integrators/sundials_common.hpp"
 #include "workbench/integrators/sundials_integrators.hpp"
 
@@ -67,10 +67,10 @@ RunResult BdfIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::VectorXd
   detail::NVector ewt = detail::makeVector(n, ctx);
   detail::NVector ele = detail::makeVector(n, ctx);
   detail::map(y.get(), n) = y0;
+  detail::useCompiledVectorOps(y.get());  // CVODE's internal vectors are clones of y
   Eigen::VectorXd yout(n);
-  const auto nn = static_cast<sunindextype>(n);
-  detail::SunMatrix A(SUNDenseMatrix(nn, nn, ctx));
-  detail::SunLinSol LS(SUNLinSol_Dense(y.get(), A.get(), ctx));
+  detail::SunMatrix A(detail::newDenseMatrix(n, ctx));
+  detail::SunLinSol LS(detail::newDenseLuSolver(n, ctx));
   if (!A || !LS) throw std::bad_alloc();
 
   RunResult res;

@@ -1,7 +1,8 @@
 #include <ida/ida.h>
-#include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "workbench/integrators/dense_lu.hpp"
+#include "workbench/integrators/serial_vector_ops.hpp"
 #include "workbench/integrators/sundials_common.hpp"
 #include "workbench/integrators/sundials_integrators.hpp"
 
@@ -200,12 +201,13 @@ RunResult runIda(std::string_view method, const SolverSpec& sp, ResidualModel& m
   detail::NVector ele = detail::makeVector(n, ctx);
   detail::map(yy.get(), n) = y0;
   detail::map(yp.get(), n) = yp0;
+  detail::useCompiledVectorOps(yy.get());  // IDA's internal vectors are clones of yy
+  detail::useCompiledVectorOps(yp.get());
   for (long i = 0; i < n; ++i)
     detail::data(id.get())[i] = model.isDifferential(static_cast<int>(i)) ? 1.0 : 0.0;
   Eigen::VectorXd yout(n);
-  const auto nn = static_cast<sunindextype>(n);
-  detail::SunMatrix A(SUNDenseMatrix(nn, nn, ctx));
-  detail::SunLinSol LS(SUNLinSol_Dense(yy.get(), A.get(), ctx));
+  detail::SunMatrix A(detail::newDenseMatrix(n, ctx));
+  detail::SunLinSol LS(detail::newDenseLuSolver(n, ctx));
   if (!A || !LS) throw std::bad_alloc();
 
   RunResult res;

@@ -46,8 +46,9 @@ class Dopri5Integrator final : public Integrator {
 };
 
 // Variable-order (1..spec.max_order) variable-step BDF through CVODE (CV_BDF, Newton iteration,
-// dense SUNMatrix + SUNLinSol_Dense). Jacobian: the model's analytic one when
-// sys.hasJacobian() and spec.jacobian == "auto", else CVODE's internal difference-quotient
+// dense SUNMatrix and LU solver of dense_lu.hpp: SUNDIALS' dense algorithms compiled with our
+// flags, bit-identical to SUNMatrix_Dense + SUNLinSol_Dense). Jacobian: the model's analytic one
+// when sys.hasJacobian() and spec.jacobian == "auto", else CVODE's internal difference-quotient
 // Jacobian, whose rhs evaluations are counted in Stats::rhs_evals_jac (CVodeGetNumLinRhsEvals),
 // not in Stats::rhs_evals.
 //
@@ -78,11 +79,12 @@ class BdfIntegrator final : public Integrator {
                    const Progress& progress) override;
 };
 
-// IDA (variable-order BDF for F(t, y, y') = 0) with a dense linear solver and finite-difference
-// Jacobian. DAEs: IDACalcIC(IDA_YA_YDP_INIT) with DaeSystem::isDifferential makes the initial
-// values consistent. ODEs are run as F = y' - f(t, y) (y'(t0) = f(t0, y0), no IDACalcIC); for
-// them the model's analytic Jacobian is used (J = c_j I - df/dy) under the same rule as bdf.
-// Residual evaluations are counted as Stats::rhs_evals / rhs_evals_jac.
+// IDA (variable-order BDF for F(t, y, y') = 0) with the dense matrix and LU solver of
+// dense_lu.hpp and IDA's finite-difference Jacobian. DAEs: IDACalcIC(IDA_YA_YDP_INIT) with
+// DaeSystem::isDifferential makes the initial values consistent. ODEs are run as F = y' - f(t, y)
+// (y'(t0) = f(t0, y0), no IDACalcIC); for them the model's analytic Jacobian is used (J = c_j I -
+// df/dy) under the same rule as bdf. Residual evaluations are counted as Stats::rhs_evals /
+// rhs_evals_jac.
 class IdaIntegrator final : public Integrator {
  public:
   explicit IdaIntegrator(SolverSpec spec) : Integrator(std::move(spec)) {}
