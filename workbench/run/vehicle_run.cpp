@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -13,90 +14,25 @@
 #include "workbench/run/simulate.hpp"
 #include "workbench/track/samples.hpp"
 #include "workbench/vehicle/guided.hpp"
+#include "workbench/vehicle/vehicle_ode.hpp"
 
 namespace rb::run {
 namespace {
 
-using vehicle::ElementId;
 using vehicle::ElementValue;
 using vehicle::Vector6d;
 
-// What a vehicle run needs of its system at an output time, the same for guided and contact
-// vehicles. Each call evaluates the model at (t, y) on demand.
-class VehicleSystem {
- public:
-  virtual ~VehicleSystem() = default;
-  virtual integ::OdeSystem& ode() = 0;
-  virtual Eigen::VectorXd initialState() = 0;
-  // Full coordinates (s, y, z, roll, pitch, yaw) of every body.
-  virtual void coordinates(double t, const double* y, std::vector<Vector6d>& q) = 0;
-  // Absolute centre-of-mass accelerations, body track-frame components [m/s^2].
-  virtual void accelerations(double t, const double* y, std::vector<Eigen::Vector3d>& a) = 0;
-  virtual void elements(double t, const double* y, const std::vector<ElementId>& ids,
-                        std::vector<ElementValue>& out) = 0;
-};
-
-class GuidedSystem final : public VehicleSystem {
- public:
-  explicit GuidedSystem(const vehicle::VehicleModel& v)
-      : ode_(v), layout_(vehicle::guidedLayout(v)), ws_(vehicle::makeWorkspace(v)) {}
-  integ::OdeSystem& ode() override { return ode_; }
-  Eigen::VectorXd initialState() override { return ode_.staticState(0.0); }
-  void coordinates(double t, const double* y, std::vector<Vector6d>& q) override {
-    vehicle::guidedCoordinates(ode_.model(), layout_, t, y, ws_);
-    for (std::size_t b = 0; b < q.size(); ++b) q[b] = ws_.q[b];
+// Absolute centre-of-mass accelerations a = Lv qddot + gamma_v of every body at (t, y), in the
+// body track-frame components [m/s^2] (NaN when the evaluation fails).
+void absoluteAccelerations(vehicle::VehicleOde& ode, double t, const double* y,
+                           std::vector<Vector6d>& qdd, std::vector<Eigen::Vector3d>& a) {
+  if (ode.bodyAccelerations(t, y, qdd) != 0) {
+    for (auto& v : a) v.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return;
   }
-  void accelerations(double t, const double* y, std::vector<Eigen::Vector3d>& a) override {
-    for (std::size_t b = 0; b < a.size(); ++b)
-      a[b] = ode_.bodyOutput(t, y, static_cast<int>(b)).acceleration;
-  }
-  void elements(double t, const double* y, const std::vector<ElementId>& ids,
-                std::vector<ElementValue>& out) override {
-    ode_.elementOutputs(t, y, ids, out);
-  }
-
- private:
-  vehicle::GuidedVehicleOde ode_;
-  vehicle::GuidedLayout layout_;
-  vehicle::Workspace ws_;
-};
-
-class ContactSystem final : public VehicleSystem {
- public:
-  ContactSystem(const vehicle::VehicleModel& v, const dynamics::ContactModel& c,
-                const track::TrackModel& t)
-      : ode_(v, c, t), qdd_(v.bodies.size()) {}
-  integ::OdeSystem& ode() override { return ode_; }
-  dynamics::ContactVehicleOde& contactOde() { return ode_; }
-  Eigen::VectorXd initialState() override { return ode_.initialState(0.0); }
-  void coordinates(double t, const double* y, std::vector<Vector6d>& q) override {
-    ode_.bodyCoordinates(t, y, q);
-  }
-  void accelerations(double t, const double* y, std::vector<Eigen::Vector3d>& a) override {
-    // The output evaluation leaves the body kinematics of (t, y) in the workspace: a = Lv qddot +
-    // gamma_v, as for the guided vehicle.
-    if (ode_.bodyAccelerations(t, y, qdd_) != 0) {
-      for (auto& v : a) v.setConstant(std::numeric_limits<double>::quiet_NaN());
-      return;
-    }
-    const auto& ws = ode_.workspace();
-    for (std::size_t b = 0; b < a.size(); ++b) a[b] = ws.kin[b].Lv * qdd_[b] + ws.kin[b].gamma_v;
-  }
-  void elements(double t, const double* y, const std::vector<ElementId>& ids,
-                std::vector<ElementValue>& out) override {
-    std::vector<Vector6d>& unused = qdd_;
-    const bool ok = ode_.bodyAccelerations(t, y, unused) == 0;
-    const auto& ws = ode_.workspace();
-    for (std::size_t i = 0; i < ids.size(); ++i) {
-      out[i] = ws.value(ids[i]);
-      if (!ok) out[i].force = out[i].d = std::numeric_limits<double>::quiet_NaN();
-    }
-  }
-
- private:
-  dynamics::ContactVehicleOde ode_;
-  std::vector<Vector6d> qdd_;
-};
+  const auto& ws = ode.workspace();
+  for (std::size_t b = 0; b < a.size(); ++b) a[b] = ws.kin[b].Lv * qdd[b] + ws.kin[b].gamma_v;
+}
 
 std::string kindName(vehicle::BodyKind k) {
   switch (k) {
@@ -133,20 +69,20 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   RB_CHECK(m.vehicle.has_value(), "runVehicle needs a vehicle");
   const auto& v = *m.vehicle;
   const std::size_t nb = v.bodies.size();
-  std::unique_ptr<VehicleSystem> sys;
-  ContactSystem* contact = nullptr;
+  std::unique_ptr<vehicle::VehicleOde> ode;
+  dynamics::ContactVehicleOde* contact = nullptr;
   if (m.contact) {
-    auto cs = std::make_unique<ContactSystem>(v, *m.contact, *m.track);
+    auto cs = std::make_unique<dynamics::ContactVehicleOde>(v, *m.contact, *m.track);
     contact = cs.get();
-    sys = std::move(cs);
+    ode = std::move(cs);
   } else {
-    sys = std::make_unique<GuidedSystem>(v);
+    ode = std::make_unique<vehicle::GuidedVehicleOde>(v);
   }
 
   SimulationRequest r;
-  r.system = &sys->ode();
+  r.system = ode.get();
   r.solver = m.solver;
-  r.y0 = sys->initialState();
+  r.y0 = ode->initialState(0.0);
   r.t_end = m.t_end;
   r.output_every = m.spec.run.output_every;
   r.progress = o.progress;
@@ -198,29 +134,29 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     f.attr("/contact", "table_bytes", static_cast<std::int64_t>(ts.bytes));
   }
 
-  std::vector<Vector6d> q(nb);
+  std::vector<Vector6d> q(nb), qdd(nb);
   std::vector<Eigen::Vector3d> a(nb);
   std::vector<ElementValue> values(m.output_elements.size());
   std::vector<dynamics::WheelOutput> wo(contact ? 2 * m.contact->wheelsets.size() : 0);
   double max_creepage = 0.0, t_max_creepage = 0.0;
   r.sample = [&](double t, const Eigen::VectorXd& y, double* out) {
     *out++ = v.speedAt(t);
-    sys->coordinates(t, y.data(), q);
-    if (acc) sys->accelerations(t, y.data(), a);
+    ode->bodyCoordinates(t, y.data(), q);
+    if (acc) absoluteAccelerations(*ode, t, y.data(), qdd, a);
     for (std::size_t b = 0; b < nb; ++b) {
       for (int k = 0; k < 6; ++k) *out++ = q[b][k];
       if (acc)
         for (int k = 0; k < 3; ++k) *out++ = a[b][k];
     }
     if (!values.empty()) {
-      sys->elements(t, y.data(), m.output_elements, values);
+      ode->elementOutputs(t, y.data(), m.output_elements, values);
       for (const auto& e : values) {
         *out++ = e.d;
         *out++ = e.force;
       }
     }
     if (!contact) return;
-    if (contact->contactOde().wheelOutputs(t, y.data(), wo) != 0) {
+    if (contact->wheelOutputs(t, y.data(), wo) != 0) {
       for (std::size_t k = 0; k < wo.size() * kNq; ++k)
         *out++ = std::numeric_limits<double>::quiet_NaN();
       return;
@@ -263,7 +199,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   VehicleRunResult out;
   out.result = simulate(r, f);
   if (contact) {
-    const auto& cs = contact->contactOde().stats();
+    const auto& cs = contact->stats();
     f.attr("/stats", "model_evaluations", static_cast<std::int64_t>(cs.evaluations));
     f.attr("/stats", "kec_iterations", static_cast<std::int64_t>(cs.kec_iterations));
     f.attr("/stats", "lift_evaluations", static_cast<std::int64_t>(cs.lift_evaluations));
