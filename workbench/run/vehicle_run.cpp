@@ -63,6 +63,117 @@ std::string num(double v) {
   return os.str();
 }
 
+// Largest creepage of any active patch at the output times, and when.
+struct CreepageMaximum {
+  double value = 0.0, t = 0.0;
+  void update(const dynamics::WheelOutput& w, double t_now) {
+    for (const auto& pp : w.patch) {
+      if (!pp.active) continue;
+      const double c = std::max(std::abs(pp.sx), std::abs(pp.sy));
+      if (c > value) {
+        value = c;
+        t = t_now;
+      }
+    }
+  }
+};
+
+// Channels of the bodies and suspension elements, in the order sampleVehicle fills them, and the
+// /bodies attributes.
+void addVehicleChannels(const Model& m, io::ResultFile& f, std::vector<OutputChannel>& outputs) {
+  const auto& v = *m.vehicle;
+  const bool acc = m.spec.run.body_accelerations;
+  static const char* coords[6] = {"s", "y", "z", "roll", "pitch", "yaw"};
+  static const char* units[6] = {"m", "m", "m", "rad", "rad", "rad"};
+  std::string names;
+  for (const auto& b : v.bodies) {
+    names += (names.empty() ? "" : "\n") + b.name;
+    f.attr("/bodies/" + b.name, "kind", kindName(b.kind));
+    for (int k = 0; k < 6; ++k)
+      outputs.push_back({"/bodies/" + b.name + "/" + coords[k], units[k]});
+    if (acc)
+      for (const char* a : {"ax", "ay", "az"})
+        outputs.push_back({"/bodies/" + b.name + "/" + a, "m/s^2"});
+  }
+  f.attr("/bodies", "names", names);
+  if (acc)
+    f.attr("/bodies", "acceleration_frame",
+           std::string("absolute acceleration of the centre of mass, components in the body's "
+                       "track frame (x along the track, y lateral, z vertical)"));
+  for (auto id : m.output_elements) {
+    const std::string base = "/elements/" + v.elementName(id) + "/";
+    const bool bending = id.kind == vehicle::ElementKind::BendingSpring;
+    outputs.push_back({base + "deflection", bending ? "rad" : "m"});
+    outputs.push_back({base + "force", bending ? "N m" : "N"});
+  }
+}
+
+// Channels of the wheels, in the order sampleWheels fills them, and the /contact attributes.
+void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputChannel>& outputs) {
+  const auto& v = *m.vehicle;
+  const auto& cm = *m.contact;
+  for (int w : cm.wheelsets)
+    for (const char* side : {"left", "right"})
+      for (const auto& [q, u] : kWheelQ)
+        outputs.push_back({"/contact/" + v.bodies[w].name + "/" + side + "/" + q, u});
+  f.attr("/contact", "method", std::string(dynamics::ContactModel::methodName(cm.method)));
+  f.attr("/contact", "creep", std::string(dynamics::ContactModel::creepName(cm.creep)));
+  f.attr("/contact", "normal_forces",
+         std::string(dynamics::ContactModel::couplingName(cm.coupling)));
+  f.attr("/contact", "min_normal_force", cm.min_normal_force);
+  f.attr("/contact", "mu", m.spec.contact.mu);
+  const auto& ts = cm.tableStats();
+  f.attr("/contact", "table_build_time_s", ts.build_seconds);
+  f.attr("/contact", "table_bytes", static_cast<std::int64_t>(ts.bytes));
+}
+
+// Per-wheel values (kWheelQ order); returns the next output slot.
+double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t, double* out,
+                     CreepageMaximum& creepage) {
+  for (const auto& w : wheels) {
+    // The dominant patch (largest normal force) gives creepages and contact position.
+    const auto& p = std::abs(w.patch[1].normal) > std::abs(w.patch[0].normal) && w.patch[1].active
+                        ? w.patch[1]
+                        : w.patch[0];
+    const double vals[] = {w.normal,
+                           w.normal_tread,
+                           w.normal_flange,
+                           w.patch[0].fx + w.patch[1].fx,
+                           w.patch[0].fy + w.patch[1].fy,
+                           p.sx,
+                           p.sy,
+                           p.spin,
+                           p.s_w,
+                           p.s_r,
+                           p.gamma,
+                           w.flange_indentation,
+                           w.flange_force,
+                           static_cast<double>(w.regime),
+                           w.y_over_q};
+    for (const double x : vals) *out++ = x;
+    creepage.update(w, t);
+  }
+  return out;
+}
+
+// /stats of the contact model and the warnings of a contact run.
+void writeContactStats(const Model& m, const dynamics::ContactStats& cs,
+                       const CreepageMaximum& creepage, io::ResultFile& f, VehicleRunResult& out) {
+  f.attr("/stats", "model_evaluations", static_cast<std::int64_t>(cs.evaluations));
+  f.attr("/stats", "kec_iterations", static_cast<std::int64_t>(cs.kec_iterations));
+  f.attr("/stats", "lift_evaluations", static_cast<std::int64_t>(cs.lift_evaluations));
+  f.attr("/stats", "consistent_iterations", static_cast<std::int64_t>(cs.consistent_iterations));
+  f.attr("/stats", "max_creepage", creepage.value);
+  if (cs.lift_evaluations > 0 && out.result.ok)
+    out.warnings.push_back("wheel lift was refused in " + std::to_string(cs.lift_evaluations) +
+                           " trial evaluations (the integrator retried smaller steps); the "
+                           "accepted solution never lifted");
+  if (m.contact->creep != dynamics::CreepModel::None && creepage.value > kCreepageWarning)
+    out.warnings.push_back("creepage reached " + num(creepage.value) +
+                           " at t = " + num(creepage.t) + " s, beyond " + num(kCreepageWarning) +
+                           " where the creep law is calibrated (docs/contact_dynamics.md)");
+}
+
 }  // namespace
 
 VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunOptions& o) {
@@ -92,53 +203,16 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   r.distance = [lead, &v](double t, const Eigen::VectorXd&) { return lead + v.travel(t); };
 
   // Channels, in the order the sampler fills them.
-  const bool acc = m.spec.run.body_accelerations;
   r.outputs.push_back({"/vehicle/speed", "m/s"});
-  static const char* coords[6] = {"s", "y", "z", "roll", "pitch", "yaw"};
-  static const char* units[6] = {"m", "m", "m", "rad", "rad", "rad"};
-  std::string names;
-  for (const auto& b : v.bodies) {
-    names += (names.empty() ? "" : "\n") + b.name;
-    f.attr("/bodies/" + b.name, "kind", kindName(b.kind));
-    for (int k = 0; k < 6; ++k)
-      r.outputs.push_back({"/bodies/" + b.name + "/" + coords[k], units[k]});
-    if (acc)
-      for (const char* a : {"ax", "ay", "az"})
-        r.outputs.push_back({"/bodies/" + b.name + "/" + a, "m/s^2"});
-  }
-  f.attr("/bodies", "names", names);
-  if (acc)
-    f.attr("/bodies", "acceleration_frame",
-           std::string("absolute acceleration of the centre of mass, components in the body's "
-                       "track frame (x along the track, y lateral, z vertical)"));
-  for (auto id : m.output_elements) {
-    const std::string base = "/elements/" + v.elementName(id) + "/";
-    const bool bending = id.kind == vehicle::ElementKind::BendingSpring;
-    r.outputs.push_back({base + "deflection", bending ? "rad" : "m"});
-    r.outputs.push_back({base + "force", bending ? "N m" : "N"});
-  }
-  if (contact) {
-    const auto& cm = *m.contact;
-    for (int w : cm.wheelsets)
-      for (const char* side : {"left", "right"})
-        for (const auto& [q, u] : kWheelQ)
-          r.outputs.push_back({"/contact/" + v.bodies[w].name + "/" + side + "/" + q, u});
-    f.attr("/contact", "method", std::string(dynamics::ContactModel::methodName(cm.method)));
-    f.attr("/contact", "creep", std::string(dynamics::ContactModel::creepName(cm.creep)));
-    f.attr("/contact", "normal_forces",
-           std::string(dynamics::ContactModel::couplingName(cm.coupling)));
-    f.attr("/contact", "min_normal_force", cm.min_normal_force);
-    f.attr("/contact", "mu", m.spec.contact.mu);
-    const auto& ts = cm.tableStats();
-    f.attr("/contact", "table_build_time_s", ts.build_seconds);
-    f.attr("/contact", "table_bytes", static_cast<std::int64_t>(ts.bytes));
-  }
+  addVehicleChannels(m, f, r.outputs);
+  if (contact) addContactChannels(m, f, r.outputs);
 
+  const bool acc = m.spec.run.body_accelerations;
   std::vector<Vector6d> q(nb), qdd(nb);
   std::vector<Eigen::Vector3d> a(nb);
   std::vector<ElementValue> values(m.output_elements.size());
   std::vector<dynamics::WheelOutput> wo(contact ? 2 * m.contact->wheelsets.size() : 0);
-  double max_creepage = 0.0, t_max_creepage = 0.0;
+  CreepageMaximum creepage;
   r.sample = [&](double t, const Eigen::VectorXd& y, double* out) {
     *out++ = v.speedAt(t);
     ode->bodyCoordinates(t, y.data(), q);
@@ -161,36 +235,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
         *out++ = std::numeric_limits<double>::quiet_NaN();
       return;
     }
-    for (const auto& w : wo) {
-      // The dominant patch (largest normal force) gives creepages and contact position.
-      const auto& p = std::abs(w.patch[1].normal) > std::abs(w.patch[0].normal) && w.patch[1].active
-                          ? w.patch[1]
-                          : w.patch[0];
-      const double vals[] = {w.normal,
-                             w.normal_tread,
-                             w.normal_flange,
-                             w.patch[0].fx + w.patch[1].fx,
-                             w.patch[0].fy + w.patch[1].fy,
-                             p.sx,
-                             p.sy,
-                             p.spin,
-                             p.s_w,
-                             p.s_r,
-                             p.gamma,
-                             w.flange_indentation,
-                             w.flange_force,
-                             static_cast<double>(w.regime),
-                             w.y_over_q};
-      for (const double x : vals) *out++ = x;
-      for (const auto& pp : w.patch) {
-        if (!pp.active) continue;
-        const double c = std::max(std::abs(pp.sx), std::abs(pp.sy));
-        if (c > max_creepage) {
-          max_creepage = c;
-          t_max_creepage = t;
-        }
-      }
-    }
+    sampleWheels(wo, t, out, creepage);
   };
   f.attr("/", "solver", m.solver.method);
   f.attr("/", "contact_method",
@@ -198,22 +243,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
                  : std::string("none (wheelsets guided)"));
   VehicleRunResult out;
   out.result = simulate(r, f);
-  if (contact) {
-    const auto& cs = contact->stats();
-    f.attr("/stats", "model_evaluations", static_cast<std::int64_t>(cs.evaluations));
-    f.attr("/stats", "kec_iterations", static_cast<std::int64_t>(cs.kec_iterations));
-    f.attr("/stats", "lift_evaluations", static_cast<std::int64_t>(cs.lift_evaluations));
-    f.attr("/stats", "consistent_iterations", static_cast<std::int64_t>(cs.consistent_iterations));
-    f.attr("/stats", "max_creepage", max_creepage);
-    if (cs.lift_evaluations > 0 && out.result.ok)
-      out.warnings.push_back("wheel lift was refused in " + std::to_string(cs.lift_evaluations) +
-                             " trial evaluations (the integrator retried smaller steps); the "
-                             "accepted solution never lifted");
-    if (m.contact->creep != dynamics::CreepModel::None && max_creepage > kCreepageWarning)
-      out.warnings.push_back("creepage reached " + num(max_creepage) + " at t = " +
-                             num(t_max_creepage) + " s, beyond " + num(kCreepageWarning) +
-                             " where the creep law is calibrated (docs/contact_dynamics.md)");
-  }
+  if (contact) writeContactStats(m, contact->stats(), creepage, f, out);
   writeWarnings(f, out.warnings);
   f.flush();
   return out;
