@@ -151,7 +151,7 @@ inline Trace run(dynamics::ContactVehicleOde& ode, const integ::SolverSpec& solv
   std::vector<double> times;
   const long n = static_cast<long>(std::llround(t_end / every));
   for (long k = 1; k <= n; ++k) times.push_back(static_cast<double>(k) * every);
-  const std::size_t nb = ode.vehicle().bodies.size();
+  const std::size_t nb = ode.model().bodies.size();
   tr.result = integ::integrate(ode, *integrator, 0.0, start, times,
                                [&](double t, const Eigen::VectorXd& y) {
                                  tr.t.push_back(t);

@@ -16,7 +16,7 @@ TEST(Allocation, RhsAndOutputsAllocateNothing) {
       track::compileTrack(rbtest::curveTrack(track::Side::Left, 300.0, 0.1));
   const VehicleModel m = compileVehicle(rbtest::manchesterWagon(20.0, 60.0), tm);
   GuidedVehicleOde ode(m);
-  Eigen::VectorXd y = ode.staticState(0.0);
+  Eigen::VectorXd y = ode.initialState(0.0);
   y[1] += 0.01;
   Eigen::VectorXd yd(ode.size());
   const ElementId ids[2] = {*m.findElement("bump_y_bogie1"), *m.findElement("sec_bend_bogie2_l")};

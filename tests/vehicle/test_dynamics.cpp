@@ -101,7 +101,7 @@ class Manchester : public ::testing::Test {
 TEST_F(Manchester, StaticEquilibriumDeflectionsFollowTheLoadPaths) {
   const VehicleModel m = compileVehicle(rbtest::manchesterWagon(20.0, 20.0), straight());
   GuidedVehicleOde ode(m);
-  const Eigen::VectorXd y = ode.staticState(0.0);
+  const Eigen::VectorXd y = ode.initialState(0.0);
   // At rest: all rates zero.
   Eigen::VectorXd yd(ode.size());
   ASSERT_EQ(ode.rhs(0.0, y.data(), yd.data()), 0);
@@ -153,7 +153,7 @@ TEST_F(Manchester, TractionBalancesTheGradient) {
   const track::TrackModel tm = track::compileTrack(ts);
   const VehicleModel m = compileVehicle(rbtest::manchesterWagon(20.0, 150.0), tm);
   GuidedVehicleOde ode(m);
-  const Eigen::VectorXd y = ode.staticState(0.0);
+  const Eigen::VectorXd y = ode.initialState(0.0);
   double traction = 0.0, mass = 0.0;
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
     traction += ode.bodyOutput(0.0, y.data(), static_cast<int>(b)).traction;
@@ -179,7 +179,7 @@ const Mode& modeOf(const std::vector<Mode>& modes, int component, int in_phase_w
 TEST_F(Manchester, FreeDecayFrequenciesMatchEigenvalues) {
   const VehicleModel m = compileVehicle(rbtest::manchesterWagon(20.0, 20.0), straight());
   GuidedVehicleOde ode(m);
-  const Eigen::VectorXd y0 = ode.staticState(0.0);
+  const Eigen::VectorXd y0 = ode.initialState(0.0);
   const std::vector<Mode> modes = guidedModes(ode, 0.0, y0);
   const int car = m.findBody("car"), b1 = m.findBody("bogie1"), b2 = m.findBody("bogie2");
   struct Case {
@@ -233,7 +233,7 @@ TEST_F(Manchester, ModeTableAndRhsCost) {
   // Prints the modes of the guided wagon (docs/vehicle.md) and the cost of one rhs evaluation.
   const VehicleModel m = compileVehicle(rbtest::manchesterWagon(20.0, 20.0), straight());
   GuidedVehicleOde ode(m);
-  const Eigen::VectorXd y0 = ode.staticState(0.0);
+  const Eigen::VectorXd y0 = ode.initialState(0.0);
   const std::vector<Mode> modes = guidedModes(ode, 0.0, y0);
   EXPECT_EQ(modes.size(), 15u);  // 3 free bodies x 5 coordinates, all oscillatory
   for (const Mode& md : modes)
@@ -255,7 +255,7 @@ TEST_F(Manchester, ModeTableAndRhsCost) {
 TEST_F(Manchester, CachedPairPlacementsGiveTheFreshRhs) {
   const VehicleModel m = compileVehicle(rbtest::manchesterWagon(20.0, 20.0), straight());
   GuidedVehicleOde warm(m);
-  Eigen::VectorXd y = warm.staticState(0.0);
+  Eigen::VectorXd y = warm.initialState(0.0);
   for (int i = 0; i < y.size(); ++i) y[i] += 1e-4 * std::sin(1.0 + i);
   Eigen::VectorXd a(warm.size()), b(warm.size());
   for (const double t : {0.2, 0.5, 0.5, 0.3}) warm.rhs(t, y.data(), a.data());
@@ -271,7 +271,7 @@ TEST_F(Manchester, EnergyIsConservedWithoutDampersAndDecaysWithThem) {
     if (!damped) spec = rbtest::withoutDampers(spec);
     const VehicleModel m = compileVehicle(spec, straight());
     GuidedVehicleOde ode(m);
-    const Eigen::VectorXd ys = ode.staticState(0.0);
+    const Eigen::VectorXd ys = ode.initialState(0.0);
     const double E_static = ode.energy(0.0, ys.data()).total();
     Eigen::VectorXd y0 = ys;
     const int car = m.findBody("car"), b1 = m.findBody("bogie1"), b2 = m.findBody("bogie2");
@@ -320,7 +320,7 @@ TEST(Curving, QuasiStaticForceBalanceOfCantedCurve) {
       track::compileTrack(rbtest::curveTrack(track::Side::Left, R, cant, 40.0, 60.0, 400.0));
   const VehicleModel m = compileVehicle(rbtest::manchesterWagon(V, 250.0), tm);
   GuidedVehicleOde ode(m);
-  const Eigen::VectorXd y = ode.staticState(0.0);
+  const Eigen::VectorXd y = ode.initialState(0.0);
   const double phi = -std::asin(cant / 1.5);  // track cant angle: left curve, right rail raised
   double Fy_hand[3] = {}, Fz_hand[3] = {};    // car, bogie1, bogie2
   const char* names[3] = {"car", "bogie1", "bogie2"};
@@ -471,7 +471,7 @@ TEST(Curving, LeftAndRightCurvesGiveMirroredResponses) {
         track::compileTrack(rbtest::curveTrack(side, 300.0, 0.1, 40.0, 60.0, 200.0));
     models[i] = compileVehicle(rbtest::manchesterWagon(20.0, 10.0), tm);
     GuidedVehicleOde ode(models[i]);
-    const Eigen::VectorXd y0 = ode.staticState(0.0);
+    const Eigen::VectorXd y0 = ode.initialState(0.0);
     runs[i] = simulate(ode, y0, rk4(1e-3), 0.05, 5.0);
   }
   const VehicleModel& m = models[0];
@@ -542,7 +542,7 @@ TEST(Curving, BdfAgreesWithRk4OnCurveEntry) {
       track::compileTrack(rbtest::curveTrack(track::Side::Left, 300.0, 0.1, 40.0, 60.0, 200.0));
   const VehicleModel m = compileVehicle(rbtest::manchesterWagon(20.0, 30.0), tm);
   GuidedVehicleOde ode(m);
-  const Eigen::VectorXd y0 = ode.staticState(0.0);
+  const Eigen::VectorXd y0 = ode.initialState(0.0);
   integ::SolverSpec bdf;
   bdf.method = "bdf";
   bdf.step = 0.0;

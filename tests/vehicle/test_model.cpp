@@ -183,7 +183,7 @@ TEST(Validation, UnsupportedFreeBodyIsReportedByTheStaticSolver) {
   const VehicleModel m = compileVehicle(v, straight());
   GuidedVehicleOde ode(m);
   try {
-    ode.staticState(0.0);
+    ode.initialState(0.0);
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string msg = e.what();
@@ -269,7 +269,7 @@ TEST(LuaVehicles, SingleWheelsetCarriesAQuarterOfTheWagon) {
   EXPECT_EQ(m.elementCount(), 8);
   GuidedVehicleOde ode(m);
   EXPECT_EQ(ode.size(), 2);  // the two primary vertical series damper forces
-  const Eigen::VectorXd y = ode.staticState(0.0);
+  const Eigen::VectorXd y = ode.initialState(0.0);
   // Everything kinematic: the axle boxes carry the preload only, (32000 + 2 x 2615) / 4 g.
   const BodyOutput ws = ode.bodyOutput(0.0, y.data(), m.findBody("ws"));
   EXPECT_NEAR(-ws.suspension_force.z(), (32000.0 + 2 * 2615.0) / 4 * 9.81, 1e-6);

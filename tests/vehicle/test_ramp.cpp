@@ -24,7 +24,7 @@ TEST(SpeedRamp, PrescribedArcLengthSpeedAndSpin) {
   spec.acceleration = 0.8;
   const auto model = compileVehicle(spec, track);
   GuidedVehicleOde ode(model);
-  const Eigen::VectorXd y = ode.staticState(0.0);
+  const Eigen::VectorXd y = ode.initialState(0.0);
   rb::vehicle::Workspace ws = rb::vehicle::makeWorkspace(model);
   const double t = 3.0;
   rb::vehicle::guidedCoordinates(model, ode.layout(), t, y.data(), ws);
@@ -51,8 +51,8 @@ TEST(SpeedRamp, TangentTrackTractionBalancesInertiaWithoutPitch) {
   spec.acceleration = 1.5;
   const auto m1 = compileVehicle(spec, track);
   GuidedVehicleOde ode0(m0), ode1(m1);
-  const Eigen::VectorXd y0 = ode0.staticState(0.0);
-  const Eigen::VectorXd y1 = ode1.staticState(0.0);
+  const Eigen::VectorXd y0 = ode0.initialState(0.0);
+  const Eigen::VectorXd y1 = ode1.initialState(0.0);
   EXPECT_LT((y1 - y0).lpNorm<Eigen::Infinity>(), 1e-12);
   double traction = 0.0, mass = 0.0;
   for (std::size_t b = 0; b < m1.bodies.size(); ++b) {
@@ -110,7 +110,7 @@ TEST(SpeedRamp, ZeroAccelerationIsBitIdentical) {
   VehicleSpec spec = manchesterWagon(20.0, 30.0);
   const auto model = compileVehicle(spec, track);
   GuidedVehicleOde ode(model);
-  Eigen::VectorXd y = ode.staticState(0.0);
+  Eigen::VectorXd y = ode.initialState(0.0);
   for (int i = 0; i < ode.size(); ++i) y[i] += 1e-4 * std::sin(1.0 + i);
   Eigen::VectorXd yd(ode.size());
   const double t = 2.345;

@@ -27,18 +27,12 @@
 // The planar contact picture (normals, contact frames) turns with the wheelset yaw, so normal
 // forces do no work on yaw and spin (the constraints do not depend on them).
 // Tangential forces (section 2.5) from the creepages at every patch, with the normal forces of the
-// previous evaluation (Lagged, the paper) or solved together with them at every evaluation
-// (Consistent: fixed-point iteration, Newton on the 2 normal forces when it contracts slowly).
+// previous evaluation (Lagged, the paper; internal::NormalForceMemory) or solved together with
+// them at every evaluation (Consistent: fixed-point iteration, Newton on the 2 normal forces when
+// it contracts slowly). The evaluation's stages are listed in contact_stages.hpp.
 //
-// State layout (nf free bodies in body order, nw wheelsets in body order, ns series dampers, d = 3
-// wheelset coordinates with a free spin, 2 with a prescribed spin; size 10 nf + 2 d nw + ns):
-//   [5k + c]                  position c (0..4: y, z, phi, theta, psi) of free body k  "car.y"
-//   [5 nf + d w + j]          wheelset w: j = 0 y, 1 theta (spin, free only), 2 (or 1) psi
-//                                                                         "ws1.y", "ws1.theta"
-//   [5 nf + d nw + 5k + c]    rate of free body coordinate                              "car.y_dot"
-//   [10 nf + d nw + d w + j]  wheelset rate                                        "ws1.theta_dot"
-//   [10 nf + 2 d nw + e]      Maxwell force of series damper e                      "series[3].f"
-// ContactLayout::wsPosition(w, c) / wsRate(w, c) take c = 0 y, 1 theta, 2 psi in both cases.
+// State layout: vehicle::VehicleLayout (workbench/vehicle/layout.hpp) with ws_dof = 3 wheelset
+// coordinates (y, theta, psi) with a free spin, 2 (y, psi) with a prescribed spin.
 // With a prescribed spin theta = travel(t) / r_c, theta_dot = V(t) / r_c (r_c =
 // ContactModel::centredRadius()) are set kinematically and the spin row of the wheelset's
 // equations is replaced by theta_ddot = a / r_c (its reaction, the spin torque, is not applied).
@@ -46,47 +40,26 @@
 // rhs() is allocation-free and returns 1 (recoverable) when the KEC solver does not converge, a
 // knife or the LUT entry leaves the table, the augmented system is singular or a value is not
 // finite; lastError() names the wheelset, the time and the cause. Outputs are computed on demand
-// (wheelOutputs, bodyCoordinates) without changing the state the integration depends on.
+// (wheelOutputs, bodyCoordinates, bodyAccelerations, elementOutputs) without changing the state the
+// integration depends on.
 #include <Eigen/Dense>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "workbench/dynamics/contact_model.hpp"
-#include "workbench/integrators/ode.hpp"
 #include "workbench/track/track.hpp"
 #include "workbench/vehicle/dynamics.hpp"
+#include "workbench/vehicle/layout.hpp"
 #include "workbench/vehicle/model.hpp"
+#include "workbench/vehicle/vehicle_ode.hpp"
 
 namespace rb::dynamics {
 
-struct ContactLayout {
-  std::vector<int> free_bodies;  // car bodies and bogies, body order
-  std::vector<int> wheelsets;    // wheelsets, body order
-  std::vector<int> slot;         // per body: free-body number, wheelset number, or -1 (frame)
-  int n_free = 0, n_ws = 0, n_series = 0, size = 0;
-  // Independent coordinates per wheelset: 3 (y, theta, psi) with a free spin, 2 (y, psi) with a
-  // prescribed one (WheelsetSpin::Prescribed: theta is not a state).
-  int ws_dof = 3;
-  bool spinFree() const { return ws_dof == 3; }
-  // Slot of wheelset coordinate c (0 y, 1 theta, 2 psi) among the wheelset's states; -1 for the
-  // spin when it is prescribed.
-  int wsSlot(int c) const { return ws_dof == 3 ? c : (c == 0 ? 0 : (c == 2 ? 1 : -1)); }
-  int position(int k, int c) const { return 5 * k + c; }  // c = 0..4: y, z, phi, theta, psi
-  // c: 0 y, 1 theta, 2 psi; -1 if c is the prescribed spin.
-  int wsPosition(int w, int c) const {
-    const int j = wsSlot(c);
-    return j < 0 ? -1 : 5 * n_free + ws_dof * w + j;
-  }
-  int rate(int k, int c) const { return 5 * n_free + ws_dof * n_ws + 5 * k + c; }
-  int wsRate(int w, int c) const {
-    const int j = wsSlot(c);
-    return j < 0 ? -1 : 10 * n_free + ws_dof * n_ws + ws_dof * w + j;
-  }
-  int series(int e) const { return 10 * n_free + 2 * ws_dof * n_ws + e; }
-};
-ContactLayout contactLayout(const vehicle::VehicleModel& model,
-                            WheelsetSpin spin = WheelsetSpin::Free);
+// The layout of a vehicle on wheel/rail contact (ws_dof = 3 with a free spin, 2 prescribed).
+vehicle::VehicleLayout contactLayout(const vehicle::VehicleModel& model,
+                                     WheelsetSpin spin = WheelsetSpin::Free);
 
 // One contact patch of a wheel. Creep forces act on the wheel in the patch's contact frame:
 // x along the track (rolling direction), n the rail normal (into the wheel), y = n x x.
@@ -134,73 +107,63 @@ struct ContactStats {
   double max_lagged_change = 0.0;  // [N] largest |lambda - lambda_previous| seen (Lagged)
 };
 
-class ContactVehicleOde : public integ::OdeSystem {
+namespace internal {
+struct ContactWorkspace;
+enum class EvalMode;
+}  // namespace internal
+
+class ContactVehicleOde final : public vehicle::VehicleOde {
  public:
   // Keeps references: all three must outlive this object.
   ContactVehicleOde(const vehicle::VehicleModel& vehicle, const ContactModel& contact,
                     const track::TrackModel& track);
 
-  int size() const override { return layout_.size; }
   int rhs(double t, const double* y, double* ydot) override;
-  std::string componentName(int i) const override;
-  std::string lastError() const override { return last_error_; }
+  std::string lastError() const override;
 
-  const ContactLayout& layout() const { return layout_; }
-  const vehicle::VehicleModel& vehicle() const { return *vehicle_; }
   const ContactModel& contact() const { return *contact_; }
-  // State index of coordinate c of body b (or of its rate); -1 if not a state (prescribed or
-  // dependent: s of every body, z and phi of wheelsets, all of a frame).
-  int index(int body, vehicle::Coord c, bool rate = false) const;
-  int indexOf(const std::string& component) const;  // by componentName(); -1 if none
 
   // State at t0: wheelsets centred (y = 0, psi = 0, theta = 0; z, phi from the constraints), spin
   // rate V / r_c (r_c: mean rolling radius of the centred wheelset), car bodies and bogies in
-  // static (on a curve: quasi-static) equilibrium on their suspension (Newton on their
-  // accelerations, as GuidedVehicleOde::staticState), series forces 0. Initialises the normal
-  // forces (consistent solve) used by the Lagged coupling at the first step, so the normal forces
-  // at t0 are the static wheel loads. Throws rb::InputError when no equilibrium is found.
-  Eigen::VectorXd initialState(double t0);
+  // static (on a curve: quasi-static) equilibrium on their suspension (vehicle::
+  // solveStaticEquilibrium, as GuidedVehicleOde::initialState), series forces 0. Initialises the
+  // normal forces (consistent solve) used by the Lagged coupling at the first step, so the normal
+  // forces at t0 are the static wheel loads. Throws rb::InputError when no equilibrium is found.
+  Eigen::VectorXd initialState(double t0) override;
 
   // Outputs at (t, y), evaluated on demand; they do not change what the integration sees (the
-  // Lagged normal-force memory is restored). Return 0, or the rhs error code.
+  // Lagged normal-force memory is kept). Return 0, or the rhs error code.
   // Full coordinates (s, y, z, roll, pitch, yaw) of every body, q.size() == bodies.
-  int bodyCoordinates(double t, const double* y, std::span<vehicle::Vector6d> q);
+  int bodyCoordinates(double t, const double* y, std::span<vehicle::Vector6d> q) override;
   // Two entries per wheelset, in wheelset order: [2w] left, [2w + 1] right.
   int wheelOutputs(double t, const double* y, std::span<WheelOutput> out);
   // Accelerations (sddot = a, y, z, roll, pitch, yaw) of every body, qdd.size() == bodies; for
   // wheelsets z and roll are the constraint accelerations (G qddot = gamma).
-  int bodyAccelerations(double t, const double* y, std::span<vehicle::Vector6d> qdd);
+  int bodyAccelerations(double t, const double* y, std::span<vehicle::Vector6d> qdd) override;
+  // Element values of a full evaluation at (t, y); NaN force and deflection when it fails.
+  int elementOutputs(double t, const double* y, std::span<const vehicle::ElementId> ids,
+                     std::span<vehicle::ElementValue> out) override;
   // Vehicle workspace of the last evaluation (element values, forces).
-  const vehicle::Workspace& workspace() const { return ws_; }
+  const vehicle::Workspace& workspace() const override;
 
-  const ContactStats& stats() const { return stats_; }
-  void resetStats() { stats_ = {}; }
+  const ContactStats& stats() const;
+  void resetStats();
 
   ~ContactVehicleOde() override;
   ContactVehicleOde(ContactVehicleOde&&) noexcept;
 
  private:
-  enum class Mode { Rhs, Output, Init };
-  struct WheelsetWork;
-  int evaluate(double t, const double* y, double* ydot, Mode mode);
+  int evaluate(double t, const double* y, double* ydot, internal::EvalMode mode);
   int setCoordinates(double t, const double* y);
   // The evaluation, compiled for each contact method and creep law (chosen once, in the
   // constructor: no per-patch branch on the law; creep "none" compiles the creep code out).
   template <ContactMethod kMethod, class Law>
-  int evaluateT(double t, const double* y, double* ydot, Mode mode);
-  using EvalFn = int (ContactVehicleOde::*)(double, const double*, double*, Mode);
+  int evaluateT(double t, const double* y, double* ydot, internal::EvalMode mode);
+  using EvalFn = int (ContactVehicleOde::*)(double, const double*, double*, internal::EvalMode);
 
-  const vehicle::VehicleModel* vehicle_;
   const ContactModel* contact_;
   const track::Irregularities* irr_ = nullptr;
-  ContactLayout layout_;
-  vehicle::Workspace ws_;
-  std::vector<double> scratch_;
-  std::string last_error_;
-  ContactStats stats_;
-  std::vector<WheelsetWork> work_;
-  std::vector<WheelOutput> out_;
-  std::vector<vehicle::Vector6d> qdd_;  // body accelerations of the last Output evaluation
+  std::unique_ptr<internal::ContactWorkspace> work_;
   EvalFn eval_ = nullptr;
 };
 

@@ -26,6 +26,21 @@ std::vector<double> outputTimes(double t0, double t_end, double every) {
   return times;
 }
 
+namespace {
+
+// Why the sample `values` at t stops the run (a non-finite value, or the request's check); empty
+// when it is valid.
+std::string invalidSample(const SimulationRequest& r, double t, const std::vector<double>& values) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (std::isfinite(values[i])) continue;
+    return "non-finite output " + r.outputs[i].path + " = " + std::to_string(values[i]) +
+           " at t = " + std::to_string(t) + " s";
+  }
+  return r.check ? r.check(t, values.data()) : std::string();
+}
+
+}  // namespace
+
 integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
   RB_CHECK(r.system != nullptr, "no system to simulate");
   auto integrator = integ::makeIntegrator(r.solver);
@@ -46,19 +61,10 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
   auto observer = [&](double t, const Eigen::VectorXd& y) {
     if (!series.empty()) {
       r.sample(t, y, values.data());
-      for (std::size_t i = 0; i < series.size(); ++i) {
-        if (std::isfinite(values[i])) continue;
-        invalid = "non-finite output " + r.outputs[i].path + " = " + std::to_string(values[i]) +
-                  " at t = " + std::to_string(t) + " s";
+      invalid = invalidSample(r, t, values);
+      if (!invalid.empty()) {
         t_invalid = t;
         return false;  // not written: the file ends at the last valid sample
-      }
-      if (r.check) {
-        invalid = r.check(t, values.data());
-        if (!invalid.empty()) {
-          t_invalid = t;
-          return false;
-        }
       }
     }
     time.append(t);

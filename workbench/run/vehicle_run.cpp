@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -13,90 +14,25 @@
 #include "workbench/run/simulate.hpp"
 #include "workbench/track/samples.hpp"
 #include "workbench/vehicle/guided.hpp"
+#include "workbench/vehicle/vehicle_ode.hpp"
 
 namespace rb::run {
 namespace {
 
-using vehicle::ElementId;
 using vehicle::ElementValue;
 using vehicle::Vector6d;
 
-// What a vehicle run needs of its system at an output time, the same for guided and contact
-// vehicles. Each call evaluates the model at (t, y) on demand.
-class VehicleSystem {
- public:
-  virtual ~VehicleSystem() = default;
-  virtual integ::OdeSystem& ode() = 0;
-  virtual Eigen::VectorXd initialState() = 0;
-  // Full coordinates (s, y, z, roll, pitch, yaw) of every body.
-  virtual void coordinates(double t, const double* y, std::vector<Vector6d>& q) = 0;
-  // Absolute centre-of-mass accelerations, body track-frame components [m/s^2].
-  virtual void accelerations(double t, const double* y, std::vector<Eigen::Vector3d>& a) = 0;
-  virtual void elements(double t, const double* y, const std::vector<ElementId>& ids,
-                        std::vector<ElementValue>& out) = 0;
-};
-
-class GuidedSystem final : public VehicleSystem {
- public:
-  explicit GuidedSystem(const vehicle::VehicleModel& v)
-      : ode_(v), layout_(vehicle::guidedLayout(v)), ws_(vehicle::makeWorkspace(v)) {}
-  integ::OdeSystem& ode() override { return ode_; }
-  Eigen::VectorXd initialState() override { return ode_.staticState(0.0); }
-  void coordinates(double t, const double* y, std::vector<Vector6d>& q) override {
-    vehicle::guidedCoordinates(ode_.model(), layout_, t, y, ws_);
-    for (std::size_t b = 0; b < q.size(); ++b) q[b] = ws_.q[b];
+// Absolute centre-of-mass accelerations a = Lv qddot + gamma_v of every body at (t, y), in the
+// body track-frame components [m/s^2] (NaN when the evaluation fails).
+void absoluteAccelerations(vehicle::VehicleOde& ode, double t, const double* y,
+                           std::vector<Vector6d>& qdd, std::vector<Eigen::Vector3d>& a) {
+  if (ode.bodyAccelerations(t, y, qdd) != 0) {
+    for (auto& v : a) v.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return;
   }
-  void accelerations(double t, const double* y, std::vector<Eigen::Vector3d>& a) override {
-    for (std::size_t b = 0; b < a.size(); ++b)
-      a[b] = ode_.bodyOutput(t, y, static_cast<int>(b)).acceleration;
-  }
-  void elements(double t, const double* y, const std::vector<ElementId>& ids,
-                std::vector<ElementValue>& out) override {
-    ode_.elementOutputs(t, y, ids, out);
-  }
-
- private:
-  vehicle::GuidedVehicleOde ode_;
-  vehicle::GuidedLayout layout_;
-  vehicle::Workspace ws_;
-};
-
-class ContactSystem final : public VehicleSystem {
- public:
-  ContactSystem(const vehicle::VehicleModel& v, const dynamics::ContactModel& c,
-                const track::TrackModel& t)
-      : ode_(v, c, t), qdd_(v.bodies.size()) {}
-  integ::OdeSystem& ode() override { return ode_; }
-  dynamics::ContactVehicleOde& contactOde() { return ode_; }
-  Eigen::VectorXd initialState() override { return ode_.initialState(0.0); }
-  void coordinates(double t, const double* y, std::vector<Vector6d>& q) override {
-    ode_.bodyCoordinates(t, y, q);
-  }
-  void accelerations(double t, const double* y, std::vector<Eigen::Vector3d>& a) override {
-    // The output evaluation leaves the body kinematics of (t, y) in the workspace: a = Lv qddot +
-    // gamma_v, as for the guided vehicle.
-    if (ode_.bodyAccelerations(t, y, qdd_) != 0) {
-      for (auto& v : a) v.setConstant(std::numeric_limits<double>::quiet_NaN());
-      return;
-    }
-    const auto& ws = ode_.workspace();
-    for (std::size_t b = 0; b < a.size(); ++b) a[b] = ws.kin[b].Lv * qdd_[b] + ws.kin[b].gamma_v;
-  }
-  void elements(double t, const double* y, const std::vector<ElementId>& ids,
-                std::vector<ElementValue>& out) override {
-    std::vector<Vector6d>& unused = qdd_;
-    const bool ok = ode_.bodyAccelerations(t, y, unused) == 0;
-    const auto& ws = ode_.workspace();
-    for (std::size_t i = 0; i < ids.size(); ++i) {
-      out[i] = ws.value(ids[i]);
-      if (!ok) out[i].force = out[i].d = std::numeric_limits<double>::quiet_NaN();
-    }
-  }
-
- private:
-  dynamics::ContactVehicleOde ode_;
-  std::vector<Vector6d> qdd_;
-};
+  const auto& ws = ode.workspace();
+  for (std::size_t b = 0; b < a.size(); ++b) a[b] = ws.kin[b].Lv * qdd[b] + ws.kin[b].gamma_v;
+}
 
 std::string kindName(vehicle::BodyKind k) {
   switch (k) {
@@ -127,37 +63,26 @@ std::string num(double v) {
   return os.str();
 }
 
-}  // namespace
-
-VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunOptions& o) {
-  RB_CHECK(m.vehicle.has_value(), "runVehicle needs a vehicle");
-  const auto& v = *m.vehicle;
-  const std::size_t nb = v.bodies.size();
-  std::unique_ptr<VehicleSystem> sys;
-  ContactSystem* contact = nullptr;
-  if (m.contact) {
-    auto cs = std::make_unique<ContactSystem>(v, *m.contact, *m.track);
-    contact = cs.get();
-    sys = std::move(cs);
-  } else {
-    sys = std::make_unique<GuidedSystem>(v);
+// Largest creepage of any active patch at the output times, and when.
+struct CreepageMaximum {
+  double value = 0.0, t = 0.0;
+  void update(const dynamics::WheelOutput& w, double t_now) {
+    for (const auto& pp : w.patch) {
+      if (!pp.active) continue;
+      const double c = std::max(std::abs(pp.sx), std::abs(pp.sy));
+      if (c > value) {
+        value = c;
+        t = t_now;
+      }
+    }
   }
+};
 
-  SimulationRequest r;
-  r.system = &sys->ode();
-  r.solver = m.solver;
-  r.y0 = sys->initialState();
-  r.t_end = m.t_end;
-  r.output_every = m.spec.run.output_every;
-  r.progress = o.progress;
-  // Arc length of the leading body, the body compile() runs to the track end, so that a failure's
-  // distance is where the first wheelset was.
-  const double lead = v.start + m.leadingX();
-  r.distance = [lead, &v](double t, const Eigen::VectorXd&) { return lead + v.travel(t); };
-
-  // Channels, in the order the sampler fills them.
+// Channels of the bodies and suspension elements, in the order sampleVehicle fills them, and the
+// /bodies attributes.
+void addVehicleChannels(const Model& m, io::ResultFile& f, std::vector<OutputChannel>& outputs) {
+  const auto& v = *m.vehicle;
   const bool acc = m.spec.run.body_accelerations;
-  r.outputs.push_back({"/vehicle/speed", "m/s"});
   static const char* coords[6] = {"s", "y", "z", "roll", "pitch", "yaw"};
   static const char* units[6] = {"m", "m", "m", "rad", "rad", "rad"};
   std::string names;
@@ -165,10 +90,10 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     names += (names.empty() ? "" : "\n") + b.name;
     f.attr("/bodies/" + b.name, "kind", kindName(b.kind));
     for (int k = 0; k < 6; ++k)
-      r.outputs.push_back({"/bodies/" + b.name + "/" + coords[k], units[k]});
+      outputs.push_back({"/bodies/" + b.name + "/" + coords[k], units[k]});
     if (acc)
       for (const char* a : {"ax", "ay", "az"})
-        r.outputs.push_back({"/bodies/" + b.name + "/" + a, "m/s^2"});
+        outputs.push_back({"/bodies/" + b.name + "/" + a, "m/s^2"});
   }
   f.attr("/bodies", "names", names);
   if (acc)
@@ -178,83 +103,139 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   for (auto id : m.output_elements) {
     const std::string base = "/elements/" + v.elementName(id) + "/";
     const bool bending = id.kind == vehicle::ElementKind::BendingSpring;
-    r.outputs.push_back({base + "deflection", bending ? "rad" : "m"});
-    r.outputs.push_back({base + "force", bending ? "N m" : "N"});
+    outputs.push_back({base + "deflection", bending ? "rad" : "m"});
+    outputs.push_back({base + "force", bending ? "N m" : "N"});
   }
-  if (contact) {
-    const auto& cm = *m.contact;
-    for (int w : cm.wheelsets)
-      for (const char* side : {"left", "right"})
-        for (const auto& [q, u] : kWheelQ)
-          r.outputs.push_back({"/contact/" + v.bodies[w].name + "/" + side + "/" + q, u});
-    f.attr("/contact", "method", std::string(dynamics::ContactModel::methodName(cm.method)));
-    f.attr("/contact", "creep", std::string(dynamics::ContactModel::creepName(cm.creep)));
-    f.attr("/contact", "normal_forces",
-           std::string(dynamics::ContactModel::couplingName(cm.coupling)));
-    f.attr("/contact", "min_normal_force", cm.min_normal_force);
-    f.attr("/contact", "mu", m.spec.contact.mu);
-    const auto& ts = cm.tableStats();
-    f.attr("/contact", "table_build_time_s", ts.build_seconds);
-    f.attr("/contact", "table_bytes", static_cast<std::int64_t>(ts.bytes));
+}
+
+// Channels of the wheels, in the order sampleWheels fills them, and the /contact attributes.
+void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputChannel>& outputs) {
+  const auto& v = *m.vehicle;
+  const auto& cm = *m.contact;
+  for (int w : cm.wheelsets)
+    for (const char* side : {"left", "right"})
+      for (const auto& [q, u] : kWheelQ)
+        outputs.push_back({"/contact/" + v.bodies[w].name + "/" + side + "/" + q, u});
+  f.attr("/contact", "method", std::string(dynamics::ContactModel::methodName(cm.method)));
+  f.attr("/contact", "creep", std::string(dynamics::ContactModel::creepName(cm.creep)));
+  f.attr("/contact", "normal_forces",
+         std::string(dynamics::ContactModel::couplingName(cm.coupling)));
+  f.attr("/contact", "min_normal_force", cm.min_normal_force);
+  f.attr("/contact", "mu", m.spec.contact.mu);
+  const auto& ts = cm.tableStats();
+  f.attr("/contact", "table_build_time_s", ts.build_seconds);
+  f.attr("/contact", "table_bytes", static_cast<std::int64_t>(ts.bytes));
+}
+
+// Per-wheel values (kWheelQ order); returns the next output slot.
+double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t, double* out,
+                     CreepageMaximum& creepage) {
+  for (const auto& w : wheels) {
+    // The dominant patch (largest normal force) gives creepages and contact position.
+    const auto& p = std::abs(w.patch[1].normal) > std::abs(w.patch[0].normal) && w.patch[1].active
+                        ? w.patch[1]
+                        : w.patch[0];
+    const double vals[] = {w.normal,
+                           w.normal_tread,
+                           w.normal_flange,
+                           w.patch[0].fx + w.patch[1].fx,
+                           w.patch[0].fy + w.patch[1].fy,
+                           p.sx,
+                           p.sy,
+                           p.spin,
+                           p.s_w,
+                           p.s_r,
+                           p.gamma,
+                           w.flange_indentation,
+                           w.flange_force,
+                           static_cast<double>(w.regime),
+                           w.y_over_q};
+    for (const double x : vals) *out++ = x;
+    creepage.update(w, t);
+  }
+  return out;
+}
+
+// /stats of the contact model and the warnings of a contact run.
+void writeContactStats(const Model& m, const dynamics::ContactStats& cs,
+                       const CreepageMaximum& creepage, io::ResultFile& f, VehicleRunResult& out) {
+  f.attr("/stats", "model_evaluations", static_cast<std::int64_t>(cs.evaluations));
+  f.attr("/stats", "kec_iterations", static_cast<std::int64_t>(cs.kec_iterations));
+  f.attr("/stats", "lift_evaluations", static_cast<std::int64_t>(cs.lift_evaluations));
+  f.attr("/stats", "consistent_iterations", static_cast<std::int64_t>(cs.consistent_iterations));
+  f.attr("/stats", "max_creepage", creepage.value);
+  if (cs.lift_evaluations > 0 && out.result.ok)
+    out.warnings.push_back("wheel lift was refused in " + std::to_string(cs.lift_evaluations) +
+                           " trial evaluations (the integrator retried smaller steps); the "
+                           "accepted solution never lifted");
+  if (m.contact->creep != dynamics::CreepModel::None && creepage.value > kCreepageWarning)
+    out.warnings.push_back("creepage reached " + num(creepage.value) +
+                           " at t = " + num(creepage.t) + " s, beyond " + num(kCreepageWarning) +
+                           " where the creep law is calibrated (docs/contact_dynamics.md)");
+}
+
+}  // namespace
+
+VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunOptions& o) {
+  RB_CHECK(m.vehicle.has_value(), "runVehicle needs a vehicle");
+  const auto& v = *m.vehicle;
+  const std::size_t nb = v.bodies.size();
+  std::unique_ptr<vehicle::VehicleOde> ode;
+  dynamics::ContactVehicleOde* contact = nullptr;
+  if (m.contact) {
+    auto cs = std::make_unique<dynamics::ContactVehicleOde>(v, *m.contact, *m.track);
+    contact = cs.get();
+    ode = std::move(cs);
+  } else {
+    ode = std::make_unique<vehicle::GuidedVehicleOde>(v);
   }
 
-  std::vector<Vector6d> q(nb);
+  SimulationRequest r;
+  r.system = ode.get();
+  r.solver = m.solver;
+  r.y0 = ode->initialState(0.0);
+  r.t_end = m.t_end;
+  r.output_every = m.spec.run.output_every;
+  r.progress = o.progress;
+  // Arc length of the leading body, the body compile() runs to the track end, so that a failure's
+  // distance is where the first wheelset was.
+  const double lead = v.start + m.leadingX();
+  r.distance = [lead, &v](double t, const Eigen::VectorXd&) { return lead + v.travel(t); };
+
+  // Channels, in the order the sampler fills them.
+  r.outputs.push_back({"/vehicle/speed", "m/s"});
+  addVehicleChannels(m, f, r.outputs);
+  if (contact) addContactChannels(m, f, r.outputs);
+
+  const bool acc = m.spec.run.body_accelerations;
+  std::vector<Vector6d> q(nb), qdd(nb);
   std::vector<Eigen::Vector3d> a(nb);
   std::vector<ElementValue> values(m.output_elements.size());
   std::vector<dynamics::WheelOutput> wo(contact ? 2 * m.contact->wheelsets.size() : 0);
-  double max_creepage = 0.0, t_max_creepage = 0.0;
+  CreepageMaximum creepage;
   r.sample = [&](double t, const Eigen::VectorXd& y, double* out) {
     *out++ = v.speedAt(t);
-    sys->coordinates(t, y.data(), q);
-    if (acc) sys->accelerations(t, y.data(), a);
+    ode->bodyCoordinates(t, y.data(), q);
+    if (acc) absoluteAccelerations(*ode, t, y.data(), qdd, a);
     for (std::size_t b = 0; b < nb; ++b) {
       for (int k = 0; k < 6; ++k) *out++ = q[b][k];
       if (acc)
         for (int k = 0; k < 3; ++k) *out++ = a[b][k];
     }
     if (!values.empty()) {
-      sys->elements(t, y.data(), m.output_elements, values);
+      ode->elementOutputs(t, y.data(), m.output_elements, values);
       for (const auto& e : values) {
         *out++ = e.d;
         *out++ = e.force;
       }
     }
     if (!contact) return;
-    if (contact->contactOde().wheelOutputs(t, y.data(), wo) != 0) {
+    if (contact->wheelOutputs(t, y.data(), wo) != 0) {
       for (std::size_t k = 0; k < wo.size() * kNq; ++k)
         *out++ = std::numeric_limits<double>::quiet_NaN();
       return;
     }
-    for (const auto& w : wo) {
-      // The dominant patch (largest normal force) gives creepages and contact position.
-      const auto& p = std::abs(w.patch[1].normal) > std::abs(w.patch[0].normal) && w.patch[1].active
-                          ? w.patch[1]
-                          : w.patch[0];
-      const double vals[] = {w.normal,
-                             w.normal_tread,
-                             w.normal_flange,
-                             w.patch[0].fx + w.patch[1].fx,
-                             w.patch[0].fy + w.patch[1].fy,
-                             p.sx,
-                             p.sy,
-                             p.spin,
-                             p.s_w,
-                             p.s_r,
-                             p.gamma,
-                             w.flange_indentation,
-                             w.flange_force,
-                             static_cast<double>(w.regime),
-                             w.y_over_q};
-      for (const double x : vals) *out++ = x;
-      for (const auto& pp : w.patch) {
-        if (!pp.active) continue;
-        const double c = std::max(std::abs(pp.sx), std::abs(pp.sy));
-        if (c > max_creepage) {
-          max_creepage = c;
-          t_max_creepage = t;
-        }
-      }
-    }
+    sampleWheels(wo, t, out, creepage);
   };
   f.attr("/", "solver", m.solver.method);
   f.attr("/", "contact_method",
@@ -262,22 +243,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
                  : std::string("none (wheelsets guided)"));
   VehicleRunResult out;
   out.result = simulate(r, f);
-  if (contact) {
-    const auto& cs = contact->contactOde().stats();
-    f.attr("/stats", "model_evaluations", static_cast<std::int64_t>(cs.evaluations));
-    f.attr("/stats", "kec_iterations", static_cast<std::int64_t>(cs.kec_iterations));
-    f.attr("/stats", "lift_evaluations", static_cast<std::int64_t>(cs.lift_evaluations));
-    f.attr("/stats", "consistent_iterations", static_cast<std::int64_t>(cs.consistent_iterations));
-    f.attr("/stats", "max_creepage", max_creepage);
-    if (cs.lift_evaluations > 0 && out.result.ok)
-      out.warnings.push_back("wheel lift was refused in " + std::to_string(cs.lift_evaluations) +
-                             " trial evaluations (the integrator retried smaller steps); the "
-                             "accepted solution never lifted");
-    if (m.contact->creep != dynamics::CreepModel::None && max_creepage > kCreepageWarning)
-      out.warnings.push_back("creepage reached " + num(max_creepage) + " at t = " +
-                             num(t_max_creepage) + " s, beyond " + num(kCreepageWarning) +
-                             " where the creep law is calibrated (docs/contact_dynamics.md)");
-  }
+  if (contact) writeContactStats(m, contact->stats(), creepage, f, out);
   writeWarnings(f, out.warnings);
   f.flush();
   return out;

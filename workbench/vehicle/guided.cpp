@@ -3,30 +3,19 @@
 #include <cmath>
 #include <sstream>
 
+#include "workbench/vehicle/equilibrium.hpp"
+
 namespace rb::vehicle {
 
 namespace {
-constexpr const char* kCoordName[5] = {"y", "z", "phi", "theta", "psi"};
 constexpr double kPitchLimit = 1.2;  // [rad] Euler-angle guard (singular at pi/2)
 }  // namespace
 
-GuidedLayout guidedLayout(const VehicleModel& m) {
-  GuidedLayout l;
-  l.slot.assign(m.bodies.size(), -1);
-  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
-    const BodyKind k = m.bodies[b].kind;
-    if (k == BodyKind::CarBody || k == BodyKind::Bogie) {
-      l.slot[b] = static_cast<int>(l.free_bodies.size());
-      l.free_bodies.push_back(static_cast<int>(b));
-    }
-  }
-  l.n_free = static_cast<int>(l.free_bodies.size());
-  l.n_series = static_cast<int>(m.series_dampers.size());
-  l.size = 10 * l.n_free + l.n_series;
-  return l;
+VehicleLayout guidedLayout(const VehicleModel& m) {
+  return vehicleLayout(m, kGuidedWheelsetDof);
 }
 
-void guidedCoordinates(const VehicleModel& m, const GuidedLayout& l, double t, const double* y,
+void guidedCoordinates(const VehicleModel& m, const VehicleLayout& l, double t, const double* y,
                        Workspace& ws) {
   const double V = m.speedAt(t);
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
@@ -36,7 +25,7 @@ void guidedCoordinates(const VehicleModel& m, const GuidedLayout& l, double t, c
     qd.setZero();
     q[kS] = m.bodyS(static_cast<int>(b), t);
     qd[kS] = V;
-    const int k = l.slot[b];
+    const int k = l.freeSlot(b);
     if (k >= 0) {
       for (int c = 0; c < 5; ++c) {
         q[1 + c] = y[l.position(k, c)];
@@ -50,14 +39,14 @@ void guidedCoordinates(const VehicleModel& m, const GuidedLayout& l, double t, c
   }
 }
 
-int guidedRhs(const VehicleModel& m, const GuidedLayout& l, double t, const double* y, double* ydot,
-              Workspace& ws) {
+int guidedRhs(const VehicleModel& m, const VehicleLayout& l, double t, const double* y,
+              double* ydot, Workspace& ws) {
   guidedCoordinates(m, l, t, y, ws);
   for (int k = 0; k < l.n_free; ++k)
     if (!(std::abs(y[l.position(k, kPitch - 1)]) < kPitchLimit)) return 1;
   evaluate(m, l.n_series > 0 ? y + l.series(0) : nullptr, ws);
   for (int k = 0; k < l.n_free; ++k) {
-    const auto b = static_cast<std::size_t>(l.free_bodies[static_cast<std::size_t>(k)]);
+    const std::size_t b = l.freeBody(k);
     const Matrix6d& M = ws.mass[b];
     // s is imposed with sddot = a: M_pp pddot = Q_p - M_ps a (the inertia of the prescribed
     // longitudinal acceleration, e.g. pitch of a braked car; on a curve it includes the frame's
@@ -78,7 +67,7 @@ int guidedRhs(const VehicleModel& m, const GuidedLayout& l, double t, const doub
 }
 
 GuidedVehicleOde::GuidedVehicleOde(const VehicleModel& model)
-    : model_(&model), layout_(guidedLayout(model)), ws_(makeWorkspace(model)) {
+    : VehicleOde(model, guidedLayout(model)), ws_(makeWorkspace(model)) {
   scratch_.assign(static_cast<std::size_t>(layout_.size), 0.0);
 }
 
@@ -92,34 +81,8 @@ int GuidedVehicleOde::rhs(double t, const double* y, double* ydot) {
   return rc;
 }
 
-std::string GuidedVehicleOde::componentName(int i) const {
-  const GuidedLayout& l = layout_;
-  if (i < 0 || i >= l.size) return "y[" + std::to_string(i) + "]";
-  if (i >= l.series(0) && l.n_series > 0)
-    return "series[" + std::to_string(i - l.series(0)) + "].f";
-  const bool rate = i >= 5 * l.n_free;
-  const int j = rate ? i - 5 * l.n_free : i;
-  const int k = j / 5, c = j % 5;
-  const std::string& body =
-      model_->bodies[static_cast<std::size_t>(l.free_bodies[static_cast<std::size_t>(k)])].name;
-  return body + "." + kCoordName[c] + (rate ? "_dot" : "");
-}
-
-int GuidedVehicleOde::index(int body, Coord c, bool rate) const {
-  if (body < 0 || body >= static_cast<int>(layout_.slot.size()) || c == kS) return -1;
-  const int k = layout_.slot[static_cast<std::size_t>(body)];
-  if (k < 0) return -1;
-  return rate ? layout_.rate(k, c - 1) : layout_.position(k, c - 1);
-}
-
-int GuidedVehicleOde::indexOf(const std::string& component) const {
-  for (int i = 0; i < layout_.size; ++i)
-    if (componentName(i) == component) return i;
-  return -1;
-}
-
-Eigen::VectorXd GuidedVehicleOde::staticState(double t0) {
-  const GuidedLayout& l = layout_;
+Eigen::VectorXd GuidedVehicleOde::initialState(double t0) {
+  const VehicleLayout& l = layout_;
   Eigen::VectorXd y = Eigen::VectorXd::Zero(l.size);
   const int n = 5 * l.n_free;
   if (n == 0) return y;
@@ -131,71 +94,60 @@ Eigen::VectorXd GuidedVehicleOde::staticState(double t0) {
                                         "Euler-angle guard (is it supported?)");
     r = yd.segment(n, n);
   };
-  Eigen::VectorXd r(n), rp(n), rm(n);
-  Eigen::MatrixXd J(n, n);
-  residual(y, r);
-  const double h = 1e-6;
-  for (int it = 0; it < 50; ++it) {
-    for (int c = 0; c < n; ++c) {
-      Eigen::VectorXd yp = y, ym = y;
-      yp[c] += h;
-      ym[c] -= h;
-      residual(yp, rp);
-      residual(ym, rm);
-      J.col(c) = (rp - rm) / (2.0 * h);
-    }
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(J);
-    if (lu.rank() < n) {
-      std::string which;
-      for (int c = 0; c < n; ++c)
-        if (J.col(c).norm() < 1e-9 * J.norm()) which += " " + componentName(c);
-      throw InputError(model_->loc,
-                       "vehicle '" + model_->name +
-                           "': no static equilibrium: a free body coordinate is not restrained by "
-                           "any suspension element (singular stiffness)" +
-                           (which.empty() ? std::string() : ":" + which));
-    }
-    const Eigen::VectorXd dx = lu.solve(r);
-    // Backtracking on |r| (the bumpstops make the problem nonlinear).
-    double lambda = 1.0;
-    Eigen::VectorXd y_new = y;
-    const double r0 = r.norm();
-    for (int ls = 0; ls < 30; ++ls) {
-      y_new.head(n) = y.head(n) - lambda * dx;
-      residual(y_new, rp);
-      if (rp.norm() <= r0 || rp.norm() < 1e-12) break;
-      lambda *= 0.5;
-    }
-    y = y_new;
-    r = rp;
-    if (lambda * dx.lpNorm<Eigen::Infinity>() < 1e-13 || r.lpNorm<Eigen::Infinity>() < 1e-12)
-      return y;
+  const EquilibriumResult eq =
+      solveStaticEquilibrium(y, n, residual, [this](int i) { return componentName(i); });
+  if (eq.status == EquilibriumResult::Status::Singular)
+    throw InputError(model_->loc,
+                     "vehicle '" + model_->name +
+                         "': no static equilibrium: a free body coordinate is not restrained by "
+                         "any suspension element (singular stiffness)" +
+                         (eq.unrestrained.empty() ? std::string() : ":" + eq.unrestrained));
+  if (eq.status == EquilibriumResult::Status::NotConverged) {
+    std::ostringstream os;
+    os << "vehicle '" << model_->name
+       << "': static equilibrium did not converge (|acceleration| = " << eq.residual
+       << " after 50 Newton iterations)";
+    throw InputError(model_->loc, os.str());
   }
-  std::ostringstream os;
-  os << "vehicle '" << model_->name
-     << "': static equilibrium did not converge (|acceleration| = " << r.lpNorm<Eigen::Infinity>()
-     << " after 50 Newton iterations)";
-  throw InputError(model_->loc, os.str());
+  return y;
 }
 
-void GuidedVehicleOde::elementOutputs(double t, const double* y, std::span<const ElementId> ids,
-                                      std::span<ElementValue> out) {
+int GuidedVehicleOde::bodyCoordinates(double t, const double* y, std::span<Vector6d> q) {
+  guidedCoordinates(*model_, layout_, t, y, ws_);
+  for (std::size_t b = 0; b < q.size() && b < ws_.q.size(); ++b) q[b] = ws_.q[b];
+  return 0;
+}
+
+Vector6d GuidedVehicleOde::accelerationOf(std::size_t b) const {
+  Vector6d qdd = Vector6d::Zero();
+  qdd[kS] = model_->acceleration;
+  if (model_->bodies[b].kind == BodyKind::Wheelset)
+    qdd[kPitch] = model_->acceleration / model_->wheel_radius;
+  const int k = layout_.freeSlot(b);
+  if (k >= 0)
+    for (int c = 0; c < 5; ++c) qdd[1 + c] = scratch_[static_cast<std::size_t>(layout_.rate(k, c))];
+  return qdd;
+}
+
+int GuidedVehicleOde::bodyAccelerations(double t, const double* y, std::span<Vector6d> qdd) {
+  const int rc = guidedRhs(*model_, layout_, t, y, scratch_.data(), ws_);
+  for (std::size_t b = 0; b < qdd.size() && b < ws_.q.size(); ++b) qdd[b] = accelerationOf(b);
+  return rc;
+}
+
+int GuidedVehicleOde::elementOutputs(double t, const double* y, std::span<const ElementId> ids,
+                                     std::span<ElementValue> out) {
   guidedCoordinates(*model_, layout_, t, y, ws_);
   evaluate(*model_, layout_.n_series > 0 ? y + layout_.series(0) : nullptr, ws_);
   for (std::size_t i = 0; i < ids.size() && i < out.size(); ++i) out[i] = ws_.value(ids[i]);
+  return 0;
 }
 
 BodyOutput GuidedVehicleOde::bodyOutput(double t, const double* y, int body) {
   BodyOutput o;
   guidedRhs(*model_, layout_, t, y, scratch_.data(), ws_);
   const auto b = static_cast<std::size_t>(body);
-  Vector6d qdd = Vector6d::Zero();
-  qdd[kS] = model_->acceleration;
-  if (model_->bodies[b].kind == BodyKind::Wheelset)
-    qdd[kPitch] = model_->acceleration / model_->wheel_radius;
-  const int k = layout_.slot[b];
-  if (k >= 0)
-    for (int c = 0; c < 5; ++c) qdd[1 + c] = scratch_[static_cast<std::size_t>(layout_.rate(k, c))];
+  const Vector6d qdd = accelerationOf(b);
   const BodyKinematics& kin = ws_.kin[b];
   o.acceleration = kin.Lv * qdd + kin.gamma_v;
   o.angular_acceleration = kin.Lw * qdd + kin.gamma_w;

@@ -29,7 +29,7 @@ Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const 
 std::vector<Mode> guidedModes(GuidedVehicleOde& ode, double t, const Eigen::VectorXd& y) {
   const Eigen::MatrixXd J = finiteDifferenceJacobian(ode, t, y);
   const Eigen::EigenSolver<Eigen::MatrixXd> es(J, true);
-  const GuidedLayout& l = ode.layout();
+  const VehicleLayout& l = ode.layout();
   const int n = 5 * l.n_free;
   // Diagonal mass weights of the free coordinates at y.
   Eigen::VectorXd yd(ode.size());

@@ -72,19 +72,94 @@ std::string_view elementKindName(ElementKind kind) {
   return "?";
 }
 
-void validateVehicle(const VehicleSpec& spec, Diagnostics& diags) {
-  const std::string vname = "vehicle '" + spec.name + "'";
-  if (spec.bodies.empty()) diags.add(spec.loc, vname + ": no bodies");
-  if (!(std::isfinite(spec.speed) && spec.speed >= 0.0))
-    diags.add(spec.loc, vname + ": speed must be >= 0 m/s, got " + num(spec.speed));
-  if (!std::isfinite(spec.acceleration))
-    diags.add(spec.loc, vname + ": acceleration must be finite, got " + num(spec.acceleration));
-  if (!(std::isfinite(spec.wheel_radius) && spec.wheel_radius > 0.0))
-    diags.add(spec.loc, vname + ": wheel_radius must be > 0 m, got " + num(spec.wheel_radius));
-  if (!std::isfinite(spec.start)) diags.add(spec.loc, vname + ": start must be finite");
+namespace {
 
-  std::map<std::string, int> bodies;
-  std::string body_list;
+// The parameters of an element's force law (suspension/laws.hpp).
+void validateElementLaw(const ElementSpec& e, const std::string& what, Diagnostics& diags) {
+  const auto nonneg = [&](double v, const char* key, const char* unit) {
+    if (!(std::isfinite(v) && v >= 0.0))
+      diags.add(e.loc, what + ": " + key + " must be >= 0 " + unit + ", got " + num(v));
+  };
+  const bool axial = e.direction == Direction::Axial;
+  switch (e.kind) {
+    case ElementKind::SpringDamper:
+      nonneg(e.stiffness, "stiffness", "N/m");
+      nonneg(e.damping, "damping", "N s/m");
+      break;
+    case ElementKind::SeriesSpringDamper:
+      nonneg(e.stiffness, "stiffness", "N/m");
+      if (!(std::isfinite(e.damping) && e.damping > 0.0))
+        diags.add(e.loc, what + ": damping must be > 0 N s/m, got " + num(e.damping));
+      if (!(std::isfinite(e.series_stiffness) && e.series_stiffness > 0.0))
+        diags.add(e.loc,
+                  what + ": series_stiffness must be > 0 N/m, got " + num(e.series_stiffness));
+      break;
+    case ElementKind::ShearSpring:
+      nonneg(e.stiffness, "stiffness", "N/m");
+      if (axial)
+        diags.add(e.loc,
+                  what + ": direction must be x, y or z (a shear spring acts across its axis)");
+      break;
+    case ElementKind::BendingSpring:
+      nonneg(e.stiffness, "stiffness", "N m/rad");
+      if (axial)
+        diags.add(e.loc,
+                  what + ": direction must be x, y or z (the axis of the relative rotation)");
+      break;
+    case ElementKind::Bumpstop:
+      for (const std::string& m : suspension::BumpstopLaw::check(e.table_d, e.table_f))
+        diags.add(e.loc, what + ": " + m);
+      break;
+  }
+}
+
+// One suspension element: name, bodies, attachment points, law, free length.
+void validateElement(const VehicleSpec& spec, const ElementSpec& e,
+                     const std::map<std::string, int>& bodies, const std::string& body_list,
+                     std::map<std::string, SourceLoc>& names, Diagnostics& diags) {
+  const std::string what =
+      "element '" + e.name + "' (" + std::string(elementKindName(e.kind)) + ")";
+  if (e.name.empty())
+    diags.add(e.loc, "element (" + std::string(elementKindName(e.kind)) + "): empty name");
+  else if (!names.emplace(e.name, e.loc).second)
+    diags.add(e.loc, what + ": duplicate element name (also " + names[e.name].str() + ")");
+  const auto b1 = bodies.find(e.body1), b2 = bodies.find(e.body2);
+  if (b1 == bodies.end())
+    diags.add(e.loc,
+              what + ": unknown body '" + e.body1 + "' in 'from' (bodies: " + body_list + ")");
+  if (b2 == bodies.end())
+    diags.add(e.loc, what + ": unknown body '" + e.body2 + "' in 'to' (bodies: " + body_list + ")");
+  if (!e.body1.empty() && e.body1 == e.body2)
+    diags.add(e.loc, what + ": 'from' and 'to' are the same body '" + e.body1 + "'");
+  if (!finite3(e.point1) || !finite3(e.point2))
+    diags.add(e.loc, what + ": attachment points must be finite");
+  if (!std::isfinite(e.preload)) diags.add(e.loc, what + ": preload must be finite");
+  const bool axial = e.direction == Direction::Axial;
+  validateElementLaw(e, what, diags);
+  const bool uses_length = e.kind == ElementKind::SpringDamper ||
+                           e.kind == ElementKind::SeriesSpringDamper ||
+                           e.kind == ElementKind::Bumpstop;
+  if (!(std::isfinite(e.length0) && e.length0 >= 0.0))
+    diags.add(e.loc, what + ": length0 must be >= 0 m, got " + num(e.length0));
+  else if (e.length0 != 0.0 && (!axial || !uses_length))
+    diags.add(e.loc, what +
+                         ": length0 applies to axial elements only (directional elements are "
+                         "undeformed at the nominal relative position; use preload)");
+  if (axial && uses_length && b1 != bodies.end() && b2 != bodies.end() && finite3(e.point1) &&
+      finite3(e.point2)) {
+    const Eigen::Vector3d dn = nominalDelta(spec.bodies[static_cast<std::size_t>(b1->second)],
+                                            spec.bodies[static_cast<std::size_t>(b2->second)], e);
+    if (!(dn.norm() > 1e-6))
+      diags.add(e.loc, what +
+                           ": an axial element needs distinct attachment points (their nominal "
+                           "distance is " +
+                           num(dn.norm()) + " m); use direction x, y or z");
+  }
+}
+
+// The bodies: names (unique; body_list lists them), masses, inertias, positions.
+void validateBodies(const VehicleSpec& spec, std::map<std::string, int>& bodies,
+                    std::string& body_list, Diagnostics& diags) {
   for (std::size_t i = 0; i < spec.bodies.size(); ++i) {
     const BodySpec& b = spec.bodies[i];
     const std::string what = "body '" + b.name + "' (" + std::string(bodyKindName(b.kind)) + ")";
@@ -106,82 +181,27 @@ void validateVehicle(const VehicleSpec& spec, Diagnostics& diags) {
     if (!std::isfinite(b.x) || !std::isfinite(b.height))
       diags.add(b.loc, what + ": x and height must be finite");
   }
+}
 
+}  // namespace
+
+void validateVehicle(const VehicleSpec& spec, Diagnostics& diags) {
+  const std::string vname = "vehicle '" + spec.name + "'";
+  if (spec.bodies.empty()) diags.add(spec.loc, vname + ": no bodies");
+  if (!(std::isfinite(spec.speed) && spec.speed >= 0.0))
+    diags.add(spec.loc, vname + ": speed must be >= 0 m/s, got " + num(spec.speed));
+  if (!std::isfinite(spec.acceleration))
+    diags.add(spec.loc, vname + ": acceleration must be finite, got " + num(spec.acceleration));
+  if (!(std::isfinite(spec.wheel_radius) && spec.wheel_radius > 0.0))
+    diags.add(spec.loc, vname + ": wheel_radius must be > 0 m, got " + num(spec.wheel_radius));
+  if (!std::isfinite(spec.start)) diags.add(spec.loc, vname + ": start must be finite");
+
+  std::map<std::string, int> bodies;
+  std::string body_list;
+  validateBodies(spec, bodies, body_list, diags);
   std::map<std::string, SourceLoc> names;
-  for (const ElementSpec& e : spec.elements) {
-    const std::string what =
-        "element '" + e.name + "' (" + std::string(elementKindName(e.kind)) + ")";
-    if (e.name.empty())
-      diags.add(e.loc, "element (" + std::string(elementKindName(e.kind)) + "): empty name");
-    else if (!names.emplace(e.name, e.loc).second)
-      diags.add(e.loc, what + ": duplicate element name (also " + names[e.name].str() + ")");
-    const auto b1 = bodies.find(e.body1), b2 = bodies.find(e.body2);
-    if (b1 == bodies.end())
-      diags.add(e.loc,
-                what + ": unknown body '" + e.body1 + "' in 'from' (bodies: " + body_list + ")");
-    if (b2 == bodies.end())
-      diags.add(e.loc,
-                what + ": unknown body '" + e.body2 + "' in 'to' (bodies: " + body_list + ")");
-    if (!e.body1.empty() && e.body1 == e.body2)
-      diags.add(e.loc, what + ": 'from' and 'to' are the same body '" + e.body1 + "'");
-    if (!finite3(e.point1) || !finite3(e.point2))
-      diags.add(e.loc, what + ": attachment points must be finite");
-    const auto nonneg = [&](double v, const char* key, const char* unit) {
-      if (!(std::isfinite(v) && v >= 0.0))
-        diags.add(e.loc, what + ": " + key + " must be >= 0 " + unit + ", got " + num(v));
-    };
-    if (!std::isfinite(e.preload)) diags.add(e.loc, what + ": preload must be finite");
-    const bool axial = e.direction == Direction::Axial;
-    switch (e.kind) {
-      case ElementKind::SpringDamper:
-        nonneg(e.stiffness, "stiffness", "N/m");
-        nonneg(e.damping, "damping", "N s/m");
-        break;
-      case ElementKind::SeriesSpringDamper:
-        nonneg(e.stiffness, "stiffness", "N/m");
-        if (!(std::isfinite(e.damping) && e.damping > 0.0))
-          diags.add(e.loc, what + ": damping must be > 0 N s/m, got " + num(e.damping));
-        if (!(std::isfinite(e.series_stiffness) && e.series_stiffness > 0.0))
-          diags.add(e.loc,
-                    what + ": series_stiffness must be > 0 N/m, got " + num(e.series_stiffness));
-        break;
-      case ElementKind::ShearSpring:
-        nonneg(e.stiffness, "stiffness", "N/m");
-        if (axial)
-          diags.add(e.loc,
-                    what + ": direction must be x, y or z (a shear spring acts across its axis)");
-        break;
-      case ElementKind::BendingSpring:
-        nonneg(e.stiffness, "stiffness", "N m/rad");
-        if (axial)
-          diags.add(e.loc,
-                    what + ": direction must be x, y or z (the axis of the relative rotation)");
-        break;
-      case ElementKind::Bumpstop:
-        for (const std::string& m : suspension::BumpstopLaw::check(e.table_d, e.table_f))
-          diags.add(e.loc, what + ": " + m);
-        break;
-    }
-    const bool uses_length = e.kind == ElementKind::SpringDamper ||
-                             e.kind == ElementKind::SeriesSpringDamper ||
-                             e.kind == ElementKind::Bumpstop;
-    if (!(std::isfinite(e.length0) && e.length0 >= 0.0))
-      diags.add(e.loc, what + ": length0 must be >= 0 m, got " + num(e.length0));
-    else if (e.length0 != 0.0 && (!axial || !uses_length))
-      diags.add(e.loc, what +
-                           ": length0 applies to axial elements only (directional elements are "
-                           "undeformed at the nominal relative position; use preload)");
-    if (axial && uses_length && b1 != bodies.end() && b2 != bodies.end() && finite3(e.point1) &&
-        finite3(e.point2)) {
-      const Eigen::Vector3d dn = nominalDelta(spec.bodies[static_cast<std::size_t>(b1->second)],
-                                              spec.bodies[static_cast<std::size_t>(b2->second)], e);
-      if (!(dn.norm() > 1e-6))
-        diags.add(e.loc, what +
-                             ": an axial element needs distinct attachment points (their nominal "
-                             "distance is " +
-                             num(dn.norm()) + " m); use direction x, y or z");
-    }
-  }
+  for (const ElementSpec& e : spec.elements)
+    validateElement(spec, e, bodies, body_list, names, diags);
 }
 
 VehicleModel compileVehicle(const VehicleSpec& spec, const track::TrackModel& track) {

@@ -1,0 +1,148 @@
+#pragma once
+// The data of one ContactVehicleOde evaluation, shared by its stages (contact_stages.hpp): the
+// models it reads (ContactModels), the inputs of the evaluation (StageInput) and the workspace the
+// stages fill (ContactWorkspace, per wheelset WheelsetWork). Internal to workbench/dynamics.
+#include <Eigen/Dense>
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "workbench/contact/kec.hpp"
+#include "workbench/contact/lut.hpp"
+#include "workbench/creep/creepages.hpp"
+#include "workbench/creep/hertz.hpp"
+#include "workbench/dynamics/contact_model.hpp"
+#include "workbench/dynamics/contact_ode.hpp"
+#include "workbench/track/irregularities.hpp"
+#include "workbench/vehicle/dynamics.hpp"
+#include "workbench/vehicle/layout.hpp"
+#include "workbench/vehicle/model.hpp"
+
+namespace rb::dynamics::internal {
+
+using Vec5 = Eigen::Matrix<double, 5, 1>;
+using Vec7 = Eigen::Matrix<double, 7, 1>;
+
+// Rhs: a right-hand side for the integrator. Output: outputs at an accepted state (they do not
+// change what the integration sees). Init: the initial state (consistent normal forces even with
+// the Lagged coupling).
+enum class EvalMode { Rhs, Output, Init };
+
+// What the stages read: the models (const for the whole run).
+struct ContactModels {
+  const vehicle::VehicleModel& vehicle;
+  const ContactModel& contact;
+  const vehicle::VehicleLayout& layout;
+  const track::Irregularities* irregularities;  // null on a perfect track
+};
+
+// The inputs of one evaluation.
+struct StageInput {
+  double t = 0.0;
+  const double* y = nullptr;
+  double speed = 0.0;         // [m/s] V(t)
+  double acceleration = 0.0;  // [m/s^2] a = sddot of every body
+  EvalMode mode = EvalMode::Rhs;
+};
+
+// One contact patch of a wheel during an evaluation.
+struct Patch {
+  bool active = false;
+  bool on_flange = false;  // wheel point in the flange window
+  double q0 = 0.0;         // normal force Q = q0 + ql . lambda
+  Eigen::Vector2d ql = Eigen::Vector2d::Zero();
+  double s_w = 0.0, s_r = 0.0, gamma = 0.0, radius = 0.0;
+  Eigen::Vector3d n = Eigen::Vector3d::UnitZ();   // rail normal into the wheel (track comps)
+  Eigen::Vector3d ex = Eigen::Vector3d::UnitX();  // rolling direction (wheel x, yawed)
+  Eigen::Vector3d ey = Eigen::Vector3d::UnitY();  // lateral tangent n x e_x
+  Vec5 gn = Vec5::Zero();  // generalised direction of a unit normal force (y, z, phi, theta, psi)
+  Vec5 gx = Vec5::Zero(), gy = Vec5::Zero(), gm = Vec5::Zero();  // creep fx, fy, spin moment
+  creep::Creepages cr;
+  creep::RelativeCurvatures k;
+  creep::HertzShape shape;
+  creep::PatchConstants pc;  // load-independent patch data, once per setupPatch (not per Q)
+  // The curvatures (wheel long., wheel trans., rail trans.) k, shape and pc were computed from;
+  // k, shape, pc are functions of them alone (the KEC transition-band points repeat them).
+  double k_key[3] = {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0};
+  double Q = 0.0, fx = 0.0, fy = 0.0, mz = 0.0, a = 0.0, b = 0.0;
+
+  // Normal force of the patch at the normal-force multipliers lambda.
+  double normalAt(const Eigen::Vector2d& lambda) const { return q0 + ql.dot(lambda); }
+};
+
+// The normal-force multipliers lambda of a wheelset remembered from one evaluation to the next:
+// the Lagged coupling (paper section 2.5) evaluates the creep forces at them, the Consistent one
+// starts its fixed-point iteration from them.
+// Update rule: every Rhs and Init evaluation of a creep law that reaches the normal/tangential
+// coupling stage remembers the lambda it solved for (even when the solution is then refused as
+// non-finite or as a wheel lift); Output evaluations never change it (outputs must not change what
+// the integration sees); a Consistent iteration that does not converge leaves it unchanged;
+// initialState forgets it before its Newton iteration and again before its final evaluation.
+struct NormalForceMemory {
+  Eigen::Vector2d lambda = Eigen::Vector2d::Zero();
+  bool valid = false;
+
+  void remember(const Eigen::Vector2d& solved) {
+    lambda = solved;
+    valid = true;
+  }
+  void forget() { valid = false; }
+};
+
+// KEC transition bands: a real contact point A or B of the last describe() and its inputs. Inside
+// one transition A and B are the fixed end points of the band (the table's Hermite data of SwA ...
+// SrB are constant there), so successive evaluations mostly ask for the same points again; equal
+// inputs give equal outputs, so the reuse changes nothing.
+struct DescribedPoint {
+  double s_w = std::numeric_limits<double>::quiet_NaN(), s_r = 0.0;
+  contact::ContactPoint point;
+};
+
+// Per wheelset: the constraints, patches and normal forces of the evaluation.
+struct WheelsetWork {
+  std::size_t body = 0;
+  double height = 0.0;  // nominal centre height h (body z = contact z - h)
+  // Contact constraints at this evaluation.
+  contact::KecSolution kec;
+  bool kec_warm = false;
+  contact::LutSample lut;
+  double delta_irr = 0.0;               // cross-level angle of the irregular rails [rad]
+  double cos_irr = 1.0, sin_irr = 0.0;  // its cosine and sine
+  // Irregularities at s = irr_key (the stages of a step at one time share them).
+  track::IrregularityPoint irr;
+  double irr_key = std::numeric_limits<double>::quiet_NaN();
+  // LUT: rates of the table entry (y - xi_a, xi_g) (Eq. 18) and of the table's z and phi.
+  double ybar_dot = 0.0, xig_dot = 0.0, zbar_dot = 0.0, phibar_dot = 0.0;
+  double lut_ybar = 0.0, lut_xig = 0.0;  // the LUT entry of `lut`
+  DescribedPoint described[2][2];        // [side][0 A, 1 B]
+  // Acceleration-level constraints G qddot = gamma on z and phi.
+  Eigen::Matrix<double, 2, 5> G = Eigen::Matrix<double, 2, 5>::Zero();
+  Eigen::Vector2d gamma = Eigen::Vector2d::Zero();
+  // Patches [side][0 tread / A, 1 flange / B] and per-wheel data.
+  Patch patch[2][2];
+  int regime[2] = {0, 0};
+  double weight[2] = {0.0, 0.0};
+  double fl_delta[2] = {0.0, 0.0}, fl_force[2] = {0.0, 0.0};
+  Vec5 q_flange = Vec5::Zero();  // LUT: generalised Hertz flange forces (Eq. 20)
+  // Generalised directions of the normal-force multipliers (Eq. 25; LUT: -G^T, Eq. 16).
+  Eigen::Matrix<double, 5, 2> N = Eigen::Matrix<double, 5, 2>::Zero();
+  Eigen::Vector2d lambda = Eigen::Vector2d::Zero();  // the normal-force multipliers solved for
+  NormalForceMemory memory;
+};
+
+// Everything an evaluation writes.
+struct ContactWorkspace {
+  vehicle::Workspace bodies;            // full coordinates, mass matrices, forces
+  std::vector<WheelsetWork> wheelsets;  // in wheelset order
+  std::vector<WheelOutput> wheels;      // [2w + side], filled by Output evaluations
+  std::vector<vehicle::Vector6d> qdd;   // body accelerations of the last Output evaluation
+  std::vector<double> scratch;          // ydot of output and initial-state evaluations
+  ContactStats stats;
+  std::string error;  // why the last evaluation failed
+
+  WheelsetWork& wheelset(int w) { return wheelsets[static_cast<std::size_t>(w)]; }
+};
+
+}  // namespace rb::dynamics::internal

@@ -1,0 +1,55 @@
+#pragma once
+// The vehicle ODE family: one interface for the guided vehicle (GuidedVehicleOde) and the vehicle
+// on wheel/rail contact (dynamics::ContactVehicleOde), with one state layout (VehicleLayout) and
+// one naming scheme for the states ("car.y", "ws1.theta_dot", "series[3].f").
+#include <Eigen/Dense>
+#include <span>
+#include <string>
+#include <utility>
+
+#include "workbench/integrators/ode.hpp"
+#include "workbench/vehicle/dynamics.hpp"
+#include "workbench/vehicle/layout.hpp"
+#include "workbench/vehicle/model.hpp"
+
+namespace rb::vehicle {
+
+class VehicleOde : public integ::OdeSystem {
+ public:
+  int size() const final { return layout_.size; }
+  std::string componentName(int i) const final { return layout_.componentName(i, *model_); }
+
+  const VehicleModel& model() const { return *model_; }
+  const VehicleLayout& layout() const { return layout_; }
+  // State index of coordinate c of body b (or of its rate); -1 if not a state.
+  int index(int body, Coord c, bool rate = false) const { return layout_.index(body, c, rate); }
+  int indexOf(const std::string& component) const {  // by componentName(); -1 if none
+    return layout_.indexOf(component, *model_);
+  }
+
+  // State at rest at t0: car bodies and bogies in static (on a curve: quasi-static) equilibrium
+  // on their suspension (solveStaticEquilibrium), rates zero (wheelset spin: rolling), series
+  // forces zero. Throws rb::InputError at the vehicle's loc when no equilibrium is found.
+  virtual Eigen::VectorXd initialState(double t0) = 0;
+
+  // Outputs at (t, y), evaluated on demand. Return 0, or the rhs error code.
+  // Full coordinates (s, y, z, roll, pitch, yaw) of every body, q.size() == bodies.
+  virtual int bodyCoordinates(double t, const double* y, std::span<Vector6d> q) = 0;
+  // Accelerations (sddot = a, y, z, roll, pitch, yaw) of every body, qdd.size() == bodies; the
+  // workspace then holds the body kinematics at (t, y) (absolute acceleration Lv qdd + gamma_v).
+  virtual int bodyAccelerations(double t, const double* y, std::span<Vector6d> qdd) = 0;
+  // Values of the suspension elements ids at (t, y).
+  virtual int elementOutputs(double t, const double* y, std::span<const ElementId> ids,
+                             std::span<ElementValue> out) = 0;
+  // The vehicle workspace of the last evaluation (element values, forces, body kinematics).
+  virtual const Workspace& workspace() const = 0;
+
+ protected:
+  VehicleOde(const VehicleModel& model, VehicleLayout layout)
+      : model_(&model), layout_(std::move(layout)) {}
+
+  const VehicleModel* model_;
+  VehicleLayout layout_;
+};
+
+}  // namespace rb::vehicle
