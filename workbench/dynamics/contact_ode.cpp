@@ -902,6 +902,14 @@ std::string ContactVehicleOde::componentName(int i) const {
          "." + kWsCoordName[cc] + suffix;
 }
 
+std::vector<int> ContactVehicleOde::stiffComponents() const {
+  std::vector<int> out;
+  if (layout_.spinFree())
+    for (int w = 0; w < layout_.n_ws; ++w) out.push_back(layout_.wsRate(w, 1));
+  for (int e = 0; e < layout_.n_series; ++e) out.push_back(layout_.series(e));
+  return out;
+}
+
 int ContactVehicleOde::index(int body, vehicle::Coord c, bool rate) const {
   if (body < 0 || body >= static_cast<int>(layout_.slot.size()) || c == kS) return -1;
   const int k = layout_.slot[static_cast<std::size_t>(body)];

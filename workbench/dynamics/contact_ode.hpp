@@ -144,6 +144,9 @@ class ContactVehicleOde : public integ::OdeSystem {
   int rhs(double t, const double* y, double* ydot) override;
   std::string componentName(int i) const override;
   std::string lastError() const override { return last_error_; }
+  // The free spin rates (creep damping, about -2 f11 r0^2 / (V I_yy): the stiffest mode) and
+  // the series-damper forces (relaxation -K_series / D, Appendix A).
+  std::vector<int> stiffComponents() const override;
 
   const ContactLayout& layout() const { return layout_; }
   const vehicle::VehicleModel& vehicle() const { return *vehicle_; }
