@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "workbench/core/error.hpp"
+#include "workbench/integrators/exponential.hpp"
 
 namespace rb::integ {
 
@@ -33,14 +34,19 @@ FixedStepIntegrator::Status FixedStepIntegrator::tryRk4(double t, double h, doub
   Eigen::Map<Eigen::VectorXd> k1(k1p, n_);
   Status s = eval(t, y_.data(), k1p);
   if (s != Status::Ok) return s;
+  if (exponential()) refreshDiagonal(t, k1p);
   const double hh = 0.5 * h;
   tmp_.noalias() = y_ + hh * k1;
+  if (exponential()) expRk4Stage(0, hh, k1p);
   if ((s = eval(t + hh, tmp_.data(), k2_.data())) != Status::Ok) return s;
   tmp_.noalias() = y_ + hh * k2_;
+  if (exponential()) expRk4Stage(1, hh, k2_.data());
   if ((s = eval(t + hh, tmp_.data(), k3_.data())) != Status::Ok) return s;
   tmp_.noalias() = y_ + h * k3_;
+  if (exponential()) expRk4Stage(2, hh, k3_.data());
   if ((s = eval(t + h, tmp_.data(), k4_.data())) != Status::Ok) return s;
   ynew_.noalias() = y_ + (h / 6.0) * (k1 + 2.0 * k2_ + 2.0 * k3_ + k4_);
+  if (exponential()) expRk4Final(h, ynew_);
   if (!detail::allFinite(ynew_.data(), n_)) {
     rec_.recordNonFinite(t + h, "state", ynew_.data(), n_);
     return Status::NonFinite;
@@ -79,6 +85,7 @@ FixedStepIntegrator::Status FixedStepIntegrator::splitRk4(double t, double h, in
 // history f_0, f_1, f_2.
 FixedStepIntegrator::Status FixedStepIntegrator::abmStep(double t, double h) {
   const int slot = (head_ + 1) & 3;  // the oldest entry, f_n-4: receives f_n
+  if (exponential()) yh_[static_cast<std::size_t>(slot)] = y_;
   if (history_ < 3) {
     const long rejected = stats_.rejected_steps;
     const Status s = advanceRk4(t, h, 0, f_[slot].data());
@@ -98,7 +105,9 @@ FixedStepIntegrator::Status FixedStepIntegrator::abmStep(double t, double h) {
   const double h24 = h / 24.0;
   Status s = eval(t, y_.data(), fn.data());
   if (s == Status::Ok) {
+    if (exponential()) refreshDiagonal(t, fn.data());
     tmp_.noalias() = y_ + h24 * (55.0 * fn - 59.0 * fn1 + 37.0 * fn2 - 9.0 * fn3);
+    if (exponential()) expAbmPredict(h, slot, tmp_);
     s = eval(t + h, tmp_.data(), k2_.data());
   }
   if (s == Status::Recoverable) {
@@ -108,6 +117,7 @@ FixedStepIntegrator::Status FixedStepIntegrator::abmStep(double t, double h) {
   }
   if (s != Status::Ok) return s;
   ynew_.noalias() = y_ + h24 * (9.0 * k2_ + 19.0 * fn - 5.0 * fn1 + fn2);
+  if (exponential()) expAbmCorrect(h, slot, ynew_);
   if (!detail::allFinite(ynew_.data(), n_)) {
     rec_.recordNonFinite(t + h, "state", ynew_.data(), n_);
     return Status::NonFinite;
@@ -116,6 +126,101 @@ FixedStepIntegrator::Status FixedStepIntegrator::abmStep(double t, double h) {
   head_ = slot;
   ++stats_.steps;
   return Status::Ok;
+}
+
+// d_i = df_i / dy_i of every stiff component by one forward difference with all of them moved
+// at once: a stiff component's derivative depends on the others only through the slow
+// coordinates (each spin rate acts on its own wheelset's creep forces), so their cross terms
+// vanish. Refreshed every kDiagonalRefreshSteps steps (the creep coefficients change with the
+// normal loads and the speed); a failed or non-decaying estimate keeps the classical treatment
+// of that component (d_i = 0).
+void FixedStepIntegrator::refreshDiagonal(double t, const double* f_at_y) {
+  if (last_refresh_ >= 0 && stats_.steps - last_refresh_ < kDiagonalRefreshSteps) return;
+  last_refresh_ = stats_.steps;
+  ypert_ = y_;
+  std::vector<double> dy(stiff_.size());
+  for (std::size_t k = 0; k < stiff_.size(); ++k) {
+    const auto i = static_cast<Eigen::Index>(stiff_[k]);
+    dy[k] = 1e-6 * std::max(std::abs(y_(i)), 1.0);
+    ypert_(i) += dy[k];
+  }
+  ++stats_.jacobian_evals;
+  ++stats_.rhs_evals_jac;
+  if (sys_->rhs(t, ypert_.data(), tmp_.data()) != 0 || !detail::allFinite(tmp_.data(), n_)) return;
+  for (std::size_t k = 0; k < stiff_.size(); ++k) {
+    const auto i = static_cast<Eigen::Index>(stiff_[k]);
+    const double d = (tmp_(i) - f_at_y[i]) / dy[k];
+    diag_[k] = d < 0.0 ? d : 0.0;
+  }
+}
+
+// ETDRK4 stages of the stiff components (Cox-Matthews): a = e^{z/2} y + h/2 phi1(z/2) N(y),
+// b = e^{z/2} y + h/2 phi1(z/2) N(a), c = e^{z/2} a + h/2 phi1(z/2) (2 N(b) - N(y)); k is the
+// derivative at the previous stage. tmp_ holds the classical stage; its stiff entries are
+// replaced.
+void FixedStepIntegrator::expRk4Stage(int stage, double hh, const double* k) {
+  for (std::size_t j = 0; j < stiff_.size(); ++j) {
+    const auto i = static_cast<Eigen::Index>(stiff_[j]);
+    const double d = diag_[j];
+    const expo::Weights w = expo::weights(2.0 * hh * d);
+    const double yi = y_(i);
+    if (stage == 0) {
+      st_n1_[j] = k[i] - d * yi;
+      st_a_[j] = w.e_half * yi + hh * w.phi1_half * st_n1_[j];
+      tmp_(i) = st_a_[j];
+    } else if (stage == 1) {
+      st_b_[j] = w.e_half * yi + hh * w.phi1_half * (k[i] - d * st_a_[j]);
+      tmp_(i) = st_b_[j];
+    } else {
+      const double nb = k[i] - d * st_b_[j];
+      st_c_[j] = w.e_half * st_a_[j] + hh * w.phi1_half * (2.0 * nb - st_n1_[j]);
+      tmp_(i) = st_c_[j];
+    }
+  }
+}
+
+void FixedStepIntegrator::expRk4Final(double h, Eigen::VectorXd& ynew) const {
+  for (std::size_t j = 0; j < stiff_.size(); ++j) {
+    const auto i = static_cast<Eigen::Index>(stiff_[j]);
+    const double d = diag_[j];
+    const expo::Weights w = expo::weights(h * d);
+    const double na = k2_(i) - d * st_a_[j], nb = k3_(i) - d * st_b_[j];
+    const double nc = k4_(i) - d * st_c_[j];
+    ynew(i) = w.e_full * y_(i) + h * (w.f1 * st_n1_[j] + 2.0 * w.f2 * (na + nb) + w.f3 * nc);
+  }
+}
+
+// Exponential Adams-Bashforth 4 predictor of the stiff components from the history f_, yh_ (the
+// newest at slot, then head_, ...): N_j = f_j - d y_j.
+void FixedStepIntegrator::expAbmPredict(double h, int slot, Eigen::VectorXd& ystar) const {
+  const std::array<int, 4> node{slot, head_, (head_ + 3) & 3, (head_ + 2) & 3};
+  for (std::size_t j = 0; j < stiff_.size(); ++j) {
+    const auto i = static_cast<Eigen::Index>(stiff_[j]);
+    const double d = diag_[j];
+    const expo::Weights w = expo::weights(h * d);
+    double sum = 0.0;
+    for (std::size_t m = 0; m < 4; ++m) {
+      const auto nd = static_cast<std::size_t>(node[m]);
+      sum += w.ab[m] * (f_[nd](i) - d * yh_[nd](i));
+    }
+    ystar(i) = w.e_full * y_(i) + h * sum;
+  }
+}
+
+// Exponential Adams-Moulton 4 corrector: N*_n+1 from f(y*) (k2_ at tmp_), then N_n, N_n-1, N_n-2.
+void FixedStepIntegrator::expAbmCorrect(double h, int slot, Eigen::VectorXd& ynew) const {
+  const std::array<int, 3> node{slot, head_, (head_ + 3) & 3};
+  for (std::size_t j = 0; j < stiff_.size(); ++j) {
+    const auto i = static_cast<Eigen::Index>(stiff_[j]);
+    const double d = diag_[j];
+    const expo::Weights w = expo::weights(h * d);
+    double sum = w.am[0] * (k2_(i) - d * tmp_(i));
+    for (std::size_t m = 0; m < 3; ++m) {
+      const auto nd = static_cast<std::size_t>(node[m]);
+      sum += w.am[m + 1] * (f_[nd](i) - d * yh_[nd](i));
+    }
+    ynew(i) = w.e_full * y_(i) + h * sum;
+  }
 }
 
 std::string FixedStepIntegrator::failureMessage(Status s, double t_n) const {
@@ -172,6 +277,14 @@ RunResult FixedStepIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::Ve
   y_ = y0;
   head_ = 0;
   history_ = 0;
+  stiff_ = spec().stiff == StiffTreatment::Exponential ? sys.stiffComponents() : std::vector<int>{};
+  diag_.assign(stiff_.size(), 0.0);
+  for (auto* v : {&st_a_, &st_b_, &st_c_, &st_n1_}) v->assign(stiff_.size(), 0.0);
+  last_refresh_ = -1;
+  if (exponential()) {
+    for (auto& v : yh_) v.setZero(n_);
+    ypert_.setZero(n_);
+  }
   stats_ = Stats{};
   rec_ = detail::RhsRecord{};
 

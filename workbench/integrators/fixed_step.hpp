@@ -70,6 +70,13 @@ class FixedStepIntegrator final : public Integrator {
   Status advanceRk4(double t, double h, int depth, double* k1);
   Status splitRk4(double t, double h, int depth);
   Status abmStep(double t, double h);
+  // Exponential treatment of the system's stiff components (exponential.hpp).
+  bool exponential() const { return !stiff_.empty(); }
+  void refreshDiagonal(double t, const double* f_at_y);
+  void expRk4Stage(int stage, double hh, const double* k);
+  void expRk4Final(double h, Eigen::VectorXd& ynew) const;
+  void expAbmPredict(double h, int slot, Eigen::VectorXd& ystar) const;
+  void expAbmCorrect(double h, int slot, Eigen::VectorXd& ynew) const;
   std::string failureMessage(Status s, double t_n) const;
 
   Method method_;
@@ -80,6 +87,16 @@ class FixedStepIntegrator final : public Integrator {
   std::array<Eigen::VectorXd, 4> f_;  // ABM history ring: f_[head_] is the newest
   int head_ = 0;
   int history_ = 0;  // consecutive grid derivatives known behind the current point (ABM)
+  // Exponential treatment: stiff component indices, their diagonal Jacobian entries d_i (finite
+  // differences, refreshed every kDiagonalRefreshSteps steps), the states at which the ABM
+  // history f_ was evaluated, and the RK4 stage values of the stiff components.
+  static constexpr int kDiagonalRefreshSteps = 10;
+  std::vector<int> stiff_;
+  std::vector<double> diag_;
+  long last_refresh_ = -1;
+  std::array<Eigen::VectorXd, 4> yh_;
+  Eigen::VectorXd ypert_;
+  std::vector<double> st_a_, st_b_, st_c_, st_n1_;
   Stats stats_;
   detail::RhsRecord rec_;
 };

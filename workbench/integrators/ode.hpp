@@ -5,6 +5,7 @@
 // that did not converge), < 0 fatal.
 #include <Eigen/Dense>
 #include <string>
+#include <vector>
 
 namespace rb::integ {
 
@@ -20,6 +21,10 @@ class OdeSystem {
                        Eigen::Ref<Eigen::MatrixXd> /*J*/) {
     return -1;
   }
+  // Components whose derivative depends stiffly on the component itself (a large negative
+  // diagonal Jacobian entry, e.g. a free wheelset spin rate under its creep forces): the
+  // fixed-step methods can integrate them exponentially (exponential.hpp). Default: none.
+  virtual std::vector<int> stiffComponents() const { return {}; }
   // Name of state component i for failure messages ("ws1.y"); default "y[i]".
   virtual std::string componentName(int i) const { return "y[" + std::to_string(i) + "]"; }
   // Human-readable reason for the last non-zero return of rhs(); empty if none.

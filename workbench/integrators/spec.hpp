@@ -7,6 +7,11 @@
 
 namespace rb::integ {
 
+// How the fixed-step methods integrate the components the model declares stiff
+// (OdeSystem::stiffComponents: free wheelset spin rates, series-damper forces): classically, or
+// exponentially on their diagonal Jacobian entry (exponential.hpp).
+enum class StiffTreatment { Explicit, Exponential };
+
 struct SolverSpec {
   std::string method = "abm";  // registry name: rk4, abm, dopri5, bdf, ida
   double step = 1e-3;     // [s] fixed step (rk4, abm); initial step hint for adaptive (0 = auto)
@@ -16,6 +21,10 @@ struct SolverSpec {
   int max_order = 5;      // [-] BDF maximum order 1..5
   long max_steps = 0;     // [-] cap on internal steps per output interval, 0 = solver default
   std::string jacobian = "auto";  // "auto" (model's if it has one, else finite differences), "fd"
+  StiffTreatment stiff = StiffTreatment::Explicit;  // rk4, abm
+  // Run a fixed step beyond the stability limit of the model's stiffest mode anyway (studies of
+  // the paper's settings); otherwise compile() refuses it.
+  bool accept_unstable_step = false;
   SourceLoc loc;
 };
 

@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "workbench/integrators/ode.hpp"
 #include "workbench/vehicle/dynamics.hpp"
@@ -25,6 +26,16 @@ class VehicleOde : public integ::OdeSystem {
   int index(int body, Coord c, bool rate = false) const { return layout_.index(body, c, rate); }
   int indexOf(const std::string& component) const {  // by componentName(); -1 if none
     return layout_.indexOf(component, *model_);
+  }
+  // The stiff components the fixed-step methods may integrate exponentially: the free wheelset
+  // spin rates (creep damping, about -2 f11 r0^2 / (V I_yy), the stiffest mode of the contact
+  // vehicle) and the series-damper forces (relaxation rate -K_series / D, Appendix A).
+  std::vector<int> stiffComponents() const final {
+    std::vector<int> out;
+    if (layout_.spinFree())
+      for (int w = 0; w < layout_.n_ws; ++w) out.push_back(layout_.wsRate(w, 1));
+    for (int e = 0; e < layout_.n_series; ++e) out.push_back(layout_.series(e));
+    return out;
   }
 
   // State at rest at t0: car bodies and bogies in static (on a curve: quasi-static) equilibrium
