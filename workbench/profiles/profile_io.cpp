@@ -178,7 +178,7 @@ std::string stem(const std::string& path) {
 // block (units, mirroring; transformations and bounds are rejected) and the point block.
 class SimpackReader {
  public:
-  explicit SimpackReader(const std::string& path) : path_(path) {}
+  explicit SimpackReader(std::string path) : path_(std::move(path)) {}
 
   FileDiagnostics diags;
   bool inPoints = false;  // inside point.begin ... point.end
