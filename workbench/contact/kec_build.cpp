@@ -1,12 +1,15 @@
+// Build of the KEC tables (paper section 2.4, steps 1-4; see kec.hpp): the real contact followed
+// toward each flange, the equivalent profiles with their contact-point jumps, the regularisation
+// of the jumps (Fig. 9-10, the weights of Eq. 26) and the resampling on the KEC grid. The online
+// solver and the table evaluation are in kec_solve.cpp.
 #include "workbench/contact/kec.hpp"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <string>
+#include <vector>
 
 #include "workbench/contact/geometry.hpp"
 #include "workbench/core/error.hpp"

@@ -1,12 +1,12 @@
 // Hot path of the KEC method: evaluation of the KEC tables and the online solution of the
 // constraints of Eq. (22) (one solveKec per wheelset and right-hand side). The table build is in
 // kec_build.cpp.
+#include "workbench/contact/kec.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <string>
-
-#include "workbench/contact/kec.hpp"
 
 namespace rb::contact {
 namespace {

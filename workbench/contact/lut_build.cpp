@@ -1,12 +1,13 @@
 // Build of the contact lookup table (paper section 2.3, Eq. 11-15, 21): Eq. (12) and the flange
 // search on every node, contact-point jumps, two-point contacts and the node derivatives of the
 // interpolant. The evaluation is in lut_eval.cpp.
+#include "workbench/contact/lut.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
-#include "workbench/contact/lut.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/spline.hpp"
 

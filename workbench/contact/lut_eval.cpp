@@ -1,10 +1,10 @@
 // Hot path of the LUT method: evaluation of the contact lookup table (bicubic Hermite, Eq. 14).
 // The table build is in lut_build.cpp.
+#include "workbench/contact/lut.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
-
-#include "workbench/contact/lut.hpp"
 
 namespace rb::contact {
 namespace {
