@@ -2,11 +2,9 @@
 
 #include <unistd.h>
 
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -102,45 +100,9 @@ std::optional<track::IrregularityTable> parseCsv(std::string_view data, Diagnost
   return track::parseIrregularityCsv(in, "fuzz.csv", diags);
 }
 
-// The table file format of table_io.hpp: magic, byte-order mark, format version, algorithm
-// version, key size and key, payload size, payload, FNV-1a 64 checksum (over 8-byte words, then
-// the tail bytes).
-
-std::uint64_t fnv1aWords(const char* p, std::size_t n) {
-  std::uint64_t h = 14695981039346656037ULL;
-  constexpr std::uint64_t prime = 1099511628211ULL;
-  std::size_t i = 0;
-  for (; i + 8 <= n; i += 8) {
-    std::uint64_t w;
-    std::memcpy(&w, p + i, 8);
-    h = (h ^ w) * prime;
-  }
-  for (; i < n; ++i) h = (h ^ static_cast<unsigned char>(p[i])) * prime;
-  return h;
-}
-
-void appendU64(std::string& s, std::uint64_t v) {
-  char b[8];
-  std::memcpy(b, &v, 8);
-  s.append(b, 8);
-}
-
 std::string wrapPayload(bool kec, std::string_view payload) {
-  std::array<char, 16> magic{};
-  const char* name = kec ? "railbench-kec" : "railbench-lut";
-  std::memcpy(magic.data(), name, std::strlen(name));
-  std::string file(magic.data(), magic.size());
-  appendU64(file, 0x0102030405060708ULL);
-  appendU64(file, contact::kTableFormatVersion);
-  appendU64(file, contact::kTableAlgorithmVersion);
-  const std::string key = contact::tableInputKey(
-      seedTableConfig(), kec ? contact::TableKind::Kec : contact::TableKind::Lut);
-  appendU64(file, key.size());
-  file.append(key);
-  appendU64(file, payload.size());
-  file.append(payload);
-  appendU64(file, fnv1aWords(file.data(), file.size()));
-  return file;
+  const contact::TableKind kind = kec ? contact::TableKind::Kec : contact::TableKind::Lut;
+  return contact::tableFileBytes(kind, contact::tableInputKey(seedTableConfig(), kind), payload);
 }
 
 void touchLut(const contact::LutTable& t) {

@@ -31,6 +31,105 @@ bool inDomain(const profiles::Profile& p, double s) {
   return s >= p.sMin() - kDomainSlack && s <= p.sMax() + kDomainSlack;
 }
 
+// Inserts g into the ascending list starts[0..n) of the deepest distinct sampled gaps, which holds
+// at most starts.size() entries (the deepest are kept).
+void keepDeepest(std::array<ContactSolver::Gap, 4>& starts, int& n, const ContactSolver::Gap& g) {
+  constexpr int kMax = 4;
+  for (int k = 0; k < n; ++k) {
+    if (starts[static_cast<std::size_t>(k)].s_w == g.s_w) return;
+  }
+  int pos = n < kMax ? n++ : kMax;
+  if (pos == kMax) {
+    if (g.gap >= starts[kMax - 1].gap) return;
+    pos = kMax - 1;
+  }
+  starts[static_cast<std::size_t>(pos)] = g;
+  for (int k = pos; k > 0 && starts[static_cast<std::size_t>(k)].gap <
+                                 starts[static_cast<std::size_t>(k - 1)].gap;
+       --k) {
+    std::swap(starts[static_cast<std::size_t>(k)], starts[static_cast<std::size_t>(k - 1)]);
+  }
+}
+
+// Tread/flange boundary of a wheel profile: the first sample from s_w = 0 toward the flange
+// (-sigma s_w) whose slope reaches tan(flange_angle); NaN when there is none (no flange).
+double flangeStart(const profiles::Profile& w, double sigma, double flange_angle, double step) {
+  const double lo = w.sMin(), hi = w.sMax();
+  const double tan_min = std::tan(flange_angle);
+  const double start = std::clamp(0.0, lo, hi);
+  for (double s = start; s >= lo - 1e-15 && s <= hi + 1e-15; s -= sigma * step) {
+    if (std::abs(w.at(s).dh) >= tan_min) return s;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// The sample of [lo, hi] with the largest radius h (the first of equal ones); `fallback` when the
+// range has no samples. On the flange side of the boundary this is the flange tip.
+double highestSample(const profiles::Profile& w, double lo, double hi, double step,
+                     double fallback) {
+  double tip = fallback, hmax = -std::numeric_limits<double>::infinity();
+  for (double s : sampleRange(lo, hi, step)) {
+    const double h = w.at(s).h;
+    if (h > hmax) {
+      hmax = h;
+      tip = s;
+    }
+  }
+  return tip;
+}
+
+// Appends the samples of [lo, hi] (sampleRange) and the wheel radius h there to s and h.
+void sampleWheel(const profiles::Profile& w, double lo, double hi, double step,
+                 std::vector<double>& s, std::vector<double>& h) {
+  for (double v : sampleRange(lo, hi, step)) {
+    s.push_back(v);
+    h.push_back(w.at(v).h);
+  }
+}
+
+// Row of the continuation parameter in the Newton system of Eq. (12): its residual p(x) - value
+// and gradient with respect to (y, z, phi). sig_p: side sign of a knife parameter.
+struct ParameterRow {
+  double f = 0.0, gy = 0.0, gz = 0.0, gphi = 0.0;
+};
+ParameterRow parameterRow(const ContactState& x, Parameter param, double value, double sig_p,
+                          double rail_lr) {
+  ParameterRow r;
+  switch (param) {
+    case Parameter::Y:
+      r.f = x.y - value;
+      r.gy = 1.0;
+      break;
+    case Parameter::Z:
+      r.f = x.z - value;
+      r.gz = 1.0;
+      break;
+    case Parameter::LeftKnife:
+    case Parameter::RightKnife: {
+      // s_k = (py + phi pz) / (1 + phi^2) - sigma Lr, py = sigma Lr - y, pz = -z.
+      const double py = sig_p * rail_lr - x.y, pz = -x.z;
+      const double q = 1.0 / (1.0 + x.phi * x.phi);
+      r.f = q * (py + x.phi * pz) - sig_p * rail_lr - value;
+      r.gy = -q;
+      r.gz = -q * x.phi;
+      r.gphi = q * pz - 2.0 * x.phi * q * q * (py + x.phi * pz);
+      break;
+    }
+  }
+  return r;
+}
+
+// Scales the whole Newton step dx = (y, z, phi, s_lw, s_lr, s_rw, s_rr) so that no unknown moves
+// more than its limit (the direction is kept).
+void limitStep(Eigen::Matrix<double, 7, 1>& dx) {
+  double scale = 1.0;
+  for (int k = 0; k < 7; ++k) {
+    const double lim = k == 2 ? kMaxStepPhi : kMaxStepS;
+    if (std::abs(dx(k)) * scale > lim) scale = lim / std::abs(dx(k));
+  }
+  dx *= scale;
+}
+
 }  // namespace
 
 KnifePoint knifePoint(double sigma, double lr, double r0, double y, double z, double phi,
@@ -59,47 +158,25 @@ ContactSolver::ContactSolver(ContactGeometryConfig config) : cfg_(std::move(conf
       boundary = sd.sigma * cfg_.flange_boundary;
       sd.has_flange = boundary > lo && boundary < hi;
     } else {
-      const double tan_min = std::tan(cfg_.flange_angle);
-      const double start = std::clamp(0.0, lo, hi);
-      for (double s = start; s >= lo - 1e-15 && s <= hi + 1e-15; s -= sd.sigma * cfg_.search_step) {
-        if (std::abs(w.at(s).dh) >= tan_min) {
-          boundary = s;
-          break;
-        }
-      }
+      boundary = flangeStart(w, sd.sigma, cfg_.flange_angle, cfg_.search_step);
       sd.has_flange = std::isfinite(boundary);
     }
     if (!sd.has_flange) boundary = sd.sigma > 0 ? lo : hi;
     sd.boundary = boundary;
-    // Flange tip: largest radius on the flange side of the boundary.
-    double tip = boundary, hmax = -std::numeric_limits<double>::infinity();
-    const double flo = sd.sigma > 0 ? lo : boundary, fhi = sd.sigma > 0 ? boundary : hi;
-    for (double s : sampleRange(flo, fhi, cfg_.search_step)) {
-      const double h = w.at(s).h;
-      if (h > hmax) {
-        hmax = h;
-        tip = s;
-      }
-    }
-    sd.tip = tip;
-    const std::vector<double> tread = sd.sigma > 0 ? sampleRange(boundary, hi, cfg_.search_step)
-                                                   : sampleRange(lo, boundary, cfg_.search_step);
-    for (double s : tread) {
-      sd.tread_s.push_back(s);
-      sd.tread_h.push_back(w.at(s).h);
-    }
-    const std::vector<double> all = sd.sigma > 0 ? sampleRange(tip, hi, cfg_.search_step)
-                                                 : sampleRange(lo, tip, cfg_.search_step);
-    for (double s : all) {
-      sd.all_s.push_back(s);
-      sd.all_h.push_back(w.at(s).h);
+    sd.tip = sd.sigma > 0 ? highestSample(w, lo, boundary, cfg_.search_step, boundary)
+                          : highestSample(w, boundary, hi, cfg_.search_step, boundary);
+    if (sd.sigma > 0) {
+      sampleWheel(w, boundary, hi, cfg_.search_step, sd.tread_s, sd.tread_h);
+      sampleWheel(w, sd.tip, hi, cfg_.search_step, sd.all_s, sd.all_h);
+    } else {
+      sampleWheel(w, lo, boundary, cfg_.search_step, sd.tread_s, sd.tread_h);
+      sampleWheel(w, lo, sd.tip, cfg_.search_step, sd.all_s, sd.all_h);
     }
     if (sd.has_flange) {
-      const std::vector<double> fl = sd.sigma > 0 ? sampleRange(tip, boundary, cfg_.search_step)
-                                                  : sampleRange(boundary, tip, cfg_.search_step);
-      for (double s : fl) {
-        sd.flange_s.push_back(s);
-        sd.flange_h.push_back(w.at(s).h);
+      if (sd.sigma > 0) {
+        sampleWheel(w, sd.tip, boundary, cfg_.search_step, sd.flange_s, sd.flange_h);
+      } else {
+        sampleWheel(w, boundary, sd.tip, cfg_.search_step, sd.flange_s, sd.flange_h);
       }
     }
   }
@@ -182,29 +259,8 @@ int ContactSolver::newton(ContactState& x, Parameter param, double value, double
     for (std::size_t k = 0; k < 2; ++k) {
       if (modes[k] == ContactMode::Edge) f[3 * k + 2] = 0.0;
     }
-    // Parameter row and its gradient with respect to (y, z, phi).
-    double fp = 0.0, gy = 0.0, gz = 0.0, gphi = 0.0;
-    switch (param) {
-      case Parameter::Y:
-        fp = x.y - value;
-        gy = 1.0;
-        break;
-      case Parameter::Z:
-        fp = x.z - value;
-        gz = 1.0;
-        break;
-      case Parameter::LeftKnife:
-      case Parameter::RightKnife: {
-        // s_k = (py + phi pz) / (1 + phi^2) - sigma Lr, py = sigma Lr - y, pz = -z.
-        const double py = sig_p * cfg_.rail_lr - x.y, pz = -x.z;
-        const double q = 1.0 / (1.0 + x.phi * x.phi);
-        fp = q * (py + x.phi * pz) - sig_p * cfg_.rail_lr - value;
-        gy = -q;
-        gz = -q * x.phi;
-        gphi = q * pz - 2.0 * x.phi * q * q * (py + x.phi * pz);
-        break;
-      }
-    }
+    const ParameterRow pr = parameterRow(x, param, value, sig_p, cfg_.rail_lr);
+    const double fp = pr.f;
     double fmax = std::abs(fp);
     for (double v : f) fmax = std::max(fmax, std::abs(v));
     if (!std::isfinite(fmax)) return -1;
@@ -232,19 +288,14 @@ int ContactSolver::newton(ContactState& x, Parameter param, double value, double
       J(row, 3 + 2 * k) = 1.0;
       F(row) = 0.0;  // s_w stays at the boundary
     }
-    J(6, 0) = gy;
-    J(6, 1) = gz;
-    J(6, 2) = gphi;
+    J(6, 0) = pr.gy;
+    J(6, 1) = pr.gz;
+    J(6, 2) = pr.gphi;
     F(6) = fp;
     const Eigen::PartialPivLU<Eigen::Matrix<double, 7, 7>> lu(J);
     Eigen::Matrix<double, 7, 1> dx = lu.solve(-F);
     if (!dx.allFinite()) return -1;
-    double scale = 1.0;
-    for (int k = 0; k < 7; ++k) {
-      const double lim = k == 2 ? kMaxStepPhi : kMaxStepS;
-      if (std::abs(dx(k)) * scale > lim) scale = lim / std::abs(dx(k));
-    }
-    dx *= scale;
+    limitStep(dx);
     x.y += dx(0);
     x.z += dx(1);
     x.phi += dx(2);
@@ -591,23 +642,9 @@ int ContactSolver::localMinima(Side side, const WheelsetPose& pose, double xi_g,
   Gap prev;
   Gap best_below{std::numeric_limits<double>::infinity(), 0.0, 0.0};
   Gap best_above{std::numeric_limits<double>::infinity(), 0.0, 0.0};
-  constexpr int kMax = 4;
   auto offer = [&](const Gap& g) {
     if (exclude_radius > 0.0 && std::abs(g.s_w - exclude_s) <= exclude_radius) return;
-    for (int k = 0; k < n; ++k) {
-      if (starts[static_cast<std::size_t>(k)].s_w == g.s_w) return;
-    }
-    int pos = n < kMax ? n++ : kMax;
-    if (pos == kMax) {
-      if (g.gap >= starts[kMax - 1].gap) return;
-      pos = kMax - 1;
-    }
-    starts[static_cast<std::size_t>(pos)] = g;
-    for (int k = pos; k > 0 && starts[static_cast<std::size_t>(k)].gap <
-                                   starts[static_cast<std::size_t>(k - 1)].gap;
-         --k) {
-      std::swap(starts[static_cast<std::size_t>(k)], starts[static_cast<std::size_t>(k - 1)]);
-    }
+    keepDeepest(starts, n, g);
   };
   for (std::size_t i = 0; i <= ss.size(); ++i) {
     double g = std::numeric_limits<double>::infinity();

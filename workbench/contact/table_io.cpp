@@ -10,6 +10,7 @@
 #include <fstream>
 #include <random>
 #include <stdexcept>
+#include <string_view>
 #include <system_error>
 #include <type_traits>
 #include <utility>
@@ -183,9 +184,8 @@ class Reader {
   bool ok_ = true;
 };
 
-// Header + key + payload + checksum, written to a unique temporary file renamed over `path`.
-void writeFile(const std::string& path, const Magic& magic, const std::string& key,
-               const std::string& payload) {
+// Header + key + payload + checksum (the file format of table_io.hpp).
+std::string fileBytes(const Magic& magic, const std::string& key, std::string_view payload) {
   Writer file;
   file.raw(magic.data(), magic.size());
   file.u64(kByteOrderMark);
@@ -195,7 +195,13 @@ void writeFile(const std::string& path, const Magic& magic, const std::string& k
   file.u64(payload.size());
   file.raw(payload.data(), payload.size());
   file.u64(checksum(file.buffer().data(), file.buffer().size()));
-  const std::string& bytes = file.buffer();
+  return std::move(file.buffer());
+}
+
+// The file bytes written to a unique temporary file renamed over `path`.
+void writeFile(const std::string& path, const Magic& magic, const std::string& key,
+               const std::string& payload) {
+  const std::string bytes = fileBytes(magic, key, payload);
 
   // Unique per writer (process and call), so racing writers never share a temporary file.
   static std::atomic<std::uint64_t> counter{0};
@@ -474,6 +480,10 @@ std::string tableInputKey(const ContactGeometryConfig& c, TableKind kind) {
   }
   w.u64(static_cast<std::uint64_t>(static_cast<std::int64_t>(c.newton_max_iter)));
   return std::move(w.buffer());
+}
+
+std::string tableFileBytes(TableKind kind, const std::string& key, std::string_view payload) {
+  return fileBytes(kind == TableKind::Kec ? kKecMagic : kLutMagic, key, payload);
 }
 
 void saveTable(const LutTable& table, const ContactGeometryConfig& config,

@@ -43,6 +43,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "workbench/contact/config.hpp"
 #include "workbench/contact/kec.hpp"
@@ -52,9 +53,10 @@ namespace rb::contact {
 
 // Version of the table-building code. RULE: bump it in the same commit as any change that can
 // alter the content of a LUT or KEC table built from the same inputs (workbench/contact/
-// {config,geometry,lut,kec}.cpp, the profile splines and readers they use, the grids' defaults
-// are inputs and need no bump). Cached tables of any other version are then rebuilt, never reused.
-// It is also part of a study case's input hash (workbench/app/study.cpp).
+// {config,geometry,lut_build,kec_build}.cpp, the profile splines and readers
+// they use, the grids' defaults are inputs and need no bump). Cached tables of any other version
+// are then rebuilt, never reused. It is also part of a study case's input hash
+// (workbench/app/study.cpp).
 inline constexpr std::uint64_t kTableAlgorithmVersion = 1;
 // Layout of the cache file (see above); bumped when the layout changes.
 inline constexpr std::uint64_t kTableFormatVersion = 2;
@@ -65,6 +67,10 @@ enum class TableKind { Lut, Kec };
 // comment): kind, kTableAlgorithmVersion, the workbench version, every number of the config and
 // every profile sample as raw IEEE bits. Equal keys <=> interchangeable tables.
 std::string tableInputKey(const ContactGeometryConfig& config, TableKind kind);
+
+// The complete bytes of a table file of `kind` around `payload` (header with `key`, the payload,
+// the checksum: the format above), as saveTable writes them. For tools and tests that craft files.
+std::string tableFileBytes(TableKind kind, const std::string& key, std::string_view payload);
 
 // Write the table built from `config` to `path` (atomically, see above). Throws std::runtime_error
 // naming the path on any I/O error.

@@ -20,8 +20,18 @@ RollingRadiusDifference::RollingRadiusDifference(std::vector<double> y, std::vec
   for (std::size_t i = 1; i < n; ++i) {
     cum_[i] = cum_[i - 1] + 0.5 * (dr_[i] + dr_[i - 1]) * (y_[i] - y_[i - 1]);
   }
-  // Centre: global minimum of the (piecewise quadratic) integral. On a segment with dr crossing
-  // from - to +, the minimum is at the zero of the linear dr.
+  // Centre: global minimum of the (piecewise quadratic) integral, the middle of a flat minimum.
+  const double best = integralMinimum();
+  y0_ = middleOfFlatMinimum(best);
+  RB_CHECK(y0_ > y_.front() && y0_ < y_.back(),
+           "rolling radius difference: no restoring zero crossing inside the data (dr must "
+           "increase through zero)");
+  i0_ = best;
+}
+
+double RollingRadiusDifference::integralMinimum() {
+  // On a segment with dr crossing from - to +, the minimum is at the zero of the linear dr.
+  const std::size_t n = y_.size();
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < n; ++i) {
     if (cum_[i] < best) {
@@ -38,33 +48,32 @@ RollingRadiusDifference::RollingRadiusDifference(std::vector<double> y, std::vec
       }
     }
   }
-  // A flat minimum (dr = 0 over a range, e.g. a dead band between contact jumps): take the middle
-  // of the flat part, which does not change tan(gamma_e) but gives the natural centre.
-  {
-    double scale = 0.0;
-    for (const double c : cum_) scale = std::max(scale, std::abs(c - best));
-    const double tol = 1e-12 * scale;
-    double lo = y0_, hi = y0_;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (y_[i] < y0_ && cum_[i] <= best + tol) {
-        bool flat = true;  // every sample between y_i and y0 at the minimum too
-        for (std::size_t j = i; j < n && y_[j] < y0_; ++j) flat = flat && cum_[j] <= best + tol;
-        if (flat) lo = std::min(lo, y_[i]);
-      }
+  return best;
+}
+
+double RollingRadiusDifference::middleOfFlatMinimum(double best) const {
+  // A flat minimum (dr = 0 over a range, e.g. a dead band between contact jumps): the middle of
+  // the flat part does not change tan(gamma_e) but gives the natural centre.
+  const std::size_t n = y_.size();
+  double scale = 0.0;
+  for (const double c : cum_) scale = std::max(scale, std::abs(c - best));
+  const double tol = 1e-12 * scale;
+  double lo = y0_, hi = y0_;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (y_[i] < y0_ && cum_[i] <= best + tol) {
+      bool flat = true;  // every sample between y_i and y0 at the minimum too
+      for (std::size_t j = i; j < n && y_[j] < y0_; ++j) flat = flat && cum_[j] <= best + tol;
+      if (flat) lo = std::min(lo, y_[i]);
     }
-    for (std::size_t i = n; i-- > 0;) {
-      if (y_[i] > y0_ && cum_[i] <= best + tol) {
-        bool flat = true;
-        for (std::size_t j = i + 1; j-- > 0 && y_[j] > y0_;) flat = flat && cum_[j] <= best + tol;
-        if (flat) hi = std::max(hi, y_[i]);
-      }
-    }
-    y0_ = 0.5 * (lo + hi);
   }
-  RB_CHECK(y0_ > y_.front() && y0_ < y_.back(),
-           "rolling radius difference: no restoring zero crossing inside the data (dr must "
-           "increase through zero)");
-  i0_ = best;
+  for (std::size_t i = n; i-- > 0;) {
+    if (y_[i] > y0_ && cum_[i] <= best + tol) {
+      bool flat = true;
+      for (std::size_t j = i + 1; j-- > 0 && y_[j] > y0_;) flat = flat && cum_[j] <= best + tol;
+      if (flat) hi = std::max(hi, y_[i]);
+    }
+  }
+  return 0.5 * (lo + hi);
 }
 
 std::size_t RollingRadiusDifference::segment(double y) const {
@@ -87,39 +96,43 @@ double RollingRadiusDifference::potential(double y) const {
   return cum_[i] + dr_[i] * u + 0.5 * slope * u * u - i0_;
 }
 
+double RollingRadiusDifference::crossingLeft(double C, std::size_t k0) const {
+  for (std::size_t i = k0 + 1; i-- > 0;) {
+    const double ya = y_[i];
+    if (potential(ya) >= C) {
+      double a = ya, b = std::min(y_[i + 1], y0_);
+      for (int it = 0; it < 200 && b - a > 1e-14 * (1.0 + std::abs(a)); ++it) {
+        const double m = 0.5 * (a + b);
+        (potential(m) >= C ? a : b) = m;
+      }
+      return 0.5 * (a + b);
+    }
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+double RollingRadiusDifference::crossingRight(double C, std::size_t k0) const {
+  for (std::size_t i = k0 + 1; i < y_.size(); ++i) {
+    const double yb = y_[i];
+    if (potential(yb) >= C) {
+      double a = std::max(y_[i - 1], y0_), b = yb;
+      for (int it = 0; it < 200 && b - a > 1e-14 * (1.0 + std::abs(b)); ++it) {
+        const double m = 0.5 * (a + b);
+        (potential(m) >= C ? b : a) = m;
+      }
+      return 0.5 * (a + b);
+    }
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 bool RollingRadiusDifference::oscillation(double yhat, Oscillation& out) const {
   // The motion at level C stays in the connected part of {I < C} around y0. Its end points move
   // outward monotonically with C, so y2 - y1 is monotone in C: bisection.
   const std::size_t n = y_.size();
   const std::size_t k0 = segment(y0_);  // y0 in [y_k0, y_k0+1]
-  // Crossing of I = C going left (dir -1) or right (+1) from y0; NaN if not within the data.
   auto crossing = [&](double C, int dir) {
-    if (dir < 0) {
-      for (std::size_t i = k0 + 1; i-- > 0;) {
-        const double ya = y_[i];
-        if (potential(ya) >= C) {
-          double a = ya, b = std::min(y_[i + 1], y0_);
-          for (int it = 0; it < 200 && b - a > 1e-14 * (1.0 + std::abs(a)); ++it) {
-            const double m = 0.5 * (a + b);
-            (potential(m) >= C ? a : b) = m;
-          }
-          return 0.5 * (a + b);
-        }
-      }
-    } else {
-      for (std::size_t i = k0 + 1; i < n; ++i) {
-        const double yb = y_[i];
-        if (potential(yb) >= C) {
-          double a = std::max(y_[i - 1], y0_), b = yb;
-          for (int it = 0; it < 200 && b - a > 1e-14 * (1.0 + std::abs(b)); ++it) {
-            const double m = 0.5 * (a + b);
-            (potential(m) >= C ? b : a) = m;
-          }
-          return 0.5 * (a + b);
-        }
-      }
-    }
-    return std::numeric_limits<double>::quiet_NaN();
+    return dir < 0 ? crossingLeft(C, k0) : crossingRight(C, k0);
   };
   // Highest level reachable on both sides.
   double cmax = std::numeric_limits<double>::infinity();

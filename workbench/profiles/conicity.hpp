@@ -58,6 +58,13 @@ class RollingRadiusDifference {
 
  private:
   std::size_t segment(double y) const;
+  // Global minimum of the piecewise quadratic I over the data (value; sets y0_ to its position).
+  double integralMinimum();
+  // y0_ moved to the middle of the flat part of the minimum `best` around it.
+  double middleOfFlatMinimum(double best) const;
+  // Crossing of I = C going left / right from y0 (y0 in segment k0); NaN if not within the data.
+  double crossingLeft(double C, std::size_t k0) const;
+  double crossingRight(double C, std::size_t k0) const;
   std::vector<double> y_, dr_, cum_;  // cum_[i] = integral_{y_0}^{y_i} dr (from the first sample)
   double y0_ = 0.0, i0_ = 0.0;        // centre and integral_{y_first}^{y0} dr
 };

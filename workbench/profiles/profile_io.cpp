@@ -174,6 +174,168 @@ std::string stem(const std::string& path) {
   return std::filesystem::path(path).stem().string();
 }
 
+// A SIMPACK profile file (.prw / .prr) read line by line: the header block (type), the spline
+// block (units, mirroring; transformations and bounds are rejected) and the point block.
+class SimpackReader {
+ public:
+  explicit SimpackReader(std::string path) : path_(std::move(path)) {}
+
+  FileDiagnostics diags;
+  bool inPoints = false;  // inside point.begin ... point.end
+
+  // A line inside the point block: a point, point.end, or another block keyword (point.end is
+  // missing).
+  void pointLine(std::string_view text, int ln) {
+    const SourceLoc loc{path_, ln};
+    if (text == "point.end") {
+      inPoints = false;
+      pointEnd_ = ln;
+      return;
+    }
+    if (text.ends_with(".end") || text.ends_with(".begin")) {
+      inPoints = false;
+      unterminated_ = true;
+      block_ = text == "header.begin"   ? Block::Header
+               : text == "spline.begin" ? Block::Spline
+                                        : Block::None;
+      return;
+    }
+    if (ry_.size() == kMaxProfilePoints) {
+      diags.add(loc, tooManyPoints());
+      diags.throwIfAny();
+    }
+    double y = 0, z = 0, w = 1;
+    if (parsePoint(text, loc, diags, y, z, w)) {
+      ry_.push_back(y);
+      rz_.push_back(z);
+      rw_.push_back(w);
+      rl_.push_back(ln);
+    }
+  }
+
+  // A line outside the point block: a block keyword or "key = value".
+  void blockLine(std::string_view text, int ln) {
+    const SourceLoc loc{path_, ln};
+    if (text == "header.begin") {
+      block_ = Block::Header;
+    } else if (text == "spline.begin") {
+      block_ = Block::Spline;
+    } else if (text == "header.end" || text == "spline.end") {
+      block_ = Block::None;
+    } else if (text == "point.begin") {
+      if (pointBegin_ != 0) diags.add(loc, "a second point.begin block");
+      pointBegin_ = ln;
+      inPoints = true;
+    } else if (const auto eq = text.find('='); eq != std::string_view::npos) {
+      const std::string_view key = trim(text.substr(0, eq));
+      const std::string_view value = trim(text.substr(eq + 1));
+      if (block_ == Block::Header && key == "type") {
+        double v = 0.0;
+        number(key, value, loc, v);
+        // Only the exact values 0 and 1 name a type; anything else (0.5, 1e300, nan) must stay
+        // invalid rather than be truncated, and a cast of a huge value to int is undefined.
+        typeValue_ = v == 0.0 ? 0 : v == 1.0 ? 1 : -2;
+        typeLine_ = ln;
+      } else if (block_ == Block::Spline) {
+        splineKey(key, value, ln);
+      }
+    }
+  }
+
+  // End of the file: block structure, unsupported bounds, the profile type (from the extension
+  // when the header does not give it). Throws the collected diagnostics.
+  void finish(int lastLine) {
+    if (inPoints || unterminated_) {
+      diags.add(SourceLoc{path_, pointBegin_}, "point.begin without point.end");
+    } else if (pointBegin_ == 0) {
+      diags.add(SourceLoc{path_, lastLine},
+                "no point.begin ... point.end block with profile points");
+    }
+    for (int a = 0; a < 2; ++a) {
+      if (boundMin_[a] < boundMax_[a]) {
+        diags.add(SourceLoc{path_, unitLine_},
+                  std::string(a == 0 ? "bound.y" : "bound.z") +
+                      " limits are not supported (set min > max to disable them)");
+      }
+    }
+    if (typeValue_ != 0 && typeValue_ != 1) {
+      const std::string ext = std::filesystem::path(path_).extension().string();
+      if (typeLine_ == 0 && (ext == ".prw" || ext == ".prr")) {
+        typeValue_ = ext == ".prw" ? 1 : 0;
+      } else {
+        diags.add(SourceLoc{path_, typeLine_},
+                  "header type must be 0 (rail profile) or 1 (wheel profile)");
+      }
+    }
+    diags.throwIfAny();
+  }
+
+  // The points in metres, z up (rail z is downward in SIMPACK files), mirrored as the file says.
+  ProfilePoints points() const {
+    ProfilePoints pts;
+    pts.file = path_;
+    pts.kind = typeValue_ == 1 ? ProfileKind::Wheel : ProfileKind::Rail;
+    pts.endLine = pointEnd_;
+    pts.kindLine = typeLine_;
+    pts.unitsHint = "set units.len.f (1000 for millimetres)";
+    const double sy = mirrorY_ != 0.0 ? -1.0 : 1.0;
+    const double szFile = mirrorZ_ != 0.0 ? -1.0 : 1.0;
+    const double sz = pts.kind == ProfileKind::Rail ? -szFile : szFile;
+    for (std::size_t i = 0; i < ry_.size(); ++i) {
+      pts.y.push_back(sy * ry_[i] / unitFactor_);
+      pts.z.push_back(sz * rz_[i] / unitFactor_);
+      pts.w.push_back(rw_[i]);
+      pts.line.push_back(rl_[i]);
+    }
+    return pts;
+  }
+
+ private:
+  enum class Block { None, Header, Spline };
+
+  void number(std::string_view key, std::string_view value, const SourceLoc& loc, double& out) {
+    if (!parseNumber(value, out)) {
+      diags.add(loc,
+                "non-numeric value for " + std::string(key) + ": \"" + std::string(value) + "\"");
+    }
+  }
+
+  // "key = value" in the spline block.
+  void splineKey(std::string_view key, std::string_view value, int ln) {
+    const SourceLoc loc{path_, ln};
+    if (key == "units.len.f") {
+      number(key, value, loc, unitFactor_);
+      unitLine_ = ln;
+      if (!(unitFactor_ > 0.0)) diags.add(loc, "units.len.f must be positive");
+    } else if (key == "mirror.y") {
+      number(key, value, loc, mirrorY_);
+    } else if (key == "mirror.z") {
+      number(key, value, loc, mirrorZ_);
+    } else if (key == "shift.y" || key == "shift.z" || key == "rotate") {
+      double v = 0.0;
+      number(key, value, loc, v);
+      if (v != 0.0) {
+        diags.add(loc, std::string(key) + " = " + num(v) +
+                           " is not supported (only 0); transform the points with "
+                           "ProfileReadOptions instead");
+      }
+    } else if (key == "bound.y.min" || key == "bound.z.min") {
+      number(key, value, loc, boundMin_[key == "bound.y.min" ? 0 : 1]);
+    } else if (key == "bound.y.max" || key == "bound.z.max") {
+      number(key, value, loc, boundMax_[key == "bound.y.max" ? 0 : 1]);
+    }
+  }
+
+  std::string path_;
+  Block block_ = Block::None;
+  int typeValue_ = -1, typeLine_ = 0, pointBegin_ = 0, pointEnd_ = 0, unitLine_ = 0;
+  double unitFactor_ = 1.0, mirrorY_ = 0.0, mirrorZ_ = 0.0;
+  double boundMin_[2] = {1.0, 1.0}, boundMax_[2] = {0.0, 0.0};
+  std::vector<double> ry_, rz_, rw_;
+  std::vector<int> rl_;
+  bool unterminated_ = false;
+};
+
 }  // namespace
 
 ProfilePoints readSimpackPoints(const std::string& path) {
@@ -182,139 +344,20 @@ ProfilePoints readSimpackPoints(const std::string& path) {
 
 ProfilePoints parseSimpackPoints(std::string_view fileText, const std::string& path) {
   Lines lines(fileText);
-  ProfilePoints pts;
-  pts.file = path;
-  FileDiagnostics diags;
-  enum class Block { None, Header, Spline } block = Block::None;
-  int typeValue = -1, typeLine = 0, pointBegin = 0, pointEnd = 0;
-  double unitFactor = 1.0, mirrorY = 0.0, mirrorZ = 0.0;
-  double boundMin[2] = {1.0, 1.0}, boundMax[2] = {0.0, 0.0};
-  int unitLine = 0;
-  std::vector<double> ry, rz, rw;
-  std::vector<int> rl;
-  bool inPoints = false, unterminated = false;
+  SimpackReader rd(path);
   std::string_view raw;
-  while (!diags.full() && lines.next(raw)) {
+  while (!rd.diags.full() && lines.next(raw)) {
     const int ln = lines.count();
-    const SourceLoc loc{path, ln};
     const std::string_view text = trim(stripBang(raw));
     if (text.empty()) continue;
-    if (inPoints) {
-      if (text == "point.end") {
-        inPoints = false;
-        pointEnd = ln;
-        continue;
-      }
-      if (text.ends_with(".end") || text.ends_with(".begin")) {
-        // Another block keyword inside the point block: point.end is missing.
-        inPoints = false;
-        unterminated = true;
-        block = text == "header.begin"   ? Block::Header
-                : text == "spline.begin" ? Block::Spline
-                                         : Block::None;
-        continue;
-      }
-      if (ry.size() == kMaxProfilePoints) {
-        diags.add(loc, tooManyPoints());
-        diags.throwIfAny();
-      }
-      double y = 0, z = 0, w = 1;
-      if (parsePoint(text, loc, diags, y, z, w)) {
-        ry.push_back(y);
-        rz.push_back(z);
-        rw.push_back(w);
-        rl.push_back(ln);
-      }
-      continue;
-    }
-    if (text == "header.begin") {
-      block = Block::Header;
-    } else if (text == "spline.begin") {
-      block = Block::Spline;
-    } else if (text == "header.end" || text == "spline.end") {
-      block = Block::None;
-    } else if (text == "point.begin") {
-      if (pointBegin != 0) diags.add(loc, "a second point.begin block");
-      pointBegin = ln;
-      inPoints = true;
-    } else if (const auto eq = text.find('='); eq != std::string_view::npos) {
-      const std::string_view key = trim(text.substr(0, eq));
-      const std::string_view value = trim(text.substr(eq + 1));
-      auto number = [&](double& out) {
-        if (!parseNumber(value, out)) {
-          diags.add(loc, "non-numeric value for " + std::string(key) + ": \"" + std::string(value) +
-                             "\"");
-        }
-      };
-      double v = 0.0;
-      if (block == Block::Header && key == "type") {
-        number(v);
-        // Only the exact values 0 and 1 name a type; anything else (0.5, 1e300, nan) must stay
-        // invalid rather than be truncated, and a cast of a huge value to int is undefined.
-        typeValue = v == 0.0 ? 0 : v == 1.0 ? 1 : -2;
-        typeLine = ln;
-      } else if (block == Block::Spline) {
-        if (key == "units.len.f") {
-          number(unitFactor);
-          unitLine = ln;
-          if (!(unitFactor > 0.0)) diags.add(loc, "units.len.f must be positive");
-        } else if (key == "mirror.y") {
-          number(mirrorY);
-        } else if (key == "mirror.z") {
-          number(mirrorZ);
-        } else if (key == "shift.y" || key == "shift.z" || key == "rotate") {
-          number(v);
-          if (v != 0.0) {
-            diags.add(loc, std::string(key) + " = " + num(v) +
-                               " is not supported (only 0); transform the points with "
-                               "ProfileReadOptions instead");
-          }
-        } else if (key == "bound.y.min" || key == "bound.z.min") {
-          number(boundMin[key == "bound.y.min" ? 0 : 1]);
-        } else if (key == "bound.y.max" || key == "bound.z.max") {
-          number(boundMax[key == "bound.y.max" ? 0 : 1]);
-        }
-      }
-    }
-  }
-  const int lastLine = lines.count();
-  if (inPoints || unterminated) {
-    diags.add(SourceLoc{path, pointBegin}, "point.begin without point.end");
-  } else if (pointBegin == 0) {
-    diags.add(SourceLoc{path, lastLine}, "no point.begin ... point.end block with profile points");
-  }
-  for (int a = 0; a < 2; ++a) {
-    if (boundMin[a] < boundMax[a]) {
-      diags.add(SourceLoc{path, unitLine},
-                std::string(a == 0 ? "bound.y" : "bound.z") +
-                    " limits are not supported (set min > max to disable them)");
-    }
-  }
-  if (typeValue != 0 && typeValue != 1) {
-    const std::string ext = std::filesystem::path(path).extension().string();
-    if (typeLine == 0 && (ext == ".prw" || ext == ".prr")) {
-      typeValue = ext == ".prw" ? 1 : 0;
+    if (rd.inPoints) {
+      rd.pointLine(text, ln);
     } else {
-      diags.add(SourceLoc{path, typeLine},
-                "header type must be 0 (rail profile) or 1 (wheel profile)");
+      rd.blockLine(text, ln);
     }
   }
-  diags.throwIfAny();
-  pts.kind = typeValue == 1 ? ProfileKind::Wheel : ProfileKind::Rail;
-  pts.endLine = pointEnd;
-  pts.kindLine = typeLine;
-  pts.unitsHint = "set units.len.f (1000 for millimetres)";
-  const double sy = mirrorY != 0.0 ? -1.0 : 1.0;
-  const double szFile = mirrorZ != 0.0 ? -1.0 : 1.0;
-  // Rail z is downward in SIMPACK files; the profile convention is z up.
-  const double sz = pts.kind == ProfileKind::Rail ? -szFile : szFile;
-  for (std::size_t i = 0; i < ry.size(); ++i) {
-    pts.y.push_back(sy * ry[i] / unitFactor);
-    pts.z.push_back(sz * rz[i] / unitFactor);
-    pts.w.push_back(rw[i]);
-    pts.line.push_back(rl[i]);
-  }
-  return pts;
+  rd.finish(lines.count());
+  return rd.points();
 }
 
 ProfilePoints readTextPoints(const std::string& path, ProfileKind kind, LengthUnit units) {
@@ -365,20 +408,13 @@ ProfilePoints parseTextPoints(std::string_view fileText, const std::string& path
   return pts;
 }
 
-Profile profileFromPoints(const ProfilePoints& p, const ProfileReadOptions& opt, std::string name) {
+namespace {
+
+// Plausibility of the length unit (coordinates in metres, |v| <= 1 m, extent >= 1 mm) and of the
+// wheel radii r0 + z.
+void checkCoordinates(const ProfilePoints& p, const ProfileReadOptions& opt) {
   const std::size_t n = p.y.size();
-  RB_CHECK(p.z.size() == n && p.line.size() == n && (p.w.empty() || p.w.size() == n),
-           "ProfilePoints arrays differ in size");
-  RB_CHECK(opt.ds > 0.0 && opt.maxSlope > 0.0 && opt.smoothingLength >= 0.0,
-           "ProfileReadOptions: ds > 0, maxSlope > 0, smoothingLength >= 0");
-  const bool wheel = p.kind == ProfileKind::Wheel;
   auto at = [&](std::size_t i) { return SourceLoc{p.file, p.line[i]}; };
-  if (n < kMinPoints) {
-    throw InputError(SourceLoc{p.file, p.endLine}, "only " + std::to_string(n) +
-                                                       " profile points; at least " +
-                                                       std::to_string(kMinPoints) + " are needed");
-  }
-  // Plausibility of the length unit.
   double extent = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     for (const double v : {p.y[i], p.z[i]}) {
@@ -395,7 +431,7 @@ Profile profileFromPoints(const ProfilePoints& p, const ProfileReadOptions& opt,
     throw InputError(at(0), "all coordinates are below 1 mm: the data seem to be in metres (" +
                                 p.unitsHint + ")");
   }
-  if (wheel) {
+  if (p.kind == ProfileKind::Wheel) {
     for (std::size_t i = 0; i < n; ++i) {
       const double r = opt.r0 + p.z[i];
       if (r < kMinWheelRadius || r > kMaxWheelRadius) {
@@ -406,7 +442,13 @@ Profile profileFromPoints(const ProfilePoints& p, const ProfileReadOptions& opt,
       }
     }
   }
-  // y strictly monotone; decreasing files are reversed.
+}
+
+// Indices of the points in ascending y: y must be strictly monotone; decreasing files are
+// reversed.
+std::vector<std::size_t> ascendingOrder(const ProfilePoints& p) {
+  const std::size_t n = p.y.size();
+  auto at = [&](std::size_t i) { return SourceLoc{p.file, p.line[i]}; };
   const double dir = p.y[1] > p.y[0] ? 1.0 : -1.0;
   for (std::size_t i = 1; i < n; ++i) {
     if (!(dir * (p.y[i] - p.y[i - 1]) > 0.0)) {
@@ -416,6 +458,25 @@ Profile profileFromPoints(const ProfilePoints& p, const ProfileReadOptions& opt,
   }
   std::vector<std::size_t> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = dir > 0 ? i : n - 1 - i;
+  return order;
+}
+
+}  // namespace
+
+Profile profileFromPoints(const ProfilePoints& p, const ProfileReadOptions& opt, std::string name) {
+  const std::size_t n = p.y.size();
+  RB_CHECK(p.z.size() == n && p.line.size() == n && (p.w.empty() || p.w.size() == n),
+           "ProfilePoints arrays differ in size");
+  RB_CHECK(opt.ds > 0.0 && opt.maxSlope > 0.0 && opt.smoothingLength >= 0.0,
+           "ProfileReadOptions: ds > 0, maxSlope > 0, smoothingLength >= 0");
+  const bool wheel = p.kind == ProfileKind::Wheel;
+  if (n < kMinPoints) {
+    throw InputError(SourceLoc{p.file, p.endLine}, "only " + std::to_string(n) +
+                                                       " profile points; at least " +
+                                                       std::to_string(kMinPoints) + " are needed");
+  }
+  checkCoordinates(p, opt);
+  const std::vector<std::size_t> order = ascendingOrder(p);
   // Longest run of consecutive points with |dz/dy| <= maxSlope.
   std::size_t bestBegin = 0, bestLen = 1, runBegin = 0;
   for (std::size_t k = 1; k < n; ++k) {

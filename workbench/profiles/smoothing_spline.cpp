@@ -38,6 +38,47 @@ void solvePentadiagonalSpd(std::vector<double> d, std::vector<double> e, std::ve
   }
 }
 
+// Smoothing-spline values f = y - lambda W^-1 Q gamma (Reinsch): gamma, the second derivatives at
+// the interior knots, solves (R + lambda Q^T W^-1 Q) gamma = Q^T y; `fitted` holds y on entry.
+void subtractPenaltyCorrection(const std::vector<double>& x, const std::vector<double>& y,
+                               const std::vector<double>& w, double lambda,
+                               std::vector<double>& fitted) {
+  const std::size_t n = x.size();
+  const std::size_t m = n - 2;  // unknowns: second derivatives at the interior knots
+  std::vector<double> h(n - 1);
+  for (std::size_t i = 0; i + 1 < n; ++i) h[i] = x[i + 1] - x[i];
+  // Column c of Q (interior knot j = c + 1) has entries at rows j-1, j, j+1.
+  auto q = [&](std::size_t c, int k) {  // k = -1, 0, +1
+    const std::size_t j = c + 1;
+    if (k == -1) return 1.0 / h[j - 1];
+    if (k == 0) return -1.0 / h[j - 1] - 1.0 / h[j];
+    return 1.0 / h[j];
+  };
+  std::vector<double> d(m), e(m > 1 ? m - 1 : 0), f(m > 2 ? m - 2 : 0), rhs(m);
+  for (std::size_t c = 0; c < m; ++c) {
+    const std::size_t j = c + 1;
+    // R: (h_{j-1} + h_j)/3 on the diagonal, h_j/6 off the diagonal.
+    d[c] = (h[j - 1] + h[j]) / 3.0 +
+           lambda * (q(c, -1) * q(c, -1) / w[j - 1] + q(c, 0) * q(c, 0) / w[j] +
+                     q(c, 1) * q(c, 1) / w[j + 1]);
+    if (c + 1 < m) {
+      // Columns c and c+1 share rows j and j+1.
+      e[c] =
+          h[j] / 6.0 + lambda * (q(c, 0) * q(c + 1, -1) / w[j] + q(c, 1) * q(c + 1, 0) / w[j + 1]);
+    }
+    if (c + 2 < m) f[c] = lambda * q(c, 1) * q(c + 2, -1) / w[j + 1];
+    rhs[c] = q(c, -1) * y[j - 1] + q(c, 0) * y[j] + q(c, 1) * y[j + 1];
+  }
+  solvePentadiagonalSpd(std::move(d), std::move(e), std::move(f), rhs);
+  // f = y - lambda W^-1 Q gamma.
+  for (std::size_t c = 0; c < m; ++c) {
+    const std::size_t j = c + 1;
+    fitted[j - 1] -= lambda * q(c, -1) * rhs[c] / w[j - 1];
+    fitted[j] -= lambda * q(c, 0) * rhs[c] / w[j];
+    fitted[j + 1] -= lambda * q(c, 1) * rhs[c] / w[j + 1];
+  }
+}
+
 }  // namespace
 
 double SmoothingSpline::lambdaForLength(const std::vector<double>& x, const std::vector<double>& w,
@@ -65,41 +106,7 @@ SmoothingSpline::SmoothingSpline(std::vector<double> x, const std::vector<double
     if (i > 0) RB_CHECK(x[i] > x[i - 1], "smoothing spline: x must be strictly increasing");
   }
   fitted_ = y;
-  if (lambda > 0.0) {
-    const std::size_t m = n - 2;  // unknowns: second derivatives at the interior knots
-    std::vector<double> h(n - 1);
-    for (std::size_t i = 0; i + 1 < n; ++i) h[i] = x[i + 1] - x[i];
-    // Column c of Q (interior knot j = c + 1) has entries at rows j-1, j, j+1.
-    auto q = [&](std::size_t c, int k) {  // k = -1, 0, +1
-      const std::size_t j = c + 1;
-      if (k == -1) return 1.0 / h[j - 1];
-      if (k == 0) return -1.0 / h[j - 1] - 1.0 / h[j];
-      return 1.0 / h[j];
-    };
-    std::vector<double> d(m), e(m > 1 ? m - 1 : 0), f(m > 2 ? m - 2 : 0), rhs(m);
-    for (std::size_t c = 0; c < m; ++c) {
-      const std::size_t j = c + 1;
-      // R: (h_{j-1} + h_j)/3 on the diagonal, h_j/6 off the diagonal.
-      d[c] = (h[j - 1] + h[j]) / 3.0 +
-             lambda * (q(c, -1) * q(c, -1) / w[j - 1] + q(c, 0) * q(c, 0) / w[j] +
-                       q(c, 1) * q(c, 1) / w[j + 1]);
-      if (c + 1 < m) {
-        // Columns c and c+1 share rows j and j+1.
-        e[c] = h[j] / 6.0 +
-               lambda * (q(c, 0) * q(c + 1, -1) / w[j] + q(c, 1) * q(c + 1, 0) / w[j + 1]);
-      }
-      if (c + 2 < m) f[c] = lambda * q(c, 1) * q(c + 2, -1) / w[j + 1];
-      rhs[c] = q(c, -1) * y[j - 1] + q(c, 0) * y[j] + q(c, 1) * y[j + 1];
-    }
-    solvePentadiagonalSpd(std::move(d), std::move(e), std::move(f), rhs);
-    // f = y - lambda W^-1 Q gamma.
-    for (std::size_t c = 0; c < m; ++c) {
-      const std::size_t j = c + 1;
-      fitted_[j - 1] -= lambda * q(c, -1) * rhs[c] / w[j - 1];
-      fitted_[j] -= lambda * q(c, 0) * rhs[c] / w[j];
-      fitted_[j + 1] -= lambda * q(c, 1) * rhs[c] / w[j + 1];
-    }
-  }
+  if (lambda > 0.0) subtractPenaltyCorrection(x, y, w, lambda, fitted_);
   spline_ = CubicSpline(std::move(x), fitted_, curve);
 }
 

@@ -244,28 +244,84 @@ HeaderField parseHeaderField(std::string_view f) {
 // Column roles: -1 is s, 0..3 a Channel.
 constexpr int kColumnS = -1;
 
-}  // namespace
+// The measured-irregularity CSV read line by line: the header line (column names and units), then
+// the data rows. Errors are collected (at most kMaxCsvErrors shown); any error rejects the file.
+class MeasuredCsvReader {
+ public:
+  MeasuredCsvReader(const std::string& file_name, const CsvReadOptions& options, Diagnostics& diags)
+      : file_name_(file_name),
+        options_(options),
+        diags_(diags),
+        factor_(unitFactor(options.unit)) {}
 
-std::optional<MeasuredTable> parseMeasuredCsv(std::string_view text, const std::string& file_name,
-                                              const CsvReadOptions& options, Diagnostics& diags) {
-  const std::string prefix = "irregularity csv: ";
-  const std::vector<std::string> known = {"s", "alignment", "vertical", "gauge", "cross_level"};
-  const std::string knownList = "s, alignment, vertical, gauge, cross_level";
-  MeasuredTable out;
-  IrregularityTable& t = out.table;
-  std::size_t errors = 0;
-  auto report = [&](int line, const std::string& msg) {
-    ++errors;
-    if (errors <= kMaxCsvErrors) {
-      diags.add({file_name, line}, prefix + msg);
-    } else if (errors == kMaxCsvErrors + 1) {
-      diags.add({file_name, line}, prefix + "further errors not shown");
+  bool haveHeader() const { return have_header_; }
+  std::size_t errors() const { return errors_; }
+
+  // The header line; false when the file cannot be read further.
+  bool header(const std::vector<std::string_view>& fields, int lineNo) {
+    have_header_ = true;
+    double x = 0.0;
+    if (!fields.empty() && parseDouble(fields.front(), x)) {
+      report(lineNo,
+             "the first line must be a header naming the columns, e.g. 's, alignment, vertical, "
+             "gauge, cross_level' (any order; a channel that is not named is zero)");
+      return false;
     }
-  };
-  const double factor = unitFactor(options.unit);
-  std::vector<int> role;             // per column
-  std::vector<std::string> colName;  // per column, for messages
-  bool haveHeader = false;
+    const std::vector<std::string> names = headerNames(fields);
+    const std::size_t before = errors_;
+    std::array<bool, kChannels + 1> seen{};
+    for (std::size_t i = 0; i < names.size(); ++i) headerColumn(i, names[i], lineNo, seen);
+    if (errors_ == before) checkNamedColumns(seen, lineNo);
+    return errors_ == before;
+  }
+
+  // One data row: s and the channels (in metres), checked and appended to the table.
+  void row(const std::vector<std::string_view>& fields, int lineNo) {
+    double s = 0.0;
+    std::array<double, kChannels> v{};
+    if (!parseRow(fields, lineNo, s, v)) return;
+    IrregularityTable& t = out_.table;
+    if (!(std::abs(s) <= kMaxTrackLength)) {
+      report(lineNo,
+             "s = " + num(s) + " m is beyond the longest track (" + num(kMaxTrackLength) + " m)");
+      return;
+    }
+    if (!t.s.empty() && !(s > t.s.back())) {
+      report(lineNo, "s = " + num(s) +
+                         " m must be greater than the previous s = " + num(t.s.back()) + " m");
+      return;
+    }
+    noteImplausible(v, lineNo);
+    if (static_cast<double>(t.s.size()) >= options_.max_rows) {
+      if (!too_many_) {
+        report(lineNo, "more than " + num(options_.max_rows) +
+                           " data rows (track.max_points); raise track.max_points to read it");
+      }
+      too_many_ = true;
+      return;
+    }
+    if (t.s.empty()) out_.first_line = lineNo;
+    out_.last_line = lineNo;
+    t.s.push_back(s);
+    for (std::size_t c = 0; c < kChannels; ++c) t.channel[c].push_back(v[c]);
+  }
+
+  // End of the file: the implausible magnitudes, an empty file or too few rows.
+  std::optional<MeasuredTable> finish(int lineNo) {
+    reportImplausible();
+    if (!have_header_) {
+      report(0,
+             "the file is empty: it needs a header naming the columns (s, alignment, vertical, "
+             "gauge, cross_level) and at least 2 rows");
+    } else if (errors_ == 0 && out_.table.s.size() < 2) {
+      report(lineNo,
+             "at least 2 data rows are required, got " + std::to_string(out_.table.s.size()));
+    }
+    if (errors_ > 0) return std::nullopt;
+    return std::move(out_);
+  }
+
+ private:
   // Implausible magnitudes: reported once per channel (first line, largest value, count), so a
   // file in the wrong unit gives one clear message per column rather than one per row.
   struct Implausible {
@@ -273,8 +329,168 @@ std::optional<MeasuredTable> parseMeasuredCsv(std::string_view text, const std::
     double first = 0.0;
     std::size_t count = 0;
   };
-  std::array<Implausible, kChannels> implausible{};
-  bool tooMany = false;
+
+  void report(int line, const std::string& msg) {
+    ++errors_;
+    if (errors_ <= kMaxCsvErrors) {
+      diags_.add({file_name_, line}, kPrefix + msg);
+    } else if (errors_ == kMaxCsvErrors + 1) {
+      diags_.add({file_name_, line}, kPrefix + "further errors not shown");
+    }
+  }
+
+  // With white space between fields, "alignment [mm]" splits in two: rejoin the unit.
+  static std::vector<std::string> headerNames(const std::vector<std::string_view>& fields) {
+    std::vector<std::string> names;
+    for (const auto f : fields) {
+      if (!f.empty() && f.front() == '[' && !names.empty()) {
+        names.back() += std::string(f);
+      } else {
+        names.emplace_back(f);
+      }
+    }
+    return names;
+  }
+
+  // Header field i: a known, not repeated column name with a unit that agrees with the declared
+  // one; its role is appended.
+  void headerColumn(std::size_t i, const std::string& field, int lineNo,
+                    std::array<bool, kChannels + 1>& seen) {
+    const HeaderField h = parseHeaderField(field);
+    const std::string col = "column " + std::to_string(i + 1);
+    if (!h.bracket_ok) {
+      report(lineNo, col + " '" + field + "': write a unit as name [unit], e.g. 'alignment [mm]'");
+      return;
+    }
+    if (h.name.empty()) {
+      report(lineNo, col + " has no name (columns: " + kKnownList + ")");
+      return;
+    }
+    const auto it = std::find(kKnown.begin(), kKnown.end(), h.name);
+    if (it == kKnown.end()) {
+      const std::string hint = closestMatch(h.name, kKnown);
+      report(lineNo, "unknown column '" + h.name + "'" +
+                         (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
+                         "; columns: " + kKnownList);
+      return;
+    }
+    const int r = static_cast<int>(it - kKnown.begin()) - 1;
+    if (seen[static_cast<std::size_t>(r + 1)]) {
+      report(lineNo, "column '" + h.name + "' is named twice");
+      return;
+    }
+    seen[static_cast<std::size_t>(r + 1)] = true;
+    if (!h.unit.empty()) checkUnit(h, r, lineNo);
+    role_.push_back(r);
+    col_name_.push_back(h.name);
+  }
+
+  // A unit in the header: s is in metres; a channel in m or mm, the declared unit.
+  void checkUnit(const HeaderField& h, int r, int lineNo) {
+    if (r == kColumnS && h.unit != "m") {
+      report(lineNo, "column 's' is the arc length in metres, got unit '" + h.unit + "'");
+    } else if (r != kColumnS && h.unit != "m" && h.unit != "mm") {
+      report(lineNo, "column '" + h.name + "': unit '" + h.unit + "' is not m or mm");
+    } else if (r != kColumnS && h.unit != unitName(options_.unit)) {
+      report(lineNo, "column '" + h.name + "' is in " + h.unit +
+                         " by its header, but the declared unit is " + unitName(options_.unit) +
+                         " (measured { unit = \"" + h.unit + "\" } to read the file in " + h.unit +
+                         ")");
+    }
+  }
+
+  // The header names s and at least one channel.
+  void checkNamedColumns(const std::array<bool, kChannels + 1>& seen, int lineNo) {
+    if (!seen[0]) report(lineNo, "the header names no column 's' (arc length [m])");
+    bool any = false;
+    for (int c = 0; c < kChannels; ++c) {
+      out_.present[static_cast<std::size_t>(c)] = seen[static_cast<std::size_t>(c + 1)];
+      any = any || out_.present[static_cast<std::size_t>(c)];
+    }
+    if (!any) {
+      report(lineNo,
+             "the header names no irregularity column (alignment, vertical, gauge, "
+             "cross_level)");
+    }
+  }
+
+  // The numbers of a data row: s [m] and the channels scaled to metres.
+  bool parseRow(const std::vector<std::string_view>& fields, int lineNo, double& s,
+                std::array<double, kChannels>& v) {
+    if (fields.size() != role_.size()) {
+      std::string names;
+      for (const auto& n : col_name_) names += (names.empty() ? "" : ", ") + n;
+      report(lineNo, "expected " + std::to_string(role_.size()) + " columns (" + names + "), got " +
+                         std::to_string(fields.size()));
+      return false;
+    }
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      double x = 0.0;
+      if (!parseDouble(fields[i], x)) {
+        report(lineNo, "column " + std::to_string(i + 1) + " (" + col_name_[i] +
+                           ") is not a finite number: '" + std::string(fields[i]) + "'");
+        return false;
+      }
+      if (role_[i] == kColumnS) {
+        s = x;
+      } else {
+        v[static_cast<std::size_t>(role_[i])] = x * factor_;
+      }
+    }
+    return true;
+  }
+
+  void noteImplausible(const std::array<double, kChannels>& v, int lineNo) {
+    for (std::size_t c = 0; c < kChannels; ++c) {
+      if (std::abs(v[c]) > kMaxIrregularity) {
+        Implausible& im = implausible_[c];
+        if (im.count++ == 0) {
+          im.line = lineNo;
+          im.first = v[c];
+        }
+      }
+    }
+  }
+
+  void reportImplausible() {
+    for (std::size_t c = 0; c < kChannels; ++c) {
+      const Implausible& im = implausible_[c];
+      if (im.count == 0) continue;
+      const std::string name = channelName(static_cast<Channel>(c));
+      std::string msg = name + " = " + num(im.first / factor_) + " " + unitName(options_.unit);
+      if (options_.unit == CsvUnit::Millimetre) msg += " (" + num(im.first) + " m)";
+      msg += " is larger than a track irregularity can be (" + num(kMaxIrregularity) + " m)";
+      if (im.count > 1) msg += " here and on " + std::to_string(im.count - 1) + " more rows";
+      if (options_.unit == CsvUnit::Metre) {
+        msg += "; is the file in millimetres? Declare it: measured { unit = \"mm\" }";
+      }
+      report(im.line, msg);
+    }
+  }
+
+  inline static const std::string kPrefix = "irregularity csv: ";
+  inline static const std::vector<std::string> kKnown = {"s", "alignment", "vertical", "gauge",
+                                                         "cross_level"};
+  inline static const std::string kKnownList = "s, alignment, vertical, gauge, cross_level";
+
+  const std::string& file_name_;
+  const CsvReadOptions& options_;
+  Diagnostics& diags_;
+  double factor_;
+  MeasuredTable out_;
+  std::size_t errors_ = 0;
+  std::vector<int> role_;              // per column
+  std::vector<std::string> col_name_;  // per column, for messages
+  bool have_header_ = false;
+  std::array<Implausible, kChannels> implausible_{};
+  bool too_many_ = false;
+};
+
+}  // namespace
+
+std::optional<MeasuredTable> parseMeasuredCsv(std::string_view text, const std::string& file_name,
+                                              const CsvReadOptions& options, Diagnostics& diags) {
+  MeasuredCsvReader reader(file_name, options, diags);
   std::size_t pos = 0;
   int lineNo = 0;
   while (pos < text.size()) {
@@ -288,162 +504,13 @@ std::optional<MeasuredTable> parseMeasuredCsv(std::string_view text, const std::
     line = trim(line);
     if (line.empty()) continue;
     const auto fields = splitFields(line);
-    if (!haveHeader) {
-      haveHeader = true;
-      double x = 0.0;
-      if (!fields.empty() && parseDouble(fields.front(), x)) {
-        report(lineNo,
-               "the first line must be a header naming the columns, e.g. 's, alignment, vertical, "
-               "gauge, cross_level' (any order; a channel that is not named is zero)");
-        return std::nullopt;
-      }
-      // With white space between fields, "alignment [mm]" splits in two: rejoin the unit.
-      std::vector<std::string> names;
-      for (const auto f : fields) {
-        if (!f.empty() && f.front() == '[' && !names.empty()) {
-          names.back() += std::string(f);
-        } else {
-          names.emplace_back(f);
-        }
-      }
-      const std::size_t before = errors;
-      std::array<bool, kChannels + 1> seen{};
-      for (std::size_t i = 0; i < names.size(); ++i) {
-        const HeaderField h = parseHeaderField(names[i]);
-        const std::string col = "column " + std::to_string(i + 1);
-        if (!h.bracket_ok) {
-          report(lineNo,
-                 col + " '" + names[i] + "': write a unit as name [unit], e.g. 'alignment [mm]'");
-          continue;
-        }
-        if (h.name.empty()) {
-          report(lineNo, col + " has no name (columns: " + knownList + ")");
-          continue;
-        }
-        const auto it = std::find(known.begin(), known.end(), h.name);
-        if (it == known.end()) {
-          const std::string hint = closestMatch(h.name, known);
-          report(lineNo, "unknown column '" + h.name + "'" +
-                             (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
-                             "; columns: " + knownList);
-          continue;
-        }
-        const int r = static_cast<int>(it - known.begin()) - 1;
-        if (seen[static_cast<std::size_t>(r + 1)]) {
-          report(lineNo, "column '" + h.name + "' is named twice");
-          continue;
-        }
-        seen[static_cast<std::size_t>(r + 1)] = true;
-        if (!h.unit.empty()) {
-          if (r == kColumnS && h.unit != "m") {
-            report(lineNo, "column 's' is the arc length in metres, got unit '" + h.unit + "'");
-          } else if (r != kColumnS && h.unit != "m" && h.unit != "mm") {
-            report(lineNo, "column '" + h.name + "': unit '" + h.unit + "' is not m or mm");
-          } else if (r != kColumnS && h.unit != unitName(options.unit)) {
-            report(lineNo, "column '" + h.name + "' is in " + h.unit +
-                               " by its header, but the declared unit is " +
-                               unitName(options.unit) + " (measured { unit = \"" + h.unit +
-                               "\" } to read the file in " + h.unit + ")");
-          }
-        }
-        role.push_back(r);
-        colName.push_back(h.name);
-      }
-      if (errors == before) {
-        if (!seen[0]) report(lineNo, "the header names no column 's' (arc length [m])");
-        bool any = false;
-        for (int c = 0; c < kChannels; ++c) {
-          out.present[static_cast<std::size_t>(c)] = seen[static_cast<std::size_t>(c + 1)];
-          any = any || out.present[static_cast<std::size_t>(c)];
-        }
-        if (!any) {
-          report(lineNo,
-                 "the header names no irregularity column (alignment, vertical, gauge, "
-                 "cross_level)");
-        }
-      }
-      if (errors > before) return std::nullopt;
+    if (!reader.haveHeader()) {
+      if (!reader.header(fields, lineNo)) return std::nullopt;
       continue;
     }
-    if (fields.size() != role.size()) {
-      std::string names;
-      for (const auto& n : colName) names += (names.empty() ? "" : ", ") + n;
-      report(lineNo, "expected " + std::to_string(role.size()) + " columns (" + names + "), got " +
-                         std::to_string(fields.size()));
-      continue;
-    }
-    double s = 0.0;
-    std::array<double, kChannels> v{};
-    bool ok = true;
-    for (std::size_t i = 0; i < fields.size(); ++i) {
-      double x = 0.0;
-      if (!parseDouble(fields[i], x)) {
-        report(lineNo, "column " + std::to_string(i + 1) + " (" + colName[i] +
-                           ") is not a finite number: '" + std::string(fields[i]) + "'");
-        ok = false;
-        break;
-      }
-      if (role[i] == kColumnS) {
-        s = x;
-      } else {
-        v[static_cast<std::size_t>(role[i])] = x * factor;
-      }
-    }
-    if (!ok) continue;
-    if (!(std::abs(s) <= kMaxTrackLength)) {
-      report(lineNo,
-             "s = " + num(s) + " m is beyond the longest track (" + num(kMaxTrackLength) + " m)");
-      continue;
-    }
-    if (!t.s.empty() && !(s > t.s.back())) {
-      report(lineNo, "s = " + num(s) +
-                         " m must be greater than the previous s = " + num(t.s.back()) + " m");
-      continue;
-    }
-    for (std::size_t c = 0; c < kChannels; ++c) {
-      if (std::abs(v[c]) > kMaxIrregularity) {
-        Implausible& im = implausible[c];
-        if (im.count++ == 0) {
-          im.line = lineNo;
-          im.first = v[c];
-        }
-      }
-    }
-    if (static_cast<double>(t.s.size()) >= options.max_rows) {
-      if (!tooMany) {
-        report(lineNo, "more than " + num(options.max_rows) +
-                           " data rows (track.max_points); raise track.max_points to read it");
-      }
-      tooMany = true;
-      continue;
-    }
-    if (t.s.empty()) out.first_line = lineNo;
-    out.last_line = lineNo;
-    t.s.push_back(s);
-    for (std::size_t c = 0; c < kChannels; ++c) t.channel[c].push_back(v[c]);
+    reader.row(fields, lineNo);
   }
-  for (std::size_t c = 0; c < kChannels; ++c) {
-    const Implausible& im = implausible[c];
-    if (im.count == 0) continue;
-    const std::string name = channelName(static_cast<Channel>(c));
-    std::string msg = name + " = " + num(im.first / factor) + " " + unitName(options.unit);
-    if (options.unit == CsvUnit::Millimetre) msg += " (" + num(im.first) + " m)";
-    msg += " is larger than a track irregularity can be (" + num(kMaxIrregularity) + " m)";
-    if (im.count > 1) msg += " here and on " + std::to_string(im.count - 1) + " more rows";
-    if (options.unit == CsvUnit::Metre) {
-      msg += "; is the file in millimetres? Declare it: measured { unit = \"mm\" }";
-    }
-    report(im.line, msg);
-  }
-  if (!haveHeader) {
-    report(0,
-           "the file is empty: it needs a header naming the columns (s, alignment, vertical, "
-           "gauge, cross_level) and at least 2 rows");
-  } else if (errors == 0 && t.s.size() < 2) {
-    report(lineNo, "at least 2 data rows are required, got " + std::to_string(t.s.size()));
-  }
-  if (errors > 0) return std::nullopt;
-  return out;
+  return reader.finish(lineNo);
 }
 
 std::optional<MeasuredTable> readMeasuredCsv(const std::string& path, const SourceLoc& loc,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -129,17 +130,12 @@ void checkCoverage(const TrackSpec& spec, const MeasuredTable& m, double length,
                                   "it (beyond = \"zero\")"});
 }
 
-// Checks everything, including the work and memory the track will need, so that nothing that
-// passes here fails while building.
-Checked check(const TrackSpec& spec, Diagnostics& d) {
-  Checked out;
+// Track-level fields (segment list, steps, bounds, gauge, rail positions).
+void checkTrackFields(const TrackSpec& spec, bool maxOk, bool baseOk, Diagnostics& d) {
   const SourceLoc& tl = spec.loc;
-  // Track-level fields.
   if (spec.segments.empty()) d.add(tl, "track.segments: at least one segment is required");
   if (!(spec.step > 0.0)) d.add(tl, "track.step must be > 0 m, got " + num(spec.step));
-  const bool maxOk = spec.max_points >= 2.0 && std::isfinite(spec.max_points);
   if (!maxOk) d.add(tl, "track.max_points must be >= 2, got " + num(spec.max_points));
-  const bool baseOk = spec.cant_base > 0.0 && std::isfinite(spec.cant_base);
   if (!baseOk) d.add(tl, "track.cant_base must be > 0 m, got " + num(spec.cant_base));
   if (!(spec.gauge > 0.0)) d.add(tl, "track.gauge must be > 0 m, got " + num(spec.gauge));
   if (!(spec.rail_lr > 0.0)) d.add(tl, "track.rail_lr must be > 0 m, got " + num(spec.rail_lr));
@@ -147,20 +143,87 @@ Checked check(const TrackSpec& spec, Diagnostics& d) {
     d.add(tl, "track.rail_inclination must be in [0, " + num4(kMaxInclination) + "] rad, got " +
                   num(spec.rail_inclination));
   }
+}
 
-  // Segments.
+// The fields of one segment on their own: radius by kind, cant (bounded by the cant base when that
+// is valid), gradient. The length is checked by the caller.
+void checkSegmentFields(const SegmentSpec& sg, const TrackSpec& spec, bool baseOk,
+                        const std::function<void(const std::string&)>& err) {
+  switch (sg.kind) {
+    case SegmentKind::Curve:
+      if (!(sg.radius > 0.0 && std::isfinite(sg.radius))) {
+        err("radius must be > 0 m, got " + num(sg.radius));
+      } else if (sg.radius < kMinRadius) {
+        err("radius must be >= 10 m (tighter curves are not railway track), got " + num(sg.radius));
+      }
+      break;
+    case SegmentKind::Transition:
+      if (!(sg.radius == 0.0 || (sg.radius >= kMinRadius && std::isfinite(sg.radius)))) {
+        err("radius must be 0 (ends straight) or >= 10 m, got " + num(sg.radius));
+      }
+      break;
+    case SegmentKind::Tangent:
+      if (sg.radius != 0.0) err("radius must be 0 on a tangent, got " + num(sg.radius));
+      if (sg.cant != 0.0) {
+        err("cant must be 0 on a tangent (ramp cant in a transition), got " + num(sg.cant));
+      }
+      break;
+  }
+  if (baseOk) {
+    const double maxCant = kMaxCantPerBase * spec.cant_base;
+    if (!(std::abs(sg.cant) <= maxCant)) {
+      err("|cant| must be <= " + num4(maxCant) + " m (0.2 m per 1.5 m of cant_base), got " +
+          num(sg.cant));
+    }
+  }
+  if (!(std::abs(sg.gradient) <= kMaxGradient)) {
+    err("|gradient| must be <= 0.1, got " + num(sg.gradient));
+  }
+}
+
+// End state of the previous segment, for the continuity of curvature, cant and gradient.
+struct SegmentEnd {
+  double kappa = 0.0, u = 0.0, grad = 0.0;  // [1/m], [m] signed cant, [-]
+  bool ok = false;                          // the previous segment passed its own checks
+  SegmentKind kind = SegmentKind::Tangent;
+};
+
+// Continuity of a curve or tangent with the end of the previous segment (a transition ramps them,
+// so it may start anywhere).
+void checkContinuity(const SegmentSpec& sg, double kEnd, double uHere, const SegmentEnd& prev,
+                     const std::function<void(const std::string&)>& err) {
+  const double kStart = sg.kind == SegmentKind::Curve ? kEnd : 0.0;
+  if (prev.kind == SegmentKind::Transition && std::abs(kStart - prev.kappa) > kJumpTol) {
+    err("curvature jumps from " + num4(prev.kappa) + " 1/m to " + num4(kStart) +
+        " 1/m at the segment start (positive = left); the preceding transition must end " +
+        (sg.kind == SegmentKind::Tangent ? std::string("straight (radius 0)")
+                                         : std::string("at this radius and side")));
+  }
+  if (std::abs(uHere - prev.u) > kJumpTol) {
+    err("cant jumps from " + num4(prev.u) + " m to " + num4(uHere) +
+        " m at the segment start (signed, positive = banked left); change cant in a "
+        "transition");
+  }
+  if (std::abs(sg.gradient - prev.grad) > kJumpTol) {
+    err("gradient jumps from " + num4(prev.grad) + " to " + num4(sg.gradient) +
+        " at the segment start; change gradient in a transition");
+  }
+}
+
+// Every segment (its fields, its continuity with the previous one), and the track step against
+// the shortest segment.
+void checkSegments(const TrackSpec& spec, bool baseOk, Diagnostics& d) {
   double shortest = std::numeric_limits<double>::infinity();
   std::size_t shortestIdx = 0;
-  double kappa = 0.0, u = 0.0, grad = 0.0;  // end values of the previous segment
-  bool prevOk = false;
-  SegmentKind prevKind = SegmentKind::Tangent;
+  SegmentEnd prev;
   for (std::size_t i = 0; i < spec.segments.size(); ++i) {
     const SegmentSpec& sg = spec.segments[i];
     const std::string where =
         "track.segments[" + std::to_string(i + 1) + "] (" + kindName(sg.kind) + "): ";
     const std::size_t before = d.size();
-    auto err = [&](const std::string& msg) { d.add(sg.loc, where + msg); };
-
+    const std::function<void(const std::string&)> err = [&](const std::string& msg) {
+      d.add(sg.loc, where + msg);
+    };
     if (!(sg.length > 0.0 && std::isfinite(sg.length))) {
       err("length must be > 0 m, got " + num(sg.length));
     } else if (sg.length > kMaxTrackLength) {
@@ -170,73 +233,31 @@ Checked check(const TrackSpec& spec, Diagnostics& d) {
       shortest = sg.length;
       shortestIdx = i;
     }
-    switch (sg.kind) {
-      case SegmentKind::Curve:
-        if (!(sg.radius > 0.0 && std::isfinite(sg.radius))) {
-          err("radius must be > 0 m, got " + num(sg.radius));
-        } else if (sg.radius < kMinRadius) {
-          err("radius must be >= 10 m (tighter curves are not railway track), got " +
-              num(sg.radius));
-        }
-        break;
-      case SegmentKind::Transition:
-        if (!(sg.radius == 0.0 || (sg.radius >= kMinRadius && std::isfinite(sg.radius)))) {
-          err("radius must be 0 (ends straight) or >= 10 m, got " + num(sg.radius));
-        }
-        break;
-      case SegmentKind::Tangent:
-        if (sg.radius != 0.0) err("radius must be 0 on a tangent, got " + num(sg.radius));
-        if (sg.cant != 0.0) {
-          err("cant must be 0 on a tangent (ramp cant in a transition), got " + num(sg.cant));
-        }
-        break;
-    }
-    if (baseOk) {
-      const double maxCant = kMaxCantPerBase * spec.cant_base;
-      if (!(std::abs(sg.cant) <= maxCant)) {
-        err("|cant| must be <= " + num4(maxCant) + " m (0.2 m per 1.5 m of cant_base), got " +
-            num(sg.cant));
-      }
-    }
-    if (!(std::abs(sg.gradient) <= kMaxGradient)) {
-      err("|gradient| must be <= 0.1, got " + num(sg.gradient));
-    }
+    checkSegmentFields(sg, spec, baseOk, err);
     const bool ok = d.size() == before;
-
     // Continuity with the previous segment (only when both are otherwise valid).
     const double sgn = sideSign(sg.side);
     const double kEnd = sg.radius > 0.0 ? sgn / sg.radius : 0.0;
     const double uHere = sg.kind == SegmentKind::Tangent ? 0.0 : sgn * sg.cant;
-    if (ok && prevOk && sg.kind != SegmentKind::Transition) {
-      const double kStart = sg.kind == SegmentKind::Curve ? kEnd : 0.0;
-      if (prevKind == SegmentKind::Transition && std::abs(kStart - kappa) > kJumpTol) {
-        err("curvature jumps from " + num4(kappa) + " 1/m to " + num4(kStart) +
-            " 1/m at the segment start (positive = left); the preceding transition must end " +
-            (sg.kind == SegmentKind::Tangent ? std::string("straight (radius 0)")
-                                             : std::string("at this radius and side")));
-      }
-      if (std::abs(uHere - u) > kJumpTol) {
-        err("cant jumps from " + num4(u) + " m to " + num4(uHere) +
-            " m at the segment start (signed, positive = banked left); change cant in a "
-            "transition");
-      }
-      if (std::abs(sg.gradient - grad) > kJumpTol) {
-        err("gradient jumps from " + num4(grad) + " to " + num4(sg.gradient) +
-            " at the segment start; change gradient in a transition");
-      }
-    }
-    kappa = sg.kind == SegmentKind::Tangent ? 0.0 : kEnd;
-    u = uHere;
-    grad = sg.gradient;
-    prevOk = ok;
-    prevKind = sg.kind;
+    if (ok && prev.ok && sg.kind != SegmentKind::Transition)
+      checkContinuity(sg, kEnd, uHere, prev, err);
+    prev.kappa = sg.kind == SegmentKind::Tangent ? 0.0 : kEnd;
+    prev.u = uHere;
+    prev.grad = sg.gradient;
+    prev.ok = ok;
+    prev.kind = sg.kind;
   }
   if (spec.step > 0.0 && std::isfinite(shortest) && spec.step > shortest) {
-    d.add(tl, "track.step must be <= the shortest segment length (" + num(shortest) +
-                  " m, track.segments[" + std::to_string(shortestIdx + 1) + "]), got " +
-                  num(spec.step));
+    d.add(spec.loc, "track.step must be <= the shortest segment length (" + num(shortest) +
+                        " m, track.segments[" + std::to_string(shortestIdx + 1) + "]), got " +
+                        num(spec.step));
   }
-  // Total length, when every segment length is usable (0 otherwise: no length-based checks).
+}
+
+// Total length when every segment length is usable (0 otherwise: no length-based checks), and the
+// spline knots it needs against track.max_points.
+double checkedLength(const TrackSpec& spec, bool maxOk, Diagnostics& d) {
+  const SourceLoc& tl = spec.loc;
   double length = 0.0;
   for (const SegmentSpec& sg : spec.segments) {
     length = sg.length > 0.0 && sg.length <= kMaxTrackLength && length >= 0.0 ? length + sg.length
@@ -257,74 +278,99 @@ Checked check(const TrackSpec& spec, Diagnostics& d) {
                     " (about 0.4 kB each); use a coarser step, or raise track.max_points");
     }
   }
+  return length;
+}
+
+// One channel of a user PSD table: both columns of equal length >= 2, omega positive and strictly
+// increasing, values >= 0 (an empty channel is disabled).
+void checkUserPsdChannel(const PsdTable& t, int c,
+                         const std::function<void(const std::string&)>& ierr) {
+  const std::string tn = std::string("user.") + channelName(static_cast<Channel>(c)) + ": ";
+  if (t.omega.empty() && t.value.empty()) return;  // channel disabled
+  if (t.omega.size() != t.value.size()) {
+    ierr(tn + "omega has " + std::to_string(t.omega.size()) + " points but value has " +
+         std::to_string(t.value.size()));
+    return;
+  }
+  if (t.omega.size() < 2) {
+    ierr(tn + "at least 2 points are required, got " + std::to_string(t.omega.size()));
+    return;
+  }
+  for (std::size_t k = 0; k < t.omega.size(); ++k) {
+    if (k == 0 && !(t.omega[0] > 0.0 && std::isfinite(t.omega[0]))) {
+      ierr(tn + "omega[1] must be > 0 rad/m, got " + num(t.omega[0]));
+      break;
+    }
+    if (k > 0 && !(t.omega[k] > t.omega[k - 1] && std::isfinite(t.omega[k]))) {
+      ierr(tn + "omega must be strictly increasing, omega[" + std::to_string(k + 1) +
+           "] = " + num(t.omega[k]) + " after " + num(t.omega[k - 1]));
+      break;
+    }
+  }
+  for (std::size_t k = 0; k < t.value.size(); ++k) {
+    if (!(t.value[k] >= 0.0 && std::isfinite(t.value[k]))) {
+      ierr(tn + "value[" + std::to_string(k + 1) + "] must be >= 0 m^2/(rad/m), got " +
+           num(t.value[k]));
+      break;
+    }
+  }
+}
+
+// A PSD source: spectrum, synthesis band and step, components, scale, user tables; then the work
+// of the synthesis when all of these are valid.
+void checkPsdSource(const TrackSpec& spec, double length, bool maxOk, Diagnostics& d) {
+  const IrregularitySpec& ir = spec.irregularities;
+  const std::function<void(const std::string&)> ierr = [&](const std::string& msg) {
+    d.add(ir.loc, "track.irregularities: " + msg);
+  };
+  const std::size_t psdBefore = d.size();
+  const auto spectrum = parseSpectrum(ir.spectrum);
+  if (!spectrum) {
+    ierr("unknown spectrum '" + ir.spectrum + "' (valid: " + spectrumNames() + ")");
+  }
+  const bool stepOk = ir.step > 0.0 && std::isfinite(ir.step);
+  if (!stepOk) ierr("step must be > 0 m, got " + num(ir.step));
+  const bool wminOk = ir.wavelength_min > 0.0 && std::isfinite(ir.wavelength_min);
+  if (!wminOk) {
+    ierr("wavelength_min must be > 0 m, got " + num(ir.wavelength_min));
+  } else if (!(ir.wavelength_max > ir.wavelength_min && std::isfinite(ir.wavelength_max))) {
+    ierr("wavelength_min (" + num(ir.wavelength_min) + " m) must be < wavelength_max (" +
+         num(ir.wavelength_max) + " m)");
+  }
+  if (wminOk && stepOk && ir.wavelength_min < 2.0 * ir.step) {
+    ierr("wavelength_min (" + num(ir.wavelength_min) + " m) must be >= 2 * step (" +
+         num(2.0 * ir.step) + " m) to be resolved (Nyquist)");
+  }
+  if (ir.components < 1 || ir.components > kMaxComponents) {
+    ierr("components must be in [1, " + std::to_string(kMaxComponents) + "], got " +
+         std::to_string(ir.components));
+  }
+  if (!(ir.scale >= 0.0 && std::isfinite(ir.scale))) {
+    ierr("scale must be >= 0, got " + num(ir.scale));
+  }
+  if (spectrum == Spectrum::User) {
+    for (int c = 0; c < kChannels; ++c) checkUserPsdChannel(ir.user[c], c, ierr);
+  }
+  if (d.size() == psdBefore && length > 0.0 && maxOk) checkSynthesis(spec, length, d);
+}
+
+// Checks everything, including the work and memory the track will need, so that nothing that
+// passes here fails while building.
+Checked check(const TrackSpec& spec, Diagnostics& d) {
+  Checked out;
+  const bool maxOk = spec.max_points >= 2.0 && std::isfinite(spec.max_points);
+  const bool baseOk = spec.cant_base > 0.0 && std::isfinite(spec.cant_base);
+  checkTrackFields(spec, maxOk, baseOk, d);
+  checkSegments(spec, baseOk, d);
+  const double length = checkedLength(spec, maxOk, d);
 
   // Irregularities.
   const IrregularitySpec& ir = spec.irregularities;
-  auto ierr = [&](const std::string& msg) { d.add(ir.loc, "track.irregularities: " + msg); };
   if (ir.source == IrregularitySource::Psd) {
-    const std::size_t psdBefore = d.size();
-    const auto spectrum = parseSpectrum(ir.spectrum);
-    if (!spectrum) {
-      ierr("unknown spectrum '" + ir.spectrum + "' (valid: " + spectrumNames() + ")");
-    }
-    const bool stepOk = ir.step > 0.0 && std::isfinite(ir.step);
-    if (!stepOk) ierr("step must be > 0 m, got " + num(ir.step));
-    const bool wminOk = ir.wavelength_min > 0.0 && std::isfinite(ir.wavelength_min);
-    if (!wminOk) {
-      ierr("wavelength_min must be > 0 m, got " + num(ir.wavelength_min));
-    } else if (!(ir.wavelength_max > ir.wavelength_min && std::isfinite(ir.wavelength_max))) {
-      ierr("wavelength_min (" + num(ir.wavelength_min) + " m) must be < wavelength_max (" +
-           num(ir.wavelength_max) + " m)");
-    }
-    if (wminOk && stepOk && ir.wavelength_min < 2.0 * ir.step) {
-      ierr("wavelength_min (" + num(ir.wavelength_min) + " m) must be >= 2 * step (" +
-           num(2.0 * ir.step) + " m) to be resolved (Nyquist)");
-    }
-    if (ir.components < 1 || ir.components > kMaxComponents) {
-      ierr("components must be in [1, " + std::to_string(kMaxComponents) + "], got " +
-           std::to_string(ir.components));
-    }
-    if (!(ir.scale >= 0.0 && std::isfinite(ir.scale))) {
-      ierr("scale must be >= 0, got " + num(ir.scale));
-    }
-    if (spectrum == Spectrum::User) {
-      for (int c = 0; c < kChannels; ++c) {
-        const PsdTable& t = ir.user[c];
-        const std::string tn = std::string("user.") + channelName(static_cast<Channel>(c)) + ": ";
-        if (t.omega.empty() && t.value.empty()) continue;  // channel disabled
-        if (t.omega.size() != t.value.size()) {
-          ierr(tn + "omega has " + std::to_string(t.omega.size()) + " points but value has " +
-               std::to_string(t.value.size()));
-          continue;
-        }
-        if (t.omega.size() < 2) {
-          ierr(tn + "at least 2 points are required, got " + std::to_string(t.omega.size()));
-          continue;
-        }
-        for (std::size_t k = 0; k < t.omega.size(); ++k) {
-          if (k == 0 && !(t.omega[0] > 0.0 && std::isfinite(t.omega[0]))) {
-            ierr(tn + "omega[1] must be > 0 rad/m, got " + num(t.omega[0]));
-            break;
-          }
-          if (k > 0 && !(t.omega[k] > t.omega[k - 1] && std::isfinite(t.omega[k]))) {
-            ierr(tn + "omega must be strictly increasing, omega[" + std::to_string(k + 1) +
-                 "] = " + num(t.omega[k]) + " after " + num(t.omega[k - 1]));
-            break;
-          }
-        }
-        for (std::size_t k = 0; k < t.value.size(); ++k) {
-          if (!(t.value[k] >= 0.0 && std::isfinite(t.value[k]))) {
-            ierr(tn + "value[" + std::to_string(k + 1) + "] must be >= 0 m^2/(rad/m), got " +
-                 num(t.value[k]));
-            break;
-          }
-        }
-      }
-    }
-    if (d.size() == psdBefore && length > 0.0 && maxOk) checkSynthesis(spec, length, d);
+    checkPsdSource(spec, length, maxOk, d);
   } else if (ir.source == IrregularitySource::Csv) {
     if (ir.csv_path.empty()) {
-      ierr("csv_path is required for a csv source");
+      d.add(ir.loc, "track.irregularities: csv_path is required for a csv source");
     } else if (maxOk) {
       CsvReadOptions o;
       o.unit = ir.csv_unit;

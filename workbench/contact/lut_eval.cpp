@@ -1,0 +1,197 @@
+// Hot path of the LUT method: evaluation of the contact lookup table (bicubic Hermite, Eq. 14).
+// The table build is in lut_build.cpp.
+#include "workbench/contact/lut.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace rb::contact {
+namespace {
+
+constexpr const char* kTreadNames[kTreadQuantities] = {
+    "s_w", "s_r", "gamma", "radius", "k_w_trans", "k_w_long", "k_r_trans"};
+constexpr const char* kFlangeNames[kFlangeQuantities] = {
+    "delta",    "s_w",       "s_r", "gamma", "radius",     "k_w_trans",
+    "k_w_long", "k_r_trans", "n_y", "n_z",   "ddelta_dphi"};
+
+}  // namespace
+
+std::string lutChannelName(std::size_t c) {
+  if (c == kLutZ) return "z";
+  if (c == kLutPhi) return "phi";
+  if (c < 2 + 2 * kTreadQuantities) {
+    const std::size_t k = c - 2;
+    return std::string(k < kTreadQuantities ? "left." : "right.") +
+           kTreadNames[k % kTreadQuantities];
+  }
+  if (c < kLutChannels) {
+    const std::size_t k = c - 2 - 2 * kTreadQuantities;
+    return std::string(k < kFlangeQuantities ? "left.flange." : "right.flange.") +
+           kFlangeNames[k % kFlangeQuantities];
+  }
+  return "?";
+}
+
+// ---- Evaluation ---------------------------------------------------------------------------------
+
+LutTable::Cell LutTable::locate(double y, double xi_g) const {
+  Cell c;
+  const double ty = (y - y_.min) / hy_;
+  const double ly = static_cast<double>(ny_ - 2);
+  double fy = std::floor(ty);
+  if (!(fy >= 0.0)) fy = 0.0;  // also NaN
+  if (fy > ly) fy = ly;
+  c.i = static_cast<std::size_t>(fy);
+  c.t = ty - fy;
+  c.inside = ty >= -1e-9 && ty <= ly + 1.0 + 1e-9;
+  if (ng_ >= 2) {
+    const double tg = (xi_g - g_.min) / hg_;
+    const double lg = static_cast<double>(ng_ - 2);
+    double fg = std::floor(tg);
+    if (!(fg >= 0.0)) fg = 0.0;
+    if (fg > lg) fg = lg;
+    c.j = static_cast<std::size_t>(fg);
+    c.u = tg - fg;
+    c.inside = c.inside && tg >= -1e-9 && tg <= lg + 1.0 + 1e-9;
+  } else {
+    c.inside = c.inside && std::abs(xi_g - g_.min) <= 1e-12;
+  }
+  return c;
+}
+
+namespace {
+struct Basis {
+  // Hermite basis: A = (h00, h01) value weights, C = (h10, h11) slope weights; first and second
+  // derivatives with respect to the unit coordinate.
+  double A[2], C[2], dA[2], dC[2], ddA[2], ddC[2];
+  explicit Basis(double t) {
+    const double t2 = t * t, t3 = t2 * t;
+    A[0] = 2 * t3 - 3 * t2 + 1;
+    A[1] = -2 * t3 + 3 * t2;
+    C[0] = t3 - 2 * t2 + t;
+    C[1] = t3 - t2;
+    dA[0] = 6 * t2 - 6 * t;
+    dA[1] = -6 * t2 + 6 * t;
+    dC[0] = 3 * t2 - 4 * t + 1;
+    dC[1] = 3 * t2 - 2 * t;
+    ddA[0] = 12 * t - 6;
+    ddA[1] = -12 * t + 6;
+    ddC[0] = 6 * t - 4;
+    ddC[1] = 6 * t - 2;
+  }
+};
+}  // namespace
+
+void LutTable::eval(double y, double xi_g, LutSample& out) const {
+  evalRange<true>(y, xi_g, out, 0, kLutChannels);
+}
+
+void LutTable::evalValues(double y, double xi_g, LutSample& out) const {
+  evalValues(y, xi_g, out, 0, kLutChannels);
+}
+
+void LutTable::evalValues(double y, double xi_g, LutSample& out, std::size_t first,
+                          std::size_t last) const {
+  evalRange<false>(y, xi_g, out, first, std::min(last, kLutChannels));
+}
+
+// Channels [first, last): values, and with kDerivatives their first derivatives in y and xi_g
+// (the same expressions for the values either way, so eval and evalValues agree to the bit).
+template <bool kDerivatives>
+void LutTable::evalRange(double y, double xi_g, LutSample& out, std::size_t first,
+                         std::size_t last) const {
+  const Cell c = locate(y, xi_g);
+  out.inside = c.inside;
+  const Basis by(c.t);
+  const std::size_t stride_y = kLutChannels * 4, stride_g = ny_ * kLutChannels * 4;
+  const double* base = &data_[(c.j * ny_ + c.i) * kLutChannels * 4];
+  if (ng_ < 2) {
+    for (std::size_t ch = first; ch < last; ++ch) {
+      double v = 0.0, dv = 0.0;
+      for (std::size_t a = 0; a < 2; ++a) {
+        const double* p = base + a * stride_y + ch * 4;
+        v += by.A[a] * p[0] + hy_ * by.C[a] * p[1];
+        if constexpr (kDerivatives) dv += by.dA[a] * p[0] + hy_ * by.dC[a] * p[1];
+      }
+      out.value[ch] = v;
+      if constexpr (kDerivatives) {
+        out.d_dy[ch] = dv / hy_;
+        out.d_dxi[ch] = 0.0;
+      }
+    }
+    return;
+  }
+  const Basis bg(c.u);
+  for (std::size_t ch = first; ch < last; ++ch) {
+    double v = 0.0, vt = 0.0, vu = 0.0;
+    for (std::size_t b = 0; b < 2; ++b) {
+      for (std::size_t a = 0; a < 2; ++a) {
+        const double* p = base + b * stride_g + a * stride_y + ch * 4;
+        const double f = p[0], fy = hy_ * p[1], fg = hg_ * p[2], fyg = hy_ * hg_ * p[3];
+        v += by.A[a] * bg.A[b] * f + by.C[a] * bg.A[b] * fy + by.A[a] * bg.C[b] * fg +
+             by.C[a] * bg.C[b] * fyg;
+        if constexpr (kDerivatives) {
+          vt += by.dA[a] * bg.A[b] * f + by.dC[a] * bg.A[b] * fy + by.dA[a] * bg.C[b] * fg +
+                by.dC[a] * bg.C[b] * fyg;
+          vu += by.A[a] * bg.dA[b] * f + by.C[a] * bg.dA[b] * fy + by.A[a] * bg.dC[b] * fg +
+                by.C[a] * bg.dC[b] * fyg;
+        }
+      }
+    }
+    out.value[ch] = v;
+    if constexpr (kDerivatives) {
+      out.d_dy[ch] = vt / hy_;
+      out.d_dxi[ch] = vu / hg_;
+    }
+  }
+}
+
+LutValue LutTable::evalChannel(std::size_t ch, double y, double xi_g) const {
+  LutValue r;
+  const Cell c = locate(y, xi_g);
+  r.inside = c.inside;
+  const Basis by(c.t);
+  const std::size_t stride_y = kLutChannels * 4, stride_g = ny_ * kLutChannels * 4;
+  const double* base = &data_[(c.j * ny_ + c.i) * kLutChannels * 4 + ch * 4];
+  if (ng_ < 2) {
+    for (std::size_t a = 0; a < 2; ++a) {
+      const double* p = base + a * stride_y;
+      r.v += by.A[a] * p[0] + hy_ * by.C[a] * p[1];
+      r.dy += by.dA[a] * p[0] + hy_ * by.dC[a] * p[1];
+      r.dyy += by.ddA[a] * p[0] + hy_ * by.ddC[a] * p[1];
+    }
+    r.dy /= hy_;
+    r.dyy /= hy_ * hy_;
+    return r;
+  }
+  const Basis bg(c.u);
+  for (std::size_t b = 0; b < 2; ++b) {
+    for (std::size_t a = 0; a < 2; ++a) {
+      const double* p = base + b * stride_g + a * stride_y;
+      const double f = p[0], fy = hy_ * p[1], fg = hg_ * p[2], fyg = hy_ * hg_ * p[3];
+      auto term = [&](double ta, double tc, double ua, double uc) {
+        return ta * ua * f + tc * ua * fy + ta * uc * fg + tc * uc * fyg;
+      };
+      r.v += term(by.A[a], by.C[a], bg.A[b], bg.C[b]);
+      r.dy += term(by.dA[a], by.dC[a], bg.A[b], bg.C[b]);
+      r.dxi += term(by.A[a], by.C[a], bg.dA[b], bg.dC[b]);
+      r.dyy += term(by.ddA[a], by.ddC[a], bg.A[b], bg.C[b]);
+      r.dyxi += term(by.dA[a], by.dC[a], bg.dA[b], bg.dC[b]);
+      r.dxixi += term(by.A[a], by.C[a], bg.ddA[b], bg.ddC[b]);
+    }
+  }
+  r.dy /= hy_;
+  r.dxi /= hg_;
+  r.dyy /= hy_ * hy_;
+  r.dyxi /= hy_ * hg_;
+  r.dxixi /= hg_ * hg_;
+  return r;
+}
+
+void LutTable::evalZPhi(double y, double xi_g, LutValue& z, LutValue& phi) const {
+  z = evalChannel(kLutZ, y, xi_g);
+  phi = evalChannel(kLutPhi, y, xi_g);
+}
+
+}  // namespace rb::contact
