@@ -72,14 +72,6 @@ KeySpec enumChoice(std::string name, E def, std::string help) {
   return k;
 }
 
-// A choice that must be given (no default).
-template <class E>
-KeySpec requiredEnumChoice(std::string name, std::string help) {
-  KeySpec k = enumChoice(std::move(name), E{}, std::move(help));
-  k.def.clear();
-  return k;
-}
-
 KeySpec boolean(std::string name, bool def, std::string help) {
   KeySpec k;
   k.name = std::move(name);
@@ -189,8 +181,8 @@ void addIrregularityBlocks(std::vector<BlockSpec>& s) {
       {"psd",
        "Irregularities synthesised from power spectral densities by a sum of cosines with random "
        "phases (paper Fig. 3, 15). One-sided PSDs over spatial angular frequency.",
-       {requiredEnumChoice<track::Spectrum>(
-            "spectrum", "named PSD (FRA values UNVERIFIED, see docs) or \"user\""),
+       {required(enumChoice("spectrum", track::Spectrum{},
+                            "named PSD (FRA values UNVERIFIED, see docs) or \"user\"")),
         integer("seed", 1, "random seed of the phases (recorded in the output)", 0,
                 9.007199254740992e15),
         wl, integer("components", 2000, "cosines per channel", 1, track::kMaxPsdComponents),

@@ -45,10 +45,10 @@ constexpr const auto& nameTable(Beyond /*tag*/) {
 
 // The four irregularity channels of paper Fig. 3, in Channel order.
 inline constexpr std::array<NameEntry<Channel>, 4> kChannelNames = {{
-    {Channel::Alignment, "alignment", "lateral"},
-    {Channel::Vertical, "vertical", "vertical"},
-    {Channel::Gauge, "gauge", "gauge"},
-    {Channel::CrossLevel, "cross_level", "height difference z_l - z_r"},
+    {Channel::Alignment, "alignment", "lateral displacement of the centreline"},
+    {Channel::Vertical, "vertical", "vertical displacement of the centreline"},
+    {Channel::Gauge, "gauge", "deviation of the gauge from its nominal value"},
+    {Channel::CrossLevel, "cross_level", "height difference z_l - z_r of the two rails"},
 }};
 constexpr const auto& nameTable(Channel /*tag*/) {
   return kChannelNames;
