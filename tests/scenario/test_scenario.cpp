@@ -7,9 +7,13 @@
 #include <filesystem>
 #include <fstream>
 
+#include "workbench/dynamics/names.hpp"
+#include "workbench/integrators/registry.hpp"
 #include "workbench/scenario/lua_host.hpp"
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/scenario/schema.hpp"
+#include "workbench/track/names.hpp"
+#include "workbench/vehicle/names.hpp"
 
 using rb::scenario::LoadOptions;
 using rb::scenario::loadScenario;
@@ -464,4 +468,66 @@ TEST(ScenarioSchema, HelpAndValidatorAgreeOnRanges) {
                              ":2: track.irregularities (psd): components must be <= 100000, got "
                              "100001\n" +
                              f + ":4: solver: rtol must be < 1, got 1");
+}
+
+namespace {
+
+// Every entry of an enum's name table parses back to its value, and the schema key that offers
+// the enum's names offers exactly the table's names.
+template <class E>
+void expectTableIsSchemaChoice(const std::string& block, const std::string& key) {
+  for (const auto& e : nameTable(E{})) {
+    EXPECT_EQ(rb::parse<E>(e.name), e.value) << e.name;
+    EXPECT_EQ(rb::nameOf(e.value), e.name);
+  }
+  const rb::scenario::KeySpec* k = rb::scenario::block(block).key(key);
+  ASSERT_NE(k, nullptr) << block << "." << key;
+  EXPECT_EQ(k->choices, rb::namesOf<E>()) << block << "." << key;
+}
+
+}  // namespace
+
+TEST(ScenarioSchema, ChoicesComeFromTheNameTables) {
+  expectTableIsSchemaChoice<rb::dynamics::ContactMethod>("contact", "method");
+  expectTableIsSchemaChoice<rb::dynamics::CreepModel>("contact", "creep");
+  expectTableIsSchemaChoice<rb::dynamics::NormalForceCoupling>("contact", "normal_forces");
+  expectTableIsSchemaChoice<rb::dynamics::WheelsetSpin>("contact", "wheelset_spin");
+  expectTableIsSchemaChoice<rb::vehicle::BodyKind>("body", "kind");
+  expectTableIsSchemaChoice<rb::vehicle::Direction>("spring_damper", "direction");
+  expectTableIsSchemaChoice<rb::track::Side>("curve", "side");
+  expectTableIsSchemaChoice<rb::track::CsvUnit>("measured", "unit");
+  expectTableIsSchemaChoice<rb::track::Beyond>("measured", "beyond");
+  expectTableIsSchemaChoice<rb::track::Spectrum>("psd", "spectrum");
+  expectTableIsSchemaChoice<rb::track::Channel>("psd", "channels");
+  expectTableIsSchemaChoice<rb::integ::JacobianMode>("solver", "jacobian");
+  EXPECT_EQ(rb::scenario::block("track").key("segments")->kinds,
+            rb::namesOf<rb::track::SegmentKind>());
+  EXPECT_EQ(rb::scenario::block("vehicle").key("elements")->kinds,
+            rb::namesOf<rb::vehicle::ElementKind>());
+  // The spectra of the table are the ones the track module parses.
+  for (const auto& e : rb::track::kSpectrumNames)
+    EXPECT_EQ(rb::track::parseSpectrum(e.name), e.value) << e.name;
+}
+
+TEST(ScenarioSchema, SolverMethodsComeFromTheRegistry) {
+  std::vector<std::string> names;
+  for (const auto& m : rb::integ::methods()) names.push_back(m.name);
+  EXPECT_EQ(rb::scenario::block("solver").key("method")->choices, names);
+  EXPECT_TRUE(rb::integ::isFixedStep("rk4"));
+  EXPECT_TRUE(rb::integ::isFixedStep("abm"));
+  EXPECT_FALSE(rb::integ::isFixedStep("bdf"));
+  EXPECT_FALSE(rb::integ::isFixedStep("nonsense"));
+  for (const auto& m : rb::integ::methods()) {
+    rb::integ::SolverSpec s;
+    s.method = m.name;
+    EXPECT_EQ(rb::integ::makeIntegrator(s)->name(), m.name);
+    EXPECT_EQ(rb::integ::makeIntegrator(s)->isFixedStep(), m.fixed_step) << m.name;
+  }
+}
+
+TEST(ScenarioSchema, ReferenceShowsTheHelpOfEveryChoice) {
+  const std::string help = rb::scenario::referenceText();
+  for (const auto& e : rb::dynamics::kWheelsetSpinNames)
+    EXPECT_NE(help.find(std::string(e.name) + ": " + std::string(e.help)), std::string::npos)
+        << e.name;
 }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "workbench/dynamics/contact_model.hpp"
+#include "workbench/dynamics/names.hpp"
 #include "workbench/io/result_file.hpp"
 #include "workbench/run/compile.hpp"
 #include "workbench/run/simulate.hpp"
@@ -126,8 +127,7 @@ int runScenario(const RunOptions& options) {
     std::cout << "\n";
     for (const auto& w : res.warnings) std::cout << "warning: " << w << "\n";
     if (c.contact)
-      msg << "; vehicle " << c.vehicle->name << " with "
-          << dynamics::ContactModel::methodName(c.contact->method) << " contact";
+      msg << "; vehicle " << c.vehicle->name << " with " << nameOf(c.contact->method) << " contact";
     else
       msg << "; vehicle " << c.vehicle->name << " (" << c.vehicle->bodies.size() << " bodies, "
           << c.vehicle->elementCount() << " elements)";

@@ -1,6 +1,6 @@
 #pragma once
 // Small string helpers shared by the modules: edit distance and "did you mean" suggestions for
-// error messages, joining lists of names.
+// error messages, joining lists of names, numbers as message text.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,5 +17,13 @@ std::string closestMatch(std::string_view word, const std::vector<std::string>& 
 
 // Items separated by `sep`: join({"a", "b"}) == "a, b".
 std::string join(const std::vector<std::string>& items, std::string_view sep = ", ");
+
+// A number as message and attribute text, printf "%.*g" with `significant` digits: the shortest
+// form a reader recognises (formatNumber(0.001) == "0.001", formatNumber(2.1e11) == "2.1e+11"),
+// identical to what an std::ostream with its default precision (6) writes.
+std::string formatNumber(double v, int significant = 6);
+// The shortest "%.*g" text (6 to 17 digits) that reads back as the same double: a value as it
+// would be typed (formatNumberExact(0.1) == "0.1", formatNumberExact(1.0 / 3) == "0.333...").
+std::string formatNumberExact(double v);
 
 }  // namespace rb

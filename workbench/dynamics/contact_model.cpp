@@ -1,10 +1,12 @@
 #include "workbench/dynamics/contact_model.hpp"
 
 #include "workbench/contact/table_io.hpp"
+#include "workbench/core/strings.hpp"
+#include "workbench/dynamics/limits.hpp"
+#include "workbench/dynamics/names.hpp"
 
 #include <cmath>
 #include <functional>
-#include <sstream>
 
 #include "workbench/profiles/positioning.hpp"
 #include "workbench/profiles/profile_io.hpp"
@@ -14,12 +16,6 @@
 namespace rb::dynamics {
 
 namespace {
-
-std::string num(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
 
 // Left profile of one kind: built-in or from a file. File problems are added to `d` at the
 // profiles{} block, followed by the reader's own file:line diagnostics.
@@ -96,26 +92,18 @@ const contact::TableBuildStats& ContactModel::tableStats() const {
   return kEmpty;
 }
 
+// The names of dynamics/names.hpp; the tables' entries are string literals, so data() ends in '\0'.
 const char* ContactModel::methodName(ContactMethod m) {
-  return m == ContactMethod::Kec ? "kec" : "lut";
+  return nameOf(m).data();
 }
 const char* ContactModel::creepName(CreepModel c) {
-  switch (c) {
-    case CreepModel::Polach:
-      return "polach";
-    case CreepModel::Kalker:
-      return "kalker";
-    case CreepModel::None:
-      return "none";
-  }
-  return "?";
+  return nameOf(c).data();
 }
 const char* ContactModel::spinName(WheelsetSpin s) {
-  return s == WheelsetSpin::Prescribed ? "prescribed" : "free";
+  return nameOf(s).data();
 }
-
 const char* ContactModel::couplingName(NormalForceCoupling c) {
-  return c == NormalForceCoupling::Lagged ? "lagged" : "consistent";
+  return nameOf(c).data();
 }
 
 void TableCache::diskProblem(const std::string& why) {
@@ -195,18 +183,26 @@ std::shared_ptr<const contact::LutTable> TableCache::lut(
 
 contact::ContactGeometryConfig contactGeometryConfig(const ProfilesSpec& p, const ContactSpec& c) {
   Diagnostics d;
-  if (!(p.r0 > 0.1 && p.r0 < 1.0))
-    d.add(p.loc, "profiles.r0: " + num(p.r0) + " m is not a wheel radius (0.1 .. 1 m)");
-  if (!(p.inclination >= 0.0 && p.inclination <= 0.1))
-    d.add(p.loc, "profiles.inclination: " + num(p.inclination) + " rad outside [0, 0.1]");
-  if (!(p.lw >= 0.0) || !(p.lr >= 0.0))
-    d.add(p.loc, "profiles.lw / profiles.lr must be >= 0 (0: from back_to_back / gauge)");
-  if (p.lw == 0.0 && !(p.back_to_back > 1.0 && p.back_to_back < 2.0))
-    d.add(p.loc, "profiles.back_to_back: " + num(p.back_to_back) + " m outside (1, 2) m");
-  if (p.lr == 0.0 && !(p.gauge > 0.9 && p.gauge < 2.0))
-    d.add(p.loc, "profiles.gauge: " + num(p.gauge) + " m outside (0.9, 2) m");
-  if (c.method == ContactMethod::Kec && (!(c.kec_dhat > 0.0) || !(c.kec_dbar > 0.0)))
-    d.add(c.loc, "contact.dhat / contact.dbar: the KEC transition lengths must be > 0");
+  // The ranges of the scenario schema (dynamics/limits.hpp), for callers without a scenario.
+  if (!kR0Range.contains(p.r0))
+    d.add(p.loc, "profiles.r0: " + formatNumber(p.r0) + " m is not a wheel radius (" +
+                     kR0Range.text() + " m)");
+  if (!kInclinationRange.contains(p.inclination))
+    d.add(p.loc, "profiles.inclination: " + formatNumber(p.inclination) + " rad outside " +
+                     kInclinationRange.text());
+  if (!kLwRange.contains(p.lw) || !kLrRange.contains(p.lr))
+    d.add(p.loc, "profiles.lw / profiles.lr must be in " + kLwRange.text() +
+                     " m (0: from back_to_back / gauge)");
+  if (p.lw == 0.0 && !kBackToBackRange.contains(p.back_to_back))
+    d.add(p.loc, "profiles.back_to_back: " + formatNumber(p.back_to_back) + " m outside " +
+                     kBackToBackRange.text() + " m");
+  if (p.lr == 0.0 && !kGaugeRange.contains(p.gauge))
+    d.add(p.loc, "profiles.gauge: " + formatNumber(p.gauge) + " m outside " + kGaugeRange.text() +
+                     " m");
+  if (c.method == ContactMethod::Kec &&
+      (!kKecTransitionRange.contains(c.kec_dhat) || !kKecTransitionRange.contains(c.kec_dbar)))
+    d.add(c.loc, "contact.dhat / contact.dbar: the KEC transition lengths must be in " +
+                     kKecTransitionRange.text() + " m");
   d.throwIfAny();
 
   auto lw = loadProfile(p.wheel, profiles::ProfileKind::Wheel, p.r0, p.loc, d);
@@ -268,22 +264,24 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
     d.add(c.loc, "contact: vehicle '" + v.name +
                      "' has no wheelset (a body with kind = \"wheelset\"): nothing to put on the "
                      "rails");
-  if (!(c.youngs_modulus > 0.0))
-    d.add(c.loc, "contact.youngs_modulus must be > 0 (got " + num(c.youngs_modulus) + ")");
-  if (!(c.poisson >= 0.0 && c.poisson < 0.5))
-    d.add(c.loc, "contact.poisson must be in [0, 0.5) (got " + num(c.poisson) + ")");
-  if (!(c.mu >= 0.0 && c.mu <= 2.0))
-    d.add(c.loc, "contact.mu must be in [0, 2] (got " + num(c.mu) + ")");
+  // The ranges of the scenario schema (dynamics/limits.hpp), for callers without a scenario.
+  const auto check = [&](const char* key, double value, const Range& r) {
+    if (!r.contains(value))
+      d.add(c.loc, std::string("contact.") + key + " must be in " + r.text() + " (got " +
+                       formatNumber(value) + ")");
+  };
+  check("youngs_modulus", c.youngs_modulus, kYoungsModulusRange);
+  check("poisson", c.poisson, kPoissonRange);
+  check("mu", c.mu, kMuRange);
+  check("min_normal_force", c.min_normal_force, kMinNormalForceRange);
   if (c.method == ContactMethod::Lut) {
-    if (!(c.flange_stiffness > 0.0) || !std::isfinite(c.flange_stiffness))
-      d.add(c.loc, "contact.flange_stiffness must be > 0 (got " + num(c.flange_stiffness) + ")");
-    if (!std::isfinite(c.flange_damping))
-      d.add(c.loc, "contact.flange_damping must be finite (< 0: K/100)");
+    check("flange_stiffness", c.flange_stiffness, kFlangeStiffnessRange);
+    check("flange_damping", c.flange_damping, kFlangeDampingRange);
   }
   for (const vehicle::Body& b : v.bodies) {
     if (b.kind == vehicle::BodyKind::Wheelset && std::abs(b.height - p.r0) > 0.05)
-      d.add(b.loc, "wheelset '" + b.name + "': centre height " + num(b.height) +
-                       " m is far from the wheel radius profiles.r0 = " + num(p.r0) +
+      d.add(b.loc, "wheelset '" + b.name + "': centre height " + formatNumber(b.height) +
+                       " m is far from the wheel radius profiles.r0 = " + formatNumber(p.r0) +
                        " m (the wheelset centre is the axle)");
   }
   d.throwIfAny();
@@ -313,7 +311,8 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
     Diagnostics dd;
     dd.add(c.loc, std::string("contact: the ") + (m.method == ContactMethod::Kec ? "KEC" : "LUT") +
                       " table could not be built for these profiles and positions (Lw = " +
-                      num(m.geometry.wheel_lw) + " m, Lr = " + num(m.geometry.rail_lr) + " m)");
+                      formatNumber(m.geometry.wheel_lw) +
+                      " m, Lr = " + formatNumber(m.geometry.rail_lr) + " m)");
     dd.add(e);
     dd.throwIfAny();
   }
@@ -344,8 +343,8 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
     const contact::GridSpec& gg = m.lut->gaugeGrid();
     if (gmax > std::min(-gg.min, gg.max))
       m.warnings.push_back(c.loc.str() + ": warning: the gauge irregularity reaches " +
-                           num(gmax * 1e3) + " mm, beyond the LUT gauge range [" +
-                           num(gg.min * 1e3) + ", " + num(gg.max * 1e3) + "] mm");
+                           formatNumber(gmax * 1e3) + " mm, beyond the LUT gauge range [" +
+                           formatNumber(gg.min * 1e3) + ", " + formatNumber(gg.max * 1e3) + "] mm");
   }
   return m;
 }

@@ -95,7 +95,8 @@ struct ContactModel {
 
   // Build statistics of the table in use (time, bytes, warnings, notes).
   const contact::TableBuildStats& tableStats() const;
-  // "kec" or "lut", "polach" / "kalker" / "none", "lagged" / "consistent".
+  // The names of dynamics/names.hpp (nameOf): "kec" / "lut", "polach" / "kalker" / "none",
+  // "lagged" / "consistent".
   static const char* methodName(ContactMethod m);
   static const char* creepName(CreepModel c);
   static const char* couplingName(NormalForceCoupling c);

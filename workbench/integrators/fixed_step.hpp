@@ -54,7 +54,7 @@ class FixedStepIntegrator final : public Integrator {
   static constexpr int kMaxSplitDepth = 5;  // recoverable failures: smallest substep h / 2^5
 
   FixedStepIntegrator(Method method, SolverSpec spec);
-  std::string_view name() const override { return method_ == Method::Rk4 ? "rk4" : "abm"; }
+  std::string_view name() const override { return method_ == Method::Rk4 ? kRk4 : kAbm; }
   bool isFixedStep() const override { return true; }
 
  protected:

@@ -1,6 +1,7 @@
 #pragma once
-// The one registry of integrators: names, descriptions and options for help and error messages,
-// validation of a SolverSpec, and construction. Adding a method means adding it here only.
+// The one registry of integrators: per method its name, description, kind (fixed step or
+// adaptive), options and factory, for help and error messages, validation of a SolverSpec, and
+// construction. Adding a method means adding it here only.
 #include <memory>
 #include <string>
 #include <string_view>
@@ -21,7 +22,11 @@ struct OptionInfo {
 struct MethodInfo {
   std::string name;  // "bdf"
   std::string description;
+  // Fixed step: every output time must lie on the step grid, and a run given by distance ends on
+  // the last step at or before it. Adaptive: `step` is an initial step, 0 = the solver's estimate.
+  bool fixed_step = false;
   std::vector<OptionInfo> options;  // the SolverSpec keys this method uses (besides "method")
+  std::unique_ptr<Integrator> (*make)(const SolverSpec&) = nullptr;  // spec already validated
 };
 
 // All methods in registry order: rk4, abm, dopri5, bdf, ida.
@@ -30,6 +35,8 @@ const std::vector<MethodInfo>& methods();
 std::string methodNames();
 // nullptr for an unknown name.
 const MethodInfo* findMethod(std::string_view name);
+// Whether `name` is a fixed-step method of the registry (false for an unknown name).
+bool isFixedStep(std::string_view name);
 
 // Checks the method name and the options that method uses (options it does not use are not
 // checked). Throws rb::InputError at spec.loc with every problem found, e.g.

@@ -36,7 +36,7 @@ class Dopri5Integrator final : public Integrator {
   static constexpr int kMaxRecoveries = 10;
   static constexpr int kMaxRecoveriesPerOutput = 50;
   explicit Dopri5Integrator(SolverSpec spec) : Integrator(std::move(spec)) {}
-  std::string_view name() const override { return "dopri5"; }
+  std::string_view name() const override { return kDopri5; }
   bool isFixedStep() const override { return false; }
 
  protected:
@@ -70,7 +70,7 @@ class Dopri5Integrator final : public Integrator {
 class BdfIntegrator final : public Integrator {
  public:
   explicit BdfIntegrator(SolverSpec spec) : Integrator(std::move(spec)) {}
-  std::string_view name() const override { return "bdf"; }
+  std::string_view name() const override { return kBdf; }
   bool isFixedStep() const override { return false; }
 
  protected:
@@ -88,7 +88,7 @@ class BdfIntegrator final : public Integrator {
 class IdaIntegrator final : public Integrator {
  public:
   explicit IdaIntegrator(SolverSpec spec) : Integrator(std::move(spec)) {}
-  std::string_view name() const override { return "ida"; }
+  std::string_view name() const override { return kIda; }
   bool isFixedStep() const override { return false; }
   bool supportsDae() const override { return true; }
 

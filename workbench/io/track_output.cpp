@@ -1,5 +1,7 @@
 #include "workbench/io/track_output.hpp"
 
+#include "workbench/track/names.hpp"
+
 namespace rb::io {
 namespace {
 std::vector<double> toDouble(const std::vector<int>& v) {
@@ -49,8 +51,8 @@ void writeTrack(ResultFile& f, const track::TrackSpec& spec, const track::TrackS
     f.attr(r, "scale", irr.scale);
   } else {
     f.attr(r, "csv_path", irr.csv_path);
-    f.attr(r, "csv_unit", std::string(irr.csv_unit == track::CsvUnit::Millimetre ? "mm" : "m"));
-    f.attr(r, "beyond", std::string(irr.beyond == track::Beyond::Zero ? "zero" : "error"));
+    f.attr(r, "csv_unit", std::string(nameOf(irr.csv_unit)));
+    f.attr(r, "beyond", std::string(nameOf(irr.beyond)));
   }
   f.dataset(r + "/s", t.irr_s, "m");
   f.dataset(r + "/alignment", t.alignment, "m");

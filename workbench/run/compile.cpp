@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <sstream>
 
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
@@ -17,12 +16,6 @@ double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-std::string g(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
-
 // Checks of the speed ramp: V(t) = V0 + a t must stay >= 0 over the run (no clamping: a vehicle
 // that stops and reverses is not what a ramp scenario means).
 void checkRamp(const Model& c, Diagnostics& d) {
@@ -31,18 +24,19 @@ void checkRamp(const Model& c, Diagnostics& d) {
   if (a >= 0.0) return;
   const double t_stop = spec.vehicle.speed / -a;
   if (spec.run.duration > 0 && spec.run.duration > t_stop)
-    d.add(spec.vehicle.loc, "vehicle: acceleration " + g(a) +
-                                " m/s^2 stops the vehicle at t = " + g(t_stop) +
-                                " s, before run.duration = " + g(spec.run.duration) + " s");
+    d.add(spec.vehicle.loc, "vehicle: acceleration " + formatNumber(a) +
+                                " m/s^2 stops the vehicle at t = " + formatNumber(t_stop) +
+                                " s, before run.duration = " + formatNumber(spec.run.duration) +
+                                " s");
   if (!(spec.run.duration > 0)) {
     const double dist = spec.run.distance > 0
                             ? spec.run.distance
                             : c.track->geometry().length() - (c.vehicle->start + c.leadingX());
     if (spec.vehicle.speed * spec.vehicle.speed + 2.0 * a * dist < 0.0)
-      d.add(spec.vehicle.loc, "vehicle: acceleration " + g(a) + " m/s^2 stops the vehicle after " +
-                                  g(spec.vehicle.speed * t_stop / 2.0) +
-                                  " m, before the run's distance " + g(dist) +
-                                  " m; give run.duration or a smaller deceleration");
+      d.add(spec.vehicle.loc,
+            "vehicle: acceleration " + formatNumber(a) + " m/s^2 stops the vehicle after " +
+                formatNumber(spec.vehicle.speed * t_stop / 2.0) + " m, before the run's distance " +
+                formatNumber(dist) + " m; give run.duration or a smaller deceleration");
   }
 }
 
@@ -65,7 +59,7 @@ double endTime(const Model& c) {
   }
   // A fixed-step method ends on its step grid: the last grid time at or before the distance is
   // reached (the leading body stops less than one step's travel short; never beyond the track).
-  if (c.solver.step > 0 && (c.solver.method == "rk4" || c.solver.method == "abm")) {
+  if (c.solver.step > 0 && integ::isFixedStep(c.solver.method)) {
     const double n = std::floor(t / c.solver.step + 1e-6);
     t = n * c.solver.step;
   }
@@ -88,23 +82,24 @@ void checkTrackRange(const Model& c, Diagnostics& d) {
                               segs.front().gradient == 0.0 && segs.front().cant == 0.0;
   if (rear < -tol && !straight_start)
     d.add(c.spec.vehicle.loc,
-          "vehicle: the rearmost body starts at s = " + g(rear) +
+          "vehicle: the rearmost body starts at s = " + formatNumber(rear) +
               " m, before the start of the track (s = 0), which does not start with a level "
               "tangent; give vehicle.start >= " +
-              g(v.start - rear) + " m");
+              formatNumber(v.start - rear) + " m");
   if (!(c.t_end > 0)) {
-    d.add(c.spec.run.loc, "run: nothing to simulate: the leading body starts at s = " + g(lead0) +
-                              " m and the track ends at " + g(length) + " m");
+    d.add(c.spec.run.loc,
+          "run: nothing to simulate: the leading body starts at s = " + formatNumber(lead0) +
+              " m and the track ends at " + formatNumber(length) + " m");
     return;
   }
   const double lead_end = lead0 + v.travel(c.t_end);
   if (lead_end > length + tol)
     d.add(c.spec.run.loc,
-          "run: the leading body would reach s = " + g(lead_end) + " m after " + g(c.t_end) +
-              " s, beyond the end of the track at " + g(length) +
+          "run: the leading body would reach s = " + formatNumber(lead_end) + " m after " +
+              formatNumber(c.t_end) + " s, beyond the end of the track at " + formatNumber(length) +
               " m (the geometry would be extrapolated); shorten run.distance or run.duration "
               "(at most " +
-              g(length - lead0) + " m) or lengthen the track");
+              formatNumber(length - lead0) + " m) or lengthen the track");
 }
 
 // The output grid and size are known before the run: a fixed-step method needs every output
@@ -113,9 +108,11 @@ void checkOutputs(const Model& c, Diagnostics& d) {
   const auto& run = c.spec.run;
   const double n = std::ceil(c.t_end / run.output_every - 1e-9);
   if (n > run.max_output_samples) {
-    d.add(run.loc, "run.output.every: " + g(run.output_every) + " s over " + g(c.t_end) +
-                       " s gives " + g(n) + " output times, more than run.output.max_samples = " +
-                       g(run.max_output_samples) + " (raise it if the memory and disk are there)");
+    d.add(run.loc, "run.output.every: " + formatNumber(run.output_every) + " s over " +
+                       formatNumber(c.t_end) + " s gives " + formatNumber(n) +
+                       " output times, more than run.output.max_samples = " +
+                       formatNumber(run.max_output_samples) +
+                       " (raise it if the memory and disk are there)");
     return;
   }
   try {
@@ -127,15 +124,16 @@ void checkOutputs(const Model& c, Diagnostics& d) {
       return std::abs(r - std::round(r)) <= 1e-6;
     };
     if (!onGrid(run.output_every))
-      d.add(c.solver.loc.file.empty() ? run.loc : c.solver.loc,
-            "solver.step: the output interval run.output.every = " + g(run.output_every) +
-                " s is not a multiple of the " + std::string(integ->name()) + " step " + g(h) +
-                " s; choose an output interval that is a multiple of the step");
+      d.add(
+          c.solver.loc.file.empty() ? run.loc : c.solver.loc,
+          "solver.step: the output interval run.output.every = " + formatNumber(run.output_every) +
+              " s is not a multiple of the " + std::string(integ->name()) + " step " +
+              formatNumber(h) + " s; choose an output interval that is a multiple of the step");
     else if (!onGrid(c.t_end))
       d.add(c.solver.loc.file.empty() ? run.loc : c.solver.loc,
-            "solver.step: the run ends at t = " + g(c.t_end) + " s, which is not on the " +
-                std::string(integ->name()) + " step grid k * " + g(h) +
-                " s; choose run.duration (or run.distance / speed) on the grid");
+            "solver.step: the run ends at t = " + formatNumber(c.t_end) +
+                " s, which is not on the " + std::string(integ->name()) + " step grid k * " +
+                formatNumber(h) + " s; choose run.duration (or run.distance / speed) on the grid");
   } catch (const InputError& e) {
     d.add(e);
   }
@@ -155,14 +153,11 @@ double Model::trailingX() const {
   return rear;
 }
 
-Model compile(const CompileOptions& o) {
-  scenario::LoadOptions lo;
-  lo.root = o.root;
-  lo.overrides = o.overrides;
-  Model c;
-  c.spec = scenario::loadScenario(o.scenario, lo);
+namespace {
+
+// Track, integrator, vehicle and contact model: every problem of each part, all at once.
+void compileParts(const CompileOptions& o, Model& c, Diagnostics& d) {
   const auto& spec = c.spec;
-  Diagnostics d;
   auto t0 = std::chrono::steady_clock::now();
   try {
     c.track = track::compileTrack(spec.track);
@@ -178,7 +173,8 @@ Model compile(const CompileOptions& o) {
       d.add(e);
     }
   } else {
-    c.solver.method = "abm";  // the paper's validation runs: ABM with 1 ms steps (section 5.2)
+    // The paper's validation runs: ABM with 1 ms steps (section 5.2).
+    c.solver.method = integ::kAbm;
     c.solver.step = 1e-3;
   }
   if (spec.has_vehicle && c.track) {
@@ -198,36 +194,73 @@ Model compile(const CompileOptions& o) {
       d.add(e);
     }
   }
-  if (!spec.has_vehicle) {
-    if (spec.has_contact) d.add(spec.contact.loc, "contact: needs a vehicle { ... } block");
-    if (!spec.run.output_elements.empty())
-      d.add(spec.run.loc, "run.output.elements: the scene has no vehicle");
-    if (spec.run.body_accelerations)
-      d.add(spec.run.loc, "run.output.body_accelerations: the scene has no vehicle");
-  }
-  if (c.vehicle) {
-    for (const auto& name : spec.run.output_elements) {
-      if (auto id = c.vehicle->findElement(name)) {
-        c.output_elements.push_back(*id);
-        continue;
-      }
-      std::vector<std::string> names;
-      for (auto id : c.vehicle->elements()) names.push_back(c.vehicle->elementName(id));
-      std::string hint = closestMatch(name, names);
-      d.add(spec.run.loc, "run.output.elements: no element named '" + name + "'" +
-                              (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+}
+
+// Blocks and outputs that need a vehicle in a scene that has none.
+void checkWithoutVehicle(const Model& c, Diagnostics& d) {
+  const auto& spec = c.spec;
+  if (spec.has_contact) d.add(spec.contact.loc, "contact: needs a vehicle { ... } block");
+  if (!spec.run.output_elements.empty())
+    d.add(spec.run.loc, "run.output.elements: the scene has no vehicle");
+  if (spec.run.body_accelerations)
+    d.add(spec.run.loc, "run.output.body_accelerations: the scene has no vehicle");
+}
+
+// The element outputs by name, the speed ramp, the end time, the track range and the outputs.
+void checkVehicleRun(Model& c, Diagnostics& d) {
+  const auto& spec = c.spec;
+  for (const auto& name : spec.run.output_elements) {
+    if (auto id = c.vehicle->findElement(name)) {
+      c.output_elements.push_back(*id);
+      continue;
     }
-    if (!(spec.vehicle.speed > 0) && !(spec.run.duration > 0))
-      d.add(spec.vehicle.loc, "vehicle: speed is 0, so give run.duration");
-    else {
-      checkRamp(c, d);
-      if (d.empty()) {
-        c.t_end = endTime(c);
-        checkTrackRange(c, d);
-      }
-      if (d.empty()) checkOutputs(c, d);
-    }
+    std::vector<std::string> names;
+    for (auto id : c.vehicle->elements()) names.push_back(c.vehicle->elementName(id));
+    std::string hint = closestMatch(name, names);
+    d.add(spec.run.loc, "run.output.elements: no element named '" + name + "'" +
+                            (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
   }
+  if (!(spec.vehicle.speed > 0) && !(spec.run.duration > 0)) {
+    d.add(spec.vehicle.loc, "vehicle: speed is 0, so give run.duration");
+    return;
+  }
+  checkRamp(c, d);
+  if (d.empty()) {
+    c.t_end = endTime(c);
+    checkTrackRange(c, d);
+  }
+  if (d.empty()) checkOutputs(c, d);
+}
+
+// Warnings of the track, the tables and the scene, each as file:line: warning: ...
+void collectWarnings(Model& c) {
+  const auto& spec = c.spec;
+  const auto& irr = spec.track.irregularities;
+  if (irr.source == track::IrregularitySource::Psd && !track::psdVerified(irr.spectrum))
+    c.warnings.push_back(irr.loc.str() + ": warning: the parameters of spectrum '" + irr.spectrum +
+                         "' are UNVERIFIED against a primary source (see docs/track.md)");
+  for (const auto& w : c.track->warnings())
+    c.warnings.push_back(w.loc.str() + ": warning: " + w.message);
+  if (c.contact)
+    for (const auto& w : c.contact->warnings)
+      c.warnings.push_back(w);  // already "file:line: warning: ..."
+  if (c.vehicle && !spec.has_contact)
+    c.warnings.push_back(spec.vehicle.loc.str() +
+                         ": note: no contact{} block: wheelsets follow the track kinematically");
+}
+
+}  // namespace
+
+Model compile(const CompileOptions& o) {
+  scenario::LoadOptions lo;
+  lo.root = o.root;
+  lo.overrides = o.overrides;
+  Model c;
+  c.spec = scenario::loadScenario(o.scenario, lo);
+  Diagnostics d;
+  compileParts(o, c, d);
+  if (!c.spec.has_vehicle) checkWithoutVehicle(c, d);
+  if (c.vehicle) checkVehicleRun(c, d);
   d.throwIfAny();
 
   // The initial state must exist: a contact vehicle's static equilibrium on its constraints
@@ -242,19 +275,7 @@ Model compile(const CompileOptions& o) {
       (void)ode.staticState(0.0);
     }
   }
-
-  const auto& irr = spec.track.irregularities;
-  if (irr.source == track::IrregularitySource::Psd && !track::psdVerified(irr.spectrum))
-    c.warnings.push_back(irr.loc.str() + ": warning: the parameters of spectrum '" + irr.spectrum +
-                         "' are UNVERIFIED against a primary source (see docs/track.md)");
-  for (const auto& w : c.track->warnings())
-    c.warnings.push_back(w.loc.str() + ": warning: " + w.message);
-  if (c.contact)
-    for (const auto& w : c.contact->warnings)
-      c.warnings.push_back(w);  // already "file:line: warning: ..."
-  if (c.vehicle && !spec.has_contact)
-    c.warnings.push_back(spec.vehicle.loc.str() +
-                         ": note: no contact{} block: wheelsets follow the track kinematically");
+  collectWarnings(c);
   return c;
 }
 

@@ -17,6 +17,8 @@
 
 #include "workbench/core/files.hpp"
 #include "workbench/core/strings.hpp"
+#include "workbench/track/names.hpp"
+#include "workbench/vehicle/names.hpp"
 
 namespace fs = std::filesystem;
 
@@ -29,10 +31,12 @@ const std::vector<std::string>& topLevelBlocks() {
 }
 
 const std::vector<std::string>& nestedConstructors() {
-  static const std::vector<std::string> names = {
-      "tangent",      "transition",     "curve",         "psd",
-      "measured",     "body",           "spring_damper", "series_damper",
-      "shear_spring", "bending_spring", "bumpstop"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n = namesOf<track::SegmentKind>();
+    for (const char* other : {"psd", "measured", "body"}) n.emplace_back(other);
+    for (auto& e : namesOf<vehicle::ElementKind>()) n.push_back(std::move(e));
+    return n;
+  }();
   return names;
 }
 
@@ -255,7 +259,8 @@ struct LuaHost::Impl {
     }
     if (std::chrono::steady_clock::now() > deadline) {
       std::ostringstream os;
-      os << "scenario exceeded its time budget of " << timeLimit << " s (endless loop?)";
+      os << "scenario exceeded its time budget of " << formatNumber(timeLimit)
+         << " s (endless loop?)";
       die(state, os.str());
       return false;
     }
@@ -570,8 +575,9 @@ struct LuaHost::Impl {
     if (work <= kPatternWorkLimit) return true;
     std::ostringstream os;
     os << "string." << lua_tostring(L, lua_upvalueindex(2)) << ": pattern too costly for a " << n
-       << "-character subject (worst case " << std::setprecision(3) << work << " steps, limit "
-       << kPatternWorkLimit << "); use fewer repetition items (* + - ?) or shorter strings";
+       << "-character subject (worst case " << formatNumber(work, 3) << " steps, limit "
+       << formatNumber(kPatternWorkLimit, 3)
+       << "); use fewer repetition items (* + - ?) or shorter strings";
     push(L, callerLoc(L), os.str());
     return false;
   }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <sstream>
 
+#include "workbench/core/strings.hpp"
+
 namespace rb::scenario {
 
 namespace {
@@ -56,7 +58,7 @@ std::string Node::describe() const {
   std::ostringstream os;
   switch (type) {
     case Type::Number:
-      os << "number " << number;
+      os << "number " << formatNumber(number);
       break;
     case Type::String:
       os << "string \"" << string << "\"";

@@ -1,10 +1,16 @@
 #include "workbench/scenario/schema.hpp"
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
+#include "workbench/core/names.hpp"
+#include "workbench/core/strings.hpp"
+#include "workbench/dynamics/limits.hpp"
+#include "workbench/dynamics/names.hpp"
 #include "workbench/integrators/registry.hpp"
-#include "workbench/track/spec.hpp"
+#include "workbench/track/names.hpp"
+#include "workbench/vehicle/names.hpp"
 
 namespace rb::scenario {
 namespace {
@@ -17,9 +23,7 @@ KeySpec num(std::string name, std::string unit, double def, std::string help, do
   k.name = std::move(name);
   k.type = ValueType::Number;
   k.unit = std::move(unit);
-  std::ostringstream os;
-  os << def;
-  k.def = os.str();
+  k.def = formatNumber(def);
   k.num_default = def;
   k.help = std::move(help);
   k.min = min;
@@ -28,10 +32,11 @@ KeySpec num(std::string name, std::string unit, double def, std::string help, do
   return k;
 }
 
-// (min, max): both ends excluded.
-KeySpec openRange(KeySpec k) {
-  k.min_exclusive = true;
-  k.max_exclusive = true;
+// A number in a range that a compiled module also guards (core/range.hpp).
+KeySpec num(std::string name, std::string unit, double def, std::string help, const Range& r) {
+  KeySpec k =
+      num(std::move(name), std::move(unit), def, std::move(help), r.min, r.max, r.min_exclusive);
+  k.max_exclusive = r.max_exclusive;
   return k;
 }
 
@@ -56,6 +61,14 @@ KeySpec choice(std::string name, std::vector<std::string> choices, std::string d
   k.choices = std::move(choices);
   k.def = std::move(def);
   k.help = std::move(help);
+  return k;
+}
+
+// A choice among the names of E's table (core/names.hpp), each with its one-line help.
+template <class E>
+KeySpec enumChoice(std::string name, E def, std::string help) {
+  KeySpec k = choice(std::move(name), namesOf<E>(), std::string(nameOf(def)), std::move(help));
+  for (const auto& entry : nameTable(E{})) k.choice_help.emplace_back(entry.help);
   return k;
 }
 
@@ -91,19 +104,14 @@ KeySpec blockKey(std::string name, ValueType t, std::vector<std::string> kinds, 
   return k;
 }
 
-std::vector<std::string> spectra() {
-  return {"ore_b176_low", "ore_b176_high", "fra_class_1", "fra_class_2", "fra_class_3",
-          "fra_class_4",  "fra_class_5",   "fra_class_6", "user"};
-}
-
-std::vector<BlockSpec> build() {
-  std::vector<BlockSpec> s;
+// track{} and its segment constructors (paper section 5.2).
+void addTrackBlocks(std::vector<BlockSpec>& s) {
   const std::string gradientHelp =
       "vertical gradient rise/run, positive uphill, at the segment end (slope angle = -atan)";
   s.push_back({"track",
                "Track centreline as a sequence of segments, preprocessed into cubic splines of "
                "position and Euler angles versus arc length (paper Eq. 1-2, Fig. 4).",
-               {blockKey("segments", ValueType::BlockList, {"tangent", "transition", "curve"},
+               {blockKey("segments", ValueType::BlockList, namesOf<track::SegmentKind>(),
                          "segments in running order (required)"),
                 num("step", "m", 0.5, "spline sampling step of the centreline (paper: 0.5 m)", 0,
                     kInf, true),
@@ -121,26 +129,30 @@ std::vector<BlockSpec> build() {
                         2, 1e12),
                 blockKey("irregularities", ValueType::Block, {"psd", "measured"},
                          "track irregularities; none if absent (costs nothing)")}});
-  s.push_back({"tangent",
+  s.push_back({std::string(nameOf(track::SegmentKind::Tangent)),
                "Straight segment: zero curvature and zero cant.",
                {required(num("length", "m", 0, "arc length", 0, kInf, true)),
                 num("gradient", "-", 0, gradientHelp, -0.1, 0.1)}});
   s.push_back(
-      {"transition",
+      {std::string(nameOf(track::SegmentKind::Transition)),
        "Clothoid: curvature, cant and gradient change linearly in arc length from the previous "
        "segment's end values to the values given here.",
        {required(num("length", "m", 0, "arc length", 0, kInf, true)),
         num("radius", "m", 0, "radius at the end; 0 means the transition ends straight", 0),
-        choice("side", {"left", "right"}, "left", "direction of the curve at the end"),
+        enumChoice("side", track::Side::Left, "direction of the curve at the end"),
         num("cant", "m", 0, "superelevation height at the end", -0.3, 0.3),
         num("gradient", "-", 0, gradientHelp, -0.1, 0.1)}});
-  s.push_back({"curve",
+  s.push_back({std::string(nameOf(track::SegmentKind::Curve)),
                "Circular curve of constant radius and cant.",
                {required(num("length", "m", 0, "arc length", 0, kInf, true)),
                 required(num("radius", "m", 0, "curve radius", 0, kInf, true)),
-                choice("side", {"left", "right"}, "left", "direction of the curve"),
+                enumChoice("side", track::Side::Left, "direction of the curve"),
                 num("cant", "m", 0, "superelevation height", -0.3, 0.3),
                 num("gradient", "-", 0, gradientHelp, -0.1, 0.1)}});
+}
+
+// psd{} and measured{} (paper Fig. 3, 15).
+void addIrregularityBlocks(std::vector<BlockSpec>& s) {
   KeySpec wl;
   wl.name = "wavelengths";
   wl.type = ValueType::Pair;
@@ -153,12 +165,13 @@ std::vector<BlockSpec> build() {
   channels.name = "channels";
   channels.type = ValueType::StringList;
   channels.unit = "-";
-  channels.choices = {"alignment", "vertical", "gauge", "cross_level"};
+  channels.choices = namesOf<track::Channel>();
+  for (const auto& entry : track::kChannelNames) channels.choice_help.emplace_back(entry.help);
   channels.def = "all four";
   channels.help = "which irregularities to synthesise";
-  auto psdInput = [](const std::string& n) {
+  auto psdInput = [](track::Channel c) {
     KeySpec k;
-    k.name = n;
+    k.name = nameOf(c);
     k.type = ValueType::PsdInput;
     k.unit = "m^2/(rad/m)";
     k.help = "user PSD (spectrum = \"user\"): function(omega) or {{omega, G}, ...}, one-sided";
@@ -168,8 +181,8 @@ std::vector<BlockSpec> build() {
       {"psd",
        "Irregularities synthesised from power spectral densities by a sum of cosines with random "
        "phases (paper Fig. 3, 15). One-sided PSDs over spatial angular frequency.",
-       {required(choice("spectrum", spectra(), "",
-                        "named PSD (FRA values UNVERIFIED, see docs) or \"user\"")),
+       {required(enumChoice("spectrum", track::Spectrum{},
+                            "named PSD (FRA values UNVERIFIED, see docs) or \"user\"")),
         integer("seed", 1, "random seed of the phases (recorded in the output)", 0,
                 9.007199254740992e15),
         wl, integer("components", 2000, "cosines per channel", 1, track::kMaxPsdComponents),
@@ -177,7 +190,8 @@ std::vector<BlockSpec> build() {
         num("scale", "-", 1, "amplitude factor on every channel", 0, 100), channels,
         boolean("randomize_frequencies", true,
                 "draw each cosine's frequency inside its band (false: band centres, periodic)"),
-        psdInput("alignment"), psdInput("vertical"), psdInput("gauge"), psdInput("cross_level")}});
+        psdInput(track::Channel::Alignment), psdInput(track::Channel::Vertical),
+        psdInput(track::Channel::Gauge), psdInput(track::Channel::CrossLevel)}});
   KeySpec file;
   file.name = "file";
   file.type = ValueType::String;
@@ -190,13 +204,15 @@ std::vector<BlockSpec> build() {
        "Measured irregularities from a CSV file, splined through its rows (docs/track.md). Every "
        "problem of the file is reported at check as file:line.",
        {file,
-        choice("unit", {"m", "mm"}, "m",
-               "unit of the irregularity columns (s is always in m); values above 0.1 m are "
-               "refused as implausible"),
-        choice("beyond", {"error", "zero"}, "error",
-               "where the file does not cover the track [0, length]: error (check fails) or "
-               "zero (perfect track there, with a warning)")}});
+        enumChoice("unit", track::CsvUnit::Metre,
+                   "unit of the irregularity columns (s is always in m); values above 0.1 m are "
+                   "refused as implausible"),
+        enumChoice("beyond", track::Beyond::Error,
+                   "where the file does not cover the track [0, length]")}});
+}
 
+// profiles{} and contact{} (paper Table 1, sections 2.3-2.5).
+void addContactBlocks(std::vector<BlockSpec>& s) {
   s.push_back(
       {"profiles",
        "Wheel and rail profiles and their positioning (paper Table 1). Built-in profiles: S1002 "
@@ -206,49 +222,50 @@ std::vector<BlockSpec> build() {
               "\"s1002\" or a wheel profile file (.prw or two-column text) below the scenario"),
         typed("rail", ValueType::String, "-",
               "\"60e1\" or a rail profile file (.prr or two-column text) below the scenario"),
-        num("back_to_back", "m", 1.36, "back-to-back distance B (Lw = B/2 + 70 mm for S1002)", 1.3,
-            1.5),
-        num("gauge", "m", 1.435, "track gauge G, 14 mm below the rail top (sets Lr)", 1.0, 2.0),
+        num("back_to_back", "m", 1.36, "back-to-back distance B (Lw = B/2 + 70 mm for S1002)",
+            dynamics::kBackToBackRange),
+        num("gauge", "m", 1.435, "track gauge G, 14 mm below the rail top (sets Lr)",
+            dynamics::kGaugeRange),
         num("r0", "m", 0.46,
             "nominal rolling radius (Manchester vehicle 1: 0.46 m; paper Table 1: "
             "0.457 m)",
-            0.2, 0.7),
-        num("inclination", "rad", 0.025, "rail inclination beta (1:40 = 0.025)", 0, 0.1),
-        num("lw", "m", 0, "explicit Lw, 0 = from back_to_back (paper Table 1: 0.7515)", 0, 1.0),
-        num("lr", "m", 0, "explicit Lr, 0 = from gauge (paper Table 1: 0.7555)", 0, 1.0),
+            dynamics::kR0Range),
+        num("inclination", "rad", 0.025, "rail inclination beta (1:40 = 0.025)",
+            dynamics::kInclinationRange),
+        num("lw", "m", 0, "explicit Lw, 0 = from back_to_back (paper Table 1: 0.7515)",
+            dynamics::kLwRange),
+        num("lr", "m", 0, "explicit Lr, 0 = from gauge (paper Table 1: 0.7555)",
+            dynamics::kLrRange),
         boolean("refined_tables", false, "use the refined LUT/KEC grids of paper Tables 9-10")}});
   s.push_back(
       {"contact",
        "Wheel/rail contact: constraint method (paper section 2.3-2.4), LUT flange Hertz contact "
        "(Table 3, Eq. 20), tangential forces (section 2.5).",
-       {choice("method", {"kec", "lut"}, "kec",
-               "kec: knife-edge equivalent contact; lut: contact lookup table with Hertz flange"),
-        num("dhat", "m", 0.5e-3, "KEC tread-flange transition length on the flange side", 0, 0.01,
-            true),
-        num("dbar", "m", 1e-3, "KEC tread-flange transition length on the tread side", 0, 0.01,
-            true),
-        num("flange_stiffness", "N/m^1.5", 1e10, "LUT Hertz flange stiffness K (Table 3)", 0, 1e15,
-            true),
+       {enumChoice("method", dynamics::ContactMethod::Kec, "constraint contact method"),
+        num("dhat", "m", 0.5e-3, "KEC tread-flange transition length on the flange side",
+            dynamics::kKecTransitionRange),
+        num("dbar", "m", 1e-3, "KEC tread-flange transition length on the tread side",
+            dynamics::kKecTransitionRange),
+        num("flange_stiffness", "N/m^1.5", 1e10, "LUT Hertz flange stiffness K (Table 3)",
+            dynamics::kFlangeStiffnessRange),
         num("flange_damping", "N s/m^2", -1, "LUT flange damping D; default K/100 as in Table 3",
-            -1, 1e14),
-        choice("creep", {"polach", "kalker", "none"}, "polach",
-               "tangential force law (paper: Polach)"),
-        num("mu", "-", 0.2364, "friction coefficient (paper section 5.1)", 0, 1),
-        num("youngs_modulus", "Pa", 2.1e11, "Young's modulus of wheel and rail", 1e9, 1e12),
-        num("poisson", "-", 0.28, "Poisson ratio", 0, 0.5),
-        choice("normal_forces", {"lagged", "consistent"}, "consistent",
-               "normal forces for creep: solved together with them (converges under step "
-               "refinement) or the previous evaluation's (the paper, section 2.5)"),
-        choice("wheelset_spin", {"free", "prescribed"}, "free",
-               "free: the wheelset spin is a degree of freedom driven by creep (stiff, needs "
-               "ABM steps < 0.5 ms at 20 m/s); prescribed: spin rate V(t)/r_c (constant "
-               "rotational speed, the spin torque is a reaction), stable with ABM at 1 ms"),
+            dynamics::kFlangeDampingRange),
+        enumChoice("creep", dynamics::CreepModel::Polach, "tangential force law (paper: Polach)"),
+        num("mu", "-", 0.2364, "friction coefficient (paper section 5.1)", dynamics::kMuRange),
+        num("youngs_modulus", "Pa", 2.1e11, "Young's modulus of wheel and rail",
+            dynamics::kYoungsModulusRange),
+        num("poisson", "-", 0.28, "Poisson ratio", dynamics::kPoissonRange),
+        enumChoice("normal_forces", dynamics::NormalForceCoupling::Consistent,
+                   "normal forces the creep forces use"),
+        enumChoice("wheelset_spin", dynamics::WheelsetSpin::Free, "wheelset spin"),
         num("min_normal_force", "N", 0,
             "a wheel whose constraint normal force falls below this stops the run (exit 2): a "
             "constraint contact cannot lift the wheel, so results past wheel lift are not "
             "physical",
-            0, 1e7)}});
+            dynamics::kMinNormalForceRange)}});
+}
 
+void addVehicleBlocks(std::vector<BlockSpec>& s) {
   // Vehicle: bodies in track-frame coordinates and suspension elements (Appendix A).
   s.push_back(
       {"vehicle",
@@ -266,16 +283,13 @@ std::vector<BlockSpec> build() {
         num("wheel_radius", "m", 0.46, "nominal rolling radius r0 of the wheelsets", 0.2, 0.7),
         num("start", "m", 0, "arc length of the vehicle reference point at t = 0", 0),
         required(blockKey("bodies", ValueType::BlockList, {"body"}, "rigid bodies")),
-        blockKey("elements", ValueType::BlockList,
-                 {"spring_damper", "series_damper", "shear_spring", "bending_spring", "bumpstop"},
+        blockKey("elements", ValueType::BlockList, namesOf<vehicle::ElementKind>(),
                  "suspension elements")}});
   s.push_back(
       {"body",
        "A rigid body.",
        {typed("name", ValueType::String, "-", "unique body name", true),
-        choice("kind", {"car", "bogie", "wheelset", "frame"}, "car",
-               "car body, bogie frame, wheelset, or a frame that follows the track "
-               "centreline kinematically"),
+        enumChoice("kind", vehicle::BodyKind::CarBody, "what the body is"),
         required(num("mass", "kg", 0, "mass", 0, kInf, true)),
         typed("inertia", ValueType::Vec3, "kg m^2", "principal inertias {Ixx, Iyy, Izz}", true),
         num("x", "m", 0, "longitudinal position of the centre of mass, positive forward"),
@@ -288,17 +302,16 @@ std::vector<BlockSpec> build() {
         typed("to", ValueType::String, "-", "second body", true),
         typed("at_from", ValueType::Vec3, "m", "attachment point in the master body's frame"),
         typed("at_to", ValueType::Vec3, "m", "attachment point in the second body's frame"),
-        choice("direction", {"axial", "x", "y", "z"}, "axial",
-               "axial: along the line between the points (Eq. 30); x/y/z: that component of the "
-               "relative displacement in the master track frame (bending: rotation axis)")};
+        enumChoice("direction", vehicle::Direction::Axial, "how the deformation is measured")};
     for (auto& e : extra) keys.push_back(std::move(e));
     return keys;
   };
-  s.push_back({"spring_damper", "Spring and damper in parallel: f = K d + D d_dot (Appendix A).",
+  s.push_back({std::string(nameOf(vehicle::ElementKind::SpringDamper)),
+               "Spring and damper in parallel: f = K d + D d_dot (Appendix A).",
                elementKeys({num("stiffness", "N/m", 0, "K", 0), num("damping", "N s/m", 0, "D", 0),
                             num("length0", "m", 0, "undeformed length (axial)", 0),
                             num("preload", "N", 0, "force at zero deformation")})});
-  s.push_back({"series_damper",
+  s.push_back({std::string(nameOf(vehicle::ElementKind::SeriesSpringDamper)),
                "Damper D in series with a spring K_series: f_dot + (K_series/D) f = K_series d_dot "
                "(Appendix A); f is a state.",
                elementKeys({required(num("damping", "N s/m", 0, "D", 0, kInf, true)),
@@ -306,18 +319,22 @@ std::vector<BlockSpec> build() {
                             num("stiffness", "N/m", 0, "optional spring K in parallel", 0),
                             num("preload", "N", 0, "force at zero deformation"),
                             num("length0", "m", 0, "undeformed length (axial)", 0)})});
-  s.push_back({"shear_spring", "Shear spring: f = K_shear d (Appendix A).",
+  s.push_back({std::string(nameOf(vehicle::ElementKind::ShearSpring)),
+               "Shear spring: f = K_shear d (Appendix A).",
                elementKeys({required(num("stiffness", "N/m", 0, "K_shear", 0)),
                             num("preload", "N", 0, "force at zero deformation")})});
-  s.push_back({"bending_spring", "Bending spring: M = K_bend theta (Appendix A).",
+  s.push_back({std::string(nameOf(vehicle::ElementKind::BendingSpring)),
+               "Bending spring: M = K_bend theta (Appendix A).",
                elementKeys({required(num("stiffness", "N m/rad", 0, "K_bend", 0))})});
-  s.push_back({"bumpstop",
+  s.push_back({std::string(nameOf(vehicle::ElementKind::Bumpstop)),
                "Nonlinear bumpstop: force from a cubic spline through a table of deformation and "
                "force (paper Table 4, Fig. 27), symmetric in the sign of d.",
                elementKeys({typed(
                    "table", ValueType::PairList, "m, N",
                    "{{d, F}, ...} with d increasing, e.g. {{0.025, 0}, {0.030, 600}}", true)})});
+}
 
+void addStudyBlock(std::vector<BlockSpec>& s) {
   s.push_back(
       {"study",
        "A study: a matrix of variations over a base scenario. `workbench study FILE` "
@@ -337,29 +354,56 @@ std::vector<BlockSpec> build() {
                 "largest number of cases (matrix combinations x cases) the study may expand to; "
                 "a bigger study is refused before anything runs",
                 1, 100000000)}});
+}
 
+// "dopri5, bdf, ida": the registry's methods that use the solver{} key `key`.
+std::string methodsUsing(const std::string& key) {
+  std::vector<std::string> out;
+  for (const auto& m : integ::methods())
+    for (const auto& o : m.options)
+      if (o.key == key) out.push_back(m.name);
+  return join(out, ", ");
+}
+
+// "rk4, abm": the registry's fixed-step methods.
+std::string fixedStepMethods() {
+  std::vector<std::string> out;
+  for (const auto& m : integ::methods())
+    if (m.fixed_step) out.push_back(m.name);
+  return join(out, ", ");
+}
+
+// solver{}: the methods, their descriptions and options from the integrator registry.
+void addSolverBlock(std::vector<BlockSpec>& s) {
   std::vector<std::string> methodNames;
   std::string methodHelp = "integrator:";
   for (const auto& m : integ::methods()) {
     methodNames.push_back(m.name);
     methodHelp += " " + m.name + " = " + m.description + ";";
   }
-  KeySpec jac = choice("jacobian", {"auto", "fd"}, "auto",
-                       "bdf: model's analytic Jacobian if it has one (auto) or finite differences");
+  KeySpec jac = enumChoice(
+      "jacobian", integ::JacobianMode::Auto,
+      "where the Newton iterations take the Jacobian from (" + methodsUsing("jacobian") + ")");
   s.push_back(
       {"solver",
        "Time integrator (paper section 4) and its options.",
-       {choice("method", methodNames, "abm", methodHelp),
+       {choice("method", methodNames, integ::SolverSpec{}.method, methodHelp),
         num("step", "s", 1e-3,
-            "fixed step (rk4, abm); for adaptive methods the initial step, automatic "
-            "when not given",
+            "fixed step (" + fixedStepMethods() +
+                "); for adaptive methods the initial step, automatic when not given",
             0, 1.0),
-        openRange(num("rtol", "-", 1e-6, "relative tolerance (dopri5, bdf, ida)", 0, 1, true)),
-        num("atol", "-", 1e-6, "absolute tolerance in state units (dopri5, bdf, ida)", 0, kInf,
-            true),
-        num("max_step", "s", 0, "largest step, 0 = unlimited (dopri5, bdf, ida)", 0),
-        integer("max_order", 5, "maximum BDF order (bdf, ida)", 1, 5),
+        num("rtol", "-", 1e-6, "relative tolerance (" + methodsUsing("rtol") + ")",
+            integ::kRtolRange),
+        num("atol", "-", 1e-6, "absolute tolerance in state units (" + methodsUsing("atol") + ")",
+            integ::kAtolRange),
+        num("max_step", "s", 0, "largest step, 0 = unlimited (" + methodsUsing("max_step") + ")",
+            0),
+        integer("max_order", 5, "maximum BDF order (" + methodsUsing("max_order") + ")",
+                integ::kMaxOrderRange.min, integ::kMaxOrderRange.max),
         integer("max_steps", 0, "internal steps per output interval, 0 = default", 0, 1e12), jac}});
+}
+
+void addRunBlocks(std::vector<BlockSpec>& s) {
   s.push_back({"run",
                "What to simulate and what to write.",
                {num("distance", "m", 0, "distance to travel, 0 = to the end of the track", 0),
@@ -376,6 +420,17 @@ std::vector<BlockSpec> build() {
                     "largest number of output times a run may write (a bound on memory and "
                     "disk; raise it for long, finely sampled runs)",
                     1, 1e12)}});
+}
+
+std::vector<BlockSpec> build() {
+  std::vector<BlockSpec> s;
+  addTrackBlocks(s);
+  addIrregularityBlocks(s);
+  addContactBlocks(s);
+  addVehicleBlocks(s);
+  addStudyBlock(s);
+  addSolverBlock(s);
+  addRunBlocks(s);
   return s;
 }
 
@@ -438,6 +493,47 @@ const char* typeText(ValueType t) {
 }
 }  // namespace
 
+std::optional<std::string> rangeProblem(const KeySpec& k, double x) {
+  const std::string u = (k.unit.empty() || k.unit == "-") ? "" : " " + k.unit;
+  if (!std::isfinite(x)) return "finite, got " + formatNumber(x);
+  if (k.min_exclusive ? !(x > k.min) : !(x >= k.min))
+    return std::string(k.min_exclusive ? "> " : ">= ") + formatNumber(k.min) + u + ", got " +
+           formatNumber(x);
+  if (k.max_exclusive ? !(x < k.max) : !(x <= k.max))
+    return std::string(k.max_exclusive ? "< " : "<= ") + formatNumber(k.max) + u + ", got " +
+           formatNumber(x);
+  return std::nullopt;
+}
+
+namespace {
+
+// One key of the reference: type, unit, default, range, help, choices and constructors.
+void writeKey(std::ostream& os, const KeySpec& k) {
+  os << "  " << k.name << " (" << typeText(k.type);
+  if (!k.unit.empty() && k.unit != "-") os << ", " << k.unit;
+  os << ")";
+  if (k.required)
+    os << " required";
+  else if (!k.def.empty())
+    os << " default " << k.def;
+  const bool numeric = k.type == ValueType::Number || k.type == ValueType::Integer;
+  if (numeric && (k.min > -kInf || k.max < kInf))
+    os << ", range " << (k.min_exclusive ? "(" : "[") << formatNumber(k.min) << ", "
+       << formatNumber(k.max) << (k.max < kInf && !k.max_exclusive ? "]" : ")");
+  os << "\n      " << k.help << "\n";
+  if (!k.choices.empty()) os << "      one of: " << join(k.choices, " ") << "\n";
+  for (std::size_t i = 0; i < k.choice_help.size() && i < k.choices.size(); ++i)
+    if (!k.choice_help[i].empty())
+      os << "        " << k.choices[i] << ": " << k.choice_help[i] << "\n";
+  if (!k.kinds.empty()) {
+    os << "      made by:";
+    for (const auto& c : k.kinds) os << " " << c << "{}";
+    os << "\n";
+  }
+}
+
+}  // namespace
+
 std::string referenceText() {
   std::ostringstream os;
   os << "Scenario reference (generated from the schema the validator uses).\n"
@@ -448,32 +544,7 @@ std::string referenceText() {
     os << "\n"
        << b.name << (b.name.find('.') == std::string::npos ? " { ... }" : " = { ... }") << "\n  "
        << b.help << "\n";
-    for (const auto& k : b.keys) {
-      os << "  " << k.name << " (" << typeText(k.type);
-      if (!k.unit.empty() && k.unit != "-") os << ", " << k.unit;
-      os << ")";
-      if (k.required)
-        os << " required";
-      else if (!k.def.empty())
-        os << " default " << k.def;
-      if (k.type == ValueType::Number || k.type == ValueType::Integer) {
-        if (k.min > -kInf || k.max < kInf) {
-          os << ", range " << (k.min_exclusive ? "(" : "[") << k.min << ", " << k.max
-             << (k.max < kInf && !k.max_exclusive ? "]" : ")");
-        }
-      }
-      os << "\n      " << k.help << "\n";
-      if (!k.choices.empty()) {
-        os << "      one of:";
-        for (const auto& c : k.choices) os << " " << c;
-        os << "\n";
-      }
-      if (!k.kinds.empty()) {
-        os << "      made by:";
-        for (const auto& c : k.kinds) os << " " << c << "{}";
-        os << "\n";
-      }
-    }
+    for (const auto& k : b.keys) writeKey(os, k);
   }
   return os.str();
 }

@@ -3,6 +3,7 @@
 // validation (reader.hpp) and the generated reference (`workbench help scenario`), in the manner
 // of Snort 3 / LOVE module schemas (architecture.md).
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,10 +36,11 @@ struct KeySpec {
   bool min_exclusive = false;  // min < value rather than min <= value
   bool max_exclusive = false;  // value < max rather than value <= max
   bool required = false;
-  std::vector<std::string> choices;  // Choice, StringList
-  std::vector<std::string> kinds;    // constructors allowed for Block, BlockList
-  std::string sub;                   // Block given as a plain table: schema block name
-  double num_default = 0.0;          // numeric default used by the reader
+  std::vector<std::string> choices;      // Choice, StringList
+  std::vector<std::string> choice_help;  // one line per choice (empty: none), from its name table
+  std::vector<std::string> kinds;        // constructors allowed for Block, BlockList
+  std::string sub;                       // Block given as a plain table: schema block name
+  double num_default = 0.0;              // numeric default used by the reader
 };
 
 struct BlockSpec {
@@ -51,6 +53,10 @@ struct BlockSpec {
 
 const std::vector<BlockSpec>& schema();
 const BlockSpec& block(const std::string& name);  // throws std::logic_error if unknown
+
+// What is wrong with `x` as a value of the number key `k` ("finite, got inf", ">= 0 m, got -1",
+// "< 1, got 1"), nullopt when it lies in the key's range: the one range check of the scenario.
+std::optional<std::string> rangeProblem(const KeySpec& k, double x);
 
 // Reference text of every block and key (workbench help scenario).
 std::string referenceText();

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -21,15 +22,9 @@ namespace {
 
 // A scalar as it would be typed after --set key=.
 bool scalarText(const Node& n, std::string& out) {
-  char buf[64];
   switch (n.type) {
     case Node::Type::Number:
-      // Shortest text that reads back as the same double.
-      for (int prec = 6; prec <= 17; ++prec) {
-        std::snprintf(buf, sizeof buf, "%.*g", prec, n.number);
-        if (std::strtod(buf, nullptr) == n.number) break;
-      }
-      out = buf;
+      out = formatNumberExact(n.number);
       return true;
     case Node::Type::String:
       out = n.string;
@@ -53,9 +48,7 @@ std::uint64_t fnv1a(const std::string& s) {
 
 // A number as short text: 1e-06 -> 1e-6, 0.00025 -> 0.00025.
 std::string compact(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  std::string t = buf;
+  std::string t = formatNumber(v);
   for (const char* e : {"e-0", "e+0", "e+"}) {
     auto p = t.find(e);
     if (p != std::string::npos) t.replace(p, std::string(e).size(), e[1] == '-' ? "e-" : "e");
@@ -126,149 +119,150 @@ std::string caseLabel(const std::vector<std::string>& overrides) {
   return parts.empty() ? "base" : join(parts, " ");
 }
 
-StudySpec loadStudy(const std::string& path, const std::string& root) {
-  HostOptions ho;
-  ho.root = root;
-  LuaHost host(ho);
-  Node top = host.runFile(path);
-  Diagnostics d;
-  StudySpec st;
-  st.file = path;
-  const Node* n = top.field("study");
-  if (!n) throw InputError({path, 0}, "study file has no study { ... } block");
-  st.loc = n->loc;
+namespace {
+
+using ErrorFn = std::function<void(const std::string&)>;
+using Axes = std::vector<std::pair<std::string, std::vector<std::string>>>;
+
+// An entry of `cases`: overrides plus the study keys label, base (as written and resolved), role.
+struct Variant {
+  std::vector<std::string> overrides;
+  std::string label, base, baseResolved, role;
+};
+
+// A base scenario path relative to the study file (else as given); "" when not found.
+std::string resolveBase(const std::string& studyPath, const std::string& name) {
+  fs::path p = fs::path(studyPath).parent_path() / name;
+  if (!fs::is_regular_file(p)) p = fs::path(name);
+  return fs::is_regular_file(p) ? p.lexically_normal().string() : std::string();
+}
+
+// Unknown keys of study{} and blocks that belong in the base scenario.
+void checkStudyKeys(const Node& top, const Node& n, Diagnostics& d, const ErrorFn& err) {
   const BlockSpec& bs = block("study");
-  auto err = [&](const std::string& m) { d.add(n->loc, "study: " + m); };
-  for (const auto& [k, v] : n->fields) {
+  for (const auto& [k, v] : n.fields) {
     if (bs.key(k)) continue;
     std::string hint = closestMatch(k, bs.keyNames());
     err("unknown key '" + k + "'" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
   }
   for (const auto& [k, v] : top.fields)
     if (k != "study") d.add(v.loc, k + " block in a study file: put it in the base scenario");
+}
 
-  // A base scenario path relative to the study file (else as given); "" when not found.
-  auto resolve = [&](const std::string& name) {
-    fs::path p = fs::path(path).parent_path() / name;
-    if (!fs::is_regular_file(p)) p = fs::path(name);
-    return fs::is_regular_file(p) ? p.lexically_normal().string() : std::string();
-  };
-  const Node* base = n->field("base");
-  if (!base || base->type != Node::Type::String) {
-    err("base must name the base scenario file");
+// A whole-number key of study{} in its schema range; the schema's default if absent or wrong.
+int wholeNumber(const Node& n, const char* key, const ErrorFn& err) {
+  const KeySpec& k = *block("study").key(key);
+  const int def = static_cast<int>(k.num_default);
+  const Node* v = n.field(key);
+  if (!v) return def;
+  // Range first: converting a double beyond int's range is undefined.
+  if (v->type != Node::Type::Number || !(v->number >= k.min && v->number <= k.max) ||
+      v->number != std::floor(v->number)) {
+    err(std::string(key) + " must be a whole number in [" + formatNumber(k.min, 17) + ", " +
+        formatNumber(k.max, 17) + "]");
+    return def;
+  }
+  return static_cast<int>(v->number);
+}
+
+// Matrix: ordered keys (Node fields are sorted), each a list of scalars.
+Axes readMatrix(const Node& n, const ErrorFn& err) {
+  Axes axes;
+  const Node* m = n.field("matrix");
+  if (!m) return axes;
+  if (m->type != Node::Type::Table || !m->items.empty())
+    err("matrix must be { [\"key\"] = {values...}, ... }");
+  for (const auto& [k, v] : m->fields) {
+    if (v.type != Node::Type::Table || !v.fields.empty() || v.items.empty()) {
+      err("matrix[\"" + k + "\"] must be a non-empty list of values");
+      continue;
+    }
+    std::vector<std::string> vals;
+    for (const auto& item : v.items) {
+      std::string t;
+      if (!scalarText(item, t))
+        err("matrix[\"" + k + "\"]: values must be numbers, strings or booleans");
+      vals.push_back(t);
+    }
+    axes.emplace_back(k, vals);
+  }
+  return axes;
+}
+
+// One study key or --set path of an entry of `cases`.
+void readCaseKey(const std::string& where, const std::string& k, const std::string& t,
+                 const std::string& studyPath, Variant& var, const ErrorFn& err) {
+  if (k.find('.') != std::string::npos) {
+    var.overrides.push_back(k + "=" + t);
+  } else if (k == "label") {
+    var.label = t;
+  } else if (k == "role") {
+    if (std::find(kRoles.begin(), kRoles.end(), t) == kRoles.end())
+      err(where + ": role must be one of " + join(kRoles, ", ") + ", got '" + t + "'");
+    var.role = t;
+  } else if (k == "base") {
+    var.base = t;
+    var.baseResolved = resolveBase(studyPath, t);
+    if (var.baseResolved.empty())
+      err(where + ": base scenario '" + t + "' not found (relative to the study file)");
   } else {
-    st.base = resolve(base->string);
-    if (st.base.empty())
-      err("base scenario '" + base->string + "' not found (relative to the study file)");
+    std::string hint = closestMatch(k, kCaseKeys);
+    err(where + ": unknown key '" + k + "'" +
+        (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
+        "; keys are --set paths block.key, or label, base, role");
   }
-  auto intKey = [&](const char* key, int def, int lo, int hi) {
-    const Node* v = n->field(key);
-    if (!v) return def;
-    // Range first: converting a double beyond int's range is undefined.
-    if (v->type != Node::Type::Number || !(v->number >= lo && v->number <= hi) ||
-        v->number != std::floor(v->number)) {
-      err(std::string(key) + " must be a whole number in [" + std::to_string(lo) + ", " +
-          std::to_string(hi) + "]");
-      return def;
-    }
-    return static_cast<int>(v->number);
-  };
-  st.repeats = intKey("repeats", 1, 1, 100);
-  st.jobs = intKey("jobs", 0, 0, 64);
-  st.max_cases = intKey("max_cases", static_cast<int>(StudySpec::kDefaultMaxCases), 1, 100000000);
+}
 
-  // Matrix: ordered keys (Node fields are sorted), each a list of scalars.
-  std::vector<std::pair<std::string, std::vector<std::string>>> axes;
-  if (const Node* m = n->field("matrix")) {
-    if (m->type != Node::Type::Table || !m->items.empty())
-      err("matrix must be { [\"key\"] = {values...}, ... }");
-    for (const auto& [k, v] : m->fields) {
-      std::vector<std::string> vals;
-      if (v.type != Node::Type::Table || !v.fields.empty() || v.items.empty()) {
-        err("matrix[\"" + k + "\"] must be a non-empty list of values");
-        continue;
-      }
-      for (const auto& item : v.items) {
-        std::string t;
-        if (!scalarText(item, t))
-          err("matrix[\"" + k + "\"]: values must be numbers, strings or booleans");
-        vals.push_back(t);
-      }
-      axes.emplace_back(k, vals);
-    }
-  }
-  // Explicit cases: overrides plus the study keys label, base (as written and resolved), role.
-  struct Variant {
-    std::vector<std::string> overrides;
-    std::string label, base, baseResolved, role;
-  };
+// Explicit cases; one empty variant when there are none.
+std::vector<Variant> readCases(const Node& n, const std::string& studyPath, const ErrorFn& err) {
   std::vector<Variant> variants;
-  if (const Node* c = n->field("cases")) {
+  if (const Node* c = n.field("cases")) {
     if (c->type != Node::Type::Table || !c->fields.empty()) err("cases must be a list of tables");
     for (std::size_t i = 0; i < c->items.size(); ++i) {
       const Node& item = c->items[i];
       const std::string where = "cases[" + std::to_string(i + 1) + "]";
-      Variant var;
       if (item.type != Node::Type::Table || !item.items.empty()) {
         err(where + " must be { [\"key\"] = value, ... }");
         continue;
       }
+      Variant var;
       for (const auto& [k, v] : item.fields) {
         std::string t;
-        if (!scalarText(v, t)) {
+        if (scalarText(v, t))
+          readCaseKey(where, k, t, studyPath, var, err);
+        else
           err(where + "[\"" + k + "\"] must be a scalar");
-          continue;
-        }
-        if (k.find('.') != std::string::npos) {
-          var.overrides.push_back(k + "=" + t);
-        } else if (k == "label") {
-          var.label = t;
-        } else if (k == "role") {
-          if (std::find(kRoles.begin(), kRoles.end(), t) == kRoles.end())
-            err(where + ": role must be one of " + join(kRoles, ", ") + ", got '" + t + "'");
-          var.role = t;
-        } else if (k == "base") {
-          var.base = t;
-          var.baseResolved = resolve(t);
-          if (var.baseResolved.empty())
-            err(where + ": base scenario '" + t + "' not found (relative to the study file)");
-        } else {
-          std::string hint = closestMatch(k, kCaseKeys);
-          err(where + ": unknown key '" + k + "'" +
-              (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
-              "; keys are --set paths block.key, or label, base, role");
-        }
       }
       variants.push_back(var);
     }
   }
   if (variants.empty()) variants.push_back({});
-  d.throwIfAny();
+  return variants;
+}
 
-  // The number of cases before expanding them: a matrix of a few long axes multiplies to more
-  // cases than memory holds (each a list of strings), so it is refused here, with the sizes.
-  {
-    const auto where = [&]() {
-      const Node* m = n->field("matrix");
-      return m ? m->loc : n->loc;
-    }();
-    double count = static_cast<double>(variants.size());
-    std::string sizes;
-    for (const auto& [k, vals] : axes) {
-      count *= static_cast<double>(vals.size());
-      sizes += std::to_string(vals.size()) + " x ";
-    }
-    sizes += std::to_string(variants.size());
-    if (count > static_cast<double>(st.max_cases)) {
-      char buf[32];
-      std::snprintf(buf, sizeof buf, "%.0f", count);
-      throw InputError(where, "study: " + std::string(buf) + " cases (" + sizes +
-                                  ") exceed max_cases = " + std::to_string(st.max_cases) +
-                                  "; raise study.max_cases if that many are meant");
-    }
+// The number of cases before expanding them: a matrix of a few long axes multiplies to more
+// cases than memory holds (each a list of strings), so it is refused here, with the sizes.
+void checkCaseCount(const Node& n, const Axes& axes, std::size_t variants, long long maxCases) {
+  const Node* m = n.field("matrix");
+  const SourceLoc where = m ? m->loc : n.loc;
+  double count = static_cast<double>(variants);
+  std::string sizes;
+  for (const auto& [k, vals] : axes) {
+    count *= static_cast<double>(vals.size());
+    sizes += std::to_string(vals.size()) + " x ";
   }
+  sizes += std::to_string(variants);
+  if (count > static_cast<double>(maxCases)) {
+    char buf[32];  // a whole number of any size, never in exponent form
+    std::snprintf(buf, sizeof buf, "%.0f", count);
+    throw InputError(where, "study: " + std::string(buf) + " cases (" + sizes +
+                                ") exceed max_cases = " + std::to_string(maxCases) +
+                                "; raise study.max_cases if that many are meant");
+  }
+}
 
-  // Cartesian product: matrix combinations (first key slowest) x explicit variants.
+// Cartesian product of the matrix axes (first key slowest).
+std::vector<std::vector<std::string>> combinations(const Axes& axes) {
   std::vector<std::vector<std::string>> combos = {{}};
   for (const auto& [k, vals] : axes) {
     std::vector<std::vector<std::string>> next;
@@ -280,34 +274,12 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
       }
     combos = next;
   }
-  std::set<std::string> ids;
-  std::vector<std::string> given;                    // label given in the case, per case
-  std::vector<std::vector<std::string>> matrixPart;  // its matrix overrides
-  for (const auto& c : combos)
-    for (const auto& v : variants) {
-      StudyCase sc;
-      sc.overrides = c;
-      sc.overrides.insert(sc.overrides.end(), v.overrides.begin(), v.overrides.end());
-      sc.base = v.base.empty() ? st.base : v.baseResolved;
-      sc.role = v.role;
-      given.push_back(v.label);
-      matrixPart.push_back(c);
-      // Named by its overrides (and its own base) only, so adding values to a study, or
-      // relabelling, keeps old results resumable.
-      std::string key = join(sc.overrides, ";");
-      if (!v.base.empty()) key += ";base=" + v.base;
-      char buf[32];
-      std::snprintf(buf, sizeof buf, "case_%016llx", static_cast<unsigned long long>(fnv1a(key)));
-      sc.id = buf;
-      if (!ids.insert(sc.id).second)
-        d.add(n->loc, "study: two cases have the same overrides and base (" +
-                          (v.label.empty() ? join(sc.overrides, " ") : v.label) +
-                          "); give them different values");
-      st.cases.push_back(sc);
-    }
-  d.throwIfAny();
+  return combos;
+}
 
-  // Labels: overrides shared by every case (e.g. run.distance) are left out of the made ones.
+// Labels: overrides shared by every case (e.g. run.distance) are left out of the made ones.
+void labelCases(StudySpec& st, const std::vector<std::string>& given,
+                const std::vector<std::vector<std::string>>& matrixPart) {
   std::vector<std::string> common;
   if (st.cases.size() > 1)
     for (const auto& o : st.cases[0].overrides) {
@@ -331,6 +303,68 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
     else
       sc.label = given[i];
   }
+}
+
+}  // namespace
+
+StudySpec loadStudy(const std::string& path, const std::string& root) {
+  HostOptions ho;
+  ho.root = root;
+  LuaHost host(ho);
+  Node top = host.runFile(path);
+  Diagnostics d;
+  StudySpec st;
+  st.file = path;
+  const Node* n = top.field("study");
+  if (!n) throw InputError({path, 0}, "study file has no study { ... } block");
+  st.loc = n->loc;
+  const ErrorFn err = [&](const std::string& m) { d.add(n->loc, "study: " + m); };
+  checkStudyKeys(top, *n, d, err);
+
+  const Node* base = n->field("base");
+  if (!base || base->type != Node::Type::String) {
+    err("base must name the base scenario file");
+  } else {
+    st.base = resolveBase(path, base->string);
+    if (st.base.empty())
+      err("base scenario '" + base->string + "' not found (relative to the study file)");
+  }
+  st.repeats = wholeNumber(*n, "repeats", err);
+  st.jobs = wholeNumber(*n, "jobs", err);
+  st.max_cases = wholeNumber(*n, "max_cases", err);
+  const Axes axes = readMatrix(*n, err);
+  const std::vector<Variant> variants = readCases(*n, path, err);
+  d.throwIfAny();
+  checkCaseCount(*n, axes, variants.size(), st.max_cases);
+
+  // Matrix combinations x explicit variants.
+  std::set<std::string> ids;
+  std::vector<std::string> given;                    // label given in the case, per case
+  std::vector<std::vector<std::string>> matrixPart;  // its matrix overrides
+  for (const auto& c : combinations(axes))
+    for (const auto& v : variants) {
+      StudyCase sc;
+      sc.overrides = c;
+      sc.overrides.insert(sc.overrides.end(), v.overrides.begin(), v.overrides.end());
+      sc.base = v.base.empty() ? st.base : v.baseResolved;
+      sc.role = v.role;
+      given.push_back(v.label);
+      matrixPart.push_back(c);
+      // Named by its overrides (and its own base) only, so adding values to a study, or
+      // relabelling, keeps old results resumable.
+      std::string key = join(sc.overrides, ";");
+      if (!v.base.empty()) key += ";base=" + v.base;
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "case_%016llx", static_cast<unsigned long long>(fnv1a(key)));
+      sc.id = buf;
+      if (!ids.insert(sc.id).second)
+        d.add(n->loc, "study: two cases have the same overrides and base (" +
+                          (v.label.empty() ? join(sc.overrides, " ") : v.label) +
+                          "); give them different values");
+      st.cases.push_back(sc);
+    }
+  d.throwIfAny();
+  labelCases(st, given, matrixPart);
   return st;
 }
 

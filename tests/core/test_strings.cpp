@@ -1,0 +1,57 @@
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "workbench/core/names.hpp"
+#include "workbench/core/range.hpp"
+#include "workbench/core/strings.hpp"
+
+namespace {
+
+enum class Colour { Red, Green };
+constexpr std::array<rb::NameEntry<Colour>, 2> kColourNames = {{
+    {Colour::Red, "red", "warm"},
+    {Colour::Green, "green", ""},
+}};
+constexpr const auto& nameTable(Colour /*tag*/) {
+  return kColourNames;
+}
+
+}  // namespace
+
+TEST(Strings, FormatNumberIsPrintfG) {
+  EXPECT_EQ(rb::formatNumber(0.001), "0.001");
+  EXPECT_EQ(rb::formatNumber(2.1e11), "2.1e+11");
+  EXPECT_EQ(rb::formatNumber(1e-6), "1e-06");
+  EXPECT_EQ(rb::formatNumber(0.123456789), "0.123457");
+  EXPECT_EQ(rb::formatNumber(0.123456789, 3), "0.123");
+  EXPECT_EQ(rb::formatNumber(std::numeric_limits<double>::infinity()), "inf");
+}
+
+TEST(Strings, FormatNumberExactReadsBack) {
+  EXPECT_EQ(rb::formatNumberExact(0.1), "0.1");
+  for (double v : {1.0 / 3.0, 2.0 / 7.0, 1e-300, 123456789.123})
+    EXPECT_EQ(std::strtod(rb::formatNumberExact(v).c_str(), nullptr), v);
+}
+
+TEST(Names, TableLookups) {
+  static_assert(rb::nameOf(Colour::Green) == "green");
+  static_assert(rb::parse<Colour>("red") == Colour::Red);
+  static_assert(!rb::parse<Colour>("blue").has_value());
+  EXPECT_EQ(rb::namesOf<Colour>(), (std::vector<std::string>{"red", "green"}));
+  EXPECT_EQ(rb::helpOf<Colour>(), "red: warm");
+}
+
+TEST(Range, ContainsAndText) {
+  const rb::Range closed{0.0, 0.5};
+  const rb::Range open{0.0, 1.0, true, true};
+  EXPECT_TRUE(closed.contains(0.5));
+  EXPECT_FALSE(open.contains(1.0));
+  EXPECT_FALSE(open.contains(0.0));
+  EXPECT_FALSE(closed.contains(std::nan("")));
+  EXPECT_EQ(closed.text(), "[0, 0.5]");
+  EXPECT_EQ(open.text(), "(0, 1)");
+  EXPECT_EQ((rb::Range{0.0, std::numeric_limits<double>::infinity(), true}).text(), "(0, inf)");
+}

@@ -1,0 +1,25 @@
+#pragma once
+// Admissible ranges of the profiles{} and contact{} parameters (ProfilesSpec, ContactSpec): the
+// scenario schema shows and checks them, compileContact guards its inputs with the same ones.
+#include "workbench/core/range.hpp"
+
+namespace rb::dynamics {
+
+// Positioning (paper Table 1, EN 13715 / EN 13674-1 profiles).
+inline constexpr Range kBackToBackRange{1.3, 1.5};  // [m] B
+inline constexpr Range kGaugeRange{1.0, 2.0};       // [m] G, 14 mm below the rail top
+inline constexpr Range kR0Range{0.2, 0.7};          // [m] nominal rolling radius
+inline constexpr Range kInclinationRange{0.0, 0.1};  // [rad] beta (1:40 = 0.025)
+inline constexpr Range kLwRange{0.0, 1.0};           // [m] explicit Lw, 0 = from back_to_back
+inline constexpr Range kLrRange{0.0, 1.0};           // [m] explicit Lr, 0 = from gauge
+
+// Contact (paper sections 2.4, 2.5, Table 3).
+inline constexpr Range kKecTransitionRange{0.0, 0.01, true};    // [m] dhat, dbar
+inline constexpr Range kFlangeStiffnessRange{0.0, 1e15, true};  // [N/m^1.5] K
+inline constexpr Range kFlangeDampingRange{-1.0, 1e14};         // [N s/m^2] D, < 0: K/100
+inline constexpr Range kMuRange{0.0, 1.0};                      // [-]
+inline constexpr Range kYoungsModulusRange{1e9, 1e12};          // [Pa]
+inline constexpr Range kPoissonRange{0.0, 0.5};                 // [-]
+inline constexpr Range kMinNormalForceRange{0.0, 1e7};          // [N]
+
+}  // namespace rb::dynamics

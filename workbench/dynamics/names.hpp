@@ -1,0 +1,49 @@
+#pragma once
+// Names of the contact model's choices (scenario keywords of contact{}, HDF5 attributes of
+// /contact, effect labels of studies), one table per enum of dynamics/spec.hpp (core/names.hpp).
+#include <array>
+
+#include "workbench/core/names.hpp"
+#include "workbench/dynamics/spec.hpp"
+
+namespace rb::dynamics {
+
+inline constexpr std::array<NameEntry<ContactMethod>, 2> kContactMethodNames = {{
+    {ContactMethod::Kec, "kec", "knife-edge equivalent contact (paper section 2.4)"},
+    {ContactMethod::Lut, "lut", "contact lookup table with Hertz flange contact (Eq. 20)"},
+}};
+constexpr const auto& nameTable(ContactMethod /*tag*/) {
+  return kContactMethodNames;
+}
+
+inline constexpr std::array<NameEntry<CreepModel>, 3> kCreepModelNames = {{
+    {CreepModel::Polach, "polach", "Polach's creep force law (the paper, section 2.5)"},
+    {CreepModel::Kalker, "kalker", "Kalker's linear theory"},
+    {CreepModel::None, "none", "no tangential forces"},
+}};
+constexpr const auto& nameTable(CreepModel /*tag*/) {
+  return kCreepModelNames;
+}
+
+inline constexpr std::array<NameEntry<NormalForceCoupling>, 2> kNormalForceCouplingNames = {{
+    {NormalForceCoupling::Lagged, "lagged", "the previous evaluation's (the paper, section 2.5)"},
+    {NormalForceCoupling::Consistent, "consistent",
+     "solved together with the creep forces (converges under step refinement)"},
+}};
+constexpr const auto& nameTable(NormalForceCoupling /*tag*/) {
+  return kNormalForceCouplingNames;
+}
+
+inline constexpr std::array<NameEntry<WheelsetSpin>, 2> kWheelsetSpinNames = {{
+    {WheelsetSpin::Free, "free",
+     "the wheelset spin is a degree of freedom driven by creep (stiff, needs ABM steps < 0.5 ms "
+     "at 20 m/s)"},
+    {WheelsetSpin::Prescribed, "prescribed",
+     "spin rate V(t)/r_c (constant rotational speed, the spin torque is a reaction), stable with "
+     "ABM at 1 ms"},
+}};
+constexpr const auto& nameTable(WheelsetSpin /*tag*/) {
+  return kWheelsetSpinNames;
+}
+
+}  // namespace rb::dynamics

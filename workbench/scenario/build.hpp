@@ -1,0 +1,20 @@
+#pragma once
+// Builders of the typed Specs, one per top-level block: each reads its block through a Reader
+// (reader.hpp) and adds every problem to the Diagnostics. loadScenario (scenario.cpp) calls them.
+#include "workbench/core/error.hpp"
+#include "workbench/scenario/lua_host.hpp"
+#include "workbench/scenario/node.hpp"
+#include "workbench/scenario/scenario.hpp"
+
+namespace rb::scenario {
+
+// track{} with its segments and irregularities; railsGiven: rail_lr or rail_inclination set.
+void buildTrack(const Node& n, LuaHost& host, track::TrackSpec& t, bool& railsGiven,
+                Diagnostics& d);
+void buildProfiles(const Node& n, LuaHost& host, dynamics::ProfilesSpec& p, Diagnostics& d);
+void buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d);
+void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d);
+void buildSolver(const Node& n, integ::SolverSpec& s, Diagnostics& d);
+void buildRun(const Node& n, RunSpec& run, Diagnostics& d);
+
+}  // namespace rb::scenario

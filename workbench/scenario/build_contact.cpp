@@ -1,0 +1,33 @@
+#include "workbench/dynamics/names.hpp"
+#include "workbench/scenario/build.hpp"
+#include "workbench/scenario/reader.hpp"
+
+namespace rb::scenario {
+
+void buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
+  Reader r(n, block("contact"), "contact", d);
+  c.loc = n.loc;
+  c.method = r.choiceOf<dynamics::ContactMethod>("method");
+  c.kec_dhat = r.number("dhat");
+  c.kec_dbar = r.number("dbar");
+  c.flange_stiffness = r.number("flange_stiffness");
+  c.flange_damping = r.number("flange_damping");
+  c.creep = r.choiceOf<dynamics::CreepModel>("creep");
+  c.mu = r.number("mu");
+  c.youngs_modulus = r.number("youngs_modulus");
+  c.poisson = r.number("poisson");
+  c.normal_forces = r.choiceOf<dynamics::NormalForceCoupling>("normal_forces");
+  c.wheelset_spin = r.choiceOf<dynamics::WheelsetSpin>("wheelset_spin");
+  c.min_normal_force = r.number("min_normal_force");
+  // Options that belong to the other method are conflicts, not silently ignored.
+  const bool kec = c.method == dynamics::ContactMethod::Kec;
+  for (const char* k : {"flange_stiffness", "flange_damping"})
+    if (kec && r.has(k))
+      r.error(
+          *n.field(k),
+          std::string(k) + " applies to method 'lut' only (KEC treats the flange as a constraint)");
+  for (const char* k : {"dhat", "dbar"})
+    if (!kec && r.has(k)) r.error(*n.field(k), std::string(k) + " applies to method 'kec' only");
+}
+
+}  // namespace rb::scenario
