@@ -41,17 +41,26 @@ std::vector<MethodInfo> build() {
     jacobianHelp.append(e.name).append(" = ").append(e.help);
   }
   const OptionInfo jacobian{"jacobian", "-", d.jacobian, jacobianHelp};
+  std::string stiffHelp;
+  for (const auto& e : kStiffTreatmentNames) {
+    if (!stiffHelp.empty()) stiffHelp += "; ";
+    stiffHelp.append(e.name).append(" = ").append(e.help);
+  }
+  const OptionInfo stiff{"stiff", "-", std::string(nameOf(d.stiff)), stiffHelp};
+  const OptionInfo accept{"accept_unstable_step", "-", "false",
+                          "run a step beyond the stability limit of the model's stiffest mode "
+                          "(otherwise check and run refuse it)"};
   return {
       {std::string(kRk4),
        "classical 4th-order Runge-Kutta, fixed step, 4 rhs evaluations per step",
        true,
-       {fixed_step},
+       {fixed_step, stiff, accept},
        makeFixed<FixedStepIntegrator::Method::Rk4>},
       {std::string(kAbm),
        "4th-order Adams-Bashforth-Moulton predictor-corrector (PECE, paper Eq. 32), fixed step, "
        "started with RK4, 2 rhs evaluations per step",
        true,
-       {fixed_step},
+       {fixed_step, stiff, accept},
        makeFixed<FixedStepIntegrator::Method::Abm>},
       {std::string(kDopri5),
        "Dormand-Prince 5(4), variable step (ARKODE ERKStep; the method of Matlab's ode45)",

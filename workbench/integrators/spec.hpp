@@ -21,7 +21,7 @@ inline constexpr std::string_view kIda = "ida";
 
 // Admissible ranges of the tolerances and the BDF order (the scenario schema shows and checks
 // them, validate() of the registry guards SolverSpecs made without a scenario).
-inline constexpr Range kRtolRange{0.0, 1.0, true, true};                                 // [-]
+inline constexpr Range kRtolRange{0.0, 1.0, true, true};                                // [-]
 inline constexpr Range kAtolRange{0.0, std::numeric_limits<double>::infinity(), true};  // [-]
 inline constexpr Range kMaxOrderRange{1.0, 5.0};                                        // [-]
 

@@ -13,6 +13,7 @@
 
 #include "workbench/dynamics/contact_model.hpp"
 #include "workbench/integrators/spec.hpp"
+#include "workbench/run/step_limit.hpp"
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/track/track.hpp"
 #include "workbench/vehicle/model.hpp"
@@ -37,6 +38,11 @@ struct Model {
   double track_build_s = 0.0;         // [s] wall time of the track build
   double t_end = 0.0;                 // [s] simulated time of a vehicle run
   std::vector<std::string> warnings;  // "file:line: warning: ...", printed by the app
+  // Fixed-step runs: the stability limit at the initial state (step_limit.hpp), and the warnings
+  // about it that the run records in /stats/warnings (a step close to the limit, or beyond it
+  // with solver.accept_unstable_step).
+  StepLimit step_limit;
+  std::vector<std::string> run_warnings;
 
   bool hasVehicle() const { return vehicle.has_value(); }
   bool hasContact() const { return contact.has_value(); }

@@ -67,7 +67,7 @@ double stableStep(FixedStepMethod method, std::complex<double> lambda) {
 }
 
 StepLimit fixedStepLimit(integ::OdeSystem& ode, double t0, const Eigen::VectorXd& y0,
-                         FixedStepMethod method) {
+                         FixedStepMethod method, std::span<const int> exponential) {
   StepLimit out;
   const int n = ode.size();
   Eigen::MatrixXd jac(n, n);
@@ -89,6 +89,7 @@ StepLimit fixedStepLimit(integ::OdeSystem& ode, double t0, const Eigen::VectorXd
     }
     jac.col(j) = (fp - fm) / (2.0 * dj);
   }
+  for (const int i : exponential) jac(i, i) = 0.0;
   if (!jac.allFinite()) {
     out.why_not = "non-finite Jacobian";
     return out;

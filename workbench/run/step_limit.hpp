@@ -11,6 +11,7 @@
 // stable; physically growing modes (Re lambda >= 0, e.g. hunting above the critical speed) are the
 // model's behaviour, not a step limit, and are not counted.
 #include <complex>
+#include <span>
 #include <string>
 
 #include <Eigen/Dense>
@@ -45,9 +46,12 @@ struct StepLimit {
 };
 
 // Central-difference Jacobian of ode at (t0, y0), its eigenvalues, and the step limit of the
-// method. Uses its own evaluations of ode (rhs memory, if any, is left as the last evaluation
-// set it: call it on an ODE object that is not integrated afterwards).
+// method. The diagonal entries of the components in `exponential` are integrated exactly by the
+// exponential treatment (integrators/exponential.hpp) and are removed from the Jacobian before
+// its eigenvalues are taken: what remains is what the explicit formula must keep stable. Uses
+// its own evaluations of ode (rhs memory, if any, is left as the last evaluation set it: call it
+// on an ODE object that is not integrated afterwards).
 StepLimit fixedStepLimit(integ::OdeSystem& ode, double t0, const Eigen::VectorXd& y0,
-                         FixedStepMethod method);
+                         FixedStepMethod method, std::span<const int> exponential = {});
 
 }  // namespace rb::run

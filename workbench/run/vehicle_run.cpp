@@ -242,6 +242,11 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
          contact ? std::string(dynamics::ContactModel::methodName(m.contact->method))
                  : std::string("none (wheelsets guided)"));
   VehicleRunResult out;
+  out.warnings = m.run_warnings;
+  if (m.step_limit.computed) {
+    f.attr("/stats", "step_limit", m.step_limit.h_max);
+    f.attr("/stats", "step_limit_mode", m.step_limit.mode);
+  }
   out.result = simulate(r, f);
   if (contact) writeContactStats(m, contact->stats(), creepage, f, out);
   writeWarnings(f, out.warnings);

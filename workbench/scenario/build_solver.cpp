@@ -35,6 +35,8 @@ void buildSolver(const Node& n, integ::SolverSpec& s, Diagnostics& d) {
   s.max_order = static_cast<int>(r.number("max_order"));
   s.max_steps = static_cast<long>(r.number("max_steps"));
   s.jacobian = r.choice("jacobian");
+  s.stiff = r.choiceOf<integ::StiffTreatment>("stiff");
+  s.accept_unstable_step = r.boolean("accept_unstable_step");
   if (const integ::MethodInfo* m = integ::findMethod(s.method)) checkUnusedOptions(n, *m, r);
 }
 

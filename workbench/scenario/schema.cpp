@@ -381,6 +381,15 @@ void addSolverBlock(std::vector<BlockSpec>& s) {
     methodNames.push_back(m.name);
     methodHelp += " " + m.name + " = " + m.description + ";";
   }
+  KeySpec stiff = enumChoice("stiff", integ::SolverSpec{}.stiff,
+                             "how the fixed-step methods (" + methodsUsing("stiff") +
+                                 ") integrate the model's stiff components");
+  KeySpec accept = boolean(
+      "accept_unstable_step", false,
+      "run a fixed step beyond the stability limit of the model's stiffest mode at the start (" +
+          methodsUsing("accept_unstable_step") +
+          "); without it check and run refuse such a step, naming the mode and the largest stable "
+          "step");
   KeySpec jac = enumChoice(
       "jacobian", integ::JacobianMode::Auto,
       "where the Newton iterations take the Jacobian from (" + methodsUsing("jacobian") + ")");
@@ -400,7 +409,8 @@ void addSolverBlock(std::vector<BlockSpec>& s) {
             0),
         integer("max_order", 5, "maximum BDF order (" + methodsUsing("max_order") + ")",
                 integ::kMaxOrderRange.min, integ::kMaxOrderRange.max),
-        integer("max_steps", 0, "internal steps per output interval, 0 = default", 0, 1e12), jac}});
+        integer("max_steps", 0, "internal steps per output interval, 0 = default", 0, 1e12), jac,
+        stiff, accept}});
 }
 
 void addRunBlocks(std::vector<BlockSpec>& s) {

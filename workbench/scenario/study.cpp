@@ -113,7 +113,11 @@ std::string caseLabel(const std::vector<std::string>& overrides) {
   if (kv.count("solver.max_step"))
     take("solver.max_step", "hmax=" + num("solver.max_step", 1e3, "ms"));
   if (kv.count("contact.normal_forces")) take("contact.normal_forces", kv["contact.normal_forces"]);
-  take("solver.max_steps", "");  // a work limit, not an accuracy setting: not in labels
+  if (kv.count("solver.stiff") && kv["solver.stiff"] != "explicit")
+    take("solver.stiff", kv["solver.stiff"]);
+  take("solver.stiff", "");
+  take("solver.max_steps", "");             // a work limit, not an accuracy setting: not in labels
+  take("solver.accept_unstable_step", "");  // a permission, not a setting: not in labels
   for (const auto& k : order)
     if (kv.count(k)) parts.push_back(k + "=" + kv[k]);
   return parts.empty() ? "base" : join(parts, " ");

@@ -69,7 +69,6 @@ class GuidedVehicleOde final : public VehicleOde {
   // unrestrained coordinate (singular Jacobian) or Newton does not converge.
   Eigen::VectorXd initialState(double t0) override;
   // Same as initialState (the name workbench/run/compile.cpp calls).
-  Eigen::VectorXd staticState(double t0) { return initialState(t0); }
 
   // Outputs at (t, y), evaluated on demand.
   int bodyCoordinates(double t, const double* y, std::span<Vector6d> q) override;
