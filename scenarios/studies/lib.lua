@@ -12,10 +12,11 @@ function M.merge(...)
 end
 
 -- Fixed-step solver settings: { method = "abm", step = 2.5e-4 }. The studies measure what the
--- paper's explicit methods do at the paper's steps, also beyond the stability limit of the free
--- spin's creep mode (which `check` refuses otherwise), so they accept such a step explicitly.
+-- paper's explicit methods do at the paper's steps (solver.stiff = "explicit": no exponential
+-- treatment of the stiff components), also beyond the stability limit of the free spin's creep
+-- mode (which `check` refuses otherwise), so they accept such a step explicitly.
 function M.fixed(method, step)
-  return { ["solver.method"] = method, ["solver.step"] = step,
+  return { ["solver.method"] = method, ["solver.step"] = step, ["solver.stiff"] = "explicit",
            ["solver.accept_unstable_step"] = true }
 end
 

@@ -44,8 +44,8 @@ TEST(Registry, OptionsPerMethod) {
     for (const auto& o : findMethod(name)->options) k.push_back(o.key);
     return join(k);
   };
-  EXPECT_EQ(keys("rk4"), "step");
-  EXPECT_EQ(keys("abm"), "step");
+  EXPECT_EQ(keys("rk4"), "step, stiff, accept_unstable_step");
+  EXPECT_EQ(keys("abm"), "step, stiff, accept_unstable_step");
   EXPECT_EQ(keys("dopri5"), "step, rtol, atol, max_step, max_steps");
   EXPECT_EQ(keys("bdf"), "step, rtol, atol, max_step, max_order, max_steps, jacobian");
   EXPECT_EQ(keys("ida"), "step, rtol, atol, max_step, max_order, max_steps, jacobian");

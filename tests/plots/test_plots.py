@@ -59,7 +59,8 @@ RUNS = {
                ["vehicle.start=120", "run.duration=0.5"], 0),
     "nocreep": ("tests/plots/contact_short.lua", ["contact.creep=none", "run.duration=0.05"], 0),
     "fail": ("tests/plots/contact_short.lua",
-             ["solver.method=rk4", "solver.step=0.01", "run.output.every=0.01"], 2),
+             ["solver.method=rk4", "solver.step=0.01", "run.output.every=0.01",
+              "solver.accept_unstable_step=true"], 2),
 }
 _results = {}
 

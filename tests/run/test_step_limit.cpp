@@ -183,15 +183,16 @@ double maxDifference(const std::vector<double>& a, const std::vector<double>& b)
 // of the spin creep mode. check refuses it, naming the mode and the largest stable step, unless
 // the scenario accepts it; the exponential treatment of the stiff components removes the limit.
 TEST(StepLimit, CheckRefusesAbmAtOneMillisecondWithTheFreeSpin) {
-  const std::string err = compileError({"solver.step=1e-3", "run.distance=10"});
+  const std::string err =
+      compileError({"solver.step=1e-3", "solver.stiff=explicit", "run.distance=10"});
   EXPECT_NE(err.find("common.lua:"), std::string::npos) << err;
   EXPECT_NE(err.find("beyond the stability limit of abm"), std::string::npos) << err;
   EXPECT_NE(err.find("theta_dot"), std::string::npos) << err;
   EXPECT_NE(err.find("largest stable step 0.5"), std::string::npos) << err;
   EXPECT_NE(err.find("solver.stiff = \"exponential\""), std::string::npos) << err;
 
-  const auto accepted =
-      compileCase3({"solver.step=1e-3", "run.distance=10", "solver.accept_unstable_step=true"});
+  const auto accepted = compileCase3({"solver.step=1e-3", "solver.stiff=explicit",
+                                      "run.distance=10", "solver.accept_unstable_step=true"});
   ASSERT_EQ(accepted.run_warnings.size(), 1u);
   EXPECT_NE(accepted.run_warnings[0].find("not reliable"), std::string::npos);
 
@@ -211,8 +212,8 @@ TEST(StepLimit, ExponentialTreatmentIsAccurateAtTheLargerSteps) {
       wheelsetPaths(compileCase3({"solver.method=dopri5", "solver.rtol=1e-9", "solver.atol=1e-10",
                                   "solver.max_steps=100000", "run.distance=60"}),
                     3.0);
-  const double explicit_abm =
-      maxDifference(wheelsetPaths(compileCase3({"run.distance=60"}), 3.0), ref);
+  const double explicit_abm = maxDifference(
+      wheelsetPaths(compileCase3({"solver.stiff=explicit", "run.distance=60"}), 3.0), ref);
   const double abm = maxDifference(
       wheelsetPaths(
           compileCase3({"solver.step=1e-3", "solver.stiff=exponential", "run.distance=60"}), 3.0),

@@ -76,9 +76,10 @@ TEST(ScenarioErrors, MissingFile) {
 }
 
 TEST(ScenarioErrors, ConflictingOptions) {
-  EXPECT_EQ(
-      errorsOf(kBad + "conflict.lua"),
-      kBad + "conflict.lua:2: solver: rtol has no effect with method 'rk4' (its options: step)");
+  EXPECT_EQ(errorsOf(kBad + "conflict.lua"),
+            kBad +
+                "conflict.lua:2: solver: rtol has no effect with method 'rk4' (its options: step, "
+                "stiff, accept_unstable_step)");
 }
 
 TEST(ScenarioErrors, UnknownConstructorName) {

@@ -61,7 +61,7 @@ struct SolverSpec {
   long max_steps = 0;        // [-] cap on internal steps per output interval, 0 = solver default
   // A JacobianMode name: "auto" (model's if it has one, else finite differences), "fd".
   std::string jacobian{nameOf(JacobianMode::Auto)};
-  StiffTreatment stiff = StiffTreatment::Explicit;  // rk4, abm
+  StiffTreatment stiff = StiffTreatment::Exponential;  // rk4, abm
   // Run a fixed step beyond the stability limit of the model's stiffest mode anyway (studies of
   // the paper's settings); otherwise compile() refuses it.
   bool accept_unstable_step = false;

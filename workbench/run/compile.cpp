@@ -292,7 +292,10 @@ void checkStepLimit(Model& c, integ::OdeSystem& ode, const Eigen::VectorXd& y0, 
   }
   const bool can_expo =
       s.stiff == integ::StiffTreatment::Explicit && !ode.stiffComponents().empty();
-  d.add(s.loc.file.empty() ? c.spec.run.loc : s.loc,
+  const SourceLoc& loc = !s.loc.file.empty()            ? s.loc
+                         : !c.spec.run.loc.file.empty() ? c.spec.run.loc
+                                                        : c.spec.vehicle.loc;
+  d.add(loc,
         what + ". Choose solver.step <= " + formatNumber(0.8 * lim.h_max * 1e3) + " ms" +
             (can_expo ? ", solver.stiff = \"exponential\"" : "") +
             ", an adaptive method (dopri5, bdf), or solver.accept_unstable_step = true to run it "
