@@ -20,6 +20,16 @@ function M.fixed(method, step)
            ["solver.accept_unstable_step"] = true }
 end
 
+-- Fixed-step settings with the stiff components integrated exponentially (solver.stiff, the
+-- default of a scenario; docs/integrators.md).
+function M.exponential(method, step)
+  return { ["solver.method"] = method, ["solver.step"] = step, ["solver.stiff"] = "exponential" }
+end
+
+-- The normal forces solved together with the creep forces at every evaluation (the scenario
+-- default; the study bases state the paper's lagged coupling).
+function M.consistent() return { ["contact.normal_forces"] = "consistent" } end
+
 -- Adaptive solver settings with rtol = atol = tol (the paper's ode45 / ode15s settings) and a
 -- largest step (paper: 1 ms). The study bases state the paper's lagged normal forces
 -- (validation/common.lua, contact "study"), with which the generated tables of docs/studies.md
