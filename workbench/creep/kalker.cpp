@@ -10,10 +10,10 @@ namespace rb::creep {
 
 namespace {
 
-// Kalker (1990) Table E.3 via tests/data/creep/kalker_creep_coefficients_tableE3.txt (copied with its source).
-// C23(a<b, g = 0.8, nu = 0.25) = 1.25 as in CONTACT m_hertz.f90 (usetab_table.f90 has the
-// typo 1.15). 'a<b' rows, g = a/b = 0.1 ... 1.0; columns C11(nu = 0, .25, .5), C22(...), C23(...),
-// C33(...) (C33 UNVERIFIED).
+// Kalker (1990) Table E.3 via tests/data/creep/kalker_creep_coefficients_tableE3.txt (copied with
+// its source). C23(a<b, g = 0.8, nu = 0.25) = 1.25 as in CONTACT m_hertz.f90 (usetab_table.f90 has
+// the typo 1.15). 'a<b' rows, g = a/b = 0.1 ... 1.0; columns C11(nu = 0, .25, .5), C22(...),
+// C23(...), C33(...) (C33 UNVERIFIED).
 constexpr double kAlessB[10][12] = {
     {2.510, 3.310, 4.850, 2.510, 2.520, 2.530, 0.334, 0.473, 0.731, 6.420, 8.280,
      11.700},  // g = 0.1

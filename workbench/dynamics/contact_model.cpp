@@ -197,8 +197,8 @@ contact::ContactGeometryConfig contactGeometryConfig(const ProfilesSpec& p, cons
     d.add(p.loc, "profiles.back_to_back: " + formatNumber(p.back_to_back) + " m outside " +
                      kBackToBackRange.text() + " m");
   if (p.lr == 0.0 && !kGaugeRange.contains(p.gauge))
-    d.add(p.loc, "profiles.gauge: " + formatNumber(p.gauge) + " m outside " + kGaugeRange.text() +
-                     " m");
+    d.add(p.loc,
+          "profiles.gauge: " + formatNumber(p.gauge) + " m outside " + kGaugeRange.text() + " m");
   if (c.method == ContactMethod::Kec &&
       (!kKecTransitionRange.contains(c.kec_dhat) || !kKecTransitionRange.contains(c.kec_dbar)))
     d.add(c.loc, "contact.dhat / contact.dbar: the KEC transition lengths must be in " +

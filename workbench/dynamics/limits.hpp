@@ -6,9 +6,9 @@
 namespace rb::dynamics {
 
 // Positioning (paper Table 1, EN 13715 / EN 13674-1 profiles).
-inline constexpr Range kBackToBackRange{1.3, 1.5};  // [m] B
-inline constexpr Range kGaugeRange{1.0, 2.0};       // [m] G, 14 mm below the rail top
-inline constexpr Range kR0Range{0.2, 0.7};          // [m] nominal rolling radius
+inline constexpr Range kBackToBackRange{1.3, 1.5};   // [m] B
+inline constexpr Range kGaugeRange{1.0, 2.0};        // [m] G, 14 mm below the rail top
+inline constexpr Range kR0Range{0.2, 0.7};           // [m] nominal rolling radius
 inline constexpr Range kInclinationRange{0.0, 0.1};  // [rad] beta (1:40 = 0.025)
 inline constexpr Range kLwRange{0.0, 1.0};           // [m] explicit Lw, 0 = from back_to_back
 inline constexpr Range kLrRange{0.0, 1.0};           // [m] explicit Lr, 0 = from gauge
