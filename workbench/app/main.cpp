@@ -33,9 +33,7 @@ void printInputError(const rb::InputError& e) {
             << " found; nothing was run.\n";
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int workbench(int argc, char** argv) {
   CLI::App app{"railbench workbench: scripted railway vehicle dynamics"};
   app.set_version_flag("--version", std::string("railbench ") + rb::kVersion);
   app.require_subcommand(1);
@@ -116,4 +114,21 @@ int main(int argc, char** argv) {
     std::cerr << "error: " << e.what() << "\n";
     return 3;
   }
+}
+
+}  // namespace
+
+// Exit 3 is for our bugs only: anything that escapes the command (also while setting up the
+// command line) is reported as an internal error, never as a crash.
+int main(int argc, char** argv) {
+  try {
+    return workbench(argc, argv);
+  } catch (const std::exception& e) {
+    std::fputs("internal error: ", stderr);
+    std::fputs(e.what(), stderr);
+    std::fputs("\n", stderr);
+  } catch (...) {
+    std::fputs("internal error: unknown exception\n", stderr);
+  }
+  return 3;
 }

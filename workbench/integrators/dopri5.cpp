@@ -41,6 +41,34 @@ std::string reasonFor(int flag, bool& rhs_related) {
   }
 }
 
+// The method, the tolerances and the step options of ERKStep; false (res holds the failure)
+// when SUNDIALS refuses one of them.
+bool configure(void* mem, const SolverSpec& sp, detail::OdeCallbackData& cb,
+               detail::SundialsMessages& msgs, RunResult& res, std::string_view method, double t0) {
+  const auto setup = [&](int flag, const char* call) {
+    return flag == ARK_SUCCESS || detail::setupFailed(res, method, t0, call, flagName(flag), msgs);
+  };
+  return setup(ERKStepSetErrHandlerFn(mem, detail::captureMessage, &msgs),
+               "ERKStepSetErrHandlerFn") &&
+         setup(ERKStepSetUserData(mem, &cb), "ERKStepSetUserData") &&
+         setup(ERKStepSetTableNum(mem, ARKODE_DORMAND_PRINCE_7_4_5), "ERKStepSetTableNum") &&
+         setup(ERKStepSetInterpolantDegree(mem, kInterpolantDegree),
+               "ERKStepSetInterpolantDegree") &&
+         setup(ERKStepSStolerances(mem, sp.rtol, sp.atol), "ERKStepSStolerances") &&
+         (sp.max_step <= 0 || setup(ERKStepSetMaxStep(mem, sp.max_step), "ERKStepSetMaxStep")) &&
+         (sp.step <= 0 || setup(ERKStepSetInitStep(mem, sp.step), "ERKStepSetInitStep"));
+}
+
+// After a recoverable rhs failure inside a step: restart from the last accepted state tn, yacc
+// with a quarter of the step. False when the step cannot shrink further or SUNDIALS refuses.
+bool retryQuarterStep(void* mem, double tn, N_Vector yacc) {
+  double hcur = 0.0;
+  ERKStepGetCurrentStep(mem, &hcur);
+  const double hnew = 0.25 * hcur;
+  return hnew != 0.0 && tn + hnew != tn && ERKStepReset(mem, tn, yacc) == ARK_SUCCESS &&
+         ERKStepSetInitStep(mem, hnew) == ARK_SUCCESS;
+}
+
 }  // namespace
 
 RunResult Dopri5Integrator::runOde(OdeSystem& sys, double t0, const Eigen::VectorXd& y0,
@@ -66,18 +94,7 @@ RunResult Dopri5Integrator::runOde(OdeSystem& sys, double t0, const Eigen::Vecto
   res.t_reached = t0;
   detail::SolverMem mem(ERKStepCreate(detail::odeRhs, t0, y.get(), ctx), ERKStepFree);
   if (!mem) throw std::bad_alloc();
-  const auto setup = [&](int flag, const char* call) {
-    return flag == ARK_SUCCESS || detail::setupFailed(res, name(), t0, call, flagName(flag), msgs);
-  };
-  if (!setup(ERKStepSetErrHandlerFn(mem, detail::captureMessage, &msgs),
-             "ERKStepSetErrHandlerFn") ||
-      !setup(ERKStepSetUserData(mem, &cb), "ERKStepSetUserData") ||
-      !setup(ERKStepSetTableNum(mem, ARKODE_DORMAND_PRINCE_7_4_5), "ERKStepSetTableNum") ||
-      !setup(ERKStepSetInterpolantDegree(mem, kInterpolantDegree), "ERKStepSetInterpolantDegree") ||
-      !setup(ERKStepSStolerances(mem, sp.rtol, sp.atol), "ERKStepSStolerances") ||
-      (sp.max_step > 0 && !setup(ERKStepSetMaxStep(mem, sp.max_step), "ERKStepSetMaxStep")) ||
-      (sp.step > 0 && !setup(ERKStepSetInitStep(mem, sp.step), "ERKStepSetInitStep")))
-    return res;
+  if (!configure(mem, sp, cb, msgs, res, name(), t0)) return res;
   const long max_steps = sp.max_steps > 0 ? sp.max_steps : kDefaultMaxSteps;
 
   const auto collect = [&] {
@@ -157,16 +174,11 @@ RunResult Dopri5Integrator::runOde(OdeSystem& sys, double t0, const Eigen::Vecto
           (flag == ARK_UNREC_RHSFUNC_ERR || flag == ARK_FIRST_RHSFUNC_ERR ||
            flag == ARK_REPTD_RHSFUNC_ERR) &&
           cb.rec.recoverable > recoverable_before;
-      if (recoverable_cause && streak < kMaxRecoveries && in_interval < kMaxRecoveriesPerOutput) {
-        double hcur = 0.0;
-        ERKStepGetCurrentStep(mem, &hcur);
-        const double hnew = 0.25 * hcur;
-        if (hnew != 0.0 && tn + hnew != tn && ERKStepReset(mem, tn, yacc.get()) == ARK_SUCCESS &&
-            ERKStepSetInitStep(mem, hnew) == ARK_SUCCESS) {
-          ++streak;
-          ++in_interval;
-          continue;
-        }
+      if (recoverable_cause && streak < kMaxRecoveries && in_interval < kMaxRecoveriesPerOutput &&
+          retryQuarterStep(mem, tn, yacc.get())) {
+        ++streak;
+        ++in_interval;
+        continue;
       }
       detail::FailureReport f;
       bool rhs_related = false;

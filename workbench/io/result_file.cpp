@@ -218,7 +218,7 @@ Series& ResultFile::series(const std::string& path, const std::string& units) {
   const hid_t d = H5Dcreate2(static_cast<hid_t>(file_), path.c_str(), H5T_NATIVE_DOUBLE,
                              space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT);
   if (d < 0) fail("cannot create dataset", path);
-  series_.push_back(std::unique_ptr<Series>(new Series(this, d)));
+  series_.push_back(std::unique_ptr<Series>(new Series(d)));
   if (!writeUnits(d, units)) fail("cannot write units of", path);
   return *series_.back();
 }

@@ -35,8 +35,7 @@ class Series {
 
  private:
   friend class ResultFile;
-  Series(ResultFile* file, std::int64_t dataset) : file_(file), dataset_(dataset) {}
-  ResultFile* file_;
+  explicit Series(std::int64_t dataset) : dataset_(dataset) {}
   std::int64_t dataset_;
   std::size_t written_ = 0;
   std::vector<double> buffer_;

@@ -811,10 +811,8 @@ struct Converter {
     int ref = luaL_ref(L, LUA_REGISTRYINDEX);
     lua_State* state = L;
     LuaHost::Impl* host = impl;
-    SourceLoc loc = parentLoc;
-    std::string where = path;
-    n.function =
-        std::make_shared<std::function<double(double)>>([state, host, ref, loc, where](double x) {
+    n.function = std::make_shared<std::function<double(double)>>(
+        [state, host, ref, loc = parentLoc, where = path](double x) {
           if (!lua_checkstack(state, 4)) throw InputError(loc, where + ": Lua stack exhausted");
           lua_pushcfunction(state, &LuaHost::Impl::messageHandler);
           lua_rawgeti(state, LUA_REGISTRYINDEX, ref);

@@ -375,11 +375,11 @@ class MeasuredCsvReader {
       return;
     }
     const int r = static_cast<int>(it - kKnown.begin()) - 1;
-    if (seen[static_cast<std::size_t>(r + 1)]) {
+    if (seen[static_cast<std::size_t>(r) + 1]) {
       report(lineNo, "column '" + h.name + "' is named twice");
       return;
     }
-    seen[static_cast<std::size_t>(r + 1)] = true;
+    seen[static_cast<std::size_t>(r) + 1] = true;
     if (!h.unit.empty()) checkUnit(h, r, lineNo);
     role_.push_back(r);
     col_name_.push_back(h.name);
@@ -404,7 +404,7 @@ class MeasuredCsvReader {
     if (!seen[0]) report(lineNo, "the header names no column 's' (arc length [m])");
     bool any = false;
     for (int c = 0; c < kChannels; ++c) {
-      out_.present[static_cast<std::size_t>(c)] = seen[static_cast<std::size_t>(c + 1)];
+      out_.present[static_cast<std::size_t>(c)] = seen[static_cast<std::size_t>(c) + 1];
       any = any || out_.present[static_cast<std::size_t>(c)];
     }
     if (!any) {

@@ -65,6 +65,9 @@ struct PsdTable {
 // both take this bound).
 inline constexpr int kMaxPsdComponents = 100000;
 
+// clang-tidy 14 names the implicit copy of an array member '__i0' (a false positive of
+// bugprone-reserved-identifier on the compiler-generated copy constructor).
+// NOLINTNEXTLINE(bugprone-reserved-identifier)
 struct IrregularitySpec {
   IrregularitySource source = IrregularitySource::None;
   // Psd: named spectrum "ore_b176_low", "ore_b176_high", "fra_class_1" .. "fra_class_6", or "user".
