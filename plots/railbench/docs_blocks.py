@@ -342,8 +342,9 @@ def speed_block(outdir: str) -> str:
         cpu = num(r["cpu_median_s"])
         ok = r["status"] == "ok"
         factor = sim / cpu if ok and cpu else None
-        target = ("100x" if "target 1" in r["label"] else "1x" if "target 2" in r["label"]
-                  else "")
+        # The case's speed target, as its label states it: "... (target 100x)".
+        m = re.search(r"target (\d+(?:\.\d+)?)x", r["label"])
+        target = m.group(1) + "x" if m else ""
         met = ""
         if target and factor is not None:
             met = "met" if factor >= float(target[:-1]) else "NOT met"

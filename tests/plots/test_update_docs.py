@@ -73,8 +73,8 @@ def test_blocks_replaced_between_markers():
                 f.write(f"<!-- generated: {n} ({provenance.GENERATOR}) -->\nOLD NUMBERS\n"
                         f"<!-- end: {n} -->\nhand text after {n}\n")
     write_csv(os.path.join(out, "speed", "study_cost.csv"), [
-        cost("KEC ABM 1 ms (target 1)", "kec", "abm", "0.2", 50006, step="0.001"),
-        cost("LUT BDF (target 2)", "lut", "bdf", "30.0", 150000, K="7.075e13", tol="1e-06")])
+        cost("KEC ABM 1 ms (target 100x)", "kec", "abm", "0.2", 50006, step="0.001"),
+        cost("LUT BDF (target 1x)", "lut", "bdf", "30.0", 150000, K="7.075e13", tol="1e-06")])
     write_csv(os.path.join(out, "efficiency_case3", "study_cost.csv"), [
         cost("a", "kec", "abm", "0.5", 50006, step="0.001"),
         cost("b", "lut", "abm", "0.4", 50006, K="1e10", step="0.001"),
