@@ -36,6 +36,21 @@ double abmAmplification(std::complex<double> z) {
   return roots.cwiseAbs().maxCoeff();
 }
 
+// Smallest exit radius of the method's stability region over directions in the left half-plane
+// (the regions are symmetric about the real axis): no eigenvalue with h |lambda| below it can
+// limit the step, so fixedStepLimit() skips those.
+double smallestExitRadius(FixedStepMethod method) {
+  double rmin = std::numeric_limits<double>::infinity();
+  constexpr int kDirections = 18;
+  for (int k = 0; k <= kDirections; ++k) {
+    const double theta = 0.5 * M_PI + 0.5 * M_PI * k / kDirections;  // pi/2 .. pi
+    const std::complex<double> dir = std::polar(1.0, theta);
+    // A direction along the imaginary axis itself has Re = 0: nudge it into the left half-plane.
+    rmin = std::min(rmin, stableStep(method, k == 0 ? dir - 1e-9 : dir));
+  }
+  return rmin;
+}
+
 }  // namespace
 
 double amplification(FixedStepMethod method, std::complex<double> z) {
@@ -50,12 +65,12 @@ double stableStep(FixedStepMethod method, std::complex<double> lambda) {
     return amplification(method, rho * dir) > 1.0 + kGrowthTolerance;
   };
   // March out along the ray (both regions are bounded by |z| < 3), then bisect the first exit.
-  constexpr double kRhoStep = 0.01, kRhoMax = 4.0;
+  constexpr double kRhoStep = 0.05, kRhoMax = 4.0;
   double lo = 0.0;
   for (double rho = kRhoStep; rho <= kRhoMax; rho += kRhoStep) {
     if (unstable(rho)) {
       double hi = rho;
-      for (int i = 0; i < 50; ++i) {
+      for (int i = 0; i < 40; ++i) {
         const double mid = 0.5 * (lo + hi);
         (unstable(mid) ? hi : lo) = mid;
       }
@@ -102,9 +117,18 @@ StepLimit fixedStepLimit(integ::OdeSystem& ode, double t0, const Eigen::VectorXd
   out.computed = true;
   out.h_max = std::numeric_limits<double>::infinity();
   int limiting = -1;
-  for (int k = 0; k < n; ++k) {
+  // Largest moduli first: once a limit is known, an eigenvalue with h_max |lambda| below the
+  // region's smallest exit radius cannot lower it (and a conjugate gives the same limit).
+  std::vector<int> order(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) order[static_cast<std::size_t>(k)] = k;
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return std::abs(eig.eigenvalues()(a)) > std::abs(eig.eigenvalues()(b));
+  });
+  const double rmin = smallestExitRadius(method);
+  for (const int k : order) {
     const std::complex<double> lam = eig.eigenvalues()(k);
     if (lam.real() < 0.0) out.stiffest = std::max(out.stiffest, std::abs(lam));
+    if (lam.imag() < 0.0 || out.h_max * std::abs(lam) < rmin) continue;
     const double h = stableStep(method, lam);
     if (h < out.h_max) {
       out.h_max = h;
