@@ -1,6 +1,7 @@
 #include "workbench/integrators/fixed_step.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "workbench/core/error.hpp"
 #include "workbench/integrators/exponential.hpp"
@@ -154,6 +155,17 @@ void FixedStepIntegrator::refreshDiagonal(double t, const double* f_at_y) {
   }
 }
 
+// The weights of stiff component j at z = h d_j, recomputed only when z changes (d_j is refreshed
+// every kDiagonalRefreshSteps steps, h changes only in split steps): the phi functions cost
+// about as much as a model evaluation when evaluated for every component at every step.
+const expo::Weights& FixedStepIntegrator::weightsFor(std::size_t j, double z) const {
+  if (!(weight_z_[j] == z)) {
+    weights_[j] = expo::weights(z);
+    weight_z_[j] = z;
+  }
+  return weights_[j];
+}
+
 // ETDRK4 stages of the stiff components (Cox-Matthews): a = e^{z/2} y + h/2 phi1(z/2) N(y),
 // b = e^{z/2} y + h/2 phi1(z/2) N(a), c = e^{z/2} a + h/2 phi1(z/2) (2 N(b) - N(y)); k is the
 // derivative at the previous stage. tmp_ holds the classical stage; its stiff entries are
@@ -162,7 +174,7 @@ void FixedStepIntegrator::expRk4Stage(int stage, double hh, const double* k) {
   for (std::size_t j = 0; j < stiff_.size(); ++j) {
     const auto i = static_cast<Eigen::Index>(stiff_[j]);
     const double d = diag_[j];
-    const expo::Weights w = expo::weights(2.0 * hh * d);
+    const expo::Weights& w = weightsFor(j, 2.0 * hh * d);
     const double yi = y_(i);
     if (stage == 0) {
       st_n1_[j] = k[i] - d * yi;
@@ -183,7 +195,7 @@ void FixedStepIntegrator::expRk4Final(double h, Eigen::VectorXd& ynew) const {
   for (std::size_t j = 0; j < stiff_.size(); ++j) {
     const auto i = static_cast<Eigen::Index>(stiff_[j]);
     const double d = diag_[j];
-    const expo::Weights w = expo::weights(h * d);
+    const expo::Weights& w = weightsFor(j, h * d);
     const double na = k2_(i) - d * st_a_[j], nb = k3_(i) - d * st_b_[j];
     const double nc = k4_(i) - d * st_c_[j];
     ynew(i) = w.e_full * y_(i) + h * (w.f1 * st_n1_[j] + 2.0 * w.f2 * (na + nb) + w.f3 * nc);
@@ -197,7 +209,7 @@ void FixedStepIntegrator::expAbmPredict(double h, int slot, Eigen::VectorXd& yst
   for (std::size_t j = 0; j < stiff_.size(); ++j) {
     const auto i = static_cast<Eigen::Index>(stiff_[j]);
     const double d = diag_[j];
-    const expo::Weights w = expo::weights(h * d);
+    const expo::Weights& w = weightsFor(j, h * d);
     double sum = 0.0;
     for (std::size_t m = 0; m < 4; ++m) {
       const auto nd = static_cast<std::size_t>(node[m]);
@@ -213,7 +225,7 @@ void FixedStepIntegrator::expAbmCorrect(double h, int slot, Eigen::VectorXd& yne
   for (std::size_t j = 0; j < stiff_.size(); ++j) {
     const auto i = static_cast<Eigen::Index>(stiff_[j]);
     const double d = diag_[j];
-    const expo::Weights w = expo::weights(h * d);
+    const expo::Weights& w = weightsFor(j, h * d);
     double sum = w.am[0] * (k2_(i) - d * tmp_(i));
     for (std::size_t m = 0; m < 3; ++m) {
       const auto nd = static_cast<std::size_t>(node[m]);
@@ -280,6 +292,8 @@ RunResult FixedStepIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::Ve
   stiff_ = spec().stiff == StiffTreatment::Exponential ? sys.stiffComponents() : std::vector<int>{};
   diag_.assign(stiff_.size(), 0.0);
   for (auto* v : {&st_a_, &st_b_, &st_c_, &st_n1_}) v->assign(stiff_.size(), 0.0);
+  weights_.assign(stiff_.size(), expo::Weights{});
+  weight_z_.assign(stiff_.size(), std::numeric_limits<double>::quiet_NaN());
   last_refresh_ = -1;
   if (exponential()) {
     for (auto& v : yh_) v.setZero(n_);

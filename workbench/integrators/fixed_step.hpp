@@ -36,6 +36,7 @@
 #include <array>
 
 #include "workbench/integrators/detail.hpp"
+#include "workbench/integrators/exponential.hpp"
 #include "workbench/integrators/integrator.hpp"
 
 namespace rb::integ {
@@ -77,6 +78,7 @@ class FixedStepIntegrator final : public Integrator {
   void expRk4Final(double h, Eigen::VectorXd& ynew) const;
   void expAbmPredict(double h, int slot, Eigen::VectorXd& ystar) const;
   void expAbmCorrect(double h, int slot, Eigen::VectorXd& ynew) const;
+  const expo::Weights& weightsFor(std::size_t j, double z) const;
   std::string failureMessage(Status s, double t_n) const;
 
   Method method_;
@@ -97,6 +99,8 @@ class FixedStepIntegrator final : public Integrator {
   std::array<Eigen::VectorXd, 4> yh_;
   Eigen::VectorXd ypert_;
   std::vector<double> st_a_, st_b_, st_c_, st_n1_;
+  mutable std::vector<expo::Weights> weights_;  // per stiff component, at weight_z_
+  mutable std::vector<double> weight_z_;
   Stats stats_;
   detail::RhsRecord rec_;
 };
