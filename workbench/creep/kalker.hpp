@@ -1,7 +1,7 @@
 #pragma once
 // Kalker's linear-theory creepage and spin coefficients C11, C22, C23 (and C33) for an elliptic
 // contact, from Kalker, "Three-dimensional elastic bodies in rolling contact" (1990), Table E.3,
-// as carried in ../shared/reference/kalker_creep_coefficients_tableE3.txt (C11, C22, C23 copied
+// as carried in tests/data/creep/kalker_creep_coefficients_tableE3.txt (C11, C22, C23 copied
 // from CONTACT src/m_hertz.f90, subroutine linrol, Apache-2.0).
 //
 //   C33 is UNVERIFIED: no primary source was available for that column (the table file says so).

@@ -4,7 +4,7 @@
 // polachForce(): O. Polach, "A fast wheel-rail forces calculation computer code", Vehicle System
 // Dynamics 33 (Suppl.) (1999) 728-739, with the optional extension of O. Polach, "Creep forces in
 // simulations of traction vehicles running on adhesion limit", Wear 258 (2005) 992-1000.
-// Formulas as in ../shared/reference/polach_creep_force_and_hertz.md (sections 1, 2):
+// The formulas of these two papers:
 //
 //   s_yC = s_y + phi a  if |s_y + phi a| > |s_y|,  else s_y                 (1999, see below)
 //   s_C  = sqrt(s_x^2 + s_yC^2),   s = sqrt(s_x^2 + s_y^2)
