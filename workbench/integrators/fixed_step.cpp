@@ -139,7 +139,7 @@ void FixedStepIntegrator::refreshDiagonal(double t, const double* f_at_y) {
   if (last_refresh_ >= 0 && stats_.steps - last_refresh_ < kDiagonalRefreshSteps) return;
   last_refresh_ = stats_.steps;
   ypert_ = y_;
-  std::vector<double> dy(stiff_.size());
+  std::vector<double>& dy = diag_increment_;
   for (std::size_t k = 0; k < stiff_.size(); ++k) {
     const auto i = static_cast<Eigen::Index>(stiff_[k]);
     dy[k] = 1e-6 * std::max(std::abs(y_(i)), 1.0);
@@ -291,6 +291,7 @@ RunResult FixedStepIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::Ve
   history_ = 0;
   stiff_ = spec().stiff == StiffTreatment::Exponential ? sys.stiffComponents() : std::vector<int>{};
   diag_.assign(stiff_.size(), 0.0);
+  diag_increment_.assign(stiff_.size(), 0.0);
   for (auto* v : {&st_a_, &st_b_, &st_c_, &st_n1_}) v->assign(stiff_.size(), 0.0);
   weights_.assign(stiff_.size(), expo::Weights{});
   weight_z_.assign(stiff_.size(), std::numeric_limits<double>::quiet_NaN());

@@ -94,7 +94,7 @@ class FixedStepIntegrator final : public Integrator {
   // history f_ was evaluated, and the RK4 stage values of the stiff components.
   static constexpr int kDiagonalRefreshSteps = 10;
   std::vector<int> stiff_;
-  std::vector<double> diag_;
+  std::vector<double> diag_, diag_increment_;
   long last_refresh_ = -1;
   std::array<Eigen::VectorXd, 4> yh_;
   Eigen::VectorXd ypert_;

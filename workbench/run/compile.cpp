@@ -290,19 +290,29 @@ void checkStepLimit(Model& c, integ::OdeSystem& ode, const Eigen::VectorXd& y0, 
                              "from step to step and the result is not reliable");
     return;
   }
+  std::vector<std::string> adaptive;
+  for (const auto& m : integ::methods())
+    if (!m.fixed_step) adaptive.push_back(m.name);
   const bool can_expo =
       s.stiff == integ::StiffTreatment::Explicit && !ode.stiffComponents().empty();
   const SourceLoc& loc = !s.loc.file.empty()            ? s.loc
                          : !c.spec.run.loc.file.empty() ? c.spec.run.loc
                                                         : c.spec.vehicle.loc;
-  d.add(loc,
-        what + ". Choose solver.step <= " + formatNumber(0.8 * lim.h_max * 1e3) + " ms" +
-            (can_expo ? ", solver.stiff = \"exponential\"" : "") +
-            ", an adaptive method (dopri5, bdf), or solver.accept_unstable_step = true to run it "
-            "anyway (the result would not be reliable)");
+  d.add(loc, what + ". Choose solver.step <= " + formatNumber(0.8 * lim.h_max * 1e3) + " ms" +
+                 (can_expo ? ", solver.stiff = \"exponential\"" : "") + ", an adaptive method (" +
+                 join(adaptive, ", ") +
+                 "), or solver.accept_unstable_step = true to run it "
+                 "anyway (the result would not be reliable)");
 }
 
 }  // namespace
+
+std::unique_ptr<vehicle::VehicleOde> makeVehicleOde(const Model& m) {
+  RB_CHECK(m.vehicle.has_value(), "makeVehicleOde needs a vehicle");
+  if (m.contact)
+    return std::make_unique<dynamics::ContactVehicleOde>(*m.vehicle, *m.contact, *m.track);
+  return std::make_unique<vehicle::GuidedVehicleOde>(*m.vehicle);
+}
 
 Model compile(const CompileOptions& o) {
   scenario::LoadOptions lo;
@@ -321,11 +331,7 @@ Model compile(const CompileOptions& o) {
   // The run computes it again on its own system (the lagged normal-force memory starts there).
   // A fixed step must also be stable on the stiffest mode there (step_limit.hpp).
   if (c.vehicle) {
-    std::unique_ptr<vehicle::VehicleOde> ode;
-    if (c.contact)
-      ode = std::make_unique<dynamics::ContactVehicleOde>(*c.vehicle, *c.contact, *c.track);
-    else
-      ode = std::make_unique<vehicle::GuidedVehicleOde>(*c.vehicle);
+    const std::unique_ptr<vehicle::VehicleOde> ode = makeVehicleOde(c);
     const Eigen::VectorXd y0 = ode->initialState(0.0);
     checkStepLimit(c, *ode, y0, d);
     d.throwIfAny();

@@ -7,6 +7,7 @@
 // the output grid of fixed-step methods, the travelled range against the track's length and the
 // size of the output. The app, the benchmarks and the tests all build their runs from it.
 #include <Eigen/Dense>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/track/track.hpp"
 #include "workbench/vehicle/model.hpp"
+#include "workbench/vehicle/vehicle_ode.hpp"
 
 namespace rb::run {
 
@@ -54,6 +56,10 @@ struct Model {
 
 // Throws InputError with every problem found.
 Model compile(const CompileOptions& options);
+
+// The vehicle ODE of a compiled model with a vehicle: on wheel/rail contact when the model has a
+// contact block, guided otherwise. compile() and runVehicle() both build theirs here.
+std::unique_ptr<vehicle::VehicleOde> makeVehicleOde(const Model& model);
 
 // Upper bound of output samples per run unless run.output.max_samples says otherwise.
 inline constexpr double kDefaultMaxOutputSamples = 1e7;

@@ -180,15 +180,8 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   RB_CHECK(m.vehicle.has_value(), "runVehicle needs a vehicle");
   const auto& v = *m.vehicle;
   const std::size_t nb = v.bodies.size();
-  std::unique_ptr<vehicle::VehicleOde> ode;
-  dynamics::ContactVehicleOde* contact = nullptr;
-  if (m.contact) {
-    auto cs = std::make_unique<dynamics::ContactVehicleOde>(v, *m.contact, *m.track);
-    contact = cs.get();
-    ode = std::move(cs);
-  } else {
-    ode = std::make_unique<vehicle::GuidedVehicleOde>(v);
-  }
+  const std::unique_ptr<vehicle::VehicleOde> ode = makeVehicleOde(m);
+  auto* contact = dynamic_cast<dynamics::ContactVehicleOde*>(ode.get());  // null: guided
 
   SimulationRequest r;
   r.system = ode.get();
