@@ -178,6 +178,20 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
   const double spin = m.speedAt(t0) / contact_->centredRadius();
   if (l.spinFree())
     for (int w = 0; w < l.n_ws; ++w) y[l.wsRate(w, 1)] = spin;
+  // Each wheelset starts centred between its two rails, parallel to them and following them: on
+  // an irregular track the rails' mid-line is displaced by the alignment xi_a (Eq. 18:
+  // ybar = y - xi_a), and a wheelset at y = 0 would start up to several millimetres off centre,
+  // against a flange.
+  if (irr_ != nullptr)
+    for (int w = 0; w < l.n_ws; ++w) {
+      const track::IrregularityPoint rail = irr_->at(m.bodyS(static_cast<int>(l.wheelset(w)), t0));
+      const double a_s = 0.5 * (rail.y_l_s + rail.y_r_s);
+      y[l.wsPosition(w, 0)] = 0.5 * (rail.y_l + rail.y_r);
+      y[l.wsRate(w, 0)] = m.speedAt(t0) * a_s;
+      y[l.wsPosition(w, 2)] = a_s;
+      y[l.wsRate(w, 2)] =
+          m.speedAt(t0) * rail.xi_ss[static_cast<std::size_t>(track::Channel::Alignment)];
+    }
   for (WheelsetWork& ww : work.wheelsets) {
     ww.memory.forget();
     ww.kec_warm = false;
@@ -188,7 +202,7 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
   };
   const int n = 5 * l.n_free;
   if (n > 0) {
-    // Static equilibrium of the car bodies and bogies with the wheelsets centred on the rails.
+    // Static equilibrium of the car bodies and bogies on the wheelsets placed above.
     const auto residual = [&](const Eigen::VectorXd& state, Eigen::VectorXd& r) {
       if (evaluate(t0, state.data(), yd.data(), EvalMode::Init) != 0) fail(work.error);
       r = yd.segment(l.rate(0, 0), n);

@@ -1,0 +1,71 @@
+// The initial state of a vehicle on wheel/rail contact on an irregular track: every wheelset
+// starts centred between its rails (y = xi_a, the rails' mid-line, Eq. 18) and parallel to them,
+// not at the nominal centreline, which on a rough track can be several millimetres away.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "workbench/dynamics/contact_ode.hpp"
+#include "workbench/integrators/integrator.hpp"
+#include "workbench/integrators/registry.hpp"
+#include "workbench/run/compile.hpp"
+
+namespace {
+
+// The flange-curve study base (ORE B176 high irregularities, seed 42): the rails' mid-line is
+// 5.7 mm to the right of the centreline under the leading wheelset at the start.
+rb::run::Model compileFlangeCurve(const std::string& method) {
+  rb::run::CompileOptions o;
+  o.scenario = "scenarios/studies/bases/flange_curve.lua";
+  o.root = RB_SOURCE_DIR;
+  o.overrides = {"contact.method=" + method, "run.duration=0.2", "solver.step=2.5e-4",
+                 "solver.stiff=explicit"};
+  return rb::run::compile(o);
+}
+
+}  // namespace
+
+TEST(InitialState, WheelsetsStartCentredBetweenTheirRails) {
+  for (const std::string method : {"kec", "lut"}) {
+    const rb::run::Model m = compileFlangeCurve(method);
+    rb::dynamics::ContactVehicleOde ode(*m.vehicle, *m.contact, *m.track);
+    const Eigen::VectorXd y0 = ode.initialState(0.0);
+    const auto& layout = ode.layout();
+    const auto& irr = *m.track->irregularities();
+    double largest_offset = 0.0;
+    for (int w = 0; w < layout.n_ws; ++w) {
+      const double s = m.vehicle->bodyS(static_cast<int>(layout.wheelset(w)), 0.0);
+      const auto rail = irr.at(s);
+      const double mid = 0.5 * (rail.y_l + rail.y_r);
+      largest_offset = std::max(largest_offset, std::abs(mid));
+      EXPECT_NEAR(y0[layout.wsPosition(w, 0)], mid, 1e-12) << method << " wheelset " << w;
+      EXPECT_NEAR(y0[layout.wsPosition(w, 2)], 0.5 * (rail.y_l_s + rail.y_r_s), 1e-12);
+    }
+    EXPECT_GT(largest_offset, 3e-3) << "the case must test an off-centre rail mid-line";
+    // Both wheels of every wheelset carry load on the tread at the start (no flange contact
+    // from the set-up): within 30 % of the wheelset's mean wheel load.
+    std::vector<rb::dynamics::WheelOutput> wheels(2 * static_cast<std::size_t>(layout.n_ws));
+    ASSERT_EQ(ode.wheelOutputs(0.0, y0.data(), wheels), 0);
+    for (std::size_t w = 0; w + 1 < wheels.size(); w += 2) {
+      const double mean = 0.5 * (wheels[w].normal + wheels[w + 1].normal);
+      for (std::size_t side = 0; side < 2; ++side) {
+        EXPECT_NEAR(wheels[w + side].normal, mean, 0.3 * mean) << method << " wheel " << w + side;
+        EXPECT_EQ(wheels[w + side].regime, 0) << method << " wheel " << w + side;
+      }
+    }
+  }
+}
+
+// Regression: started at the centreline, the KEC wagon on this track lifted its leading left
+// wheel within 10 ms (flange contact from the set-up, then a violent transient).
+TEST(InitialState, KecWagonOnTheRoughCurveRunsWithoutWheelLift) {
+  const rb::run::Model m = compileFlangeCurve("kec");
+  rb::dynamics::ContactVehicleOde ode(*m.vehicle, *m.contact, *m.track);
+  const Eigen::VectorXd y0 = ode.initialState(0.0);
+  auto integ = rb::integ::makeIntegrator(m.solver);
+  const auto res = rb::integ::integrate(ode, *integ, 0.0, y0, {0.1, 0.2},
+                                        [](double, const Eigen::VectorXd&) { return true; });
+  EXPECT_TRUE(res.ok) << res.message;
+}
