@@ -38,7 +38,7 @@ from typing import Dict, List, Optional
 
 from . import provenance
 from .common import parser
-from .docs_blocks import accuracy_block, bench_block, bench_integrators_block, effects_block, efficiency_block, fmt, missing, num, read_csv, refinement_block, replace_block, speed_block, table, work_precision_block
+from .docs_blocks import accuracy_block, bench_block, bench_integrators_block, effects_block, efficiency_block, fmt, missing, num, read_csv, paper_settings_block, refinement_block, replace_block, speed_block, table, work_precision_block
 from .docs_validation import hard_block, hard_detail_block, hard_rows, validation_blocks
 
 
@@ -51,6 +51,7 @@ BLOCK_SOURCES = {
     "flange_paper": "flange_stiffness", "flange_accuracy": "flange_stiffness",
     "refinement": "refinement", "work_precision": "work_precision", "hard_cases": "hard",
     "hard_cases_detail": "hard", "effects": "effects", "speed": "speed", "bench": "bench",
+    "paper_settings": "paper_settings", "paper_settings_flange": "paper_settings_flange",
     "bench_integrators": "bench_integrators",
     "validation_case1": "validation", "validation_case2": "validation",
     "validation_case3": "validation", "validation_cost": "validation",
@@ -134,7 +135,7 @@ def coupling_block(build: str) -> Optional[str]:
 # ---- figures -----------------------------------------------------------------------------------
 
 STUDIES = ("efficiency_case3", "flange_stiffness", "refinement", "work_precision", "effects",
-           "speed", "validation")
+           "speed", "paper_settings_flange", "paper_settings", "validation")
 
 
 def copy_figures(outdir: str, docs: str, pages) -> List[str]:
@@ -180,6 +181,8 @@ def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
     blocks["performance.md"]["effects"] = effects_block(outdir)
     blocks["performance.md"]["speed"] = speed_block(outdir)
     blocks["performance.md"]["bench"] = bench_block(outdir)
+    for study in ("paper_settings", "paper_settings_flange"):
+        blocks["performance.md"][study] = paper_settings_block(outdir, study)
     blocks["validation.md"].update(validation_blocks(outdir))
     blocks["hard_cases.md"]["hard_cases_detail"] = hard_detail_block(build)
     blocks["integrators.md"]["bench_integrators"] = bench_integrators_block(outdir)

@@ -330,6 +330,53 @@ def effects_block(outdir: str) -> str:
             table(head, body) + note)
 
 
+# ---- the paper's settings: KEC against LUT per integrator -------------------------------------
+
+def paper_settings_block(outdir: str, study: str) -> str:
+    """KEC against LUT (K = 7.075e13) per solver setting of lib.paper_settings_cases, from
+    OUT/<study>/study_cost.csv: CPU time, evaluations (rhs incl. Jacobian columns), x real time,
+    and the LUT/KEC ratios of CPU time and of evaluations."""
+    rows = read_csv(os.path.join(outdir, study, "study_cost.csv"))
+    if not rows:
+        return missing(f"out/studies/{study}/study_cost.csv")
+    by = {}
+    order: List[str] = []
+    for r in rows:
+        model, _, setting = r["label"].partition(" | ")
+        if setting not in by:
+            by[setting] = {}
+            order.append(setting)
+        by[setting]["kec" if model.startswith("KEC") else "lut"] = r
+
+    def cell(r: Optional[dict]) -> str:
+        if r is None:
+            return "–"
+        cpu, sim = num(r["cpu_median_s"]), num(r["t_reached_s"], 0)
+        cost = f"{cpu:.2f} s / {total_evals(r)} ({sim / cpu:.0f}x)" if cpu else "–"
+        # A failed run's cost up to where it stopped, e.g. the LUT's wheel lift at the first
+        # hard flange impact (docs/hard_cases.md).
+        if r["status"] == "ok":
+            return cost
+        return f"failed at {sim:.2f} s" + ("" if cost == "–" else ": " + cost)
+
+    def ratio(k: Optional[dict], l: Optional[dict], what) -> str:
+        if not k or not l or k["status"] != "ok" or l["status"] != "ok":
+            return "–"
+        a, b = what(k), what(l)
+        return f"{b / a:.2f}" if a else "–"
+
+    body = []
+    for setting in order:
+        k, l = by[setting].get("kec"), by[setting].get("lut")
+        body.append([setting, cell(k), cell(l),
+                     ratio(k, l, lambda r: num(r["cpu_median_s"], 0)),
+                     ratio(k, l, lambda r: float(total_evals(r)))])
+    return ("CPU time (median of the repeats) / rhs evaluations incl. finite-difference Jacobian "
+            "columns (x real time):\n\n" +
+            table(["solver", "KEC", "LUT K=7.075e13", "CPU LUT/KEC", "evaluations LUT/KEC"],
+                  body))
+
+
 # ---- speed targets -----------------------------------------------------------------------------
 
 def speed_block(outdir: str) -> str:

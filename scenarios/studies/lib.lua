@@ -83,4 +83,27 @@ function M.spin(prescribed)
   return {}, 2.5e-4
 end
 
+-- The paper's solver settings (section 5.3) for the KEC/LUT cost ratio per integrator
+-- (paper_settings.lua, paper_settings_flange.lua): KEC and LUT with the Hertzian flange stiffness
+-- K = 7.075e13 N/m^1.5 (Table 3, D = K/100), the prescribed spin, RK4 and ABM at 1 ms, dopri5
+-- (ode45) at 1e-6 and 1e-8 and BDF (ode15s) at 1e-6 and 1e-7 (Table 7), each adaptive setting
+-- with the 1 ms largest step of the other studies and without a cap (solver.max_step = 0: the
+-- paper's own evaluation counts show no cap). Labels "<model> | <solver>" pair KEC and LUT.
+function M.paper_settings_cases()
+  local spin, h = M.spin(true)
+  local solvers = { { "RK4 1 ms", M.fixed("rk4", h) }, { "ABM 1 ms", M.fixed("abm", h) } }
+  for _, s in ipairs({ { "dopri5", 1e-6 }, { "dopri5", 1e-8 }, { "bdf", 1e-6 }, { "bdf", 1e-7 } }) do
+    local name = string.format("%s %g", s[1], s[2])
+    solvers[#solvers + 1] = { name .. ", 1 ms cap", M.adaptive(s[1], s[2], 1e-3) }
+    solvers[#solvers + 1] = { name .. ", no cap", M.adaptive(s[1], s[2], 0) }
+  end
+  local cases = {}
+  for _, s in ipairs(solvers) do
+    for _, m in ipairs({ { "KEC", M.kec() }, { "LUT K=7.075e13", M.lut(7.075e13) } }) do
+      cases[#cases + 1] = M.merge({ label = m[1] .. " | " .. s[1] }, m[2], s[2], spin)
+    end
+  end
+  return cases
+end
+
 return M

@@ -60,7 +60,7 @@ def test_blocks_replaced_between_markers():
     os.makedirs(docs)
     blocks_s = ["efficiency", "efficiency_paper", "accuracy", "flange", "flange_paper",
                 "flange_accuracy", "refinement", "work_precision", "hard_cases"]
-    blocks_p = ["speed", "bench", "effects"]
+    blocks_p = ["speed", "bench", "effects", "paper_settings", "paper_settings_flange"]
     blocks_v = ["validation_case1", "validation_case2", "validation_case3", "validation_cost"]
     blocks_h = ["hard_cases_detail"]
     for md, names in (("studies.md", blocks_s), ("performance.md", blocks_p),
@@ -79,6 +79,13 @@ def test_blocks_replaced_between_markers():
         cost("a", "kec", "abm", "0.5", 50006, step="0.001"),
         cost("b", "lut", "abm", "0.4", 50006, K="1e10", step="0.001"),
         cost("c", "lut", "abm", "0", 1000, K="7.075e13", step="0.001", status="failed")])
+    write_csv(os.path.join(out, "paper_settings", "study_cost.csv"), [
+        cost("KEC | bdf 1e-06, no cap", "kec", "bdf", "2.0", 40000, tol="1e-06"),
+        cost("LUT K=7.075e13 | bdf 1e-06, no cap", "lut", "bdf", "3.0", 50000, K="7.075e13",
+             tol="1e-06"),
+        cost("KEC | ABM 1 ms", "kec", "abm", "0.4", 48928, step="0.001"),
+        cost("LUT K=7.075e13 | ABM 1 ms", "lut", "abm", "0", 2000, K="7.075e13", step="0.001",
+             status="failed")])
     rc = update_docs([out, "--build", os.path.join(TMP, "nobuild"), "--docs", docs])
     check(rc == 0, "update_docs returns 0")
     s = open(os.path.join(docs, "studies.md")).read()
@@ -91,6 +98,13 @@ def test_blocks_replaced_between_markers():
     speed = p.split("generated: speed")[1].split("end: speed")[0]
     check("122.3x" in speed and "| met" in speed, "target 1 at 122x real time is met")
     check("0.8x" in speed and "NOT met" in speed, "target 2 at 0.8x real time is not met")
+    ps = p.split("generated: paper_settings ")[1].split("end: paper_settings ")[0]
+    check("| bdf 1e-06, no cap | 2.00 s / 40000 (12x) | 3.00 s / 50000 (8x) | 1.50 | 1.25 |" in ps,
+          "paper settings: KEC and LUT of one setting paired, with the LUT/KEC ratios")
+    check("| ABM 1 ms | 0.40 s / 48928 (61x) | failed at 24.46 s | – | – |" in ps,
+          "paper settings: a failed case is named, without a ratio")
+    check("Not generated" in p.split("generated: paper_settings_flange")[1],
+          "paper settings: the flange study's missing input gives a 'Not generated' line")
     eff = s.split("generated: efficiency ")[1].split("end: efficiency ")[0]
     check("failed" in eff and "(49x)" in eff, "efficiency table: failed case and real-time factor")
     paper = s.split("generated: efficiency_paper")[1].split("end: efficiency_paper")[0]
