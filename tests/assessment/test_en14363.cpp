@@ -52,7 +52,7 @@ TEST(TrackShift, ConstantForcesOfAWheelset) {
   EXPECT_NEAR(a.check.limit, 76666.6667, 1e-3);
   EXPECT_NEAR(a.check.margin, 26666.6667, 1e-3);
   EXPECT_TRUE(a.check.ok());
-  EXPECT_EQ(a.stats.count, 37U);  // window ends 2, 2.5, ..., 20 m
+  EXPECT_EQ(a.stats.count, 36U);  // last sample at 19.98 m: window ends 2, 2.5, ..., 19.5 m
 }
 
 TEST(DerailmentQuotient, ConstantRatioAndLiftedWheel) {
@@ -117,7 +117,7 @@ TEST(Stability, FiresOnGrowingNotOnDecaying) {
   const double sigma = std::log(20.0) / 20.0;  // amplitude 1 -> 20 m/s^2 over the run
   const StabilityAssessment grow = stability(oscillation(t, f0, sigma), t.s, t.dt, f0, 3000.0);
   EXPECT_FALSE(grow.check.ok());
-  EXPECT_GT(grow.check.value, 10.0);        // last 100 m: rms of amplitudes 9.4..20
+  EXPECT_GT(grow.check.value, 9.0);         // last 100 m: amplitudes 9.4..20, rms about 10
   EXPECT_NEAR(grow.position, 400.0, 1e-6);  // the largest rms at the end
   const StabilityAssessment decay = stability(oscillation(t, f0, -sigma), t.s, t.dt, f0, 3000.0);
   EXPECT_TRUE(decay.check.ok());

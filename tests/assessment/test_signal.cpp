@@ -71,7 +71,8 @@ TEST(Percentile, LinearInterpolationDefinition7) {
 TEST(BlockRms, SineBlocksAndTrailing) {
   const double dt = 1e-3;
   std::vector<double> x(12000);  // 12 s of a 1 Hz sine, amplitude 2
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] = 2.0 * std::sin(2.0 * std::numbers::pi * i * dt);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    x[i] = 2.0 * std::sin(2.0 * std::numbers::pi * static_cast<double>(i) * dt);
   const std::vector<double> b = blockRms(x, dt, 5.0);
   ASSERT_EQ(b.size(), 2U);  // the incomplete third block is dropped
   for (const double v : b) EXPECT_NEAR(v, std::numbers::sqrt2, 1e-9);
@@ -91,6 +92,14 @@ TEST(Butterworth, CornerGainsAndSteadyStart) {
   EXPECT_NEAR(std::abs(digitalResponse(bp, 3.0, dt)), std::numbers::sqrt2 / 2.0, 0.02);
   EXPECT_NEAR(std::abs(digitalResponse(bp, 7.0, dt)), std::numbers::sqrt2 / 2.0, 0.02);
   EXPECT_LT(std::abs(digitalResponse(bp, 0.5, dt)), 0.05);
+  // The stability criterion's band-pass: unit gain at the centre, -3 dB at the band edges
+  // sqrt(f0^2 + (B/2)^2) -+ B/2 = 3.385 and 7.385 Hz for f0 = 5 Hz, B = 4 Hz.
+  const Cascade rb = resonatorBandPass(5.0, 4.0, dt);
+  EXPECT_NEAR(std::abs(digitalResponse(rb, 5.0, dt)), 1.0, 1e-12);
+  EXPECT_NEAR(std::abs(digitalResponse(rb, std::sqrt(29.0) - 2.0, dt)), std::numbers::sqrt2 / 2.0,
+              5e-3);
+  EXPECT_NEAR(std::abs(digitalResponse(rb, std::sqrt(29.0) + 2.0, dt)), std::numbers::sqrt2 / 2.0,
+              5e-3);
   // A constant wheel load passes the low-pass without a start transient.
   std::vector<double> q(500, 5e4);
   applyCascade(lp, q, q);

@@ -104,7 +104,7 @@ StabilityAssessment stability(std::span<const double> bogie_lateral_acc, std::sp
   RB_CHECK(f0 > kStabilityHalfBand,
            "the instability frequency f0 must exceed 2 Hz, got " + std::to_string(f0) + " Hz");
   std::vector<double> a(bogie_lateral_acc.begin(), bogie_lateral_acc.end());
-  applyCascade(butterworthBandPass(f0 - kStabilityHalfBand, f0 + kStabilityHalfBand, dt), a, a);
+  applyCascade(resonatorBandPass(f0, 2.0 * kStabilityHalfBand, dt), a, a);
   StabilityAssessment r;
   r.series = slidingRms(a, s, kStabilityWindow, kStabilityStep);
   RB_CHECK(!r.series.value.empty(), "the stability criterion needs at least 100 m of track");

@@ -117,7 +117,8 @@ Check maximumWheelForce(std::span<const double> Q, double dt, double static_whee
 double bogieAccelerationLimit(double bogie_mass);
 
 // Running stability, simplified method: the bogie-frame lateral acceleration (above a wheelset)
-// band-pass filtered to f0 -+ 2 Hz (f0 the instability frequency [Hz], > 2 Hz), its sliding rms
+// band-pass filtered to f0 -+ 2 Hz (f0 the instability frequency [Hz], > 2 Hz; a second-order
+// band-pass of unit gain at f0 and 4 Hz bandwidth, resonatorBandPass()), its sliding rms
 // over 100 m in 10 m steps; value = the largest sliding rms [m/s^2] against
 // bogieAccelerationLimit(). Needs at least 100 m of track.
 struct StabilityAssessment {

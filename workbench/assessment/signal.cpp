@@ -151,6 +151,16 @@ Cascade butterworthBandPass(double f_low_hz, double f_high_hz, double dt) {
   return c;
 }
 
+Cascade resonatorBandPass(double f_centre_hz, double bandwidth_hz, double dt) {
+  checkCorner(f_centre_hz, dt);
+  RB_CHECK(bandwidth_hz > 0.0, "band-pass bandwidth must be positive");
+  const double w0 = kTwoPi * f_centre_hz;
+  const double b = kTwoPi * bandwidth_hz;  // w0 / Q
+  Cascade c;
+  c.push(bilinear({0.0, b, 0.0, w0 * w0, b, 1.0}, dt, f_centre_hz));
+  return c;
+}
+
 DistanceSeries slidingMean(std::span<const double> x, std::span<const double> s, double window,
                            double step) {
   return slidingWindow(x, s, window, step, false);

@@ -75,6 +75,11 @@ Cascade butterworthHighPass2(double fc_hz, double dt);  // 2nd order (1 section)
 // Butterworth low-pass at f_high.
 Cascade butterworthBandPass(double f_low_hz, double f_high_hz, double dt);
 
+// Second-order band-pass (one resonator section) H = (w0 / Q) s / (s^2 + w0 s / Q + w0^2) with
+// unit gain at the centre f_centre and the -3 dB bandwidth `bandwidth` (Q = f_centre / bandwidth),
+// prewarped at the centre.
+Cascade resonatorBandPass(double f_centre_hz, double bandwidth_hz, double dt);
+
 // Values of a sliding window over track length, evaluated at the window ends
 // p_k = s[0] + window + k step (k = 0, 1, ... while p_k <= s.back()); the window ending at p
 // holds the samples with p - window < s_j <= p. s must be non-decreasing.
