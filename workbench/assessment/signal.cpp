@@ -40,11 +40,12 @@ DistanceSeries slidingWindow(std::span<const double> x, std::span<const double> 
   std::size_t lo = 0;
   std::size_t hi = 0;  // samples [lo, hi) are in the window
   double sum = 0.0;
+  const auto term = [square](double v) { return square ? v * v : v; };
   for (std::size_t k = 0;; ++k) {
     const double p = s[0] + window + static_cast<double>(k) * step;
     if (p > s[n - 1] + tol) break;
-    for (; hi < n && s[hi] <= p + tol; ++hi) sum += square ? x[hi] * x[hi] : x[hi];
-    for (; lo < hi && s[lo] <= p - window + tol; ++lo) sum -= square ? x[lo] * x[lo] : x[lo];
+    for (; hi < n && s[hi] <= p + tol; ++hi) sum += term(x[hi]);
+    for (; lo < hi && s[lo] <= p - window + tol; ++lo) sum -= term(x[lo]);
     RB_CHECK(hi > lo, "a sliding window of " + std::to_string(window) +
                           " m holds no sample: the sample spacing exceeds the window");
     const double mean = sum / static_cast<double>(hi - lo);
