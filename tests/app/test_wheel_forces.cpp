@@ -126,9 +126,11 @@ void staticLoads(const char* method) {
 //   sum y_track = M (V^2/R cos(phi) - g sin(phi)),   sin(phi) = cant / cant_base,
 // the lateral component (in the track plane) of centripetal acceleration and gravity. The run
 // starts inside the curve (the car at s = 175 m, the curve begins at 150 m) and is averaged over
-// its last second, after the wheelsets' transient from their centred start. The car body's
-// absolute lateral acceleration (run.output.body_accelerations) is the centripetal V^2/R cos(phi).
-void steadyCurving(const char* method, double cant) {
+// its last 2 s (about two periods of the car's 0.9 Hz lower sway, which the centred start
+// excites). At every sample the forces also balance the bodies' measured absolute accelerations
+// (run.output.body_accelerations): sum y_track = sum_b m_b (ay_b - g sin(phi)); the car's ay is
+// the centripetal V^2/R cos(phi).
+void steadyCurving(const char* method, double cant, double tolerance) {
   const std::string c = std::to_string(cant);
   const hid_t f = run(std::string("scenarios/validation/case2_") + method + ".lua",
                       std::string("curving_") + method + "_" + c + ".h5",
@@ -140,35 +142,45 @@ void steadyCurving(const char* method, double cant) {
   const double sin_phi = cant / h5test::numAttr<double>(f, "/track", "cant_base");
   const double cos_phi = std::sqrt(1.0 - sin_phi * sin_phi);
   const double a_u = V * V / R * cos_phi - kGravity * sin_phi;
-  std::vector<double> sum(t.size(), 0.0);
+  const double expected = kWagonMass * a_u;
+  std::vector<double> sum(t.size(), 0.0), inertia(t.size(), 0.0);
   for (const char* ws : kWheelsets)
     for (const char* side : kSides) {
       const auto y = h5test::dataset(f, wheel(ws, side) + "y_track");
       ASSERT_EQ(y.size(), t.size());
       for (std::size_t k = 0; k < t.size(); ++k) sum[k] += y[k];
     }
+  const std::pair<const char*, double> bodies[] = {
+      {"car", 32000.0}, {"bogie1", 2615.0}, {"bogie2", 2615.0}, {"ws1", 1813.0},
+      {"ws2", 1813.0},  {"ws3", 1813.0},    {"ws4", 1813.0}};
+  for (const auto& [body, mass] : bodies) {
+    const auto ay = h5test::dataset(f, std::string("/bodies/") + body + "/ay");
+    ASSERT_EQ(ay.size(), t.size()) << body;
+    for (std::size_t k = 0; k < t.size(); ++k) inertia[k] += mass * (ay[k] - kGravity * sin_phi);
+  }
   const auto ay = h5test::dataset(f, "/bodies/car/ay");
-  ASSERT_EQ(ay.size(), t.size());
-  double mean = 0.0, mean_ay = 0.0;
+  double mean = 0.0, mean_ay = 0.0, dynamic = 0.0;
   int n = 0;
-  for (std::size_t k = 0; k < t.size(); ++k)
-    if (t[k] >= t.back() - 1.0) {
-      mean += sum[k];
-      mean_ay += ay[k];
-      ++n;
-    }
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    if (t[k] >= 0.5) dynamic = std::max(dynamic, std::abs(sum[k] - inertia[k]) / expected);
+    if (t[k] < t.back() - 2.0) continue;
+    mean += sum[k];
+    mean_ay += ay[k];
+    ++n;
+  }
   mean /= n;
   mean_ay /= n;
-  const double expected = kWagonMass * a_u;
   const double error = (mean - expected) / expected;
   const double approx = kWagonMass * (V * V / R - kGravity * sin_phi);
   std::printf(
       "[%s, cant %.3f m] curving: sum y_track = %.2f N, M a_u = %.2f N (a_u = %.5f m/s^2): "
-      "error %.3f %% (against M (V^2/R - g cant/base) = %.2f N: %.3f %%); car ay = %.5f m/s^2 "
-      "against V^2/R cos(phi) = %.5f\n",
+      "error %.3f %% (against M (V^2/R - g cant/base) = %.2f N: %.3f %%); max |sum y_track - "
+      "sum m (ay - g sin phi)| / (M a_u) = %.3f %%; car ay = %.5f m/s^2 against V^2/R cos(phi) "
+      "= %.5f\n",
       method, cant, mean, expected, a_u, 100 * error, approx, 100 * (mean - approx) / approx,
-      mean_ay, V * V / R * cos_phi);
-  EXPECT_LT(std::abs(error), 0.01) << method;
+      100 * dynamic, mean_ay, V * V / R * cos_phi);
+  EXPECT_LT(std::abs(error), tolerance) << method;
+  EXPECT_LT(dynamic, 0.015) << method;
   EXPECT_NEAR(mean_ay, V * V / R * cos_phi, 0.01 * V * V / R) << method;
   H5Fclose(f);
 }
@@ -180,7 +192,7 @@ struct PatchCheck {
   double resolved = 0.0;   // max |patch track force - resolved| / Q scale
   double t_gamma = 0.0;    // max relative |t_gamma - (|fx sx| + |fy sy| + |mz spin|)|
   double power = 0.0;      // max relative |power - t_gamma V|
-  int two_point = 0;       // samples with both patches active and loaded
+  int two_point = 0;       // wheel samples in tread + flange contact, both loaded
   double flange_q = 0.0;   // largest Q of a patch 1
   double max_t_gamma = 0.0;
   double max_spin_term = 0.0;  // largest |mz spin| of a patch
@@ -211,6 +223,7 @@ void checkWheel(hid_t f, const char* ws, int s, const std::vector<double>& speed
   const auto X = h5test::dataset(f, base + "X"), Y = h5test::dataset(f, base + "Y");
   const auto Q = h5test::dataset(f, base + "Q"), yt = h5test::dataset(f, base + "y_track");
   const auto N = h5test::dataset(f, base + "normal_force");
+  const auto regime = h5test::dataset(f, base + "regime");
   const auto yaw = h5test::dataset(f, std::string("/bodies/") + ws + "/yaw");
   ASSERT_EQ(p0.active.size(), Q.size());
   ASSERT_EQ(p1.active.size(), Q.size());
@@ -222,7 +235,9 @@ void checkWheel(hid_t f, const char* ws, int s, const std::vector<double>& speed
       c.wheel_sum = std::max(c.wheel_sum, std::abs(d) / scale);
     for (const PatchSample& p : {a, b})
       if (p.active > 0.5) checkPatch(p, kSigma[s], yaw[k], speed[k], scale, c);
-    if (a.active > 0.5 && b.active > 0.5 && a.normal > 0.0 && b.normal > 0.0) {
+    // Tread and flange both carrying load (a KEC band inside the tread, which the centred
+    // S1002/60E1 wheel sits in, is not a two-point contact in this sense).
+    if (regime[k] == 1.0 && a.normal > 1e3 && b.normal > 1e3) {
       ++c.two_point;
       c.flange_q = std::max(c.flange_q, b.Q);
     }
@@ -246,11 +261,17 @@ void report(const char* what, const PatchCheck& c) {
       c.max_spin_term, c.power);
 }
 
-// Two-point contact: the sharp curve (R = 150 m, 16 m/s, smooth track) puts the leading wheelset
-// into tread + flange contact from t ~ 0.5 s (KEC: both ends A and B of the tread-flange band; LUT:
-// the tread and the Hertz flange).
-void twoPoint(const char* method) {
-  const hid_t f = run("scenarios/hard/sharp_curve.lua", std::string("two_point_") + method + ".h5",
+// Two-point contact. KEC: the sharp curve (R = 150 m, 16 m/s, smooth track) puts the leading
+// wheelset's outer wheel into tread + flange contact (both ends A and B of the tread-flange band
+// loaded) from t ~ 0.5 s. LUT: on that curve the tread point at the flange root carries the
+// curving force and the flange stays clear, so the wheel-climb case (R = 100 m, 5 m/s, mu = 0.5)
+// is used, where the leading wheelset's outer wheel has tread and Hertz flange contact from
+// t ~ 0.2 s (up to ~33 kN on the flange).
+// resolved: tolerance of the patch forces against their resolution with a unit normal; the LUT's
+// flange normal is interpolated from its table, unit only to about 1e-4 (the written forces are
+// those the model applies, with that normal).
+void twoPoint(const char* method, const char* scenario, double resolved) {
+  const hid_t f = run(scenario, std::string("two_point_") + method + ".h5",
                       {std::string("contact.method=") + method, "run.duration=1"});
   ASSERT_GE(f, 0) << method;
   const PatchCheck c = checkPatches(f);
@@ -258,7 +279,7 @@ void twoPoint(const char* method) {
   EXPECT_GT(c.two_point, 0) << method;
   EXPECT_GT(c.flange_q, 1e3) << method;
   EXPECT_LT(c.wheel_sum, 1e-12) << method;
-  EXPECT_LT(c.resolved, 1e-12) << method;
+  EXPECT_LT(c.resolved, resolved) << method;
   EXPECT_LT(c.t_gamma, 1e-12) << method;
   EXPECT_LT(c.power, 1e-12) << method;
   EXPECT_GT(c.max_t_gamma, 0.0) << method;
@@ -274,24 +295,27 @@ TEST(WheelForces, StaticWheelLoadsOnTangentLut) {
   staticLoads("lut");
 }
 
+// Case 2 as shipped (no cant): within 1 % (measured +0.21 % KEC, -0.19 % LUT).
 TEST(WheelForces, SteadyCurvingBalancesUnbalancedAccelerationKec) {
-  steadyCurving("kec", 0.0);
+  steadyCurving("kec", 0.0, 0.01);
 }
 TEST(WheelForces, SteadyCurvingBalancesUnbalancedAccelerationLut) {
-  steadyCurving("lut", 0.0);
+  steadyCurving("lut", 0.0, 0.01);
 }
+// With 50 mm cant the unbalanced acceleration is 0.47 m/s^2 (59 % of V^2/R), so the same force
+// error is a larger fraction of it (measured +0.93 % KEC, +0.01 % LUT): 1.5 %.
 TEST(WheelForces, SteadyCurvingWithCantKec) {
-  steadyCurving("kec", 0.05);
+  steadyCurving("kec", 0.05, 0.015);
 }
 TEST(WheelForces, SteadyCurvingWithCantLut) {
-  steadyCurving("lut", 0.05);
+  steadyCurving("lut", 0.05, 0.015);
 }
 
 TEST(WheelForces, TwoPointPatchesAddUpToTheWheelKec) {
-  twoPoint("kec");
+  twoPoint("kec", "scenarios/hard/sharp_curve.lua", 1e-12);
 }
 TEST(WheelForces, TwoPointPatchesAddUpToTheWheelLut) {
-  twoPoint("lut");
+  twoPoint("lut", "scenarios/hard/wheel_climb.lua", 1e-3);
 }
 
 // T gamma with the spin term: the Kalker linear law gives the spin moment mz.
