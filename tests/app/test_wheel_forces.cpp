@@ -109,6 +109,27 @@ void staticLoads(const char* method) {
       y_wheel = Yl[k];
     }
   }
+  // Contact positions: with the wheelset centred (no roll, no yaw) the contact point of a patch
+  // lies at y = sigma Lw + s_w (Eq. 7, 10), the same Lw for every patch and both wheels.
+  double lw = 0.0, worst_lw = 0.0;
+  for (int s = 0; s < 2; ++s)
+    for (const char* p : {"patch0/", "patch1/"}) {
+      const std::string base = wheel("ws1", kSides[s]) + p;
+      const auto active = h5test::dataset(f, base + "active");
+      const auto y = h5test::dataset(f, base + "y"), sw = h5test::dataset(f, base + "wheel_s");
+      for (std::size_t k = 0; k < y.size(); ++k) {
+        if (active[k] < 0.5) continue;
+        const double l = kSigma[s] * (y[k] - sw[k]);
+        if (lw == 0.0) lw = l;
+        worst_lw = std::max(worst_lw, std::abs(l - lw));
+      }
+    }
+  std::printf(
+      "[%s] static: contact positions y = sigma Lw + s_w with Lw = %.6f m (spread %.3e m)\n",
+      method, lw, worst_lw);
+  EXPECT_GT(lw, 0.7) << method;
+  EXPECT_LT(lw, 0.8) << method;
+  EXPECT_LT(worst_lw, 1e-12) << method;
   std::printf(
       "[%s] static: max |Q - W/8| / (W/8) = %.3e (W/8 = %.3f N), max |sum y_track| / (W/8) = "
       "%.3e, max |Y_l - Y_r| / (W/8) = %.3e, Y per wheel = %.3f N, max |X| / (W/8) = %.3e\n",
