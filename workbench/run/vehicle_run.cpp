@@ -97,6 +97,10 @@ constexpr std::pair<const char*, const char*> kPatchQ[] = {{"active", "-"},
                                                            {"power", "W"}};
 constexpr std::size_t kNp = std::size(kPatchQ);
 constexpr std::size_t kWheelValues = kNq + 2 * kNp;  // values per wheel and output time
+// What patch 0 and 1 are, [KEC, LUT][patch].
+constexpr const char* kPatchRole[2][2] = {
+    {"KEC contact point, or point A in the band", "KEC point B (flange-side end of the band)"},
+    {"LUT tread", "LUT flange (Hertz)"}};
 
 // The conventions of the track-frame forces (dynamics::TrackForces) and of the patches.
 void writeContactConventions(io::ResultFile& f, dynamics::ContactMethod method) {
@@ -193,13 +197,10 @@ void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
     for (const char* side : {"left", "right"}) {
       const std::string base = "/contact/" + v.bodies[w].name + "/" + side + "/";
       for (const auto& [q, u] : kWheelQ) outputs.push_back({base + q, u});
-      for (const char* patch : {"patch0", "patch1"}) {
-        const bool second = patch[5] == '1';
-        f.attr(base + patch, "role",
-               std::string(kec ? (second ? "KEC point B (flange-side end of the band)"
-                                         : "KEC contact point, or point A in the band")
-                               : (second ? "LUT flange (Hertz)" : "LUT tread")));
-        for (const auto& [q, u] : kPatchQ) outputs.push_back({base + patch + "/" + q, u});
+      for (int p = 0; p < 2; ++p) {
+        const std::string patch = base + "patch" + std::to_string(p);
+        f.attr(patch, "role", std::string(kPatchRole[kec ? 0 : 1][p]));
+        for (const auto& [q, u] : kPatchQ) outputs.push_back({patch + "/" + q, u});
       }
     }
   writeContactConventions(f, cm.method);
