@@ -46,6 +46,25 @@ int checkWheelLift(const ContactModels& models, const StageInput& in, const Whee
   return 0;
 }
 
+// Track-frame lateral position of the contact point of every active patch of wheelset w: the
+// wheel material point u = (0, sigma Lw + s_w, -r) of the wheelset intermediate frame (Eq. 7, 10;
+// as setupPatch places it), turned by the wheelset's roll and yaw, plus its lateral displacement.
+void contactPositions(const ContactModels& models, const WheelsetWork& ww, int w,
+                      ContactWorkspace& work) {
+  const Eigen::Matrix3d& A = work.bodies.kin[ww.body].attach.A;
+  const double y = work.bodies.q[ww.body][vehicle::kY];
+  const double lw = models.contact.geometry.wheel_lw;
+  for (int s = 0; s < 2; ++s) {
+    const double sigma = contact::kSideSign[s];
+    for (PatchOutput& po :
+         work.wheels[2 * static_cast<std::size_t>(w) + static_cast<std::size_t>(s)].patch) {
+      if (!po.active) continue;
+      const Eigen::Vector3d u(0.0, sigma * lw + po.s_w, -po.radius);
+      po.y = y + A.row(1).dot(u);
+    }
+  }
+}
+
 // Stages 5-8 (contact_stages.hpp) of wheelset w: patches, augmented system, normal/tangential
 // coupling, checks, rates and outputs.
 template <ContactMethod kMethod, class Law>
@@ -64,8 +83,10 @@ int wheelsetStages(const ContactModels& models, const StageInput& in, int w, dou
   if (const int rc = internal::checkSolution(models, in, ww, x, work); rc != 0) return rc;
   internal::writeWheelsetRates(models.layout, w, in.y, x, ydot);
   if (const int rc = checkWheelLift<kMethod>(models, in, ww, work, lift); rc != 0) return rc;
-  if (in.mode == EvalMode::Output)
+  if (in.mode == EvalMode::Output) {
     internal::wheelsetOutputs(in, w, ww, x, Law::kCreep, kMethod == ContactMethod::Lut, work);
+    contactPositions(models, ww, w, work);
+  }
   return 0;
 }
 

@@ -61,6 +61,20 @@ namespace rb::dynamics {
 vehicle::VehicleLayout contactLayout(const vehicle::VehicleModel& model,
                                      WheelsetSpin spin = WheelsetSpin::Free);
 
+// Wheel/rail forces in the track frame (EN 14363 Y and Q): components of the force of the rail on
+// the wheel in the wheelset's track frame (Eq. 1-2: x along the track, y to the left, z up, turned
+// by the design cant, without the cross-level rotation of the irregularities), so y lies in the
+// track plane and z is perpendicular to it.
+//   X  longitudinal, positive forward;
+//   Q  perpendicular to the track plane, positive upward on the wheel (the wheel load);
+//   Y  in the track plane, positive toward the track centre on either wheel (EN 14363: positive
+//      when it pushes the flange away from its rail), Y = -sigma y_track;
+//   y_track  the same lateral component, positive to the left on both wheels (sums per wheelset:
+//      the track-shifting force of a wheelset is the sum of y_track over its wheels).
+struct TrackForces {
+  double X = 0.0, Y = 0.0, Q = 0.0, y_track = 0.0;  // [N]
+};
+
 // One contact patch of a wheel. Creep forces act on the wheel in the patch's contact frame:
 // x along the track (rolling direction), n the rail normal (into the wheel), y = n x x.
 struct PatchOutput {
@@ -74,6 +88,14 @@ struct PatchOutput {
   double gamma = 0.0;                     // [rad] contact angle (positive toward the centre)
   double radius = 0.0;                    // [m] rolling radius at the contact point
   double a = 0.0, b = 0.0;                // [m] Hertz semi-axes (rolling, lateral)
+  // Contact angle of the normal in the track frame: gamma turned by the rails' cross-level angle
+  // (Eq. 5), positive toward the centre; with it Q = N cos + sigma fy sin exactly (any yaw).
+  double gamma_track = 0.0;  // [rad]
+  double y = 0.0;            // [m] lateral track-frame position of the contact point (left +)
+  TrackForces force;         // normal and creep forces of this patch, track frame
+  // Wear number T gamma = |fx sx| + |fy sy| + |mz spin| [N] (the spin term only where the law
+  // gives mz: Kalker linear) and the power it dissipates, T gamma V [W].
+  double t_gamma = 0.0, power = 0.0;
 };
 
 // Contact of one wheel at an output time.
@@ -91,8 +113,8 @@ struct WheelOutput {
   double flange_force = 0.0;        // [N] LUT Hertz flange force (Eq. 20)
   double force_y = 0.0, force_z = 0.0;  // [N] resultant contact force on the wheel (normal +
                                         // tangential, all patches), track-frame Y and Z
-  double y_over_q = 0.0;  // derailment quotient Y/Q: Y = lateral force of the rail on the wheel
-                          // toward the track centre (-sigma force_y), Q = force_z
+  TrackForces force;      // the resultant in EN 14363 terms: the sum of the patches' forces
+  double y_over_q = 0.0;  // derailment quotient Y/Q (EN 14363) of `force`
   bool lift = false;      // a constraint normal force is negative (wheel lift, not modelled)
 };
 

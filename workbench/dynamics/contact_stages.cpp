@@ -347,9 +347,10 @@ int refuseWheelLift(const ContactModels& models, const StageInput& in, const Whe
 
 namespace {
 
-// Output of one patch; adds its force to the wheel's resultant F (track comps).
-void patchOutput(const Patch& pp, const Eigen::Vector2d& lambda, bool creep, PatchOutput& po,
-                 WheelOutput& o, Eigen::Vector3d& F) {
+// Output of one patch of the wheel on side sigma; adds its force to the wheel's resultant F
+// (track comps). speed: V(t) [m/s], for the dissipated power.
+void patchOutput(const Patch& pp, const Eigen::Vector2d& lambda, bool creep, double sigma,
+                 double speed, PatchOutput& po, WheelOutput& o, Eigen::Vector3d& F) {
   po.active = true;
   po.on_flange = pp.on_flange;
   po.normal = pp.normalAt(lambda);
@@ -369,7 +370,16 @@ void patchOutput(const Patch& pp, const Eigen::Vector2d& lambda, bool creep, Pat
   }
   o.normal += po.normal;
   (pp.on_flange ? o.normal_flange : o.normal_tread) += po.normal;
-  F += po.normal * pp.n + po.fx * pp.ex + po.fy * pp.ey;
+  const Eigen::Vector3d Fp = po.normal * pp.n + po.fx * pp.ex + po.fy * pp.ey;
+  F += Fp;
+  po.force = {Fp.x(), -sigma * Fp.y(), Fp.z(), Fp.y()};
+  // The normal is the planar one carried by the yaw psi (contact_patches.hpp, setupPatch):
+  // (n_x, n_y) = nu (-sin psi, cos psi) with nu = -sigma sin(gamma_track), n_z = cos(gamma_track).
+  const double nu = std::copysign(std::hypot(pp.n.x(), pp.n.y()), pp.n.y());
+  po.gamma_track = std::atan2(-sigma * nu, pp.n.z());
+  // Energy dissipation of the patch (the T gamma wear number): creep forces times creepages.
+  po.t_gamma = std::abs(po.fx * po.sx) + std::abs(po.fy * po.sy) + std::abs(po.mz * po.spin);
+  po.power = po.t_gamma * speed;
   if (po.normal < 0.0) o.lift = true;
 }
 
@@ -387,7 +397,8 @@ void wheelsetOutputs(const StageInput& in, int w, const WheelsetWork& ww, const 
     const double sigma = contact::kSideSign[s];
     Eigen::Vector3d F = Eigen::Vector3d::Zero();
     for (int p = 0; p < 2; ++p)
-      if (ww.patch[s][p].active) patchOutput(ww.patch[s][p], ww.lambda, creep, o.patch[p], o, F);
+      if (ww.patch[s][p].active)
+        patchOutput(ww.patch[s][p], ww.lambda, creep, sigma, in.speed, o.patch[p], o, F);
     o.regime = ww.regime[s];
     o.weight = ww.weight[s];
     if (lut) {
@@ -396,7 +407,8 @@ void wheelsetOutputs(const StageInput& in, int w, const WheelsetWork& ww, const 
     }
     o.force_y = F.y();
     o.force_z = F.z();
-    o.y_over_q = std::abs(F.z()) > 0.0 ? -sigma * F.y() / F.z() : 0.0;
+    o.force = {F.x(), -sigma * F.y(), F.z(), F.y()};
+    o.y_over_q = std::abs(o.force.Q) > 0.0 ? o.force.Y / o.force.Q : 0.0;
   }
 }
 

@@ -49,13 +49,93 @@ std::string kindName(vehicle::BodyKind k) {
 }
 
 // Per wheel: the quantities a user expects of a contact run.
-constexpr std::pair<const char*, const char*> kWheelQ[] = {
-    {"normal_force", "N"},  {"normal_tread", "N"},    {"normal_flange", "N"},
-    {"creep_force_x", "N"}, {"creep_force_y", "N"},   {"creepage_x", "-"},
-    {"creepage_y", "-"},    {"spin", "1/m"},          {"wheel_s", "m"},
-    {"rail_s", "m"},        {"contact_angle", "rad"}, {"flange_indentation", "m"},
-    {"flange_force", "N"},  {"regime", "-"},          {"y_over_q", "-"}};
+constexpr std::pair<const char*, const char*> kWheelQ[] = {{"normal_force", "N"},
+                                                           {"normal_tread", "N"},
+                                                           {"normal_flange", "N"},
+                                                           {"creep_force_x", "N"},
+                                                           {"creep_force_y", "N"},
+                                                           {"creepage_x", "-"},
+                                                           {"creepage_y", "-"},
+                                                           {"spin", "1/m"},
+                                                           {"wheel_s", "m"},
+                                                           {"rail_s", "m"},
+                                                           {"contact_angle", "rad"},
+                                                           {"flange_indentation", "m"},
+                                                           {"flange_force", "N"},
+                                                           {"regime", "-"},
+                                                           {"y_over_q", "-"},
+                                                           {"X", "N"},
+                                                           {"Y", "N"},
+                                                           {"Q", "N"},
+                                                           {"y_track", "N"}};
 constexpr std::size_t kNq = std::size(kWheelQ);
+
+// Per contact patch (/contact/<wheelset>/<side>/patch0, patch1): what an EN 14363 assessment and
+// a wear (T gamma) analysis read. An inactive patch writes zeros (active = 0).
+constexpr std::pair<const char*, const char*> kPatchQ[] = {{"active", "-"},
+                                                           {"on_flange", "-"},
+                                                           {"normal_force", "N"},
+                                                           {"creep_force_x", "N"},
+                                                           {"creep_force_y", "N"},
+                                                           {"spin_moment", "N m"},
+                                                           {"creepage_x", "-"},
+                                                           {"creepage_y", "-"},
+                                                           {"spin", "1/m"},
+                                                           {"wheel_s", "m"},
+                                                           {"rail_s", "m"},
+                                                           {"y", "m"},
+                                                           {"contact_angle", "rad"},
+                                                           {"contact_angle_track", "rad"},
+                                                           {"rolling_radius", "m"},
+                                                           {"semi_axis_a", "m"},
+                                                           {"semi_axis_b", "m"},
+                                                           {"X", "N"},
+                                                           {"Y", "N"},
+                                                           {"Q", "N"},
+                                                           {"y_track", "N"},
+                                                           {"t_gamma", "N"},
+                                                           {"power", "W"}};
+constexpr std::size_t kNp = std::size(kPatchQ);
+constexpr std::size_t kWheelValues = kNq + 2 * kNp;  // values per wheel and output time
+// What patch 0 and 1 are, [KEC, LUT][patch].
+constexpr const char* kPatchRole[2][2] = {
+    {"KEC contact point, or point A in the band", "KEC point B (flange-side end of the band)"},
+    {"LUT tread", "LUT flange (Hertz)"}};
+
+// The conventions of the track-frame forces (dynamics::TrackForces) and of the patches.
+void writeContactConventions(io::ResultFile& f, dynamics::ContactMethod method) {
+  f.attr("/contact", "force_frame",
+         std::string("X, Y, Q, y_track: force of the rail on the wheel (per wheel: the sum over "
+                     "its patches, normal and creep forces) in the wheelset's track frame: x "
+                     "along the track, y in the track plane (design cant included, irregularities "
+                     "not), z perpendicular to the track plane, as EN 14363"));
+  f.attr("/contact", "sign_X", std::string("positive forward (direction of travel)"));
+  f.attr("/contact", "sign_Y",
+         std::string("positive toward the track centre on either wheel (EN 14363: positive when "
+                     "it pushes the flange away from its rail); Y = -y_track on the left wheel, "
+                     "+y_track on the right; y_over_q = Y / Q"));
+  f.attr("/contact", "sign_Q", std::string("positive upward on the wheel (wheel load)"));
+  f.attr("/contact", "sign_y_track",
+         std::string("positive to the left on both wheels; the sum over a wheelset's wheels is "
+                     "its track-shifting force"));
+  f.attr("/contact", "patch_contact_frame",
+         std::string("creep_force_x/y, spin_moment act on the wheel in the patch's contact frame: "
+                     "x the wheel's rolling direction, n the rail normal into the wheel, y = n x "
+                     "x; contact_angle from the contact table, contact_angle_track including the "
+                     "rails' cross-level angle, both positive toward the track centre; y: "
+                     "lateral track-frame position of the contact point, positive to the left"));
+  f.attr("/contact", "t_gamma",
+         std::string("T gamma = |fx sx| + |fy sy| + |mz spin| [N] (mz only from the Kalker "
+                     "linear law, 0 with Polach); power = T gamma V [W]"));
+  f.attr("/contact", "patches",
+         std::string(method == dynamics::ContactMethod::Kec
+                         ? "KEC: patch0 = the contact point, or inside a regularised "
+                           "tread-flange band point A (field-side end, weight 1 - w); patch1 = "
+                           "point B (flange-side end, weight w), active only inside the band "
+                           "(Eq. 26)"
+                         : "LUT: patch0 = the tread contact (Eq. 17); patch1 = the Hertz flange "
+                           "contact (Eq. 20-21), active while the flange indentation is positive"));
+}
 
 std::string num(double v) {
   std::ostringstream os;
@@ -112,10 +192,18 @@ void addVehicleChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
 void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputChannel>& outputs) {
   const auto& v = *m.vehicle;
   const auto& cm = *m.contact;
+  const bool kec = cm.method == dynamics::ContactMethod::Kec;
   for (int w : cm.wheelsets)
-    for (const char* side : {"left", "right"})
-      for (const auto& [q, u] : kWheelQ)
-        outputs.push_back({"/contact/" + v.bodies[w].name + "/" + side + "/" + q, u});
+    for (const char* side : {"left", "right"}) {
+      const std::string base = "/contact/" + v.bodies[w].name + "/" + side + "/";
+      for (const auto& [q, u] : kWheelQ) outputs.push_back({base + q, u});
+      for (int p = 0; p < 2; ++p) {
+        const std::string patch = base + "patch" + std::to_string(p);
+        f.attr(patch, "role", std::string(kPatchRole[kec ? 0 : 1][p]));
+        for (const auto& [q, u] : kPatchQ) outputs.push_back({patch + "/" + q, u});
+      }
+    }
+  writeContactConventions(f, cm.method);
   f.attr("/contact", "method", std::string(dynamics::ContactModel::methodName(cm.method)));
   f.attr("/contact", "creep", std::string(dynamics::ContactModel::creepName(cm.creep)));
   f.attr("/contact", "normal_forces",
@@ -127,7 +215,41 @@ void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
   f.attr("/contact", "table_bytes", static_cast<std::int64_t>(ts.bytes));
 }
 
-// Per-wheel values (kWheelQ order); returns the next output slot.
+// Per-patch values (kPatchQ order); returns the next output slot.
+double* samplePatch(const dynamics::PatchOutput& p, double* out) {
+  if (!p.active) {
+    for (std::size_t k = 0; k < kNp; ++k) *out++ = 0.0;
+    return out;
+  }
+  const double vals[] = {1.0,
+                         p.on_flange ? 1.0 : 0.0,
+                         p.normal,
+                         p.fx,
+                         p.fy,
+                         p.mz,
+                         p.sx,
+                         p.sy,
+                         p.spin,
+                         p.s_w,
+                         p.s_r,
+                         p.y,
+                         p.gamma,
+                         p.gamma_track,
+                         p.radius,
+                         p.a,
+                         p.b,
+                         p.force.X,
+                         p.force.Y,
+                         p.force.Q,
+                         p.force.y_track,
+                         p.t_gamma,
+                         p.power};
+  static_assert(std::size(vals) == kNp);
+  for (const double x : vals) *out++ = x;
+  return out;
+}
+
+// Per-wheel values (kWheelQ order, then its patches); returns the next output slot.
 double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t, double* out,
                      CreepageMaximum& creepage) {
   for (const auto& w : wheels) {
@@ -149,8 +271,14 @@ double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t,
                            w.flange_indentation,
                            w.flange_force,
                            static_cast<double>(w.regime),
-                           w.y_over_q};
+                           w.y_over_q,
+                           w.force.X,
+                           w.force.Y,
+                           w.force.Q,
+                           w.force.y_track};
+    static_assert(std::size(vals) == kNq);
     for (const double x : vals) *out++ = x;
+    for (const auto& patch : w.patch) out = samplePatch(patch, out);
     creepage.update(w, t);
   }
   return out;
@@ -224,7 +352,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     }
     if (!contact) return;
     if (contact->wheelOutputs(t, y.data(), wo) != 0) {
-      for (std::size_t k = 0; k < wo.size() * kNq; ++k)
+      for (std::size_t k = 0; k < wo.size() * kWheelValues; ++k)
         *out++ = std::numeric_limits<double>::quiet_NaN();
       return;
     }
