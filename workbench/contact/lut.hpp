@@ -162,6 +162,8 @@ class LutTable {
     bool inside = true;
   };
   Cell locate(double y, double xi_g) const;
+  // evalChannel at a located cell (evalZPhi shares one lookup between z and phi).
+  LutValue channelAt(std::size_t channel, const Cell& c) const;
 
   GridSpec y_, g_;
   std::size_t ny_ = 0, ng_ = 0;

@@ -148,8 +148,11 @@ void LutTable::evalRange(double y, double xi_g, LutSample& out, std::size_t firs
 }
 
 LutValue LutTable::evalChannel(std::size_t ch, double y, double xi_g) const {
+  return channelAt(ch, locate(y, xi_g));
+}
+
+LutValue LutTable::channelAt(std::size_t ch, const Cell& c) const {
   LutValue r;
-  const Cell c = locate(y, xi_g);
   r.inside = c.inside;
   const Basis by(c.t);
   const std::size_t stride_y = kLutChannels * 4, stride_g = ny_ * kLutChannels * 4;
@@ -190,8 +193,9 @@ LutValue LutTable::evalChannel(std::size_t ch, double y, double xi_g) const {
 }
 
 void LutTable::evalZPhi(double y, double xi_g, LutValue& z, LutValue& phi) const {
-  z = evalChannel(kLutZ, y, xi_g);
-  phi = evalChannel(kLutPhi, y, xi_g);
+  const Cell c = locate(y, xi_g);  // one cell lookup for both channels
+  z = channelAt(kLutZ, c);
+  phi = channelAt(kLutPhi, c);
 }
 
 }  // namespace rb::contact

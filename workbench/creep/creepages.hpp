@@ -38,12 +38,20 @@ struct Creepages {
                      // (only the falling friction law of polach.hpp uses it)
 };
 
+// std::fmax(a, b) (the other argument when one is NaN, else the larger) written out: the
+// compiler calls libm for std::fmax on x86-64, this inlines to compares. Bit-identical.
+inline double fmaxOf(double a, double b) {
+  if (std::isnan(a)) return b;
+  if (std::isnan(b)) return a;
+  return a < b ? b : a;
+}
+
 // dv_long, dv_lat: velocity of the wheel material point relative to the rail material point at the
 // contact, along x and y [m/s]; domega_n: relative angular velocity (wheel - rail) about n [rad/s];
 // V: reference speed [m/s] (signed); v_min > 0: lower bound of |V| [m/s].
 inline Creepages creepagesFromKinematics(double dv_long, double dv_lat, double domega_n, double V,
                                          double v_min = kMinReferenceSpeed) {
-  const double v_ref = std::fmax(std::fabs(V), v_min);
+  const double v_ref = fmaxOf(std::fabs(V), v_min);
   const double inv = 1.0 / v_ref;
   const double sigma = V < 0.0 ? -1.0 : 1.0;
   return {dv_long * inv, dv_lat * inv, sigma * domega_n * inv, v_ref};

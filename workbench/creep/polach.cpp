@@ -14,7 +14,7 @@ constexpr double kPi = std::numbers::pi;
 
 // sqrt(x^2 + y^2) without overflow or underflow of the squares.
 double norm2(double x, double y) {
-  const double m = std::fmax(std::fabs(x), std::fabs(y));
+  const double m = fmaxOf(std::fabs(x), std::fabs(y));
   if (m == 0.0) return 0.0;
   if (m > 1e-150 && m < 1e150) return std::sqrt(x * x + y * y);
   return std::hypot(x, y);

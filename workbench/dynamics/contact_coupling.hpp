@@ -5,8 +5,8 @@
 //   Lagged      creep forces at the normal forces of the previous evaluation (NormalForceMemory),
 //               one augmented solve (the paper);
 //   Consistent  lambda = Phi(lambda), Phi = the normal forces that the creep forces at lambda
-//               produce: plain fixed-point steps while they contract well, Newton with a
-//               finite-difference 2x2 Jacobian otherwise.
+//               produce: quasi-Newton (Broyden) steps with a remembered 2x2 Jacobian of Phi,
+//               a finite-difference Jacobian when they do not contract well.
 // Compiled per creep law. Internal to workbench/dynamics.
 #include <Eigen/Dense>
 #include <algorithm>
@@ -59,28 +59,52 @@ void laggedCoupling(const ContactModel& c, const AugmentedSystem& system, Wheels
       std::max(stats.max_lagged_change, (ww.lambda - previous).cwiseAbs().maxCoeff());
 }
 
-// Newton step on lambda - Phi(lambda) = 0 with a finite-difference Jacobian; f0 = Phi(lambda) -
-// lambda. Falls back to the fixed-point step when the Jacobian is singular.
+// Finite-difference Jacobian d Phi / d lambda at lambda (phi0 = Phi(lambda)): two Phi evaluations.
 template <class Phi>
-Eigen::Vector2d newtonStep(Phi& phi, const Eigen::Vector2d& lambda, const Eigen::Vector2d& f0) {
+Eigen::Matrix2d finiteDifferenceJacobian(Phi& phi, const Eigen::Vector2d& lambda,
+                                         const Eigen::Vector2d& phi0) {
   Eigen::Matrix2d jac;
   for (int j = 0; j < 2; ++j) {
     Eigen::Vector2d lp = lambda;
     const double h = 1e-6 * (std::abs(lambda(j)) + 1.0);
     lp(j) += h;
-    jac.col(j) = (phi(lp) - lp - f0) / h;
+    jac.col(j) = (phi(lp) - phi0) / h;
   }
-  Eigen::Vector2d step = jac.partialPivLu().solve(-f0);
-  if (!step.allFinite()) step = f0;
-  return step;
+  return jac;
 }
 
-// Consistent: fixed-point iteration on the normal forces, from the remembered ones or from the
-// solution without tangential forces. x is the solution of the last Phi evaluation.
+// Broyden's ("good") rank-one update of the Jacobian estimate J of Phi with the secant pair
+// (d_lambda, d_phi): the least change of J that satisfies J d_lambda = d_phi.
+inline void broydenUpdate(Eigen::Matrix2d& J, const Eigen::Vector2d& d_lambda,
+                          const Eigen::Vector2d& d_phi) {
+  const double dd = d_lambda.squaredNorm();
+  if (!(dd > 0.0)) return;
+  J.noalias() += ((d_phi - J * d_lambda) / dd) * d_lambda.transpose();
+}
+
+// Newton step d on r(lambda) = Phi(lambda) - lambda = 0 with the Jacobian estimate J of Phi:
+// (I - J) d = r. The plain fixed-point step r when I - J is singular.
+inline Eigen::Vector2d quasiNewtonStep(const Eigen::Matrix2d& J, const Eigen::Vector2d& r) {
+  const Eigen::Matrix2d A = Eigen::Matrix2d::Identity() - J;
+  const double det = A.determinant();
+  if (!(std::abs(det) > 0.0)) return r;
+  Eigen::Vector2d d(A(1, 1) * r(0) - A(0, 1) * r(1), A(0, 0) * r(1) - A(1, 0) * r(0));
+  d /= det;
+  return d.allFinite() ? d : r;
+}
+
+// Consistent: lambda = Phi(lambda) by a quasi-Newton iteration from the remembered normal forces
+// (or the solution without tangential forces). The Jacobian estimate J of Phi starts from the
+// remembered one (zero without: the first step is the plain fixed-point step) and follows
+// Broyden's updates; when a step does not halve the residual, J is replaced by a
+// finite-difference Jacobian (large creepages with the unbounded linear Kalker law, flange
+// contact). The test and the returned lambda = Phi(lambda_k) are those of the plain iteration, so
+// the accuracy is the same; the near-Newton steps only need fewer Phi evaluations. x is the
+// solution of the last Phi evaluation; J is the estimate at the solution.
 template <class Law>
 int consistentCoupling(const ContactModels& models, const StageInput& in,
                        const AugmentedSystem& system, WheelsetWork& ww, ContactWorkspace& work,
-                       Vec7& x) {
+                       Vec7& x, Eigen::Matrix2d& J) {
   const ContactModel& c = models.contact;
   Eigen::Vector2d lambda;
   if (ww.memory.valid) {
@@ -89,28 +113,32 @@ int consistentCoupling(const ContactModels& models, const StageInput& in,
     x = system.solver.solve(system.rhs0);
     lambda = x.tail<2>();
   }
-  // Phi(lambda): plain fixed-point steps while they contract well (the usual case: the creep
-  // forces change the normal forces little), Newton otherwise (large creepages with the unbounded
-  // linear Kalker law, flange contact).
+  J = ww.memory.jacobian_valid ? ww.memory.jacobian : Eigen::Matrix2d::Zero();
   int it = 0;
   const auto phi = [&](const Eigen::Vector2d& lambda_in) -> Eigen::Vector2d {
     ++it;
     x = solveWithCreepAt<Law>(c, system, ww, lambda_in);
     return x.tail<2>();
   };
-  bool converged = false, newton = false;
+  bool converged = false, have_previous = false;
+  Eigen::Vector2d lambda_prev, phi_prev;
   double last_step = std::numeric_limits<double>::infinity();
   while (it < c.consistent_max_iter) {
-    const Eigen::Vector2d f0 = phi(lambda) - lambda;
-    const double step = f0.cwiseAbs().maxCoeff();
-    if (step <= c.consistent_tol * ((lambda + f0).cwiseAbs().maxCoeff() + 1.0)) {
-      lambda += f0;
+    const Eigen::Vector2d phi0 = phi(lambda);
+    const Eigen::Vector2d r = phi0 - lambda;
+    if (have_previous) broydenUpdate(J, lambda - lambda_prev, phi0 - phi_prev);
+    const double step = r.cwiseAbs().maxCoeff();
+    if (step <= c.consistent_tol * (phi0.cwiseAbs().maxCoeff() + 1.0)) {
+      lambda = phi0;
       converged = true;
       break;
     }
-    if (!newton && step > 0.5 * last_step) newton = true;
+    if (step > 0.5 * last_step) J = finiteDifferenceJacobian(phi, lambda, phi0);
     last_step = step;
-    lambda += newton ? newtonStep(phi, lambda, f0) : f0;
+    lambda_prev = lambda;
+    phi_prev = phi0;
+    have_previous = true;
+    lambda += quasiNewtonStep(J, r);
   }
   ContactStats& stats = work.stats;
   ++stats.consistent_solves;
@@ -143,8 +171,11 @@ int coupleNormalAndTangential(const ContactModels& models, const StageInput& in,
         models.contact.coupling == NormalForceCoupling::Lagged && in.mode != EvalMode::Init;
     if (lagged && ww.memory.valid) {
       laggedCoupling<Law>(models.contact, system, ww, work.stats, x);
-    } else if (const int rc = consistentCoupling<Law>(models, in, system, ww, work, x); rc != 0) {
-      return rc;
+    } else {
+      Eigen::Matrix2d J;
+      if (const int rc = consistentCoupling<Law>(models, in, system, ww, work, x, J); rc != 0)
+        return rc;
+      if (in.mode != EvalMode::Output) ww.memory.rememberJacobian(J);
     }
     if (in.mode != EvalMode::Output) ww.memory.remember(ww.lambda);
     return 0;

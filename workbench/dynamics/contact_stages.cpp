@@ -137,10 +137,7 @@ int lutConstraints(const ContactModels& models, const StageInput& in, WheelsetWo
   const double ybar_dot = qd[kY] - V * xi.a_s, xig_dot = V * xi.g_s;
   contact::LutValue zv, pv;
   lut.evalZPhi(ybar, xi.g, zv, pv);
-  for (int side = 0; side < 2; ++side) {
-    readTread(lut, ybar, xi.g, sideOf(side), ww.lut);
-    readFlangeIndentation(lut, ybar, xi.g, sideOf(side), ww.lut);
-  }
+  readTreadsAndFlangeIndentations(lut, ybar, xi.g, ww.lut);
   ww.lut_ybar = ybar;
   ww.lut_xig = xi.g;
   if (!zv.inside || !ww.lut.inside) {

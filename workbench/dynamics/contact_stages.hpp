@@ -25,17 +25,26 @@ namespace rb::dynamics::internal {
 
 // ---- Named reads of the LUT (channel layout of contact/lut.hpp) --------------------------------
 
-// Tread contact point of one wheel (values only: the dynamics needs no derivatives of it).
-inline void readTread(const contact::LutTable& lut, double ybar, double xi_g, contact::Side side,
-                      contact::LutSample& sample) {
-  lut.evalValues(ybar, xi_g, sample, contact::lutChannel(side, contact::TreadQuantity::Sw),
-                 contact::lutChannel(side, contact::TreadQuantity::KrTrans) + 1);
-}
 // Flange indentation delta of one wheel (Eq. 21).
 inline void readFlangeIndentation(const contact::LutTable& lut, double ybar, double xi_g,
                                   contact::Side side, contact::LutSample& sample) {
   const std::size_t delta = contact::lutChannel(side, contact::FlangeQuantity::Delta);
   lut.evalValues(ybar, xi_g, sample, delta, delta + 1);
+}
+// Tread contact points of both wheels and their flange indentations: two range reads (the left
+// and right tread channels and the left delta are adjacent in the channel layout, the right delta
+// follows the left flange block), the same values as a read of each wheel's tread
+// block and of each delta.
+inline void readTreadsAndFlangeIndentations(const contact::LutTable& lut, double ybar, double xi_g,
+                                            contact::LutSample& sample) {
+  using contact::Side;
+  static_assert(contact::lutChannel(Side::Right, contact::TreadQuantity::Sw) ==
+                contact::lutChannel(Side::Left, contact::TreadQuantity::KrTrans) + 1);
+  static_assert(contact::lutChannel(Side::Left, contact::FlangeQuantity::Delta) ==
+                contact::lutChannel(Side::Right, contact::TreadQuantity::KrTrans) + 1);
+  lut.evalValues(ybar, xi_g, sample, contact::lutChannel(Side::Left, contact::TreadQuantity::Sw),
+                 contact::lutChannel(Side::Left, contact::FlangeQuantity::Delta) + 1);
+  readFlangeIndentation(lut, ybar, xi_g, Side::Right, sample);
 }
 // Flange contact point of one wheel and the indentation's derivatives (Eq. 20-21): read only
 // when the flange indents.

@@ -80,15 +80,24 @@ struct Patch {
 // non-finite or as a wheel lift); Output evaluations never change it (outputs must not change what
 // the integration sees); a Consistent iteration that does not converge leaves it unchanged;
 // initialState forgets it before its Newton iteration and again before its final evaluation.
+// The Consistent coupling also remembers its estimate of the Jacobian d Phi / d lambda of the
+// fixed-point map (same update rule, from the Consistent solves only): the creep forces change
+// little between evaluations, so it makes the first step of the next solve a near-Newton step.
 struct NormalForceMemory {
   Eigen::Vector2d lambda = Eigen::Vector2d::Zero();
   bool valid = false;
+  Eigen::Matrix2d jacobian = Eigen::Matrix2d::Zero();  // d Phi / d lambda
+  bool jacobian_valid = false;
 
   void remember(const Eigen::Vector2d& solved) {
     lambda = solved;
     valid = true;
   }
-  void forget() { valid = false; }
+  void rememberJacobian(const Eigen::Matrix2d& j) {
+    jacobian = j;
+    jacobian_valid = true;
+  }
+  void forget() { valid = jacobian_valid = false; }
 };
 
 // KEC transition bands: a real contact point A or B of the last describe() and its inputs. Inside
