@@ -24,7 +24,7 @@ from typing import Dict, List, Optional, Tuple
 import numpy as np
 
 from .h5 import _attrs
-from .layout import _bottom_legend, _num, _pair, _run_info
+from .layout import _bottom_legend, _num, _pair, _run_info, _set_distance_range
 from .style import A4_WIDTH_IN, FAIL_COLOR, RUN_COLORS, plt, report_style
 from .track_figs import _segment_legend_handles, _shade_segments
 
@@ -450,8 +450,8 @@ def fig_assessment(result):
     summary = _summary_lines(a)
     with report_style():
         box_h = 0.13 * len(summary) + 0.12 if summary else 0.0
-        fig_h = min(1.45 * len(keys) + 0.75 + box_h + (0.3 if track is not None else 0.0), 9.4)
-        ratios = ([box_h] if summary else []) + [1.45] * len(keys)
+        fig_h = min(1.3 * len(keys) + 0.75 + box_h + (0.3 if track is not None else 0.0), 9.4)
+        ratios = ([box_h] if summary else []) + [1.3] * len(keys)
         fig, axes = plt.subplots(len(ratios), 1, figsize=(A4_WIDTH_IN, fig_h), squeeze=False,
                                  layout="constrained", gridspec_kw=dict(height_ratios=ratios))
         axes = list(axes[:, 0])
@@ -459,10 +459,27 @@ def fig_assessment(result):
             _summary_box(axes.pop(0), summary)
         for ax, key in zip(axes, keys):
             _draw_panel(ax, key, a, idx, track if _uses_distance(key, a) else None)
+        if all(_uses_distance(k, a) for k in keys):  # one distance axis: labelled once
+            for ax in axes[:-1]:
+                ax.sharex(axes[-1])
+                ax.set_xlabel("")
+                ax.xaxis.set_tick_params(labelbottom=False)
+            _set_distance_range(axes[-1], *_data_range(axes), track, result.failed)
         if track is not None:
             _bottom_legend(fig, [_segment_legend_handles(track)], fig_h)
         fig.suptitle(f"Assessment — {_run_info(result)}", fontsize=9.5)
     return fig
+
+
+def _data_range(axes) -> Tuple[float, float]:
+    """The smallest and largest finite x of the data lines of `axes`."""
+    lo, hi = math.inf, -math.inf
+    for ax in axes:
+        for ln in ax.get_lines():
+            x = np.asarray(ln.get_xdata(), dtype=float)
+            if ln.get_gid() == "data" and np.isfinite(x).any():
+                lo, hi = min(lo, np.nanmin(x)), max(hi, np.nanmax(x))
+    return lo, hi
 
 
 def _uses_distance(key: str, a: Assessment) -> bool:

@@ -502,7 +502,7 @@ def _assessment_column(path: Optional[str]) -> Optional[Dict[str, str]]:
     cells = {}
     for it in summary_items(a.summary):
         where = it.where
-        at_s = locate(a, it.quantity.key, it)
+        at_s = None if "s =" in where else locate(a, it.quantity.key, it)
         if at_s is not None:
             where = (where + ", " if where else "") + f"s = {at_s:.1f} m"
         cells[it.quantity.key] = it.against() + (f" ({where})" if where else "")
