@@ -203,7 +203,7 @@ class SummaryItem:
         """"0.412 ≤ 0.800 ok", "0.912 > 0.800 EXCEEDED", or the value alone without a limit."""
         if self.limit is None:
             return self.number(self.value)
-        rel = "≤" if self.ok else ">"
+        rel = "≤" if self.value <= self.limit else ">"
         return f"{self.number(self.value)} {rel} {self.number(self.limit)} {self.verdict}"
 
     def text(self) -> str:
