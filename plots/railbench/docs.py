@@ -1,12 +1,14 @@
 """Regenerates every run-derived table and figure of docs/ (studies.md, performance.md,
-validation.md, hard_cases.md, integrators.md) from the outputs of `./wb studies`: no number that
+validation.md, hard_cases.md, integrators.md, assessment.md) from the outputs of `./wb studies`: no number that
 comes from a run is typed into docs/ by hand.
 
     plots/rbplot docs OUT_DIR [--build BUILD_DIR] [--docs DOCS_DIR]
 
 OUT_DIR holds one folder per study (efficiency_case3, flange_stiffness, refinement,
 work_precision, effects, speed, each with the study_*.csv / *.png of `plots/rbplot study`; validation,
-with the validation_*.csv of `plots/rbplot validation-tables`), bench_wagon.json (Google Benchmark,
+with the validation_*.csv of `plots/rbplot validation-tables`, and the result files of cases 2
+and 3 whose /assessment/summary docs/assessment.md shows; the block draws the assessment figure of
+case 3 KEC into the folder as study_case3_kec_assessment.png), bench_wagon.json (Google Benchmark,
 one wagon evaluation and its parts) and bench_integrators.json (the integrators' overhead). BUILD_DIR/hard/hard_cases.csv is the hard-case suite's
 record; BUILD_DIR/dynamics/coupling_*.csv (written by the coupling refinement tests of
 test_dynamics and test_dynamics_long) feed the block of docs/contact_dynamics.md, which is left
@@ -38,7 +40,7 @@ from typing import Dict, List, Optional
 
 from . import provenance
 from .common import parser
-from .docs_blocks import accuracy_block, bench_block, bench_integrators_block, effects_block, efficiency_block, fmt, missing, num, read_csv, paper_settings_block, refinement_block, replace_block, speed_block, table, work_precision_block
+from .docs_blocks import assessment_cases_block, accuracy_block, bench_block, bench_integrators_block, effects_block, efficiency_block, fmt, missing, num, read_csv, paper_settings_block, refinement_block, replace_block, speed_block, table, work_precision_block
 from .docs_validation import hard_block, hard_detail_block, hard_rows, validation_blocks
 
 
@@ -55,7 +57,7 @@ BLOCK_SOURCES = {
     "bench_integrators": "bench_integrators",
     "validation_case1": "validation", "validation_case2": "validation",
     "validation_case3": "validation", "validation_cost": "validation",
-    "coupling_convergence": "build",
+    "coupling_convergence": "build", "assessment_cases": "validation",
 }
 
 
@@ -170,7 +172,7 @@ def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
     """Every generated block of docs/: page -> block name -> content (without the stamp)."""
     blocks: Dict[str, Dict[str, str]] = {"studies.md": {}, "performance.md": {},
                                          "validation.md": {}, "hard_cases.md": {},
-                                         "integrators.md": {}}
+                                         "integrators.md": {}, "assessment.md": {}}
     blocks["studies.md"].update(efficiency_block(outdir))
     blocks["studies.md"]["accuracy"] = accuracy_block(outdir)
     blocks["studies.md"].update(efficiency_block(outdir, "flange_stiffness", "flange"))
@@ -186,6 +188,7 @@ def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
     blocks["validation.md"].update(validation_blocks(outdir))
     blocks["hard_cases.md"]["hard_cases_detail"] = hard_detail_block(build)
     blocks["integrators.md"]["bench_integrators"] = bench_integrators_block(outdir)
+    blocks["assessment.md"]["assessment_cases"] = assessment_cases_block(outdir)
     coupling = coupling_block(build)
     blocks["contact_dynamics.md"] = {"coupling_convergence": coupling if coupling is not None
                                      else missing(f"{build}/dynamics/coupling_*.csv "
@@ -229,6 +232,9 @@ def main(argv=None) -> int:
         blocks = {md: items for md, items in blocks.items() if md in a.pages}
     for md, items in blocks.items():
         path = os.path.join(a.docs, md)
+        if not os.path.exists(path):  # a docs folder without this page: nothing to write into
+            print(f"railbench docs: {path} missing (its blocks not written)", file=sys.stderr)
+            continue
         with open(path) as f:
             text = f.read()
         for name, body in items.items():

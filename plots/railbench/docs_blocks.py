@@ -460,4 +460,104 @@ def bench_integrators_block(outdir: str) -> str:
                    "steps (or rhs cost)"], body))
 
 
+# ---- assessment of validation cases 2 and 3 (docs/assessment.md) -----------------------------
+
+# (case, contact method) of the validation study (scenarios/studies/validation.lua), each run
+# with its scenario's own solver.
+ASSESSMENT_CASES = ((2, "kec"), (2, "lut"), (3, "kec"), (3, "lut"))
+# Row label of each /assessment/summary quantity shown.
+ASSESSMENT_ROWS = (("y_over_q", "max (Y/Q)_2m [-]"), ("sum_y", "max (ΣY)_2m [kN]"),
+                   ("dq_over_q", "max ΔQ/Q0 [-]"), ("stability_rms", "stability rms [m/s²]"),
+                   ("n_mv", "N_MV [-] (target)"), ("wz_lateral", "Wz lateral [-] (target)"),
+                   ("wz_vertical", "Wz vertical [-] (target)"), ("t_gamma_max", "max T-gamma [N]"))
+# The figure of case 3 KEC: drawn to OUT/validation/study_<name>.png, which copy_figures (docs.py)
+# copies to docs/figures/validation_<name>.png.
+ASSESSMENT_FIGURE = "case3_kec_assessment"
+
+
+def _validation_case_files(d: str) -> Dict[tuple, tuple]:
+    """(case, method) -> (result file or None, its name in summary_cases.csv) of the validation
+    study's runs with the scenario's own solver (no overrides)."""
+    from .validation import _file, parse_case
+    out: Dict[tuple, tuple] = {}
+    for r in read_csv(os.path.join(d, "summary_cases.csv")):
+        parsed = parse_case(r.get("base", ""))
+        if parsed is None or (r.get("overrides") or "").strip():
+            continue
+        key = (parsed[0], parsed[2])
+        if key in ASSESSMENT_CASES and key not in out:
+            out[key] = (_file(d, r), os.path.basename(r.get("file") or "") or "?")
+    return out
+
+
+def _assessment_column(path: Optional[str]) -> Optional[Dict[str, str]]:
+    """Quantity -> cell of one result file's /assessment/summary; None without /assessment."""
+    from .assessment import locate, read_assessment, summary_items
+    try:
+        a = read_assessment(path) if path else None
+    except OSError:
+        a = None
+    if a is None or not a.summary:
+        return None
+    cells = {}
+    for it in summary_items(a.summary):
+        where = it.where
+        at_s = None if "s =" in where else locate(a, it.quantity.key, it)
+        if at_s is not None:
+            where = (where + ", " if where else "") + f"s = {at_s:.1f} m"
+        cells[it.quantity.key] = it.against() + (f" ({where})" if where else "")
+    return cells
+
+
+def _assessment_figure(path: str, d: str) -> Optional[str]:
+    """Draws the assessment figure of `path` to d/study_<ASSESSMENT_FIGURE>.png; its docs name."""
+    from .common import save_figure
+    from .h5 import ResultFileError
+    from .result import load_result
+    from .run import FIGURES, build_figure
+    try:
+        result = load_result(path)
+    except ResultFileError:
+        return None
+    spec = next(f for f in FIGURES if f.suffix == "assessment")
+    if not spec.is_available(result):
+        return None
+    save_figure(build_figure(result, spec), os.path.join(d, f"study_{ASSESSMENT_FIGURE}.png"))
+    return f"figures/validation_{ASSESSMENT_FIGURE}.png"
+
+
+def assessment_cases_block(outdir: str) -> str:
+    """docs/assessment.md: the /assessment/summary of validation cases 2 and 3, KEC and LUT
+    (value against limit, ok / EXCEEDED, where), and the assessment figure of case 3 KEC."""
+    d = os.path.join(outdir, "validation")
+    files = _validation_case_files(d)
+    if not files:
+        return missing("out/studies/validation/summary_cases.csv")
+    columns, notes = [], []
+    for case, method in ASSESSMENT_CASES:
+        path, name = files.get((case, method), (None, "no run in summary_cases.csv"))
+        cells = _assessment_column(path)
+        columns.append(cells)
+        if cells is None:
+            notes.append(f"case {case} {method.upper()} ({name})")
+    if all(c is None for c in columns):
+        return missing("/assessment/summary in the case 2 and case 3 result files of "
+                       "out/studies/validation")
+    body = [[label] + ["not generated" if c is None else c.get(key, "–") for c in columns]
+            for key, label in ASSESSMENT_ROWS]
+    out = ("/assessment/summary of the validation study's runs with the scenario's own solver "
+           "(out/studies/validation): the assessed value against its limit (ok / EXCEEDED) and "
+           "where it occurs (wheel, wheelset, bogie position or floor position; s where the "
+           "2 m or 100 m window ends). N_MV and Wz are checked against comfort targets, not "
+           "normative limits; T-gamma has none.\n\n" +
+           table(["quantity"] + [f"case {c} {m.upper()}" for c, m in ASSESSMENT_CASES], body))
+    if notes:
+        out += "\n\n" + missing("/assessment in the result file of " + ", ".join(notes))
+    kec3 = files.get((3, "kec"), (None, ""))[0]
+    fig = _assessment_figure(kec3, d) if columns[2] is not None else None
+    if fig:
+        out += f"\n\n![Assessment of case 3 KEC]({fig})"
+    return out
+
+
 # ---- hard cases --------------------------------------------------------------------------------

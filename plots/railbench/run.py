@@ -21,6 +21,9 @@ Figures (each returns a matplotlib Figure; nothing is written)
     fig_creep(result)                    creepages, spin and creep forces per wheelset
     fig_accelerations(result)            car body and bogie accelerations (/bodies/*/a[xyz])
     fig_elements(result)                 deflection and force of /elements/* versus time
+    fig_assessment(result)               /assessment (assessment.py): Y/Q, track shift force,
+                                         wheel unloading, comfort N_c, stability rms, T-gamma,
+                                         with limits and the summary (ok / EXCEEDED)
     panel_points(fig)                    {panel id: data points drawn} of a vehicle figure
 
 Vehicle results
@@ -77,6 +80,7 @@ from .track_figs import fig_curvature_cant, fig_irregularities, fig_irregularity
 from .layout import _num, _pair, add_failure_banner, failure_text
 from .vehicle_figs import _CONTACT_ROWS, _CREEP_ROWS, _ROW_FLANGE, _ROW_INDENT, _contact_rows, _row_present, fig_bodies_car, fig_contact_forces, fig_creep, fig_flange_contact, fig_wheelsets
 from .dynamics_figs import _element_names, acceleration_bodies, fig_accelerations, fig_elements
+from .assessment import fig_assessment, has_assessment
 
 
 def panel_points(fig) -> Dict[str, int]:
@@ -194,6 +198,9 @@ FIGURES: List[FigureSpec] = [
                "car body and bogie accelerations versus distance"),
     FigureSpec("elements", lambda r: bool(_element_names(r)), fig_elements,
                "deflection and force of the recorded suspension elements"),
+    # Groups of /assessment the run did not write are panels left out (assessment.py).
+    FigureSpec("assessment", has_assessment, fig_assessment,
+               "assessment: Y/Q, track shift force, wheel unloading, comfort, stability, wear"),
     # /stats is summarised in text (stats_summary, printed by `railbench run`), not drawn.
 ]
 
