@@ -11,6 +11,7 @@
 
 #include "fixtures.hpp"
 #include "workbench/vehicle/dynamics.hpp"
+#include "workbench/vehicle/kinematics.hpp"
 #include "workbench/vehicle/model.hpp"
 
 namespace rb::vehicle {
@@ -175,6 +176,46 @@ TEST(SharedPointPairs, ForceAssemblyEqualsTheGeneralForm) {
       expectSame(ws.susp_force[b], F[b], m.bodies[b].name + " force");
       expectSame(ws.susp_moment[b], M[b], m.bodies[b].name + " moment");
     }
+  }
+}
+
+Eigen::Matrix3d rx(double a) {
+  Eigen::Matrix3d m;
+  m << 1, 0, 0, 0, std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a);
+  return m;
+}
+Eigen::Matrix3d ry(double a) {
+  Eigen::Matrix3d m;
+  m << std::cos(a), 0, std::sin(a), 0, 1, 0, -std::sin(a), 0, std::cos(a);
+  return m;
+}
+Eigen::Matrix3d rz(double a) {
+  Eigen::Matrix3d m;
+  m << std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1;
+  return m;
+}
+
+// The rotations written out entry by entry (kinematics.cpp) are the numbers of the products of
+// the elementary rotations, for small and large angles.
+TEST(SharedPointPairs, WrittenOutRotationsEqualTheProducts) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> small(-0.05, 0.05), large(-4.0, 4.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Eigen::Vector3d a = trial % 2 ? Eigen::Vector3d(small(rng), large(rng), small(rng))
+                                        : Eigen::Vector3d(large(rng), large(rng), large(rng));
+    const Eigen::Vector3d rates(0.1, 0.2, 0.3);
+    const Eigen::Matrix3d ypr = rz(a[2]) * ry(a[1]) * rx(a[0]);
+    const Eigen::Matrix3d yr = rz(a[2]) * rx(a[0]);
+    const Eigen::Matrix3d yrp = yr * ry(a[1]);
+    const Eigen::Matrix3d e1 = eulerKinematics(RotationSequence::YawPitchRoll, a, rates).A;
+    const Eigen::Matrix3d e2 = eulerKinematics(RotationSequence::YawRollPitch, a, rates).A;
+    const Eigen::Matrix3d e3 = intermediateKinematics(a, rates).A;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(e1(r, c), ypr(r, c)) << r << c;
+        EXPECT_EQ(e2(r, c), yrp(r, c)) << r << c;
+        EXPECT_EQ(e3(r, c), yr(r, c)) << r << c;
+      }
   }
 }
 
