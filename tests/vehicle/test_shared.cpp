@@ -71,6 +71,19 @@ void expectSame(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const std::s
   for (int c = 0; c < 3; ++c) EXPECT_EQ(a[c], b[c]) << what << " component " << c;
 }
 
+bool samePoints(const PointPair& p, const PointPair& q) {
+  return p.body1 == q.body1 && p.body2 == q.body2 && p.u1 == q.u1 && p.u2 == q.u2;
+}
+
+// The point pair of element g holds g's bodies, body pair and attachment points.
+void expectElementsPointPair(const VehicleModel& m, const ElementGeometry& g) {
+  ASSERT_GE(g.point_pair, 0) << g.name;
+  ASSERT_LT(g.point_pair, static_cast<int>(m.point_pairs.size())) << g.name;
+  const PointPair& p = m.point_pairs[static_cast<std::size_t>(g.point_pair)];
+  EXPECT_TRUE(samePoints(p, {g.body1, g.body2, g.pair, g.u1, g.u2})) << g.name;
+  EXPECT_EQ(p.pair, g.pair) << g.name;
+}
+
 TEST(SharedPointPairs, TheWagonsPointElementsJoinSixteenPairs) {
   const VehicleModel m = compileVehicle(rbtest::manchesterWagon(), curve());
   // 8 axle boxes (primary x, y, z), 4 secondary spring locations (z, shear x, shear y, lateral
@@ -78,25 +91,14 @@ TEST(SharedPointPairs, TheWagonsPointElementsJoinSixteenPairs) {
   EXPECT_EQ(m.point_pairs.size(), 16u);
   for (const ElementId& id : m.elements()) {
     const ElementGeometry& g = m.element(id);
-    if (id.kind == ElementKind::BendingSpring) {
+    if (id.kind == ElementKind::BendingSpring)
       EXPECT_EQ(g.point_pair, -1) << g.name;
-      continue;
-    }
-    ASSERT_GE(g.point_pair, 0) << g.name;
-    ASSERT_LT(g.point_pair, static_cast<int>(m.point_pairs.size())) << g.name;
-    const PointPair& p = m.point_pairs[static_cast<std::size_t>(g.point_pair)];
-    EXPECT_EQ(p.body1, g.body1) << g.name;
-    EXPECT_EQ(p.body2, g.body2) << g.name;
-    EXPECT_EQ(p.pair, g.pair) << g.name;
-    EXPECT_EQ(p.u1, g.u1) << g.name;
-    EXPECT_EQ(p.u2, g.u2) << g.name;
+    else
+      expectElementsPointPair(m, g);
   }
   for (std::size_t a = 0; a < m.point_pairs.size(); ++a)
-    for (std::size_t b = a + 1; b < m.point_pairs.size(); ++b) {
-      const PointPair &p = m.point_pairs[a], &q = m.point_pairs[b];
-      EXPECT_FALSE(p.body1 == q.body1 && p.body2 == q.body2 && p.u1 == q.u1 && p.u2 == q.u2)
-          << a << " " << b;
-    }
+    for (std::size_t b = a + 1; b < m.point_pairs.size(); ++b)
+      EXPECT_FALSE(samePoints(m.point_pairs[a], m.point_pairs[b])) << a << " " << b;
   const VehicleModel ma = compileVehicle(wagonWithAxialElements(), curve());
   EXPECT_EQ(ma.point_pairs.size(), 17u);
 }

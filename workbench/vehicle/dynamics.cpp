@@ -9,11 +9,13 @@ namespace {
 // Eq. (28) for the points u1 of body i and u2 of body j (PointPairMotion). The Jacobians
 // J_i = -L_P - (w_i x delta) e_s^T, J_j = A_ij L_Q are never formed: velocities and generalised
 // forces go through pointVelocity and the point resultants (a few cross products each).
-void motionOf(const BodyKinematics& ki, const BodyKinematics& kj, const Eigen::Matrix3d& Aij,
-              const Eigen::Vector3d& Rij, const Eigen::Vector3d& u1, const Eigen::Vector3d& u2,
-              PointPairMotion& p) {
-  p.aui.noalias() = ki.attach.A * u1;
-  p.auj.noalias() = kj.attach.A * u2;
+void motionOf(const PointPair& d, const Workspace& ws, PointPairMotion& p) {
+  const BodyKinematics& ki = ws.kin[static_cast<std::size_t>(d.body1)];
+  const BodyKinematics& kj = ws.kin[static_cast<std::size_t>(d.body2)];
+  const Eigen::Matrix3d& Aij = ws.pair_A[static_cast<std::size_t>(d.pair)];
+  const Eigen::Vector3d& Rij = ws.pair_R[static_cast<std::size_t>(d.pair)];
+  p.aui.noalias() = ki.attach.A * d.u1;
+  p.auj.noalias() = kj.attach.A * d.u2;
   p.delta = Rij + Aij * (kj.rbar + p.auj) - (ki.rbar + p.aui);
   p.w_delta = ki.tf.w.cross(p.delta);
   p.delta_dot = Aij * pointVelocity(kj, p.auj) - pointVelocity(ki, p.aui) - ki.sd * p.w_delta;
@@ -107,10 +109,8 @@ const ElementValue& Workspace::value(ElementId id) const {
 }
 
 PointPairMotion pointPairMotion(const ElementGeometry& g, const Workspace& ws) {
-  const auto pr = static_cast<std::size_t>(g.pair);
   PointPairMotion p;
-  motionOf(ws.kin[static_cast<std::size_t>(g.body1)], ws.kin[static_cast<std::size_t>(g.body2)],
-           ws.pair_A[pr], ws.pair_R[pr], g.u1, g.u2, p);
+  motionOf({g.body1, g.body2, g.pair, g.u1, g.u2}, ws, p);
   return p;
 }
 
@@ -192,10 +192,7 @@ void evaluate(const VehicleModel& m, const double* series_f, Workspace& ws) {
 
   // Relative motion of every point pair, shared by the elements at those points.
   for (std::size_t pp = 0; pp < m.point_pairs.size(); ++pp) {
-    const PointPair& d = m.point_pairs[pp];
-    const auto pr = static_cast<std::size_t>(d.pair);
-    motionOf(ws.kin[static_cast<std::size_t>(d.body1)], ws.kin[static_cast<std::size_t>(d.body2)],
-             ws.pair_A[pr], ws.pair_R[pr], d.u1, d.u2, ws.point_motion[pp]);
+    motionOf(m.point_pairs[pp], ws, ws.point_motion[pp]);
   }
   // Spring-dampers in parallel.
   for (std::size_t e = 0; e < m.spring_dampers.size(); ++e) {
