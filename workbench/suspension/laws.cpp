@@ -16,15 +16,6 @@ Deformation axialDeformation(const Eigen::Vector3d& delta, const Eigen::Vector3d
   return out;
 }
 
-Deformation directionalDeformation(const Eigen::Vector3d& delta, const Eigen::Vector3d& delta_dot,
-                                   const Eigen::Vector3d& delta_nominal, int axis) {
-  Deformation out;
-  out.grad = Eigen::Vector3d::Unit(axis);
-  out.d = delta[axis] - delta_nominal[axis];
-  out.d_dot = delta_dot[axis];
-  return out;
-}
-
 RelativeRotation relativeRotation(const Eigen::Matrix3d& R) {
   RelativeRotation out;
   out.theta = 0.5 * Eigen::Vector3d(R(2, 1) - R(1, 2), R(0, 2) - R(2, 0), R(1, 0) - R(0, 1));

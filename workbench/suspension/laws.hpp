@@ -31,8 +31,16 @@ Deformation axialDeformation(const Eigen::Vector3d& delta, const Eigen::Vector3d
                              double l0);
 
 // d = e_axis . (delta - delta_nominal), axis 0 = x, 1 = y, 2 = z of the master track frame.
-Deformation directionalDeformation(const Eigen::Vector3d& delta, const Eigen::Vector3d& delta_dot,
-                                   const Eigen::Vector3d& delta_nominal, int axis);
+// Inline: it runs for most suspension elements in every evaluation.
+inline Deformation directionalDeformation(const Eigen::Vector3d& delta,
+                                          const Eigen::Vector3d& delta_dot,
+                                          const Eigen::Vector3d& delta_nominal, int axis) {
+  Deformation out;
+  out.grad = Eigen::Vector3d::Unit(axis);
+  out.d = delta[axis] - delta_nominal[axis];
+  out.d_dot = delta_dot[axis];
+  return out;
+}
 
 // Relative rotation of two frames for bending springs. R = B_j B_i^T is the rotation of the second
 // attachment frame relative to the first, both given by their rotations B relative to the master

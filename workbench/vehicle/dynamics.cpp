@@ -6,32 +6,19 @@ namespace rb::vehicle {
 
 namespace {
 
-// Relative motion of the two attachment points of an element in the master track frame (Eq. 28):
-// delta = R_ij + A_ij (rbar_j + A_a,j u_Q) - (rbar_i + A_a,i u_P) and
-// delta_dot = J_i qd_i + J_j qd_j = A_ij v_Q - v_P - sdot_i (w_i x delta) (docs/vehicle.md).
-// The Jacobians J_i = -L_P - (w_i x delta) e_s^T, J_j = A_ij L_Q are never formed: velocities and
-// generalised forces go through pointVelocity / addPointForce (a few cross products each).
-struct PointPair {
-  const Eigen::Matrix3d* Aij = nullptr;  // A_ti^T A_tj of the element's body pair
-  Eigen::Vector3d aui, auj;              // attachment points relative to the CoMs (own track comps)
-  Eigen::Vector3d delta, delta_dot;
-};
-
-void pointPair(const ElementGeometry& g, const Workspace& ws, PointPair& p) {
-  const BodyKinematics& ki = ws.kin[static_cast<std::size_t>(g.body1)];
-  const BodyKinematics& kj = ws.kin[static_cast<std::size_t>(g.body2)];
-  const auto pr = static_cast<std::size_t>(g.pair);
-  p.Aij = &ws.pair_A[pr];
-  p.aui.noalias() = ki.attach.A * g.u1;
-  p.auj.noalias() = kj.attach.A * g.u2;
-  p.delta = ws.pair_R[pr] + *p.Aij * (kj.rbar + p.auj) - (ki.rbar + p.aui);
-  p.delta_dot =
-      *p.Aij * pointVelocity(kj, p.auj) - pointVelocity(ki, p.aui) - ki.sd * ki.tf.w.cross(p.delta);
-}
-
-suspension::Deformation deformation(const ElementGeometry& g, const PointPair& p) {
-  if (g.axis < 0) return suspension::axialDeformation(p.delta, p.delta_dot, g.length0);
-  return suspension::directionalDeformation(p.delta, p.delta_dot, g.delta_nominal, g.axis);
+// Eq. (28) for the points u1 of body i and u2 of body j (PointPairMotion). The Jacobians
+// J_i = -L_P - (w_i x delta) e_s^T, J_j = A_ij L_Q are never formed: velocities and generalised
+// forces go through pointVelocity and the point resultants (a few cross products each).
+void motionOf(const PointPair& d, const Workspace& ws, PointPairMotion& p) {
+  const BodyKinematics& ki = ws.kin[static_cast<std::size_t>(d.body1)];
+  const BodyKinematics& kj = ws.kin[static_cast<std::size_t>(d.body2)];
+  const Eigen::Matrix3d& Aij = ws.pair_A[static_cast<std::size_t>(d.pair)];
+  const Eigen::Vector3d& Rij = ws.pair_R[static_cast<std::size_t>(d.pair)];
+  p.aui.noalias() = ki.attach.A * d.u1;
+  p.auj.noalias() = kj.attach.A * d.u2;
+  p.delta = Rij + Aij * (kj.rbar + p.auj) - (ki.rbar + p.aui);
+  p.w_delta = ki.tf.w.cross(p.delta);
+  p.delta_dot = Aij * pointVelocity(kj, p.auj) - pointVelocity(ki, p.aui) - ki.sd * p.w_delta;
 }
 
 // Generalised forces Q = -(dd/dq)^T f on both bodies (Eq. 29): the force F = grad f (master
@@ -40,16 +27,56 @@ suspension::Deformation deformation(const ElementGeometry& g, const PointPair& p
 // body are summed into its resultant force and moment about the CoM (susp_force, susp_moment,
 // outputs as well) and projected once per body (pointResultantsToQ); only the master's extra
 // s term is added per element.
-void applyForce(const ElementGeometry& g, const PointPair& p, const Eigen::Vector3d& grad, double f,
-                Workspace& ws) {
+void applyForce(const ElementGeometry& g, const PointPairMotion& p, const Eigen::Matrix3d& Aij,
+                const Eigen::Vector3d& grad, double f, Workspace& ws) {
   const auto i = static_cast<std::size_t>(g.body1), j = static_cast<std::size_t>(g.body2);
   const Eigen::Vector3d Fi = grad * f;
-  const Eigen::Vector3d Fj = -(p.Aij->transpose() * Fi);
-  ws.force[i][kS] += ws.kin[i].tf.w.cross(p.delta).dot(Fi);
+  const Eigen::Vector3d Fj = -(Aij.transpose() * Fi);
+  ws.force[i][kS] += p.w_delta.dot(Fi);
   ws.susp_force[i] += Fi;
   ws.susp_moment[i] += p.aui.cross(Fi);
   ws.susp_force[j] += Fj;
   ws.susp_moment[j] += p.auj.cross(Fj);
+}
+
+// applyForce for a directional element, grad = e_a: F_i = f e_a, so every product with F_i keeps
+// one term (the others are exact zeros, whose sums change nothing: the same numbers as
+// applyForce), and au x (f e_a) has the components au[a+2] f at a+1 and -au[a+1] f at a+2.
+// (Inlined into the element loops: it runs for most elements in every evaluation.)
+[[gnu::always_inline]] inline void applyAxisForce(const ElementGeometry& g,
+                                                  const PointPairMotion& p,
+                                                  const Eigen::Matrix3d& Aij, double f,
+                                                  Workspace& ws) {
+  const auto i = static_cast<std::size_t>(g.body1), j = static_cast<std::size_t>(g.body2);
+  const int a = g.axis, a1 = a == 2 ? 0 : a + 1, a2 = a == 0 ? 2 : a - 1;
+  const Eigen::Vector3d Fj(-(Aij(a, 0) * f), -(Aij(a, 1) * f), -(Aij(a, 2) * f));
+  ws.force[i][kS] += p.w_delta[a] * f;
+  Eigen::Vector3d& Fi_sum = ws.susp_force[i];
+  Eigen::Vector3d& Mi_sum = ws.susp_moment[i];
+  Fi_sum[a] += f;
+  Mi_sum[a1] += p.aui[a2] * f;
+  Mi_sum[a2] -= p.aui[a1] * f;
+  ws.susp_force[j] += Fj;
+  ws.susp_moment[j] += p.auj.cross(Fj);
+}
+
+// Deformation of a point-based element from its point pair's motion, its force f = law(d, d_dot)
+// and the generalised forces; returns the element's output value.
+template <class Law>
+ElementValue pointElement(const ElementGeometry& g, Workspace& ws, Law law) {
+  const PointPairMotion& p = ws.point_motion[static_cast<std::size_t>(g.point_pair)];
+  const Eigen::Matrix3d& Aij = ws.pair_A[static_cast<std::size_t>(g.pair)];
+  if (g.axis < 0) {
+    const suspension::Deformation d = suspension::axialDeformation(p.delta, p.delta_dot, g.length0);
+    const double f = law(d.d, d.d_dot);
+    applyForce(g, p, Aij, d.grad, f, ws);
+    return {d.d, d.d_dot, f};
+  }
+  const suspension::Deformation d =
+      suspension::directionalDeformation(p.delta, p.delta_dot, g.delta_nominal, g.axis);
+  const double f = law(d.d, d.d_dot);
+  applyAxisForce(g, p, Aij, f, ws);
+  return {d.d, d.d_dot, f};
 }
 
 // Sum of L_P^T F over the point forces of a body from their resultant F and moment M = sum au x F:
@@ -81,6 +108,12 @@ const ElementValue& Workspace::value(ElementId id) const {
   RB_CHECK(false, "unknown element kind");
 }
 
+PointPairMotion pointPairMotion(const ElementGeometry& g, const Workspace& ws) {
+  PointPairMotion p;
+  motionOf({g.body1, g.body2, g.pair, g.u1, g.u2}, ws, p);
+  return p;
+}
+
 Workspace makeWorkspace(const VehicleModel& m) {
   Workspace ws;
   const std::size_t n = m.bodies.size();
@@ -101,6 +134,7 @@ Workspace makeWorkspace(const VehicleModel& m) {
   ws.pair_R.assign(m.body_pairs.size(), Eigen::Vector3d::Zero());
   // tf_version starts at 0 and is >= 1 once a frame is evaluated: no pair matches before that.
   ws.pair_version.assign(m.body_pairs.size(), {0, 0});
+  ws.point_motion.resize(m.point_pairs.size());
   return ws;
 }
 
@@ -156,45 +190,38 @@ void evaluate(const VehicleModel& m, const double* series_f, Workspace& ws) {
     ws.pair_R[pr].noalias() = ki.tf.A.transpose() * (kj.tf.R - ki.tf.R);
   }
 
-  PointPair p;
+  // Relative motion of every point pair, shared by the elements at those points.
+  for (std::size_t pp = 0; pp < m.point_pairs.size(); ++pp) {
+    motionOf(m.point_pairs[pp], ws, ws.point_motion[pp]);
+  }
   // Spring-dampers in parallel.
   for (std::size_t e = 0; e < m.spring_dampers.size(); ++e) {
     const SpringDamperElement& el = m.spring_dampers[e];
-    pointPair(el.g, ws, p);
-    const suspension::Deformation d = deformation(el.g, p);
-    const double f =
-        suspension::springDamperForce(el.stiffness, el.damping, el.preload, d.d, d.d_dot);
-    ws.spring_damper[e] = {d.d, d.d_dot, f};
-    applyForce(el.g, p, d.grad, f, ws);
+    ws.spring_damper[e] = pointElement(el.g, ws, [&](double d, double d_dot) {
+      return suspension::springDamperForce(el.stiffness, el.damping, el.preload, d, d_dot);
+    });
   }
   // Spring-dampers in series (the Maxwell force is a state).
   for (std::size_t e = 0; e < m.series_dampers.size(); ++e) {
     const SeriesDamperElement& el = m.series_dampers[e];
-    pointPair(el.g, ws, p);
-    const suspension::Deformation d = deformation(el.g, p);
     const double fs = series_f[e];
-    const double f = suspension::seriesDamperForce(el.stiffness, el.preload, d.d, fs);
-    ws.series_damper[e] = {d.d, d.d_dot, f};
-    ws.series_rate[e] = suspension::seriesDamperRate(el.series_stiffness, el.damping, fs, d.d_dot);
-    applyForce(el.g, p, d.grad, f, ws);
+    ws.series_damper[e] = pointElement(el.g, ws, [&](double d, double d_dot) {
+      ws.series_rate[e] = suspension::seriesDamperRate(el.series_stiffness, el.damping, fs, d_dot);
+      return suspension::seriesDamperForce(el.stiffness, el.preload, d, fs);
+    });
   }
   // Shear springs (directional by validation).
   for (std::size_t e = 0; e < m.shear_springs.size(); ++e) {
     const ShearSpringElement& el = m.shear_springs[e];
-    pointPair(el.g, ws, p);
-    const suspension::Deformation d = deformation(el.g, p);
-    const double f = suspension::shearSpringForce(el.stiffness, el.preload, d.d);
-    ws.shear_spring[e] = {d.d, d.d_dot, f};
-    applyForce(el.g, p, d.grad, f, ws);
+    ws.shear_spring[e] = pointElement(el.g, ws, [&](double d, double /*d_dot*/) {
+      return suspension::shearSpringForce(el.stiffness, el.preload, d);
+    });
   }
   // Bumpstops.
   for (std::size_t e = 0; e < m.bumpstops.size(); ++e) {
     const BumpstopElement& el = m.bumpstops[e];
-    pointPair(el.g, ws, p);
-    const suspension::Deformation d = deformation(el.g, p);
-    const double f = el.law.force(d.d);
-    ws.bumpstop[e] = {d.d, d.d_dot, f};
-    applyForce(el.g, p, d.grad, f, ws);
+    ws.bumpstop[e] =
+        pointElement(el.g, ws, [&](double d, double /*d_dot*/) { return el.law.force(d); });
   }
   for (std::size_t b = 0; b < m.bodies.size(); ++b)
     pointResultantsToQ(ws.kin[b], ws.susp_force[b], ws.susp_moment[b], ws.force[b]);

@@ -28,6 +28,17 @@ struct ElementValue {
   double force = 0.0;
 };
 
+// Relative motion of the two attachment points of a point pair (VehicleModel::point_pairs) in the
+// master track frame, Eq. (28): delta = R_ij + A_ij (rbar_j + A_a,j u_Q) - (rbar_i + A_a,i u_P),
+// delta_dot = A_ij v_Q - v_P - sdot_i (w_i x delta) (docs/vehicle.md).
+struct PointPairMotion {
+  Eigen::Vector3d aui = Eigen::Vector3d::Zero();  // A_a,i u_P: point P rel. to CoM i (track comps)
+  Eigen::Vector3d auj = Eigen::Vector3d::Zero();  // A_a,j u_Q: point Q rel. to CoM j (track comps)
+  Eigen::Vector3d delta = Eigen::Vector3d::Zero();
+  Eigen::Vector3d delta_dot = Eigen::Vector3d::Zero();
+  Eigen::Vector3d w_delta = Eigen::Vector3d::Zero();  // w_i x delta (the s column of J_i)
+};
+
 struct Workspace {
   // Inputs: full coordinates and rates of every body (set by the ODE adapter).
   std::vector<Vector6d> q, qd;
@@ -46,11 +57,18 @@ struct Workspace {
   // The BodyKinematics::tf_version of both bodies pair_A, pair_R were computed from: they depend
   // on the track frames alone, which stay the same for the stages at one time.
   std::vector<std::array<std::uint64_t, 2>> pair_version;
+  // Per point pair (VehicleModel::point_pairs), shared by the elements at those points.
+  std::vector<PointPairMotion> point_motion;
 
   const ElementValue& value(ElementId id) const;
 };
 
 Workspace makeWorkspace(const VehicleModel& model);
+
+// The relative motion of the attachment points of element g computed from the element's own
+// geometry, at the body kinematics and body-pair placements of the last evaluate(): equal to
+// ws.point_motion[g.point_pair] (tests; bending springs included).
+PointPairMotion pointPairMotion(const ElementGeometry& g, const Workspace& ws);
 
 // Evaluates everything at ws.q, ws.qd and the series damper forces series_f (one per series
 // damper; may be null if there are none).

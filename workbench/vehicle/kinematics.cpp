@@ -5,24 +5,8 @@
 namespace rb::vehicle {
 
 namespace {
-// Elementary rotations from a precomputed cosine and sine (each angle's sincos is taken once per
-// evaluation and shared by the rotation, G and, for wheelsets, the intermediate frame).
-Eigen::Matrix3d rx(double c, double s) {
-  Eigen::Matrix3d m;
-  m << 1, 0, 0, 0, c, -s, 0, s, c;
-  return m;
-}
-Eigen::Matrix3d ry(double c, double s) {
-  Eigen::Matrix3d m;
-  m << c, 0, s, 0, 1, 0, -s, 0, c;
-  return m;
-}
-Eigen::Matrix3d rz(double c, double s) {
-  Eigen::Matrix3d m;
-  m << c, -s, 0, s, c, 0, 0, 0, 1;
-  return m;
-}
-
+// Each angle's sincos is taken once per evaluation and shared by the rotation, G and, for
+// wheelsets, the intermediate frame.
 struct AngleTrig {
   double cph, sph, cth, sth, cps, sps;
   explicit AngleTrig(const Eigen::Vector3d& a)
@@ -34,10 +18,38 @@ struct AngleTrig {
         sps(std::sin(a[2])) {}
 };
 
+// The compositions of the elementary rotations written out entry by entry. Every product of the
+// matrix product that meets a zero or a one of an elementary rotation is exact, and the remaining
+// terms are summed in the product's order: the entries are the numbers of rz() * ry() * rx() etc.
+// (tests/vehicle/test_shared.cpp) without their multiplications by 0 and 1.
+// Rz(psi) Ry(theta) Rx(phi): car bodies, bogies, frames.
+void yawPitchRoll(const AngleTrig& t, Eigen::Matrix3d& A) {
+  const double p00 = t.cps * t.cth, p02 = t.cps * t.sth;  // Rz Ry
+  const double p10 = t.sps * t.cth, p12 = t.sps * t.sth;
+  const double p01 = -t.sps, p11 = t.cps, p20 = -t.sth, p22 = t.cth;
+  A << p00, p01 * t.cph + p02 * t.sph, p01 * -t.sph + p02 * t.cph,  //
+      p10, p11 * t.cph + p12 * t.sph, p11 * -t.sph + p12 * t.cph,   //
+      p20, p22 * t.sph, p22 * t.cph;
+}
+// Rz(psi) Rx(phi): the wheelset intermediate frame wI.
+void yawRoll(const AngleTrig& t, Eigen::Matrix3d& A) {
+  A << t.cps, -t.sps * t.cph, -t.sps * -t.sph,  //
+      t.sps, t.cps * t.cph, t.cps * -t.sph,     //
+      0.0, t.sph, t.cph;
+}
+// B Ry(theta) for a rotation B: the wheelset body frame wI Ry(theta).
+void timesRy(const Eigen::Matrix3d& B, double cth, double sth, Eigen::Matrix3d& A) {
+  for (int r = 0; r < 3; ++r) {
+    A(r, 0) = B(r, 0) * cth + B(r, 2) * -sth;
+    A(r, 1) = B(r, 1);
+    A(r, 2) = B(r, 0) * sth + B(r, 2) * cth;
+  }
+}
+
 // Intermediate frame wI = Rz(psi) Rx(phi) of a wheelset; omega_wI = (dph, sph dps, cph dps).
 void intermediateFrom(const AngleTrig& t, const Eigen::Vector3d& rates, EulerKinematics& k) {
   const double dph = rates[0], dps = rates[2];
-  k.A = rz(t.cps, t.sps) * rx(t.cph, t.sph);
+  yawRoll(t, k.A);
   k.G << 1, 0, 0, 0, 0, t.sph, 0, 0, t.cph;
   k.Gdot_rates << 0.0, t.cph * dph * dps, -t.sph * dph * dps;
 }
@@ -49,16 +61,19 @@ void eulerFrom(RotationSequence seq, const AngleTrig& t, const Eigen::Vector3d& 
   const double cph = t.cph, sph = t.sph, cth = t.cth, sth = t.sth;
   if (seq == RotationSequence::YawPitchRoll) {
     // omega_b = (dph - dps sth, dth cph + dps cth sph, -dth sph + dps cth cph)
-    k.A = rz(t.cps, t.sps) * ry(cth, sth) * rx(cph, sph);
+    yawPitchRoll(t, k.A);
     k.G << 1, 0, -sth, 0, cph, cth * sph, 0, -sph, cth * cph;
     k.Gdot_rates << -dps * dth * cth, -dth * dph * sph + dps * (-dth * sth * sph + dph * cth * cph),
         -dth * dph * cph + dps * (-dth * sth * cph - dph * cth * sph);
   } else {
     // omega_b = (cth dph - sth cph dps, dth + sph dps, sth dph + cth cph dps)
-    if (inter)
-      k.A = inter->A * ry(cth, sth);
-    else
-      k.A = rz(t.cps, t.sps) * rx(cph, sph) * ry(cth, sth);
+    if (inter) {
+      timesRy(inter->A, cth, sth, k.A);
+    } else {
+      Eigen::Matrix3d wI;
+      yawRoll(t, wI);
+      timesRy(wI, cth, sth, k.A);
+    }
     k.G << cth, 0, -sth * cph, 0, 1, sph, sth, 0, cth * cph;
     k.Gdot_rates << -sth * dth * dph - (cth * dth * cph - sth * sph * dph) * dps, cph * dph * dps,
         cth * dth * dph + (-sth * dth * cph - cth * sph * dph) * dps;
@@ -109,7 +124,7 @@ void bodyKinematics(const track::TrackGeometry& geometry, RotationSequence seq, 
   out.omega_rel.noalias() = out.AG * rates;
 
   // Translation: v = (e_x + w x rbar) sdot + rbar_dot (track comps).
-  out.Lv.setZero();
+  // Lv, Lw: the entries not written here are zero from construction (BodyKinematics).
   out.Lv.col(kS) = Eigen::Vector3d::UnitX() + w.cross(out.rbar);
   out.Lv(1, kY) = 1.0;
   out.Lv(2, kZ) = 1.0;
@@ -120,7 +135,6 @@ void bodyKinematics(const track::TrackGeometry& geometry, RotationSequence seq, 
   // Rotation: omega_b = Abar^T w sdot + G alpha_dot (body comps).
   const Eigen::Vector3d wb = out.body.A.transpose() * w;
   const Eigen::Vector3d omega_rel = out.body.G * rates;
-  out.Lw.setZero();
   out.Lw.col(kS) = wb;
   out.Lw.block<3, 3>(0, kRoll) = out.body.G;
   out.omega_b = wb * sd + omega_rel;

@@ -60,8 +60,10 @@ struct BodyKinematics {
   EulerKinematics attach;                             // attachment frame (== body, or wI)
   Eigen::Vector3d v = Eigen::Vector3d::Zero();        // absolute CoM velocity, track comps
   Eigen::Vector3d omega_b = Eigen::Vector3d::Zero();  // absolute angular velocity, body comps
-  Matrix36d Lv = Matrix36d::Zero();                   // dv/dqdot
-  Matrix36d Lw = Matrix36d::Zero();                   // domega_b/dqdot
+  // dv/dqdot and domega_b/dqdot. Their constant zero blocks (the y, z columns of Lw, the angle
+  // columns of Lv) are set here and never written by bodyKinematics.
+  Matrix36d Lv = Matrix36d::Zero();
+  Matrix36d Lw = Matrix36d::Zero();
   Eigen::Vector3d gamma_v = Eigen::Vector3d::Zero();  // a - Lv qddot (track comps)
   Eigen::Vector3d gamma_w = Eigen::Vector3d::Zero();  // alpha_b - Lw qddot (body comps)
   // Per-evaluation constants of the attachment frame, so that a point force or a point velocity

@@ -183,6 +183,18 @@ void validateBodies(const VehicleSpec& spec, std::map<std::string, int>& bodies,
   }
 }
 
+// Index of the point pair (body1, u1, body2, u2) of g in `pairs`, appended if new. Exact
+// equality: elements written at the same attachment points share their relative motion.
+int pointPairIndex(const ElementGeometry& g, std::vector<PointPair>& pairs) {
+  const auto same = [&](const PointPair& p) {
+    return p.body1 == g.body1 && p.body2 == g.body2 && p.u1 == g.u1 && p.u2 == g.u2;
+  };
+  const auto it = std::find_if(pairs.begin(), pairs.end(), same);
+  if (it != pairs.end()) return static_cast<int>(it - pairs.begin());
+  pairs.push_back({g.body1, g.body2, g.pair, g.u1, g.u2});
+  return static_cast<int>(pairs.size()) - 1;
+}
+
 }  // namespace
 
 void validateVehicle(const VehicleSpec& spec, Diagnostics& diags) {
@@ -247,6 +259,7 @@ VehicleModel compileVehicle(const VehicleSpec& spec, const track::TrackModel& tr
     const auto it = std::find(m.body_pairs.begin(), m.body_pairs.end(), pair);
     g.pair = static_cast<int>(it - m.body_pairs.begin());
     if (it == m.body_pairs.end()) m.body_pairs.push_back(pair);
+    if (e.kind != ElementKind::BendingSpring) g.point_pair = pointPairIndex(g, m.point_pairs);
     switch (e.kind) {
       case ElementKind::SpringDamper:
         m.spring_dampers.push_back({g, e.stiffness, e.damping, e.preload});

@@ -59,6 +59,19 @@ struct ElementGeometry {
   Eigen::Vector3d delta_nominal = Eigen::Vector3d::Zero();
   double length0 = 0.0;  // [m] axial undeformed length (the nominal distance if spec gives 0)
   int pair = -1;         // index into VehicleModel::body_pairs of (body1, body2)
+  // Index into VehicleModel::point_pairs of (body1, u1, body2, u2); -1 for bending springs, which
+  // act through the attachment frames alone.
+  int point_pair = -1;
+};
+
+// A distinct pair of attachment points of the point-based elements (all kinds but bending
+// springs). The elements of one suspension location (the primary x, y and z elements of an axle
+// box, the secondary springs and dampers of one side) share the relative motion of their points
+// (delta, delta_dot of Eq. 28), evaluated once per point pair and evaluation.
+struct PointPair {
+  int body1 = 0, body2 = 0;
+  int pair = -1;  // index into VehicleModel::body_pairs
+  Eigen::Vector3d u1 = Eigen::Vector3d::Zero(), u2 = Eigen::Vector3d::Zero();
 };
 
 struct SpringDamperElement {
@@ -112,6 +125,9 @@ struct VehicleModel {
   // track frames (A_ij, R_ij of Eq. 28) is computed once per pair and evaluation (the wagon's 48
   // elements join 6 pairs).
   std::vector<std::array<int, 2>> body_pairs;
+  // The distinct attachment-point pairs of the point-based elements (the wagon's 44 point-based
+  // elements join 16 pairs).
+  std::vector<PointPair> point_pairs;
   track::TrackGeometry geometry;
   SourceLoc loc;
 
