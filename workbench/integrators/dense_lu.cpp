@@ -67,11 +67,94 @@ void DenseLu::solve(const Eigen::Ref<const Eigen::MatrixXd>& lu,
   if (n > 0) b(0) /= lu(0, 0);
 }
 
+CopyRowElimination::CopyRowElimination(long n, const std::vector<int>& copy_of) : lu_(0) {
+  const auto size = static_cast<std::size_t>(n);
+  std::vector<bool> is_copy(size, false);
+  if (copy_of.size() == size) {
+    for (std::size_t p = 0; p < size; ++p) {
+      const int k = copy_of[p];
+      if (k >= 0 && k < n && copy_of[static_cast<std::size_t>(k)] < 0 &&
+          static_cast<std::size_t>(k) != p)
+        is_copy[p] = true;
+    }
+  }
+  kept_slot_.assign(size, -1);
+  for (std::size_t i = 0; i < size; ++i) {
+    const auto row = static_cast<Eigen::Index>(i);
+    if (is_copy[i]) {
+      copy_rows_.push_back(row);
+      targets_.push_back(copy_of[i]);
+    } else {
+      kept_slot_[i] = static_cast<Eigen::Index>(kept_.size());
+      kept_.push_back(row);
+    }
+  }
+  const auto m = static_cast<Eigen::Index>(kept_.size());
+  const auto np = static_cast<Eigen::Index>(copy_rows_.size());
+  reduced_.resize(m, m);
+  coupling_.resize(m, np);
+  diagonal_.resize(np);
+  target_entry_.resize(np);
+  rhs_.resize(m);
+  copy_rhs_.resize(np);
+  lu_ = DenseLu(m);
+}
+
+bool CopyRowElimination::structured(const Eigen::Ref<const Eigen::MatrixXd>& a) const {
+  for (std::size_t c = 0; c < copy_rows_.size(); ++c) {
+    const Eigen::Index p = copy_rows_[c], k = targets_[c];
+    if (a(p, p) == 0.0) return false;
+    for (Eigen::Index j = 0; j < a.cols(); ++j)
+      if (j != p && j != k && a(p, j) != 0.0) return false;
+  }
+  return true;
+}
+
+long CopyRowElimination::factor(const Eigen::Ref<const Eigen::MatrixXd>& a) {
+  const auto m = static_cast<Eigen::Index>(kept_.size());
+  for (Eigen::Index jj = 0; jj < m; ++jj) {
+    const auto col = a.col(kept_[static_cast<std::size_t>(jj)]);
+    for (Eigen::Index ii = 0; ii < m; ++ii)
+      reduced_(ii, jj) = col(kept_[static_cast<std::size_t>(ii)]);
+  }
+  // C_ip = M_ip / M_pp, then M'_ik -= C_ip M_pk over the kept rows i.
+  for (std::size_t c = 0; c < copy_rows_.size(); ++c) {
+    const Eigen::Index p = copy_rows_[c], k = targets_[c];
+    const auto cc = static_cast<Eigen::Index>(c);
+    const auto col = a.col(p);
+    const double inv = 1.0 / a(p, p);
+    for (Eigen::Index ii = 0; ii < m; ++ii)
+      coupling_(ii, cc) = col(kept_[static_cast<std::size_t>(ii)]) * inv;
+    diagonal_(cc) = a(p, p);
+    target_entry_(cc) = a(p, k);
+    reduced_.col(kept_slot_[static_cast<std::size_t>(k)]) -= a(p, k) * coupling_.col(cc);
+  }
+  return lu_.factor(reduced_);
+}
+
+void CopyRowElimination::solve(Eigen::Ref<Eigen::VectorXd> b) {
+  const auto m = static_cast<Eigen::Index>(kept_.size());
+  const auto np = static_cast<Eigen::Index>(copy_rows_.size());
+  for (Eigen::Index ii = 0; ii < m; ++ii) rhs_(ii) = b(kept_[static_cast<std::size_t>(ii)]);
+  for (Eigen::Index c = 0; c < np; ++c) copy_rhs_(c) = b(copy_rows_[static_cast<std::size_t>(c)]);
+  // b'_i = b_i - sum_p C_ip b_p
+  rhs_.noalias() -= coupling_ * copy_rhs_;
+  lu_.solve(reduced_, rhs_);
+  for (Eigen::Index ii = 0; ii < m; ++ii) b(kept_[static_cast<std::size_t>(ii)]) = rhs_(ii);
+  // x_p = (b_p - M_pk x_k) / M_pp
+  for (Eigen::Index c = 0; c < np; ++c) {
+    const auto cs = static_cast<std::size_t>(c);
+    b(copy_rows_[cs]) = (copy_rhs_(c) - target_entry_(c) * b(targets_[cs])) / diagonal_(c);
+  }
+}
+
 namespace {
 
 struct DenseLuContent {
-  explicit DenseLuContent(long n) : lu(n) {}
+  DenseLuContent(long n, const std::vector<int>& copy_of) : lu(n), elimination(n, copy_of) {}
   DenseLu lu;
+  CopyRowElimination elimination;
+  bool reduced = false;  // the last setup factored the reduced matrix
   long last_flag = 0;
 };
 
@@ -108,7 +191,9 @@ int setup(SUNLinearSolver s, SUNMatrix a) {
     c->last_flag = SUNLS_ILL_INPUT;
     return SUNLS_ILL_INPUT;
   }
-  const long zero_pivot = c->lu.factor(denseMap(a));
+  const auto m = denseMap(a);
+  c->reduced = c->elimination.active() && c->elimination.structured(m);
+  const long zero_pivot = c->reduced ? c->elimination.factor(m) : c->lu.factor(m);
   c->last_flag = zero_pivot;  // like SUNLinSol_Dense: the 1-based step of the zero pivot
   return zero_pivot > 0 ? SUNLS_LUFACT_FAIL : SUNLS_SUCCESS;
 }
@@ -124,7 +209,10 @@ int solve(SUNLinearSolver s, SUNMatrix a, N_Vector x, N_Vector b, double /*tol*/
   }
   Eigen::Map<Eigen::VectorXd> xv(xd, n);
   if (xd != bd) xv = Eigen::Map<const Eigen::VectorXd>(bd, n);
-  c->lu.solve(denseMap(a), xv);
+  if (c->reduced)
+    c->elimination.solve(xv);
+  else
+    c->lu.solve(denseMap(a), xv);
   c->last_flag = SUNLS_SUCCESS;
   return SUNLS_SUCCESS;
 }
@@ -194,8 +282,8 @@ SUNMatrix newDenseMatrix(long n, SUNContext ctx) {
   return withOurOps(SUNDenseMatrix(n, n, ctx));
 }
 
-SUNLinearSolver newDenseLuSolver(long n, SUNContext ctx) {
-  auto c = std::make_unique<DenseLuContent>(n);
+SUNLinearSolver newDenseLuSolver(long n, SUNContext ctx, const std::vector<int>& copy_of) {
+  auto c = std::make_unique<DenseLuContent>(n, copy_of);
   SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
   if (s == nullptr) return nullptr;
   s->content = c.release();
