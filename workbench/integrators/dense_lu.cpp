@@ -26,8 +26,22 @@ Eigen::Index pivotRow(const Eigen::Ref<Eigen::MatrixXd>& a, Eigen::Index k) {
 
 }  // namespace
 
+namespace {
+
+// y_i -= alpha x_i, i < m: the element update of DGEFA/DGESL (one multiply, one subtract). A plain
+// loop over raw columns: the columns are short (n <= 100), where a generic expression's set-up
+// costs as much as the arithmetic.
+inline void subtractScaled(double alpha, const double* __restrict x, double* __restrict y,
+                           Eigen::Index m) {
+  for (Eigen::Index i = 0; i < m; ++i) y[i] -= alpha * x[i];
+}
+
+}  // namespace
+
 long DenseLu::factor(Eigen::Ref<Eigen::MatrixXd> a) {
   const Eigen::Index n = a.cols();
+  const Eigen::Index ld = a.outerStride();
+  double* base = a.data();
   for (Eigen::Index k = 0; k < n; ++k) {
     const Eigen::Index l = pivotRow(a, k);
     pivots_[static_cast<std::size_t>(k)] = static_cast<long>(l);
@@ -35,12 +49,14 @@ long DenseLu::factor(Eigen::Ref<Eigen::MatrixXd> a) {
     if (l != k) a.row(k).swap(a.row(l));  // whole rows, so the multipliers of L follow
     const Eigen::Index m = n - k - 1;     // rows (and columns) below (right of) the pivot
     // Multipliers l_ik = a_ik / a_kk, formed as a_ik * (1 / a_kk) like DGEFA.
+    double* lk = base + k * ld + k + 1;
     const double mult = 1.0 / a(k, k);
-    a.col(k).tail(m) *= mult;
+    for (Eigen::Index i = 0; i < m; ++i) lk[i] *= mult;
     // Rank-1 update of the trailing block, one column at a time: a_ij -= a_kj l_ik.
     for (Eigen::Index j = k + 1; j < n; ++j) {
-      const double a_kj = a(k, j);
-      if (a_kj != 0.0) a.col(j).tail(m) -= a_kj * a.col(k).tail(m);
+      double* aj = base + j * ld;
+      const double a_kj = aj[k];
+      if (a_kj != 0.0) subtractScaled(a_kj, lk, aj + k + 1, m);
     }
   }
   return 0;
@@ -49,22 +65,23 @@ long DenseLu::factor(Eigen::Ref<Eigen::MatrixXd> a) {
 void DenseLu::solve(const Eigen::Ref<const Eigen::MatrixXd>& lu,
                     Eigen::Ref<Eigen::VectorXd> b) const {
   const Eigen::Index n = lu.cols();
+  const Eigen::Index ld = lu.outerStride();
+  const double* base = lu.data();
+  double* x = b.data();
   // b := P b, the interchanges in the order of the factorisation.
   for (Eigen::Index k = 0; k < n; ++k) {
     const auto pk = static_cast<Eigen::Index>(pivots_[static_cast<std::size_t>(k)]);
-    if (pk != k) std::swap(b(k), b(pk));
+    if (pk != k) std::swap(x[k], x[pk]);
   }
   // L y = b (unit diagonal), column-oriented forward substitution.
-  for (Eigen::Index k = 0; k + 1 < n; ++k) {
-    const Eigen::Index m = n - k - 1;
-    b.tail(m) -= b(k) * lu.col(k).tail(m);
-  }
+  for (Eigen::Index k = 0; k + 1 < n; ++k)
+    subtractScaled(x[k], base + k * ld + k + 1, x + k + 1, n - k - 1);
   // U x = y, column-oriented back substitution.
   for (Eigen::Index k = n - 1; k > 0; --k) {
-    b(k) /= lu(k, k);
-    b.head(k) -= b(k) * lu.col(k).head(k);
+    x[k] /= base[k * ld + k];
+    subtractScaled(x[k], base + k * ld, x, k);
   }
-  if (n > 0) b(0) /= lu(0, 0);
+  if (n > 0) x[0] /= base[0];
 }
 
 CopyRowElimination::CopyRowElimination(long n, const std::vector<int>& copy_of) : lu_(0) {
@@ -101,11 +118,14 @@ CopyRowElimination::CopyRowElimination(long n, const std::vector<int>& copy_of) 
 }
 
 bool CopyRowElimination::structured(const Eigen::Ref<const Eigen::MatrixXd>& a) const {
-  for (std::size_t c = 0; c < copy_rows_.size(); ++c) {
-    const Eigen::Index p = copy_rows_[c], k = targets_[c];
-    if (a(p, p) == 0.0) return false;
-    for (Eigen::Index j = 0; j < a.cols(); ++j)
-      if (j != p && j != k && a(p, j) != 0.0) return false;
+  // Column by column (contiguous): the copy rows hold no entry but M_pp and M_pk.
+  for (Eigen::Index j = 0; j < a.cols(); ++j) {
+    const double* col = a.data() + j * a.outerStride();
+    for (std::size_t c = 0; c < copy_rows_.size(); ++c) {
+      const Eigen::Index p = copy_rows_[c];
+      const bool allowed = j == p || j == targets_[c];
+      if (col[p] == 0.0 ? (j == p) : !allowed) return false;
+    }
   }
   return true;
 }
