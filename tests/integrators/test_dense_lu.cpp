@@ -166,24 +166,29 @@ TEST(DenseMatrix, OperationsBitIdenticalToSunMatrixDense) {
   EXPECT_EQ(SUNMatCopy(ours.get(), wrong.get()), SUNMAT_ILL_INPUT);
 }
 
-// A second-order system's Newton matrix M = I - gamma J with copy rows p = 0..np-1 (f_p =
-// y_{np+p}): row p is e_p - gamma e_{np+p}.
-Eigen::MatrixXd secondOrderNewton(long np, long n, unsigned seed, std::vector<int>& copy_of) {
+// A second-order system's Newton matrix M = I - gamma J with copy rows p = first .. first+np-1
+// (f_p = y_k, k = the row np further on, cyclically): row p is e_p - gamma e_k.
+Eigen::MatrixXd secondOrderNewton(long np, long n, unsigned seed, std::vector<int>& copy_of,
+                                  long first = 0) {
   Eigen::MatrixXd m = newtonLike(n, seed);
   copy_of.assign(static_cast<std::size_t>(n), -1);
-  for (long p = 0; p < np; ++p) {
+  for (long p = first; p < first + np; ++p) {
+    const long k = (p + np) % n;
     m.row(p).setZero();
     m(p, p) = 1.0;
-    m(p, np + p) = -0.01;
-    copy_of[static_cast<std::size_t>(p)] = static_cast<int>(np + p);
+    m(p, k) = -0.01;
+    copy_of[static_cast<std::size_t>(p)] = static_cast<int>(k);
   }
   return m;
 }
 
-TEST(CopyRowElimination, SolvesLikeTheFullFactorisation) {
+class CopyRowEliminationAt : public ::testing::TestWithParam<long> {};
+
+// Copy rows first (the vehicle layout) and in the middle of the matrix.
+TEST_P(CopyRowEliminationAt, SolvesLikeTheFullFactorisation) {
   std::vector<int> copy_of;
   const long n = 12, np = 5;
-  const Eigen::MatrixXd m = secondOrderNewton(np, n, 7, copy_of);
+  const Eigen::MatrixXd m = secondOrderNewton(np, n, 7, copy_of, GetParam());
   CopyRowElimination e(n, copy_of);
   ASSERT_TRUE(e.active());
   ASSERT_TRUE(e.structured(m));
@@ -197,6 +202,8 @@ TEST(CopyRowElimination, SolvesLikeTheFullFactorisation) {
   EXPECT_LT((m * x - b).cwiseAbs().maxCoeff(), 1e-13);
   EXPECT_LT((x - m.partialPivLu().solve(b)).cwiseAbs().maxCoeff(), 1e-13);
 }
+
+INSTANTIATE_TEST_SUITE_P(FirstCopyRow, CopyRowEliminationAt, ::testing::Values(0L, 4L));
 
 TEST(CopyRowElimination, DetectsAMatrixWithoutTheStructure) {
   std::vector<int> copy_of;

@@ -108,6 +108,7 @@ CopyRowElimination::CopyRowElimination(long n, const std::vector<int>& copy_of) 
   }
   const auto m = static_cast<Eigen::Index>(kept_.size());
   const auto np = static_cast<Eigen::Index>(copy_rows_.size());
+  leading_ = np > 0 && copy_rows_.back() == np - 1;  // copy rows 0 .. np-1, kept rows after
   reduced_.resize(m, m);
   coupling_.resize(m, np);
   diagonal_.resize(np);
@@ -132,10 +133,14 @@ bool CopyRowElimination::structured(const Eigen::Ref<const Eigen::MatrixXd>& a) 
 
 long CopyRowElimination::factor(const Eigen::Ref<const Eigen::MatrixXd>& a) {
   const auto m = static_cast<Eigen::Index>(kept_.size());
-  for (Eigen::Index jj = 0; jj < m; ++jj) {
-    const auto col = a.col(kept_[static_cast<std::size_t>(jj)]);
-    for (Eigen::Index ii = 0; ii < m; ++ii)
-      reduced_(ii, jj) = col(kept_[static_cast<std::size_t>(ii)]);
+  if (leading_) {
+    reduced_ = a.bottomRightCorner(m, m);
+  } else {
+    for (Eigen::Index jj = 0; jj < m; ++jj) {
+      const auto col = a.col(kept_[static_cast<std::size_t>(jj)]);
+      for (Eigen::Index ii = 0; ii < m; ++ii)
+        reduced_(ii, jj) = col(kept_[static_cast<std::size_t>(ii)]);
+    }
   }
   // C_ip = M_ip / M_pp, then M'_ik -= C_ip M_pk over the kept rows i.
   for (std::size_t c = 0; c < copy_rows_.size(); ++c) {
@@ -143,8 +148,12 @@ long CopyRowElimination::factor(const Eigen::Ref<const Eigen::MatrixXd>& a) {
     const auto cc = static_cast<Eigen::Index>(c);
     const auto col = a.col(p);
     const double inv = 1.0 / a(p, p);
-    for (Eigen::Index ii = 0; ii < m; ++ii)
-      coupling_(ii, cc) = col(kept_[static_cast<std::size_t>(ii)]) * inv;
+    if (leading_) {
+      coupling_.col(cc) = col.tail(m) * inv;
+    } else {
+      for (Eigen::Index ii = 0; ii < m; ++ii)
+        coupling_(ii, cc) = col(kept_[static_cast<std::size_t>(ii)]) * inv;
+    }
     diagonal_(cc) = a(p, p);
     target_entry_(cc) = a(p, k);
     reduced_.col(kept_slot_[static_cast<std::size_t>(k)]) -= a(p, k) * coupling_.col(cc);
@@ -155,12 +164,21 @@ long CopyRowElimination::factor(const Eigen::Ref<const Eigen::MatrixXd>& a) {
 void CopyRowElimination::solve(Eigen::Ref<Eigen::VectorXd> b) {
   const auto m = static_cast<Eigen::Index>(kept_.size());
   const auto np = static_cast<Eigen::Index>(copy_rows_.size());
-  for (Eigen::Index ii = 0; ii < m; ++ii) rhs_(ii) = b(kept_[static_cast<std::size_t>(ii)]);
-  for (Eigen::Index c = 0; c < np; ++c) copy_rhs_(c) = b(copy_rows_[static_cast<std::size_t>(c)]);
+  if (leading_) {
+    copy_rhs_ = b.head(np);
+    rhs_ = b.tail(m);
+  } else {
+    for (Eigen::Index ii = 0; ii < m; ++ii) rhs_(ii) = b(kept_[static_cast<std::size_t>(ii)]);
+    for (Eigen::Index c = 0; c < np; ++c) copy_rhs_(c) = b(copy_rows_[static_cast<std::size_t>(c)]);
+  }
   // b'_i = b_i - sum_p C_ip b_p
   rhs_.noalias() -= coupling_ * copy_rhs_;
   lu_.solve(reduced_, rhs_);
-  for (Eigen::Index ii = 0; ii < m; ++ii) b(kept_[static_cast<std::size_t>(ii)]) = rhs_(ii);
+  if (leading_) {
+    b.tail(m) = rhs_;
+  } else {
+    for (Eigen::Index ii = 0; ii < m; ++ii) b(kept_[static_cast<std::size_t>(ii)]) = rhs_(ii);
+  }
   // x_p = (b_p - M_pk x_k) / M_pp
   for (Eigen::Index c = 0; c < np; ++c) {
     const auto cs = static_cast<std::size_t>(c);

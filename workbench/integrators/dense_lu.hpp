@@ -62,7 +62,8 @@ class CopyRowElimination {
   std::vector<Eigen::Index> copy_rows_, targets_;  // p and k = copy_of[p]
   std::vector<Eigen::Index> kept_;                 // the other rows, ascending
   std::vector<Eigen::Index> kept_slot_;            // per row: its place in kept_, or -1
-  Eigen::MatrixXd reduced_;                        // M', then its LU factors
+  bool leading_ = false;      // the copy rows are the first ones (the vehicle layout)
+  Eigen::MatrixXd reduced_;   // M', then its LU factors
   Eigen::MatrixXd coupling_;  // C_ip = M_ip / M_pp over the kept rows i and copy rows p
   Eigen::VectorXd diagonal_, target_entry_;  // M_pp, M_pk per copy row
   Eigen::VectorXd rhs_, copy_rhs_;
