@@ -76,8 +76,7 @@ struct GroupedJacobianData {
 
 // CVLsJacFn: forward differences over the column groups of the model's JacobianPattern, with the
 // increments of CVODE's own dense difference quotient (cvLsDenseDQJac: inc_j = max(sqrt(u)
-// |y_j|, min_inc / w_j), min_inc = 1000 |h| u n ||f||_wrms), so each entry is the one CVODE would
-// form, at fewer evaluations.
+// |y_j|, min_inc / w_j), min_inc = 1000 |h| u n ||f||_wrms), min_inc at least sqrt(u).
 int groupedJac(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user_data, N_Vector tmp1,
                N_Vector tmp2, N_Vector /*tmp3*/) {
   auto* cb = static_cast<detail::OdeCallbackData*>(user_data);
@@ -95,7 +94,12 @@ int groupedJac(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user_data, 
   double* yv = detail::data(y);
   double* inc = detail::data(tmp2);
   const double* w = detail::data(d->ewt);
-  for (long j = 0; j < n; ++j) inc[j] = std::max(srur * std::abs(yv[j]), min_inc / w[j]);
+  // min_inc is floored at sqrt(u): at the first steps (|h| ~ 1e-13) CVODE's bound gives increments
+  // of 1e-20 in the weighted norm, far below the residue of the model's inner iterations (KEC
+  // Newton, consistent normal forces: 1e-10 relative), and the quotients are noise that a reused
+  // Jacobian would carry for many steps.
+  const double inc_floor = std::max(min_inc, srur);
+  for (long j = 0; j < n; ++j) inc[j] = std::max(srur * std::abs(yv[j]), inc_floor / w[j]);
   Eigen::Map<Eigen::MatrixXd> jm(SUNDenseMatrix_Data(J), n, n);
   const auto rhs = [&](double* /*yp*/, double* /*f*/) {
     ++cb->jacobian_rhs_evals;
