@@ -7,6 +7,7 @@
 
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include "workbench/integrators/dense_lu.hpp"
 #include "workbench/integrators/sundials_common.hpp"
@@ -163,6 +164,73 @@ TEST(DenseMatrix, OperationsBitIdenticalToSunMatrixDense) {
       0.0);
   const SunMatrix wrong(newDenseMatrix(n + 1, ctx));
   EXPECT_EQ(SUNMatCopy(ours.get(), wrong.get()), SUNMAT_ILL_INPUT);
+}
+
+// A second-order system's Newton matrix M = I - gamma J with copy rows p = first .. first+np-1
+// (f_p = y_k, k = the row np further on, cyclically): row p is e_p - gamma e_k.
+Eigen::MatrixXd secondOrderNewton(long np, long n, unsigned seed, std::vector<int>& copy_of,
+                                  long first = 0) {
+  Eigen::MatrixXd m = newtonLike(n, seed);
+  copy_of.assign(static_cast<std::size_t>(n), -1);
+  for (long p = first; p < first + np; ++p) {
+    const long k = (p + np) % n;
+    m.row(p).setZero();
+    m(p, p) = 1.0;
+    m(p, k) = -0.01;
+    copy_of[static_cast<std::size_t>(p)] = static_cast<int>(k);
+  }
+  return m;
+}
+
+class CopyRowEliminationAt : public ::testing::TestWithParam<long> {};
+
+// Copy rows first (the vehicle layout) and in the middle of the matrix.
+TEST_P(CopyRowEliminationAt, SolvesLikeTheFullFactorisation) {
+  std::vector<int> copy_of;
+  const long n = 12, np = 5;
+  const Eigen::MatrixXd m = secondOrderNewton(np, n, 7, copy_of, GetParam());
+  CopyRowElimination e(n, copy_of);
+  ASSERT_TRUE(e.active());
+  ASSERT_TRUE(e.structured(m));
+  ASSERT_EQ(e.factor(m), 0);
+  std::mt19937 gen(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::VectorXd b(n);
+  for (long i = 0; i < n; ++i) b(i) = u(gen);
+  Eigen::VectorXd x = b;
+  e.solve(x);
+  EXPECT_LT((m * x - b).cwiseAbs().maxCoeff(), 1e-13);
+  EXPECT_LT((x - m.partialPivLu().solve(b)).cwiseAbs().maxCoeff(), 1e-13);
+}
+
+INSTANTIATE_TEST_SUITE_P(FirstCopyRow, CopyRowEliminationAt, ::testing::Values(0L, 4L));
+
+TEST(CopyRowElimination, DetectsAMatrixWithoutTheStructure) {
+  std::vector<int> copy_of;
+  Eigen::MatrixXd m = secondOrderNewton(3, 8, 11, copy_of);
+  CopyRowElimination e(8, copy_of);
+  EXPECT_TRUE(e.structured(m));
+  m(1, 6) = 1e-3;  // a copy row with a third entry
+  EXPECT_FALSE(e.structured(m));
+  EXPECT_FALSE(CopyRowElimination(8, {}).active());
+}
+
+TEST(DenseLuSolver, EliminatesCopyRowsAndFallsBackToTheFullMatrix) {
+  SunContext ctx;
+  std::vector<int> copy_of;
+  const long n = 10;
+  Eigen::MatrixXd m = secondOrderNewton(4, n, 5, copy_of);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  for (const bool structured : {true, false}) {
+    if (!structured) m(2, 9) = 0.05;
+    SunLinSol ls(newDenseLuSolver(n, ctx, copy_of));
+    SunMatrix a = denseMatrix(m, ctx);
+    NVector x = makeVector(n, ctx), rhs = makeVector(n, ctx);
+    map(rhs.get(), n) = b;
+    ASSERT_EQ(SUNLinSolSetup(ls.get(), a.get()), SUNLS_SUCCESS);
+    ASSERT_EQ(SUNLinSolSolve(ls.get(), a.get(), x.get(), rhs.get(), 0.0), SUNLS_SUCCESS);
+    EXPECT_LT((m * map(x.get(), n) - b).cwiseAbs().maxCoeff(), 1e-13) << structured;
+  }
 }
 
 }  // namespace

@@ -26,8 +26,22 @@ Eigen::Index pivotRow(const Eigen::Ref<Eigen::MatrixXd>& a, Eigen::Index k) {
 
 }  // namespace
 
+namespace {
+
+// y_i -= alpha x_i, i < m: the element update of DGEFA/DGESL (one multiply, one subtract). A plain
+// loop over raw columns: the columns are short (n <= 100), where a generic expression's set-up
+// costs as much as the arithmetic.
+inline void subtractScaled(double alpha, const double* __restrict x, double* __restrict y,
+                           Eigen::Index m) {
+  for (Eigen::Index i = 0; i < m; ++i) y[i] -= alpha * x[i];
+}
+
+}  // namespace
+
 long DenseLu::factor(Eigen::Ref<Eigen::MatrixXd> a) {
   const Eigen::Index n = a.cols();
+  const Eigen::Index ld = a.outerStride();
+  double* base = a.data();
   for (Eigen::Index k = 0; k < n; ++k) {
     const Eigen::Index l = pivotRow(a, k);
     pivots_[static_cast<std::size_t>(k)] = static_cast<long>(l);
@@ -35,12 +49,14 @@ long DenseLu::factor(Eigen::Ref<Eigen::MatrixXd> a) {
     if (l != k) a.row(k).swap(a.row(l));  // whole rows, so the multipliers of L follow
     const Eigen::Index m = n - k - 1;     // rows (and columns) below (right of) the pivot
     // Multipliers l_ik = a_ik / a_kk, formed as a_ik * (1 / a_kk) like DGEFA.
+    double* lk = base + k * ld + k + 1;
     const double mult = 1.0 / a(k, k);
-    a.col(k).tail(m) *= mult;
+    for (Eigen::Index i = 0; i < m; ++i) lk[i] *= mult;
     // Rank-1 update of the trailing block, one column at a time: a_ij -= a_kj l_ik.
     for (Eigen::Index j = k + 1; j < n; ++j) {
-      const double a_kj = a(k, j);
-      if (a_kj != 0.0) a.col(j).tail(m) -= a_kj * a.col(k).tail(m);
+      double* aj = base + j * ld;
+      const double a_kj = aj[k];
+      if (a_kj != 0.0) subtractScaled(a_kj, lk, aj + k + 1, m);
     }
   }
   return 0;
@@ -49,29 +65,134 @@ long DenseLu::factor(Eigen::Ref<Eigen::MatrixXd> a) {
 void DenseLu::solve(const Eigen::Ref<const Eigen::MatrixXd>& lu,
                     Eigen::Ref<Eigen::VectorXd> b) const {
   const Eigen::Index n = lu.cols();
+  const Eigen::Index ld = lu.outerStride();
+  const double* base = lu.data();
+  double* x = b.data();
   // b := P b, the interchanges in the order of the factorisation.
   for (Eigen::Index k = 0; k < n; ++k) {
     const auto pk = static_cast<Eigen::Index>(pivots_[static_cast<std::size_t>(k)]);
-    if (pk != k) std::swap(b(k), b(pk));
+    if (pk != k) std::swap(x[k], x[pk]);
   }
   // L y = b (unit diagonal), column-oriented forward substitution.
-  for (Eigen::Index k = 0; k + 1 < n; ++k) {
-    const Eigen::Index m = n - k - 1;
-    b.tail(m) -= b(k) * lu.col(k).tail(m);
-  }
+  for (Eigen::Index k = 0; k + 1 < n; ++k)
+    subtractScaled(x[k], base + k * ld + k + 1, x + k + 1, n - k - 1);
   // U x = y, column-oriented back substitution.
   for (Eigen::Index k = n - 1; k > 0; --k) {
-    b(k) /= lu(k, k);
-    b.head(k) -= b(k) * lu.col(k).head(k);
+    x[k] /= base[k * ld + k];
+    subtractScaled(x[k], base + k * ld, x, k);
   }
-  if (n > 0) b(0) /= lu(0, 0);
+  if (n > 0) x[0] /= base[0];
+}
+
+CopyRowElimination::CopyRowElimination(long n, const std::vector<int>& copy_of) : lu_(0) {
+  const auto size = static_cast<std::size_t>(n);
+  std::vector<bool> is_copy(size, false);
+  if (copy_of.size() == size) {
+    for (std::size_t p = 0; p < size; ++p) {
+      const int k = copy_of[p];
+      if (k >= 0 && k < n && copy_of[static_cast<std::size_t>(k)] < 0 &&
+          static_cast<std::size_t>(k) != p)
+        is_copy[p] = true;
+    }
+  }
+  kept_slot_.assign(size, -1);
+  for (std::size_t i = 0; i < size; ++i) {
+    const auto row = static_cast<Eigen::Index>(i);
+    if (is_copy[i]) {
+      copy_rows_.push_back(row);
+      targets_.push_back(copy_of[i]);
+    } else {
+      kept_slot_[i] = static_cast<Eigen::Index>(kept_.size());
+      kept_.push_back(row);
+    }
+  }
+  const auto m = static_cast<Eigen::Index>(kept_.size());
+  const auto np = static_cast<Eigen::Index>(copy_rows_.size());
+  leading_ = np > 0 && copy_rows_.back() == np - 1;  // copy rows 0 .. np-1, kept rows after
+  reduced_.resize(m, m);
+  coupling_.resize(m, np);
+  diagonal_.resize(np);
+  target_entry_.resize(np);
+  rhs_.resize(m);
+  copy_rhs_.resize(np);
+  lu_ = DenseLu(m);
+}
+
+bool CopyRowElimination::structured(const Eigen::Ref<const Eigen::MatrixXd>& a) const {
+  // Column by column (contiguous): the copy rows hold no entry but M_pp and M_pk.
+  for (Eigen::Index j = 0; j < a.cols(); ++j) {
+    const double* col = a.data() + j * a.outerStride();
+    for (std::size_t c = 0; c < copy_rows_.size(); ++c) {
+      const Eigen::Index p = copy_rows_[c];
+      const bool allowed = j == p || j == targets_[c];
+      if (col[p] == 0.0 ? (j == p) : !allowed) return false;
+    }
+  }
+  return true;
+}
+
+long CopyRowElimination::factor(const Eigen::Ref<const Eigen::MatrixXd>& a) {
+  const auto m = static_cast<Eigen::Index>(kept_.size());
+  if (leading_) {
+    reduced_ = a.bottomRightCorner(m, m);
+  } else {
+    for (Eigen::Index jj = 0; jj < m; ++jj) {
+      const auto col = a.col(kept_[static_cast<std::size_t>(jj)]);
+      for (Eigen::Index ii = 0; ii < m; ++ii)
+        reduced_(ii, jj) = col(kept_[static_cast<std::size_t>(ii)]);
+    }
+  }
+  // C_ip = M_ip / M_pp, then M'_ik -= C_ip M_pk over the kept rows i.
+  for (std::size_t c = 0; c < copy_rows_.size(); ++c) {
+    const Eigen::Index p = copy_rows_[c], k = targets_[c];
+    const auto cc = static_cast<Eigen::Index>(c);
+    const auto col = a.col(p);
+    const double inv = 1.0 / a(p, p);
+    if (leading_) {
+      coupling_.col(cc) = col.tail(m) * inv;
+    } else {
+      for (Eigen::Index ii = 0; ii < m; ++ii)
+        coupling_(ii, cc) = col(kept_[static_cast<std::size_t>(ii)]) * inv;
+    }
+    diagonal_(cc) = a(p, p);
+    target_entry_(cc) = a(p, k);
+    reduced_.col(kept_slot_[static_cast<std::size_t>(k)]) -= a(p, k) * coupling_.col(cc);
+  }
+  return lu_.factor(reduced_);
+}
+
+void CopyRowElimination::solve(Eigen::Ref<Eigen::VectorXd> b) {
+  const auto m = static_cast<Eigen::Index>(kept_.size());
+  const auto np = static_cast<Eigen::Index>(copy_rows_.size());
+  if (leading_) {
+    copy_rhs_ = b.head(np);
+    rhs_ = b.tail(m);
+  } else {
+    for (Eigen::Index ii = 0; ii < m; ++ii) rhs_(ii) = b(kept_[static_cast<std::size_t>(ii)]);
+    for (Eigen::Index c = 0; c < np; ++c) copy_rhs_(c) = b(copy_rows_[static_cast<std::size_t>(c)]);
+  }
+  // b'_i = b_i - sum_p C_ip b_p
+  rhs_.noalias() -= coupling_ * copy_rhs_;
+  lu_.solve(reduced_, rhs_);
+  if (leading_) {
+    b.tail(m) = rhs_;
+  } else {
+    for (Eigen::Index ii = 0; ii < m; ++ii) b(kept_[static_cast<std::size_t>(ii)]) = rhs_(ii);
+  }
+  // x_p = (b_p - M_pk x_k) / M_pp
+  for (Eigen::Index c = 0; c < np; ++c) {
+    const auto cs = static_cast<std::size_t>(c);
+    b(copy_rows_[cs]) = (copy_rhs_(c) - target_entry_(c) * b(targets_[cs])) / diagonal_(c);
+  }
 }
 
 namespace {
 
 struct DenseLuContent {
-  explicit DenseLuContent(long n) : lu(n) {}
+  DenseLuContent(long n, const std::vector<int>& copy_of) : lu(n), elimination(n, copy_of) {}
   DenseLu lu;
+  CopyRowElimination elimination;
+  bool reduced = false;  // the last setup factored the reduced matrix
   long last_flag = 0;
 };
 
@@ -108,7 +229,9 @@ int setup(SUNLinearSolver s, SUNMatrix a) {
     c->last_flag = SUNLS_ILL_INPUT;
     return SUNLS_ILL_INPUT;
   }
-  const long zero_pivot = c->lu.factor(denseMap(a));
+  const auto m = denseMap(a);
+  c->reduced = c->elimination.active() && c->elimination.structured(m);
+  const long zero_pivot = c->reduced ? c->elimination.factor(m) : c->lu.factor(m);
   c->last_flag = zero_pivot;  // like SUNLinSol_Dense: the 1-based step of the zero pivot
   return zero_pivot > 0 ? SUNLS_LUFACT_FAIL : SUNLS_SUCCESS;
 }
@@ -124,7 +247,10 @@ int solve(SUNLinearSolver s, SUNMatrix a, N_Vector x, N_Vector b, double /*tol*/
   }
   Eigen::Map<Eigen::VectorXd> xv(xd, n);
   if (xd != bd) xv = Eigen::Map<const Eigen::VectorXd>(bd, n);
-  c->lu.solve(denseMap(a), xv);
+  if (c->reduced)
+    c->elimination.solve(xv);
+  else
+    c->lu.solve(denseMap(a), xv);
   c->last_flag = SUNLS_SUCCESS;
   return SUNLS_SUCCESS;
 }
@@ -194,8 +320,8 @@ SUNMatrix newDenseMatrix(long n, SUNContext ctx) {
   return withOurOps(SUNDenseMatrix(n, n, ctx));
 }
 
-SUNLinearSolver newDenseLuSolver(long n, SUNContext ctx) {
-  auto c = std::make_unique<DenseLuContent>(n);
+SUNLinearSolver newDenseLuSolver(long n, SUNContext ctx, const std::vector<int>& copy_of) {
+  auto c = std::make_unique<DenseLuContent>(n, copy_of);
   SUNLinearSolver s = SUNLinSolNewEmpty(ctx);
   if (s == nullptr) return nullptr;
   s->content = c.release();

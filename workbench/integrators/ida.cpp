@@ -1,7 +1,14 @@
 #include <ida/ida.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <optional>
+#include <utility>
+
 #include "workbench/integrators/dense_lu.hpp"
+#include "workbench/integrators/fd_jacobian.hpp"
 #include "workbench/integrators/serial_vector_ops.hpp"
 #include "workbench/integrators/sundials_common.hpp"
 #include "workbench/integrators/sundials_integrators.hpp"
@@ -25,6 +32,12 @@ class ResidualModel {
                        Eigen::Ref<Eigen::MatrixXd>) {
     return -1;
   }
+  // JacobianPattern::copy_of of the system (empty: none).
+  virtual std::vector<int> copyRows() const { return {}; }
+  // The solver memory and error-weight vector a difference Jacobian of ours reads, and the
+  // evaluations it spent.
+  virtual void attach(void* /*ida_mem*/, N_Vector /*ewt*/) {}
+  virtual long jacobianEvaluations() const { return 0; }
 };
 
 class DaeModel final : public ResidualModel {
@@ -45,7 +58,12 @@ class DaeModel final : public ResidualModel {
 
 class OdeModel final : public ResidualModel {
  public:
-  OdeModel(OdeSystem& s, bool use_jacobian) : s_(s), use_jac_(use_jacobian), f_(s.size()) {}
+  OdeModel(OdeSystem& s, bool use_jacobian)
+      : s_(s), use_jac_(use_jacobian), f_(s.size()), y_(s.size()), ft_(s.size()), inc_(s.size()) {
+    JacobianPattern p = s.jacobianPattern();
+    copy_of_ = p.copy_of;
+    if (!use_jac_ && !p.empty()) grouped_.emplace(s.size(), std::move(p));
+  }
   int residual(double t, const double* y, const double* yp, double* r) override {
     const int rc = s_.rhs(t, y, r);
     if (rc != 0) return rc;
@@ -57,21 +75,54 @@ class OdeModel final : public ResidualModel {
   std::string lastError() const override { return s_.lastError(); }
   const char* callName() const override { return "right-hand side"; }
   const char* residualName() const override { return "derivative"; }
-  bool hasJacobian() const override { return use_jac_; }
+  bool hasJacobian() const override { return use_jac_ || grouped_.has_value(); }
   int jacobian(double t, double cj, const double* y, const double* yp, const double* r,
                Eigen::Ref<Eigen::MatrixXd> J) override {
     for (long i = 0; i < f_.size(); ++i) f_[i] = yp[i] - r[i];  // f = y' - F
-    const int rc = s_.jacobian(t, y, f_.data(), J);
+    const int rc = use_jac_ ? s_.jacobian(t, y, f_.data(), J) : differences(t, y, yp, J);
     if (rc != 0) return rc;
     J *= -1.0;
     J.diagonal().array() += cj;
     return 0;
   }
+  std::vector<int> copyRows() const override { return copy_of_; }
+  void attach(void* ida_mem, N_Vector ewt) override {
+    mem_ = ida_mem;
+    ewt_ = ewt;
+  }
+  long jacobianEvaluations() const override { return evaluations_; }
 
  private:
+  // df/dy by grouped forward differences with the increments of IDA's own dense difference
+  // quotient (idaLsDenseDQJac: inc_j = max(sqrt(u) max(|y_j|, |h y'_j|), 1 / w_j), signed like
+  // h y'_j), at f_ = f(t, y).
+  int differences(double t, const double* y, const double* yp, Eigen::Ref<Eigen::MatrixXd> J) {
+    double hh = 0.0;
+    if (IDAGetCurrentStep(mem_, &hh) != IDA_SUCCESS || IDAGetErrWeights(mem_, ewt_) != IDA_SUCCESS)
+      return -1;
+    const double srur = std::sqrt(DBL_EPSILON);
+    const double* w = detail::data(ewt_);
+    for (long j = 0; j < y_.size(); ++j) {
+      y_[j] = y[j];
+      double inc = std::max(srur * std::max(std::abs(y[j]), std::abs(hh * yp[j])), 1.0 / w[j]);
+      if (hh * yp[j] < 0.0) inc = -inc;
+      inc_[j] = (y[j] + inc) - y[j];
+    }
+    const auto rhs = [&](double* yv, double* f) {
+      ++evaluations_;
+      return s_.rhs(t, yv, f);
+    };
+    return grouped_->forward(rhs, y_.data(), f_.data(), inc_.data(), ft_.data(), J);
+  }
+
   OdeSystem& s_;
   bool use_jac_;
-  Eigen::VectorXd f_;
+  Eigen::VectorXd f_, y_, ft_, inc_;
+  std::vector<int> copy_of_;
+  std::optional<GroupedDifferences> grouped_;
+  void* mem_ = nullptr;
+  N_Vector ewt_ = nullptr;
+  long evaluations_ = 0;
 };
 
 struct DaeCallbackData {
@@ -207,13 +258,15 @@ RunResult runIda(std::string_view method, const SolverSpec& sp, ResidualModel& m
     detail::data(id.get())[i] = model.isDifferential(static_cast<int>(i)) ? 1.0 : 0.0;
   Eigen::VectorXd yout(n);
   detail::SunMatrix A(detail::newDenseMatrix(n, ctx));
-  detail::SunLinSol LS(detail::newDenseLuSolver(n, ctx));
+  detail::SunLinSol LS(detail::newDenseLuSolver(n, ctx, model.copyRows()));
   if (!A || !LS) throw std::bad_alloc();
 
   RunResult res;
   res.t_reached = t0;
   detail::SolverMem mem(IDACreate(ctx), IDAFree);
   if (!mem) throw std::bad_alloc();
+  detail::NVector jac_ewt = detail::makeVector(n, ctx);
+  model.attach(mem, jac_ewt.get());
   const auto setup = [&](int flag, const char* call) {
     return flag == IDA_SUCCESS || detail::setupFailed(res, method, t0, call, flagName(flag), msgs);
   };
@@ -237,6 +290,7 @@ RunResult runIda(std::string_view method, const SolverSpec& sp, ResidualModel& m
     IDAGetNumResEvals(mem, &s.rhs_evals);
     s.rhs_evals += extra_rhs_evals;
     IDAGetNumLinResEvals(mem, &s.rhs_evals_jac);
+    s.rhs_evals_jac += model.jacobianEvaluations();
     IDAGetNumJacEvals(mem, &s.jacobian_evals);
     IDAGetNumNonlinSolvIters(mem, &s.nonlinear_iters);
     IDAGetNumNonlinSolvConvFails(mem, &s.nonlinear_conv_fails);

@@ -9,6 +9,21 @@
 
 namespace rb::integ {
 
+// Structure of the Jacobian df/dy known from the model, not from numerical values.
+//   rows[j]: the rows i whose f_i may depend on y_j, sorted; conservative: a row that might
+//     depend on y_j is listed. Empty (no columns) when the model gives no structure (dense).
+//   copy_of[i] = k when f_i(t, y) = y_k identically (a position whose derivative is its rate
+//     state), -1 otherwise; row i of df/dy is then exactly e_k^T. Empty when unknown.
+// Difference-quotient Jacobians perturb columns that share no row in one evaluation (Curtis,
+// Powell and Reid, "On the estimation of sparse Jacobian matrices", J. Inst. Maths Applics 13,
+// 1974), and the Newton solvers eliminate the copy rows before factoring (dense_lu.hpp).
+struct JacobianPattern {
+  std::vector<std::vector<int>> rows;
+  std::vector<int> copy_of;
+
+  bool empty() const { return rows.empty(); }
+};
+
 class OdeSystem {
  public:
   virtual ~OdeSystem() = default;
@@ -21,6 +36,8 @@ class OdeSystem {
                        Eigen::Ref<Eigen::MatrixXd> /*J*/) {
     return -1;
   }
+  // Structural sparsity of df/dy (see JacobianPattern); default: none known (dense).
+  virtual JacobianPattern jacobianPattern() const { return {}; }
   // Components whose derivative depends stiffly on the component itself (a large negative
   // diagonal Jacobian entry, e.g. a free wheelset spin rate under its creep forces): the
   // fixed-step methods can integrate them exponentially (exponential.hpp). Default: none.

@@ -83,6 +83,8 @@ struct OdeCallbackData {
   OdeSystem* sys = nullptr;
   long n = 0;
   RhsRecord rec;
+  long jacobian_rhs_evals = 0;    // evaluations of a difference Jacobian of ours
+  void* jacobian_data = nullptr;  // what that Jacobian callback needs (bdf.cpp)
 };
 // CVRhsFn / ARKRhsFn: calls sys->rhs; NaN/Inf in y or ydot is returned as recoverable (1) so the
 // solver shrinks the step; exceptions are stored in rec.exception and returned as fatal (-1).

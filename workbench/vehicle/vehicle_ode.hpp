@@ -12,6 +12,7 @@
 #include "workbench/vehicle/dynamics.hpp"
 #include "workbench/vehicle/layout.hpp"
 #include "workbench/vehicle/model.hpp"
+#include "workbench/vehicle/sparsity.hpp"
 
 namespace rb::vehicle {
 
@@ -26,6 +27,10 @@ class VehicleOde : public integ::OdeSystem {
   int index(int body, Coord c, bool rate = false) const { return layout_.index(body, c, rate); }
   int indexOf(const std::string& component) const {  // by componentName(); -1 if none
     return layout_.indexOf(component, *model_);
+  }
+  // Structural sparsity of df/dy from the bodies, elements and layout (sparsity.hpp).
+  integ::JacobianPattern jacobianPattern() const final {
+    return vehicle::jacobianPattern(*model_, layout_);
   }
   // The stiff components the fixed-step methods may integrate exponentially: the free wheelset
   // spin rates (creep damping, about -2 f11 r0^2 / (V I_yy), the stiffest mode of the contact
