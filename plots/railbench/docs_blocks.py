@@ -379,10 +379,20 @@ def paper_settings_block(outdir: str, study: str) -> str:
 
 # ---- speed targets -----------------------------------------------------------------------------
 
+def _instructions_by_label(path: str) -> Dict[str, dict]:
+    return {r["label"]: r for r in read_csv(path) if r.get("instructions_per_eval")}
+
+
 def speed_block(outdir: str) -> str:
     rows = read_csv(os.path.join(outdir, "speed", "study_cost.csv"))
     if not rows:
         return missing("out/studies/speed/study_cost.csv")
+    # Callgrind instructions per evaluation (`plots/rbplot effects-instructions`), of this build
+    # and, when measured, of an earlier one (its --tag names it).
+    now = _instructions_by_label(os.path.join(outdir, "speed", "study_speed_instructions.csv"))
+    before = _instructions_by_label(os.path.join(outdir, "speed",
+                                                 "study_speed_instructions_before.csv"))
+    tag = next((r.get("build") for r in before.values() if r.get("build")), "earlier build")
     body = []
     for r in rows:
         sim = num(r["t_reached_s"], 0)
@@ -395,11 +405,20 @@ def speed_block(outdir: str) -> str:
         met = ""
         if target and factor is not None:
             met = "met" if factor >= float(target[:-1]) else "NOT met"
+        instr = [fmt(num((d.get(r["label"]) or {}).get("instructions_per_eval")),
+                     "{:,.0f}") for d in (now, before)]
         body.append([r["label"], r["status"], f"{cpu:.3f} s ({r['cpu_min_s']}-{r['cpu_max_s']})",
                      fmt(factor, "{:.1f}x"), r["rhs_evals"], r["rhs_evals_jac"] or "0",
-                     r["steps"], fmt(num(r["us_per_eval"]), "{:.2f}"), target, met])
-    return table(["case", "status", "CPU median (min-max)", "x real time", "rhs evals",
-                  "Jacobian evals", "steps", "µs / eval", "target", ""], body)
+                     r["steps"], fmt(num(r["us_per_eval"]), "{:.2f}"), instr[0], instr[1],
+                     target, met])
+    head = ["case", "status", "CPU median (min-max)", "x real time", "rhs evals",
+            "Jacobian evals", "steps", "µs / eval", "instructions / eval",
+            f"instructions / eval ({tag})", "target", ""]
+    note = ("Instructions per rhs evaluation: callgrind over the first 3 s of each case, "
+            "integration only (integrator and output callbacks included; "
+            "`plots/rbplot effects-instructions`)" +
+            (f", also of the build `{tag}`." if before else ".") + "\n\n")
+    return note + table(head, body)
 
 
 def _bench_json(outdir: str, name: str) -> Optional[dict]:

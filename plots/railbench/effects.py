@@ -10,7 +10,10 @@ inside the integration (rb::integ::integrate: right-hand sides, integrator, outp
 not the set-up), and the instructions are divided by the rhs evaluations of that run.
 
     plots/rbplot effects-instructions OUT/effects [--workbench BIN] [--root ROOT]
-                                        [--duration 8] [--match REGEX] [--csv NAME]
+                                        [--duration 8] [--match REGEX] [--csv NAME] [--tag TAG]
+
+Also used on the speed study (`./wb studies --only speed`: OUT/speed, --duration 3), and with
+--workbench/--root of an earlier build and --tag naming it, for a before/after comparison.
 
 Writes OUT/effects/study_effects_instructions.csv: case, label, method, instructions, rhs_evals,
 instructions_per_eval, relative_to_baseline (the case of role "baseline" with the same method).
@@ -56,6 +59,9 @@ def main(argv=None) -> int:
                     help="only the cases whose label matches this regular expression")
     ap.add_argument("--csv", default="study_effects_instructions.csv",
                     help="output file name in the study folder")
+    ap.add_argument("--tag", default="",
+                    help="name of the build measured (e.g. the commit of an earlier build given "
+                         "by --workbench), written in the 'build' column")
     a = ap.parse_args(argv)
     cases_csv = os.path.join(a.study_dir, "summary_cases.csv")
     if not os.path.exists(cases_csv):
@@ -82,7 +88,7 @@ def main(argv=None) -> int:
                 rows.append(dict(case=c["case"], label=c["label"], role=c["role"],
                                  method=method_of(c), instructions="", rhs_evals="",
                                  instructions_per_eval="", relative_to_baseline="",
-                                 note="failed"))
+                                 note="failed", build=a.tag))
                 continue
             with h5py.File(out, "r") as h:
                 evals = int(h["stats"].attrs["rhs_evals"])
@@ -90,7 +96,7 @@ def main(argv=None) -> int:
             rows.append(dict(case=c["case"], label=c["label"], role=c["role"],
                              method=method_of(c), instructions=total, rhs_evals=evals,
                              instructions_per_eval=f"{total / evals:.1f}",
-                             relative_to_baseline="", note=""))
+                             relative_to_baseline="", note="", build=a.tag))
             print(f"{c['label']:40s} {total / evals:10.1f} instructions / evaluation", flush=True)
     base = {r["method"]: float(r["instructions_per_eval"]) for r in rows
             if r["role"] == "baseline" and r["instructions_per_eval"]}

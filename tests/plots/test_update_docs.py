@@ -75,6 +75,12 @@ def test_blocks_replaced_between_markers():
     write_csv(os.path.join(out, "speed", "study_cost.csv"), [
         cost("KEC ABM 1 ms (target 100x)", "kec", "abm", "0.2", 50006, step="0.001"),
         cost("LUT BDF (target 1x)", "lut", "bdf", "30.0", 150000, K="7.075e13", tol="1e-06")])
+    write_csv(os.path.join(out, "speed", "study_speed_instructions.csv"), [
+        dict(case="x", label="KEC ABM 1 ms (target 100x)", instructions_per_eval="41234.5",
+             build="")])
+    write_csv(os.path.join(out, "speed", "study_speed_instructions_before.csv"), [
+        dict(case="x", label="KEC ABM 1 ms (target 100x)", instructions_per_eval="80900.0",
+             build="abc1234")])
     write_csv(os.path.join(out, "efficiency_case3", "study_cost.csv"), [
         cost("a", "kec", "abm", "0.5", 50006, step="0.001"),
         cost("b", "lut", "abm", "0.4", 50006, K="1e10", step="0.001"),
@@ -98,6 +104,8 @@ def test_blocks_replaced_between_markers():
     speed = p.split("generated: speed")[1].split("end: speed")[0]
     check("122.3x" in speed and "| met" in speed, "target 1 at 122x real time is met")
     check("0.8x" in speed and "NOT met" in speed, "target 2 at 0.8x real time is not met")
+    check("| 41,234 | 80,900 |" in speed and "instructions / eval (abc1234)" in speed,
+          "instructions per evaluation of this build and of the earlier one, named by its tag")
     ps = p.split("generated: paper_settings ")[1].split("end: paper_settings ")[0]
     check("| bdf 1e-06, no cap | 2.00 s / 40000 (12x) | 3.00 s / 50000 (8x) | 1.50 | 1.25 |" in ps,
           "paper settings: KEC and LUT of one setting paired, with the LUT/KEC ratios")
