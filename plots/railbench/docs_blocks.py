@@ -357,7 +357,9 @@ def paper_settings_block(outdir: str, study: str) -> str:
         # hard flange impact (docs/hard_cases.md).
         if r["status"] == "ok":
             return cost
-        return f"failed at {sim:.2f} s" + ("" if cost == "–" else ": " + cost)
+        evals = total_evals(r)
+        return (f"failed at {sim:.2f} s" + (f": {cost}" if cost != "–" else
+                                             f" after {evals} evaluations" if evals else ""))
 
     def ratio(k: Optional[dict], l: Optional[dict], what) -> str:
         if not k or not l or k["status"] != "ok" or l["status"] != "ok":

@@ -109,7 +109,8 @@ def test_blocks_replaced_between_markers():
     ps = p.split("generated: paper_settings ")[1].split("end: paper_settings ")[0]
     check("| bdf 1e-06, no cap | 2.00 s / 40000 (12x) | 3.00 s / 50000 (8x) | 1.50 | 1.25 |" in ps,
           "paper settings: KEC and LUT of one setting paired, with the LUT/KEC ratios")
-    check("| ABM 1 ms | 0.40 s / 48928 (61x) | failed at 24.46 s | – | – |" in ps,
+    check("| ABM 1 ms | 0.40 s / 48928 (61x) | failed at 24.46 s after 2000 evaluations | – | – |"
+          in ps,
           "paper settings: a failed case is named, without a ratio")
     check("Not generated" in p.split("generated: paper_settings_flange")[1],
           "paper settings: the flange study's missing input gives a 'Not generated' line")
