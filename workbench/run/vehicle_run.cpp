@@ -519,7 +519,7 @@ void finishAssessment(const Model& m, AssessmentSetup& as, std::size_t samples, 
                       VehicleRunResult& out) {
   f.attr("/stats", "assessment_samples", static_cast<std::int64_t>(samples));
   if (!out.result.ok) {
-    out.warnings.push_back("assessment skipped: the run failed");
+    out.assessment_notes.emplace_back("assessment skipped: the run failed");
     return;
   }
   if (!allFinite(as.signals)) {
