@@ -1,5 +1,6 @@
 #include <cmath>
 
+#include "workbench/core/strings.hpp"
 #include "workbench/scenario/build.hpp"
 #include "workbench/scenario/reader.hpp"
 
@@ -40,12 +41,12 @@ void buildAssessment(const Node& n, assessment::AssessmentSpec& a, Diagnostics& 
   a.alpha = r.number("alpha");
   a.flange_angle = r.number("flange_angle");
   a.mu = r.number("mu");
-  if (r.has("mu") && a.mu < 0) r.error(n, "mu must be > 0 (omit it to use contact.mu)");
+  if (r.has("mu") && a.mu <= 0) r.error(n, "mu must be > 0 (omit it to use contact.mu)");
   a.yq_limit = r.number("yq_limit");
   a.instability_frequency = r.number("instability_frequency");
   if (r.has("instability_frequency") && a.instability_frequency <= 2.0)
     r.error(n, "instability_frequency must be > 2 Hz (the band-pass is f0 +- 2 Hz), got " +
-                   std::to_string(a.instability_frequency));
+                   formatNumber(a.instability_frequency));
   a.comfort_limit = r.number("comfort_limit");
 }
 
