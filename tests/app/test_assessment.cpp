@@ -4,16 +4,20 @@
 // the larger of |F1|, |F2|; dQ/Q, stability, T gamma: the maximum) and its summary is the largest
 // over wheels, bogies and floor points; the
 // static tangent gives no wheel unloading and no track shift force; a guided vehicle refuses
-// safety at check.
+// safety at check; `workbench assess` reproduces a run's /assessment, applies new parameters and
+// leaves a file it cannot assess untouched.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
 #include "h5read.hpp"
+#include "workbench/app/assess.hpp"
 #include "workbench/app/run.hpp"
 #include "workbench/core/error.hpp"
 
@@ -248,4 +252,89 @@ TEST(Assessment, GuidedVehicleRefusesSafetyAtCheck) {
               std::string::npos)
         << e.what();
   }
+}
+
+namespace {
+
+std::vector<char> bytesOf(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+TEST(AssessCommand, ReproducesTheRunsAssessmentAndAppliesNewParameters) {
+  std::vector<std::string> sets = {"run.distance=120"};
+  sets.insert(sets.end(), std::begin(kAllOn), std::end(kAllOn));
+  const auto o = options("scenarios/validation/case2_kec.lua", "assess.h5", sets);
+  ASSERT_EQ(rb::app::runScenario(o), 0);
+  const char* keys[] = {"y_over_q", "sum_y",         "dq_over_q", "y_qst",      "q_qst",
+                        "q_max",    "stability_rms", "n_mv",      "wz_lateral", "t_gamma_max"};
+  std::vector<double> before;
+  std::vector<double> sum_y_before;
+  {
+    hid_t f = H5Fopen(o.out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    for (const char* k : keys) before.push_back(attr(f, "/assessment/summary", k));
+    sum_y_before = h5test::dataset(f, "/assessment/safety/ws1/sum_y/value");
+    H5Fclose(f);
+  }
+  rb::app::AssessOptions a;
+  a.file = o.out;
+  a.quiet = true;
+  ASSERT_EQ(rb::app::assessFile(a), 0);
+  {
+    hid_t f = H5Fopen(o.out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    for (std::size_t k = 0; k < std::size(keys); ++k)
+      EXPECT_EQ(attr(f, "/assessment/summary", keys[k]), before[k]) << keys[k];
+    EXPECT_EQ(h5test::dataset(f, "/assessment/safety/ws1/sum_y/value"), sum_y_before);
+    EXPECT_TRUE(h5test::exists(f, "/contact/ws1/left/Q"));  // the rest of the file is kept
+    H5Fclose(f);
+  }
+  a.overrides = {"run.assessment.alpha=0.85", "run.assessment.comfort=false"};
+  ASSERT_EQ(rb::app::assessFile(a), 0);
+  hid_t f = H5Fopen(o.out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  EXPECT_NEAR(attr(f, "/assessment/safety/ws1/sum_y", "limit"),
+              0.85 * (10e3 + 2.0 * attr(f, "/assessment/safety/ws1/sum_y", "q0") / 3.0), 1e-6);
+  EXPECT_FALSE(h5test::exists(f, "/assessment/comfort"));
+  EXPECT_TRUE(h5test::exists(f, "/assessment/stability"));
+  H5Fclose(f);
+}
+
+TEST(AssessCommand, SaysWhatIsMissingAndLeavesTheFileAlone) {
+  const auto o = options("tests/app/data/wheel_forces/tangent.lua", "coarse.h5", {});
+  ASSERT_EQ(rb::app::runScenario(o), 0);  // outputs every 10 ms, no assessment
+  const auto bytes = bytesOf(o.out);
+  rb::app::AssessOptions a;
+  a.file = o.out;
+  a.quiet = true;
+  try {
+    rb::app::assessFile(a);
+    FAIL() << "no error";
+  } catch (const rb::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("too coarse"), std::string::npos) << e.what();
+  }
+  a.overrides = {"run.assessment.comfort=true"};
+  try {
+    rb::app::assessFile(a);
+    FAIL() << "no error";
+  } catch (const rb::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("comfort: the floor accelerations are sampled only by "
+                                         "run.assessment"),
+              std::string::npos)
+        << e.what();
+  }
+  a.overrides = {"run.assessment.alpha=3"};
+  EXPECT_THROW(rb::app::assessFile(a), rb::InputError);
+  EXPECT_EQ(bytesOf(o.out), bytes);
+  // With a fine output interval the outputs suffice for safety and wear.
+  const auto fine =
+      options("tests/app/data/wheel_forces/tangent.lua", "fine.h5", {"run.output.every=2.5e-3"});
+  ASSERT_EQ(rb::app::runScenario(fine), 0);
+  a.file = fine.out;
+  a.overrides.clear();
+  ASSERT_EQ(rb::app::assessFile(a), 0);
+  hid_t f = H5Fopen(fine.out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  EXPECT_LT(attr(f, "/assessment/summary", "dq_over_q"), 1e-9);
+  EXPECT_TRUE(h5test::exists(f, "/assessment/wear/ws1/left/t_gamma"));
+  H5Fclose(f);
 }

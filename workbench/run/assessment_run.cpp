@@ -238,7 +238,7 @@ void writeSafety(io::ResultFile& f, const AssessmentSignals& sig, const Assessme
     writeSliding(f, base + "y_over_q", s.yq, s.y_over_q, "-");
     f.attr(base + "y_over_q", "nadal_limit", s.nadal_limit);
     f.attr(base + "y_over_q", "flange_angle", r.spec.flange_angle);
-    f.attr(base + "y_over_q", "mu", r.spec.mu > 0.0 ? r.spec.mu : s.nadal_mu);
+    f.attr(base + "y_over_q", "mu", s.nadal_mu);
     writeAssessed(f, base + "dq_over_q", s.dq);
     f.dataset(base + "dq_over_q/value", s.dq_series, "-");
     f.attr(base + "dq_over_q", "q0", w.q0);
@@ -246,6 +246,11 @@ void writeSafety(io::ResultFile& f, const AssessmentSignals& sig, const Assessme
     writeAssessed(f, base + "q_qst", s.q_qst);
     writeAssessed(f, base + "q_max", s.q_max);
     f.attr(base + "q_max", "q0", w.q0);
+    // The sampled wheel forces, so that `workbench assess` can recompute from the file.
+    f.attr("/assessment/safety/" + w.wheelset + "/" + w.side, "q0", w.q0);
+    f.dataset(base + "Y", w.Y, "N");
+    f.dataset(base + "Q", w.Q, "N");
+    f.dataset(base + "y_track", w.y_track, "N");
   }
   for (const auto& ws : r.wheelset_safety) {
     const std::string g = "/assessment/safety/" + ws.wheelset + "/sum_y";
@@ -306,7 +311,12 @@ void writeWear(io::ResultFile& f, const AssessmentSignals& sig, const Assessment
     f.dataset(g + "/power", w.power, "W");
     writeWearSummary(f, g, w.wheel);
     f.attr(g, "unit", std::string("N"));
-    for (int p = 0; p < 2; ++p) writeWearSummary(f, g + "/patch" + std::to_string(p), w.patch[p]);
+    for (int p = 0; p < 2; ++p) {
+      const std::string pg = g + "/patch" + std::to_string(p);
+      writeWearSummary(f, pg, w.patch[p]);
+      f.dataset(pg + "/t_gamma", sig.wheels[k].t_gamma[p], "N");
+      f.dataset(pg + "/power", sig.wheels[k].power[p], "W");
+    }
   }
 }
 
@@ -342,6 +352,13 @@ void writeAssessment(io::ResultFile& f, const AssessmentSignals& sig, const Asse
   f.attr(g, "assumptions", joinLines(r.assumptions));
   f.attr(g, "quantities", joinLines(r.quantities));
   f.attr(g, "notes", joinLines(r.notes));
+  // The parameters as applied (workbench assess starts from them).
+  f.attr(g, "alpha", r.spec.alpha);
+  f.attr(g, "flange_angle", r.spec.flange_angle);
+  f.attr(g, "mu", r.mu);
+  f.attr(g, "yq_limit", r.spec.yq_limit);
+  f.attr(g, "instability_frequency", r.spec.instability_frequency);
+  f.attr(g, "comfort_limit", r.spec.comfort_limit);
   f.dataset(g + "/time", sig.time, "s");
   f.dataset(g + "/distance", sig.distance, "m");
   writeSummary(f, r);
@@ -379,6 +396,7 @@ AssessmentResult assess(const AssessmentSignals& sig, const assessment::Assessme
   r.spec = spec;
   r.sample_every = sig.dt;
   const double mu = spec.mu > 0.0 ? spec.mu : contact_mu;
+  r.mu = mu;
   r.assumptions = {
       "wheel forces low-pass filtered at 20 Hz (4th-order Butterworth) before processing",
       "distance axis: travelled distance of the leading wheelset for every wheel",

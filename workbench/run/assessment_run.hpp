@@ -12,6 +12,7 @@
 #include "workbench/assessment/spec.hpp"
 #include "workbench/assessment/wear.hpp"
 #include "workbench/io/result_file.hpp"
+#include "workbench/io/result_reader.hpp"
 
 namespace rb::run {
 
@@ -98,6 +99,7 @@ struct SummaryItem {
 struct AssessmentResult {
   assessment::AssessmentSpec spec;  // as applied (groups that do not apply dropped)
   double sample_every = 0.0;
+  double mu = 0.0;  // friction coefficient of Nadal's limit as applied [-]
   std::vector<std::string> assumptions, notes;  // notes: why a quantity was left out
   std::vector<WheelSafety> wheel_safety;        // per wheel, order of signals.wheels
   std::vector<WheelsetSafety> wheelset_safety;
@@ -123,6 +125,16 @@ void writeAssessment(io::ResultFile& f, const AssessmentSignals& signals,
 std::vector<std::string> summaryLines(const AssessmentResult& r);
 // The warnings of a result whose quantities exceed their limits (one line each).
 std::vector<std::string> exceededWarnings(const AssessmentResult& r);
+
+// The signals of an assessment read back from a result file (`workbench assess`): from the
+// series a run's assessment wrote under /assessment when it has them, otherwise (safety and wear
+// only) from the run's outputs /time, /bodies/<leading>/s and /contact (whose interval must be
+// at most kMaxFileSampleInterval). The groups of spec whose signals the file lacks are named in
+// `missing` (one sentence each).
+inline constexpr double kMaxFileSampleInterval = 5e-3;  // [s]: 10 x the 20 Hz force low-pass
+AssessmentSignals signalsFromFile(const io::ResultReader& file,
+                                  const assessment::AssessmentSpec& spec,
+                                  std::vector<std::string>& missing);
 
 // Largest of |X(f)|^2 of a series (mean removed) on f in [f_low, f_high] by steps of df [Hz]:
 // the instability frequency f0 of the stability criterion when the scenario gives none.
