@@ -402,10 +402,11 @@ AssessmentResult assess(const AssessmentSignals& sig, const assessment::Assessme
       "distance axis: travelled distance of the leading wheelset for every wheel",
       "Q0 per wheel: the wheel load Q of the initial (static) state",
       "whole run assessed as one section (no split into tangent and curve zones)",
-      "floor points at the car body's centre-of-mass height; absolute accelerations in the "
-      "body's track frame, gravity not included (the comfort weightings remove the static part)",
-      "bogie-frame lateral acceleration at the frame point above each axle, centre-of-mass "
-      "height",
+      std::string("floor points at the car body's centre-of-mass height; absolute "
+                  "accelerations in the body's track frame, gravity not included (the comfort "
+                  "weightings remove the static part)"),
+      std::string("bogie-frame lateral acceleration at the frame point above each axle, "
+                  "centre-of-mass height"),
       "Nadal's limit with flange angle " + fmt(spec.flange_angle) + " rad and mu " + fmt(mu),
       "sum Y limit alpha (10 kN + 2 Q0 / 3) with alpha " + fmt(spec.alpha) +
           " and Q0 the mean static wheel load of the wheelset"};

@@ -442,8 +442,8 @@ void addAssessmentBlock(std::vector<BlockSpec>& s) {
               "default: over the two bogie centres and mid-car (front, centre, rear)"),
         num("alpha", "-", 1.0,
             "track shift factor of Prud'homme's limit alpha (10 kN + 2 Q0 / 3): 1.0 for "
-            "locomotives and passenger vehicles, 0.85 for freight wagons (EN 14363); 1.0 is the "
-            "stricter",
+            "locomotives and passenger vehicles, 0.85 for freight wagons (EN 14363); the default "
+            "1.0 is the standard's base value, set 0.85 for a freight wagon",
             0, 1, true),
         num("flange_angle", "rad", assessment::kS1002FlangeAngle,
             "flange angle of Nadal's flange-climbing limit (default: S1002, about 70 deg)", 0,
