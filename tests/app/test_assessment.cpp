@@ -220,6 +220,20 @@ TEST(Assessment, Case2WritesEveryGroupOfTheLayout) {
   H5Fclose(f);
 }
 
+TEST(Assessment, AnExceededLimitIsAResultWithAWarning) {
+  hid_t f = run("scenarios/validation/case2_kec.lua", "exceeded.h5",
+                {"run.distance=20", "run.assessment.yq_limit=1e-6"});
+  ASSERT_GE(f, 0);  // the run ends ok
+  EXPECT_EQ(h5test::stringAttr(f, "/stats", "status"), "ok");
+  EXPECT_NE(h5test::stringAttr(f, "/stats", "warnings").find("assessment: y_over_q"),
+            std::string::npos);
+  EXPECT_EQ(h5test::numAttr<long long>(f, "/assessment/summary", "y_over_q_ok"), 0);
+  EXPECT_EQ(h5test::numAttr<long long>(f, "/assessment/summary", "all_ok"), 0);
+  // T gamma has no limit: no t_gamma_max_limit (never a non-finite attribute).
+  EXPECT_FALSE(H5Aexists_by_name(f, "/assessment/summary", "t_gamma_max_limit", H5P_DEFAULT) > 0);
+  H5Fclose(f);
+}
+
 TEST(Assessment, StaticTangentHasNoUnloadingAndNoTrackShift) {
   hid_t f = run("tests/app/data/wheel_forces/tangent.lua", "tangent.h5",
                 {"run.assessment.safety=true", "run.assessment.wear=true"});

@@ -324,8 +324,11 @@ void writeSummary(io::ResultFile& f, const AssessmentResult& r) {
   const std::string g = "/assessment/summary";
   for (const auto& it : r.summary) {
     f.attr(g, it.key, it.a.check.value);
-    f.attr(g, it.key + "_limit", it.a.check.limit);
-    f.attr(g, it.key + "_ok", std::int64_t{it.a.check.ok() ? 1 : 0});
+    // A quantity without a limit (T gamma) has no Q_limit and Q_ok: readers show its value alone.
+    if (std::isfinite(it.a.check.limit)) {
+      f.attr(g, it.key + "_limit", it.a.check.limit);
+      f.attr(g, it.key + "_ok", std::int64_t{it.a.check.ok() ? 1 : 0});
+    }
     f.attr(g, it.key + "_where", it.a.where);
     f.attr(g, it.key + "_unit", it.unit);
     if (std::isfinite(it.a.at_s)) f.attr(g, it.key + "_at_s", it.a.at_s);
