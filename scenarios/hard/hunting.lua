@@ -19,4 +19,7 @@ hard.profiles()
 contact { method = "kec", creep = "polach", mu = hard.MU_PAPER }
 vehicle (require "vehicles.manchester_wagon1" { speed = 20 })
 solver { method = "dopri5" }
-run { duration = 3, output = { every = 0.01 } }
+run { duration = 3, output = { every = 0.01 },
+      -- EN 14363 safety and stability, EN 12299 / Sperling comfort, T gamma wear (docs/assessment.md);
+      -- a quantity needing more track (100 m) or time (5 s) than the case runs is left out.
+      assessment = { safety = true, stability = true, comfort = true, wear = true } }

@@ -15,4 +15,7 @@ vehicle (require "vehicles.manchester_wagon1" { speed = 16 })
 solver { method = "dopri5" }
 -- Short: 4 s = 64 m: 10 m tangent, 20 m transition, 34 m of the curve; the leading wheelset is in
 -- two-point (tread + flange) contact from t ~ 0.5 s on, with ~30 kN on the flange.
-run { duration = 4, output = { every = 0.01 } }
+run { duration = 4, output = { every = 0.01 },
+      -- EN 14363 safety and stability, EN 12299 / Sperling comfort, T gamma wear (docs/assessment.md);
+      -- a quantity needing more track (100 m) or time (5 s) than the case runs is left out.
+      assessment = { safety = true, stability = true, comfort = true, wear = true } }

@@ -17,4 +17,7 @@ contact { method = "kec", creep = "polach", mu = 0.5 }
 vehicle (require "vehicles.manchester_wagon1" { speed = 5 })
 solver { method = "dopri5" }
 -- Short: 6 s = 30 m: 5 m tangent, 10 m transition, 15 m of the curve.
-run { duration = 6, output = { every = 0.01 } }
+run { duration = 6, output = { every = 0.01 },
+      -- EN 14363 safety and stability, EN 12299 / Sperling comfort, T gamma wear (docs/assessment.md);
+      -- a quantity needing more track (100 m) or time (5 s) than the case runs is left out.
+      assessment = { safety = true, stability = true, comfort = true, wear = true } }

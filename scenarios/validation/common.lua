@@ -66,7 +66,9 @@ function M.case1(radius, method)
   M.contact(method)
   vehicle (require "vehicles.single_wheelset" { speed = 10 })
   M.abm(10)
-  run { output = { every = 0.01 } }
+  -- The assessment (docs/assessment.md): a single wheelset on a frame gives the running safety
+  -- (Y/Q, sum Y, dQ/Q, wheel forces) and wear (T gamma); stability needs a bogie, comfort a car.
+  run { output = { every = 0.01 }, assessment = { safety = true, wear = true } }
 end
 
 -- Cases 2 and 3: Manchester wagon 1 at V = 20 m/s on a 100 m tangent, 50 m transition and 350 m
@@ -82,7 +84,12 @@ function M.wagon(method, irregular)
   M.contact(method)
   vehicle (require "vehicles.manchester_wagon1" { speed = 20 })
   M.abm(20)
-  run { output = { every = 0.01 } }
+  -- The assessment (docs/assessment.md): EN 14363 running safety and stability, EN 12299 and
+  -- Sperling comfort over the bogie centres and mid-car, T gamma wear.
+  run {
+    output = { every = 0.01 },
+    assessment = { safety = true, stability = true, comfort = true, wear = true },
+  }
 end
 
 return M

@@ -1,5 +1,5 @@
-// The `workbench` command line: run, check, help scenario, --version. Never prompts; every problem
-// is reported as file:line: message with a non-zero exit code.
+// The `workbench` command line: run, check, assess, tables, study, help scenario, --version. Never
+// prompts; every problem is reported as file:line: message with a non-zero exit code.
 //   exit 0: ok; 1: bad input (scenario, options; nothing was run); 2: the run failed (partial
 //   results kept), or its result could not be written (an earlier result is unchanged);
 //   3: internal error (a bug).
@@ -11,6 +11,7 @@
 #include <iostream>
 
 #include "railbench/version.hpp"
+#include "workbench/app/assess.hpp"
 #include "workbench/app/run.hpp"
 #include "workbench/app/study.hpp"
 #include "workbench/app/tables.hpp"
@@ -68,6 +69,13 @@ int workbench(int argc, char** argv) {
   study->add_option("--out", so.out, "output folder (default out/<study>)");
   study->add_option("--jobs", so.jobs, "cases at once (default: the study's jobs, else cores)");
 
+  rb::app::AssessOptions ao;
+  auto* assess = app.add_subcommand(
+      "assess", "recompute /assessment of a result file from its datasets and replace it");
+  assess->add_option("file", ao.file, "result file (.h5)")->required();
+  assess->add_option("--set", ao.overrides, "change an assessment key: run.assessment.KEY=VALUE")
+      ->allow_extra_args(false);
+
   std::string topic;
   auto* help = app.add_subcommand("help", "reference documentation");
   help->add_option("topic", topic, "topic: scenario")
@@ -91,6 +99,7 @@ int workbench(int argc, char** argv) {
       std::cout << co.scenario << ": ok\n";
       return 0;
     }
+    if (*assess) return rb::app::assessFile(ao);
     if (*tables) {
       to.root = root;
       return rb::app::buildTables(to);

@@ -82,6 +82,7 @@ void checkOutputPath(const std::string& out, const run::Model& m) {
 
 void checkScenario(const RunOptions& options) {
   run::Model m = run::compile(compileOptions(options));
+  run::checkAssessment(m);
   for (const auto& w : m.warnings) std::cerr << w << "\n";
 }
 
@@ -89,6 +90,7 @@ int runScenario(const RunOptions& options) {
   // Everything that can be checked is checked before the result file exists: a run that does
   // not start never touches an earlier result.
   run::Model c = run::compile(compileOptions(options));
+  run::checkAssessment(c);
   for (const auto& w : c.warnings) std::cerr << w << "\n";
   const std::string out = defaultOut(options);
   checkOutputPath(out, c);
@@ -126,6 +128,9 @@ int runScenario(const RunOptions& options) {
                 << (res.warnings.size() == 1 ? " warning" : " warnings");
     std::cout << "\n";
     for (const auto& w : res.warnings) std::cout << "warning: " << w << "\n";
+    for (const auto& line : res.assessment_summary) std::cout << line << "\n";
+    if (res.assessment_summary.empty())
+      for (const auto& n : res.assessment_notes) std::cout << n << "\n";
     if (c.contact)
       msg << "; vehicle " << c.vehicle->name << " with " << nameOf(c.contact->method) << " contact";
     else

@@ -9,6 +9,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <system_error>
 
 namespace rb::io {
 namespace {
@@ -86,6 +88,31 @@ ResultFile::ResultFile(std::string path) : path_(std::move(path)) {
     std::remove(tmp_.c_str());
     throw WriteError("HDF5: cannot create the result file '" + tmp_ + "'");
   }
+}
+
+ResultFile::ResultFile(std::string path, UpdateExisting) : path_(std::move(path)) {
+  initHdf5();
+  tmp_ = claimTemporary(path_);
+  std::error_code ec;
+  std::filesystem::copy_file(path_, tmp_, std::filesystem::copy_options::overwrite_existing, ec);
+  Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (ec || !fapl.ok() || H5Pset_fclose_degree(fapl.get(), H5F_CLOSE_STRONG) < 0) {
+    std::remove(tmp_.c_str());
+    throw WriteError("cannot copy the result '" + path_ + "' to update it" +
+                     (ec ? ": " + ec.message() : std::string()));
+  }
+  file_ = H5Fopen(tmp_.c_str(), H5F_ACC_RDWR, fapl.get());
+  if (file_ < 0) {
+    std::remove(tmp_.c_str());
+    throw WriteError("HDF5: cannot open the copy of '" + path_ + "' for writing");
+  }
+}
+
+void ResultFile::remove(const std::string& path) {
+  if (file_ < 0) fail("file already closed", path);
+  const hid_t f = static_cast<hid_t>(file_);
+  if (H5Lexists(f, path.c_str(), H5P_DEFAULT) <= 0) return;
+  if (H5Ldelete(f, path.c_str(), H5P_DEFAULT) < 0) fail("cannot remove", path);
 }
 
 ResultFile::~ResultFile() {

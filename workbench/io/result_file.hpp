@@ -45,6 +45,11 @@ class ResultFile {
  public:
   // Creates the temporary beside `path`. Throws WriteError naming the path on failure.
   explicit ResultFile(std::string path);
+  // Updates the existing result `path`: the temporary is a copy of it, opened for writing, and
+  // finalize() renames it over `path`, so a failed update leaves `path` as it was. Throws
+  // WriteError when `path` cannot be copied or opened.
+  struct UpdateExisting {};
+  ResultFile(std::string path, UpdateExisting);
   // Closes and deletes the temporary unless finalize() succeeded; never throws.
   ~ResultFile();
   ResultFile(const ResultFile&) = delete;
@@ -64,6 +69,8 @@ class ResultFile {
   // A complete 2-D dataset, row-major data of rows x cols (e.g. a table over gauge x y).
   void dataset2d(const std::string& path, std::size_t rows, std::size_t cols,
                  const std::vector<double>& data, const std::string& units);
+  // Removes a group or dataset (and everything below it) when it exists.
+  void remove(const std::string& path);
   // An appendable dataset; the returned Series lives as long as this file.
   Series& series(const std::string& path, const std::string& units);
 

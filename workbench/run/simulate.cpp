@@ -26,6 +26,35 @@ std::vector<double> outputTimes(double t0, double t_end, double every) {
   return times;
 }
 
+ObservationTimes observationTimes(double t0, double t_end, double every, double extra_every) {
+  ObservationTimes o;
+  const std::vector<double> out = outputTimes(t0, t_end, every);
+  if (extra_every <= 0.0) {
+    o.times = out;
+    o.what.assign(out.size(), 1);
+    return o;
+  }
+  const std::vector<double> extra = outputTimes(t0, t_end, extra_every);
+  const double tol = 1e-9 * std::min(every, extra_every);
+  std::size_t i = 0, j = 0;
+  while (i < out.size() || j < extra.size()) {
+    const bool take_out = j == extra.size() || (i < out.size() && out[i] <= extra[j] + tol);
+    const bool same = i < out.size() && j < extra.size() && std::abs(out[i] - extra[j]) <= tol;
+    if (same) {
+      o.times.push_back(out[i++]);
+      o.what.push_back(3);
+      ++j;
+    } else if (take_out) {
+      o.times.push_back(out[i++]);
+      o.what.push_back(1);
+    } else {
+      o.times.push_back(extra[j++]);
+      o.what.push_back(2);
+    }
+  }
+  return o;
+}
+
 namespace {
 
 // Why the sample `values` at t stops the run (a non-finite value, or the request's check); empty
@@ -44,7 +73,11 @@ std::string invalidSample(const SimulationRequest& r, double t, const std::vecto
 integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
   RB_CHECK(r.system != nullptr, "no system to simulate");
   auto integrator = integ::makeIntegrator(r.solver);
-  std::vector<double> times = outputTimes(r.t0, r.t_end, r.output_every);
+  const bool extra = r.extra != nullptr && r.extra->every > 0.0 && r.extra->sample;
+  const ObservationTimes obs =
+      observationTimes(r.t0, r.t_end, r.output_every, extra ? r.extra->every : 0.0);
+  const std::vector<double>& times = obs.times;
+  std::size_t next = 0;  // index of the observation the observer sees next
 
   io::Series& time = f.series("/time", "s");
   std::vector<io::Series*> series;
@@ -59,6 +92,15 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
   double t_invalid = 0.0;
   double t_written = r.t0;
   auto observer = [&](double t, const Eigen::VectorXd& y) {
+    // The integrators observe `times` in order (some also t0, which is an output as before).
+    unsigned char what = 1;
+    if (next < times.size() && std::abs(t - times[next]) <= 1e-12 * std::max(1.0, std::abs(t)))
+      what = obs.what[next++];
+    if ((what & 2) != 0) {
+      r.extra->sample(t, y);
+      ++r.extra->samples;
+    }
+    if ((what & 1) == 0) return true;
     if (!series.empty()) {
       r.sample(t, y, values.data());
       invalid = invalidSample(r, t, values);

@@ -23,6 +23,16 @@ struct OutputChannel {
 // times, so what it computes costs nothing between outputs.
 using OutputSampler = std::function<void(double t, const Eigen::VectorXd& y, double* values)>;
 
+// A second list of sample times at its own interval, t0 + k every (k = 1..n, the last clipped to
+// t_end), merged with the output times: the caller keeps what it samples in memory (the signals
+// of an assessment). A time shared with an output time is sampled once by each sampler, at the
+// output time's value. Nothing is sampled when every == 0.
+struct ExtraSampling {
+  double every = 0.0;  // [s]
+  std::function<void(double t, const Eigen::VectorXd& y)> sample;
+  std::size_t samples = 0;  // filled by simulate(): how many times sample was called
+};
+
 struct SimulationRequest {
   integ::OdeSystem* system = nullptr;
   integ::SolverSpec solver;
@@ -39,7 +49,17 @@ struct SimulationRequest {
   // Optional: called with each sample after the finiteness check; a non-empty return is a
   // failure message that stops the run (a model leaving its validity, seen in its outputs).
   std::function<std::string(double t, const double* values)> check;
+  ExtraSampling* extra = nullptr;  // optional
 };
+
+// The merged, strictly increasing observation times of outputs (every) and extra samples
+// (extra_every, 0 = none), with what to do at each: bit 0 output, bit 1 extra sample. Times
+// closer than 1e-9 of the smaller interval are one time (the output time's value).
+struct ObservationTimes {
+  std::vector<double> times;
+  std::vector<unsigned char> what;
+};
+ObservationTimes observationTimes(double t0, double t_end, double every, double extra_every);
 
 // Integrates and writes /time, the requested series and /stats into `file` (not finalized).
 // Throws InputError for inconsistent options (e.g. output interval not on a fixed-step grid).

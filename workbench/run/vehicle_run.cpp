@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -10,7 +12,9 @@
 #include "railbench/version.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
+#include "workbench/integrators/registry.hpp"
 #include "workbench/io/track_output.hpp"
+#include "workbench/run/assessment_run.hpp"
 #include "workbench/run/simulate.hpp"
 #include "workbench/track/samples.hpp"
 #include "workbench/vehicle/guided.hpp"
@@ -197,6 +201,7 @@ void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
     for (const char* side : {"left", "right"}) {
       const std::string base = "/contact/" + v.bodies[w].name + "/" + side + "/";
       for (const auto& [q, u] : kWheelQ) outputs.push_back({base + q, u});
+      if (!m.spec.run.output_patches) continue;
       for (int p = 0; p < 2; ++p) {
         const std::string patch = base + "patch" + std::to_string(p);
         f.attr(patch, "role", std::string(kPatchRole[kec ? 0 : 1][p]));
@@ -251,7 +256,7 @@ double* samplePatch(const dynamics::PatchOutput& p, double* out) {
 
 // Per-wheel values (kWheelQ order, then its patches); returns the next output slot.
 double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t, double* out,
-                     CreepageMaximum& creepage) {
+                     CreepageMaximum& creepage, bool patches) {
   for (const auto& w : wheels) {
     // The dominant patch (largest normal force) gives creepages and contact position.
     const auto& p = std::abs(w.patch[1].normal) > std::abs(w.patch[0].normal) && w.patch[1].active
@@ -278,7 +283,8 @@ double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t,
                            w.force.y_track};
     static_assert(std::size(vals) == kNq);
     for (const double x : vals) *out++ = x;
-    for (const auto& patch : w.patch) out = samplePatch(patch, out);
+    if (patches)
+      for (const auto& patch : w.patch) out = samplePatch(patch, out);
     creepage.update(w, t);
   }
   return out;
@@ -302,7 +308,251 @@ void writeContactStats(const Model& m, const dynamics::ContactStats& cs,
                            " where the creep law is calibrated (docs/contact_dynamics.md)");
 }
 
+// A point fixed on a body at x offset r_x from its centre of mass (at its height).
+struct BodyPoint {
+  int body = 0;
+  double r_x = 0.0;  // [m]
+};
+
+struct AssessmentSetup {
+  assessment::AssessmentSpec spec;  // what applies
+  AssessmentSignals signals;
+  std::vector<BodyPoint> bogie_points, floor_points;
+};
+
+std::vector<int> bodiesOfKind(const vehicle::VehicleModel& v, vehicle::BodyKind k) {
+  std::vector<int> out;
+  for (std::size_t b = 0; b < v.bodies.size(); ++b)
+    if (v.bodies[b].kind == k) out.push_back(static_cast<int>(b));
+  return out;
+}
+
+// The bogie each wheelset belongs to: the nearest bogie along the vehicle (-1: none).
+int bogieOf(const vehicle::VehicleModel& v, int ws, const std::vector<int>& bogies) {
+  int best = -1;
+  for (const int b : bogies)
+    if (best < 0 ||
+        std::abs(v.bodies[b].x - v.bodies[ws].x) < std::abs(v.bodies[best].x - v.bodies[ws].x))
+      best = b;
+  return best;
+}
+
+// What applies to this vehicle: the groups it cannot give are dropped (with a note).
+assessment::AssessmentSpec applicable(const Model& m, std::vector<std::string>& notes) {
+  assessment::AssessmentSpec a = m.spec.run.assessment;
+  const auto& v = *m.vehicle;
+  auto drop = [&](bool& flag, bool applies, const char* what) {
+    if (flag && !applies) {
+      flag = false;
+      notes.push_back(std::string("assessment: ") + what);
+    }
+  };
+  drop(a.safety, m.contact.has_value(), "safety left out: the wheelsets are guided (no contact)");
+  drop(a.wear, m.contact.has_value(), "wear left out: the wheelsets are guided (no contact)");
+  drop(a.stability, !bodiesOfKind(v, vehicle::BodyKind::Bogie).empty(),
+       "stability left out: the vehicle has no bogie");
+  drop(a.comfort, !bodiesOfKind(v, vehicle::BodyKind::CarBody).empty(),
+       "comfort left out: the vehicle has no car body");
+  return a;
+}
+
+// The interval of the assessment samples: on a fixed-step grid, rounded down to a multiple of the
+// step (at least one step), so every sample is a step end.
+double sampleInterval(const Model& m, double every) {
+  if (!integ::makeIntegrator(m.solver)->isFixedStep()) return every;
+  const double h = m.solver.step;
+  return std::max(1.0, std::floor(every / h + 1e-6)) * h;
+}
+
+// The floor points of every car body: the scenario's offsets, or over the bogie centres and
+// mid-car (over the extreme wheelsets of a vehicle without bogies).
+void addFloorPoints(const vehicle::VehicleModel& v, AssessmentSetup& as) {
+  const auto cars = bodiesOfKind(v, vehicle::BodyKind::CarBody);
+  auto supports = bodiesOfKind(v, vehicle::BodyKind::Bogie);
+  if (supports.empty()) supports = bodiesOfKind(v, vehicle::BodyKind::Wheelset);
+  for (const int c : cars) {
+    const std::string prefix = cars.size() > 1 ? v.bodies[c].name + "_" : "";
+    std::vector<std::pair<std::string, double>> pts;
+    if (!as.spec.floor_positions.empty()) {
+      for (const double x : as.spec.floor_positions) pts.emplace_back("x_" + num(x), x);
+    } else {
+      double front = 0.0, rear = 0.0;
+      for (const int b : supports) {
+        front = std::max(front, v.bodies[b].x - v.bodies[c].x);
+        rear = std::min(rear, v.bodies[b].x - v.bodies[c].x);
+      }
+      pts = {{"front", front}, {"centre", 0.0}, {"rear", rear}};
+    }
+    for (const auto& [name, x] : pts) {
+      as.floor_points.push_back({c, x});
+      FloorPointSignals fp;
+      fp.name = prefix + name;
+      fp.x_offset = x;
+      as.signals.floor.push_back(std::move(fp));
+    }
+  }
+}
+
+void addBogiePoints(const vehicle::VehicleModel& v, AssessmentSetup& as) {
+  const auto bogies = bodiesOfKind(v, vehicle::BodyKind::Bogie);
+  auto wheelsets = bodiesOfKind(v, vehicle::BodyKind::Wheelset);
+  std::sort(wheelsets.begin(), wheelsets.end(),
+            [&](int a, int b) { return v.bodies[a].x > v.bodies[b].x; });  // leading first
+  for (const int b : bogies)
+    for (const int w : wheelsets) {
+      if (bogieOf(v, w, bogies) != b) continue;
+      as.bogie_points.push_back({b, v.bodies[w].x - v.bodies[b].x});
+      BogiePointSignals bp;
+      bp.bogie = v.bodies[b].name;
+      bp.wheelset = v.bodies[w].name;
+      bp.bogie_mass = v.bodies[b].mass;
+      as.signals.bogies.push_back(std::move(bp));
+    }
+}
+
+// The wheels with their static loads Q0 (the wheel loads of the initial state).
+void addWheels(const Model& m, dynamics::ContactVehicleOde& contact, const Eigen::VectorXd& y0,
+               AssessmentSetup& as) {
+  std::vector<dynamics::WheelOutput> wo(2 * m.contact->wheelsets.size());
+  RB_CHECK(contact.wheelOutputs(0.0, y0.data(), wo) == 0,
+           "the wheel outputs of the initial state failed");
+  std::size_t k = 0;
+  for (const int w : m.contact->wheelsets)
+    for (const char* side : {"left", "right"}) {
+      WheelSignals ws;
+      ws.wheelset = m.vehicle->bodies[w].name;
+      ws.side = side;
+      ws.q0 = wo[k++].force.Q;
+      as.signals.wheels.push_back(std::move(ws));
+    }
+}
+
+AssessmentSetup setupAssessment(const Model& m, vehicle::VehicleOde& ode,
+                                dynamics::ContactVehicleOde* contact, const Eigen::VectorXd& y0,
+                                std::vector<std::string>& notes) {
+  AssessmentSetup as;
+  as.spec = applicable(m, notes);
+  if (!as.spec.any()) return as;
+  as.signals.dt = sampleInterval(m, as.spec.sample_every);
+  if ((as.spec.safety || as.spec.wear) && contact != nullptr) addWheels(m, *contact, y0, as);
+  if (as.spec.stability) addBogiePoints(*m.vehicle, as);
+  if (as.spec.comfort) addFloorPoints(*m.vehicle, as);
+  (void)ode;
+  return as;
+}
+
+// a_P = a_cm + alpha x r + omega x (omega x r) of the point r = (r_x, 0, 0) of a body, in the
+// body's track-frame components (rigid-body kinematics; kin holds the state of the last
+// bodyAccelerations call).
+Eigen::Vector3d pointAcceleration(const vehicle::BodyKinematics& k, const Vector6d& qdd,
+                                  double r_x) {
+  const Eigen::Vector3d a_cm = k.Lv * qdd + k.gamma_v;
+  const Eigen::Vector3d alpha_b = k.Lw * qdd + k.gamma_w;
+  const Eigen::Vector3d r(r_x, 0.0, 0.0);
+  const Eigen::Vector3d rel = alpha_b.cross(r) + k.omega_b.cross(k.omega_b.cross(r));
+  return a_cm + k.body.A * rel;
+}
+
+void sampleBodies(AssessmentSetup& as, vehicle::VehicleOde& ode, double t, const double* y,
+                  std::vector<Vector6d>& qdd) {
+  const bool ok = ode.bodyAccelerations(t, y, qdd) == 0;
+  const auto& kin = ode.workspace().kin;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t k = 0; k < as.bogie_points.size(); ++k) {
+    const auto& p = as.bogie_points[k];
+    const std::size_t b = static_cast<std::size_t>(p.body);
+    as.signals.bogies[k].ay.push_back(ok ? pointAcceleration(kin[b], qdd[b], p.r_x).y() : nan);
+  }
+  for (std::size_t k = 0; k < as.floor_points.size(); ++k) {
+    const auto& p = as.floor_points[k];
+    const std::size_t b = static_cast<std::size_t>(p.body);
+    const Eigen::Vector3d a =
+        ok ? pointAcceleration(kin[b], qdd[b], p.r_x) : Eigen::Vector3d::Constant(nan);
+    auto& s = as.signals.floor[k];
+    s.ax.push_back(a.x());
+    s.ay.push_back(a.y());
+    s.az.push_back(a.z());
+  }
+}
+
+void sampleContact(AssessmentSetup& as, dynamics::ContactVehicleOde& contact, double t,
+                   const double* y, std::vector<dynamics::WheelOutput>& wo) {
+  const bool ok = contact.wheelOutputs(t, y, wo) == 0;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t k = 0; k < as.signals.wheels.size(); ++k) {
+    auto& w = as.signals.wheels[k];
+    const auto& o = wo[k];
+    w.Y.push_back(ok ? o.force.Y : nan);
+    w.Q.push_back(ok ? o.force.Q : nan);
+    w.y_track.push_back(ok ? o.force.y_track : nan);
+    for (int p = 0; p < 2; ++p) {
+      const bool on = ok && o.patch[p].active;
+      w.t_gamma[p].push_back(on ? o.patch[p].t_gamma : (ok ? 0.0 : nan));
+      w.power[p].push_back(on ? o.patch[p].power : (ok ? 0.0 : nan));
+    }
+  }
+}
+
+void sampleAssessment(AssessmentSetup& as, vehicle::VehicleOde& ode,
+                      dynamics::ContactVehicleOde* contact, double t, const double* y, double s,
+                      std::vector<Vector6d>& qdd, std::vector<dynamics::WheelOutput>& wo) {
+  as.signals.time.push_back(t);
+  as.signals.distance.push_back(s);
+  if (contact != nullptr && !as.signals.wheels.empty()) sampleContact(as, *contact, t, y, wo);
+  if (!as.bogie_points.empty() || !as.floor_points.empty()) sampleBodies(as, ode, t, y, qdd);
+}
+
+bool allFinite(const AssessmentSignals& s) {
+  auto fin = [](const std::vector<double>& v) {
+    return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+  };
+  bool ok = true;
+  for (const auto& w : s.wheels) ok = ok && fin(w.Y) && fin(w.Q) && fin(w.y_track);
+  for (const auto& b : s.bogies) ok = ok && fin(b.ay);
+  for (const auto& p : s.floor) ok = ok && fin(p.ax) && fin(p.ay) && fin(p.az);
+  return ok;
+}
+
+// After the run: the assessment from the samples into /assessment, the summary lines and a
+// warning per limit exceeded (a result, not a failure).
+void finishAssessment(const Model& m, AssessmentSetup& as, std::size_t samples, io::ResultFile& f,
+                      VehicleRunResult& out) {
+  f.attr("/stats", "assessment_samples", static_cast<std::int64_t>(samples));
+  if (!out.result.ok) {
+    out.assessment_notes.emplace_back("assessment skipped: the run failed");
+    return;
+  }
+  if (!allFinite(as.signals)) {
+    out.warnings.push_back("assessment skipped: a sampled signal is not finite");
+    return;
+  }
+  const auto t0 = std::clock();
+  const AssessmentResult res = assess(as.signals, as.spec, m.spec.contact.mu);
+  writeAssessment(f, as.signals, res);
+  f.attr("/stats", "assessment_cpu_s",
+         static_cast<double>(std::clock() - t0) / static_cast<double>(CLOCKS_PER_SEC));
+  out.assessment_summary = summaryLines(res);
+  for (auto& n : out.assessment_notes) out.assessment_summary.push_back("  " + n);
+  for (auto& w : exceededWarnings(res)) out.warnings.push_back(std::move(w));
+}
+
 }  // namespace
+
+void checkAssessment(const Model& m) {
+  const auto& a = m.spec.run.assessment;
+  if (!a.any() || a.all || !m.vehicle) return;
+  std::vector<std::string> notes;
+  const assessment::AssessmentSpec applied = applicable(m, notes);
+  std::string msg;
+  auto need = [&](bool asked, bool applies, const char* what) {
+    if (asked && !applies) msg += (msg.empty() ? "" : "; ") + std::string(what);
+  };
+  need(a.safety, applied.safety, "safety needs wheel/rail contact (the wheelsets are guided)");
+  need(a.wear, applied.wear, "wear needs wheel/rail contact (the wheelsets are guided)");
+  need(a.stability, applied.stability, "stability needs a bogie");
+  need(a.comfort, applied.comfort, "comfort needs a car body");
+  if (!msg.empty()) throw InputError(a.loc, "run.assessment: " + msg);
+}
 
 VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunOptions& o) {
   RB_CHECK(m.vehicle.has_value(), "runVehicle needs a vehicle");
@@ -334,6 +584,8 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   std::vector<ElementValue> values(m.output_elements.size());
   std::vector<dynamics::WheelOutput> wo(contact ? 2 * m.contact->wheelsets.size() : 0);
   CreepageMaximum creepage;
+  const bool patches = m.spec.run.output_patches;
+  const std::size_t wheelValues = patches ? kWheelValues : kNq;
   r.sample = [&](double t, const Eigen::VectorXd& y, double* out) {
     *out++ = v.speedAt(t);
     ode->bodyCoordinates(t, y.data(), q);
@@ -352,11 +604,11 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     }
     if (!contact) return;
     if (contact->wheelOutputs(t, y.data(), wo) != 0) {
-      for (std::size_t k = 0; k < wo.size() * kWheelValues; ++k)
+      for (std::size_t k = 0; k < wo.size() * wheelValues; ++k)
         *out++ = std::numeric_limits<double>::quiet_NaN();
       return;
     }
-    sampleWheels(wo, t, out, creepage);
+    sampleWheels(wo, t, out, creepage, patches);
   };
   f.attr("/", "solver", m.solver.method);
   f.attr("/", "contact_method",
@@ -368,7 +620,20 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     f.attr("/stats", "step_limit", m.step_limit.h_max);
     f.attr("/stats", "step_limit_mode", m.step_limit.mode);
   }
+  // The assessment samples its own signals at its own interval (nothing when not asked).
+  AssessmentSetup as = setupAssessment(m, *ode, contact, r.y0, out.assessment_notes);
+  ExtraSampling extra;
+  std::vector<Vector6d> aqdd(nb);
+  std::vector<dynamics::WheelOutput> awo(wo.size());
+  if (as.spec.any()) {
+    extra.every = as.signals.dt;
+    extra.sample = [&](double t, const Eigen::VectorXd& y) {
+      sampleAssessment(as, *ode, contact, t, y.data(), lead + v.travel(t), aqdd, awo);
+    };
+    r.extra = &extra;
+  }
   out.result = simulate(r, f);
+  if (as.spec.any()) finishAssessment(m, as, extra.samples, f, out);
   if (contact) writeContactStats(m, contact->stats(), creepage, f, out);
   writeWarnings(f, out.warnings);
   f.flush();

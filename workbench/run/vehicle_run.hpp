@@ -26,7 +26,15 @@ struct VehicleRunOptions {
 struct VehicleRunResult {
   integ::RunResult result;
   std::vector<std::string> warnings;  // also written to /stats/warnings
+  // The printed assessment summary (empty when none was asked) and why groups were left out.
+  std::vector<std::string> assessment_summary;
+  std::vector<std::string> assessment_notes;
 };
+
+// Refuses (InputError at run.assessment's file:line) assessment groups a vehicle cannot give when
+// the scenario names them: safety and wear need wheel/rail contact, stability a bogie, comfort a
+// car body. run.assessment = true drops them instead. check and run call it after compile().
+void checkAssessment(const Model& m);
 
 // Integrates m (which must have a vehicle) and writes outputs, /stats and warnings into f (not
 // finalized). Throws InputError only for problems compile() could not know.

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "workbench/assessment/spec.hpp"
 #include "workbench/dynamics/spec.hpp"
 #include "workbench/integrators/spec.hpp"
 #include "workbench/track/spec.hpp"
@@ -17,7 +18,9 @@ struct RunSpec {
   double output_every = 0.01;                // [s]
   std::vector<std::string> output_elements;  // element names (checked against the vehicle)
   bool body_accelerations = false;
-  double max_output_samples = 1e7;  // refuse runs with more output times (memory, disk)
+  double max_output_samples = 1e7;        // refuse runs with more output times (memory, disk)
+  bool output_patches = true;             // /contact/<ws>/<side>/patch0, patch1
+  assessment::AssessmentSpec assessment;  // nothing asked: nothing sampled, nothing computed
   SourceLoc loc;
 };
 

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "workbench/assessment/spec.hpp"
 #include "workbench/core/names.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/limits.hpp"
@@ -413,12 +414,63 @@ void addSolverBlock(std::vector<BlockSpec>& s) {
         stiff, accept}});
 }
 
+void addAssessmentBlock(std::vector<BlockSpec>& s) {
+  s.push_back(
+      {"run.assessment",
+       "Engineering assessment of a vehicle run (a plain table inside run{}, or true for every "
+       "group that applies: safety and wear need wheel/rail contact, stability a bogie, comfort a "
+       "car body). Signals are sampled at sample_every independently of run.output and assessed "
+       "after the run into /assessment; a limit exceeded is a result (warning), not a failure. "
+       "Formulas, limits and assumptions: docs/assessment.md.",
+       {boolean("safety", false,
+                "running safety and track loading (EN 14363): Y/Q, sum Y, dQ/Q, quasi-static and "
+                "maximum wheel forces per wheel; needs wheel/rail contact"),
+        boolean("stability", false,
+                "running stability, simplified method (EN 14363): sliding rms of the band-passed "
+                "bogie-frame lateral acceleration above each wheelset"),
+        boolean("comfort", false,
+                "ride comfort at the car-body floor points: EN 12299 N_MV and continuous comfort, "
+                "Sperling's Wz lateral and vertical"),
+        boolean("wear", false, "wear number T gamma and frictional power per wheel and patch"),
+        num("sample_every", "s", assessment::kDefaultSampleEvery,
+            "sample interval of the assessment signals (400 Hz: the comfort weightings and the "
+            "20 Hz force low-pass need fs >= 20 x their highest frequency); with a fixed-step "
+            "solver rounded down to a multiple of solver.step",
+            0, 0.02, true),
+        typed("floor_positions", ValueType::Table, "m",
+              "floor points of the car body, x offsets from its centre of mass {x1, x2, ...}; "
+              "default: over the two bogie centres and mid-car (front, centre, rear)"),
+        num("alpha", "-", 1.0,
+            "track shift factor of Prud'homme's limit alpha (10 kN + 2 Q0 / 3): 1.0 for "
+            "locomotives and passenger vehicles, 0.85 for freight wagons (EN 14363); the default "
+            "1.0 is the standard's base value, set 0.85 for a freight wagon",
+            0, 1, true),
+        num("flange_angle", "rad", assessment::kS1002FlangeAngle,
+            "flange angle of Nadal's flange-climbing limit (default: S1002, about 70 deg)", 0,
+            1.5707963267948966, true),
+        num("mu", "-", -1, "friction coefficient of Nadal's limit; default (-1): contact.mu", -1,
+            2),
+        num("yq_limit", "-", 0.8,
+            "limit of the derailment quotient (Y/Q)_2m (EN 14363, R >= 250 m)", 0, 10, true),
+        num("instability_frequency", "Hz", 0,
+            "centre f0 of the f0 +- 2 Hz band-pass of the stability criterion; 0 = the peak of "
+            "the bogie-frame lateral acceleration spectrum between 3 and 9 Hz",
+            0, 50),
+        num("comfort_limit", "-", 2,
+            "target of N_MV (EN 12299 sets none; 2 is the upper bound of \"comfortable\")", 0, kInf,
+            true)}});
+}
+
 void addRunBlocks(std::vector<BlockSpec>& s) {
   s.push_back({"run",
                "What to simulate and what to write.",
                {num("distance", "m", 0, "distance to travel, 0 = to the end of the track", 0),
                 num("duration", "s", 0, "simulated time, 0 = distance / speed", 0),
-                blockKey("output", ValueType::Block, {}, "output options", "run.output")}});
+                blockKey("output", ValueType::Block, {}, "output options", "run.output"),
+                blockKey("assessment", ValueType::Block, {},
+                         "engineering assessment of the run (EN 14363, EN 12299, Sperling, wear) "
+                         "written to /assessment; true = every group that applies to the vehicle",
+                         "run.assessment")}});
   s.push_back({"run.output",
                "Output options (a plain table inside run{}).",
                {num("every", "s", 0.01, "output interval", 0, kInf, true),
@@ -429,7 +481,12 @@ void addRunBlocks(std::vector<BlockSpec>& s) {
                 num("max_samples", "-", 1e7,
                     "largest number of output times a run may write (a bound on memory and "
                     "disk; raise it for long, finely sampled runs)",
-                    1, 1e12)}});
+                    1, 1e12),
+                boolean("patches", true,
+                        "write the per-patch datasets /contact/<ws>/<side>/patch0, patch1 (23 "
+                        "series per patch: about 2.7 times the file size of a short contact "
+                        "run)")}});
+  addAssessmentBlock(s);
 }
 
 std::vector<BlockSpec> build() {

@@ -1,0 +1,143 @@
+#include "workbench/app/assess.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+
+#include "workbench/core/error.hpp"
+#include "workbench/core/strings.hpp"
+#include "workbench/io/result_file.hpp"
+#include "workbench/io/result_reader.hpp"
+#include "workbench/run/assessment_run.hpp"
+#include "workbench/scenario/schema.hpp"
+
+namespace rb::app {
+namespace {
+
+const SourceLoc kCli{"<command line>", 0};
+constexpr const char* kPrefix = "run.assessment.";
+
+// The parameters the file's assessment applied, and its groups (safety and wear from the outputs
+// when it has none).
+assessment::AssessmentSpec specOfFile(const io::ResultReader& f) {
+  assessment::AssessmentSpec s;
+  const std::string A = "/assessment";
+  s.alpha = f.number(A, "alpha").value_or(s.alpha);
+  s.flange_angle = f.number(A, "flange_angle").value_or(s.flange_angle);
+  s.mu = f.number(A, "mu").value_or(s.mu);
+  s.yq_limit = f.number(A, "yq_limit").value_or(s.yq_limit);
+  s.instability_frequency = f.number(A, "instability_frequency").value_or(0.0);
+  s.comfort_limit = f.number(A, "comfort_limit").value_or(s.comfort_limit);
+  s.sample_every = f.number(A, "sample_every").value_or(s.sample_every);
+  if (f.has(A + "/time")) {
+    s.safety = f.has(A + "/safety");
+    s.stability = f.has(A + "/stability");
+    s.comfort = f.has(A + "/comfort");
+    s.wear = f.has(A + "/wear");
+  } else {
+    s.safety = s.wear = f.has("/contact");
+  }
+  return s;
+}
+
+std::optional<double> parseNumber(const std::string& v) {
+  try {
+    std::size_t used = 0;
+    const double x = std::stod(v, &used);
+    if (used == v.size()) return x;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
+bool parseBool(const std::string& v, bool& out) {
+  if (v == "true" || v == "1")
+    out = true;
+  else if (v == "false" || v == "0")
+    out = false;
+  else
+    return false;
+  return true;
+}
+
+// One --set run.assessment.KEY=VALUE; problems into `errors`.
+void applyOverride(const std::string& o, assessment::AssessmentSpec& s,
+                   std::vector<Diagnostic>& errors) {
+  const auto eq = o.find('=');
+  if (o.rfind(kPrefix, 0) != 0 || eq == std::string::npos) {
+    errors.push_back({kCli, "--set " + o + ": assess takes run.assessment.KEY=VALUE"});
+    return;
+  }
+  const std::string key = o.substr(std::string(kPrefix).size(), eq - std::string(kPrefix).size());
+  const std::string value = o.substr(eq + 1);
+  const scenario::KeySpec* k = scenario::block("run.assessment").key(key);
+  bool* flag = key == "safety"      ? &s.safety
+               : key == "stability" ? &s.stability
+               : key == "comfort"   ? &s.comfort
+               : key == "wear"      ? &s.wear
+                                    : nullptr;
+  if (flag != nullptr) {
+    if (!parseBool(value, *flag))
+      errors.push_back({kCli, "--set " + o + ": " + key + " must be true or false"});
+    return;
+  }
+  double* num = key == "alpha"                   ? &s.alpha
+                : key == "flange_angle"          ? &s.flange_angle
+                : key == "mu"                    ? &s.mu
+                : key == "yq_limit"              ? &s.yq_limit
+                : key == "instability_frequency" ? &s.instability_frequency
+                : key == "comfort_limit"         ? &s.comfort_limit
+                                                 : nullptr;
+  if (k == nullptr || num == nullptr) {
+    errors.push_back({kCli, "--set " + o + ": assess cannot change run.assessment." + key +
+                                " (the sampled signals are fixed by the run)"});
+    return;
+  }
+  const auto x = parseNumber(value);
+  const auto problem = x ? scenario::rangeProblem(*k, *x) : std::optional<std::string>("a number");
+  if (problem) {
+    errors.push_back({kCli, "--set " + o + ": " + key + " must be " + *problem});
+    return;
+  }
+  *num = *x;
+}
+
+}  // namespace
+
+int assessFile(const AssessOptions& o) {
+  if (!std::filesystem::is_regular_file(o.file))
+    throw InputError(kCli, "assess: '" + o.file + "' is not a result file");
+  assessment::AssessmentSpec spec;
+  run::AssessmentSignals signals;
+  std::vector<std::string> missing;
+  double contact_mu = 0.0;
+  {
+    const io::ResultReader f(o.file);
+    if (!f.ok()) throw InputError(kCli, "assess: '" + o.file + "' is not an HDF5 result file");
+    spec = specOfFile(f);
+    std::vector<Diagnostic> errors;
+    for (const auto& s : o.overrides) applyOverride(s, spec, errors);
+    if (!errors.empty()) throw InputError(std::move(errors));
+    if (!spec.any()) throw InputError(kCli, "assess: nothing to assess (no group asked)");
+    contact_mu = f.number("/contact", "mu").value_or(spec.mu);
+    signals = run::signalsFromFile(f, spec, missing);
+  }
+  if (!missing.empty()) {
+    std::vector<Diagnostic> errors;
+    for (const auto& m : missing) errors.push_back({SourceLoc{o.file, 0}, "assess: " + m});
+    throw InputError(std::move(errors));
+  }
+  const run::AssessmentResult r = run::assess(signals, spec, contact_mu);
+  io::ResultFile f(o.file, io::ResultFile::UpdateExisting{});
+  f.remove("/assessment");
+  run::writeAssessment(f, signals, r);
+  f.finalize();
+  if (!o.quiet)
+    for (const auto& line : run::summaryLines(r)) std::cout << line << "\n";
+  for (const auto& w : run::exceededWarnings(r)) std::cout << "warning: " << w << "\n";
+  std::cout << "replaced /assessment of " << o.file << "\n";
+  return 0;
+}
+
+}  // namespace rb::app

@@ -1,0 +1,108 @@
+#include "workbench/io/result_reader.hpp"
+
+#include <hdf5.h>
+
+#include <algorithm>
+
+#include "workbench/io/hdf5_init.hpp"
+
+namespace rb::io {
+namespace {
+
+herr_t collectName(hid_t, const char* name, const H5L_info_t*, void* data) {
+  static_cast<std::vector<std::string>*>(data)->emplace_back(name);
+  return 0;
+}
+
+}  // namespace
+
+ResultReader::ResultReader(const std::string& path) {
+  initHdf5();
+  file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+}
+
+ResultReader::~ResultReader() {
+  if (file_ >= 0) H5Fclose(static_cast<hid_t>(file_));
+}
+
+bool ResultReader::has(const std::string& path) const {
+  if (file_ < 0 || path.empty() || path[0] != '/') return false;
+  if (path == "/") return true;
+  // Each prefix in turn: H5Lexists fails on a missing intermediate group.
+  std::size_t pos = 0;
+  while ((pos = path.find('/', pos + 1)) != std::string::npos)
+    if (H5Lexists(static_cast<hid_t>(file_), path.substr(0, pos).c_str(), H5P_DEFAULT) <= 0)
+      return false;
+  return H5Lexists(static_cast<hid_t>(file_), path.c_str(), H5P_DEFAULT) > 0;
+}
+
+std::optional<std::vector<double>> ResultReader::dataset(const std::string& path) const {
+  if (!has(path)) return std::nullopt;
+  const hid_t d = H5Dopen2(static_cast<hid_t>(file_), path.c_str(), H5P_DEFAULT);
+  if (d < 0) return std::nullopt;
+  std::optional<std::vector<double>> out;
+  const hid_t s = H5Dget_space(d);
+  hsize_t n = 0;
+  if (s >= 0 && H5Sget_simple_extent_ndims(s) == 1 &&
+      H5Sget_simple_extent_dims(s, &n, nullptr) == 1) {
+    std::vector<double> v(n);
+    if (n == 0 || H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) >= 0)
+      out = std::move(v);
+  }
+  if (s >= 0) H5Sclose(s);
+  H5Dclose(d);
+  return out;
+}
+
+std::optional<double> ResultReader::number(const std::string& object,
+                                           const std::string& name) const {
+  if (!has(object)) return std::nullopt;
+  const hid_t o = H5Oopen(static_cast<hid_t>(file_), object.c_str(), H5P_DEFAULT);
+  if (o < 0) return std::nullopt;
+  std::optional<double> out;
+  if (H5Aexists(o, name.c_str()) > 0) {
+    const hid_t a = H5Aopen(o, name.c_str(), H5P_DEFAULT);
+    const hid_t t = a >= 0 ? H5Aget_type(a) : -1;
+    const H5T_class_t c = t >= 0 ? H5Tget_class(t) : H5T_NO_CLASS;
+    double v = 0.0;
+    if ((c == H5T_FLOAT || c == H5T_INTEGER) && H5Aread(a, H5T_NATIVE_DOUBLE, &v) >= 0) out = v;
+    if (t >= 0) H5Tclose(t);
+    if (a >= 0) H5Aclose(a);
+  }
+  H5Oclose(o);
+  return out;
+}
+
+std::optional<std::string> ResultReader::text(const std::string& object,
+                                              const std::string& name) const {
+  if (!has(object)) return std::nullopt;
+  const hid_t o = H5Oopen(static_cast<hid_t>(file_), object.c_str(), H5P_DEFAULT);
+  if (o < 0) return std::nullopt;
+  std::optional<std::string> out;
+  if (H5Aexists(o, name.c_str()) > 0) {
+    const hid_t a = H5Aopen(o, name.c_str(), H5P_DEFAULT);
+    const hid_t t = a >= 0 ? H5Aget_type(a) : -1;
+    if (t >= 0 && H5Tget_class(t) == H5T_STRING && !H5Tis_variable_str(t)) {
+      std::string s(H5Tget_size(t), '\0');
+      if (H5Aread(a, t, s.data()) >= 0) out = s.substr(0, s.find('\0'));
+    }
+    if (t >= 0) H5Tclose(t);
+    if (a >= 0) H5Aclose(a);
+  }
+  H5Oclose(o);
+  return out;
+}
+
+std::vector<std::string> ResultReader::members(const std::string& group) const {
+  std::vector<std::string> out;
+  if (!has(group)) return out;
+  const hid_t g = H5Gopen2(static_cast<hid_t>(file_), group.c_str(), H5P_DEFAULT);
+  if (g < 0) return out;
+  hsize_t idx = 0;
+  H5Literate(g, H5_INDEX_NAME, H5_ITER_INC, &idx, collectName, &out);
+  H5Gclose(g);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace rb::io

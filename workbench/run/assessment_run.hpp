@@ -1,0 +1,144 @@
+#pragma once
+// The engineering assessment of a vehicle run (run.assessment, docs/assessment.md): the signals a
+// run samples at the assessment's own interval, the pure computation of every asked quantity
+// with rb_assessment (EN 14363 running safety, track loading and stability, EN 12299 comfort,
+// Sperling's Wz, T gamma wear) and its result group /assessment (the layout the figures read).
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "workbench/assessment/en12299.hpp"
+#include "workbench/assessment/en14363.hpp"
+#include "workbench/assessment/spec.hpp"
+#include "workbench/assessment/wear.hpp"
+#include "workbench/io/result_file.hpp"
+#include "workbench/io/result_reader.hpp"
+
+namespace rb::run {
+
+// One wheel's track-frame forces (EN 14363 Y, Q, y_track [N]) and per patch T gamma [N] and
+// frictional power [W] at the sample times, with its static wheel load Q0 [N] (the Q of the
+// initial state).
+struct WheelSignals {
+  std::string wheelset, side;  // as in /contact
+  double q0 = 0.0;             // [N]
+  std::vector<double> Y, Q, y_track;
+  std::vector<double> t_gamma[2], power[2];
+};
+
+// Lateral acceleration [m/s^2] of a bogie frame at the point above one of its wheelsets.
+struct BogiePointSignals {
+  std::string bogie, wheelset;
+  double bogie_mass = 0.0;  // [kg]
+  std::vector<double> ay;
+};
+
+// Absolute acceleration [m/s^2] of a car-body floor point, body track-frame components.
+struct FloorPointSignals {
+  std::string name;       // front, centre, rear (or x_<offset>)
+  double x_offset = 0.0;  // [m] from the car body's centre of mass
+  std::vector<double> ax, ay, az;
+};
+
+struct AssessmentSignals {
+  double dt = 0.0;                        // sample interval [s]
+  std::vector<double> time, distance;     // [s], [m] (leading wheelset)
+  std::vector<WheelSignals> wheels;       // per wheelset: left, right
+  std::vector<BogiePointSignals> bogies;  // per bogie: its wheelsets, leading first
+  std::vector<FloorPointSignals> floor;
+};
+
+// One assessed quantity, as its /assessment group's attributes.
+struct Assessed {
+  assessment::Check check;
+  std::string unit, clause, where;
+  double at_s = std::numeric_limits<double>::quiet_NaN();  // [m], NaN: not located
+};
+
+struct WheelSafety {
+  assessment::en14363::SlidingAssessment y_over_q;
+  Assessed yq;               // (Y/Q)_2m against yq_limit
+  double nadal_limit = 0.0;  // [-] Nadal's flange-climbing limit
+  double nadal_mu = 0.0;     // [-] the friction coefficient it used
+  Assessed dq;               // dQ/Q0
+  std::vector<double> dq_series;
+  Assessed y_qst, q_qst, q_max;
+};
+struct WheelsetSafety {
+  std::string wheelset;
+  assessment::en14363::SlidingAssessment sum_y;
+  Assessed sy;
+  double q0 = 0.0;  // mean static wheel load of the wheelset [N]
+};
+struct StabilityResult {
+  std::string bogie, wheelset;
+  double f0 = 0.0, bogie_mass = 0.0;
+  assessment::en14363::StabilityAssessment st;
+  Assessed a;
+};
+struct ComfortResult {
+  std::string name;
+  double x_offset = 0.0;
+  assessment::en12299::MeanComfort n_mv;
+  Assessed n;
+  std::vector<double> nc[3];
+  double wz_lateral = 0.0, wz_vertical = 0.0;
+};
+struct WearResult {
+  std::vector<double> t_gamma, power;  // per wheel, sum over patches
+  assessment::wear::WearSummary wheel, patch[2];
+};
+
+// One line of /assessment/summary and of the printed summary.
+struct SummaryItem {
+  std::string key;  // y_over_q, sum_y, ...
+  std::string unit;
+  Assessed a;
+};
+
+struct AssessmentResult {
+  assessment::AssessmentSpec spec;  // as applied (groups that do not apply dropped)
+  double sample_every = 0.0;
+  double mu = 0.0;  // friction coefficient of Nadal's limit as applied [-]
+  std::vector<std::string> assumptions, notes;  // notes: why a quantity was left out
+  std::vector<WheelSafety> wheel_safety;        // per wheel, order of signals.wheels
+  std::vector<WheelsetSafety> wheelset_safety;
+  std::vector<StabilityResult> stability;
+  std::vector<ComfortResult> comfort;
+  std::vector<WearResult> wear;  // per wheel
+  std::vector<SummaryItem> summary;
+  std::vector<std::string> quantities;
+};
+
+// Computes every asked quantity from the signals (pure). mu is the friction coefficient of
+// Nadal's limit when spec.mu < 0.
+AssessmentResult assess(const AssessmentSignals& signals, const assessment::AssessmentSpec& spec,
+                        double contact_mu);
+
+// Writes /assessment (ASSESSMENT_LAYOUT: one group per quantity with unit, value, limit, margin,
+// ok, clause, at_s) and its series.
+void writeAssessment(io::ResultFile& f, const AssessmentSignals& signals,
+                     const AssessmentResult& r);
+
+// The one-screen summary printed after a run: one line per summary quantity, "ok" or
+// "EXCEEDED".
+std::vector<std::string> summaryLines(const AssessmentResult& r);
+// The warnings of a result whose quantities exceed their limits (one line each).
+std::vector<std::string> exceededWarnings(const AssessmentResult& r);
+
+// The signals of an assessment read back from a result file (`workbench assess`): from the
+// series a run's assessment wrote under /assessment when it has them, otherwise (safety and wear
+// only) from the run's outputs /time, /bodies/<leading>/s and /contact (whose interval must be
+// at most kMaxFileSampleInterval). The groups of spec whose signals the file lacks are named in
+// `missing` (one sentence each).
+inline constexpr double kMaxFileSampleInterval = 5e-3;  // [s]: 10 x the 20 Hz force low-pass
+AssessmentSignals signalsFromFile(const io::ResultReader& file,
+                                  const assessment::AssessmentSpec& spec,
+                                  std::vector<std::string>& missing);
+
+// Largest of |X(f)|^2 of a series (mean removed) on f in [f_low, f_high] by steps of df [Hz]:
+// the instability frequency f0 of the stability criterion when the scenario gives none.
+double spectrumPeak(const std::vector<double>& x, double dt, double f_low, double f_high,
+                    double df);
+
+}  // namespace rb::run
