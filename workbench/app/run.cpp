@@ -82,7 +82,6 @@ void checkOutputPath(const std::string& out, const run::Model& m) {
 
 void checkScenario(const RunOptions& options) {
   run::Model m = run::compile(compileOptions(options));
-  run::checkAssessment(m);
   for (const auto& w : m.warnings) std::cerr << w << "\n";
 }
 
@@ -90,7 +89,6 @@ int runScenario(const RunOptions& options) {
   // Everything that can be checked is checked before the result file exists: a run that does
   // not start never touches an earlier result.
   run::Model c = run::compile(compileOptions(options));
-  run::checkAssessment(c);
   for (const auto& w : c.warnings) std::cerr << w << "\n";
   const std::string out = defaultOut(options);
   checkOutputPath(out, c);

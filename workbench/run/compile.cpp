@@ -7,6 +7,7 @@
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
 #include "workbench/integrators/registry.hpp"
+#include "workbench/run/vehicle_run.hpp"
 #include "workbench/track/psd.hpp"
 #include "workbench/vehicle/guided.hpp"
 
@@ -325,6 +326,9 @@ Model compile(const CompileOptions& o) {
   if (!c.spec.has_vehicle) checkWithoutVehicle(c, d);
   if (c.vehicle) checkVehicleRun(c, d);
   d.throwIfAny();
+  // An assessment group the vehicle cannot give (safety without wheel/rail contact, comfort
+  // without a car body) is an error of the scenario, whoever compiles it.
+  checkAssessment(c);
 
   // The initial state must exist: a contact vehicle's static equilibrium on its constraints
   // (the contact points inside the tables, no wheel lift), a guided vehicle's on its suspension.
