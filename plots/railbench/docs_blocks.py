@@ -385,10 +385,50 @@ def _instructions_by_label(path: str) -> Dict[str, dict]:
     return {r["label"]: r for r in read_csv(path) if r.get("instructions_per_eval")}
 
 
+def _wheelset_paths(path: str) -> Optional[Dict[str, "object"]]:
+    """Lateral displacement y [m] of every wheelset of a result file, by wheelset name, with
+    "/time"; None when the file cannot be read."""
+    try:
+        import h5py
+        with h5py.File(path, "r") as f:
+            out = {"/time": f["time"][()]}
+            names = f["bodies"].attrs["names"]
+            names = names.decode() if isinstance(names, bytes) else str(names)
+            for name in names.split("\n"):
+                if name.startswith("ws") and "y" in f["bodies"][name]:
+                    out[name] = f["bodies"][name]["y"][()]
+            return out
+    except (OSError, KeyError, ValueError):
+        return None
+
+
+def _max_dy_mm(ref: Optional[dict], path: str) -> Optional[float]:
+    """Largest |y - y_ref| over every wheelset and output time [mm] (the output times of both
+    runs: one interval; the shorter run's times)."""
+    if ref is None:
+        return None
+    run = _wheelset_paths(path)
+    if run is None:
+        return None
+    import numpy as np
+    worst = 0.0
+    for name, y in run.items():
+        if name == "/time" or name not in ref:
+            continue
+        yr = np.interp(run["/time"], ref["/time"], ref[name])
+        worst = max(worst, float(np.max(np.abs(y - yr))))
+    return worst * 1e3
+
+
 def speed_block(outdir: str) -> str:
     rows = read_csv(os.path.join(outdir, "speed", "study_cost.csv"))
     if not rows:
         return missing("out/studies/speed/study_cost.csv")
+    # Accuracy of the cases of the reference's model (same contact method, spin and coupling:
+    # the study's "model" column) against the reference case.
+    ref_row = next((r for r in rows if r.get("role") == "reference" and r["status"] == "ok"),
+                   None)
+    ref = _wheelset_paths(ref_row["file"]) if ref_row else None
     # Callgrind instructions per evaluation (`plots/rbplot effects-instructions`), of this build
     # and, when measured, of an earlier one (its --tag names it).
     now = _instructions_by_label(os.path.join(outdir, "speed", "study_speed_instructions.csv"))
@@ -409,17 +449,22 @@ def speed_block(outdir: str) -> str:
             met = "met" if factor >= float(target[:-1]) else "NOT met"
         instr = [fmt(num((d.get(r["label"]) or {}).get("instructions_per_eval")),
                      "{:,.0f}") for d in (now, before)]
+        same_model = (ref_row is not None and r is not ref_row and
+                      r.get("model") == ref_row.get("model"))
+        dy = fmt(_max_dy_mm(ref, r.get("file", "")) if same_model and ok else None, "{:.3f}")
         body.append([r["label"], r["status"], f"{cpu:.3f} s ({r['cpu_min_s']}-{r['cpu_max_s']})",
                      fmt(factor, "{:.1f}x"), r["rhs_evals"], r["rhs_evals_jac"] or "0",
                      r["steps"], fmt(num(r["us_per_eval"]), "{:.2f}"), instr[0], instr[1],
-                     target, met])
+                     dy, target, met])
     head = ["case", "status", "CPU median (min-max)", "x real time", "rhs evals",
             "Jacobian evals", "steps", "µs / eval", "instructions / eval",
-            f"instructions / eval ({tag})", "target", ""]
+            f"instructions / eval ({tag})", "max \\|dy\\| vs reference [mm]", "target", ""]
     note = ("Instructions per rhs evaluation: callgrind over the first 3 s of each case, "
             "integration only (integrator and output callbacks included; "
             "`plots/rbplot effects-instructions`)" +
-            (f", also of the build `{tag}`." if before else ".") + "\n\n")
+            (f", also of the build `{tag}`." if before else ".") +
+            " max |dy|: the largest difference of any wheelset's lateral displacement from the "
+            "reference case over the whole run, for the cases of the reference's model.\n\n")
     return note + table(head, body)
 
 

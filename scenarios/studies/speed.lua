@@ -28,6 +28,11 @@ local cases = {
             lib.exponential("rk4", 2e-3), lib.consistent()),
   lib.merge({ label = "KEC ABM 1 ms exponential, free spin, consistent" }, lib.kec(),
             lib.exponential("abm", 1e-3), lib.consistent()),
+  -- The reference of target 2's accuracy (docs/performance.md: "max |dy| vs reference" of the
+  -- cases of the same model: KEC, free spin, consistent normal forces).
+  lib.merge({ label = "reference: KEC dopri5 1e-10, free spin, consistent", role = "reference" },
+            lib.kec(), lib.adaptive("dopri5", 1e-10, 0), lib.consistent(),
+            { ["solver.max_steps"] = 1000000 }),
   lib.merge({ label = "LUT K=7.075e13 BDF 1e-6" }, lib.lut(7.075e13),
             lib.adaptive("bdf", 1e-6, 1e-3)),
   lib.merge({ label = "LUT K=7.075e13 BDF 1e-7 (paper's tolerance)" }, lib.lut(7.075e13),

@@ -48,9 +48,8 @@ end
 -- "Time integration"). At 1 ms the explicit spin oscillates from step to step, bounded only by the
 -- creep law's nonlinearity (case 3 differs by up to 0.5 mm, ws1 y), so `check` refuses it. With
 -- the default solver.stiff = "exponential" (the spin rates and series-damper forces integrated
--- exponentially) ABM is stable at 1 ms, but on case 3 it is 0.27 mm off at the first flange
--- contact (t = 7.6 s, a non-smooth event that a multistep history crosses badly); 0.25 ms keeps
--- every wheelset within 0.04 mm of a tight reference. The paper's explicit 1 ms:
+-- exponentially) ABM is stable at 1 ms (its accuracy over case 3: docs/performance.md, speed
+-- table); the validation cases keep the explicit ABM's stable 0.25 ms. The paper's explicit 1 ms:
 -- --set solver.stiff=explicit --set solver.step=1e-3 --set solver.accept_unstable_step=true.
 function M.abm(speed)
   solver { method = "abm", step = speed <= 10 and 2e-4 or 2.5e-4 }
