@@ -424,11 +424,15 @@ def speed_block(outdir: str) -> str:
     rows = read_csv(os.path.join(outdir, "speed", "study_cost.csv"))
     if not rows:
         return missing("out/studies/speed/study_cost.csv")
-    # Accuracy of the cases of the reference's model (same contact method, spin and coupling:
-    # the study's "model" column) against the reference case.
+    # Accuracy of the cases of the reference's model (same overrides but the solver's: contact
+    # method, spin, coupling) against the reference case.
     ref_row = next((r for r in rows if r.get("role") == "reference" and r["status"] == "ok"),
                    None)
     ref = _wheelset_paths(ref_row["file"]) if ref_row else None
+    # A case's model: its overrides other than the solver's (summary_cases.csv).
+    model_of = {c["case"]: frozenset(o for o in c["overrides"].split()
+                                     if not o.startswith("solver."))
+                for c in read_csv(os.path.join(outdir, "speed", "summary_cases.csv"))}
     # Callgrind instructions per evaluation (`plots/rbplot effects-instructions`), of this build
     # and, when measured, of an earlier one (its --tag names it).
     now = _instructions_by_label(os.path.join(outdir, "speed", "study_speed_instructions.csv"))
@@ -450,7 +454,8 @@ def speed_block(outdir: str) -> str:
         instr = [fmt(num((d.get(r["label"]) or {}).get("instructions_per_eval")),
                      "{:,.0f}") for d in (now, before)]
         same_model = (ref_row is not None and r is not ref_row and
-                      r.get("model") == ref_row.get("model"))
+                      model_of.get(r.get("case")) is not None and
+                      model_of.get(r.get("case")) == model_of.get(ref_row.get("case")))
         dy = fmt(_max_dy_mm(ref, r.get("file", "")) if same_model and ok else None, "{:.3f}")
         body.append([r["label"], r["status"], f"{cpu:.3f} s ({r['cpu_min_s']}-{r['cpu_max_s']})",
                      fmt(factor, "{:.1f}x"), r["rhs_evals"], r["rhs_evals_jac"] or "0",
