@@ -10,18 +10,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <vector>
 
 #include "h5read.hpp"
+#include "scenario_run.hpp"
 #include "workbench/app/assess.hpp"
 #include "workbench/app/run.hpp"
 #include "workbench/core/error.hpp"
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -30,30 +28,14 @@ constexpr const char* kSides[] = {"left", "right"};
 constexpr const char* kAllOn[] = {"run.assessment.safety=true", "run.assessment.stability=true",
                                   "run.assessment.comfort=true", "run.assessment.wear=true"};
 
-std::string tmpOut(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / "rb_test_assessment";
-  fs::create_directories(d);
-  const std::string out = (d / name).string();
-  fs::remove(out);
-  return out;
-}
-
 rb::app::RunOptions options(const std::string& scenario, const std::string& name,
                             const std::vector<std::string>& overrides) {
-  rb::app::RunOptions o;
-  o.scenario = scenario;
-  o.root = RB_SOURCE_DIR;
-  o.out = tmpOut(name);
-  o.overrides = overrides;
-  o.quiet = true;
-  return o;
+  return h5test::quietRun(scenario, h5test::freshResult("rb_test_assessment", name), overrides);
 }
 
 hid_t run(const std::string& scenario, const std::string& name,
           const std::vector<std::string>& overrides) {
-  const auto o = options(scenario, name, overrides);
-  if (rb::app::runScenario(o) != 0) return -1;
-  return H5Fopen(o.out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  return h5test::runAndOpen(options(scenario, name, overrides));
 }
 
 double attr(hid_t f, const std::string& g, const std::string& n) {

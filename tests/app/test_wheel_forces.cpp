@@ -8,14 +8,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "h5read.hpp"
+#include "scenario_run.hpp"
 #include "workbench/app/run.hpp"
-
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -27,25 +25,11 @@ constexpr const char* kWheelsets[] = {"ws1", "ws2", "ws3", "ws4"};
 constexpr const char* kSides[] = {"left", "right"};
 constexpr double kSigma[] = {1.0, -1.0};  // left +1, right -1
 
-std::string tmpOut(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / "rb_test_wheel_forces";
-  fs::create_directories(d);
-  const std::string out = (d / name).string();
-  fs::remove(out);
-  return out;
-}
-
 // Runs scenario (relative to the source tree) with overrides; returns the open result file.
 hid_t run(const std::string& scenario, const std::string& name,
           const std::vector<std::string>& overrides) {
-  rb::app::RunOptions o;
-  o.scenario = scenario;
-  o.root = RB_SOURCE_DIR;
-  o.out = tmpOut(name);
-  o.overrides = overrides;
-  o.quiet = true;
-  if (rb::app::runScenario(o) != 0) return -1;
-  return H5Fopen(o.out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  return h5test::runAndOpen(
+      h5test::quietRun(scenario, h5test::freshResult("rb_test_wheel_forces", name), overrides));
 }
 
 std::string wheel(const char* ws, const char* side) {
