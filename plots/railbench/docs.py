@@ -131,7 +131,9 @@ def coupling_block(build: str) -> Optional[str]:
              "µs / rhs", "Phi evaluations per wheelset solve"], body))
     if not parts:
         return None
-    return (f"From `{build}/dynamics/coupling_*.csv`:\n\n" + "\n\n".join(parts))
+    # The build folder as the reader's checkout names it (relative to the repository root).
+    shown = os.path.relpath(os.path.abspath(build), provenance.ROOT)
+    return (f"From `{shown}/dynamics/coupling_*.csv`:\n\n" + "\n\n".join(parts))
 
 
 # ---- figures -----------------------------------------------------------------------------------

@@ -46,7 +46,7 @@ Signal processing
     octave_band_ratios(...)                  estimate/target averaged per octave band
     fractional_octave_average(...)           1/3-octave band means (display)
 
-Conventions (docs: /work/shared/reference/track_irregularity_psd.md)
+Conventions (docs/track.md, irregularity PSDs)
     Omega = 2*pi/lambda [rad/m].  A one-sided PSD G(Omega) over Omega > 0 satisfies
     variance = integral G dOmega.  With G_f the one-sided PSD in m^2/(cycle/m),
     G_Omega = G_f / (2*pi).
