@@ -82,7 +82,8 @@ TEST(Study, DuplicateCases) {
 TEST(Study, ShippedStudiesValidate) {
   const std::map<std::string, std::size_t> expected = {
       {"efficiency_case3.lua", 51}, {"refinement.lua", 36},
-      {"work_precision.lua", 99},   {"speed.lua", 8},
+      {"work_precision.lua", 99},   {"speed.lua", 9},
+      {"paper_settings.lua", 20},   {"paper_settings_flange.lua", 20},
       {"flange_stiffness.lua", 72}, {"effects.lua", 20},
       {"guided_integrators.lua", 4}};
   for (const auto& [name, count] : expected) {

@@ -28,8 +28,12 @@ std::vector<std::vector<int>> groupColumns(long n, const JacobianPattern& patter
   const auto rows = differenceRows(n, pattern);
   std::vector<int> order(static_cast<std::size_t>(n));
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return rows[static_cast<std::size_t>(a)].size() > rows[static_cast<std::size_t>(b)].size();
+  // Columns with more rows first, ties in column order (the order of a stable sort, without its
+  // temporary buffer, which GCC 12's libstdc++ frees in a way ASan reports as a mismatch).
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    const std::size_t na = rows[static_cast<std::size_t>(a)].size();
+    const std::size_t nb = rows[static_cast<std::size_t>(b)].size();
+    return na != nb ? na > nb : a < b;
   });
   std::vector<std::vector<int>> groups;
   std::vector<std::vector<bool>> used;  // per group: rows taken
