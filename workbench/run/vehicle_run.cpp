@@ -427,9 +427,8 @@ void addWheels(const Model& m, dynamics::ContactVehicleOde& contact, const Eigen
     }
 }
 
-AssessmentSetup setupAssessment(const Model& m, vehicle::VehicleOde& ode,
-                                dynamics::ContactVehicleOde* contact, const Eigen::VectorXd& y0,
-                                std::vector<std::string>& notes) {
+AssessmentSetup setupAssessment(const Model& m, dynamics::ContactVehicleOde* contact,
+                                const Eigen::VectorXd& y0, std::vector<std::string>& notes) {
   AssessmentSetup as;
   as.spec = applicable(m, notes);
   if (!as.spec.any()) return as;
@@ -437,7 +436,6 @@ AssessmentSetup setupAssessment(const Model& m, vehicle::VehicleOde& ode,
   if ((as.spec.safety || as.spec.wear) && contact != nullptr) addWheels(m, *contact, y0, as);
   if (as.spec.stability) addBogiePoints(*m.vehicle, as);
   if (as.spec.comfort) addFloorPoints(*m.vehicle, as);
-  (void)ode;
   return as;
 }
 
@@ -621,7 +619,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     f.attr("/stats", "step_limit_mode", m.step_limit.mode);
   }
   // The assessment samples its own signals at its own interval (nothing when not asked).
-  AssessmentSetup as = setupAssessment(m, *ode, contact, r.y0, out.assessment_notes);
+  AssessmentSetup as = setupAssessment(m, contact, r.y0, out.assessment_notes);
   ExtraSampling extra;
   std::vector<Vector6d> aqdd(nb);
   std::vector<dynamics::WheelOutput> awo(wo.size());
