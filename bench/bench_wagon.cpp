@@ -9,7 +9,7 @@
 // microseconds).
 //   Wagon/{kec,lut}[_free]   the whole rhs (ContactVehicleOde::rhs); _free: free spin (ABM 0.25 ms)
 //   Vehicle                  vehicle::evaluate: 7 bodies (kinematics, mass matrices, inertia and
-//                            gravity forces) and the 48 suspension elements
+//                            gravity forces) and the 50 suspension elements
 //   KecGeometry              the 4 wheelsets' contact constraints: solveKec (warm-started) +
 //                            kecQuadraticTerm + KecTable::evalValues of both contact points
 //   LutGeometry              the 4 wheelsets' LutTable::evalZPhi + evalValues

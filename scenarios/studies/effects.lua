@@ -19,7 +19,7 @@
 --   minimal                no irregularities, bump stops, series dampers
 --   output every 1 ms      run.output.every = 1e-3 instead of 10 ms
 --   body accelerations     run.output.body_accelerations = true
---   element outputs        deflection and force of all 48 elements
+--   element outputs        deflection and force of all 50 elements
 -- jobs = 1: one case at a time, so that parallel cases do not disturb the timings (close other
 -- work while it runs); 5 repeats, median CPU time.
 local cases = {

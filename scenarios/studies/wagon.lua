@@ -8,7 +8,7 @@
 --                             flanges are not reached)
 --   bumpstops = false         vehicle without its lateral bump stops
 --   series_dampers = false    plain dampers instead of the series dampers (manchester_wagon1.lua)
---   element_outputs = true    deflection and force of all 48 elements written (run.output.elements)
+--   element_outputs = true    deflection and force of all 50 elements written (run.output.elements)
 -- The contact block accepts both methods (switch with --set contact.method=lut).
 local common = require "validation.common"
 local lib = require "tracks.lib"

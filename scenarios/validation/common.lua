@@ -56,14 +56,16 @@ function M.abm(speed)
 end
 
 -- Case 1: single wheelset at V = 10 m/s on a 30 m tangent, 50 m transition and 40 m left curve
--- of radius R, no irregularities (Fig. 16, 17, Table 5). The wheelset hangs from a kinematic
--- frame through the Manchester primary suspension (scenarios/vehicles/single_wheelset.lua); with
--- contact it is free in y, psi and theta, with z and phi given by the contact constraints.
-function M.case1(radius, method)
+-- of radius R, no irregularities (Fig. 16, 17, Table 5). The wheelset hangs through the
+-- Manchester primary suspension from a kinematic frame (scenarios/vehicles/single_wheelset.lua):
+-- frame = "bogie" (default) the guided frame of a bogie whose leading wheelset it is, "centred"
+-- a frame at the wheelset itself (the variant in variants/); with contact the wheelset is free in
+-- y, psi and theta, with z and phi given by the contact constraints.
+function M.case1(radius, method, frame)
   track { segments = lib.validation(radius), step = 0.5 }
   M.profiles()
   M.contact(method)
-  vehicle (require "vehicles.single_wheelset" { speed = 10 })
+  vehicle (require "vehicles.single_wheelset" { speed = 10, frame = frame })
   M.abm(10)
   -- The assessment (docs/assessment.md): a single wheelset on a frame gives the running safety
   -- (Y/Q, sum Y, dQ/Q, wheel forces) and wear (T gamma); stability needs a bogie, comfort a car.
@@ -74,7 +76,8 @@ end
 -- left curve of R = 500 m (Fig. 18-22, Table 6), case 3 with the ORE B176 low irregularities of
 -- scenarios/tracks/manchester_r500_irregular.lua (seed 42). The study bases (method "study") ask
 -- for no assessment: a study measures the cost of the model, not of the assessment's sampling.
-function M.wagon(method, irregular)
+-- anti_roll_bar = false: the wagon with the paper's Table 4 elements alone (variants/).
+function M.wagon(method, irregular, anti_roll_bar)
   local irr = nil
   if irregular then
     irr = psd { spectrum = "ore_b176_low", seed = 42, wavelengths = { 3, 70 }, step = 0.1 }
@@ -82,7 +85,7 @@ function M.wagon(method, irregular)
   track { segments = lib.manchester_r500(), step = 0.5, irregularities = irr }
   M.profiles()
   M.contact(method)
-  vehicle (require "vehicles.manchester_wagon1" { speed = 20 })
+  vehicle (require "vehicles.manchester_wagon1" { speed = 20, anti_roll_bar = anti_roll_bar })
   M.abm(20)
   -- The assessment (docs/assessment.md): EN 14363 running safety and stability, EN 12299 and
   -- Sperling comfort over the bogie centres and mid-car, T gamma wear.

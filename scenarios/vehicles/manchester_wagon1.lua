@@ -1,9 +1,12 @@
 -- Manchester benchmark vehicle 1 (Iwnicki 1998) as used by the founding paper (Yu et al.,
--- section 5.1): 1 car body, 2 bogie frames, 4 wheelsets, 48 suspension elements (Table 4).
+-- section 5.1): 1 car body, 2 bogie frames, 4 wheelsets, the 48 suspension elements of Table 4
+-- and the two anti-roll bars of the benchmark data [MB] (50 elements).
 -- Usage:  local wagon = require "vehicles.manchester_wagon1"
 --         vehicle (wagon { speed = 20 })
 -- Options (defaults: the full model): speed [m/s] = 20, start [m] = 0,
---   bumpstops = false        leaves out the two lateral bump stops (46 elements)
+--   bumpstops = false        leaves out the two lateral bump stops (2 elements fewer)
+--   anti_roll_bar = false    leaves out the two anti-roll bars: the paper's Table 4 alone (48
+--                            elements with the bump stops)
 --   series_dampers = false   the 16 series dampers (primary and secondary vertical, secondary
 --                            lateral) become plain dampers: vertical Kz in parallel with Dz (no
 --                            series stiffness), lateral Dsy alone (no series stiffness Ksy); 16
@@ -23,6 +26,7 @@ return function(opts)
   opts = opts or {}
   local with_bumpstops = opts.bumpstops ~= false
   local with_series = opts.series_dampers ~= false
+  local with_anti_roll = opts.anti_roll_bar ~= false
   -- A series damper, or with series_dampers = false the plain damper (and parallel spring).
   local function damper(e)
     if with_series then return series_damper(e) end
@@ -121,6 +125,16 @@ return function(opts)
     add(spring_damper { name = "sec_x_" .. bogie, from = "car", to = bogie,
                         at_from = at_car(0, h_sec), at_to = at_bg(0, h_sec), direction = "x",
                         stiffness = 5000e3, damping = 25e3 })
+    -- Anti-roll bar: roll stiffness Kr 940 kN m/rad between car and bogie [MB] (the paper's
+    -- Table 4 does not list it). ASSUMPTION: 1/bogie (the reference file gives one value and no
+    -- count; a torsion bar per bogie is the usual arrangement), a bending spring about the
+    -- longitudinal axis (relative roll of car and bogie) at the secondary suspension height on the
+    -- bogie centre (its position does not enter a bending spring's moment).
+    if with_anti_roll then
+      add(bending_spring { name = "anti_roll_" .. bogie, from = "car", to = bogie,
+                           at_from = at_car(0, h_sec), at_to = at_bg(0, h_sec), direction = "x",
+                           stiffness = 940e3 })
+    end
     -- Lateral bump stop, table above [T4]; ASSUMPTION: 1/bogie on the bogie centre line, at the
     -- bump-stop height 0.65 m [MB].
     if with_bumpstops then

@@ -1,15 +1,32 @@
 -- Single wheelset of the paper's case 1 (Yu et al., section 5.2: V = 10 m/s on the
 -- wheelset_validation_R* tracks). The paper does not say how the wheelset is loaded or held.
--- ASSUMPTION (docs/vehicle.md): the wheelset hangs from a kinematic frame that follows the track
--- centreline at constant speed (kind = "frame"), through the primary suspension of one axle of
--- the Manchester wagon ([T4] paper Table 4), and carries a quarter of the wagon's sprung weight,
--- applied as a constant vertical load on each axle box.
+-- ASSUMPTION (docs/vehicle.md, section 5): the wheelset is the leading wheelset of a bogie whose
+-- frame is guided along the track: a kinematic frame (kind = "frame") follows the track
+-- centreline at constant speed, its centre the bogie semi-wheelbase 1.28 m behind the wheelset,
+-- and holds the wheelset through the primary suspension of one axle of the Manchester wagon ([T4]
+-- paper Table 4) at the axle-box positions of the wagon. The wheelset carries a quarter of the
+-- wagon's sprung weight, applied as a constant vertical load on each axle box. Why this set-up:
+-- the paper's only vehicle data are the Manchester wagon's (Tables 2 and 4), whose primary
+-- suspension joins each wheelset to a bogie frame centred 1.28 m from it; and its Table 5 puts
+-- the single wheelset at -8.83 mm on R = 500 m, where its Table 6 puts the wagon's leading
+-- wheelsets (-8.83 mm): the single wheelset behaves as a leading wheelset, in flange contact.
+-- Options: speed [m/s] = 10, start [m] = 0 (the frame centre's start position; the wheelset is
+--   1.28 m ahead of it),
+--   frame = "bogie" (default, above) | "centred": the frame on the centreline at the wheelset
+--           itself (a wheelset in the middle of a bogie, held by the primary suspension without
+--           the frame's yaw against the curve), kept as a variant:
+--           scenarios/validation/variants/.
 -- Usage:  local ws = require "vehicles.single_wheelset"
 --         vehicle (ws { speed = 10 })
 -- Sources: [T2] paper Table 2; [T4] paper Table 4; [MB] Manchester benchmark vehicle 1 (Iwnicki,
 -- Vehicle System Dynamics 30, 1998).
 return function(opts)
   opts = opts or {}
+  local frame = opts.frame or "bogie"
+  assert(frame == "bogie" or frame == "centred",
+         "single_wheelset: frame must be \"bogie\" or \"centred\", got " .. tostring(frame))
+  -- [MB] bogie semi-wheelbase: the wheelset's position ahead of the frame centre
+  local a_axle = frame == "bogie" and 1.28 or 0
   local r0 = 0.46       -- [MB] nominal wheel radius
   local h_frame = 0.6   -- [MB] bogie frame CoG height (the frame stands in for the bogie)
   local b_prim = 1.0    -- [MB] primary lateral semi-spacing
@@ -22,7 +39,7 @@ return function(opts)
   local function add(e) elements[#elements + 1] = e end
   for _, side in ipairs({ { "l", 1 }, { "r", -1 } }) do
     local tag, sy = side[1], side[2]
-    local at_frame = { 0, sy * b_prim, r0 - h_frame }
+    local at_frame = { a_axle, sy * b_prim, r0 - h_frame }
     local at_ws = { 0, sy * b_prim, 0 }
     -- Primary vertical [T4]: Kpz 1220 kN/m in parallel with Dpz 4 kN s/m / Kseries 1000 kN/m.
     add(series_damper { name = "prim_z_" .. tag, from = "frame", to = "ws", at_from = at_frame,
@@ -51,8 +68,8 @@ return function(opts)
       body { name = "frame", kind = "frame", mass = 1, inertia = { 1, 1, 1 }, x = 0,
              height = h_frame },
       -- [T2] wheelset: 1813 kg, Ixx 1120, Iyy 112, Izz 1120 kg m^2
-      body { name = "ws", kind = "wheelset", mass = 1813, inertia = { 1120, 112, 1120 }, x = 0,
-             height = r0 },
+      body { name = "ws", kind = "wheelset", mass = 1813, inertia = { 1120, 112, 1120 },
+             x = a_axle, height = r0 },
     },
     elements = elements,
   }

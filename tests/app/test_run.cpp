@@ -182,7 +182,7 @@ TEST(Run, ContactRunWritesElementsAndBodyAccelerations) {
     H5Gget_num_objs(g, &n);
     H5Gclose(g);
     elements = static_cast<int>(n);
-    EXPECT_EQ(elements, 48) << method;
+    EXPECT_EQ(elements, 50) << method;
     H5Fclose(f);
   }
 }

@@ -246,7 +246,7 @@ TEST_F(Manchester, ModeTableAndRhsCost) {
   for (int k = 0; k < n; ++k) ode.rhs(1e-4 * k, y0.data(), yd.data());
   const double us =
       std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count() / n;
-  std::printf("rhs: %.2f us per evaluation (7 bodies, 48 elements, %d states)\n", us, ode.size());
+  std::printf("rhs: %.2f us per evaluation (7 bodies, 50 elements, %d states)\n", us, ode.size());
 }
 
 // The workspace reuses the track frames and the body-pair placements (Workspace::pair_A, pair_R)

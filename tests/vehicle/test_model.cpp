@@ -27,7 +27,17 @@ std::string errorsOf(const VehicleSpec& spec) {
   return "<no error>";
 }
 
-TEST(ManchesterWagon, FortyEightTable4ElementsGroupedByKind) {
+// anti_roll_bar = false leaves the paper's Table 4 alone: 48 elements, no roll coupling of car and
+// bogie besides the springs.
+TEST(ManchesterWagon, WithoutAntiRollBarsTheTable4Count) {
+  const scenario::ScenarioSpec s = rbtest::loadTestScenario("manchester_table4.lua");
+  ASSERT_TRUE(s.has_vehicle);
+  EXPECT_EQ(s.vehicle.elements.size(), 48u);
+  for (const ElementSpec& e : s.vehicle.elements)
+    EXPECT_EQ(e.name.find("anti_roll"), std::string::npos) << e.name;
+}
+
+TEST(ManchesterWagon, Table4ElementsAndAntiRollBarsGroupedByKind) {
   const VehicleModel m = compileVehicle(rbtest::manchesterWagon(), straight());
   ASSERT_EQ(m.bodies.size(), 7u);
   // Table 4, per bogie (x 2 bogies = 48), one element per row group and location:
@@ -35,11 +45,12 @@ TEST(ManchesterWagon, FortyEightTable4ElementsGroupedByKind) {
   //   (Kpx || Dpx) + lateral (Kpy || Dpy)                                            = 12
   //   secondary: vertical (Ksz || Dsz-Kseries_sz) 2 + shear x 2 + shear y 2 + bending 2
   //   + longitudinal (Ksx || Dsx) 1 + lateral (Dsy-Ksy) 2 + lateral bumpstop 1        = 12
-  EXPECT_EQ(m.elementCount(), 48);
+  // and the anti-roll bar of the Manchester benchmark data, 1/bogie (a bending spring about x).
+  EXPECT_EQ(m.elementCount(), 50);
   EXPECT_EQ(m.series_dampers.size(), 16u);  // 8 primary + 4 secondary vertical + 4 secondary y
   EXPECT_EQ(m.spring_dampers.size(), 18u);  // 16 primary x/y + 2 secondary x
   EXPECT_EQ(m.shear_springs.size(), 8u);
-  EXPECT_EQ(m.bending_springs.size(), 4u);
+  EXPECT_EQ(m.bending_springs.size(), 6u);  // 4 secondary yaw bending + 2 anti-roll bars
   EXPECT_EQ(m.bumpstops.size(), 2u);
   EXPECT_EQ(m.element_kinds,
             (std::vector<std::string>{"spring_damper", "series_damper", "shear_spring",
@@ -54,8 +65,8 @@ TEST(ManchesterWagon, FortyEightTable4ElementsGroupedByKind) {
   }
   EXPECT_EQ(per["primary bogie1"], 12);
   EXPECT_EQ(per["primary bogie2"], 12);
-  EXPECT_EQ(per["secondary bogie1"], 12);
-  EXPECT_EQ(per["secondary bogie2"], 12);
+  EXPECT_EQ(per["secondary bogie1"], 13);
+  EXPECT_EQ(per["secondary bogie2"], 13);
   // Lookup by name.
   const auto id = m.findElement("bump_y_bogie2");
   ASSERT_TRUE(id.has_value());
@@ -207,7 +218,7 @@ TEST(LuaVehicles, ManchesterFileHasTheTable2And4Values) {
   EXPECT_DOUBLE_EQ(v.start, 20.0);
   EXPECT_DOUBLE_EQ(v.wheel_radius, 0.46);
   ASSERT_EQ(v.bodies.size(), 7u);
-  ASSERT_EQ(v.elements.size(), 48u);
+  ASSERT_EQ(v.elements.size(), 50u);
   std::map<std::string, const BodySpec*> body;
   for (const BodySpec& b : v.bodies) body[b.name] = &b;
   std::map<std::string, const ElementSpec*> el;
@@ -242,6 +253,8 @@ TEST(LuaVehicles, ManchesterFileHasTheTable2And4Values) {
   // Ksy is the series stiffness of the lateral damper Dsy; no parallel spring (docs/vehicle.md).
   check("sec_y_bogie2_l", K::SeriesSpringDamper, Direction::Y, 0.0, 32e3, 6000e3);
   check("sec_x_bogie1", K::SpringDamper, Direction::X, 5000e3, 25e3, 0.0);
+  // Anti-roll bar Kr 940 kN m/rad [MB], a bending spring about the longitudinal axis.
+  check("anti_roll_bogie2", K::BendingSpring, Direction::X, 940e3, 0.0, 0.0);
   ASSERT_TRUE(el.count("bump_y_bogie2"));
   EXPECT_EQ(el["bump_y_bogie2"]->table_d.size(), 10u);
   EXPECT_DOUBLE_EQ(el["bump_y_bogie2"]->table_d[1], 0.025);

@@ -1,0 +1,5 @@
+-- Paper section 5.2, case 1 (KEC), R = 700 m, variant: the wheelset's frame on the centreline at the
+-- wheelset itself (no bogie-frame yaw against the curve), beside the shipped set-up of
+-- ../case1_R700_kec.lua (the guided frame of a bogie whose leading wheelset it is).
+-- docs/validation.md compares both with the paper's Table 5.
+require("validation.common").case1(700, "kec", "centred")
