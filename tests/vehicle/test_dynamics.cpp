@@ -387,13 +387,19 @@ TEST(Curving, QuasiStaticForceBalanceOfCantedCurve) {
   const double Fz_p = 0.5 * (Fz_hand[1] + Fz_hand[2]) + Fz_c / 2;
   // Roll of car (phi_c) and bogies (phi_b) relative to their track frames, first order: moments
   // about the CoM of the lateral forces (lever arms a_c, a_b, p_b), of the vertical spring pairs
-  // (k b^2 per spring) and of the vertical loads through the rolled attachment points:
-  //   car:   a_c F_c + 4 k_sz b^2 (phi_b - phi_c) + a_c Fz_c phi_c = 0
-  //   bogie: a_b F_c/2 + 2 k_sz b^2 (phi_c - phi_b) + a_b (Fz_c/2) phi_b
+  // (k b^2 per spring), of the anti-roll bar (k_r per bogie, a bending spring about x) and of the
+  // vertical loads through the rolled attachment points:
+  //   car:   a_c F_c + (4 k_sz b^2 + 2 k_r) (phi_b - phi_c) + a_c Fz_c phi_c = 0
+  //   bogie: a_b F_c/2 + (2 k_sz b^2 + k_r) (phi_c - phi_b) + a_b (Fz_c/2) phi_b
   //          - 4 k_pz b^2 phi_b + p_b Fz_p phi_b + p_b F_p = 0
+  double k_r = 0.0;  // roll stiffness of one anti-roll bar (the wagon file's value)
+  for (const BendingSpringElement& e : m.bending_springs)
+    if (e.g.name == "anti_roll_bogie1") k_r = e.stiffness;
+  EXPECT_EQ(k_r, 940e3);                             // [MB] anti-roll bar Kr
+  const double k_roll_sec = 2 * k_sz * b * b + k_r;  // car-bogie roll stiffness per bogie
   Eigen::Matrix2d A;
-  A << -4 * k_sz * b * b + a_c * Fz_c, 4 * k_sz * b * b,  //
-      2 * k_sz * b * b, -2 * k_sz * b * b + a_b * Fz_c / 2 - 4 * k_pz * b * b + p_b * Fz_p;
+  A << -2 * k_roll_sec + a_c * Fz_c, 2 * k_roll_sec,  //
+      k_roll_sec, -k_roll_sec + a_b * Fz_c / 2 - 4 * k_pz * b * b + p_b * Fz_p;
   const Eigen::Vector2d roll =
       A.lu().solve(Eigen::Vector2d(-a_c * F_c, -(a_b * F_c / 2 + p_b * F_p)));
   // Chord offsets: the bogie track frames (+-9.5 m) and the wheelset track frames (+-1.28 m from
