@@ -14,7 +14,10 @@ reads OUT_DIR/summary_cases.csv and the result file of each case and writes, bes
     validation_cost.csv     per case: status, CPU time (median, min, max over the repeats), real
                             time factor, rhs evaluations, steps
     study_fig*.png          the paper's Fig. 17, 19-22 and 27 (railbench/validation_figs.py),
-                            which docs/validation.md shows as figures/validation_fig*.png
+                            which docs/validation.md shows as figures/validation_fig*.png; Fig. 27
+                            runs the workbench ($RAILBENCH_WORKBENCH, else this checkout's
+                            build/workbench/app/workbench) on a bump-stop rig
+                            (OUT_DIR/bumpstop_law.lua, .h5)
 
 `plots/rbplot docs` turns them into the generated tables of docs/validation.md. The case is
 read from its base scenario's name (case1_R300_kec.lua, case2_lut.lua, ...), the solver from the
