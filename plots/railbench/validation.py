@@ -13,6 +13,11 @@ reads OUT_DIR/summary_cases.csv and the result file of each case and writes, bes
                             max |y_LUT| [%], and max |y_LUT| [mm]
     validation_cost.csv     per case: status, CPU time (median, min, max over the repeats), real
                             time factor, rhs evaluations, steps
+    study_fig*.png          the paper's Fig. 17, 19-22 and 27 (railbench/validation_figs.py),
+                            which docs/validation.md shows as figures/validation_fig*.png; Fig. 27
+                            runs the workbench ($RAILBENCH_WORKBENCH, else this checkout's
+                            build/workbench/app/workbench) on a bump-stop rig
+                            (OUT_DIR/bumpstop_law.lua, .h5)
 
 `plots/rbplot docs` turns them into the generated tables of docs/validation.md. The case is
 read from its base scenario's name (case1_R300_kec.lua, case2_lut.lua, ...), the solver from the
@@ -26,6 +31,8 @@ from typing import Dict, List, Optional, Tuple
 
 import h5py
 import numpy as np
+
+from . import validation_figs
 
 CASE1_S = (110.0, 120.0)   # m: the last 10 m of case 1's 40 m curve (Table 5)
 CASE2_T = (20.0, 24.0)     # s: the whole wagon in the curve (front past s = 172 m), Table 6
@@ -124,7 +131,7 @@ def write_csv(path: str, rows: List[dict], fields: List[str]):
         w.writerows(rows)
 
 
-def make(outdir: str) -> List[str]:
+def make(outdir: str, workbench: Optional[str] = None) -> List[str]:
     sc = os.path.join(outdir, "summary_cases.csv")
     if not os.path.exists(sc):
         raise SystemExit(f"railbench validation-tables: {sc} missing (run ./wb studies --only validation)")
@@ -132,6 +139,7 @@ def make(outdir: str) -> List[str]:
         cases = list(csv.DictReader(fh))
     steady_rows, cost_rows = [], []
     by_key: Dict[Tuple[int, str, str, str], dict] = {}
+    scenario_files: Dict[Tuple[int, str, str], str] = {}  # the figures' runs
     for r in cases:
         parsed = parse_case(r.get("base", ""))
         if parsed is None:
@@ -152,6 +160,8 @@ def make(outdir: str) -> List[str]:
                           "steps": r.get("steps", ""), "rejected_steps": r.get("rejected_steps", ""),
                           "message": r.get("message", "")})
         path = _file(outdir, r)
+        if solver.startswith("scenario") and path:
+            scenario_files[(case, radius, method)] = path
         if case in (1, 2) and solver.startswith("scenario") and path:
             for b in steady(path, case):
                 steady_rows.append(dict(b, case=case, radius_m=radius, method=method,
@@ -181,6 +191,8 @@ def make(outdir: str) -> List[str]:
         p = os.path.join(outdir, name)
         write_csv(p, rows, fields)
         written.append(p)
+    written += validation_figs.make_figures(outdir, scenario_files, workbench or
+                                            validation_figs.WORKBENCH)
     return written
 
 
