@@ -7,7 +7,8 @@ reads OUT_DIR/summary_cases.csv and the result file of each case and writes, bes
     validation_steady.csv   steady-curving mean y [mm] and yaw [mrad] of every body (paper
                             Tables 5 and 6): case 1 over s = 110..120 m of the wheelset (the last
                             10 m of the 40 m curve), case 2 over t = 20..24 s (the whole wagon in
-                            the curve); scenario solver (ABM) runs only
+                            the curve); scenario solver (ABM) runs only, column `variant` the
+                            set-up variant (scenarios/validation/variants/; "" = shipped)
     validation_case3.csv    Eq. (33) difference of the wheelsets' y between the KEC and the LUT
                             run of case 3 (same solver): max and mean of |y_KEC - y_LUT| /
                             max |y_LUT| [%], and max |y_LUT| [mm]
@@ -39,12 +40,23 @@ CASE2_T = (20.0, 24.0)     # s: the whole wagon in the curve (front past s = 172
 KIND_ORDER = {"wheelset": 0, "bogie": 1, "car": 2}
 
 
+CASE_RE = r"case(\d)(?:_R(\d+))?_(kec|lut)(?:_(centred|table4))?\.lua$"
+
+
 def parse_case(base: str) -> Optional[Tuple[int, str, str]]:
-    """(case number, radius or "", method) from the base scenario's file name."""
-    m = re.search(r"case(\d)(?:_R(\d+))?_(kec|lut)\.lua$", base or "")
+    """(case number, radius or "", method) from the base scenario's file name (a set-up variant
+    of scenarios/validation/variants/ parses as its case; `variant` tells them apart)."""
+    m = re.search(CASE_RE, base or "")
     if not m:
         return None
     return int(m.group(1)), m.group(2) or "", m.group(3)
+
+
+def variant(base: str) -> str:
+    """The set-up variant of a validation scenario: "" for the shipped set-up, "centred" (case 1,
+    the frame at the wheelset itself), "table4" (case 2, the paper's Table 4 elements alone)."""
+    m = re.search(CASE_RE, base or "")
+    return (m.group(4) or "") if m else ""
 
 
 def solver_label(overrides: str, row: dict) -> str:
@@ -146,6 +158,15 @@ def make(outdir: str, workbench: Optional[str] = None) -> List[str]:
             continue
         case, radius, method = parsed
         solver = solver_label(r.get("overrides", ""), r)
+        var = variant(r.get("base", ""))
+        if var:
+            # Set-up variants: their steady-curving values only, beside the shipped set-up.
+            path = _file(outdir, r)
+            if case in (1, 2) and path:
+                for b in steady(path, case):
+                    steady_rows.append(dict(b, case=case, radius_m=radius, method=method,
+                                            variant=var, status=r.get("status", "")))
+            continue
         by_key[(case, radius, method, solver)] = r
         cpu = float(r.get("median_cpu_time_s") or 0)
         t = float(r.get("t_reached") or 0)
@@ -165,7 +186,7 @@ def make(outdir: str, workbench: Optional[str] = None) -> List[str]:
         if case in (1, 2) and solver.startswith("scenario") and path:
             for b in steady(path, case):
                 steady_rows.append(dict(b, case=case, radius_m=radius, method=method,
-                                        status=r.get("status", "")))
+                                        variant="", status=r.get("status", "")))
     c3 = []
     for (case, radius, method, solver), r in sorted(by_key.items()):
         if case != 3 or method != "kec":
@@ -179,8 +200,8 @@ def make(outdir: str, workbench: Optional[str] = None) -> List[str]:
     written = []
     for name, rows, fields in (
             ("validation_steady.csv", steady_rows,
-             ["case", "radius_m", "method", "body", "y_mm", "yaw_mrad", "window", "samples",
-              "status"]),
+             ["case", "radius_m", "method", "variant", "body", "y_mm", "yaw_mrad", "window",
+              "samples", "status"]),
             ("validation_case3.csv", c3,
              ["solver", "wheelset", "eq33_max_percent", "eq33_mean_percent", "max_abs_y_lut_mm",
               "kec_status", "lut_status"]),
