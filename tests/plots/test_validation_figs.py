@@ -226,3 +226,19 @@ def test_fig27_bumpstop_law_from_the_rig():
           "axes and units")
     save_figure(fig, os.path.join(d, "fig27.png"))
     check(os.path.getsize(os.path.join(d, "fig27.png")) > 20000, "Fig. 27 written")
+
+
+def test_set_up_variants_parse_as_their_case_and_are_told_apart():
+    """The variants of scenarios/validation/variants/ parse as their case and method, carry
+    their variant tag, and the shipped scenarios carry none."""
+    base = "../validation/variants/case1_R300_kec_centred.lua"
+    check(vt.parse_case(base) == (1, "300", "kec"), f"parse {base}")
+    check(vt.variant(base) == "centred", f"variant of {base}")
+    base = "../validation/variants/case2_lut_table4.lua"
+    check(vt.parse_case(base) == (2, "", "lut"), f"parse {base}")
+    check(vt.variant(base) == "table4", f"variant of {base}")
+    check(vt.variant("../validation/case2_lut.lua") == "", "shipped case 2 has no variant")
+    check(vt.parse_case("../validation/variants/case2_lut_other.lua") is None,
+          "an unknown variant is not taken for a case")
+    for f in os.listdir(os.path.join(ROOT, "scenarios", "validation", "variants")):
+        check(vt.parse_case(f) is not None and vt.variant(f), f"shipped variant {f} parses")
