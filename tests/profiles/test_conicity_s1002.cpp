@@ -138,21 +138,12 @@ TEST(EquivalentConicityS1002, JumpsKeptSharp) {
 
   const RollingRadiusDifference exact = rb::contact::conicityInput(rr),
                                 fine = micrometreSampled(s, true), smeared(rr.y, rr.delta_r);
-  // The solver's own jump (micrometre continuation) lies within a few micrometres of the located
-  // one: the last sample before the jump still holds the inner branch.
-  for (const auto& j : rr.jumps) {
-    const double before = j.y < 0.0 ? j.y + 3e-6 : j.y - 3e-6;
-    const double after = j.y < 0.0 ? j.y - 3e-6 : j.y + 3e-6;
-    const double inner = j.y < 0.0 ? j.delta_r_right : j.delta_r_left;
-    const double outer = j.y < 0.0 ? j.delta_r_left : j.delta_r_right;
-    EXPECT_NEAR(fine.dr(before), inner, 0.05 * std::abs(outer - inner)) << j.y;
-    EXPECT_NEAR(fine.dr(after), outer, 0.05 * std::abs(outer - inner)) << j.y;
-  }
-
   ASSERT_EQ(fine.jumps().size(), rr.jumps.size());
   for (std::size_t i = 0; i < rr.jumps.size(); ++i) {
     std::printf("jump at %+.6f mm, the solver's 1 um continuation switches at %+.6f mm\n",
                 rr.jumps[i].y * 1e3, fine.jumps()[i].y * 1e3);
+    // The solver's own switch (sampled penetration check) lies within half a micrometre.
+    EXPECT_NEAR(fine.jumps()[i].y, rr.jumps[i].y, 0.5e-6);
   }
   std::printf("y-hat [mm]   exact jumps   1 um samples   interpolated across (0.1 mm)\n");
   // Tolerance 1 %, except 0.01 mm beyond the central tread jump: there the oscillation (0.24 mm)
