@@ -113,74 +113,112 @@ struct SteppedCone {
   }
 };
 
+// Samples of a stepped cone on a 0.1 mm grid (-10..10 mm), its jumps, and the same with every
+// jump written as a repeated y.
+struct SteppedSamples {
+  std::vector<double> y, dr, y_repeated, dr_repeated;
+  std::vector<DrJump> jumps;
+};
+
+SteppedSamples sample(const SteppedCone& sc) {
+  SteppedSamples out;
+  const double inner = 2.0 * sc.g * sc.yj;
+  if (sc.both) out.jumps.push_back({-sc.yj, -inner - sc.D, -inner});
+  out.jumps.push_back({sc.yj, inner, inner + sc.D});
+  std::size_t next = 0;
+  for (int i = -100; i <= 100; ++i) {
+    const double yi = 0.1 * i;
+    for (; next < out.jumps.size() && out.jumps[next].y < yi; ++next) {
+      out.y_repeated.insert(out.y_repeated.end(), {out.jumps[next].y, out.jumps[next].y});
+      out.dr_repeated.insert(out.dr_repeated.end(), {out.jumps[next].left, out.jumps[next].right});
+    }
+    out.y.push_back(yi);
+    out.dr.push_back(sc.dr(yi));
+    out.y_repeated.push_back(yi);
+    out.dr_repeated.push_back(sc.dr(yi));
+  }
+  return out;
+}
+
+// tan(gamma_e) with the turning point `above` beyond the step: closed form, exact jumps (both
+// inputs), and (printed) the samples interpolated across the step.
+void checkBeyondStep(const SteppedCone& sc, const RollingRadiusDifference& exact,
+                     const RollingRadiusDifference& repeated,
+                     const RollingRadiusDifference& smeared, double above) {
+  const double a = sc.yj + above, ref = sc.tanGammaE(a);
+  const double t = exact.tanGammaE(a), ts = smeared.tanGammaE(a);
+  EXPECT_NEAR(t, ref, 1e-6 * ref) << "both " << sc.both << " a " << a;
+  EXPECT_EQ(repeated.tanGammaE(a), t) << "both " << sc.both << " a " << a;
+  std::printf(
+      "stepped cone (%s): y-hat = yj + %.2f mm: closed form %.8f, exact jumps %.8f (%+.1e), "
+      "interpolated across the step %.8f (%+.2f %%)\n",
+      sc.both ? "both sides" : "one side", above, ref, t, t / ref - 1.0, ts,
+      100.0 * (ts / ref - 1.0));
+  RollingRadiusDifference::Oscillation o;
+  ASSERT_TRUE(exact.oscillation(a, o));
+  EXPECT_NEAR(o.y2, sc.rightTurn(o.level), 1e-9);
+  EXPECT_NEAR(o.y2 - o.y1, 2.0 * a, 1e-9);
+}
+
 // The conicity of a cone with rolling-radius steps just beyond a step (the turning point 0.01,
 // 0.1, 0.5 mm past it): exact to 1e-6 with the steps given as jumps, both as an explicit jump list
 // and as a repeated y; interpolating the same 0.1 mm samples across the step is biased.
-TEST(EquivalentConicity, JumpsAreExact) {
-  for (const bool both : {true, false}) {
-    SteppedCone sc;
-    sc.both = both;
-    std::vector<double> y, dr, yr, drr;
-    std::vector<DrJump> jumps{{sc.yj, 2.0 * sc.g * sc.yj, 2.0 * sc.g * sc.yj + sc.D}};
-    if (both)
-      jumps.insert(jumps.begin(), {-sc.yj, -2.0 * sc.g * sc.yj - sc.D, -2.0 * sc.g * sc.yj});
-    std::size_t next = 0;
-    for (int i = -100; i <= 100; ++i) {
-      const double yi = 0.1 * i;
-      for (; next < jumps.size() && jumps[next].y < yi; ++next) {
-        yr.insert(yr.end(), {jumps[next].y, jumps[next].y});
-        drr.insert(drr.end(), {jumps[next].left, jumps[next].right});
-      }
-      y.push_back(yi);
-      dr.push_back(sc.dr(yi));
-      yr.push_back(yi);
-      drr.push_back(sc.dr(yi));
-    }
-    const RollingRadiusDifference exact(y, dr, jumps), repeated(yr, drr), smeared(y, dr);
-    ASSERT_EQ(exact.jumps().size(), jumps.size());
-    EXPECT_NEAR(exact.centre(), 0.0, 1e-12);
-    EXPECT_EQ(exact.dr(sc.yj), jumps.back().right);
-    EXPECT_NEAR(exact.dr(sc.yj - 1e-9), jumps.back().left, 1e-9);
-    for (const double above : {0.01, 0.1, 0.5}) {
-      const double a = sc.yj + above, ref = sc.tanGammaE(a);
-      const double t = exact.tanGammaE(a);
-      EXPECT_NEAR(t, ref, 1e-6 * ref) << "both " << both << " a " << a;
-      EXPECT_EQ(repeated.tanGammaE(a), t) << "both " << both << " a " << a;
-      const double ts = smeared.tanGammaE(a);
-      std::printf(
-          "stepped cone (%s): y-hat = yj + %.2f mm: closed form %.8f, exact jumps %.8f (%+.1e), "
-          "interpolated across the step %.8f (%+.2f %%)\n",
-          both ? "both sides" : "one side", above, ref, t, t / ref - 1.0, ts,
-          100.0 * (ts / ref - 1.0));
-      if (both) {
-        RollingRadiusDifference::Oscillation o;
-        ASSERT_TRUE(exact.oscillation(a, o));
-        EXPECT_NEAR(o.y2, a, 1e-9);
-        EXPECT_NEAR(o.y1, -a, 1e-9);
-      }
-    }
-    // Below the step the jumps play no part: the cone.
-    EXPECT_NEAR(exact.tanGammaE(3.0), sc.g, 1e-6 * sc.g);
-  }
+void checkSteppedCone(bool both) {
+  SteppedCone sc;
+  sc.both = both;
+  const SteppedSamples sm = sample(sc);
+  const RollingRadiusDifference exact(sm.y, sm.dr, sm.jumps),
+      repeated(sm.y_repeated, sm.dr_repeated), smeared(sm.y, sm.dr);
+  ASSERT_EQ(exact.jumps().size(), sm.jumps.size());
+  EXPECT_NEAR(exact.centre(), 0.0, 1e-12);
+  EXPECT_EQ(exact.dr(sc.yj), sm.jumps.back().right);
+  EXPECT_NEAR(exact.dr(sc.yj - 1e-9), sm.jumps.back().left, 1e-9);
+  for (const double above : {0.01, 0.1, 0.5}) checkBeyondStep(sc, exact, repeated, smeared, above);
+  // Below the step the jumps play no part: the cone.
+  EXPECT_NEAR(exact.tanGammaE(3.0), sc.g, 1e-6 * sc.g);
 }
 
-// A jump through zero (a dead band-free step at the centre) and misplaced jumps.
+TEST(EquivalentConicity, JumpsAreExact) {
+  checkSteppedCone(true);
+  checkSteppedCone(false);
+}
+
+// A step through zero at the centre (given at a sample position, which it replaces).
+TEST(EquivalentConicity, JumpThroughZero) {
+  std::vector<double> y, dr;
+  for (int i = -50; i <= 50; ++i) {
+    y.push_back(0.1 * i);
+    dr.push_back(0.02 * i + 0.1 * ((i > 0) - (i < 0)));
+  }
+  const RollingRadiusDifference f(y, dr, {{0.0, -0.1, 0.1}});
+  EXPECT_NEAR(f.centre(), 0.0, 1e-12);
+  EXPECT_TRUE(std::isfinite(f.tanGammaE(1.0)));
+}
+
+bool rejected(const std::vector<double>& y, const std::vector<double>& dr,
+              const std::vector<DrJump>& jumps) {
+  try {
+    const RollingRadiusDifference f(y, dr, jumps);
+  } catch (const std::exception&) {
+    return true;
+  }
+  return false;
+}
+
+// Jumps outside the data or at its ends, and a y given three times, are rejected.
 TEST(EquivalentConicity, JumpInputChecks) {
   std::vector<double> y, dr;
   for (int i = -50; i <= 50; ++i) {
     y.push_back(0.1 * i);
-    dr.push_back(0.2 * 0.1 * i + (i > 0 ? 0.1 : (i < 0 ? -0.1 : 0.0)));
+    dr.push_back(0.02 * i);
   }
-  // Step through zero at y = 0 (replacing the sample there): centre on the step.
-  const RollingRadiusDifference f(y, dr, {{0.0, -0.1, 0.1}});
-  EXPECT_NEAR(f.centre(), 0.0, 1e-12);
-  EXPECT_TRUE(std::isfinite(f.tanGammaE(1.0)));
-  EXPECT_THROW(RollingRadiusDifference(y, dr, {{-5.0, 0.0, 0.0}}), std::exception);
-  EXPECT_THROW(RollingRadiusDifference(y, dr, {{5.5, 0.0, 0.0}}), std::exception);
+  EXPECT_FALSE(rejected(y, dr, {{1.05, 0.2, 0.3}}));
+  EXPECT_TRUE(rejected(y, dr, {{-5.0, 0.0, 0.0}}));
+  EXPECT_TRUE(rejected(y, dr, {{5.5, 0.0, 0.0}}));
   std::vector<double> y3 = y, dr3 = dr;
   y3.insert(y3.begin() + 10, {y[10], y[10]});
   dr3.insert(dr3.begin() + 10, {0.0, 0.0});
-  EXPECT_THROW(RollingRadiusDifference(y3, dr3), std::exception);  // y three times
+  EXPECT_THROW(RollingRadiusDifference(y3, dr3), std::exception);
 }
 
 struct Case {
