@@ -203,7 +203,27 @@ def _read_derived(g) -> Dict[str, np.ndarray]:
         if a.size != t.size:
             raise TablesFileError(f"{W}: conicity_amplitude and tan_gamma_e differ in length")
         d["conicity_amplitude"], d["tan_gamma_e"] = a, t
+    jumps = {"jump_y": "m", "jump_delta_r_left": "m", "jump_delta_r_right": "m"}
+    if all(k in g for k in jumps):  # delta r jumps (engine's located contact-point jumps)
+        j = {k: _ds(g, k, W, u) for k, u in jumps.items()}
+        if len({v.size for v in j.values()}) != 1:
+            raise TablesFileError(f"{W}: jump_y and jump_delta_r_* differ in length")
+        d.update(j)
     return d
+
+
+def delta_r_with_jumps(d: Dict[str, np.ndarray]) -> Tuple[np.ndarray, np.ndarray]:
+    """delta r [m] against y [m], with every located jump drawn as a vertical break: the node
+    samples, and at each jump the left limit, a NaN gap and the right limit (no line across)."""
+    y, dr = d["y"], d["delta_r"]
+    if "jump_y" not in d or d["jump_y"].size == 0:
+        return y, dr
+    ys, vs = list(y), list(dr)
+    for yj, lft, rgt in zip(d["jump_y"], d["jump_delta_r_left"], d["jump_delta_r_right"]):
+        k = int(np.searchsorted(ys, yj))
+        ys[k:k] = [yj, yj, yj]
+        vs[k:k] = [lft, np.nan, rgt]
+    return np.asarray(ys), np.asarray(vs)
 
 
 def load_tables(path: str) -> Tables:

@@ -9,7 +9,7 @@ import numpy as np
 
 from .style import A4_WIDTH_IN, SIDE_STYLE, plt, report_style
 from .layout import _bottom_legend
-from .tables_data import TRANS_FILL, Tables, _fmt_mm, _mm
+from .tables_data import TRANS_FILL, Tables, _fmt_mm, _mm, delta_r_with_jumps
 from .tables_figs import _kec_real_points, _main_cluster, _suptitle, _title
 
 
@@ -144,7 +144,8 @@ def fig_rolling_radius(t: Tables):
         fig, axes = plt.subplots(2 if has_g else 1, 1, figsize=(A4_WIDTH_IN, 4.9 if has_g else 2.9),
                                  sharex=True, squeeze=False, layout="constrained")
         a1 = axes[0, 0]
-        a1.plot(y, _mm(d["delta_r"]), color="black", lw=1.4, label="$\\Delta r = r_l - r_r$",
+        yj, drj = delta_r_with_jumps(d)
+        a1.plot(_mm(yj), _mm(drj), color="black", lw=1.4, label="$\\Delta r = r_l - r_r$",
                 zorder=3)
         r0 = t.g("r0")
         if r0 is not None:

@@ -53,6 +53,46 @@ void writeProfile(io::ResultFile& f, const std::string& group, const profiles::P
   f.attr(group, "name", p.name());
 }
 
+// Derived: rolling radius difference (EN 15302 convention r_l - r_r), its jumps and the
+// conicity. The delta_r jumps (contact-point jumps, located on Eq. 12 between the nodes) enter the
+// conicity as exact discontinuities: interpolating across one would bias tan(gamma_e) at
+// amplitudes just beyond it.
+contact::RollingRadiusTable writeDerived(io::ResultFile& f, const contact::LutTable& lut,
+                                         const contact::ContactGeometryConfig& cfg) {
+  const contact::ContactSolver solver(cfg);
+  contact::RollingRadiusTable rr = contact::rollingRadiusDifference(lut, solver, 0.0);
+  const std::string D = "/tables/derived";
+  f.dataset(D + "/y", rr.y, "m");
+  f.dataset(D + "/z", rr.z, "m");
+  f.dataset(D + "/phi", rr.phi, "rad");
+  f.dataset(D + "/r_left", rr.r_left, "m");
+  f.dataset(D + "/r_right", rr.r_right, "m");
+  f.dataset(D + "/delta_r", rr.delta_r, "m");
+  f.dataset(D + "/delta_gamma", rr.delta_gamma, "rad");
+  std::vector<double> jy, jl, jr, jside;
+  for (const auto& j : rr.jumps) {
+    jy.push_back(j.y);
+    jl.push_back(j.delta_r_left);
+    jr.push_back(j.delta_r_right);
+    jside.push_back(j.side == contact::Side::Left ? 1.0 : -1.0);
+  }
+  f.dataset(D + "/jump_y", jy, "m");
+  f.dataset(D + "/jump_delta_r_left", jl, "m");
+  f.dataset(D + "/jump_delta_r_right", jr, "m");
+  f.dataset(D + "/jump_side", jside, "-");
+  const profiles::RollingRadiusDifference drf = contact::conicityInput(rr);
+  std::vector<double> amp, tg;
+  for (double a = 0.5e-3; a <= 10e-3 + 1e-12; a += 0.25e-3) {
+    double t = drf.tanGammaE(a);
+    if (!std::isfinite(t)) continue;
+    amp.push_back(a);
+    tg.push_back(t);
+  }
+  f.dataset(D + "/conicity_amplitude", amp, "m");
+  f.dataset(D + "/tan_gamma_e", tg, "-");
+  return rr;
+}
+
 }  // namespace
 
 int buildTables(const RunOptions& o) {
@@ -143,26 +183,8 @@ int buildTables(const RunOptions& o) {
   f.attr(K, "dbar", cfg.kec_dbar);
   writeStats(f, K, kec.stats());
 
-  // Derived: rolling radius difference (EN 15302 convention r_l - r_r) and conicity.
-  contact::RollingRadiusTable rr = contact::rollingRadiusDifference(lut, 0.0);
-  const std::string D = "/tables/derived";
-  f.dataset(D + "/y", rr.y, "m");
-  f.dataset(D + "/z", rr.z, "m");
-  f.dataset(D + "/phi", rr.phi, "rad");
-  f.dataset(D + "/r_left", rr.r_left, "m");
-  f.dataset(D + "/r_right", rr.r_right, "m");
-  f.dataset(D + "/delta_r", rr.delta_r, "m");
-  f.dataset(D + "/delta_gamma", rr.delta_gamma, "rad");
-  profiles::RollingRadiusDifference drf(rr.y, rr.delta_r);
-  std::vector<double> amp, tg;
-  for (double a = 0.5e-3; a <= 10e-3 + 1e-12; a += 0.25e-3) {
-    double t = drf.tanGammaE(a);
-    if (!std::isfinite(t)) continue;
-    amp.push_back(a);
-    tg.push_back(t);
-  }
-  f.dataset(D + "/conicity_amplitude", amp, "m");
-  f.dataset(D + "/tan_gamma_e", tg, "-");
+  const contact::RollingRadiusTable rr = writeDerived(f, lut, cfg);
+  const profiles::RollingRadiusDifference drf = contact::conicityInput(rr);
   f.finalize();
 
   std::cout << "wrote " << out << ": LUT " << lut.ny() << " x " << lut.ng() << " in "
@@ -174,6 +196,10 @@ int buildTables(const RunOptions& o) {
     if (std::isfinite(t))
       std::cout << "  equivalent conicity tan(gamma_e) at " << a * 1e3 << " mm: " << t << "\n";
   }
+  for (const auto& j : rr.jumps)
+    std::cout << "  delta_r jump (" << (j.side == contact::Side::Left ? "left" : "right")
+              << " wheel) at y = " << j.y * 1e3 << " mm: " << j.delta_r_left * 1e3 << " -> "
+              << j.delta_r_right * 1e3 << " mm\n";
   for (const auto& t : lut.twoPointContacts())
     if (std::abs(t.xi_g) < 1e-12)
       std::cout << "  two-point contact (" << (t.side == contact::Side::Left ? "left" : "right")

@@ -11,10 +11,42 @@ namespace rb::profiles {
 
 RollingRadiusDifference::RollingRadiusDifference(std::vector<double> y, std::vector<double> dr)
     : y_(std::move(y)), dr_(std::move(dr)) {
+  setUp();
+}
+
+RollingRadiusDifference::RollingRadiusDifference(std::vector<double> y, std::vector<double> dr,
+                                                 const std::vector<DrJump>& jumps) {
+  const std::size_t n = y.size();
+  RB_CHECK(n >= 3 && dr.size() == n, "a rolling radius difference needs >= 3 samples");
+  for (std::size_t i = 1; i < n; ++i) {
+    RB_CHECK(y[i] > y[i - 1], "rolling radius difference: y must be strictly increasing");
+  }
+  std::vector<DrJump> js = jumps;
+  std::sort(js.begin(), js.end(), [](const DrJump& a, const DrJump& b) { return a.y < b.y; });
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (; j < js.size() && js[j].y <= y[i]; ++j) {
+      y_.insert(y_.end(), {js[j].y, js[j].y});
+      dr_.insert(dr_.end(), {js[j].left, js[j].right});
+    }
+    if (y_.empty() || y[i] > y_.back()) {  // a jump at a sample replaces the sample
+      y_.push_back(y[i]);
+      dr_.push_back(dr[i]);
+    }
+  }
+  RB_CHECK(j == js.size(), "rolling radius difference: a jump beyond the data");
+  setUp();
+}
+
+void RollingRadiusDifference::setUp() {
   const std::size_t n = y_.size();
   RB_CHECK(n >= 3 && dr_.size() == n, "a rolling radius difference needs >= 3 samples");
   for (std::size_t i = 1; i < n; ++i) {
-    RB_CHECK(y_[i] > y_[i - 1], "rolling radius difference: y must be strictly increasing");
+    const bool jump = y_[i] == y_[i - 1];
+    RB_CHECK(y_[i] > y_[i - 1] || (jump && i >= 2 && i + 1 < n && y_[i - 2] < y_[i]),
+             "rolling radius difference: y must be increasing, a jump (y given twice) inside the "
+             "data");
+    if (jump) jumps_.push_back({y_[i], dr_[i - 1], dr_[i]});
   }
   cum_.assign(n, 0.0);
   for (std::size_t i = 1; i < n; ++i) {
@@ -160,16 +192,36 @@ double RollingRadiusDifference::tanGammaE(double yhat, int intervals) const {
   RB_CHECK(yhat > 0.0 && intervals > 0, "tanGammaE needs yhat > 0");
   Oscillation osc;
   if (!oscillation(yhat, osc)) return std::numeric_limits<double>::quiet_NaN();
+  // Panels between the theta of the jumps inside (y1, y2), y = ym - a cos(theta) increasing with
+  // theta; each gets its share of the intervals (at least one).
   const double ym = 0.5 * (osc.y1 + osc.y2), a = 0.5 * (osc.y2 - osc.y1);
-  const double dth = std::numbers::pi / intervals;
+  double J = 0.0, th_a = 0.0;
+  for (const DrJump& jp : jumps_) {
+    if (jp.y <= osc.y1 || jp.y >= osc.y2) continue;
+    const double th_j = std::acos(std::clamp((ym - jp.y) / a, -1.0, 1.0));
+    if (th_j <= th_a) continue;
+    const int m =
+        std::max(1, static_cast<int>(std::lround(intervals * (th_j - th_a) / std::numbers::pi)));
+    J += panel(osc, th_a, th_j, m);
+    th_a = th_j;
+  }
+  const int m = std::max(
+      1, static_cast<int>(std::lround(intervals * (std::numbers::pi - th_a) / std::numbers::pi)));
+  J += panel(osc, th_a, std::numbers::pi, m);
+  return std::pow(std::numbers::pi / J, 2);
+}
+
+double RollingRadiusDifference::panel(const Oscillation& osc, double th_a, double th_b,
+                                      int intervals) const {
+  const double ym = 0.5 * (osc.y1 + osc.y2), a = 0.5 * (osc.y2 - osc.y1);
+  const double dth = (th_b - th_a) / intervals;
   double J = 0.0;
   for (int k = 0; k < intervals; ++k) {
-    const double th = (k + 0.5) * dth;
+    const double th = th_a + (k + 0.5) * dth;
     const double q = osc.level - potential(ym - a * std::cos(th));
     if (q > 0.0) J += a * std::sin(th) / std::sqrt(q);
   }
-  J *= dth;
-  return std::pow(std::numbers::pi / J, 2);
+  return J * dth;
 }
 
 double RollingRadiusDifference::tanGammaHarmonic(double yhat, int intervals) const {
