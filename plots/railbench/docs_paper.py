@@ -138,6 +138,15 @@ def our_evals(r: Optional[dict]) -> Optional[float]:
     return float(total_evals(r)) if r is not None and r["status"] == "ok" else None
 
 
+def tol_text(tol: str) -> str:
+    """A tolerance as the paper writes it: 0.0001 -> 1e-4; "" -> the fixed 1 ms step."""
+    v = num(tol)
+    if v is None:
+        return "1 ms step"
+    mantissa, _, exponent = f"{v:e}".partition("e")
+    return f"{float(mantissa):g}e{int(exponent)}"
+
+
 def ratio(a: Optional[float], b: Optional[float]) -> str:
     return "–" if a is None or b is None or not b else f"{a / b:.2f}"
 
@@ -213,7 +222,7 @@ def paper_table(spec: PaperTable, rows: Sequence[dict], prows: Sequence[dict],
         mine = [(ours(rows, spec.method, spec.K, integ, tol, spec.refined, v),
                  ours(rows, partner_method, spec.partner_K, integ, tol, spec.refined, v))
                 for v in variants]
-        line = [f"{PAPER_NAME.get(integ, integ)} ({integ})", tol or "1 ms step"]
+        line = [f"{PAPER_NAME.get(integ, integ)} ({integ})", tol_text(tol)]
         line += [our_cell(r, "cpu") for r, _ in mine] + [paper_cell(p, "cpu")]
         line += [our_cell(r, "evals") for r, _ in mine] + [paper_cell(p, "evals")]
         for get, pget in ((our_cpu, paper_cpu), (our_evals, paper_evals)):
@@ -313,7 +322,7 @@ def flange_paper_block(outdir: str, study: str = "flange_stiffness") -> str:
             lut = ours(rows, "lut", K, integ, tol, False)
             no = next((n for kk, n in by_k.items() if num(kk) == num(K)), None)
             pl = paper(prows, no, integ, tol) if no else None
-            body.append([f"{PAPER_NAME[integ]} ({integ})", tol or "1 ms step", K,
+            body.append([f"{PAPER_NAME[integ]} ({integ})", tol_text(tol), K,
                          ratio(our_cpu(k), our_cpu(lut)), ratio(paper_cpu(pk), paper_cpu(pl)),
                          ratio(our_evals(k), our_evals(lut)),
                          ratio(paper_evals(pk), paper_evals(pl)),

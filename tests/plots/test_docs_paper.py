@@ -157,6 +157,8 @@ def test_flange_ratios_and_settings():
     assert solver_setting(dict(integrator="bdf", tol="1e-6",
                                solver="bdf tol=1e-6 hmax=1ms")) == "bdf 1e-6, 1 ms cap"
     assert dp.max_step(dict(solver="dopri5 tol=1e-6 hmax=0ms")) == 0.0
+    assert dp.tol_text("0.0001") == "1e-4" and dp.tol_text("2.5e-05") == "2.5e-5"
+    assert dp.tol_text("") == "1 ms step"
 
 
 def test_missing_inputs():
