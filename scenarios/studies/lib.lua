@@ -119,8 +119,8 @@ end
 -- (paper_settings.lua, paper_settings_flange.lua): KEC and LUT with the Hertzian flange stiffness
 -- K = 7.075e13 N/m^1.5 (Table 3, D = K/100), the prescribed spin, RK4 and ABM at 1 ms, dopri5
 -- (ode45) at 1e-6 and 1e-8 and BDF (ode15s) at 1e-6 and 1e-7 (Table 7), each adaptive setting
--- with the 1 ms largest step of the other studies and without a cap (solver.max_step = 0: the
--- paper's own evaluation counts show no cap). Labels "<model> | <solver>" pair KEC and LUT.
+-- with the 1 ms largest step of the paper's accuracy comparison (section 5.4) and without a cap
+-- (solver.max_step = 0: the paper's efficiency settings, as lib.paper_solvers). Labels "<model> | <solver>" pair KEC and LUT.
 function M.paper_settings_cases()
   local spin, h = M.spin(true)
   local solvers = { { "RK4 1 ms", M.fixed("rk4", h) }, { "ABM 1 ms", M.fixed("abm", h) } }
