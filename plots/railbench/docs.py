@@ -41,6 +41,7 @@ from typing import Dict, List, Optional
 from . import provenance
 from .common import parser
 from .docs_blocks import assessment_cases_block, accuracy_block, bench_block, bench_integrators_block, effects_block, efficiency_block, fmt, missing, num, read_csv, paper_settings_block, refinement_block, replace_block, speed_block, table, work_precision_block
+from .docs_paper import PAPER_TABLES, flange_paper_block, paper_table_blocks, tables_9_10_block
 from .docs_validation import hard_block, hard_detail_block, hard_rows, validation_blocks
 
 
@@ -48,10 +49,11 @@ from .docs_validation import hard_block, hard_detail_block, hard_rows, validatio
 # (BENCH_OUTPUTS) or "hard" (the hard-case record). A block not listed here is stamped from
 # OUT_DIR/provenance.json (the `./wb studies` invocation).
 BLOCK_SOURCES = {
-    "efficiency": "efficiency_case3", "efficiency_paper": "efficiency_case3",
-    "accuracy": "efficiency_case3", "flange": "flange_stiffness",
-    "flange_paper": "flange_stiffness", "flange_accuracy": "flange_stiffness",
-    "refinement": "refinement", "work_precision": "work_precision", "hard_cases": "hard",
+    "efficiency": "efficiency_case3", "accuracy": "efficiency_case3",
+    "flange": "flange_stiffness", "flange_paper": "flange_stiffness",
+    "flange_accuracy": "flange_stiffness", "refinement": "refinement",
+    "paper_tables9_10": "refinement",
+    **{f"paper_table{spec.no}": spec.study for spec in PAPER_TABLES}, "work_precision": "work_precision", "hard_cases": "hard",
     "hard_cases_detail": "hard", "effects": "effects", "speed": "speed", "bench": "bench",
     "paper_settings": "paper_settings", "paper_settings_flange": "paper_settings_flange",
     "bench_integrators": "bench_integrators",
@@ -176,10 +178,13 @@ def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
                                          "validation.md": {}, "hard_cases.md": {},
                                          "integrators.md": {}, "assessment.md": {}}
     blocks["studies.md"].update(efficiency_block(outdir))
+    blocks["studies.md"].update(paper_table_blocks(outdir))
     blocks["studies.md"]["accuracy"] = accuracy_block(outdir)
     blocks["studies.md"].update(efficiency_block(outdir, "flange_stiffness", "flange"))
+    blocks["studies.md"]["flange_paper"] = flange_paper_block(outdir)
     blocks["studies.md"]["flange_accuracy"] = accuracy_block(outdir, "flange_stiffness")
     blocks["studies.md"]["refinement"] = refinement_block(outdir)
+    blocks["studies.md"]["paper_tables9_10"] = tables_9_10_block(outdir)
     blocks["studies.md"]["work_precision"] = work_precision_block(outdir)
     blocks["studies.md"]["hard_cases"] = hard_block(build)
     blocks["performance.md"]["effects"] = effects_block(outdir)

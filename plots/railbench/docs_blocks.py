@@ -66,12 +66,14 @@ def missing(what: str) -> str:
 
 # ---- efficiency (paper Tables 7, 12-16) --------------------------------------------------------
 
-PAPER_INTEGRATOR = {"dopri5": "ode45", "bdf": "ode15s", "rk4": "RK4", "abm": "ABM"}
-
-
 def solver_setting(r: dict) -> str:
+    """"dopri5 1e-6" (no largest step), "dopri5 1e-6, 1 ms cap", "abm 1 ms"."""
     if r.get("tol"):
-        return f"{r['integrator']} {r['tol']}"
+        cap = num(r.get("max_step_s"))
+        if cap is None:  # a study summary without the column: the solver label says it
+            m = re.search(r"hmax=([0-9.e+-]+)ms", r.get("solver") or "")
+            cap = float(m.group(1)) * 1e-3 if m else 0.0
+        return f"{r['integrator']} {r['tol']}" + (f", {cap * 1e3:g} ms cap" if cap else "")
     if r.get("step_s"):
         return f"{r['integrator']} {num(r['step_s']) * 1e3:g} ms"
     return r.get("integrator", "")
@@ -79,16 +81,6 @@ def solver_setting(r: dict) -> str:
 
 def paper_rows() -> List[dict]:
     return read_csv(os.path.join(ROOT, "docs", "data", "paper_efficiency.csv"))
-
-
-def paper_lookup(paper, method, K, tables, integrator, tol) -> Optional[dict]:
-    pi = PAPER_INTEGRATOR.get(integrator, integrator)
-    for p in paper:
-        if (p["method"] == method and p["integrator"] == pi and p["tables"] == tables and
-                (method == "kec" or num(p["flange_stiffness"]) == num(K)) and
-                (not p["tol"] or num(p["tol"]) == num(tol))):
-            return p
-    return None
 
 
 def total_evals(r: dict) -> int:
@@ -110,8 +102,7 @@ def efficiency_block(outdir: str, study: str = "efficiency_case3",
                      name: str = "efficiency") -> Dict[str, str]:
     rows = read_csv(os.path.join(outdir, study, "study_cost.csv"))
     if not rows:
-        return {name: missing(f"out/studies/{study}/study_cost.csv"),
-                name + "_paper": missing(f"out/studies/{study}/study_cost.csv")}
+        return {name: missing(f"out/studies/{study}/study_cost.csv")}
     sim = max(num(r["t_reached_s"], 0) for r in rows)
     models = [("kec", "")] + [("lut", k) for k in sorted({r["K"] for r in rows if r["K"]},
                                                          key=lambda k: num(k))]
@@ -121,7 +112,8 @@ def efficiency_block(outdir: str, study: str = "efficiency_case3",
         if s not in settings:
             settings.append(s)
     order = {"rk4": 0, "abm": 1, "dopri5": 2, "bdf": 3, "ida": 4}
-    settings.sort(key=lambda s: (order.get(s.split()[0], 9), s))
+    settings.sort(key=lambda s: (order.get(s.split()[0], 9), "cap" in s,
+                                 -num(s.split()[1].rstrip(","), 0)))
 
     def find(method, K, s):
         for r in rows:
@@ -135,32 +127,7 @@ def efficiency_block(outdir: str, study: str = "efficiency_case3",
     eff = (f"CPU time (median of the repeats) / rhs evaluations incl. finite-difference Jacobian "
            f"columns (x real time over {sim:.2f} s simulated):\n\n" + table(head, body))
 
-    # Beside the paper: evaluation counts directly, CPU times as LUT/KEC ratios.
-    paper = paper_rows()
-    prow = []
-    for s in settings:
-        integ, _, tol = s.partition(" ")
-        tol = tol if not tol.endswith("ms") else ""
-        kec = find("kec", "", s)
-        pk = paper_lookup(paper, "kec", "", "default", integ, tol)
-        for m, k in models[1:]:
-            lut = find(m, k, s)
-            pl = paper_lookup(paper, "lut", k, "default", integ, tol)
-            if lut is None:
-                continue
-            ours_ratio = (num(lut["cpu_median_s"]) / num(kec["cpu_median_s"])
-                          if kec and lut["status"] == "ok" and kec["status"] == "ok" else None)
-            paper_ratio = (num(pl["cpu_median_s"]) / num(pk["cpu_median_s"])
-                           if pl and pk else None)
-            prow.append([s, k, total_evals(lut) if lut["status"] == "ok" else "failed",
-                         pl["evaluations"] if pl else "–",
-                         total_evals(kec) if kec and kec["status"] == "ok" else "–",
-                         pk["evaluations"] if pk else "–",
-                         fmt(ours_ratio, "{:.2f}"), fmt(paper_ratio, "{:.2f}")])
-    paper_tab = table(["solver", "LUT K", "LUT evals (ours)", "LUT evals (paper)",
-                       "KEC evals (ours)", "KEC evals (paper)", "CPU LUT/KEC (ours)",
-                       "CPU LUT/KEC (paper)"], prow)
-    return {name: eff, name + "_paper": paper_tab}
+    return {name: eff}
 
 
 # ---- accuracy (paper Eq. 33, Table 8) ----------------------------------------------------------
@@ -177,7 +144,9 @@ def accuracy_block(outdir: str, study: str = "efficiency_case3") -> str:
             solvers.append(r["solver"])
     body = []
     for s in solvers:
-        line = [s]
+        # The largest step in words: "hmax=0ms" is none (the paper's section 5.3 settings),
+        # "hmax=1ms" the 1 ms of the paper's Table 8.
+        line = [s.replace(" hmax=0ms", ", no cap").replace(" hmax=1ms", ", 1 ms cap")]
         for k in Ks:
             r = next((x for x in rows if x["solver"] == s and x["K"] == k), None)
             if r is None or not r["max_abs_mm"]:
@@ -193,38 +162,45 @@ def accuracy_block(outdir: str, study: str = "efficiency_case3") -> str:
 # ---- refinement (paper Tables 9-11, 17-18) -----------------------------------------------------
 
 def refinement_block(outdir: str) -> str:
+    """Default against refined tables per model (method, K, table interpolation) and solver
+    setting; and the tables' build or load time and size as the result files record them."""
     rows = read_csv(os.path.join(outdir, "refinement", "study_cost.csv"))
     if not rows:
         return missing("out/studies/refinement/study_cost.csv")
     sim = max(num(r["t_reached_s"], 0) for r in rows)
+    interp = lambda r: r.get("interpolation") or "cubic"  # noqa: E731
+    several = len({interp(r) for r in rows}) > 1
+
+    def key(r):
+        return r["method"], r["K"], interp(r), solver_setting(r)
+
     keys = []
     for r in rows:
-        k = (r["method"], r["K"], solver_setting(r))
-        if k not in keys:
-            keys.append(k)
+        if key(r) not in keys:
+            keys.append(key(r))
     body = []
-    for method, K, s in keys:
-        d = next((r for r in rows if (r["method"], r["K"], solver_setting(r)) == (method, K, s)
-                  and r["refined_tables"] == "false"), None)
-        f = next((r for r in rows if (r["method"], r["K"], solver_setting(r)) == (method, K, s)
-                  and r["refined_tables"] == "true"), None)
+    for k in keys:
+        d = next((r for r in rows if key(r) == k and r["refined_tables"] == "false"), None)
+        f = next((r for r in rows if key(r) == k and r["refined_tables"] == "true"), None)
         ratio = (num(f["cpu_median_s"]) / num(d["cpu_median_s"])
                  if d and f and d["status"] == "ok" and f["status"] == "ok" else None)
-        body.append([method.upper() + (f" K={K}" if K else ""), s, cost_cell(d, sim),
-                     cost_cell(f, sim), fmt(ratio, "{:.2f}")])
+        method, K, kind, s = k
+        model = method.upper() + (f" K={K}" if K else "") + (f", {kind}" if several else "")
+        body.append([model, s, cost_cell(d, sim), cost_cell(f, sim), fmt(ratio, "{:.2f}")])
     builds = []
     for method in ("kec", "lut"):
-        for ref in ("false", "true"):
-            r = next((x for x in rows if x["method"] == method and x["refined_tables"] == ref
-                      and x["table_build_time_s"]), None)
-            if r:
-                builds.append([method.upper(), "refined" if ref == "true" else "default",
-                               f"{num(r['table_build_time_s']):.3f} s",
-                               f"{num(r['table_bytes']) / 1e6:.2f} MB"])
+        for kind in sorted({interp(r) for r in rows}):
+            for ref in ("false", "true"):
+                r = next((x for x in rows if x["method"] == method and x["refined_tables"] == ref
+                          and interp(x) == kind and x["table_build_time_s"]), None)
+                if r:
+                    builds.append([method.upper(), kind, "refined" if ref == "true" else "default",
+                                   f"{num(r['table_build_time_s']):.3f} s",
+                                   f"{num(r['table_bytes']) / 1e6:.2f} MB"])
     return (table(["model", "solver", "default tables", "refined tables", "CPU refined/default"],
                   body) + "\n\nContact tables (as recorded in the result files; a run that "
                   "loaded them from the disk cache records the load time):\n\n" +
-            table(["method", "tables", "build or load time", "size"], builds))
+            table(["method", "interpolation", "tables", "build or load time", "size"], builds))
 
 
 # ---- work precision ----------------------------------------------------------------------------

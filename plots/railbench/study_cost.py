@@ -25,7 +25,9 @@ def cost_rows(study: Study) -> List[dict]:
             method=c.method, integrator=c.integrator,
             tol="" if c.tol is None else compact(c.tol),
             step_s="" if c.step is None else f"{c.step:g}",
+            max_step_s="" if c.max_step is None else f"{c.max_step:g}",
             K="" if c.K is None else compact(c.K), refined_tables=str(c.refined).lower(),
+            interpolation=c.interpolation,
             status=c.status, runs=c.runs, runs_ok=c.runs_ok,
             cpu_median_s=f"{c.cpu_median:.4f}", cpu_min_s=f"{c.cpu_min:.4f}",
             cpu_max_s=f"{c.cpu_max:.4f}", cpu_runs_s=";".join(f"{x:.4f}" for x in cpu_runs),
@@ -297,10 +299,22 @@ def _lut_panels(runs: Sequence[Tuple[Case, str]], wheel: Tuple[str, str], title:
     return fig
 
 
+def _fig24_setting(c: Case) -> bool:
+    """The settings of the paper's Fig. 24 (section 5.4): fixed steps of 1 ms, adaptive steps
+    with the 1 ms largest step."""
+    if c.step is not None:
+        return abs(c.step - 1e-3) < 1e-12
+    return c.max_step is not None and abs(c.max_step - 1e-3) < 1e-12
+
+
 def fig_lut_integrators(study: Study):
-    """Fig. 24: LUT with every solver at K = 1e12 (else the largest K with runs)."""
+    """Fig. 24: LUT with every solver at K = 1e12 (else the largest K with runs), with the
+    paper's Fig. 24 settings where the study has them (else every setting)."""
     lut = [c for c in study.cases
            if c.method == "lut" and not c.role.startswith("reference") and c.file]
+    fig24 = [c for c in lut if _fig24_setting(c)]
+    if len({c.solver_key for c in fig24}) >= 2:
+        lut = fig24
     if len({c.solver_key for c in lut}) < 2:
         return None
     Ks = sorted({c.K for c in lut})

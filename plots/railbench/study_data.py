@@ -130,6 +130,19 @@ class Case:
         return _num(self.overrides.get("solver.step"))
 
     @property
+    def max_step(self) -> Optional[float]:
+        """The largest step of an adaptive case [s] (0: none); None when the case keeps the
+        base scenario's."""
+        return _num(self.overrides.get("solver.max_step"))
+
+    @property
+    def interpolation(self) -> str:
+        """Interpolation of the contact tables: the override, else the result file's record,
+        else the default "cubic"."""
+        return (self.overrides.get("contact.table_interpolation") or
+                str(self._file_attrs().get("contact_table_interpolation") or "") or "cubic")
+
+    @property
     def K(self) -> Optional[float]:
         if self.method != "lut":
             return None
@@ -159,6 +172,8 @@ class Case:
             v = self.overrides[k]
             if k == "profiles.refined_tables":
                 parts.append("refined" if v == "true" else "default tables")
+            elif k == "contact.table_interpolation":
+                parts.append(f"{v} interpolation")
             elif k == "contact.normal_forces":
                 continue  # follows the integrator in our studies; shown in the labels
             else:

@@ -58,8 +58,10 @@ def cost(label, method, integ, cpu, evals, status="ok", K="", tol="", step="", r
 def test_blocks_replaced_between_markers():
     docs, out = DOCS, OUT
     os.makedirs(docs)
-    blocks_s = ["efficiency", "efficiency_paper", "accuracy", "flange", "flange_paper",
-                "flange_accuracy", "refinement", "work_precision", "hard_cases"]
+    blocks_s = ["efficiency", "paper_table7", "paper_table12", "paper_table13", "paper_table14",
+                "paper_table15", "paper_table16", "accuracy", "flange", "flange_paper",
+                "flange_accuracy", "refinement", "paper_tables9_10", "paper_table11",
+                "paper_table17", "paper_table18", "work_precision", "hard_cases"]
     blocks_p = ["speed", "bench", "effects", "paper_settings", "paper_settings_flange"]
     blocks_v = ["validation_case1", "validation_case2", "validation_case3", "validation_cost"]
     blocks_h = ["hard_cases_detail"]
@@ -116,8 +118,9 @@ def test_blocks_replaced_between_markers():
           "paper settings: the flange study's missing input gives a 'Not generated' line")
     eff = s.split("generated: efficiency ")[1].split("end: efficiency ")[0]
     check("failed" in eff and "(49x)" in eff, "efficiency table: failed case and real-time factor")
-    paper = s.split("generated: efficiency_paper")[1].split("end: efficiency_paper")[0]
-    check("50011" in paper, "the paper's ABM evaluation count is put beside ours")
+    paper = s.split("generated: paper_table13")[1].split("end: paper_table13")[0]
+    check("| ABM (abm) | 1 ms step | 0.40 | 398.92 | 50006 | 50011 | 1.25 | 0.66 |" in paper,
+          "the paper's Table 13 ABM row is put beside ours, with the KEC/LUT ratios")
     # Idempotent: a second run gives the same text.
     update_docs([out, "--build", os.path.join(TMP, "nobuild"), "--docs", docs])
     check(open(os.path.join(docs, "studies.md")).read() == s, "a second run changes nothing")
@@ -231,7 +234,7 @@ def stamps(docs, out):
     eff = block(s, "efficiency")
     check("`def5678`" in eff.split("\n")[0] and "dirty tree" in eff.split("\n")[0],
           "a dirty tree's block says so in its stamp")
-    check("`def5678`" in block(s, "efficiency_paper").split("\n")[0] and
+    check("`def5678`" in block(s, "paper_table12").split("\n")[0] and
           "`def5678`" in block(s, "accuracy").split("\n")[0] or
           block(s, "accuracy").startswith(NOT_GENERATED),
           "blocks from the same study carry its stamp")

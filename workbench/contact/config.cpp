@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include "workbench/core/error.hpp"
 
@@ -135,6 +136,7 @@ std::uint64_t configHash(const ContactGeometryConfig& c) {
                    c.newton_tol, static_cast<double>(c.newton_max_iter)}) {
     f.num(x);
   }
+  if (c.interpolation != TableInterpolation::Cubic) f.str(std::string(nameOf(c.interpolation)));
   return f.h;
 }
 

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "workbench/contact/interpolation.hpp"
 #include "workbench/profiles/profile.hpp"
 
 namespace rb::contact {
@@ -62,6 +63,9 @@ struct ContactGeometryConfig {
   GridSpec lut_y = table10LateralGrid();    // [m] wheelset lateral displacement y
   GridSpec lut_gauge = table10GaugeGrid();  // [m] gauge variation xi_g
   GridSpec kec_s = table9KecGrid();         // [m] equivalent-profile parameter s_k
+  // Interpolation between the nodes of both tables (interpolation.hpp). The stored node values
+  // do not depend on it; the table evaluates with it, and its cache key and configHash include it.
+  TableInterpolation interpolation = TableInterpolation::Cubic;
 
   // KEC regularisation (section 2.4, Fig. 9-10, docs/contact_geometry.md): every jump of the
   // contact point at s_k = s_j is bridged over [s_j - d, s_j + d'] on the s_k axis, d = kec_dhat on
@@ -93,7 +97,9 @@ struct ContactGeometryConfig {
 void checkConfig(const ContactGeometryConfig& config);
 
 // FNV-1a 64 over the profile samples (knots and values of all four profiles) and every number of
-// the config, so an application can cache tables by content.
+// the config, so an application can cache tables by content. The interpolation enters only when
+// it is not the default (cubic): a cubic table's hash does not depend on the option, and a linear
+// table's differs from it.
 std::uint64_t configHash(const ContactGeometryConfig& config);
 
 }  // namespace rb::contact

@@ -38,7 +38,9 @@
 // Jumps of the other wheel (small kinks of this equivalent profile) are bridged the same way.
 // Outside transitions the channels are the real branch. Everything is resampled on the uniform
 // kec_s grid (Table 9): f as a not-a-knot cubic spline (C2), the other channels as local cubic
-// Hermite data with exact node derivatives (C1, no ringing at the ramp ends).
+// Hermite data with exact node derivatives (C1, no ringing at the ramp ends). A table with
+// config.interpolation = Linear evaluates every channel, f included, as straight segments between
+// the nodes (the paper's, section 5.5; C0, kec_solve.cpp).
 #include <Eigen/Core>
 #include <array>
 #include <cstddef>
@@ -96,6 +98,8 @@ class KecTable {
   double r0() const { return r0_; }
   double railLr() const { return lr_; }
   std::uint64_t configHash() const { return hash_; }
+  // How eval / evalValues / f interpolate between the nodes (config.interpolation).
+  TableInterpolation interpolation() const { return interp_; }
   const TableBuildStats& stats() const { return stats_; }
   // s_k range computed from contact geometry; outside it the table is extrapolated linearly.
   double validMin(Side side) const { return valid_[idx(side)][0]; }
@@ -104,7 +108,9 @@ class KecTable {
   // True when s_k lies in the blend interval of a transition.
   bool inTransition(Side side, double s_k) const;
 
-  // All quantities with first derivatives (and f''). Allocation-free.
+  // All quantities with first derivatives (and f''). Allocation-free. Linear tables: the
+  // derivatives are the slopes of the segment holding s_k (the right-hand one at a node) and
+  // f'' = 0.
   void eval(Side side, double s_k, KecPoint& out) const;
   // Values of the quantities after F (Sw ... SrB) and `inside`, bit-identical to eval()'s except
   // that a point channel (SwA ... SrB) constant over the interval (equal node values, zero slopes)
@@ -125,10 +131,14 @@ class KecTable {
   // fspl_[k] from the F node values in herm_[k] on grid_ (buildKec and the cache loader: the same
   // inputs give bit-identical coefficients).
   void makeFSpline(std::size_t k);
+  // eval / evalValues / f of a linear table.
+  void evalLinear(std::size_t k, double s_k, KecPoint& out, bool derivatives) const;
+  double fLinear(std::size_t k, double s_k, double* df, double* d2f) const;
   GridSpec grid_;
   std::size_t n_ = 0;
   double r0_ = 0.0, lr_ = 0.0;
   std::uint64_t hash_ = 0;
+  TableInterpolation interp_ = TableInterpolation::Cubic;
   // f: not-a-knot cubic spline over the grid values (C2; f is C2 by construction). All quantities
   // also as local cubic Hermite data (value and exact derivative at each node; C1, no ringing at
   // the kinks of the linear ramps): herm_[side][(i * kKecQuantities + q) * 2 + {0: value, 1:
@@ -174,6 +184,7 @@ struct KecSolution {
 };
 
 // Newton on Eq. (22) from `warm` (a previous solution, e.g. the last step) or from a flat start.
+// With a linear table, f_k is piecewise linear and Newton uses its segment slopes (kec_solve.cpp).
 // Allocation-free.
 KecSolution solveKec(const KecTable& table, const KecInput& in, const KecSolution* warm = nullptr);
 

@@ -694,6 +694,7 @@ KecTable buildKec(const ContactGeometryConfig& config) {
   tab.r0_ = config.r0;
   tab.lr_ = config.rail_lr;
   tab.hash_ = configHash(config);
+  tab.interp_ = config.interpolation;
   Builder bld(config, st);
   checkTransitionLengths(config, st);
 

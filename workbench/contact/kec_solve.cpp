@@ -28,6 +28,18 @@ HermiteCell hermiteCell(double min, double h, std::size_t n, double s_k) {
           (t3 - 2 * t2 + t) * h,        (t3 - t2) * h};
 }
 
+// The segment of s_k on the uniform grid (the same floor and clamp as hermiteCell) and the local
+// coordinate t in it, for the linear tables.
+struct LinearCell {
+  std::size_t i;
+  double t;
+};
+LinearCell linearCell(double min, double h, std::size_t n, double s_k) {
+  double tf = std::floor((s_k - min) / h);
+  tf = std::clamp(tf, 0.0, static_cast<double>(n - 2));
+  return {static_cast<std::size_t>(tf), (s_k - min) / h - tf};
+}
+
 }  // namespace
 
 std::string kecQuantityName(KecQuantity q) {
@@ -46,6 +58,10 @@ bool KecTable::inTransition(Side side, double s_k) const {
 
 void KecTable::eval(Side side, double s_k, KecPoint& out) const {
   const std::size_t k = idx(side);
+  if (interp_ == TableInterpolation::Linear) {
+    evalLinear(k, s_k, out, true);
+    return;
+  }
   const HermiteCell c = hermiteCell(grid_.min, grid_.step, n_, s_k);
   const double A0 = c.A0, A1 = c.A1, C0 = c.C0, C1 = c.C1, t = c.t, t2 = t * t, h = grid_.step;
   const double dA0 = (6 * t2 - 6 * t) / h, dA1 = -dA0;
@@ -68,6 +84,10 @@ void KecTable::evalValues(Side side, double s_k, KecPoint& out) const {
   // band (SwA ... SrB, the only channels checked) are such channels, and an exact value lets the
   // dynamics reuse its last describe() of them.
   const std::size_t k = idx(side);
+  if (interp_ == TableInterpolation::Linear) {
+    evalLinear(k, s_k, out, false);
+    return;
+  }
   const HermiteCell c = hermiteCell(grid_.min, grid_.step, n_, s_k);
   const double A0 = c.A0, A1 = c.A1, C0 = c.C0, C1 = c.C1;
   const double* p0 = &herm_[k][c.i * kKecQuantities * 2];
@@ -85,12 +105,58 @@ void KecTable::evalValues(Side side, double s_k, KecPoint& out) const {
 }
 
 double KecTable::f(Side side, double s_k, double* df, double* d2f) const {
+  if (interp_ == TableInterpolation::Linear) return fLinear(idx(side), s_k, df, d2f);
   // One interval lookup for all orders (solveKec calls this twice per Newton iteration).
   double v = 0.0, d1 = 0.0, d2 = 0.0;
   fspl_[idx(side)].eval(s_k, {&v, 1}, {&d1, 1}, {&d2, 1});
   if (df) *df = d1;
   if (d2f) *d2f = d2;
   return v;
+}
+
+// ---- Linear tables (TableInterpolation::Linear) ------------------------------------------------
+//
+// The paper obtains "the required parameters or variables for the dynamic analysis ... by using
+// linear interpolation between the stored data" (section 5.5); the KEC tables have one entry, the
+// knife position s_k, so every channel (f_k and the contact-point maps) is the straight segment
+// between its two stored nodes: v = (1 - t) v_i + t v_i+1, exactly v_i at t = 0 and v_i+1 at
+// t = 1. Its derivative is the slope of the segment, (v_i+1 - v_i) / h, constant between nodes
+// and jumping at them (the right-hand segment's at a node: the cell of s_k is floor((s_k - min) /
+// h)), and f'' = 0. These are the derivatives of the interpolant actually used, so the Newton
+// iteration of solveKec solves Eq. (22) for the piecewise-linear profile exactly: inside one
+// segment the equations are linear in (z, s_lk, s_rk) and bilinear with phi, and Newton converges
+// quadratically. A step that crosses a node continues with the next segment's slope. The knife
+// positions are fixed almost entirely by the lateral rows, where f' enters only as phi f'
+// (|phi| ~ 1e-3 rad), and z, phi then follow from the vertical rows, which are linear in them; so
+// a kink changes the Jacobian little, the iteration keeps contracting across nodes and a crossing
+// costs an extra iteration or two. At a root on a node both one-sided linearisations pass through
+// the root, so the iteration ends there. The velocity relation dx_dp jumps where a
+// knife crosses a node and the quadratic term (kecQuadraticTerm) has no f'' contribution: the
+// dynamics of the paper's C0 equivalent profile.
+
+void KecTable::evalLinear(std::size_t k, double s_k, KecPoint& out, bool derivatives) const {
+  const LinearCell c = linearCell(grid_.min, grid_.step, n_, s_k);
+  const double t = c.t, t0 = 1.0 - t, h = grid_.step;
+  const double* p0 = &herm_[k][c.i * kKecQuantities * 2];
+  const double* p1 = p0 + kKecQuantities * 2;
+  // eval() sets every channel with its slope; evalValues() leaves F and the derivatives alone.
+  // A channel with equal node values is returned as exactly that value (as evalValues' cubic).
+  for (std::size_t q = derivatives ? 0 : 1; q < kKecQuantities; ++q) {
+    const double v0 = p0[2 * q], v1 = p1[2 * q];
+    out.value[q] = v0 == v1 ? v0 : t0 * v0 + t * v1;
+    if (derivatives) out.d_ds[q] = (v1 - v0) / h;
+  }
+  if (derivatives) out.d2f = 0.0;
+  out.inside = s_k >= valid_[k][0] && s_k <= valid_[k][1];
+}
+
+double KecTable::fLinear(std::size_t k, double s_k, double* df, double* d2f) const {
+  const LinearCell c = linearCell(grid_.min, grid_.step, n_, s_k);
+  const double f0 = herm_[k][c.i * kKecQuantities * 2];
+  const double f1 = herm_[k][(c.i + 1) * kKecQuantities * 2];
+  if (df) *df = (f1 - f0) / grid_.step;
+  if (d2f) *d2f = 0.0;
+  return f0 == f1 ? f0 : (1.0 - c.t) * f0 + c.t * f1;  // as evalLinear's F
 }
 
 // ---- Online solver ------------------------------------------------------------------------------

@@ -1,16 +1,18 @@
 #pragma once
 // Contact lookup table (paper section 2.3, Eq. 11-14): the solution of Eq. (12) and the flange
 // indentation of Eq. (15)/(21) on a grid of wheelset lateral displacement y and gauge variation
-// xi_g (Table 10), with a fast C1 interpolant.
+// xi_g (Table 10), with a fast interpolant.
 //
-// Interpolation: bicubic Hermite on the uniform grid (O(1) cell lookup, 16 terms per channel).
-// Node derivatives: along y, a not-a-knot cubic spline on each run of nodes between detected
-// contact-point jumps (O(h^4) where the geometry is smooth; no ringing carried across a jump);
-// along xi_g and for the cross derivative, the modified Akima rule (local, no overshoot where the
-// jump position moves with the gauge). The interpolant is C1 everywhere: values and first
-// derivatives are continuous across cells, which the equations of motion (Eq. 17 Jacobian) and
-// variable-step integrators need; second derivatives exist inside cells and jump across cell
-// edges. Evaluation is allocation-free.
+// Interpolation (config.interpolation): bicubic Hermite (the default, below) or bilinear (the
+// paper's "linear interpolation between the stored data", section 5.5: 4 terms per channel, C0,
+// first derivatives the slopes of the cell, see lut_eval.cpp).
+// Bicubic Hermite on the uniform grid (O(1) cell lookup, 16 terms per channel). Node derivatives:
+// along y, a not-a-knot cubic spline on each run of nodes between detected contact-point jumps
+// (O(h^4) where the geometry is smooth; no ringing carried across a jump); along xi_g and for the
+// cross derivative, the modified Akima rule (local, no overshoot where the jump position moves with
+// the gauge). The interpolant is C1 everywhere: values and first derivatives are continuous across
+// cells, which the equations of motion (Eq. 17 Jacobian) and variable-step integrators need; second
+// derivatives exist inside cells and jump across cell edges. Evaluation is allocation-free.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -126,6 +128,8 @@ class LutTable {
   std::size_t ny() const { return ny_; }
   std::size_t ng() const { return ng_; }
   std::uint64_t configHash() const { return hash_; }
+  // How the evaluations below interpolate between the nodes (config.interpolation).
+  TableInterpolation interpolation() const { return interp_; }
   const TableBuildStats& stats() const { return stats_; }
   const std::vector<LutJump>& jumps() const { return jumps_; }
   const std::vector<TwoPointContact>& twoPointContacts() const { return two_point_; }
@@ -164,6 +168,11 @@ class LutTable {
   Cell locate(double y, double xi_g) const;
   // evalChannel at a located cell (evalZPhi shares one lookup between z and phi).
   LutValue channelAt(std::size_t channel, const Cell& c) const;
+  // evalRange and channelAt of a linear table: bilinear cells (linear in y when the gauge grid
+  // has one node), derivatives the slopes of the cell.
+  template <bool kDerivatives>
+  void evalRangeLinear(const Cell& c, LutSample& out, std::size_t first, std::size_t last) const;
+  LutValue channelAtLinear(std::size_t channel, const Cell& c) const;
 
   GridSpec y_, g_;
   std::size_t ny_ = 0, ng_ = 0;
@@ -175,6 +184,7 @@ class LutTable {
   std::vector<TwoPointContact> two_point_;
   std::array<bool, 2> has_flange_{false, false};
   std::uint64_t hash_ = 0;
+  TableInterpolation interp_ = TableInterpolation::Cubic;
   TableBuildStats stats_;
 };
 

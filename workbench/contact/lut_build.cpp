@@ -373,6 +373,7 @@ LutTable buildLut(const ContactGeometryConfig& config) {
   tab.hy_ = config.lut_y.step;
   tab.hg_ = tab.ng_ >= 2 ? config.lut_gauge.step : 1.0;
   tab.hash_ = configHash(config);
+  tab.interp_ = config.interpolation;
   tab.has_flange_ = {solver.hasFlange(Side::Left), solver.hasFlange(Side::Right)};
   const std::size_t ny = tab.ny_, ng = tab.ng_;
   TableBuildStats& st = tab.stats_;

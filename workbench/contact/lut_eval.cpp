@@ -1,4 +1,5 @@
-// Hot path of the LUT method: evaluation of the contact lookup table (bicubic Hermite, Eq. 14).
+// Hot path of the LUT method: evaluation of the contact lookup table (bicubic Hermite, Eq. 14, or
+// bilinear, section 5.5).
 // The table build is in lut_build.cpp.
 #include "workbench/contact/lut.hpp"
 
@@ -103,6 +104,10 @@ void LutTable::evalRange(double y, double xi_g, LutSample& out, std::size_t firs
                          std::size_t last) const {
   const Cell c = locate(y, xi_g);
   out.inside = c.inside;
+  if (interp_ == TableInterpolation::Linear) {
+    evalRangeLinear<kDerivatives>(c, out, first, last);
+    return;
+  }
   const Basis by(c.t);
   const std::size_t stride_y = kLutChannels * 4, stride_g = ny_ * kLutChannels * 4;
   const double* base = &data_[(c.j * ny_ + c.i) * kLutChannels * 4];
@@ -152,6 +157,7 @@ LutValue LutTable::evalChannel(std::size_t ch, double y, double xi_g) const {
 }
 
 LutValue LutTable::channelAt(std::size_t ch, const Cell& c) const {
+  if (interp_ == TableInterpolation::Linear) return channelAtLinear(ch, c);
   LutValue r;
   r.inside = c.inside;
   const Basis by(c.t);
@@ -189,6 +195,71 @@ LutValue LutTable::channelAt(std::size_t ch, const Cell& c) const {
   r.dyy /= hy_ * hy_;
   r.dyxi /= hy_ * hg_;
   r.dxixi /= hg_ * hg_;
+  return r;
+}
+
+// ---- Bilinear evaluation (TableInterpolation::Linear) ------------------------------------------
+//
+// The paper obtains "the required parameters or variables for the dynamic analysis ... by using
+// linear interpolation between the stored data" (section 5.5); with the LUT's two entries (y and
+// xi_g) that is the bilinear interpolant of the four nodes of the cell:
+//   v = (1 - u) [(1 - t) f00 + t f10] + u [(1 - t) f01 + t f11],  t = (y - y_i) / h_y,
+//   u = (xi_g - xi_j) / h_g,
+// which returns the stored node values exactly where t, u are 0 or 1 (the weights are then exactly
+// 1 and 0). Its derivatives are those of this polynomial on the cell: d/dy and d/dxi_g the slopes
+// of the cell's edges (constant along y in a cell, and jumping at every node line), d2/dy2 =
+// d2/dxi_g2 = 0 and the cross derivative the constant (f11 - f10 - f01 + f00) / (h_y h_g). The
+// Jacobian of the LUT constraints (Eq. 17) and their acceleration terms use these slopes, so the
+// dynamics is the exact dynamics of the piecewise-bilinear surfaces z(y, xi_g), phi(y, xi_g): the
+// constraint velocities jump where a wheelset crosses a node line, the price of the paper's C0
+// tables. The node slopes of the stored data are not read.
+
+template <bool kDerivatives>
+void LutTable::evalRangeLinear(const Cell& c, LutSample& out, std::size_t first,
+                               std::size_t last) const {
+  const std::size_t stride_y = kLutChannels * 4, stride_g = ny_ * kLutChannels * 4;
+  const double* base = &data_[(c.j * ny_ + c.i) * kLutChannels * 4];
+  const double t = c.t, t0 = 1.0 - t;
+  if (ng_ < 2) {
+    for (std::size_t ch = first; ch < last; ++ch) {
+      const double f0 = base[ch * 4], f1 = base[stride_y + ch * 4];
+      out.value[ch] = t0 * f0 + t * f1;
+      if constexpr (kDerivatives) {
+        out.d_dy[ch] = (f1 - f0) / hy_;
+        out.d_dxi[ch] = 0.0;
+      }
+    }
+    return;
+  }
+  const double u = c.u, u0 = 1.0 - u;
+  for (std::size_t ch = first; ch < last; ++ch) {
+    const double* p = base + ch * 4;
+    const double f00 = p[0], f10 = p[stride_y], f01 = p[stride_g], f11 = p[stride_g + stride_y];
+    out.value[ch] = u0 * (t0 * f00 + t * f10) + u * (t0 * f01 + t * f11);
+    if constexpr (kDerivatives) {
+      out.d_dy[ch] = (u0 * (f10 - f00) + u * (f11 - f01)) / hy_;
+      out.d_dxi[ch] = (t0 * (f01 - f00) + t * (f11 - f10)) / hg_;
+    }
+  }
+}
+
+LutValue LutTable::channelAtLinear(std::size_t ch, const Cell& c) const {
+  LutValue r;
+  r.inside = c.inside;
+  const std::size_t stride_y = kLutChannels * 4, stride_g = ny_ * kLutChannels * 4;
+  const double* p = &data_[(c.j * ny_ + c.i) * kLutChannels * 4 + ch * 4];
+  const double t = c.t, t0 = 1.0 - t;
+  if (ng_ < 2) {
+    r.v = t0 * p[0] + t * p[stride_y];
+    r.dy = (p[stride_y] - p[0]) / hy_;
+    return r;
+  }
+  const double u = c.u, u0 = 1.0 - u;
+  const double f00 = p[0], f10 = p[stride_y], f01 = p[stride_g], f11 = p[stride_g + stride_y];
+  r.v = u0 * (t0 * f00 + t * f10) + u * (t0 * f01 + t * f11);
+  r.dy = (u0 * (f10 - f00) + u * (f11 - f01)) / hy_;
+  r.dxi = (t0 * (f01 - f00) + t * (f11 - f10)) / hg_;
+  r.dyxi = (f11 - f10 - f01 + f00) / (hy_ * hg_);
   return r;
 }
 

@@ -322,9 +322,12 @@ class TableIo {
     return std::move(w.buffer());
   }
 
-  static std::optional<LutTable> lut(const Reader& payload, std::uint64_t hash) {
+  // `interpolation` is the config's: the key the file was accepted for includes it.
+  static std::optional<LutTable> lut(const Reader& payload, std::uint64_t hash,
+                                     TableInterpolation interpolation) {
     Reader r = payload;
     LutTable t;
+    t.interp_ = interpolation;
     if (r.u64() != kLutChannels) return std::nullopt;
     t.y_ = r.grid();
     t.g_ = r.grid();
@@ -396,9 +399,11 @@ class TableIo {
     return std::move(w.buffer());
   }
 
-  static std::optional<KecTable> kec(const Reader& payload, std::uint64_t hash) {
+  static std::optional<KecTable> kec(const Reader& payload, std::uint64_t hash,
+                                     TableInterpolation interpolation) {
     Reader r = payload;
     KecTable t;
+    t.interp_ = interpolation;
     if (r.u64() != kKecQuantities) return std::nullopt;
     t.grid_ = r.grid();
     t.n_ = static_cast<std::size_t>(r.u64());
@@ -479,6 +484,14 @@ std::string tableInputKey(const ContactGeometryConfig& c, TableKind kind) {
     num(x);
   }
   w.u64(static_cast<std::uint64_t>(static_cast<std::int64_t>(c.newton_max_iter)));
+  // The table carries its interpolation (the evaluation reads the Hermite node slopes only when
+  // cubic), so a linear and a cubic table are different tables. Written after every fixed-size
+  // field and only when not cubic: the key stays injective, and a cubic key does not depend on
+  // the option.
+  if (c.interpolation != TableInterpolation::Cubic) {
+    const std::string tail = std::string("\ninterpolation=") + std::string(nameOf(c.interpolation));
+    w.raw(tail.data(), tail.size());
+  }
   return std::move(w.buffer());
 }
 
@@ -501,7 +514,7 @@ std::optional<LutTable> loadLut(const std::string& path, const ContactGeometryCo
     const std::optional<Accepted> file =
         readFile(path, kLutMagic, tableInputKey(config, TableKind::Lut));
     if (!file) return std::nullopt;
-    return TableIo::lut(payloadOf(*file), configHash(config));
+    return TableIo::lut(payloadOf(*file), configHash(config), config.interpolation);
   } catch (const std::exception&) {  // e.g. bad_alloc on a huge but self-consistent file
     return std::nullopt;
   }
@@ -512,7 +525,7 @@ std::optional<KecTable> loadKec(const std::string& path, const ContactGeometryCo
     const std::optional<Accepted> file =
         readFile(path, kKecMagic, tableInputKey(config, TableKind::Kec));
     if (!file) return std::nullopt;
-    return TableIo::kec(payloadOf(*file), configHash(config));
+    return TableIo::kec(payloadOf(*file), configHash(config), config.interpolation);
   } catch (const std::exception&) {
     return std::nullopt;
   }

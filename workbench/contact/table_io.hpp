@@ -3,7 +3,8 @@
 // processes builds each distinct table once.
 //
 // Keying. A table is determined by its inputs (the four profiles sample by sample, positioning,
-// grids, KEC transition lengths, solver tolerances: everything configHash covers) and by the code
+// grids, KEC transition lengths, solver tolerances, the interpolation between the nodes:
+// everything configHash covers) and by the code
 // that builds it. tableInputKey() writes all of that out as a canonical byte string, together with
 // the table kind, kTableAlgorithmVersion and the workbench version. The file name is a hash of
 // that key; the file stores the key itself, and a load compares it byte for byte with the key

@@ -235,6 +235,7 @@ contact::ContactGeometryConfig contactGeometryConfig(const ProfilesSpec& p, cons
   g.rail_lr = pos_lr;
   g.kec_dhat = c.kec_dhat;
   g.kec_dbar = c.kec_dbar;
+  g.interpolation = c.table_interpolation;
   if (p.refined_tables) g.useRefinedGrids();
   try {
     contact::checkConfig(g);

@@ -3,6 +3,7 @@
 // workbench/scenario from the profiles{} and contact{} blocks. SI units.
 #include <string>
 
+#include "workbench/contact/interpolation.hpp"
 #include "workbench/core/error.hpp"
 
 namespace rb::dynamics {
@@ -52,6 +53,9 @@ struct ContactSpec {
   // contact keeps the wheel on the rail by pulling when the load would lift it, which no real
   // wheel/rail pair can do, so results past that point are not physical.
   double min_normal_force = 0.0;
+  // Interpolation of the contact table between its nodes (contact/interpolation.hpp): cubic
+  // (C1) or the paper's linear (section 5.5).
+  contact::TableInterpolation table_interpolation = contact::TableInterpolation::Cubic;
   SourceLoc loc;
 };
 

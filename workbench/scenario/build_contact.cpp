@@ -1,3 +1,4 @@
+#include "workbench/contact/interpolation.hpp"
 #include "workbench/dynamics/names.hpp"
 #include "workbench/scenario/build.hpp"
 #include "workbench/scenario/reader.hpp"
@@ -19,6 +20,7 @@ void buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
   c.normal_forces = r.choiceOf<dynamics::NormalForceCoupling>("normal_forces");
   c.wheelset_spin = r.choiceOf<dynamics::WheelsetSpin>("wheelset_spin");
   c.min_normal_force = r.number("min_normal_force");
+  c.table_interpolation = r.choiceOf<contact::TableInterpolation>("table_interpolation");
   // Options that belong to the other method are conflicts, not silently ignored.
   const bool kec = c.method == dynamics::ContactMethod::Kec;
   for (const char* k : {"flange_stiffness", "flange_damping"})

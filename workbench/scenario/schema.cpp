@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "workbench/assessment/spec.hpp"
+#include "workbench/contact/interpolation.hpp"
 #include "workbench/core/names.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/limits.hpp"
@@ -259,6 +260,9 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
         enumChoice("normal_forces", dynamics::NormalForceCoupling::Consistent,
                    "normal forces the creep forces use"),
         enumChoice("wheelset_spin", dynamics::WheelsetSpin::Free, "wheelset spin"),
+        enumChoice("table_interpolation", contact::TableInterpolation::Cubic,
+                   "interpolation of the KEC / LUT table between its stored nodes (paper: "
+                   "linear, section 5.5)"),
         num("min_normal_force", "N", 0,
             "a wheel whose constraint normal force falls below this stops the run (exit 2): a "
             "constraint contact cannot lift the wheel, so results past wheel lift are not "

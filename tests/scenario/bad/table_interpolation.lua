@@ -1,0 +1,5 @@
+track { segments = { tangent { length = 100 } } }
+contact {
+  method = "lut",
+  table_interpolation = "bilinear",
+}
