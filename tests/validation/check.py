@@ -39,22 +39,22 @@ def main(argv=None) -> int:
     ap.add_argument("--expected", default=locked.EXPECTED)
     args = ap.parse_args(argv)
     try:
+        expected, prov = locked.read_expected(args.expected)
         got = values(args.case, args.workbench, args.out_dir)
-    except (RuntimeError, OSError) as e:
+    except (RuntimeError, OSError, ValueError, KeyError) as e:
         print(f"FAIL {e}", file=sys.stderr)
         return 1
     if args.case in locked.CASE3:
         print(f"{args.case}: run ok, {locked.result_path(args.out_dir, args.case)}")
         return 0
-    expected, prov = locked.read_expected(args.expected)
     print(locked.report(args.case, got, expected))
     failures = locked.compare(args.case, got, expected, prov)
     for f in failures:
         print("FAIL " + f, file=sys.stderr)
     if failures:
         print(f"{args.case}: {len(failures)} of {len(got)} quantities outside their tolerance; "
-              f"if the change is intended, regenerate the expected file (tests/validation/README.md)",
-              file=sys.stderr)
+              "if the change is intended, regenerate the expected file "
+              "(tests/validation/README.md)", file=sys.stderr)
     return 1 if failures else 0
 
 
