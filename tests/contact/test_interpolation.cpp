@@ -109,7 +109,8 @@ TEST(TableInterpolation, KecLinearIsLinearBetweenNodes) {
       for (std::size_t q = 0; q < kQ; ++q) {
         const auto Q = static_cast<KecQuantity>(q);
         const double v0 = t.node(side, Q, i), v1 = t.node(side, Q, i + 1);
-        const double tol = 1e-10 * std::abs(v1 - v0) + 1e-18;
+        const double tol =
+            1e-10 * std::abs(v1 - v0) + 4e-16 * std::max(std::abs(v0), std::abs(v1)) + 1e-18;
         EXPECT_NEAR(mid.value[q], 0.5 * (v0 + v1), tol) << kecQuantityName(Q) << " " << i;
         EXPECT_NEAR(a.value[q], v0 + 0.2 * (v1 - v0), tol);
         // The derivative is the slope of the segment, the same everywhere inside it.
@@ -285,7 +286,8 @@ TEST(TableInterpolation, LutWithOneGaugeNodeIsLinearInY) {
       if (mapsToNode(gy.at(iy), gy, iy)) {
         EXPECT_EQ(node.value[ch], f0);
       }
-      EXPECT_NEAR(mid.value[ch], 0.5 * (f0 + f1), 1e-10 * std::abs(f1 - f0) + 1e-18);
+      EXPECT_NEAR(mid.value[ch], 0.5 * (f0 + f1),
+                  1e-10 * std::abs(f1 - f0) + 4e-16 * std::max(std::abs(f0), std::abs(f1)) + 1e-18);
       EXPECT_EQ(mid.d_dy[ch], (f1 - f0) / gy.step);
       EXPECT_EQ(mid.d_dxi[ch], 0.0);
       const LutValue v = t.evalChannel(ch, gy.at(iy) + 0.5 * gy.step, 0.0);

@@ -57,8 +57,8 @@ TEST(TableInterpolationKey, BadValueIsReportedWithFileLine) {
   } catch (const rb::InputError& e) {
     what = e.what();
   }
-  EXPECT_EQ(what, f + ":4: contact: table_interpolation must be one of cubic, linear; got " +
-                      "string \"bilinear\"");
+  EXPECT_EQ(what, f + ":2: contact: table_interpolation: unknown value 'bilinear' (did you mean "
+                      "'linear'?); valid: cubic, linear");
 }
 
 // Case 3 (60 m) on linear tables: Newton on the piecewise-linear KEC profile and the kinks of the
