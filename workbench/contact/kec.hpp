@@ -119,6 +119,12 @@ class KecTable {
   void evalValues(Side side, double s_k, KecPoint& out) const;
   // Equivalent profile f_k with first and second derivatives. Allocation-free.
   double f(Side side, double s_k, double* df = nullptr, double* d2f = nullptr) const;
+  // f with the interpolation fixed (f dispatches to these): solveKec picks one once per solve, so
+  // that the Newton loop calls a function the compiler can inline.
+  double fCubic(Side side, double s_k, double* df, double* d2f) const;
+  double fLinear(Side side, double s_k, double* df, double* d2f) const {
+    return fLinear(idx(side), s_k, df, d2f);
+  }
   // Stored grid values.
   double node(Side side, KecQuantity q, std::size_t i) const {
     return herm_[idx(side)][(i * kKecQuantities + static_cast<std::size_t>(q)) * 2];

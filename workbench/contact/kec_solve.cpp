@@ -106,6 +106,10 @@ void KecTable::evalValues(Side side, double s_k, KecPoint& out) const {
 
 double KecTable::f(Side side, double s_k, double* df, double* d2f) const {
   if (interp_ == TableInterpolation::Linear) return fLinear(idx(side), s_k, df, d2f);
+  return fCubic(side, s_k, df, d2f);
+}
+
+double KecTable::fCubic(Side side, double s_k, double* df, double* d2f) const {
   // One interval lookup for all orders (solveKec calls this twice per Newton iteration).
   double v = 0.0, d1 = 0.0, d2 = 0.0;
   fspl_[idx(side)].eval(s_k, {&v, 1}, {&d1, 1}, {&d2, 1});
@@ -161,7 +165,12 @@ double KecTable::fLinear(std::size_t k, double s_k, double* df, double* d2f) con
 
 // ---- Online solver ------------------------------------------------------------------------------
 
-KecSolution solveKec(const KecTable& tab, const KecInput& in, const KecSolution* warm) {
+namespace {
+
+// The Newton solve of Eq. (23) with the equivalent profile f(side, s_k, &f', &f'') given.
+template <class Profile>
+KecSolution solveKecWith(const KecTable& tab, const KecInput& in, const KecSolution* warm,
+                         Profile profile) {
   KecSolution sol;
   const double r0 = tab.r0(), lr = tab.railLr();
   double z, phi, sl, sr;
@@ -174,7 +183,7 @@ KecSolution solveKec(const KecTable& tab, const KecInput& in, const KecSolution*
     phi = 0.0;
     sl = in.y_lir - in.y;
     sr = in.y_rir - in.y;
-    z = r0 + tab.f(Side::Left, sl) + in.z_lir;
+    z = r0 + profile(Side::Left, sl, nullptr, nullptr) + in.z_lir;
   }
   constexpr int kMaxIter = 30;
   constexpr double kTol = 1e-13;
@@ -184,8 +193,8 @@ KecSolution solveKec(const KecTable& tab, const KecInput& in, const KecSolution*
   double fl = 0, dfl = 0, d2fl = 0, fr = 0, dfr = 0, d2fr = 0;
   bool ok = false;
   for (int it = 0; it <= kMaxIter; ++it) {
-    fl = tab.f(Side::Left, sl, &dfl, &d2fl);
-    fr = tab.f(Side::Right, sr, &dfr, &d2fr);
+    fl = profile(Side::Left, sl, &dfl, &d2fl);
+    fr = profile(Side::Right, sr, &dfr, &d2fr);
     g << in.y + sl + phi * (r0 + fl) - in.y_lir, in.y + sr + phi * (r0 + fr) - in.y_rir,
         z + phi * (lr + sl) - r0 - fl - in.z_lir, z + phi * (-lr + sr) - r0 - fr - in.z_rir;
     J << 0.0, r0 + fl, 1.0 + phi * dfl, 0.0,  //
@@ -236,6 +245,18 @@ KecSolution solveKec(const KecTable& tab, const KecInput& in, const KecSolution*
                       sr >= tab.validMin(Side::Right) && sr <= tab.validMax(Side::Right);
   sol.status = inside ? KecStatus::Ok : KecStatus::OutOfTable;
   return sol;
+}
+
+}  // namespace
+
+KecSolution solveKec(const KecTable& tab, const KecInput& in, const KecSolution* warm) {
+  if (tab.interpolation() == TableInterpolation::Linear)
+    return solveKecWith(tab, in, warm, [&tab](Side side, double s_k, double* df, double* d2f) {
+      return tab.fLinear(side, s_k, df, d2f);
+    });
+  return solveKecWith(tab, in, warm, [&tab](Side side, double s_k, double* df, double* d2f) {
+    return tab.fCubic(side, s_k, df, d2f);
+  });
 }
 
 Eigen::Vector4d kecQuadraticTerm(const KecSolution& sol, const Eigen::Vector4d& xd) {

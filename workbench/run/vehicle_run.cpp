@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "railbench/version.hpp"
+#include "workbench/contact/interpolation.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
 #include "workbench/integrators/registry.hpp"
@@ -215,6 +216,9 @@ void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
          std::string(dynamics::ContactModel::couplingName(cm.coupling)));
   f.attr("/contact", "min_normal_force", cm.min_normal_force);
   f.attr("/contact", "mu", m.spec.contact.mu);
+  // Which interpolation the tables were read with (cubic/bicubic or the paper's linear, section
+  // 5.5): results of the two are not interchangeable.
+  f.attr("/contact", "table_interpolation", std::string(nameOf(cm.geometry.interpolation)));
   const auto& ts = cm.tableStats();
   f.attr("/contact", "table_build_time_s", ts.build_seconds);
   f.attr("/contact", "table_bytes", static_cast<std::int64_t>(ts.bytes));
