@@ -5,7 +5,7 @@ local M = {}
 
 -- Profiles: S1002 on 60E1 at 1:40, B = 1360 mm, G = 1435 mm, r0 = 0.46 m. The paper's
 -- LB-140-Area rail (Table 1: Lw = 0.7515 m, Lr = 0.7555 m, r0 = 0.457 m) has no public head
--- geometry, so its positions cannot be used with 60E1 unchanged (docs/contact_dynamics.md).
+-- geometry, so its positions cannot be used with 60E1 unchanged (docs/profiles.md, "Positioning").
 -- Paper Table 1 alternative (LB-140-Area positions; with 60E1 they mean B = 1363 mm and
 -- G ~ 1440 mm): --set profiles.lw=0.7515 --set profiles.lr=0.7555 --set profiles.r0=0.457
 -- after removing back_to_back and gauge below.
