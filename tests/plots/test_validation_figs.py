@@ -8,6 +8,7 @@ usage: /usr/bin/python3 -m pytest -q tests/plots/test_validation_figs.py
     failure, or always with RB_KEEP_TMP=1).
 """
 import csv
+import subprocess
 import os
 import tempfile
 
@@ -242,3 +243,23 @@ def test_set_up_variants_parse_as_their_case_and_are_told_apart():
           "an unknown variant is not taken for a case")
     for f in os.listdir(os.path.join(ROOT, "scenarios", "validation", "variants")):
         check(vt.parse_case(f) is not None and vt.variant(f), f"shipped variant {f} parses")
+
+
+def test_tables_block_of_contact_geometry():
+    """docs/contact_geometry.md's generated block (railbench/docs_tables.py): "missing" without a
+    tables file; with the validation cases' tables the conicity row and the six delta r jumps."""
+    from railbench.docs_tables import tables_block
+    out = os.path.join(TMP, "tables_docs")
+    check("Not generated" in tables_block(out), "no tables file: a 'not generated' note")
+    if not os.path.exists(WORKBENCH):
+        pytest.skip("no workbench program")
+    os.makedirs(os.path.join(out, "tables"), exist_ok=True)
+    h5 = os.path.join(out, "tables", "study.h5")
+    r = subprocess.run([WORKBENCH, "tables", "scenarios/validation/case3_lut.lua", "--out", h5],
+                       cwd=ROOT, capture_output=True, text=True,
+                       env=dict(os.environ, RAILBENCH_ROOT=ROOT))
+    check(r.returncode == 0, f"workbench tables: {r.stderr}")
+    block = tables_block(out)
+    check("tan gamma_e" in block and "| 3 |" in block, "conicity row over the amplitudes")
+    jumps = [l for l in block.splitlines() if l.startswith("| +") or l.startswith("| -")]
+    check(len(jumps) == 6, f"six located delta r jumps (three per side), got {len(jumps)}")
