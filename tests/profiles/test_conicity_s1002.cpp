@@ -12,13 +12,11 @@
 #include <utility>
 #include <vector>
 
+#include "../contact/contact_test_util.hpp"
 #include "workbench/contact/derived.hpp"
 #include "workbench/contact/geometry.hpp"
 #include "workbench/contact/lut.hpp"
 #include "workbench/profiles/conicity.hpp"
-#include "workbench/profiles/positioning.hpp"
-#include "workbench/profiles/rail60e1.hpp"
-#include "workbench/profiles/s1002.hpp"
 
 namespace {
 
@@ -27,25 +25,8 @@ using rb::contact::RollingRadiusTable;
 using rb::profiles::DrJump;
 using rb::profiles::RollingRadiusDifference;
 
-ContactGeometryConfig s1002On60E1() {
-  using rb::profiles::Profile;
-  using rb::profiles::Side;
-  const double r0 = 0.46;
-  const auto pos = rb::profiles::positionS1002On60E1(1.360, 1.435, r0, 1.0 / 40.0);
-  ContactGeometryConfig c;
-  c.left_wheel = std::make_shared<const Profile>(rb::profiles::s1002Wheel(r0, Side::Left));
-  c.right_wheel = std::make_shared<const Profile>(rb::profiles::s1002Wheel(r0, Side::Right));
-  c.left_rail = std::make_shared<const Profile>(rb::profiles::rail60E1(Side::Left));
-  c.right_rail = std::make_shared<const Profile>(rb::profiles::rail60E1(Side::Right));
-  c.wheel_lw = pos.Lw;
-  c.rail_lr = pos.Lr;
-  c.beta = pos.beta;
-  c.r0 = r0;
-  return c;
-}
-
 struct S1002Geometry {
-  ContactGeometryConfig cfg = s1002On60E1();
+  ContactGeometryConfig cfg = rbtest::s1002On60E1();
   rb::contact::LutTable lut = rb::contact::buildLut(cfg);
   rb::contact::ContactSolver solver{cfg};
   RollingRadiusTable rr = rb::contact::rollingRadiusDifference(lut, solver, 0.0);
