@@ -114,8 +114,9 @@ return function(opts)
       -- springs (ASSUMPTION). ASSUMPTION: Ksy is the SERIES stiffness of the lateral damper (like
       -- Kseries of the vertical dampers), not a spring in parallel: read in parallel, the car sits
       -- 66 mm inside its track frame in the paper's R = 500 m curve at 20 m/s; as a series
-      -- stiffness 28-31 mm; the paper's Table 6 has 41.8 mm (KEC) / 41.4 mm (UM). See
-      -- docs/vehicle.md, section 4.
+      -- stiffness 28-31 mm (both measured without the anti-roll bars, which move the car towards
+      -- the paper's value); the paper's Table 6 has 41.8 mm (KEC) / 41.4 mm (UM). See
+      -- docs/vehicle.md, section 4, and the generated case-2 table of docs/validation.md.
       add(damper { name = "sec_y_" .. bogie .. "_" .. tag, from = "car", to = bogie,
                           at_from = pc, at_to = pb, direction = "y",
                           damping = 32e3, series_stiffness = 6000e3 })
