@@ -57,10 +57,8 @@ void writeProfile(io::ResultFile& f, const std::string& group, const profiles::P
 // conicity. The delta_r jumps (contact-point jumps, located on Eq. 12 between the nodes) enter the
 // conicity as exact discontinuities: interpolating across one would bias tan(gamma_e) at
 // amplitudes just beyond it.
-contact::RollingRadiusTable writeDerived(io::ResultFile& f, const contact::LutTable& lut,
-                                         const contact::ContactGeometryConfig& cfg) {
-  const contact::ContactSolver solver(cfg);
-  contact::RollingRadiusTable rr = contact::rollingRadiusDifference(lut, solver, 0.0);
+void writeDerived(io::ResultFile& f, const contact::RollingRadiusTable& rr,
+                  const profiles::RollingRadiusDifference& drf) {
   const std::string D = "/tables/derived";
   f.dataset(D + "/y", rr.y, "m");
   f.dataset(D + "/z", rr.z, "m");
@@ -80,7 +78,6 @@ contact::RollingRadiusTable writeDerived(io::ResultFile& f, const contact::LutTa
   f.dataset(D + "/jump_delta_r_left", jl, "m");
   f.dataset(D + "/jump_delta_r_right", jr, "m");
   f.dataset(D + "/jump_side", jside, "-");
-  const profiles::RollingRadiusDifference drf = contact::conicityInput(rr);
   std::vector<double> amp, tg;
   for (double a = 0.5e-3; a <= 10e-3 + 1e-12; a += 0.25e-3) {
     double t = drf.tanGammaE(a);
@@ -90,7 +87,6 @@ contact::RollingRadiusTable writeDerived(io::ResultFile& f, const contact::LutTa
   }
   f.dataset(D + "/conicity_amplitude", amp, "m");
   f.dataset(D + "/tan_gamma_e", tg, "-");
-  return rr;
 }
 
 }  // namespace
@@ -183,8 +179,10 @@ int buildTables(const RunOptions& o) {
   f.attr(K, "dbar", cfg.kec_dbar);
   writeStats(f, K, kec.stats());
 
-  const contact::RollingRadiusTable rr = writeDerived(f, lut, cfg);
+  const contact::ContactSolver solver(cfg);
+  const contact::RollingRadiusTable rr = contact::rollingRadiusDifference(lut, solver, 0.0);
   const profiles::RollingRadiusDifference drf = contact::conicityInput(rr);
+  writeDerived(f, rr, drf);
   f.finalize();
 
   std::cout << "wrote " << out << ": LUT " << lut.ny() << " x " << lut.ng() << " in "

@@ -214,6 +214,24 @@ LutValue LutTable::channelAt(std::size_t ch, const Cell& c) const {
 // constraint velocities jump where a wheelset crosses a node line, the price of the paper's C0
 // tables. The node slopes of the stored data are not read.
 
+namespace {
+
+// The bilinear interpolant of one channel on its cell (p: the channel's node at (y_i, xi_j); the
+// other three nodes stride_y and stride_g further on), with its slopes and cross derivative.
+struct Bilinear {
+  double v, dy, dxi, dyxi;
+};
+Bilinear bilinear(const double* p, std::size_t stride_y, std::size_t stride_g, double t, double u,
+                  double hy, double hg) {
+  const double t0 = 1.0 - t, u0 = 1.0 - u;
+  const double f00 = p[0], f10 = p[stride_y], f01 = p[stride_g], f11 = p[stride_g + stride_y];
+  return {u0 * (t0 * f00 + t * f10) + u * (t0 * f01 + t * f11),
+          (u0 * (f10 - f00) + u * (f11 - f01)) / hy, (t0 * (f01 - f00) + t * (f11 - f10)) / hg,
+          (f11 - f10 - f01 + f00) / (hy * hg)};
+}
+
+}  // namespace
+
 template <bool kDerivatives>
 void LutTable::evalRangeLinear(const Cell& c, LutSample& out, std::size_t first,
                                std::size_t last) const {
@@ -231,14 +249,12 @@ void LutTable::evalRangeLinear(const Cell& c, LutSample& out, std::size_t first,
     }
     return;
   }
-  const double u = c.u, u0 = 1.0 - u;
   for (std::size_t ch = first; ch < last; ++ch) {
-    const double* p = base + ch * 4;
-    const double f00 = p[0], f10 = p[stride_y], f01 = p[stride_g], f11 = p[stride_g + stride_y];
-    out.value[ch] = u0 * (t0 * f00 + t * f10) + u * (t0 * f01 + t * f11);
+    const Bilinear b = bilinear(base + ch * 4, stride_y, stride_g, t, c.u, hy_, hg_);
+    out.value[ch] = b.v;
     if constexpr (kDerivatives) {
-      out.d_dy[ch] = (u0 * (f10 - f00) + u * (f11 - f01)) / hy_;
-      out.d_dxi[ch] = (t0 * (f01 - f00) + t * (f11 - f10)) / hg_;
+      out.d_dy[ch] = b.dy;
+      out.d_dxi[ch] = b.dxi;
     }
   }
 }
@@ -254,12 +270,11 @@ LutValue LutTable::channelAtLinear(std::size_t ch, const Cell& c) const {
     r.dy = (p[stride_y] - p[0]) / hy_;
     return r;
   }
-  const double u = c.u, u0 = 1.0 - u;
-  const double f00 = p[0], f10 = p[stride_y], f01 = p[stride_g], f11 = p[stride_g + stride_y];
-  r.v = u0 * (t0 * f00 + t * f10) + u * (t0 * f01 + t * f11);
-  r.dy = (u0 * (f10 - f00) + u * (f11 - f01)) / hy_;
-  r.dxi = (t0 * (f01 - f00) + t * (f11 - f10)) / hg_;
-  r.dyxi = (f11 - f10 - f01 + f00) / (hy_ * hg_);
+  const Bilinear b = bilinear(p, stride_y, stride_g, t, c.u, hy_, hg_);
+  r.v = b.v;
+  r.dy = b.dy;
+  r.dxi = b.dxi;
+  r.dyxi = b.dyxi;
   return r;
 }
 
