@@ -8,6 +8,9 @@
     provenance record FILE.json [--root DIR] the source tree of a set of runs (provenance.py)
     validation-tables OUT_DIR                the CSVs of docs/validation.md (validation.py)
     effects-instructions OUT/effects [...]   callgrind instructions per evaluation (effects.py)
+    precision DIR [...]                      `workbench precision`: errors, Pareto front (precision.py)
+    stress DIR [...]                         `workbench stress`: the stability map (stress.py)
+    effects DIR [...]                        `workbench effects`: cost and change per effect (effects_cmd.py)
 
 Each command's own --help tells its options.  Exit status 0 on success, 1 on an error (one line
 "railbench COMMAND: error: ..." on stderr).
@@ -25,6 +28,9 @@ COMMANDS = {
     "provenance": "provenance",
     "validation-tables": "validation",
     "effects-instructions": "effects",
+    "precision": "precision",
+    "stress": "stress",
+    "effects": "effects_cmd",
 }
 
 

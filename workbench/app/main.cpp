@@ -1,5 +1,6 @@
-// The `workbench` command line: run, check, assess, tables, study, help scenario, --version. Never
-// prompts; every problem is reported as file:line: message with a non-zero exit code.
+// The `workbench` command line: run, check, assess, tables, study, precision, stress, effects,
+// help scenario, --version. Never prompts; every problem is reported as file:line: message with a
+// non-zero exit code.
 //   exit 0: ok; 1: bad input (scenario, options; nothing was run); 2: the run failed (partial
 //   results kept), or its result could not be written (an earlier result is unchanged);
 //   3: internal error (a bug).
@@ -12,7 +13,10 @@
 
 #include "railbench/version.hpp"
 #include "workbench/app/assess.hpp"
+#include "workbench/app/effects.hpp"
+#include "workbench/app/precision.hpp"
 #include "workbench/app/run.hpp"
+#include "workbench/app/stress.hpp"
 #include "workbench/app/study.hpp"
 #include "workbench/app/tables.hpp"
 #include "workbench/core/error.hpp"
@@ -69,6 +73,14 @@ int workbench(int argc, char** argv) {
   study->add_option("--out", so.out, "output folder (default out/<study>)");
   study->add_option("--jobs", so.jobs, "cases at once (default: the study's jobs, else cores)");
 
+  // The users' three asks on any scenario (docs/three_asks.md).
+  rb::app::PrecisionOptions po;
+  auto* precision = rb::app::addPrecisionCommand(app, po);
+  rb::app::StressOptions sto;
+  auto* stress = rb::app::addStressCommand(app, sto);
+  rb::app::EffectsOptions eo;
+  auto* effects = rb::app::addEffectsCommand(app, eo);
+
   rb::app::AssessOptions ao;
   auto* assess = app.add_subcommand(
       "assess", "recompute /assessment of a result file from its datasets and replace it");
@@ -108,6 +120,22 @@ int workbench(int argc, char** argv) {
       so.root = root;
       so.program = fs::read_symlink("/proc/self/exe").string();
       return rb::app::runStudy(so);
+    }
+    const std::string program = fs::read_symlink("/proc/self/exe").string();
+    if (*precision) {
+      po.root = root;
+      po.program = program;
+      return rb::app::runPrecision(po);
+    }
+    if (*stress) {
+      sto.root = root;
+      sto.program = program;
+      return rb::app::runStress(sto);
+    }
+    if (*effects) {
+      eo.root = root;
+      eo.program = program;
+      return rb::app::runEffects(eo);
     }
     ro.root = root;
     return rb::app::runScenario(ro);

@@ -252,11 +252,10 @@ std::vector<std::string> plotsEnvironment(const fs::path& plots) {
   return env;
 }
 
-// Figures and tables of the study (`plots/rbplot study DIR`, run as `python3 -m railbench study
-// DIR` with Debian's python3 as in ./wb run): 0 when drawn or switched off
-// (RAILBENCH_STUDY_PLOTS=0) or when python3 / the package is missing (a note), 4 when the
-// command failed (the study's results are complete all the same).
-int plotStudy(const StudyOptions& o, const std::string& dir) {
+}  // namespace
+
+
+int runPlots(const StudyOptions& o, const std::vector<std::string>& plotArgs) {
   if (const char* e = std::getenv("RAILBENCH_STUDY_PLOTS"); e && std::string(e) == "0") return 0;
   const char* env = std::getenv("RAILBENCH_PYTHON");
   std::string python = env && *env ? env : "/usr/bin/python3";
@@ -267,7 +266,8 @@ int plotStudy(const StudyOptions& o, const std::string& dir) {
               << " not found)\n";
     return 0;
   }
-  std::vector<std::string> args = {python, "-m", "railbench", "study", dir};
+  std::vector<std::string> args = {python, "-m", "railbench"};
+  args.insert(args.end(), plotArgs.begin(), plotArgs.end());
   std::vector<std::string> envs = plotsEnvironment(plots);
   std::vector<char*> argv;
   std::vector<char*> envp;
@@ -284,13 +284,13 @@ int plotStudy(const StudyOptions& o, const std::string& dir) {
   int status = 0;
   if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     std::cerr << "study: the figures failed: PYTHONPATH=" << plots.string() << " " << python
-              << " -m railbench study " << dir << "\n";
+              << " -m railbench";
+    for (const auto& a : plotArgs) std::cerr << " " << a;
+    std::cerr << "\n";
     return 4;
   }
   return 0;
 }
-
-}  // namespace
 
 std::string buildId(const std::string& program) {
   std::string why;
@@ -612,8 +612,15 @@ void writeSummaryH5(const fs::path& path, const scenario::StudySpec& st,
 }  // namespace
 
 int runStudy(const StudyOptions& o) {
-  scenario::StudySpec st = scenario::loadStudy(o.file, o.root);
-  fs::path dir = o.out.empty() ? fs::path("out") / fs::path(o.file).stem() : fs::path(o.out);
+  const scenario::StudySpec st = scenario::loadStudy(o.file, o.root);
+  StudyOptions so = o;
+  if (so.out.empty()) so.out = (fs::path("out") / fs::path(o.file).stem()).string();
+  return runStudySpec(st, so, {"study", so.out});
+}
+
+int runStudySpec(const scenario::StudySpec& st, const StudyOptions& o,
+                 const std::vector<std::string>& plotArgs) {
+  const fs::path dir = o.out;
   std::error_code ec;
   fs::create_directories(dir / ".locks", ec);
   if (ec)
@@ -659,7 +666,7 @@ int runStudy(const StudyOptions& o) {
     std::cerr << "study: " << sm.runsElsewhere
               << " runs were being run by another runner; run the study again once it has "
                  "finished to summarise them\n";
-  const int plots = plotStudy(o, dir.string());
+  const int plots = plotArgs.empty() ? 0 : runPlots(o, plotArgs);
   if (sm.runsKnown > 0 && sm.runsOk == 0) {
     std::cerr << "study: no run of the study is ok (" << sm.runsKnown
               << " failed or could not run)\n";

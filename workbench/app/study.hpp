@@ -29,8 +29,10 @@
 // the same folder (skipped with RAILBENCH_STUDY_PLOTS=0; RAILBENCH_PYTHON names another
 // interpreter than /usr/bin/python3).
 #include <string>
+#include <vector>
 
 #include "workbench/scenario/scenario.hpp"
+#include "workbench/scenario/study.hpp"
 
 namespace rb::app {
 
@@ -46,6 +48,19 @@ struct StudyOptions {
 // 1 on bad input (nothing was run), 2 when every run of the study failed or could not run, 4 when
 // the figures failed (the summaries are complete).
 int runStudy(const StudyOptions& options);
+
+// Runs the cases of an already expanded study `st` (a study file's, or one a command such as
+// `workbench precision` made from a scenario) into the folder options.out (required), with the
+// same content-addressed resume, locks and summaries as runStudy; then runs `python3 -m railbench
+// <plotArgs...>` (nothing when plotArgs is empty). Returns as runStudy.
+int runStudySpec(const scenario::StudySpec& st, const StudyOptions& options,
+                 const std::vector<std::string>& plotArgs);
+
+// Figures and tables of a study folder: `python3 -m railbench <plotArgs...>` (plots/rbplot) with
+// Debian's python3 as in ./wb run (RAILBENCH_PYTHON names another interpreter). 0 when drawn or
+// switched off (RAILBENCH_STUDY_PLOTS=0) or when python3 / the package is missing (a note), 4 when
+// the command failed (the study's results are complete all the same).
+int runPlots(const StudyOptions& options, const std::vector<std::string>& plotArgs);
 
 // Identifies the build that runs the cases: "build:<hash of the program's bytes>", or
 // "build:unknown" when the program cannot be read.

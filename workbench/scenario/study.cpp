@@ -311,6 +311,14 @@ void labelCases(StudySpec& st, const std::vector<std::string>& given,
 
 }  // namespace
 
+std::string studyCaseId(const std::vector<std::string>& overrides, const std::string& ownBase) {
+  std::string key = join(overrides, ";");
+  if (!ownBase.empty()) key += ";base=" + ownBase;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "case_%016llx", static_cast<unsigned long long>(fnv1a(key)));
+  return buf;
+}
+
 StudySpec loadStudy(const std::string& path, const std::string& root) {
   HostOptions ho;
   ho.root = root;
@@ -356,11 +364,7 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
       matrixPart.push_back(c);
       // Named by its overrides (and its own base) only, so adding values to a study, or
       // relabelling, keeps old results resumable.
-      std::string key = join(sc.overrides, ";");
-      if (!v.base.empty()) key += ";base=" + v.base;
-      char buf[32];
-      std::snprintf(buf, sizeof buf, "case_%016llx", static_cast<unsigned long long>(fnv1a(key)));
-      sc.id = buf;
+      sc.id = studyCaseId(sc.overrides, v.base);
       if (!ids.insert(sc.id).second)
         d.add(n->loc, "study: two cases have the same overrides and base (" +
                           (v.label.empty() ? join(sc.overrides, " ") : v.label) +

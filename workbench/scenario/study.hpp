@@ -44,6 +44,11 @@ struct StudySpec {
   static constexpr long long kDefaultMaxCases = 10000;
 };
 
+// The stable file name of a case: "case_<64-bit hash of its overrides and its own base>" (ownBase
+// as written in the study, "" for the study's base), so adding cases to a study or relabelling them
+// keeps earlier results resumable.
+std::string studyCaseId(const std::vector<std::string>& overrides, const std::string& ownBase);
+
 // Throws InputError (file:line) for a bad study file.
 StudySpec loadStudy(const std::string& path, const std::string& root);
 

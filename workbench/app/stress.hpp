@@ -1,0 +1,28 @@
+#pragma once
+// `workbench stress SCENARIO.lua`: one of the users' three asks run on any scenario (docs/three_asks.md).
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace rb::app {
+
+struct StressOptions {
+  std::string scenario;                // the user's scenario (.lua)
+  std::vector<std::string> overrides;  // --set block.key=value, applied to every case
+  std::string out;                     // output folder (default out/<scenario stem>_stress)
+  std::string root;                    // project root
+  std::string program;                 // the workbench executable that runs the cases
+  int jobs = 0;                        // cases at once, 0 = number of cores
+};
+
+// Declares the subcommand and its options on `app` (filled into `options` when parsed).
+CLI::App* addStressCommand(CLI::App& app, StressOptions& options);
+
+// Runs the command; returns the process exit code (0 ok, 1 bad input, 2 no case ran, 4 figures
+// failed). Throws InputError for a bad scenario or option.
+int runStress(const StressOptions& options);
+
+}  // namespace rb::app
