@@ -27,19 +27,16 @@ usage: hard_cases.py --workbench BIN --case NAME --out-dir DIR
 import argparse
 import csv
 import glob
-import math
 import os
 import re
 import subprocess
 import sys
 import time
 
-import h5py
-import numpy as np
-
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "plots"))
 from railbench import provenance  # noqa: E402  (the commit each record row was run with, for docs/ stamps)
+from railbench.stress_checks import BOUNDS, check_file  # noqa: E402  (shared with workbench stress)
 
 # Fixed-step and adaptive settings used by the cases. Adaptive methods run with rtol = atol
 # (as the paper) and the paper's 1 ms maximum step (section 5.4). Every combination states its
@@ -88,13 +85,8 @@ def combo(c, expect="any", extra=(), suffix="", pp=None, onset=None):
 
 PRESCRIBED = ["contact.wheelset_spin=prescribed"]
 
-# Plausibility bounds. |y| of a wheelset: flange clearance of S1002/60E1 (~ 7-10 mm, the LUT
-# flange is reached at y ~ -10 mm) plus a few mm; the LUT table ends at 18 mm. Wheel loads: static
-# ~ 54 kN (wagon), 45 kN (single wheelset); 10x static is not plausible. Y/Q: the Nadal limit of a
-# 70 deg flange is 1.5 at mu = 0.2364 and 0.95 at mu = 0.5; short impact peaks may exceed it, 4 may
-# not.
-BOUNDS = {"y_mm": 14.0, "normal_kN": 600.0, "lift_kN": 30.0, "flange_kN": 800.0,
-          "indent_mm": 1.0, "yq": 4.0}
+# Plausibility bounds (BOUNDS) and the checks of a result file (check_file) are shared with
+# `workbench stress` (plots/railbench/stress_checks.py, docs/stress.md).
 
 CASES = {
     # --- short cases (default suite, label hard) ---
@@ -245,153 +237,12 @@ CASES = {
     },
 }
 
-FIELDS = ["case", "combination", "expect", "rc", "status", "verdict", "t_reached", "t_end",
+FIELDS = ["case", "combination", "expect", "rc", "status", "outcome", "verdict", "t_reached", "t_end",
           "cpu_s", "wall_s", "rhs_evals", "rhs_evals_jac", "steps", "rejected_steps",
           "jacobian_evals", "max_abs_y_mm", "max_normal_kN", "min_normal_kN", "max_flange_kN",
           "max_normal_flange_kN", "flange_time_share",
           "max_indent_mm", "max_abs_yq", "ws1_y_pp_last_mm", "onset_t", "onset_speed", "problems", "notes", "message",
           "commit", "run_date"]
-
-
-def attr(g, name, default=None):
-    if name not in g.attrs:
-        return default
-    v = g.attrs[name]
-    if isinstance(v, bytes):
-        return v.decode()
-    if isinstance(v, np.ndarray) and v.shape == ():
-        return v.item()
-    return v
-
-
-def check_file(path, rc, bounds, t_end_hint):
-    """Returns (row fields, list of problems, list of notes). Plausibility is required of a
-    finished run; in a failed run's partial results the last outputs before the failure may show
-    the divergence that caused it (e.g. RK4 at 1 ms into the stiff flange): noted, not failed."""
-    problems = []
-    implausible = []
-    row = {}
-    with h5py.File(path, "r") as f:
-        st = f["/stats"]
-        status = attr(st, "status", "")
-        msg = attr(st, "message", "")
-        row["status"] = status
-        row["message"] = msg
-        for k in ("t_reached", "rhs_evals", "rhs_evals_jac", "steps", "rejected_steps",
-                  "jacobian_evals"):
-            row[k] = attr(st, k, "")
-        row["cpu_s"] = attr(st, "cpu_time_s", "")
-        # Non-finite values anywhere: every numeric dataset and attribute.
-        bad = []
-
-        def visit(name, obj):
-            for an, av in obj.attrs.items():
-                a = np.asarray(av)
-                if a.dtype.kind in "fc" and not np.all(np.isfinite(a)):
-                    bad.append(name + "@" + an)
-            if isinstance(obj, h5py.Dataset) and obj.dtype.kind in "fc":
-                if not np.all(np.isfinite(obj[...])):
-                    bad.append(name)
-        f.visititems(visit)
-        for an, av in f.attrs.items():
-            a = np.asarray(av)
-            if a.dtype.kind in "fc" and not np.all(np.isfinite(a)):
-                bad.append("/@" + an)
-        if bad:
-            problems.append("NaN/Inf in " + ", ".join(bad[:5]))
-
-        t = f["/time"][:] if "/time" in f else np.zeros(0)
-        if len(t) == 0:
-            problems.append("no /time samples (no partial result)")
-        t_reached = float(row["t_reached"]) if row["t_reached"] != "" else float("nan")
-        if rc == 0:
-            if status != "ok":
-                problems.append("exit 0 but /stats/status = %r" % status)
-            if len(t) and abs(t[-1] - t_end_hint) > 1e-6 * max(1.0, t_end_hint):
-                problems.append("ok run ends at t = %g, not %g" % (t[-1], t_end_hint))
-        else:
-            if status != "failed":
-                problems.append("exit 2 but /stats/status = %r" % status)
-            if not re.search(r"failed at t = [-0-9.e+]+", msg):
-                problems.append("failure message without failure time: %r" % msg[:120])
-            if "(leading wheelset at s = " not in msg:
-                problems.append("failure message without distance")
-            if not (t_reached < t_end_hint):
-                problems.append("failed but t_reached = %g >= t_end" % t_reached)
-            if len(t) and t[-1] > t_reached + 1e-9:
-                problems.append("partial output beyond t_reached")
-        row["t_end"] = t_end_hint
-
-        ymax = nmax = fmax = imax = yqmax = nfmax = 0.0
-        in_flange = np.zeros(len(t), dtype=bool)
-        nmin = float("inf")
-        pp = float("nan")
-        if "/contact" in f:
-            for ws in f["/contact"]:
-                y = f["/bodies/%s/y" % ws][:]
-                if len(y):
-                    ymax = max(ymax, float(np.max(np.abs(y))))
-                if ws in ("ws1", "ws") and len(y):
-                    last = t >= (t[-1] - 1.0) if len(t) else slice(None)
-                    pp = float(np.ptp(y[last])) if np.any(last) else float("nan")
-                for side in ("left", "right"):
-                    g = f["/contact/%s/%s" % (ws, side)]
-                    n = g["normal_force"][:]
-                    if len(n) == 0:
-                        continue
-                    nmax = max(nmax, float(n.max()))
-                    nmin = min(nmin, float(n.min()))
-                    ff = g["flange_force"][:]
-                    nf = g["normal_flange"][:]
-                    fmax = max(fmax, float(ff.max()))
-                    nfmax = max(nfmax, float(nf.max()))
-                    if len(ff) == len(in_flange):
-                        in_flange |= (ff > 0) | (nf > 0)
-                    imax = max(imax, float(g["flange_indentation"][:].max()))
-                    yqmax = max(yqmax, float(np.max(np.abs(g["y_over_q"][:]))))
-        # Hunting onset: first time the peak-to-peak of ws1's y over the trailing second exceeds
-        # 4 mm (a stable wagon stays near 1 mm at 60 m/s, hunting reaches ~7.5 mm); the speed
-        # then from /vehicle/speed (speed ramp) if written.
-        onset_v = float("nan")
-        if "/bodies/ws1/y" in f and len(t) > 1:
-            y1 = f["/bodies/ws1/y"][:]
-            dt = t[1] - t[0]
-            win = max(1, int(round(1.0 / dt)))
-            for k in range(win, len(t)):
-                if np.ptp(y1[k - win:k + 1]) > 4e-3:
-                    if "/vehicle/speed" in f:
-                        onset_v = float(f["/vehicle/speed"][k])
-                    else:
-                        onset_v = float("nan")
-                    row["onset_t"] = float(t[k])
-                    break
-        row["onset_speed"] = onset_v
-        row.update({"max_abs_y_mm": ymax * 1e3, "max_normal_kN": nmax / 1e3,
-                    "min_normal_kN": (nmin if math.isfinite(nmin) else 0.0) / 1e3,
-                    "max_flange_kN": fmax / 1e3, "max_normal_flange_kN": nfmax / 1e3,
-                    "flange_time_share": float(np.mean(in_flange)) if len(t) else 0.0, "max_indent_mm": imax * 1e3,
-                    "max_abs_yq": yqmax, "ws1_y_pp_last_mm": pp * 1e3})
-        # Plausibility of what was computed.
-        problems_before = problems
-        problems = implausible
-        if ymax * 1e3 > bounds["y_mm"]:
-            problems.append("|y| = %.2f mm > %.1f mm" % (ymax * 1e3, bounds["y_mm"]))
-        if nmax / 1e3 > bounds["normal_kN"]:
-            problems.append("normal force %.0f kN > %.0f kN" % (nmax / 1e3, bounds["normal_kN"]))
-        if math.isfinite(nmin) and -nmin / 1e3 > bounds["lift_kN"]:
-            problems.append("normal force %.0f kN (wheel lift beyond %.0f kN)"
-                            % (nmin / 1e3, bounds["lift_kN"]))
-        if fmax / 1e3 > bounds["flange_kN"]:
-            problems.append("flange force %.0f kN > %.0f kN" % (fmax / 1e3, bounds["flange_kN"]))
-        if imax * 1e3 > bounds["indent_mm"]:
-            problems.append("flange indentation %.3f mm > %.1f mm"
-                            % (imax * 1e3, bounds["indent_mm"]))
-        if yqmax > bounds["yq"]:
-            problems.append("|Y/Q| = %.2f > %.1f" % (yqmax, bounds["yq"]))
-    if rc == 0:
-        return row, problems_before + implausible, []
-    return row, problems_before, ["partial results before the failure: " + "; ".join(implausible)] \
-        if implausible else []
 
 
 def t_end_of(workbench, scenario, sets):
@@ -501,6 +352,11 @@ def run_case(args):
         if c["expect"] == "lift" and (rc != 2 or "wheel lift" not in str(row.get("message", ""))):
             problems.append("expected to stop with the wheel-lift diagnostic, exit %s" % rc)
         row["problems"] = "; ".join(x for x in problems if x)
+        # The outcome in the classes of `workbench stress` (docs/stress.md; no reference here,
+        # so a finished run is "ok" by its own checks).
+        own = [x for x in problems if not x.startswith("expected ")]
+        row["outcome"] = ("failed badly" if own or rc not in (0, 2) else
+                          "ok" if rc == 0 else "failed cleanly")
         row["verdict"] = "FAIL" if problems else "pass"
         if problems:
             failures.append("%s / %s: %s" % (args.case, c["label"], row["problems"]))

@@ -1,23 +1,249 @@
 #include "workbench/app/stress.hpp"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
+
+#include "workbench/app/stress_plan.hpp"
+#include "workbench/app/study.hpp"
+#include "workbench/core/error.hpp"
+#include "workbench/scenario/scenario.hpp"
+#include "workbench/scenario/study.hpp"
+
+extern char** environ;
 
 namespace rb::app {
 
+namespace fs = std::filesystem;
+
 CLI::App* addStressCommand(CLI::App& app, StressOptions& o) {
-  auto* c = app.add_subcommand("stress", "not yet implemented");
+  auto* c = app.add_subcommand(
+      "stress", "hardened variants of a scenario against their own reference: the stability map");
   c->add_option("scenario", o.scenario, "scenario file (.lua)")->required();
   c->add_option("--set", o.overrides, "override a scenario value: block.key=value")
       ->allow_extra_args(false);
   c->add_option("--out", o.out, "output folder (default out/<scenario>_stress)");
   c->add_option("--jobs", o.jobs, "cases at once (default: cores)");
+  c->add_option("--axes", o.axes,
+                "axes to harden along (default all that apply): nominal, flange_stiffness, "
+                "transition, speed, irregularity, friction, curve_radius")
+      ->delimiter(',');
+  c->add_option("--values", o.values,
+                "values of one axis: AXIS=v1,v2,... (flange_stiffness [N/m^1.5], transition "
+                "[m], friction [-]; speed, irregularity, curve_radius: factors on the nominal)")
+      ->allow_extra_args(false);
+  c->add_option("--integrators", o.integrators,
+                "settings METHOD:VALUE[:paper] (step [s] of rk4/abm, tolerance of dopri5/bdf/ida; "
+                "default rk4:1e-3,abm:1e-3,dopri5:1e-6,bdf:1e-6)")
+      ->delimiter(',');
+  c->add_option("--reference", o.reference, "the reference setting of every hardened case")
+      ->capture_default_str();
+  c->add_option("--tolerance", o.tolerance,
+                "largest wheelset lateral error [mm] against the reference of an ok run")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  c->add_flag("--quick", o.quick,
+              "the hardest value of each axis, rk4:1e-3 and dopri5:1e-6, runs of at most 2 s");
+  c->add_option("--expect", o.expect,
+                "expectation file: AXIS, VALUE, INTEGRATOR, OUTCOME[|OUTCOME] per line; exit 5 "
+                "and the mismatches when an outcome differs")
+      ->check(CLI::ExistingFile);
   return c;
 }
 
+namespace {
+
+scenario::ScenarioSpec load(const StressOptions& o, const std::vector<std::string>& overrides) {
+  scenario::LoadOptions lo;
+  lo.root = o.root;
+  lo.overrides = overrides;
+  return scenario::loadScenario(o.scenario, lo);
+}
+
+std::map<std::string, std::vector<double>> parseValues(const std::vector<std::string>& given) {
+  std::map<std::string, std::vector<double>> out;
+  for (const auto& g : given) {
+    const auto eq = g.find('=');
+    if (eq == std::string::npos || eq + 1 == g.size())
+      throw InputError({"--values", 0}, "'" + g + "': expected AXIS=v1,v2,...");
+    std::vector<double>& vs = out[g.substr(0, eq)];
+    std::istringstream in(g.substr(eq + 1));
+    std::string tok;
+    while (std::getline(in, tok, ',')) {
+      try {
+        std::size_t used = 0;
+        const double v = std::stod(tok, &used);
+        if (used != tok.size() || !(v > 0)) throw std::invalid_argument(tok);
+        vs.push_back(v);
+      } catch (const std::exception&) {
+        throw InputError({"--values", 0}, "'" + g + "': '" + tok + "' is not a positive number");
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<stress::Setting> settings(const StressOptions& o, const scenario::ScenarioSpec& spec) {
+  std::vector<std::string> given = o.integrators;
+  if (given.empty())
+    given = o.quick ? std::vector<std::string>{"rk4:1e-3", "dopri5:1e-6"}
+                    : std::vector<std::string>{"rk4:1e-3", "abm:1e-3", "dopri5:1e-6", "bdf:1e-6"};
+  std::vector<stress::Setting> out;
+  for (const auto& g : given)
+    out.push_back(stress::parseSetting(g, spec.has_contact, "--integrators", spec.solver.max_step));
+  return out;
+}
+
+std::string csvField(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : " ") + x;
+  return s;
+}
+
+// The study of every hardened case x (reference + settings), and the table that tells the
+// classification which case is which (stress_cases.csv).
+struct Expanded {
+  scenario::StudySpec study;
+  std::ostringstream table;
+};
+
+void addCase(Expanded& e, const stress::Hardened& h, const stress::Setting& s,
+             const std::vector<std::string>& common, const std::string& role) {
+  std::vector<std::string> ov = common;
+  ov.insert(ov.end(), h.overrides.begin(), h.overrides.end());
+  ov.insert(ov.end(), s.overrides.begin(), s.overrides.end());
+  scenario::StudyCase c;
+  c.id = scenario::studyCaseId(ov, "");
+  c.overrides = ov;
+  c.label = h.axis + "=" + h.valueLabel + " " + s.label;
+  c.base = e.study.base;
+  c.role = role;
+  e.table << c.id << "," << h.axis << "," << stress::number(h.value) << ","
+          << csvField(h.valueLabel) << "," << csvField(s.label) << "," << role << ","
+          << stress::number(h.tEnd) << "," << csvField(join(ov)) << "\n";
+  e.study.cases.push_back(std::move(c));
+}
+
+// Every hardened case must be a valid scenario: a value out of a key's range is bad input.
+void validate(const StressOptions& o, const std::vector<std::string>& common,
+              const stress::Plan& plan, const stress::Setting& reference) {
+  for (const auto& h : plan.cases) {
+    std::vector<std::string> ov = common;
+    ov.insert(ov.end(), h.overrides.begin(), h.overrides.end());
+    ov.insert(ov.end(), reference.overrides.begin(), reference.overrides.end());
+    load(o, ov);
+  }
+}
+
+// `python3 -m railbench stress DIR ...`: classification, stress.csv, the map. Its exit code.
+int classify(const StressOptions& o, const std::string& dir) {
+  const char* env = std::getenv("RAILBENCH_PYTHON");
+  std::string python = env && *env ? env : "/usr/bin/python3";
+  const fs::path plots = fs::path(o.root) / "plots";
+  if (!fs::exists(python) || !fs::exists(plots / "railbench" / "stress.py")) {
+    std::cerr << "stress: cannot classify the runs: " << python << " or "
+              << (plots / "railbench").string() << " not found\n";
+    return 4;
+  }
+  std::vector<std::string> args = {
+      python, "-m", "railbench", "stress", dir, "--tolerance", stress::number(o.tolerance)};
+  if (!o.expect.empty()) args.insert(args.end(), {"--expect", o.expect});
+  if (const char* e = std::getenv("RAILBENCH_STUDY_PLOTS"); e && std::string(e) == "0")
+    args.emplace_back("--no-figure");
+  std::vector<std::string> envs;
+  std::string path = plots.string();
+  for (char** e = environ; e && *e; ++e) {
+    std::string kv = *e;
+    if (kv.rfind("PYTHONPATH=", 0) == 0) {
+      if (kv.size() > 11) path += ":" + kv.substr(11);
+      continue;
+    }
+    envs.push_back(std::move(kv));
+  }
+  envs.push_back("PYTHONPATH=" + path);
+  std::vector<char*> argv;
+  std::vector<char*> envp;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  for (auto& e : envs) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  std::cout.flush();
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execve(python.c_str(), argv.data(), envp.data());
+    _exit(127);
+  }
+  int status = 0;
+  if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status)) return 4;
+  const int code = WEXITSTATUS(status);
+  return code == 0 || code == 2 || code == 5 ? code : 4;
+}
+
+}  // namespace
+
 int runStress(const StressOptions& o) {
-  std::cerr << "workbench stress " << o.scenario << ": not implemented yet\n";
-  return 1;
+  std::vector<std::string> common = o.overrides;
+  scenario::ScenarioSpec spec = load(o, common);
+  if (!spec.has_vehicle)
+    throw InputError({o.scenario, 0}, "stress needs a vehicle scenario (no vehicle block)");
+  if (o.quick) {
+    const auto shorter = stress::shortenRun(spec, o.quickSeconds);
+    common.insert(common.end(), shorter.begin(), shorter.end());
+    if (!shorter.empty()) spec = load(o, common);
+  }
+  stress::PlanRequest req{o.axes, parseValues(o.values), o.quick};
+  const stress::Plan plan = stress::planAxes(spec, req);
+  for (const auto& n : plan.notes) std::cout << "stress: " << n << "\n";
+  if (plan.cases.empty()) throw InputError({"--axes", 0}, "no axis applies to " + o.scenario);
+  const auto runs = settings(o, spec);
+  const stress::Setting reference =
+      stress::parseSetting(o.reference, spec.has_contact, "--reference", spec.solver.max_step);
+  validate(o, common, plan, reference);
+
+  Expanded e;
+  e.study.file = fs::path(o.scenario).filename().string() + " (stress)";
+  e.study.base = o.scenario;
+  e.table << "case,axis,value,value_label,integrator,role,t_end,overrides\n";
+  for (const auto& h : plan.cases) {
+    addCase(e, h, reference, common, "reference");
+    for (const auto& s : runs) addCase(e, h, s, common, "");
+  }
+
+  StudyOptions so;
+  so.file = e.study.file;
+  so.root = o.root;
+  so.program = o.program;
+  so.jobs = o.jobs;
+  so.out = o.out.empty()
+               ? (fs::path("out") / (fs::path(o.scenario).stem().string() + "_stress")).string()
+               : o.out;
+  std::error_code ec;
+  fs::create_directories(so.out, ec);
+  {
+    std::ofstream t(fs::path(so.out) / "stress_cases.csv");
+    t << e.table.str();
+    if (!t) throw InputError({"--out", 0}, "cannot write " + so.out + "/stress_cases.csv");
+  }
+  std::cout << "stress " << o.scenario << ": " << plan.cases.size() << " hardened cases x ("
+            << runs.size() << " settings + reference " << reference.label << ") into " << so.out
+            << "\n";
+  // A failed run is a result here: runStudySpec's "no run ok" (2) does not end the command.
+  const int rc = runStudySpec(e.study, so, {});
+  if (rc == 1) return 1;
+  return classify(o, so.out);
 }
 
 }  // namespace rb::app

@@ -1,5 +1,10 @@
 #pragma once
-// `workbench stress SCENARIO.lua`: one of the users' three asks run on any scenario (docs/three_asks.md).
+// `workbench stress SCENARIO.lua`: one of the users' three asks run on any scenario
+// (docs/stress.md): does the scenario stay numerically stable when it is made harder? The
+// scenario is hardened along named axes (stress_plan.hpp); every hardened case runs with a set of
+// integrator settings and with its own tight-tolerance reference, each run in its own process
+// (runStudySpec); plots/rbplot stress classifies every run (ok, inaccurate, failed cleanly, failed
+// badly), writes stress.csv and the stability map and checks an expectation file.
 #include <string>
 #include <vector>
 
@@ -10,19 +15,28 @@ class App;
 namespace rb::app {
 
 struct StressOptions {
-  std::string scenario;                // the user's scenario (.lua)
-  std::vector<std::string> overrides;  // --set block.key=value, applied to every case
-  std::string out;                     // output folder (default out/<scenario stem>_stress)
-  std::string root;                    // project root
-  std::string program;                 // the workbench executable that runs the cases
-  int jobs = 0;                        // cases at once, 0 = number of cores
+  std::string scenario;                  // the user's scenario (.lua)
+  std::vector<std::string> overrides;    // --set block.key=value, applied to every case
+  std::string out;                       // output folder (default out/<scenario stem>_stress)
+  std::string root;                      // project root
+  std::string program;                   // the workbench executable that runs the cases
+  int jobs = 0;                          // cases at once, 0 = number of cores
+  std::vector<std::string> axes;         // --axes: empty = every axis that applies
+  std::vector<std::string> values;       // --values AXIS=v1,v2,...
+  std::vector<std::string> integrators;  // --integrators METHOD:VALUE[:paper],...
+  std::string reference = "bdf:1e-9";    // the reference setting of every hardened case
+  double tolerance = 1.0;                // [mm] largest wheelset lateral error of an "ok" run
+  bool quick = false;                    // hardest value per axis, two settings, at most 2 s
+  double quickSeconds = 2.0;             // [s] run length with --quick
+  std::string expect;                    // expectation file (docs/stress.md)
 };
 
 // Declares the subcommand and its options on `app` (filled into `options` when parsed).
 CLI::App* addStressCommand(CLI::App& app, StressOptions& options);
 
-// Runs the command; returns the process exit code (0 ok, 1 bad input, 2 no case ran, 4 figures
-// failed). Throws InputError for a bad scenario or option.
+// Runs the command; returns the process exit code (0 the map was made, 1 bad input, 2 no case
+// could run, 4 the figure failed, 5 an outcome differs from the expectation file). Throws
+// InputError for a bad scenario or option.
 int runStress(const StressOptions& options);
 
 }  // namespace rb::app

@@ -1,0 +1,286 @@
+#include "workbench/app/stress_plan.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <sstream>
+
+#include "workbench/core/error.hpp"
+
+namespace rb::app::stress {
+
+namespace {
+
+using scenario::ScenarioSpec;
+
+// Paper Table 3, first column: the Hertz flange stiffness of S1002 from Hertz theory and its
+// damping D = K / 100.
+constexpr double kHertzK = 7.075e13;    // [N/m^1.5]
+constexpr double kDampingOverK = 1e-2;  // [s]
+constexpr double kPaperMaxStep = 1e-3;  // [s] paper section 5.4
+
+struct Axis {
+  std::string name;
+  std::vector<double> defaults;  // the last is the hardest (the --quick value)
+  // "" when the axis applies to `spec`, else why not.
+  std::function<std::string(const ScenarioSpec&)> applies;
+  // The overrides of one value, and its label in the map.
+  std::function<std::vector<std::string>(const ScenarioSpec&, double)> overrides;
+  std::function<std::string(double)> label;
+};
+
+std::string compactNumber(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  std::string s = buf;
+  for (const char* from : {"e+0", "e+", "e-0"}) {
+    const auto p = s.find(from);
+    if (p != std::string::npos) s.replace(p, std::string(from).size(), from[1] == '-' ? "e-" : "e");
+  }
+  return s;
+}
+
+std::string factorLabel(double v) {
+  return "x" + compactNumber(v);
+}
+
+std::string contactNote(const ScenarioSpec& s) {
+  return s.has_contact ? "" : "no wheel/rail contact in the scenario (guided wheelsets)";
+}
+
+std::string lutNote(const ScenarioSpec& s) {
+  if (!s.has_contact) return contactNote(s);
+  return s.contact.method == dynamics::ContactMethod::Lut
+             ? ""
+             : "the contact method is KEC (the Hertz flange stiffness belongs to the LUT)";
+}
+
+std::string kecNote(const ScenarioSpec& s) {
+  if (!s.has_contact) return contactNote(s);
+  return s.contact.method == dynamics::ContactMethod::Kec
+             ? ""
+             : "the contact method is LUT (the transition lengths dhat, dbar belong to the KEC)";
+}
+
+std::string speedNote(const ScenarioSpec& s) {
+  return s.has_vehicle && s.vehicle.speed > 0 ? "" : "no vehicle speed in the scenario";
+}
+
+std::string irregularityNote(const ScenarioSpec& s) {
+  switch (s.track.irregularities.source) {
+    case track::IrregularitySource::Psd:
+      return "";
+    case track::IrregularitySource::Csv:
+      return "measured irregularities (the amplitude factor applies to PSD irregularities)";
+    default:
+      return "no irregularities in the scenario";
+  }
+}
+
+bool hasRadius(const track::SegmentSpec& g) {
+  return g.kind != track::SegmentKind::Tangent && g.radius > 0;
+}
+
+std::string curveNote(const ScenarioSpec& s) {
+  return std::any_of(s.track.segments.begin(), s.track.segments.end(), hasRadius)
+             ? ""
+             : "a tangent-only track (no curve radius to scale)";
+}
+
+std::vector<std::string> speedOverrides(const ScenarioSpec& s, double f) {
+  std::vector<std::string> o = {"vehicle.speed=" + number(s.vehicle.speed * f)};
+  // A run given by duration keeps its length of track: faster, shorter in time.
+  if (s.run.duration > 0) o.push_back("run.duration=" + number(s.run.duration / f));
+  return o;
+}
+
+std::vector<std::string> radiusOverrides(const ScenarioSpec& s, double f) {
+  std::vector<std::string> o;
+  for (std::size_t i = 0; i < s.track.segments.size(); ++i)
+    if (hasRadius(s.track.segments[i]))
+      o.push_back("track.segments[" + std::to_string(i + 1) +
+                  "].radius=" + number(s.track.segments[i].radius * f));
+  return o;
+}
+
+const std::vector<Axis>& axes() {
+  static const std::vector<Axis> all = {
+      {"nominal",
+       {0.0},
+       [](const ScenarioSpec&) { return std::string(); },
+       [](const ScenarioSpec&, double) { return std::vector<std::string>(); },
+       [](double) { return std::string("as given"); }},
+      {"flange_stiffness",
+       {1e11, 1e12, kHertzK},
+       lutNote,
+       [](const ScenarioSpec&, double k) {
+         return std::vector<std::string>{"contact.flange_stiffness=" + number(k),
+                                         "contact.flange_damping=" + number(k * kDampingOverK)};
+       },
+       compactNumber},
+      {"transition",
+       {0.5e-3, 0.25e-3, 0.1e-3},
+       kecNote,
+       [](const ScenarioSpec&, double d) {
+         return std::vector<std::string>{"contact.dhat=" + number(d), "contact.dbar=" + number(d)};
+       },
+       [](double d) { return compactNumber(d * 1e3) + " mm"; }},
+      {"speed", {1.25, 1.5, 2.0}, speedNote, speedOverrides, factorLabel},
+      {"irregularity",
+       {2.0, 4.0},
+       irregularityNote,
+       [](const ScenarioSpec& s, double f) {
+         return std::vector<std::string>{"track.irregularities.scale=" +
+                                         number(s.track.irregularities.scale * f)};
+       },
+       factorLabel},
+      {"friction",
+       {0.1, 0.4, 0.6},
+       contactNote,
+       [](const ScenarioSpec&, double mu) {
+         return std::vector<std::string>{"contact.mu=" + number(mu)};
+       },
+       compactNumber},
+      {"curve_radius", {0.75, 0.5}, curveNote, radiusOverrides, factorLabel},
+  };
+  return all;
+}
+
+const Axis* findAxis(const std::string& name) {
+  for (const auto& a : axes())
+    if (a.name == name) return &a;
+  return nullptr;
+}
+
+std::string axisList() {
+  std::string s;
+  for (const auto& n : axisNames()) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+}  // namespace
+
+std::string number(double v) {
+  std::ostringstream s;
+  s.precision(12);
+  s << v;
+  return s.str();
+}
+
+const std::vector<std::string>& axisNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& a : axes()) n.push_back(a.name);
+    return n;
+  }();
+  return names;
+}
+
+double endTime(const ScenarioSpec& spec) {
+  return spec.run.duration > 0 ? spec.run.duration : 0.0;
+}
+
+Plan planAxes(const ScenarioSpec& spec, const PlanRequest& request) {
+  for (const auto& [name, v] : request.values)
+    if (!findAxis(name) || name == "nominal")
+      throw InputError({"--values", 0}, "unknown axis '" + name + "' (axes: " + axisList() + ")");
+  for (const auto& name : request.axes)
+    if (!findAxis(name))
+      throw InputError({"--axes", 0}, "unknown axis '" + name + "' (axes: " + axisList() + ")");
+  Plan plan;
+  for (const auto& axis : axes()) {
+    const bool asked = request.axes.empty() || std::find(request.axes.begin(), request.axes.end(),
+                                                         axis.name) != request.axes.end();
+    if (!asked) continue;
+    if (const std::string why = axis.applies(spec); !why.empty()) {
+      plan.notes.push_back("axis " + axis.name + " skipped: " + why);
+      continue;
+    }
+    std::vector<double> values = axis.defaults;
+    if (auto it = request.values.find(axis.name); it != request.values.end())
+      values = it->second;
+    else if (request.quick)
+      values = {axis.defaults.back()};
+    for (double v : values) {
+      Hardened h{axis.name, v, axis.label(v), axis.overrides(spec, v), endTime(spec)};
+      if (axis.name == "speed" && h.tEnd > 0) h.tEnd /= v;
+      plan.cases.push_back(std::move(h));
+    }
+  }
+  return plan;
+}
+
+namespace {
+
+bool isFixedStep(const std::string& m) {
+  return m == "rk4" || m == "abm";
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  std::istringstream in(s);
+  while (std::getline(in, cur, sep)) out.push_back(cur);
+  return out;
+}
+
+}  // namespace
+
+Setting parseSetting(const std::string& text, bool hasContact, const std::string& option,
+                     double maxStep) {
+  const auto parts = split(text, ':');
+  auto bad = [&](const std::string& why) {
+    return InputError(
+        {option, 0}, "'" + text + "': " + why + " (METHOD:VALUE[:paper], e.g. rk4:1e-3, bdf:1e-9)");
+  };
+  if (parts.size() < 2 || parts.size() > 3) throw bad("expected METHOD:VALUE");
+  const std::string& m = parts[0];
+  if (!isFixedStep(m) && m != "dopri5" && m != "bdf" && m != "ida")
+    throw bad("unknown method '" + m + "' (rk4, abm, dopri5, bdf, ida)");
+  double v = 0;
+  try {
+    std::size_t used = 0;
+    v = std::stod(parts[1], &used);
+    if (used != parts[1].size() || !(v > 0)) throw std::invalid_argument("");
+  } catch (const std::exception&) {
+    throw bad("the value must be a positive number");
+  }
+  const bool paper = parts.size() == 3;
+  if (paper && parts[2] != "paper") throw bad("unknown suffix '" + parts[2] + "'");
+  Setting s;
+  s.overrides.push_back("solver.method=" + m);
+  if (isFixedStep(m)) {
+    s.label = m + " " + compactNumber(v * 1e3) + " ms";
+    s.overrides.push_back("solver.step=" + number(v));
+    if (paper) {
+      s.overrides.push_back("solver.stiff=explicit");
+      s.overrides.push_back("solver.accept_unstable_step=true");
+    }
+  } else {
+    s.label = m + " " + compactNumber(v);
+    s.overrides.push_back("solver.rtol=" + number(v));
+    s.overrides.push_back("solver.atol=" + number(v));
+    s.overrides.push_back("solver.max_step=" +
+                          number(maxStep > 0 && maxStep < kPaperMaxStep ? maxStep : kPaperMaxStep));
+  }
+  const bool implicit = m == "bdf" || m == "ida";
+  if (hasContact && (paper || implicit))
+    s.overrides.push_back(std::string("contact.normal_forces=") +
+                          (paper && !implicit ? "lagged" : "consistent"));
+  if (paper) s.label += " paper";
+  return s;
+}
+
+std::vector<std::string> shortenRun(const ScenarioSpec& spec, double seconds) {
+  const double v = spec.has_vehicle ? spec.vehicle.speed : 0.0;
+  if (spec.run.duration > 0)
+    return spec.run.duration > seconds ? std::vector<std::string>{"run.duration=" + number(seconds)}
+                                       : std::vector<std::string>{};
+  if (spec.run.distance > 0)
+    return v > 0 && spec.run.distance > v * seconds
+               ? std::vector<std::string>{"run.distance=" + number(v * seconds)}
+               : std::vector<std::string>{};
+  return {"run.duration=" + number(seconds)};
+}
+
+}  // namespace rb::app::stress
