@@ -42,6 +42,7 @@ from . import provenance
 from .common import parser
 from .docs_blocks import assessment_cases_block, accuracy_block, bench_block, bench_integrators_block, effects_block, efficiency_block, fmt, missing, num, read_csv, paper_settings_block, refinement_block, replace_block, speed_block, table, work_precision_block
 from .docs_paper import PAPER_TABLES, flange_paper_block, paper_table_blocks, tables_9_10_block
+from .docs_stress import stress_hard_block
 from .docs_tables import tables_block
 from .docs_validation import hard_block, hard_detail_block, hard_rows, validation_blocks
 
@@ -61,6 +62,7 @@ BLOCK_SOURCES = {
     "validation_case1": "validation", "validation_case2": "validation",
     "validation_case3": "validation", "validation_cost": "validation",
     "coupling_convergence": "build", "assessment_cases": "validation", "tables_summary": "tables",
+    "stress_hard": "build",
 }
 
 
@@ -198,6 +200,7 @@ def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
     blocks["integrators.md"]["bench_integrators"] = bench_integrators_block(outdir)
     blocks["assessment.md"]["assessment_cases"] = assessment_cases_block(outdir)
     blocks["contact_geometry.md"] = {"tables_summary": tables_block(outdir)}
+    blocks["stress.md"] = {"stress_hard": stress_hard_block(build)}
     coupling = coupling_block(build)
     blocks["contact_dynamics.md"] = {"coupling_convergence": coupling if coupling is not None
                                      else missing(f"{build}/dynamics/coupling_*.csv "
