@@ -4,7 +4,7 @@
 # file is not trusted), two runners sharing one folder run each case exactly once, a runner killed
 # with SIGKILL and resumed at once, a study whose every case fails exits non-zero, a huge matrix
 # is refused before anything runs, an unusable table-cache folder is a warning, a forged cache file
-# is rebuilt.
+# is rebuilt, a run beyond --run-timeout is killed and reported.
 # usage: study_test.sh WORKBENCH_BINARY   (run from the repository root)
 set -u
 WB="$1"
@@ -167,6 +167,16 @@ PYEOF
 else
   bad "forged cache set-up: A='$A' B='$B'"
 fi
+
+# 8. A run that does not end within --run-timeout is killed and reported, never waited for.
+O="$TMP/o8"
+start=$(date +%s)
+wb study "$TMP/s/long.lua" --out "$O" --run-timeout 0.5 >/dev/null 2>"$TMP/e"; rc=$?
+took=$(( $(date +%s) - start ))
+n=$(grep -c "killed after 0.5 s" "$O/summary.csv" 2>/dev/null)
+[ "$rc" -eq 2 ] && [ "$n" = 2 ] && [ "$took" -lt 60 ] && [ "$(stray "$O")" = 0 ] \
+  && ok "hung runs killed after --run-timeout, reported in the summary" \
+  || bad "run timeout (rc $rc, $n killed, ${took} s): $(tail -5 "$TMP/e")"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -72,6 +72,10 @@ int workbench(int argc, char** argv) {
   study->add_option("file", so.file, "study file (.lua)")->required();
   study->add_option("--out", so.out, "output folder (default out/<study>)");
   study->add_option("--jobs", so.jobs, "cases at once (default: the study's jobs, else cores)");
+  study
+      ->add_option("--run-timeout", so.run_timeout_s,
+                   "kill a run after this many seconds of wall time and report it (0: no limit)")
+      ->check(CLI::NonNegativeNumber);
 
   // The users' three asks on any scenario (docs/three_asks.md).
   rb::app::PrecisionOptions po;

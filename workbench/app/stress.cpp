@@ -48,6 +48,11 @@ CLI::App* addStressCommand(CLI::App& app, StressOptions& o) {
                 "largest wheelset lateral error [mm] against the reference of an ok run")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  c->add_option("--run-timeout", o.run_timeout,
+                "wall time [s] after which a run is killed and classified as failed badly (a "
+                "hang); 0: no limit")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   c->add_flag("--quick", o.quick,
               "the hardest value of each axis, rk4:1e-3 and dopri5:1e-6, runs of at most 2 s");
   c->add_option("--expect", o.expect,
@@ -227,6 +232,7 @@ int runStress(const StressOptions& o) {
   so.root = o.root;
   so.program = o.program;
   so.jobs = o.jobs;
+  so.run_timeout_s = o.run_timeout;
   so.out = o.out.empty()
                ? (fs::path("out") / (fs::path(o.scenario).stem().string() + "_stress")).string()
                : o.out;

@@ -25,6 +25,7 @@ struct StressOptions {
   std::vector<std::string> values;       // --values AXIS=v1,v2,...
   std::vector<std::string> integrators;  // --integrators METHOD:VALUE[:paper],...
   std::string reference = "bdf:1e-9";    // the reference setting of every hardened case
+  double run_timeout = 1800.0;           // [s] wall time after which a run counts as hung
   double tolerance = 1.0;                // [mm] largest wheelset lateral error of an "ok" run
   bool quick = false;                    // hardest value per axis, two settings, at most 2 s
   double quickSeconds = 2.0;             // [s] run length with --quick

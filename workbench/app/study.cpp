@@ -254,7 +254,6 @@ std::vector<std::string> plotsEnvironment(const fs::path& plots) {
 
 }  // namespace
 
-
 int runPlots(const StudyOptions& o, const std::vector<std::string>& plotArgs) {
   if (const char* e = std::getenv("RAILBENCH_STUDY_PLOTS"); e && std::string(e) == "0") return 0;
   const char* env = std::getenv("RAILBENCH_PYTHON");
@@ -404,17 +403,37 @@ class Pool {
       return;
     }
     running[pid] = index;
+    started[pid] = std::chrono::steady_clock::now();
   }
+
+  // Kills every run that has run longer than the options' run_timeout_s (a hang: the run would
+  // never end by itself); its summary row says so.
+  void killOverdue(std::vector<Job>& all) {
+    if (o_.run_timeout_s <= 0) return;
+    const auto now = std::chrono::steady_clock::now();
+    for (const auto& [pid, index] : running) {
+      const double age = std::chrono::duration<double>(now - started[pid]).count();
+      if (age <= o_.run_timeout_s || !all[index].note.empty()) continue;
+      char limit[32];
+      std::snprintf(limit, sizeof limit, "%g", o_.run_timeout_s);
+      all[index].note = std::string("killed after ") + limit +
+                        " s of wall time (run timeout): the run did not end (a hang?)";
+      ::kill(pid, SIGKILL);
+    }
+  }
+
+  double timeout() const { return o_.run_timeout_s; }
 
   // The run `j` exited with `status`.
   void finish(Job& j, int status) {
     j.outcome = Outcome::Ran;
-    int code = WIFEXITED(status) ? WEXITSTATUS(status)
-                                 : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status)
+                                       : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    const bool overdue = !j.note.empty();
     // A run that exits with another code than ok (0) or failed (2) has no result: its log says
     // why, and whatever file it left is removed.
     std::error_code ignored;
-    if (isRegularFile(j.work) && code != 0 && code != 2) {
+    if (isRegularFile(j.work) && (overdue || (code != 0 && code != 2))) {
       fs::remove(j.work, ignored);
     } else if (isRegularFile(j.work)) {
       j.note = keep(j);
@@ -428,6 +447,7 @@ class Pool {
   }
 
   std::map<pid_t, std::size_t> running;
+  std::map<pid_t, std::chrono::steady_clock::time_point> started;
   std::size_t skipped = 0;
 
  private:
@@ -469,13 +489,21 @@ std::size_t runJobs(Pool& pool, std::vector<Job>& all, const std::vector<std::si
       pool.start(all, todo[next++]);
     if (pool.running.empty()) continue;
     int status = 0;
-    pid_t pid = wait(&status);
+    // With a run timeout, poll so that a hung run is noticed; else block until a run ends.
+    const bool poll = pool.timeout() > 0;
+    pid_t pid = waitpid(-1, &status, poll ? WNOHANG : 0);
+    if (pid == 0) {
+      pool.killOverdue(all);
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      continue;
+    }
     if (pid < 0 && errno == EINTR) continue;
     if (pid < 0) break;
     auto it = pool.running.find(pid);
     if (it == pool.running.end()) continue;
     Job& j = all[it->second];
     pool.running.erase(it);
+    pool.started.erase(pid);
     pool.finish(j, status);
   }
   return pool.skipped;

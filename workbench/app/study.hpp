@@ -42,6 +42,8 @@ struct StudyOptions {
   std::string root;     // project root
   std::string program;  // path of the workbench executable that runs the cases
   int jobs = 0;         // 0: from the study file, else the number of cores
+  // Wall time after which a run is killed and reported as an error (a hang); 0 = no limit.
+  double run_timeout_s = 0.0;
 };
 
 // Returns 0 when the study ran and at least one of its runs is ok (a failed case is a result),
