@@ -433,7 +433,11 @@ class Pool {
     // A run that exits with another code than ok (0) or failed (2) has no result: its log says
     // why, and whatever file it left is removed.
     std::error_code ignored;
-    if (isRegularFile(j.work) && (overdue || (code != 0 && code != 2))) {
+    if (overdue) {
+      // Killed mid-write: its result and the temporary files of its writer are incomplete.
+      auto files = leftovers(dir_);
+      for (const auto& stray : files[j.name]) fs::remove(stray, ignored);
+    } else if (isRegularFile(j.work) && code != 0 && code != 2) {
       fs::remove(j.work, ignored);
     } else if (isRegularFile(j.work)) {
       j.note = keep(j);
