@@ -124,8 +124,7 @@ def recommendation_rows(rows: List[dict], refs: Dict[str, dict], q: Quantity,
     out = []
     for model in dict.fromkeys(r["model"] for r in rows):
         rf = refs.get(model.replace(" refined", ""), {})
-        bound = rf.get("bound", {}).get(q.tag, (math.inf, 0))[0] if rf.get("verified") \
-            else math.inf
+        bound = rf.get("bound", {}).get(q.tag, (math.inf, 0))[0]
         cand = [dict(ok=r["status"] == "ok",
                      error=_num(r[f"{q.tag}_integration_max_{q.unit}"]),
                      cpu=_num(r["cpu_median_s"]) or 0.0, rhs_evals=_num(r["rhs_evals"]) or 0,

@@ -20,7 +20,7 @@ def _f(s) -> Optional[float]:
     return v
 
 
-def _panel(ax, rows: List[dict], key: str, cost: str, bound, table, levels, unit):
+def _panel(ax, rows: List[dict], key: str, cost: str, bound, table, levels):
     pts = [(r, _f(r[key]), _f(r[cost])) for r in rows]
     ok = [(r, e, c) for r, e, c in pts if r["status"] == "ok" and e and c and e > 0 and c > 0]
     for integ in dict.fromkeys(r["integrator"] for r in rows):
@@ -50,8 +50,9 @@ def _panel(ax, rows: List[dict], key: str, cost: str, bound, table, levels, unit
     if table and table > 0:
         ax.axvline(table, color="#444444", lw=1.0, ls="--",
                    label="table error (default vs refined tables)")
-    for lv in levels:
-        ax.axvline(lv, color="#1f5fa8", lw=0.5, ls=":")
+    for k, lv in enumerate(levels):
+        ax.axvline(lv, color="#1f5fa8", lw=0.5, ls=":",
+                   label="accuracy levels of the recommendation" if k == 0 else None)
     ax.set_xscale("log")
     ax.set_yscale("log")
 
@@ -71,7 +72,7 @@ def fig_model(model: str, rows: List[dict], ref: Dict, qs: List[Quantity], level
                                                 ("rhs_evals", "rhs evaluations"))):
                 ax = axes[i][j]
                 _panel(ax, rows, key, cost, b[0] if b else None, t[0] if t else None,
-                       levels if i == 0 else [], q.unit)
+                       levels if i == 0 else [])
                 ax.set_xlabel(f"max |error| of {q.title} [{q.unit}]\n(integration error: "
                               f"against the reference on the same tables)", fontsize=7)
                 ax.set_ylabel(label)

@@ -1,7 +1,7 @@
 """`workbench precision` through the real command line.
 
 Default (ctest precision_cli, seconds): on a single wheelset (case 1, R = 300 m, KEC) with --quick
-and a 0.5 s run: exit 0, the outputs exist and hold numbers (no NaN), the recommendation is
+over its first 45 m (tangent and transition entry): exit 0, the outputs exist and hold numbers (no NaN), the recommendation is
 printed; a deliberately loose reference (rtol 1e-3, limit 1e-9) is flagged UNVERIFIED in the
 output, the CSV and the HDF5; bad options exit 1 naming the option.
 --all (ctest precision_all_scenarios, long): --quick on every shipped vehicle scenario.
@@ -56,7 +56,7 @@ def check_outputs(out, text):
 def default_suite(wb, out):
     problems = []
     good = os.path.join(out, "good")
-    code, text = run(wb, SMALL, good, "--quick", "--duration", "0.5")
+    code, text = run(wb, SMALL, good, "--quick", "--distance", "45")
     if code != 0:
         return [f"quick run exit {code}:\n{text[-3000:]}"]
     problems += check_outputs(good, text)
@@ -67,13 +67,15 @@ def default_suite(wb, out):
     bound = [r for r in refs if r["role"].startswith("bound")]
     if not bound or not bound[0]["y_max_mm"] or not math.isfinite(float(bound[0]["y_max_mm"])):
         problems.append("no reference bound")
+    elif bound[0]["status"] != "verified":
+        problems.append(f"the tight reference is not verified: {bound[0]['status']}")
     recs = rows(os.path.join(good, "precision_recommendation.csv"))
     if [r["level"] for r in recs] != ["1", "0.1", "0.01"]:
         problems.append(f"recommendation levels {[r['level'] for r in recs]}")
 
     # A deliberately loose reference must be flagged.
     loose = os.path.join(out, "loose")
-    code, text = run(wb, SMALL, loose, "--quick", "--duration", "0.5", "--reference-tol", "1e-3",
+    code, text = run(wb, SMALL, loose, "--quick", "--distance", "45", "--reference-tol", "1e-3",
                      "--reference-limit", "1e-9")
     if code != 0:
         problems.append(f"loose reference run exit {code}: {text[-2000:]}")
