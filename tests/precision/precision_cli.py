@@ -89,6 +89,24 @@ def default_suite(wb, out):
             if any(int(g.attrs["verified"]) for g in f["reference_bound"].values()):
                 problems.append("the loose reference is verified in precision.h5")
 
+    # A budget already used up by the references: the first rung of every ladder runs, the
+    # later ones are skipped with the rule's note.
+    tight = os.path.join(out, "budget")
+    code, text = run(wb, SMALL, tight, "--quick", "--distance", "45", "--budget", "0.001")
+    if code != 0:
+        problems.append(f"budget run exit {code}: {text[-2000:]}")
+    else:
+        plan = [r for r in rows(os.path.join(tight, "precision_plan.csv")) if r["role"] == "case"]
+        first = {}
+        for r in plan:
+            first.setdefault((r["model"], r["integrator"]), r)
+        if any(r["status"] != "run" for r in first.values()):
+            problems.append("--budget: a first rung did not run")
+        later = [r for r in plan if r not in first.values()]
+        if not later or any(r["status"] != "skipped" or "--budget" not in r["note"]
+                            for r in later):
+            problems.append(f"--budget: later rungs not skipped: {later}")
+
     # Bad input: exit 1 naming the option, nothing run.
     for extra, word in ((["--integrators", "rk5"], "--integrators"),
                         (["--levels", "0.1,-1"], "--levels"),
