@@ -260,6 +260,34 @@ def print_recommendation(rec_rows: List[dict], refs: Dict[str, dict], q: Quantit
               f"{r['note']}")
 
 
+def markdown(rows: List[dict], rec_rows: List[dict], refs: Dict[str, dict],
+             qs: List[Quantity]) -> str:
+    """The results as a markdown block: the references (bound, verified, table error), the
+    spread of the integration error, the recommendation table and the figures."""
+    q = qs[0]
+    out = ["| model | reference | bound max " + q.tag + " [" + q.unit + "] | table error max " +
+           q.tag + " [" + q.unit + "] | integration error range [" + q.unit + "] | decades |",
+           "|---|---|---|---|---|---|"]
+    for model, rf in refs.items():
+        b, t = rf["bound"].get(q.tag), rf["table"].get(q.tag)
+        errs = [_num(r[f"{q.tag}_integration_max_{q.unit}"]) for r in rows
+                if r["model"] == model and r["status"] == "ok"]
+        errs = [e for e in errs if e and e > 0 and math.isfinite(e)]
+        span = f"{min(errs):.3g} ... {max(errs):.3g}" if errs else ""
+        dec = f"{math.log10(max(errs) / min(errs)):.1f}" if errs else ""
+        out.append(f"| {model} | {'verified' if rf['verified'] else 'UNVERIFIED'} | "
+                   f"{_fmt(b[0]) if b else ''} | {_fmt(t[0]) if t else ''} | {span} | {dec} |")
+    out += ["", f"| model | level [{q.unit}] | cheapest setting | CPU [s] | rhs evaluations | "
+                f"error [{q.unit}] | note |", "|---|---|---|---|---|---|---|"]
+    for r in rec_rows:
+        out.append(f"| {r['model']} | {r['level']} | {r['setting']} | {r['cpu_median_s']} | "
+                   f"{r['rhs_evals']} | {r['error_max']} | {r['note']} |")
+    out.append("")
+    for model in dict.fromkeys(r["model"] for r in rows):
+        out.append(f"![work-precision {model}](figures/precision_{_slug(model)}.png)")
+    return "\n".join(out) + "\n"
+
+
 def _slug(model: str) -> str:
     return re.sub(r"[^a-z0-9]+", "_", model.lower()).strip("_")
 
@@ -274,6 +302,8 @@ def main(argv=None) -> int:
     ap.add_argument("--callgrind", action="store_true")
     ap.add_argument("--workbench", default="")
     ap.add_argument("--root", default="")
+    ap.add_argument("--markdown", default="",
+                    help="also write the results as a markdown block (docs/precision.md) here")
     a = ap.parse_args(argv)
     try:
         qs = parse_quantities(a.quantities)
@@ -309,6 +339,9 @@ def main(argv=None) -> int:
             print(f"precision: WARNING: the reference of {model} is UNVERIFIED: {rf['why']}; "
                   f"its errors are not trustworthy below that difference", file=sys.stderr)
     print_recommendation(rec_rows, refs, qs[0])
+    if a.markdown:
+        with open(a.markdown, "w") as f:
+            f.write(markdown(rows, rec_rows, refs, qs))
     from .precision_figs import fig_model
     from .style import DPI
     import matplotlib.pyplot as plt
