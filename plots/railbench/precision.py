@@ -288,6 +288,19 @@ def markdown(rows: List[dict], rec_rows: List[dict], refs: Dict[str, dict],
     return "\n".join(out) + "\n"
 
 
+def block_from_folder(outdir: str, quantities: str = "y,yaw", levels: str = "1,0.1,0.01",
+                      limit: Optional[float] = None) -> str:
+    """The markdown block of a precision folder (for the docs generator): as --markdown."""
+    qs = parse_quantities(quantities)
+    lv = sorted((float(x) for x in levels.split(",")), reverse=True)
+    lim = limit if limit is not None else lv[-1] / 10
+    plan = read_csv(os.path.join(outdir, "precision_plan.csv"))
+    cases = _cases(outdir)
+    refs = reference_rows(plan, cases, qs, lim)
+    rows = case_rows(plan, cases, refs, qs)
+    return markdown(rows, recommendation_rows(rows, refs, qs[0], lv), refs, qs)
+
+
 def _slug(model: str) -> str:
     return re.sub(r"[^a-z0-9]+", "_", model.lower()).strip("_")
 
