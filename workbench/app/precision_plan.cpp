@@ -1,0 +1,336 @@
+#include "workbench/app/precision_plan.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "workbench/core/error.hpp"
+#include "workbench/core/strings.hpp"
+#include "workbench/scenario/scenario.hpp"
+
+namespace fs = std::filesystem;
+
+namespace rb::app::precision {
+namespace {
+
+const SourceLoc kCommandLine{"<command line>", 0};
+const std::vector<std::string> kIntegrators = {"rk4", "abm", "dopri5", "bdf", "ida"};
+const std::vector<std::string> kMethods = {"kec", "lut"};
+
+// The ladders (cheap to expensive). Fixed steps: 2 ms is beyond the explicit stability limit of
+// the free wheelset spin's creep mode at 20 m/s (docs/contact_dynamics.md, "Time integration"),
+// 0.125 ms well inside it; tolerances over the range where dopri5 and BDF are still cheaper than
+// the reference.
+const std::vector<double> kSteps = {2e-3, 1e-3, 5e-4, 2.5e-4, 1.25e-4};
+const std::vector<double> kTolerances = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
+const std::vector<double> kQuickSteps = {1e-3, 5e-4};
+const std::vector<double> kQuickTolerances = {1e-3, 1e-5};
+const std::vector<double> kLevels = {1.0, 0.1, 0.01};  // [mm] of the first quantity
+
+std::string num(double v) {
+  return formatNumberExact(v);
+}
+
+std::string csvField(const std::string& s) {
+  const bool quote = s.find_first_of(",\"\n") != std::string::npos;
+  std::string out;
+  for (char ch : s) {
+    if (ch == '"') out += '"';
+    out += ch == '\n' ? ' ' : ch;
+  }
+  return quote ? "\"" + out + "\"" : out;
+}
+
+bool isFixed(const std::string& integrator) {
+  return integrator == "rk4" || integrator == "abm";
+}
+
+bool isImplicit(const std::string& integrator) {
+  return integrator == "bdf" || integrator == "ida";
+}
+
+// The solver overrides of one rung or reference. The references and BDF and IDA solve the normal
+// forces together with the creep forces (contact.normal_forces = "consistent"): the coupling that
+// converges under step refinement, and with the lagged normal forces a Newton iteration sees a
+// right-hand side that changes between its iterations (docs/contact_dynamics.md section 4.1).
+// solver.max_steps is a work limit: at tight tolerances the solver default (500 internal steps per
+// output interval) stops BDF in flange contact.
+std::vector<std::string> solverOverrides(const std::string& integrator, double value, double atol,
+                                         bool contact, bool reference = false) {
+  std::vector<std::string> s = {"solver.method=" + integrator};
+  if (isFixed(integrator)) {
+    // Steps beyond the stability limit run anyway, so that they show as failed or inaccurate
+    // settings in the figure instead of being refused by `check`.
+    s.push_back("solver.step=" + num(value));
+    s.push_back("solver.accept_unstable_step=true");
+    return s;
+  }
+  s.push_back("solver.rtol=" + num(value));
+  s.push_back("solver.atol=" + num(atol));
+  s.push_back("solver.max_steps=100000");
+  if (contact && (reference || isImplicit(integrator)))
+    s.push_back("contact.normal_forces=consistent");
+  return s;
+}
+
+std::vector<std::string> concat(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+// Why the scenario refuses these overrides ("" when it loads).
+std::string refusal(const Plan& p, const PrecisionOptions& o, const std::vector<std::string>& ov) {
+  try {
+    scenario::LoadOptions lo;
+    lo.root = o.root;
+    lo.overrides = concat(p.base, ov);
+    scenario::loadScenario(p.scenario, lo);
+    return "";
+  } catch (const InputError& e) {
+    return e.diagnostics().empty() ? std::string("refused") : e.diagnostics().front().str();
+  }
+}
+
+scenario::StudyCase makeCase(const Plan& p, const std::vector<std::string>& own,
+                             const std::string& role) {
+  scenario::StudyCase c;
+  c.overrides = concat(p.base, own);
+  c.id = scenario::studyCaseId(c.overrides, "");
+  c.label = scenario::caseLabel(own);
+  c.base = p.scenario;
+  c.role = role;
+  return c;
+}
+
+std::vector<std::string> chosen(const std::string& text, const std::string& option,
+                                const std::vector<std::string>& valid,
+                                const std::vector<std::string>& fallback) {
+  if (text.empty()) return fallback;
+  std::vector<std::string> out;
+  for (const auto& v : splitList(text, option)) {
+    if (std::find(valid.begin(), valid.end(), v) == valid.end())
+      throw InputError(kCommandLine, option + ": unknown '" + v + "' (one of " + join(valid) + ")");
+    if (std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
+  }
+  return out;
+}
+
+// The models: the scenario's own contact method first, then the others asked for, each on the
+// default tables (and the refined ones with --refine); a guided vehicle has one model.
+void addModels(Plan& p, const PrecisionOptions& o, const scenario::ScenarioSpec& spec) {
+  if (!p.contact) {
+    if (!o.methods.empty())
+      throw InputError(kCommandLine,
+                       "--methods: the scenario has no wheel/rail contact (guided vehicle)");
+    p.models.push_back({"guided", "", false, {}});
+    return;
+  }
+  const std::string own = spec.contact.method == dynamics::ContactMethod::Lut ? "lut" : "kec";
+  std::vector<std::string> methods =
+      chosen(o.methods, "--methods", kMethods,
+             o.quick ? std::vector<std::string>{own}
+                     : std::vector<std::string>{own, own == "kec" ? "lut" : "kec"});
+  for (const auto& m : methods) {
+    std::string upper = m == "kec" ? "KEC" : "LUT";
+    std::vector<std::string> ov = {"contact.method=" + m};
+    if (const std::string why = refusal(p, o, ov); !why.empty()) {
+      p.notes.push_back(
+          {upper, "", "left out: the scenario refuses contact.method=" + m + ": " + why});
+      continue;
+    }
+    p.models.push_back({upper, m, false, ov});
+    if (o.refine)
+      p.models.push_back(
+          {upper + " refined", m, true, concat(ov, {"profiles.refined_tables=true"})});
+  }
+  if (p.models.empty())
+    throw InputError(kCommandLine, "--methods: the scenario accepts none of the contact methods");
+}
+
+// The references of model `m` (its default-table model carries them; a refined model uses them
+// as they are). False when the scenario refuses a reference setting (the model is dropped).
+bool addReferences(Plan& p, const PrecisionOptions& o, const Model& m,
+                   const std::vector<std::string>& refMethods) {
+  std::vector<std::string> tables = m.overrides;
+  tables.erase(std::remove(tables.begin(), tables.end(), "profiles.refined_tables=true"),
+               tables.end());
+  const std::vector<std::string> refined = concat(tables, {"profiles.refined_tables=true"});
+  const double tol = o.reference_tol;
+  const std::vector<std::pair<std::string, std::vector<std::string>>> runs = {
+      {kRoleReference,
+       concat(refined, solverOverrides(refMethods[0], tol, tol / 10, p.contact, true))},
+      {kRoleCheck, concat(refined, solverOverrides(refMethods[1], tol, tol / 10, p.contact, true))},
+      {kRoleSameTables,
+       concat(tables, solverOverrides(refMethods[0], tol, tol / 10, p.contact, true))}};
+  for (const auto& [role, ov] : runs) {
+    if (const std::string why = refusal(p, o, ov); !why.empty()) {
+      p.notes.push_back(
+          {m.name, "",
+           std::string("left out: its ") + role + " is refused by the scenario: " + why});
+      return false;
+    }
+  }
+  for (const auto& [role, ov] : runs)
+    p.references.push_back(
+        {m.name, role, refMethods[role == kRoleCheck ? 1 : 0], tol, makeCase(p, ov, role)});
+  return true;
+}
+
+void addLadders(Plan& p, const PrecisionOptions& o, const Model& m,
+                const std::vector<std::string>& integrators) {
+  const std::vector<double> steps = !o.steps.empty() ? splitNumbers(o.steps, "--steps")
+                                    : o.quick        ? kQuickSteps
+                                                     : kSteps;
+  const std::vector<double> tols = !o.tolerances.empty()
+                                       ? splitNumbers(o.tolerances, "--tolerances")
+                                   : o.quick ? kQuickTolerances
+                                             : kTolerances;
+  for (const auto& integ : integrators) {
+    Ladder l{m.name, integ, isFixed(integ), {}, 0};
+    std::vector<double> values = l.fixed ? steps : tols;
+    // Cheap to expensive: large steps and loose tolerances first.
+    std::sort(values.begin(), values.end(), std::greater<>());
+    values.erase(std::unique(values.begin(), values.end()), values.end());
+    const auto first =
+        concat(m.overrides, solverOverrides(integ, values.front(), values.front(), p.contact));
+    if (const std::string why = refusal(p, o, first); !why.empty()) {
+      p.notes.push_back({m.name, integ, "left out: the scenario refuses it: " + why});
+      continue;
+    }
+    for (double v : values) {
+      Rung r;
+      r.value = v;
+      r.c = makeCase(p, concat(m.overrides, solverOverrides(integ, v, v, p.contact)), kRoleCase);
+      l.rungs.push_back(r);
+    }
+    p.ladders.push_back(std::move(l));
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> splitList(const std::string& text, const std::string& option) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    item.erase(0, item.find_first_not_of(" \t"));
+    item.erase(item.find_last_not_of(" \t") + 1);
+    if (item.empty()) throw InputError(kCommandLine, option + ": empty entry in '" + text + "'");
+    out.push_back(item);
+  }
+  if (out.empty()) throw InputError(kCommandLine, option + ": no entry");
+  return out;
+}
+
+std::vector<double> splitNumbers(const std::string& text, const std::string& option) {
+  std::vector<double> out;
+  for (const auto& item : splitList(text, option)) {
+    std::size_t used = 0;
+    double v = 0.0;
+    try {
+      v = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != item.size() || !(v > 0.0) || v > 1e300)
+      throw InputError(kCommandLine, option + ": '" + item + "' is not a positive number");
+    out.push_back(v);
+  }
+  return out;
+}
+
+Plan makePlan(const PrecisionOptions& o) {
+  Plan p;
+  p.scenario = fs::absolute(o.scenario).lexically_normal().string();
+  p.base = o.overrides;
+  if (o.distance < 0.0 || o.duration < 0.0 || o.budget < 0.0 || o.reference_limit < 0.0)
+    throw InputError(kCommandLine,
+                     "--distance, --duration, --budget and --reference-limit must be >= 0");
+  if (o.distance > 0.0 && o.duration > 0.0)
+    throw InputError(kCommandLine, "--distance and --duration: give one of them");
+  if (!(o.reference_tol > 0.0 && o.reference_tol < 1e-2))
+    throw InputError(kCommandLine, "--reference-tol must be in (0, 1e-2)");
+  if (o.repeats < 1 || o.repeats > 100)
+    throw InputError(kCommandLine, "--repeats must be in 1..100");
+  if (o.distance > 0.0) p.base.push_back("run.distance=" + num(o.distance));
+  if (o.duration > 0.0) p.base.push_back("run.duration=" + num(o.duration));
+
+  scenario::LoadOptions lo;
+  lo.root = o.root;
+  lo.overrides = p.base;
+  const scenario::ScenarioSpec spec = scenario::loadScenario(p.scenario, lo);  // bad: exit 1
+  if (!spec.has_vehicle)
+    throw InputError({o.scenario, 0},
+                     "precision needs a vehicle{} block: nothing is integrated without one");
+  p.contact = spec.has_contact;
+
+  p.quantities = o.quantities.empty() ? std::vector<std::string>{"y", "yaw"}
+                                      : splitList(o.quantities, "--quantities");
+  p.levels = o.levels.empty() ? kLevels : splitNumbers(o.levels, "--levels");
+  std::sort(p.levels.begin(), p.levels.end(), std::greater<>());
+  p.limit = o.reference_limit > 0.0 ? o.reference_limit : p.levels.back() / 10.0;
+
+  const auto refMethods =
+      chosen(o.reference_methods, "--reference-methods", kIntegrators, {"bdf", "dopri5"});
+  if (refMethods.size() != 2)
+    throw InputError(kCommandLine, "--reference-methods: give two different integrators");
+  const auto integrators =
+      chosen(o.integrators, "--integrators", kIntegrators,
+             o.quick ? std::vector<std::string>{"abm", "dopri5"}
+                     : std::vector<std::string>{"rk4", "abm", "dopri5", "bdf"});
+
+  addModels(p, o, spec);
+  std::vector<Model> kept;
+  for (const auto& m : p.models) {
+    if (!m.refined && !addReferences(p, o, m, refMethods)) continue;
+    kept.push_back(m);
+  }
+  // A refined model whose default-table model was dropped has no reference either.
+  std::erase_if(kept, [&](const Model& m) {
+    return std::none_of(p.references.begin(), p.references.end(), [&](const Reference& r) {
+      return r.model == (m.refined ? m.name.substr(0, m.name.find(' ')) : m.name);
+    });
+  });
+  p.models = kept;
+  if (p.models.empty())
+    throw InputError({o.scenario, 0},
+                     "no contact model of the scenario accepts the reference "
+                     "settings (see the notes above)");
+  for (const auto& m : p.models) addLadders(p, o, m, integrators);
+  return p;
+}
+
+std::string planCsv(const Plan& plan) {
+  std::ostringstream s;
+  s.precision(12);
+  s << "folder,case,role,model,method,tables,integrator,kind,value,label,status,note\n";
+  auto tablesOf = [&](const std::string& model) {
+    return model.find("refined") != std::string::npos ? "refined" : "default";
+  };
+  for (const auto& r : plan.references) {
+    const bool refined = r.role != std::string(kRoleSameTables);
+    std::string method;
+    for (const auto& m : plan.models)
+      if (m.name == r.model) method = m.method;
+    s << "reference," << r.c.id << "," << r.role << "," << csvField(r.model) << "," << method << ","
+      << (refined ? "refined" : "default") << "," << r.integrator << ",tol," << r.value << ","
+      << csvField(r.c.label) << ",planned,\n";
+  }
+  for (const auto& l : plan.ladders) {
+    std::string method;
+    for (const auto& m : plan.models)
+      if (m.name == l.model) method = m.method;
+    for (const auto& r : l.rungs)
+      s << "cases," << r.c.id << "," << kRoleCase << "," << csvField(l.model) << "," << method
+        << "," << tablesOf(l.model) << "," << l.integrator << "," << (l.fixed ? "step" : "tol")
+        << "," << r.value << "," << csvField(r.c.label) << "," << r.status << ","
+        << csvField(r.note) << "\n";
+  }
+  for (const auto& n : plan.notes)
+    s << ",,note," << csvField(n.model) << ",,," << n.integrator << ",,,,left out,"
+      << csvField(n.text) << "\n";
+  return s.str();
+}
+
+}  // namespace rb::app::precision
