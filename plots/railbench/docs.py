@@ -43,6 +43,7 @@ from .common import parser
 from .docs_blocks import assessment_cases_block, accuracy_block, bench_block, bench_integrators_block, effects_block, efficiency_block, fmt, missing, num, read_csv, paper_settings_block, refinement_block, replace_block, speed_block, table, work_precision_block
 from .docs_paper import PAPER_TABLES, flange_paper_block, paper_table_blocks, tables_9_10_block
 from .docs_stress import stress_hard_block
+from .docs_three_asks import EFFECTS, PRECISION, STRESS, three_asks_blocks
 from .docs_tables import tables_block
 from .docs_validation import hard_block, hard_detail_block, hard_rows, validation_blocks
 
@@ -62,7 +63,8 @@ BLOCK_SOURCES = {
     "validation_case1": "validation", "validation_case2": "validation",
     "validation_case3": "validation", "validation_cost": "validation",
     "coupling_convergence": "build", "assessment_cases": "validation", "tables_summary": "tables",
-    "stress_hard": "build",
+    "stress_hard": "build", "three_asks_precision": PRECISION, "three_asks_stress": STRESS,
+    "three_asks_effects": EFFECTS,
 }
 
 
@@ -144,12 +146,13 @@ def coupling_block(build: str) -> Optional[str]:
 # ---- figures -----------------------------------------------------------------------------------
 
 STUDIES = ("efficiency_case3", "flange_stiffness", "refinement", "work_precision", "effects",
-           "speed", "paper_settings_flange", "paper_settings", "validation", "tables")
+           "speed", "paper_settings_flange", "paper_settings", "validation", "tables", PRECISION,
+           STRESS, EFFECTS)
 
 
 def copy_figures(outdir: str, docs: str, pages) -> List[str]:
     """Copies the figures the pages show (`figures/<study>_<name>.png`, from
-    OUT/<study>/study_<name>.png) and nothing else."""
+    OUT/<study>/study_<name>.png, or OUT/<study>/<name>.png) and nothing else."""
     figdir = os.path.join(docs, "figures")
     os.makedirs(figdir, exist_ok=True)
     wanted = set()
@@ -164,6 +167,8 @@ def copy_figures(outdir: str, docs: str, pages) -> List[str]:
         if study is None:
             continue
         src = os.path.join(outdir, study, "study_" + name[len(study) + 1:])
+        if not os.path.exists(src):  # the commands' folders name their figures without "study_"
+            src = os.path.join(outdir, study, name[len(study) + 1:])
         if os.path.exists(src):
             dst = os.path.join(figdir, name)
             shutil.copyfile(src, dst)
@@ -201,6 +206,7 @@ def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
     blocks["assessment.md"]["assessment_cases"] = assessment_cases_block(outdir)
     blocks["contact_geometry.md"] = {"tables_summary": tables_block(outdir)}
     blocks["stress.md"] = {"stress_hard": stress_hard_block(build)}
+    blocks["three_asks.md"] = three_asks_blocks(outdir)
     coupling = coupling_block(build)
     blocks["contact_dynamics.md"] = {"coupling_convergence": coupling if coupling is not None
                                      else missing(f"{build}/dynamics/coupling_*.csv "
