@@ -244,7 +244,7 @@ def print_table(rows: List[dict], quantities: List[str]) -> None:
     print(head + "  check")
     for r in rows:
         if r.get("role") in ("always on", "off in the scene"):
-            print(f"{r['effect']:22s} {r['role']}: {r['note']}")
+            print(f"{r['effect']:22s} {r['note']}")
             continue
         line = (f"{r['effect'][:22]:22s} {r['status'][:9]:9s} "
                 f"{_fmt(r['instructions_per_eval'], '{:.0f}'):>11s} "
