@@ -282,8 +282,12 @@ def figure(rows: List[dict], path: str, quantities: List[str]) -> None:
         ax1.set_yticks(y, [r["effect"] if r["role"] != "minimal" else "minimal (all off)"
                            for r in cases])
         ax1.invert_yaxis()
-        ax1.set_xlabel("cost of the effect: " + ("instructions" if use_cg else "CPU time") +
-                       " per evaluation saved by switching it off [%]")
+        ax1.set_xlabel(("instructions" if use_cg else "CPU time") +
+                       " / evaluation saved when off\n[% of the full scene]")
+        for yi, v in zip(y, cost):
+            ax1.annotate(f"{v:.1f}", (v, yi), xytext=(3 if v >= 0 else -3, 0),
+                         textcoords="offset points", va="center", ha="left" if v >= 0 else "right",
+                         fontsize=7)
         ax1.axvline(0, color="#222222", lw=0.6)
         if tag:
             mx = [r.get(f"max_d{tag}") or 0.0 for r in cases]
@@ -291,8 +295,13 @@ def figure(rows: List[dict], path: str, quantities: List[str]) -> None:
             unit = next((r.get(f"unit_{tag}") for r in cases if r.get(f"unit_{tag}")), "")
             ax2.barh(y - 0.18, mx, height=0.36, color="#b2182b", label="max")
             ax2.barh(y + 0.18, rms, height=0.36, color="#e08214", label="RMS")
-            ax2.set_xlabel(f"change in answer: {quantities[0]} vs full scene [{unit}]")
-            ax2.legend(loc="lower right")
+            ax2.set_xlabel(f"change in answer: {quantities[0]}\nvs the full scene [{unit}]")
+            for yi, v in zip(y, mx):
+                ax2.annotate(f"{v:.3g}", (v, yi - 0.18), xytext=(3, 0), textcoords="offset points",
+                             va="center", fontsize=7)
+            ax2.legend(loc="best")
+            ax2.margins(x=0.15)
+            ax1.margins(x=0.15)
         fig.suptitle("What each effect costs and changes (workbench effects)")
         fig.tight_layout()
         fig.savefig(path)
