@@ -192,7 +192,8 @@ def case_rows(study, scene: List[dict], a) -> List[dict]:
             if cg["instructions"]:
                 row["instructions_per_eval"] = int(cg["instructions"]) / int(cg["rhs_evals"])
             row["note"] = (row["note"] + " " + cg["note"]).strip()
-        errs = _errors(c, base) if (base is not None and c.ok and base.ok) else None
+        # A failed run keeps its partial result: the change is then over the time both ran.
+        errs = _errors(c, base) if (base is not None and c.file and base.file) else None
         for q in quantities:
             tag = QUANTITY_TAGS[q]
             e = (errs or {}).get(q)

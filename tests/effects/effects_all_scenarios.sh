@@ -1,7 +1,7 @@
 #!/bin/sh
 # `workbench effects --quick` on every shipped vehicle scenario (docs/effects.md): each exits 0 with
-# every case checked (the effect on in the full scene, off in its case), the wheel-lift
-# reproducer exits 2 (every case ends in its clean failure).
+# every case checked (the effect on in the full scene, off in its case); the wheel-lift
+# reproducer's full scene ends in its clean failure, reported as a result.
 #   effects_all_scenarios.sh WORKBENCH PYTHON
 set -u
 BIN=$1
@@ -20,8 +20,15 @@ for s in scenarios/validation/case*.lua scenarios/validation/variants/*.lua scen
   "$PY" tests/effects/check_effects.py "$out" || { echo "FAIL $s: table"; bad=1; continue; }
   echo "ok   $s"
 done
+# The wheel-lift reproducer: the full scene ends in its clean failure (wheel lift at 0.62 s), a
+# result like any other; the cases without the kick (no irregularities) run. Exit 0.
 s=tests/app/data/wheel_lift/my_wheelset.lua
-"$BIN" effects "$s" --quick --out "$TMP/lift" >"$TMP/lift.log" 2>&1
+"$BIN" effects "$s" --quick --duration 1 --out "$TMP/lift" >"$TMP/lift.log" 2>&1
 rc=$?
-if [ $rc -ne 2 ]; then echo "FAIL $s: exit $rc (expected 2: every case ends in wheel lift)"; tail -5 "$TMP/lift.log"; bad=1; else echo "ok   $s (exit 2)"; fi
+if [ $rc -ne 0 ]; then echo "FAIL $s: exit $rc"; tail -5 "$TMP/lift.log"; bad=1
+elif ! grep -q "^(full scene),.*,failed,.*wheel lift" "$TMP/lift/effects.csv"; then
+  echo "FAIL $s: the full scene did not end in its wheel lift"; bad=1
+elif ! "$PY" tests/effects/check_effects.py "$TMP/lift" --allow-failed --expect irregularities; then
+  echo "FAIL $s: table"; bad=1
+else echo "ok   $s (full scene: wheel lift, a clean failure)"; fi
 exit $bad

@@ -22,6 +22,16 @@ grep -q "flange_contact *always on" "$TMP/log" || { cat "$TMP/log"; fail "flange
   --out "$TMP/e" >"$TMP/log2" 2>&1 || fail "second call"
 grep -q "running 0 with" "$TMP/log2" || { cat "$TMP/log2"; fail "resume re-ran cases"; }
 
+# Every switch of the schema has its on/off check in the table's code (flange contact is always on).
+"$BIN" help scenario | "$PY" -c '
+import re, sys
+sys.path.insert(0, "plots")
+from railbench.effects_cmd import CHECKS
+text = sys.stdin.read().split("run.effects = { ... }")[1].split("\n\n")[0]
+names = set(re.findall(r"^  (\w+) \(boolean", text, re.M))
+missing = names - set(CHECKS) - {"flange_contact"}
+sys.exit(1 if missing or len(names) < 9 else 0)' || fail "a switch without its check in effects_cmd.py"
+
 # Hostile input: exit 1 with the problem named, no output folder made.
 expect1() {
   want=$1; shift
