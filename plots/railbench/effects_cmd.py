@@ -325,7 +325,9 @@ def figure(rows: List[dict], path: str, quantities: List[str]) -> None:
             for yi, v in zip(y, mx):
                 ax2.annotate(f"{v:.3g}", (v, yi - 0.18), xytext=(3, 0), textcoords="offset points",
                              va="center", fontsize=7)
-            ax2.legend(loc="best")
+            # A free row above the bars for the legend.
+            ax1.set_ylim(len(cases) - 0.5, -1.3)
+            ax2.legend(loc="upper right", ncol=2)
             ax2.margins(x=0.15)
             ax1.margins(x=0.15)
         fig.suptitle("What each effect costs and changes (workbench effects)")
