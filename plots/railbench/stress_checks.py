@@ -192,11 +192,17 @@ def failure_summary(message):
 def classify_run(status, message, file, t_end, bounds=None):
     """A run by its own checks: (outcome, row fields, problems, notes) with outcome "ok"
     (finished and passes check_file; its accuracy is judged by the caller), "failed cleanly"
-    (exit 2 with a consistent partial result, or a fixed step the check refused before the run)
-    or "failed badly" (no result, exit 1/3, a signal, NaN/Inf, an inconsistent or implausible
+    (exit 2 with a consistent partial result, or a run refused before its first step with a
+    diagnostic: a fixed step beyond the stability limit, wheel lift in the initial state) or
+    "failed badly" (no result otherwise, exit 3, a signal, NaN/Inf, an inconsistent or implausible
     result). status/message: the study summary's (ok, failed, error)."""
     bounds = bounds or BOUNDS
-    if status == "error" and "stability limit" in (message or ""):
+    # Refused before the first step with its diagnostic (a fixed step beyond the stability
+    # limit, wheel lift already in the initial state): the model says where it stops being valid.
+    # Every hardened case passed `workbench check` before the command ran anything, so this is
+    # not bad input.
+    if status == "error" and ("stability limit" in (message or "") or
+                              "nothing was run" in (message or "")):
         return "failed cleanly", {}, [], ["refused before the run: " + message[:200]]
     if status not in ("ok", "failed") or not file or not os.path.exists(file):
         return "failed badly", {}, ["no result: " + ((message or status or "?")[:300])], []

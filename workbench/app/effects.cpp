@@ -1,23 +1,172 @@
 #include "workbench/app/effects.hpp"
 
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
+
+#include "workbench/app/effects_cases.hpp"
+#include "workbench/app/study.hpp"
+#include "workbench/core/error.hpp"
+#include "workbench/core/strings.hpp"
+
+namespace fs = std::filesystem;
 
 namespace rb::app {
+namespace {
+
+const SourceLoc kCli{"<command line>", 0};
+
+// The quantities the change in answer can be measured on (plots/railbench/study_data.py
+// QUANTITY_TAGS): wheelset lateral displacement, yaw, wheel load, lateral creep force.
+const std::vector<std::string> kQuantities = {"y", "yaw", "Q", "Fy"};
+
+std::vector<std::string> commaList(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  for (std::string item; std::getline(ss, item, ',');) out.push_back(item);
+  return out;
+}
+
+void checkOptions(const EffectsOptions& o) {
+  Diagnostics d;
+  if (o.duration < 0 || !std::isfinite(o.duration))
+    d.add(kCli, "--duration must be > 0 s, got " + formatNumber(o.duration));
+  if (o.distance < 0 || !std::isfinite(o.distance))
+    d.add(kCli, "--distance must be > 0 m, got " + formatNumber(o.distance));
+  if (o.duration > 0 && o.distance > 0) d.add(kCli, "give either --duration or --distance");
+  if (!(o.cost_duration > 0) || !std::isfinite(o.cost_duration))
+    d.add(kCli, "--cost-duration must be > 0 s, got " + formatNumber(o.cost_duration));
+  if (o.repeats < 1 || o.repeats > 100)
+    d.add(kCli, "--repeats must be 1..100, got " + std::to_string(o.repeats));
+  for (const auto& q : commaList(o.quantities)) {
+    bool known = false;
+    for (const auto& k : kQuantities) known = known || k == q;
+    if (!known)
+      d.add(kCli,
+            "--quantities: unknown quantity '" + q + "' (one of: " + join(kQuantities, ", ") + ")");
+  }
+  d.throwIfAny();
+}
+
+// How long every case runs, as an override of the key the scene itself uses (a scene that gives
+// run.distance cannot also take run.duration): seconds are turned into metres at the vehicle's
+// initial speed and back. Empty when neither is asked.
+std::string lengthOverride(const scenario::ScenarioSpec& spec, double seconds, double metres) {
+  if (!(seconds > 0) && !(metres > 0)) return {};
+  const bool sceneDistance = spec.run.distance > 0;
+  const bool sceneDuration = spec.run.duration > 0;
+  const double v = spec.vehicle.speed;
+  if (seconds > 0 && sceneDistance) {
+    if (!(v > 0))
+      throw InputError(kCli,
+                       "--duration: the scene gives run.distance and the "
+                       "vehicle has no speed to convert it; use --distance");
+    return "run.distance=" + formatNumber(seconds * v);
+  }
+  if (metres > 0 && sceneDuration) {
+    if (!(v > 0))
+      throw InputError(kCli,
+                       "--distance: the scene gives run.duration and the "
+                       "vehicle has no speed to convert it; use --duration");
+    return "run.duration=" + formatNumber(metres / v);
+  }
+  return seconds > 0 ? "run.duration=" + formatNumber(seconds)
+                     : "run.distance=" + formatNumber(metres);
+}
+
+std::string effectHelp(scenario::Effect e) {
+  for (const auto& entry : scenario::kEffectNames)
+    if (entry.value == e) return std::string(entry.help);
+  return {};
+}
+
+// effects_scene.csv: every effect of the scene, its state, the override that switches it off and
+// what it is (read by plots/railbench/effects_cmd.py for the table's rows).
+void writeSceneEffects(const fs::path& dir, const scenario::ScenarioSpec& spec) {
+  std::ofstream f(dir / "effects_scene.csv");
+  f << "effect,state,override,help\n";
+  for (const auto& se : sceneEffects(spec))
+    f << nameOf(se.effect) << "," << se.state << ","
+      << (se.state == "measured" ? effectOffOverride(se.effect) : "") << ",\""
+      << effectHelp(se.effect) << "\"\n";
+  if (!f) throw InputError(kCli, "cannot write " + (dir / "effects_scene.csv").string());
+}
+
+}  // namespace
 
 CLI::App* addEffectsCommand(CLI::App& app, EffectsOptions& o) {
-  auto* c = app.add_subcommand("effects", "not yet implemented");
+  auto* c = app.add_subcommand(
+      "effects",
+      "each optional effect of the scene switched off in turn: what it costs (instructions per "
+      "evaluation) and what it changes in the answer");
   c->add_option("scenario", o.scenario, "scenario file (.lua)")->required();
   c->add_option("--set", o.overrides, "override a scenario value: block.key=value")
       ->allow_extra_args(false);
   c->add_option("--out", o.out, "output folder (default out/<scenario>_effects)");
-  c->add_option("--jobs", o.jobs, "cases at once (default: cores)");
+  c->add_option("--jobs", o.jobs, "cases at once (default: cores; 1 for quiet CPU timings)");
+  c->add_option("--repeats", o.repeats, "runs per case, CPU time per evaluation is their median")
+      ->capture_default_str();
+  c->add_option("--duration", o.duration,
+                "simulated time of every case [s] (default: the scene's)");
+  c->add_option("--distance", o.distance, "distance of every case [m] (default: the scene's)");
+  c->add_option("--cost-duration", o.cost_duration,
+                "simulated time of each case's callgrind run [s]")
+      ->capture_default_str();
+  c->add_flag("--no-callgrind", o.no_callgrind, "skip the instruction counts (valgrind)");
+  c->add_flag("--quick", o.quick, "a smoke test: 0.2 s, one repeat, no callgrind");
+  c->add_option("--quantities", o.quantities,
+                "change in answer over every wheelset: y, yaw, Q, Fy (comma separated)")
+      ->capture_default_str();
   return c;
 }
 
-int runEffects(const EffectsOptions& o) {
-  std::cerr << "workbench effects " << o.scenario << ": not implemented yet\n";
-  return 1;
+int runEffects(const EffectsOptions& options) {
+  EffectsOptions o = options;
+  if (o.quick) {
+    if (!(o.duration > 0) && !(o.distance > 0)) o.duration = 0.2;
+    o.repeats = 1;
+    o.no_callgrind = true;
+  }
+  checkOptions(o);
+  scenario::LoadOptions lo;
+  lo.root = o.root;
+  lo.overrides = o.overrides;
+  const scenario::ScenarioSpec scene = scenario::loadScenario(o.scenario, lo);
+  if (!scene.has_vehicle)
+    throw InputError({o.scenario, 0},
+                     "the scenario has no vehicle{} block: nothing is simulated, "
+                     "no effect to measure");
+  std::vector<std::string> common = o.overrides;
+  if (auto len = lengthOverride(scene, o.duration, o.distance); !len.empty()) common.push_back(len);
+  // The cases' own load (with the length) is checked here, so bad input runs nothing.
+  lo.overrides = common;
+  const scenario::ScenarioSpec spec = scenario::loadScenario(o.scenario, lo);
+
+  StudyOptions so;
+  so.file = o.scenario;
+  so.root = o.root;
+  so.program = o.program;
+  so.jobs = o.jobs;
+  so.out = o.out.empty() ? "out/" + fs::path(o.scenario).stem().string() + "_effects" : o.out;
+  std::error_code ec;
+  fs::create_directories(so.out, ec);
+  if (ec) throw InputError(kCli, "--out: cannot create " + so.out + ": " + ec.message());
+  writeSceneEffects(so.out, spec);
+
+  const scenario::StudySpec st = effectsStudy(o.scenario, spec, common, o.repeats);
+  const int study = runStudySpec(st, so, {});
+  if (study == 2) return 2;
+  std::vector<std::string> args = {"effects",      so.out,
+                                   "--workbench",  o.program,
+                                   "--root",       o.root,
+                                   "--quantities", o.quantities,
+                                   "--cost-set",   lengthOverride(spec, o.cost_duration, 0)};
+  if (o.no_callgrind) args.emplace_back("--no-callgrind");
+  const int plots = runPlots(so, args);
+  return plots != 0 ? plots : study;
 }
 
 }  // namespace rb::app

@@ -1,5 +1,9 @@
 #pragma once
-// `workbench effects SCENARIO.lua`: one of the users' three asks run on any scenario (docs/three_asks.md).
+// `workbench effects SCENARIO.lua`: one of the users' three asks run on any scenario
+// (docs/effects.md): the scene with each of its optional effects switched off in turn
+// (run.effects, workbench/scenario/effect_names.hpp), what each costs (callgrind instructions per
+// right-hand-side evaluation, CPU time per evaluation beside it) and what it changes in the answer
+// (the wheelsets' lateral displacement and yaw against the full scene).
 #include <string>
 #include <vector>
 
@@ -16,6 +20,13 @@ struct EffectsOptions {
   std::string root;                    // project root
   std::string program;                 // the workbench executable that runs the cases
   int jobs = 0;                        // cases at once, 0 = number of cores
+  int repeats = 3;                     // runs per case: CPU time per evaluation is their median
+  double duration = 0.0;               // [s] simulated time of every case (0: the scene's)
+  double distance = 0.0;               // [m] travelled distance of every case (0: the scene's)
+  double cost_duration = 2.0;          // [s] simulated time of each callgrind run
+  bool no_callgrind = false;           // skip the instruction counts
+  bool quick = false;                  // tests: 0.2 s, one repeat, no callgrind
+  std::string quantities = "y,yaw";    // change in answer: y, yaw, Q, Fy (comma separated)
 };
 
 // Declares the subcommand and its options on `app` (filled into `options` when parsed).

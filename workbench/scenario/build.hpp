@@ -16,5 +16,11 @@ void buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d);
 void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d);
 void buildSolver(const Node& n, integ::SolverSpec& s, Diagnostics& d);
 void buildRun(const Node& n, RunSpec& run, Diagnostics& d);
+// run.effects = { name = true|false, ... } (effect_names.hpp) into run.effects[].given / .on.
+void buildEffects(const Node& n, EffectSwitches& effects, Diagnostics& d);
+// Marks the effects the scene has, then removes every one switched off from the Specs; a switch
+// the scene cannot use (false for an effect it does not have, flange_contact = false) is an
+// error at the switch.
+void applyEffectSwitches(ScenarioSpec& spec, Diagnostics& d);
 
 }  // namespace rb::scenario

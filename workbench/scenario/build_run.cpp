@@ -67,6 +67,7 @@ void buildRun(const Node& n, RunSpec& run, Diagnostics& d) {
     run.max_output_samples = o.number("max_samples");
     run.output_patches = o.boolean("patches");
   }
+  if (const Node* e = r.blockValue("effects")) buildEffects(*e, run.effects, d);
   // run.assessment = true asks for every group that applies to the vehicle (the run drops the
   // groups it cannot compute and says so); a table asks for what it names.
   const Node* a = r.value("assessment");

@@ -45,6 +45,7 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
     buildSolver(*s, spec.solver, d);
   }
   if (const Node* r = root.field("run")) buildRun(*r, spec.run, d);
+  applyEffectSwitches(spec, d);
   // Blocks that a scenario would otherwise silently ignore.
   if (const Node* st = root.field("study"))
     d.add(st->loc,

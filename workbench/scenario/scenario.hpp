@@ -7,6 +7,7 @@
 #include "workbench/assessment/spec.hpp"
 #include "workbench/dynamics/spec.hpp"
 #include "workbench/integrators/spec.hpp"
+#include "workbench/scenario/effect_names.hpp"
 #include "workbench/track/spec.hpp"
 #include "workbench/vehicle/spec.hpp"
 
@@ -21,6 +22,9 @@ struct RunSpec {
   double max_output_samples = 1e7;        // refuse runs with more output times (memory, disk)
   bool output_patches = true;             // /contact/<ws>/<side>/patch0, patch1
   assessment::AssessmentSpec assessment;  // nothing asked: nothing sampled, nothing computed
+  // run.effects: which optional effects the scene has and which of them the compiled model keeps
+  // (loadScenario removes every switched-off effect from the Specs; effect_names.hpp).
+  EffectSwitches effects;
   SourceLoc loc;
 };
 

@@ -11,6 +11,7 @@
 #include "workbench/dynamics/limits.hpp"
 #include "workbench/dynamics/names.hpp"
 #include "workbench/integrators/registry.hpp"
+#include "workbench/scenario/effect_names.hpp"
 #include "workbench/track/names.hpp"
 #include "workbench/vehicle/names.hpp"
 
@@ -465,6 +466,21 @@ void addAssessmentBlock(std::vector<BlockSpec>& s) {
             true)}});
 }
 
+// run.effects: one boolean per entry of the effect name table (effect_names.hpp).
+void addEffectsBlock(std::vector<BlockSpec>& s) {
+  BlockSpec b{"run.effects",
+              "Optional effects of the scene, each on by default when the scene has it (a plain "
+              "table inside run{}, e.g. effects = { irregularities = false }; --set "
+              "run.effects.bump_stops=false). A switched-off effect is left out of the compiled "
+              "model, so it costs nothing; false for an effect the scene does not have is an "
+              "error. `workbench effects SCENARIO.lua` measures what each costs and changes "
+              "(docs/effects.md).",
+              {}};
+  for (const auto& e : kEffectNames)
+    b.keys.push_back(boolean(std::string(e.name), true, std::string(e.help)));
+  s.push_back(std::move(b));
+}
+
 void addRunBlocks(std::vector<BlockSpec>& s) {
   s.push_back({"run",
                "What to simulate and what to write.",
@@ -474,7 +490,12 @@ void addRunBlocks(std::vector<BlockSpec>& s) {
                 blockKey("assessment", ValueType::Block, {},
                          "engineering assessment of the run (EN 14363, EN 12299, Sperling, wear) "
                          "written to /assessment; true = every group that applies to the vehicle",
-                         "run.assessment")}});
+                         "run.assessment"),
+                blockKey("effects", ValueType::Block, {},
+                         "switches of the optional effects of the scene (default on when the "
+                         "scene has them); false leaves an effect out of the compiled model",
+                         "run.effects")}});
+  addEffectsBlock(s);
   s.push_back({"run.output",
                "Output options (a plain table inside run{}).",
                {num("every", "s", 0.01, "output interval", 0, kInf, true),
