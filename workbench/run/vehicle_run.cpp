@@ -495,9 +495,12 @@ void sampleContact(AssessmentSetup& as, dynamics::ContactVehicleOde& contact, do
   }
 }
 
-void sampleAssessment(AssessmentSetup& as, vehicle::VehicleOde& ode,
-                      dynamics::ContactVehicleOde* contact, double t, const double* y, double s,
-                      std::vector<Vector6d>& qdd, std::vector<dynamics::WheelOutput>& wo) {
+// Not inlined: its cost stays a named function (tests/stages: what a scene without assessment
+// pays for it).
+[[gnu::noinline]] void sampleAssessment(AssessmentSetup& as, vehicle::VehicleOde& ode,
+                                        dynamics::ContactVehicleOde* contact, double t,
+                                        const double* y, double s, std::vector<Vector6d>& qdd,
+                                        std::vector<dynamics::WheelOutput>& wo) {
   as.signals.time.push_back(t);
   as.signals.distance.push_back(s);
   if (contact != nullptr && !as.signals.wheels.empty()) sampleContact(as, *contact, t, y, wo);
