@@ -12,6 +12,7 @@
 
 #include "h5read.hpp"
 #include "workbench/app/run.hpp"
+#include "workbench/io/read_stats.hpp"
 #include "workbench/run/compile.hpp"
 #include "workbench/run/run_stats.hpp"
 
@@ -220,6 +221,16 @@ TEST(RunStageShares, ContactRunSharesSumToOne) {
   hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   EXPECT_EQ(h5test::stringAttr(f, "/stats", "effects"), lines);
   H5Fclose(f);
+  // The reader of the studies sees the effects and the shares.
+  const auto rec = rb::io::readStats(out);
+  ASSERT_TRUE(rec.has_value());
+  EXPECT_EQ(rec->text.at("effects"), lines);
+  double sum = 0.0;
+  for (const auto& [k, v] : rec->number)
+    if (k.rfind("stage_share_", 0) == 0) sum += v;
+  EXPECT_NEAR(sum, 1.0, 1e-12);
+  EXPECT_GT(rec->number.at("stage_share_coupling"), 0.0);
+  EXPECT_EQ(rec->number.at("stage_period"), 1.0);
 }
 
 TEST(RunStageShares, GuidedRunHasItsOwnStages) {
