@@ -13,6 +13,7 @@
 #include "workbench/dynamics/names.hpp"
 #include "workbench/io/result_file.hpp"
 #include "workbench/run/compile.hpp"
+#include "workbench/run/run_stats.hpp"
 #include "workbench/run/simulate.hpp"
 #include "workbench/run/vehicle_run.hpp"
 
@@ -78,6 +79,21 @@ void checkOutputPath(const std::string& out, const run::Model& m) {
   }
 }
 
+// 1 in how many rhs evaluations are timed: the option, else RAILBENCH_STAGE_SAMPLING (a count,
+// 0 = off: the callgrind comparison of docs/run_stats.md), else the default.
+unsigned stagePeriod(const RunOptions& o) {
+  if (o.stage_period >= 0) return static_cast<unsigned>(o.stage_period);
+  const char* env = std::getenv("RAILBENCH_STAGE_SAMPLING");
+  if (env == nullptr || *env == '\0') return vehicle::StageClock::kDefaultPeriod;
+  char* end = nullptr;
+  const long n = std::strtol(env, &end, 10);
+  if (*end != '\0' || n < 0 || n > 1000000000L)
+    throw InputError(SourceLoc{"<environment>", 0},
+                     "RAILBENCH_STAGE_SAMPLING must be a count >= 0 (0: no stage timing), got '" +
+                         std::string(env) + "'");
+  return static_cast<unsigned>(n);
+}
+
 }  // namespace
 
 void checkScenario(const RunOptions& options) {
@@ -90,6 +106,7 @@ int runScenario(const RunOptions& options) {
   // not start never touches an earlier result.
   run::Model c = run::compile(compileOptions(options));
   for (const auto& w : c.warnings) std::cerr << w << "\n";
+  const unsigned period = stagePeriod(options);
   const std::string out = defaultOut(options);
   checkOutputPath(out, c);
   if (fs::path(out).has_parent_path()) {
@@ -118,6 +135,7 @@ int runScenario(const RunOptions& options) {
   if (c.vehicle) {
     run::VehicleRunOptions vo;
     vo.progress = !options.quiet && isatty(STDERR_FILENO);  // only for a person at a terminal
+    vo.stage_period = period;
     run::VehicleRunResult res = run::runVehicle(c, f, vo);
     f.finalize();
     std::cout << run::statsLine(res.result, res.result.t_reached);
@@ -125,6 +143,8 @@ int runScenario(const RunOptions& options) {
       std::cout << "; " << res.warnings.size()
                 << (res.warnings.size() == 1 ? " warning" : " warnings");
     std::cout << "\n";
+    std::cout << "effects: " << run::effectsSummary(res.effects) << "; "
+              << run::costSummary(res.costs) << "\n";
     for (const auto& w : res.warnings) std::cout << "warning: " << w << "\n";
     for (const auto& line : res.assessment_summary) std::cout << line << "\n";
     if (res.assessment_summary.empty())

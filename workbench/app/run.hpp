@@ -12,6 +12,9 @@ struct RunOptions {
   std::string out;   // result file; default out/<scenario stem>.h5
   std::string root;  // project root
   bool quiet = false;
+  // Rhs stage timing (workbench/run/run_stats.hpp): 1 evaluation in stage_period is timed, 0 off;
+  // < 0: the environment's RAILBENCH_STAGE_SAMPLING, else 64.
+  int stage_period = -1;
 };
 
 // Loads, validates and compiles everything the scenario asks for; throws InputError.

@@ -66,20 +66,24 @@ void contactPositions(const ContactModels& models, const WheelsetWork& ww, int w
 }
 
 // Stages 5-8 (contact_stages.hpp) of wheelset w: patches, augmented system, normal/tangential
-// coupling, checks, rates and outputs.
+// coupling, checks, rates and outputs. A timed evaluation passes its clock.
 template <ContactMethod kMethod, class Law>
 int wheelsetStages(const ContactModels& models, const StageInput& in, int w, double* ydot,
-                   ContactWorkspace& work, bool& lift) {
+                   ContactWorkspace& work, bool& lift, vehicle::StageClock* clock) {
+  using vehicle::Stage;
   WheelsetWork& ww = work.wheelset(w);
   if (const int rc = internal::contactPatches<kMethod, Law>(models, in, ww, work); rc != 0)
     return rc;
   internal::classifyRegimes(ww);
+  if (clock) clock->mark(Stage::ContactPatches);
   internal::AugmentedSystem system;
   if (const int rc = internal::augmentedSystem(models, in, ww, work, system); rc != 0) return rc;
+  if (clock) clock->mark(Stage::Augmented);
   Vec7 x;
   if (const int rc = internal::coupleNormalAndTangential<Law>(models, in, system, ww, work, x);
       rc != 0)
     return rc;
+  if (clock) clock->mark(Stage::Coupling);
   if (const int rc = internal::checkSolution(models, in, ww, x, work); rc != 0) return rc;
   internal::writeWheelsetRates(models.layout, w, in.y, x, ydot);
   if (const int rc = checkWheelLift<kMethod>(models, in, ww, work, lift); rc != 0) return rc;
@@ -87,6 +91,7 @@ int wheelsetStages(const ContactModels& models, const StageInput& in, int w, dou
     internal::wheelsetOutputs(in, w, ww, x, Law::kCreep, kMethod == ContactMethod::Lut, work);
     contactPositions(models, ww, w, work);
   }
+  if (clock) clock->mark(Stage::Checks);
   return 0;
 }
 
@@ -103,6 +108,10 @@ ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
       contact_(&contact),
       work_(std::make_unique<ContactWorkspace>()) {
   RB_CHECK(layout_.n_ws > 0, "ContactVehicleOde: the vehicle has no wheelset");
+  using vehicle::Stage;
+  stages_.use({Stage::Coordinates, Stage::Constraints, Stage::VehicleForces, Stage::FreeBodies,
+               Stage::ContactPatches, Stage::Augmented, Stage::Coupling, Stage::Checks,
+               Stage::SeriesRates});
   RB_CHECK(contact.method == ContactMethod::Kec ? contact.kec != nullptr : contact.lut != nullptr,
            "ContactVehicleOde: the contact model has no table for its method");
   if (track.irregularities()) irr_ = &*track.irregularities();
@@ -165,20 +174,32 @@ int ContactVehicleOde::evaluate(double t, const double* y, double* ydot, EvalMod
 
 template <ContactMethod kMethod, class Law>
 int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, EvalMode mode) {
+  using vehicle::Stage;
   ContactWorkspace& work = *work_;
   ++work.stats.evaluations;
+  // Only the integrator's evaluations are timed: outputs belong to the observer's share.
+  vehicle::StageClock* clock = mode == EvalMode::Rhs && stages_.start() ? &stages_ : nullptr;
   const ContactModels models{*model_, *contact_, layout_, irr_};
   const StageInput in{t, y, model_->speedAt(t), model_->acceleration, mode};
   if (const int rc = internal::setIndependentCoordinates(models, in, work); rc != 0) return rc;
+  if (clock) clock->mark(Stage::Coordinates);
   if (const int rc = internal::solveConstraints(models, in, work); rc != 0) return rc;
+  if (clock) clock->mark(Stage::Constraints);
   internal::evaluateVehicleForces(models, in, work);
+  if (clock) clock->mark(Stage::VehicleForces);
   if (const int rc = internal::freeBodyAccelerations(models, in, ydot, work); rc != 0) return rc;
+  if (clock) clock->mark(Stage::FreeBodies);
   bool lift = false;
   for (int w = 0; w < layout_.n_ws; ++w)
-    if (const int rc = wheelsetStages<kMethod, Law>(models, in, w, ydot, work, lift); rc != 0)
+    if (const int rc = wheelsetStages<kMethod, Law>(models, in, w, ydot, work, lift, clock);
+        rc != 0)
       return rc;
   if (lift) ++work.stats.lift_evaluations;
   internal::writeSeriesRates(layout_, work, ydot);
+  if (clock) {
+    clock->mark(Stage::SeriesRates);
+    clock->finish();
+  }
   return 0;
 }
 

@@ -7,8 +7,10 @@
 namespace rb::io {
 
 struct StatsRecord {
-  std::map<std::string, std::string> text;  // status, message, method
-  std::map<std::string, double> number;     // cpu_time_s, rhs_evals, ... (integers as doubles)
+  std::map<std::string, std::string> text;  // status, message, method, effects
+  // cpu_time_s, rhs_evals, ... (integers as doubles), and the stage shares of the datasets
+  // /stats/stage_names and stage_share as "stage_share_<name>" (docs/run_stats.md).
+  std::map<std::string, double> number;
 };
 
 // nullopt when the file cannot be opened or has no /stats group.

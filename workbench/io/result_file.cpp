@@ -6,6 +6,7 @@
 #include <hdf5.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -231,6 +232,30 @@ void ResultFile::dataset2d(const std::string& path, std::size_t rows, std::size_
       H5Dwrite(d.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
     fail("cannot write dataset", path);
   if (!writeUnits(d.get(), units)) fail("cannot write units of", path);
+}
+
+void ResultFile::stringDataset(const std::string& path, const std::vector<std::string>& values) {
+  const auto slash = path.find_last_of('/');
+  if (slash != 0 && slash != std::string::npos)
+    H5Gclose(static_cast<hid_t>(group(path.substr(0, slash))));
+  std::size_t width = 1;
+  for (const auto& v : values) width = std::max(width, v.size());
+  std::string packed(width * values.size(), '\0');
+  for (std::size_t i = 0; i < values.size(); ++i)
+    packed.replace(i * width, values[i].size(), values[i]);
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+  const hsize_t n = values.size();
+  Handle space(H5Screate_simple(1, &n, nullptr), H5Sclose);
+  if (!type.ok() || !space.ok() || H5Tset_size(type.get(), width) < 0 ||
+      H5Tset_strpad(type.get(), H5T_STR_NULLPAD) < 0 || H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
+    fail("cannot create dataset", path);
+  Handle d(H5Dcreate2(static_cast<hid_t>(file_), path.c_str(), type.get(), space.get(), H5P_DEFAULT,
+                      H5P_DEFAULT, H5P_DEFAULT),
+           H5Dclose);
+  if (!d.ok()) fail("cannot create dataset", path);
+  if (!values.empty() &&
+      H5Dwrite(d.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, packed.data()) < 0)
+    fail("cannot write dataset", path);
 }
 
 Series& ResultFile::series(const std::string& path, const std::string& units) {

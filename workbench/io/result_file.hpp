@@ -69,6 +69,8 @@ class ResultFile {
   // A complete 2-D dataset, row-major data of rows x cols (e.g. a table over gauge x y).
   void dataset2d(const std::string& path, std::size_t rows, std::size_t cols,
                  const std::vector<double>& data, const std::string& units);
+  // A complete 1-D dataset of fixed-length UTF-8 strings (names that index another dataset).
+  void stringDataset(const std::string& path, const std::vector<std::string>& values);
   // Removes a group or dataset (and everything below it) when it exists.
   void remove(const std::string& path);
   // An appendable dataset; the returned Series lives as long as this file.

@@ -495,9 +495,12 @@ void sampleContact(AssessmentSetup& as, dynamics::ContactVehicleOde& contact, do
   }
 }
 
-void sampleAssessment(AssessmentSetup& as, vehicle::VehicleOde& ode,
-                      dynamics::ContactVehicleOde* contact, double t, const double* y, double s,
-                      std::vector<Vector6d>& qdd, std::vector<dynamics::WheelOutput>& wo) {
+// Not inlined: its cost stays a named function (tests/stages: what a scene without assessment
+// pays for it).
+[[gnu::noinline]] void sampleAssessment(AssessmentSetup& as, vehicle::VehicleOde& ode,
+                                        dynamics::ContactVehicleOde* contact, double t,
+                                        const double* y, double s, std::vector<Vector6d>& qdd,
+                                        std::vector<dynamics::WheelOutput>& wo) {
   as.signals.time.push_back(t);
   as.signals.distance.push_back(s);
   if (contact != nullptr && !as.signals.wheels.empty()) sampleContact(as, *contact, t, y, wo);
@@ -540,6 +543,11 @@ void finishAssessment(const Model& m, AssessmentSetup& as, std::size_t samples, 
 
 }  // namespace
 
+assessment::AssessmentSpec applicableAssessment(const Model& m) {
+  std::vector<std::string> notes;
+  return applicable(m, notes);
+}
+
 void checkAssessment(const Model& m) {
   const auto& a = m.spec.run.assessment;
   if (!a.any() || a.all || !m.vehicle) return;
@@ -562,6 +570,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   const std::size_t nb = v.bodies.size();
   const std::unique_ptr<vehicle::VehicleOde> ode = makeVehicleOde(m);
   auto* contact = dynamic_cast<dynamics::ContactVehicleOde*>(ode.get());  // null: guided
+  ode->setStageSampling(o.stage_period);
 
   SimulationRequest r;
   r.system = ode.get();
@@ -637,6 +646,9 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   out.result = simulate(r, f);
   if (as.spec.any()) finishAssessment(m, as, extra.samples, f, out);
   if (contact) writeContactStats(m, contact->stats(), creepage, f, out);
+  out.effects = compiledEffects(m);
+  out.costs = stageCosts(ode->stageClock(), out.result.stats);
+  writeRunStats(f, out.effects, out.costs);
   writeWarnings(f, out.warnings);
   f.flush();
   return out;

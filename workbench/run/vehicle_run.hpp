@@ -13,14 +13,19 @@
 #include <string>
 #include <vector>
 
+#include "workbench/assessment/spec.hpp"
 #include "workbench/integrators/integrator.hpp"
 #include "workbench/io/result_file.hpp"
 #include "workbench/run/compile.hpp"
+#include "workbench/run/run_stats.hpp"
+#include "workbench/vehicle/stage_clock.hpp"
 
 namespace rb::run {
 
 struct VehicleRunOptions {
   bool progress = false;  // progress line on stderr
+  // Rhs stage timing: 1 evaluation in stage_period is timed (0: off; run_stats.hpp).
+  unsigned stage_period = vehicle::StageClock::kDefaultPeriod;
 };
 
 struct VehicleRunResult {
@@ -29,12 +34,16 @@ struct VehicleRunResult {
   // The printed assessment summary (empty when none was asked) and why groups were left out.
   std::vector<std::string> assessment_summary;
   std::vector<std::string> assessment_notes;
+  std::vector<EffectUse> effects;  // /stats/effects
+  StageCosts costs;                // /stats/stage_*
 };
 
 // Refuses (InputError at run.assessment's file:line) assessment groups a vehicle cannot give when
 // the scenario names them: safety and wear need wheel/rail contact, stability a bogie, comfort a
 // car body. run.assessment = true drops them instead. check and run call it after compile().
 void checkAssessment(const Model& m);
+// The assessment groups that apply to the vehicle of m (those it cannot give dropped).
+assessment::AssessmentSpec applicableAssessment(const Model& m);
 
 // Integrates m (which must have a vehicle) and writes outputs, /stats and warnings into f (not
 // finalized). Throws InputError only for problems compile() could not know.

@@ -40,11 +40,13 @@ void guidedCoordinates(const VehicleModel& m, const VehicleLayout& l, double t, 
 }
 
 int guidedRhs(const VehicleModel& m, const VehicleLayout& l, double t, const double* y,
-              double* ydot, Workspace& ws) {
+              double* ydot, Workspace& ws, StageClock* clock) {
   guidedCoordinates(m, l, t, y, ws);
   for (int k = 0; k < l.n_free; ++k)
     if (!(std::abs(y[l.position(k, kPitch - 1)]) < kPitchLimit)) return 1;
+  if (clock) clock->mark(Stage::Coordinates);
   evaluate(m, l.n_series > 0 ? y + l.series(0) : nullptr, ws);
+  if (clock) clock->mark(Stage::VehicleForces);
   for (int k = 0; k < l.n_free; ++k) {
     const std::size_t b = l.freeBody(k);
     const Matrix6d& M = ws.mass[b];
@@ -61,18 +63,24 @@ int guidedRhs(const VehicleModel& m, const VehicleLayout& l, double t, const dou
       ydot[l.rate(k, c)] = acc[c];
     }
   }
+  if (clock) clock->mark(Stage::FreeBodies);
   for (int e = 0; e < l.n_series; ++e)
     ydot[l.series(e)] = ws.series_rate[static_cast<std::size_t>(e)];
+  if (clock) {
+    clock->mark(Stage::SeriesRates);
+    clock->finish();
+  }
   return 0;
 }
 
 GuidedVehicleOde::GuidedVehicleOde(const VehicleModel& model)
     : VehicleOde(model, guidedLayout(model)), ws_(makeWorkspace(model)) {
   scratch_.assign(static_cast<std::size_t>(layout_.size), 0.0);
+  stages_.use({Stage::Coordinates, Stage::VehicleForces, Stage::FreeBodies, Stage::SeriesRates});
 }
 
 int GuidedVehicleOde::rhs(double t, const double* y, double* ydot) {
-  const int rc = guidedRhs(*model_, layout_, t, y, ydot, ws_);
+  const int rc = guidedRhs(*model_, layout_, t, y, ydot, ws_, stages_.start() ? &stages_ : nullptr);
   if (rc != 0) {
     last_error_ =
         "a free body's pitch angle reached the Euler-angle guard |theta| >= 1.2 rad, or "

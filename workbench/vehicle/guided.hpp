@@ -26,6 +26,7 @@
 #include "workbench/vehicle/dynamics.hpp"
 #include "workbench/vehicle/layout.hpp"
 #include "workbench/vehicle/model.hpp"
+#include "workbench/vehicle/stage_clock.hpp"
 #include "workbench/vehicle/vehicle_ode.hpp"
 
 namespace rb::vehicle {
@@ -40,8 +41,9 @@ void guidedCoordinates(const VehicleModel& model, const VehicleLayout& layout, d
 // The pure right-hand side: ydot = f(t, y). Returns 0, or 1 (recoverable) if a free body's pitch
 // leaves |theta| < 1.2 rad (Euler-angle singularity at 90 deg) or a mass matrix is not positive
 // definite. After the call ws holds the evaluated model (forces, element values, series rates).
+// With a clock (a timed evaluation, stage_clock.hpp) the end of each stage is marked on it.
 int guidedRhs(const VehicleModel& model, const VehicleLayout& layout, double t, const double* y,
-              double* ydot, Workspace& ws);
+              double* ydot, Workspace& ws, StageClock* clock = nullptr);
 
 struct BodyOutput {
   Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();    // [m/s^2] absolute CoM acceleration,

@@ -13,6 +13,7 @@
 #include "workbench/vehicle/layout.hpp"
 #include "workbench/vehicle/model.hpp"
 #include "workbench/vehicle/sparsity.hpp"
+#include "workbench/vehicle/stage_clock.hpp"
 
 namespace rb::vehicle {
 
@@ -60,12 +61,18 @@ class VehicleOde : public integ::OdeSystem {
   // The vehicle workspace of the last evaluation (element values, forces, body kinematics).
   virtual const Workspace& workspace() const = 0;
 
+  // Sampled timing of the rhs stages (stage_clock.hpp): rhs() evaluations only, not the outputs
+  // and initial-state evaluations. setStageSampling(0) turns it off.
+  const StageClock& stageClock() const { return stages_; }
+  void setStageSampling(unsigned period) { stages_.setPeriod(period); }
+
  protected:
   VehicleOde(const VehicleModel& model, VehicleLayout layout)
       : model_(&model), layout_(std::move(layout)) {}
 
   const VehicleModel* model_;
   VehicleLayout layout_;
+  StageClock stages_;
 };
 
 }  // namespace rb::vehicle
