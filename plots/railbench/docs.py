@@ -43,7 +43,7 @@ from .common import parser
 from .docs_blocks import assessment_cases_block, accuracy_block, bench_block, bench_integrators_block, effects_block, efficiency_block, fmt, missing, num, read_csv, paper_settings_block, refinement_block, replace_block, speed_block, table, work_precision_block
 from .docs_paper import PAPER_TABLES, flange_paper_block, paper_table_blocks, tables_9_10_block
 from .docs_stress import stress_hard_block
-from .docs_three_asks import EFFECTS, PRECISION, STRESS, three_asks_blocks
+from .docs_three_asks import EFFECTS, PRECISION, STRESS, STRESS_KEC, three_asks_blocks
 from .docs_tables import tables_block
 from .docs_validation import hard_block, hard_detail_block, hard_rows, validation_blocks
 
@@ -64,7 +64,7 @@ BLOCK_SOURCES = {
     "validation_case3": "validation", "validation_cost": "validation",
     "coupling_convergence": "build", "assessment_cases": "validation", "tables_summary": "tables",
     "stress_hard": "build", "three_asks_precision": PRECISION, "three_asks_stress": STRESS,
-    "three_asks_effects": EFFECTS,
+    "three_asks_stress_kec": STRESS_KEC, "three_asks_effects": EFFECTS,
 }
 
 
@@ -147,7 +147,7 @@ def coupling_block(build: str) -> Optional[str]:
 
 STUDIES = ("efficiency_case3", "flange_stiffness", "refinement", "work_precision", "effects",
            "speed", "paper_settings_flange", "paper_settings", "validation", "tables", PRECISION,
-           STRESS, EFFECTS)
+           STRESS_KEC, STRESS, EFFECTS)
 
 
 def copy_figures(outdir: str, docs: str, pages) -> List[str]:

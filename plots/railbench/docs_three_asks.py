@@ -11,6 +11,7 @@ from .docs_blocks import fmt, missing, num, read_csv, table
 
 PRECISION = "three_asks_precision"
 STRESS = "three_asks_stress"
+STRESS_KEC = "three_asks_stress_kec"
 EFFECTS = "three_asks_effects"
 
 
@@ -53,10 +54,10 @@ def _pivot(rows: List[dict]) -> str:
     return table(["axis", "value"] + settings, body)
 
 
-def stress_block(outdir: str) -> str:
-    """The stability map of the hard case: counts per outcome, the map as a table (outcome and
+def stress_block(outdir: str, folder: str = STRESS) -> str:
+    """The stability map of a hard case: counts per outcome, the map as a table (outcome and
     lateral error against the hardened case's own reference) and its figure."""
-    d = _folder(outdir, STRESS)
+    d = _folder(outdir, folder)
     path = os.path.join(d, "stress.csv")
     if not os.path.exists(path):
         return missing(f"{path} (./wb studies --only three_asks)")
@@ -67,7 +68,7 @@ def stress_block(outdir: str) -> str:
            f"references), {cpu:.0f} s CPU in all: " +
            ", ".join(f"{counts.get(o, 0)} {o}" for o in
                      ("ok", "inaccurate", "failed cleanly", "failed badly")) + ".", "",
-           _pivot(rows), "", f"![stability map](figures/{STRESS}_stress_map.png)", ""]
+           _pivot(rows), "", f"![stability map](figures/{folder}_stress_map.png)", ""]
     notes = [r for r in rows if r["outcome"] in ("failed cleanly", "failed badly")
              and r.get("role") == "reference"]
     if notes:
@@ -80,18 +81,77 @@ def stress_block(outdir: str) -> str:
     return "\n".join(out)
 
 
+def _stats_of(path: str):
+    """(effects lines, [(stage, share)]) of a result file's /stats."""
+    import h5py  # only when there is a result to read
+    with h5py.File(path, "r") as f:
+        st = f["stats"]
+        eff = st.attrs.get("effects", b"")
+        eff = eff.decode() if isinstance(eff, bytes) else str(eff)
+        shares = []
+        if "stage_names" in st and "stage_share" in st:
+            names = [n.decode() if isinstance(n, bytes) else str(n) for n in st["stage_names"][()]]
+            shares = list(zip(names, (float(v) for v in st["stage_share"][()])))
+    return [e for e in eff.splitlines() if e.strip()], shares
+
+
+def _cell(r: dict, key: str, spec: str) -> str:
+    return fmt(num(r.get(key)), spec)
+
+
 def effects_block(outdir: str) -> str:
-    """What each effect of case 3 costs and changes (`workbench effects`)."""
+    """Case 3: the effects and rhs stage shares its run records in /stats, and what each
+    optional effect costs and changes (`workbench effects`)."""
     d = _folder(outdir, EFFECTS)
-    path = os.path.join(d, "effects.md")
+    path = os.path.join(d, "effects.csv")
     if not os.path.exists(path):
         return missing(f"{path} (./wb studies --only three_asks)")
-    with open(path) as f:
-        body = f.read()
-    return body.replace("(figures/effects", f"(figures/{EFFECTS}_effects")
+    rows = read_csv(path)
+    out = []
+    base = next((r for r in rows if r.get("role") == "baseline"), None)
+    base_file = None
+    if base is not None:
+        cases = {r["case"]: r for r in read_csv(os.path.join(d, "summary_cases.csv"))}
+        base_file = (cases.get(base.get("case", "")) or {}).get("file")
+    if base_file and not os.path.isabs(base_file):
+        base_file = os.path.join(d, os.path.basename(base_file))
+    if base_file and os.path.exists(base_file):
+        effects, shares = _stats_of(base_file)
+        out += ["What the full scene's result file records (`/stats`: the effects compiled into "
+                "the run, and the share of the run's cost per stage of the right-hand side, "
+                "timed on 1 evaluation in 64):", "",
+                table(["effects (/stats@effects)"], [[e] for e in effects]), ""]
+        if shares:
+            out += [table(["stage", "share of the run's cost"],
+                          [[n, f"{100 * v:.1f} %"] for n, v in
+                           sorted(shares, key=lambda x: -x[1])]), ""]
+    body = []
+    for r in rows:
+        if r.get("role") not in ("baseline", "minimal", ""):
+            body.append([r["effect"], r.get("role", ""), "", "", "", "", "", "",
+                         (r.get("note") or "")[:100]])
+            continue
+        body.append([r["effect"], r.get("check", ""),
+                     _cell(r, "instructions_per_eval", "{:.0f}"),
+                     _cell(r, "d_instructions_pct", "{:.1f}"),
+                     _cell(r, "cpu_us_per_eval", "{:.2f}"),
+                     _cell(r, "d_cpu_pct", "{:.1f}"),
+                     f"{_cell(r, 'max_dy', '{:.3g}')} / {_cell(r, 'rms_dy', '{:.3g}')}",
+                     f"{_cell(r, 'max_dyaw', '{:.3g}')} / {_cell(r, 'rms_dyaw', '{:.3g}')}",
+                     (r.get("note") or "")[:100]])
+    out += ["Each optional effect switched off in turn (`run.effects.<name> = false`) against the "
+            "full scene: instructions per rhs evaluation (callgrind, repeatable), CPU time per "
+            "evaluation (median of the repeats, noisy), and the change of every wheelset's "
+            "lateral displacement and yaw angle:", "",
+            table(["effect off", "on/off check", "instructions / eval", "saved [%]",
+                   "CPU [us/eval]", "CPU saved [%]", "max / rms dy [mm]",
+                   "max / rms dyaw [mrad]", "note"], body), "",
+            f"![effects](figures/{EFFECTS}_effects.png)", ""]
+    return "\n".join(out)
 
 
 def three_asks_blocks(outdir: str) -> dict:
     return {"three_asks_precision": precision_block(outdir),
             "three_asks_stress": stress_block(outdir),
+            "three_asks_stress_kec": stress_block(outdir, STRESS_KEC),
             "three_asks_effects": effects_block(outdir)}

@@ -1,8 +1,5 @@
 #include "workbench/app/stress.hpp"
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <filesystem>
@@ -15,8 +12,6 @@
 #include "workbench/core/error.hpp"
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/scenario/study.hpp"
-
-extern char** environ;
 
 namespace rb::app {
 
@@ -155,45 +150,18 @@ void validate(const StressOptions& o, const std::vector<std::string>& common,
 
 // `python3 -m railbench stress DIR ...`: classification, stress.csv, the map. Its exit code.
 int classify(const StressOptions& o, const std::string& dir) {
-  const char* env = std::getenv("RAILBENCH_PYTHON");
-  std::string python = env && *env ? env : "/usr/bin/python3";
-  const fs::path plots = fs::path(o.root) / "plots";
-  if (!fs::exists(python) || !fs::exists(plots / "railbench" / "stress.py")) {
-    std::cerr << "stress: cannot classify the runs: " << python << " or "
-              << (plots / "railbench").string() << " not found\n";
-    return 4;
-  }
-  std::vector<std::string> args = {
-      python, "-m", "railbench", "stress", dir, "--tolerance", stress::number(o.tolerance)};
+  std::vector<std::string> args = {"stress", dir, "--tolerance", stress::number(o.tolerance)};
   if (!o.expect.empty()) args.insert(args.end(), {"--expect", o.expect});
   if (const char* e = std::getenv("RAILBENCH_STUDY_PLOTS"); e && std::string(e) == "0")
     args.emplace_back("--no-figure");
-  std::vector<std::string> envs;
-  std::string path = plots.string();
-  for (char** e = environ; e && *e; ++e) {
-    std::string kv = *e;
-    if (kv.rfind("PYTHONPATH=", 0) == 0) {
-      if (kv.size() > 11) path += ":" + kv.substr(11);
-      continue;
-    }
-    envs.push_back(std::move(kv));
+  StudyOptions so;
+  so.root = o.root;
+  const int code = runRbplot(so, args);
+  if (code < 0) {
+    std::cerr << "stress: cannot classify the runs: python3 or " << o.root
+              << "/plots/railbench not found\n";
+    return 4;
   }
-  envs.push_back("PYTHONPATH=" + path);
-  std::vector<char*> argv;
-  std::vector<char*> envp;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  for (auto& e : envs) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  std::cout.flush();
-  const pid_t pid = fork();
-  if (pid == 0) {
-    execve(python.c_str(), argv.data(), envp.data());
-    _exit(127);
-  }
-  int status = 0;
-  if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status)) return 4;
-  const int code = WEXITSTATUS(status);
   return code == 0 || code == 2 || code == 5 ? code : 4;
 }
 

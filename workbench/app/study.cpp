@@ -254,23 +254,17 @@ std::vector<std::string> plotsEnvironment(const fs::path& plots) {
 
 }  // namespace
 
-int runPlots(const StudyOptions& o, const std::vector<std::string>& plotArgs) {
-  if (const char* e = std::getenv("RAILBENCH_STUDY_PLOTS"); e && std::string(e) == "0") return 0;
+int runRbplot(const StudyOptions& o, const std::vector<std::string>& args) {
   const char* env = std::getenv("RAILBENCH_PYTHON");
   std::string python = env && *env ? env : "/usr/bin/python3";
   const fs::path plots = fs::path(o.root) / "plots";
-  const fs::path entry = plots / "railbench" / "__main__.py";
-  if (!fs::exists(python) || !fs::exists(entry)) {
-    std::cerr << "study: note: no figures (" << (fs::exists(python) ? entry.string() : python)
-              << " not found)\n";
-    return 0;
-  }
-  std::vector<std::string> args = {python, "-m", "railbench"};
-  args.insert(args.end(), plotArgs.begin(), plotArgs.end());
+  if (!fs::exists(python) || !fs::exists(plots / "railbench" / "__main__.py")) return -1;
+  std::vector<std::string> all = {python, "-m", "railbench"};
+  all.insert(all.end(), args.begin(), args.end());
   std::vector<std::string> envs = plotsEnvironment(plots);
   std::vector<char*> argv;
   std::vector<char*> envp;
-  for (auto& a : args) argv.push_back(a.data());
+  for (auto& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
   for (auto& e : envs) envp.push_back(e.data());
   envp.push_back(nullptr);
@@ -281,9 +275,21 @@ int runPlots(const StudyOptions& o, const std::vector<std::string>& plotArgs) {
     _exit(127);
   }
   int status = 0;
-  if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::cerr << "study: the figures failed: PYTHONPATH=" << plots.string() << " " << python
-              << " -m railbench";
+  if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status)) return 128;
+  return WEXITSTATUS(status);
+}
+
+int runPlots(const StudyOptions& o, const std::vector<std::string>& plotArgs) {
+  if (const char* e = std::getenv("RAILBENCH_STUDY_PLOTS"); e && std::string(e) == "0") return 0;
+  const int code = runRbplot(o, plotArgs);
+  if (code < 0) {
+    std::cerr << "study: note: no figures (python3 or " << o.root
+              << "/plots/railbench not found)\n";
+    return 0;
+  }
+  if (code != 0) {
+    std::cerr << "study: the figures failed: PYTHONPATH=" << o.root
+              << "/plots python3 -m railbench";
     for (const auto& a : plotArgs) std::cerr << " " << a;
     std::cerr << "\n";
     return 4;

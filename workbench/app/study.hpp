@@ -58,6 +58,11 @@ int runStudy(const StudyOptions& options);
 int runStudySpec(const scenario::StudySpec& st, const StudyOptions& options,
                  const std::vector<std::string>& plotArgs);
 
+// Runs `python3 -m railbench <args...>` (plots/rbplot; Debian's python3 as in ./wb run,
+// RAILBENCH_PYTHON names another interpreter) and returns its exit code: -1 when python3 or the
+// package is missing, 128 when it did not exit normally.
+int runRbplot(const StudyOptions& options, const std::vector<std::string>& args);
+
 // Figures and tables of a study folder: `python3 -m railbench <plotArgs...>` (plots/rbplot) with
 // Debian's python3 as in ./wb run (RAILBENCH_PYTHON names another interpreter). 0 when drawn or
 // switched off (RAILBENCH_STUDY_PLOTS=0) or when python3 / the package is missing (a note), 4 when
