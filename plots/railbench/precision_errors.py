@@ -19,7 +19,10 @@ from .study_data import on_grid
 # Display unit per dataset: (scale from SI, unit).
 _BODY_UNITS = {"y": (1e3, "mm"), "z": (1e3, "mm"), "s": (1e3, "mm"), "roll": (1e3, "mrad"),
                "pitch": (1e3, "mrad"), "yaw": (1e3, "mrad")}
-_WHEEL_TAGS = {"Q": ("normal_force", 1e-3, "kN"), "Fy": ("creep_force_y", 1e-3, "kN")}
+# Per-wheel quantities: the wheel/rail normal force, the lateral creep force, and the EN 14363
+# running-safety quantities of the contact output (track-lateral wheel force Y and Y/Q).
+_WHEEL_TAGS = {"Q": ("normal_force", 1e-3, "kN"), "Fy": ("creep_force_y", 1e-3, "kN"),
+               "Y": ("Y", 1e-3, "kN"), "YQ": ("y_over_q", 1.0, "-")}
 
 
 class QuantityError(ValueError):
@@ -60,7 +63,7 @@ def parse_quantities(text: str) -> List[Quantity]:
             sc, unit = _BODY_UNITS[ds]
             out.append(Quantity(tag, "body", ds, sc, unit, body))
         else:
-            raise QuantityError(f"--quantities: unknown '{tag}' (y, yaw, Q, Fy or "
+            raise QuantityError(f"--quantities: unknown '{tag}' (y, yaw, Q, Fy, Y, YQ or "
                                 f"BODY.y|z|roll|pitch|yaw)")
     if not out:
         raise QuantityError("--quantities: no entry")

@@ -103,5 +103,5 @@ def test_pareto_and_recommendation():
 def test_bad_quantity():
     with pytest.raises(QuantityError):
         parse_quantities("y,lateral")
-    assert [q.unit for q in parse_quantities("y,yaw,Q,Fy,car.roll")] == \
-        ["mm", "mrad", "kN", "kN", "mrad"]
+    assert [q.unit for q in parse_quantities("y,yaw,Q,Fy,Y,YQ,car.roll")] == \
+        ["mm", "mrad", "kN", "kN", "kN", "-", "mrad"]
