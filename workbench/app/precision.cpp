@@ -192,8 +192,8 @@ CLI::App* addPrecisionCommand(CLI::App& app, PrecisionOptions& o) {
   c->add_option("--tolerances", o.tolerances,
                 "tolerance ladder, rtol = atol (default 1e-3,1e-4,...,1e-8)");
   c->add_option("--quantities", o.quantities,
-                "error quantities: y, yaw (every wheelset; guided: every body), Q, Fy (every "
-                "wheel), BODY.y|z|roll|pitch|yaw (default y,yaw)");
+                "error quantities: y, yaw (every wheelset; guided: every body), Q, Fy, Y, YQ "
+                "(every wheel; Y/Q of EN 14363), BODY.y|z|roll|pitch|yaw (default y,yaw)");
   c->add_option("--levels", o.levels,
                 "accuracy levels of the recommendation, in the first quantity's display unit "
                 "(default 1,0.1,0.01 mm)");
