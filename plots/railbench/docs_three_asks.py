@@ -127,7 +127,7 @@ def effects_block(outdir: str) -> str:
                            sorted(shares, key=lambda x: -x[1])]), ""]
     body = []
     for r in rows:
-        if r.get("role") not in ("baseline", "minimal", ""):
+        if not r.get("case"):  # an effect the scene has but cannot switch off, or lacks
             body.append([r["effect"], r.get("role", ""), "", "", "", "", "", "",
                          (r.get("note") or "")[:100]])
             continue
