@@ -33,6 +33,7 @@
 #include "workbench/io/root_text.hpp"
 #include "workbench/scenario/study.hpp"
 #include "workbench/track/spec.hpp"
+#include "workbench/vehicle/stage_clock.hpp"
 
 namespace fs = std::filesystem;
 
@@ -519,9 +520,20 @@ std::size_t runJobs(Pool& pool, std::vector<Job>& all, const std::vector<std::si
   return pool.skipped;
 }
 
-const std::vector<std::string> kSummaryNumbers = {
-    "cpu_time_s",     "wall_time_s",    "rhs_evals",       "rhs_evals_jac", "steps",
-    "rejected_steps", "jacobian_evals", "nonlinear_iters", "t_reached",     "model_evaluations"};
+// The /stats numbers of every run in the summaries: the counts, then the share of the run's cost
+// per rhs stage (docs/run_stats.md; 0 for a stage the run does not have or when no evaluation was
+// timed), the integrator's and the observer's.
+std::vector<std::string> summaryNumbers() {
+  std::vector<std::string> k = {"cpu_time_s",        "wall_time_s",     "rhs_evals",
+                                "rhs_evals_jac",     "steps",           "rejected_steps",
+                                "jacobian_evals",    "nonlinear_iters", "t_reached",
+                                "model_evaluations", "stage_samples"};
+  for (const auto& e : vehicle::kStageNames) k.push_back("stage_share_" + std::string(e.name));
+  k.emplace_back("stage_share_integrator");
+  k.emplace_back("stage_share_observer");
+  return k;
+}
+const std::vector<std::string> kSummaryNumbers = summaryNumbers();
 
 // Per case: the CPU times of its ok repeats, and the status, reason and counts of its first
 // problem (or of its first run when every repeat is ok).
