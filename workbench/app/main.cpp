@@ -3,7 +3,8 @@
 // non-zero exit code.
 //   exit 0: ok; 1: bad input (scenario, options; nothing was run); 2: the run failed (partial
 //   results kept), or its result could not be written (an earlier result is unchanged);
-//   3: internal error (a bug).
+//   3: internal error (a bug); 4: only the figures of a study, precision, stress or effects
+//   failed (their results are complete); 5: a stress outcome differs from its --expect file.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
