@@ -7,7 +7,8 @@ cost; valgrind's callgrind counts executed instructions, which are the same from
 whatever else the machine does. Each case of the study (its base and overrides, from
 summary_cases.csv) is run again under callgrind for the first DURATION seconds, collecting only
 inside the integration (rb::integ::integrate: right-hand sides, integrator, output callbacks;
-not the set-up), and the instructions are divided by the rhs evaluations of that run.
+not the set-up), less the result-file flushes (their number follows the wall clock, so the
+machine's load), and the instructions are divided by the rhs evaluations of that run.
 
     plots/rbplot effects-instructions OUT/effects [--workbench BIN] [--root ROOT]
                                         [--duration 8] [--match REGEX] [--csv NAME] [--tag TAG]
@@ -38,6 +39,27 @@ def callgrind_total(path: str) -> int:
             if m:
                 return int(m.group(2))
     raise RuntimeError(f"{path}: no totals line")
+
+
+# The result file is flushed to disk every second of wall time while a run goes
+# (workbench/run/simulate.cpp): under callgrind the number of flushes follows the machine's load,
+# not the model, so their instructions are taken out of the count to keep it repeatable.
+FLUSH_FUNCTION = "rb::io::ResultFile::flush()"
+
+
+def flush_instructions(cg: str) -> int:
+    """Inclusive instructions of the result-file flushes inside the collected part of `cg`."""
+    try:
+        r = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", cg],
+                           stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    except OSError:
+        return 0
+    for line in r.stdout.splitlines():
+        if FLUSH_FUNCTION in line:
+            head = line.strip().split()[0].replace(",", "")
+            if head.isdigit():
+                return int(head)
+    return 0
 
 
 def method_of(row: dict) -> str:
@@ -92,7 +114,7 @@ def main(argv=None) -> int:
                 continue
             with h5py.File(out, "r") as h:
                 evals = int(h["stats"].attrs["rhs_evals"])
-            total = callgrind_total(cg)
+            total = callgrind_total(cg) - flush_instructions(cg)
             rows.append(dict(case=c["case"], label=c["label"], role=c["role"],
                              method=method_of(c), instructions=total, rhs_evals=evals,
                              instructions_per_eval=f"{total / evals:.1f}",

@@ -32,7 +32,7 @@ import h5py
 import numpy as np
 
 from .common import parser, read_csv
-from .effects import callgrind_total
+from .effects import callgrind_total, flush_instructions
 from .provenance import ROOT
 from .study_data import QUANTITY_TAGS, Case, StudyError, close_all, load_study
 from .study_precision import _errors
@@ -118,27 +118,6 @@ def _case_hash(path: str) -> str:
             return v.decode() if isinstance(v, bytes) else str(v)
     except OSError:
         return ""
-
-
-# The result file is flushed to disk every second of wall time while a run goes
-# (workbench/run/simulate.cpp): under callgrind the number of flushes follows the machine's load,
-# not the model, so their instructions are taken out of the count to keep it repeatable.
-FLUSH_FUNCTION = "rb::io::ResultFile::flush()"
-
-
-def flush_instructions(cg: str) -> int:
-    """Inclusive instructions of the result-file flushes inside the collected part of `cg`."""
-    try:
-        r = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", cg],
-                           stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
-    except OSError:
-        return 0
-    for line in r.stdout.splitlines():
-        if FLUSH_FUNCTION in line:
-            head = line.strip().split()[0].replace(",", "")
-            if head.isdigit():
-                return int(head)
-    return 0
 
 
 def callgrind_case(row: dict, outdir: str, a) -> Dict[str, str]:
