@@ -98,15 +98,11 @@ void writeSceneEffects(const fs::path& dir, const scenario::ScenarioSpec& spec) 
 }  // namespace
 
 CLI::App* addEffectsCommand(CLI::App& app, EffectsOptions& o) {
-  auto* c = app.add_subcommand(
-      "effects",
+  auto* c = addScenarioCommand(
+      app, "effects",
       "each optional effect of the scene switched off in turn: what it costs (instructions per "
-      "evaluation) and what it changes in the answer");
-  c->add_option("scenario", o.scenario, "scenario file (.lua)")->required();
-  c->add_option("--set", o.overrides, "override a scenario value: block.key=value")
-      ->allow_extra_args(false);
-  c->add_option("--out", o.out, "output folder (default out/<scenario>_effects)");
-  c->add_option("--jobs", o.jobs, "cases at once (default: cores; 1 for quiet CPU timings)");
+      "evaluation) and what it changes in the answer",
+      o);
   c->add_option("--repeats", o.repeats, "runs per case, CPU time per evaluation is their median")
       ->capture_default_str();
   c->add_option("--duration", o.duration,

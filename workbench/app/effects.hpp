@@ -7,26 +7,18 @@
 #include <string>
 #include <vector>
 
-namespace CLI {
-class App;
-}
+#include "workbench/app/scenario_command.hpp"
 
 namespace rb::app {
 
-struct EffectsOptions {
-  std::string scenario;                // the user's scenario (.lua)
-  std::vector<std::string> overrides;  // --set block.key=value, applied to every case
-  std::string out;                     // output folder (default out/<scenario stem>_effects)
-  std::string root;                    // project root
-  std::string program;                 // the workbench executable that runs the cases
-  int jobs = 0;                        // cases at once, 0 = number of cores
-  int repeats = 3;                     // runs per case: CPU time per evaluation is their median
-  double duration = 0.0;               // [s] simulated time of every case (0: the scene's)
-  double distance = 0.0;               // [m] travelled distance of every case (0: the scene's)
-  double cost_duration = 2.0;          // [s] simulated time of each callgrind run
-  bool no_callgrind = false;           // skip the instruction counts
-  bool quick = false;                  // tests: 0.2 s, one repeat, no callgrind
-  std::string quantities = "y,yaw";    // change in answer: y, yaw, Q, Fy (comma separated)
+struct EffectsOptions : ScenarioCommandOptions {
+  int repeats = 3;                   // runs per case: CPU time per evaluation is their median
+  double duration = 0.0;             // [s] simulated time of every case (0: the scene's)
+  double distance = 0.0;             // [m] travelled distance of every case (0: the scene's)
+  double cost_duration = 2.0;        // [s] simulated time of each callgrind run
+  bool no_callgrind = false;         // skip the instruction counts
+  bool quick = false;                // tests: 0.2 s, one repeat, no callgrind
+  std::string quantities = "y,yaw";  // change in answer: y, yaw, Q, Fy (comma separated)
 };
 
 // Declares the subcommand and its options on `app` (filled into `options` when parsed).

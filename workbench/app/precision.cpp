@@ -174,15 +174,11 @@ std::vector<std::string> plotArgs(const Plan& p, const PrecisionOptions& o, cons
 }  // namespace
 
 CLI::App* addPrecisionCommand(CLI::App& app, PrecisionOptions& o) {
-  auto* c = app.add_subcommand(
-      "precision",
+  auto* c = addScenarioCommand(
+      app, "precision",
       "what accuracy costs in time: a verified reference, contact methods x integrators x "
-      "steps / tolerances, errors, Pareto fronts and the cheapest setting per accuracy level");
-  c->add_option("scenario", o.scenario, "scenario file (.lua)")->required();
-  c->add_option("--set", o.overrides, "override a scenario value in every case: block.key=value")
-      ->allow_extra_args(false);
-  c->add_option("--out", o.out, "output folder (default out/<scenario>_precision)");
-  c->add_option("--jobs", o.jobs, "runs at once (default: cores)");
+      "steps / tolerances, errors, Pareto fronts and the cheapest setting per accuracy level",
+      o);
   c->add_option("--methods", o.methods,
                 "contact methods, e.g. kec,lut (default: the scenario's and the other one)");
   c->add_option("--integrators", o.integrators,

@@ -11,35 +11,27 @@
 #include <string>
 #include <vector>
 
-namespace CLI {
-class App;
-}
+#include "workbench/app/scenario_command.hpp"
 
 namespace rb::app {
 
-struct PrecisionOptions {
-  std::string scenario;                // the user's scenario (.lua)
-  std::vector<std::string> overrides;  // --set block.key=value, applied to every case
-  std::string out;                     // output folder (default out/<scenario stem>_precision)
-  std::string root;                    // project root
-  std::string program;                 // the workbench executable that runs the cases
-  int jobs = 0;                        // cases at once, 0 = number of cores
-  std::string methods;                 // contact methods "kec,lut" ("" = default)
-  std::string integrators;             // "rk4,abm,dopri5,bdf" ("" = default)
-  std::string quantities;              // error quantities "y,yaw" ("" = default)
-  std::string levels;                  // recommendation levels in the first quantity's unit
-  std::string steps;                   // fixed-step ladder [s] ("" = default)
-  std::string tolerances;              // tolerance ladder ("" = default)
-  std::string reference_methods;       // the two reference integrators ("bdf,ida")
-  double reference_tol = 1e-9;         // reference rtol (atol = rtol / 10)
-  double reference_limit = 0.0;        // verification limit, display units (0: levels / 10)
-  int repeats = 3;                     // runs per case (median CPU time)
-  double distance = 0.0;               // [m] shortens the run (0: the scenario's)
-  double duration = 0.0;               // [s] shortens the run (0: the scenario's)
-  double budget = 0.0;                 // [s] wall-time target (0: none)
-  bool quick = false;                  // tiny matrix (tests)
-  bool refine = false;                 // also the matrix on the refined tables
-  bool callgrind = false;              // instructions of the recommended settings
+struct PrecisionOptions : ScenarioCommandOptions {
+  std::string methods;            // contact methods "kec,lut" ("" = default)
+  std::string integrators;        // "rk4,abm,dopri5,bdf" ("" = default)
+  std::string quantities;         // error quantities "y,yaw" ("" = default)
+  std::string levels;             // recommendation levels in the first quantity's unit
+  std::string steps;              // fixed-step ladder [s] ("" = default)
+  std::string tolerances;         // tolerance ladder ("" = default)
+  std::string reference_methods;  // the two reference integrators ("bdf,ida")
+  double reference_tol = 1e-9;    // reference rtol (atol = rtol / 10)
+  double reference_limit = 0.0;   // verification limit, display units (0: levels / 10)
+  int repeats = 3;                // runs per case (median CPU time)
+  double distance = 0.0;          // [m] shortens the run (0: the scenario's)
+  double duration = 0.0;          // [s] shortens the run (0: the scenario's)
+  double budget = 0.0;            // [s] wall-time target (0: none)
+  bool quick = false;             // tiny matrix (tests)
+  bool refine = false;            // also the matrix on the refined tables
+  bool callgrind = false;         // instructions of the recommended settings
 };
 
 // Declares the subcommand and its options on `app` (filled into `options` when parsed).

@@ -18,13 +18,9 @@ namespace rb::app {
 namespace fs = std::filesystem;
 
 CLI::App* addStressCommand(CLI::App& app, StressOptions& o) {
-  auto* c = app.add_subcommand(
-      "stress", "hardened variants of a scenario against their own reference: the stability map");
-  c->add_option("scenario", o.scenario, "scenario file (.lua)")->required();
-  c->add_option("--set", o.overrides, "override a scenario value: block.key=value")
-      ->allow_extra_args(false);
-  c->add_option("--out", o.out, "output folder (default out/<scenario>_stress)");
-  c->add_option("--jobs", o.jobs, "cases at once (default: cores)");
+  auto* c = addScenarioCommand(
+      app, "stress",
+      "hardened variants of a scenario against their own reference: the stability map", o);
   c->add_option("--axes", o.axes,
                 "axes to harden along (default all that apply): nominal, flange_stiffness, "
                 "transition, speed, irregularity, friction, curve_radius")

@@ -8,19 +8,11 @@
 #include <string>
 #include <vector>
 
-namespace CLI {
-class App;
-}
+#include "workbench/app/scenario_command.hpp"
 
 namespace rb::app {
 
-struct StressOptions {
-  std::string scenario;                  // the user's scenario (.lua)
-  std::vector<std::string> overrides;    // --set block.key=value, applied to every case
-  std::string out;                       // output folder (default out/<scenario stem>_stress)
-  std::string root;                      // project root
-  std::string program;                   // the workbench executable that runs the cases
-  int jobs = 0;                          // cases at once, 0 = number of cores
+struct StressOptions : ScenarioCommandOptions {
   std::vector<std::string> axes;         // --axes: empty = every axis that applies
   std::vector<std::string> values;       // --values AXIS=v1,v2,...
   std::vector<std::string> integrators;  // --integrators METHOD:VALUE[:paper],...

@@ -1,0 +1,26 @@
+#pragma once
+// What the commands that run variants of one scenario (precision, stress, effects) have in common:
+// the scenario, the overrides applied to every variant, the output folder and the runs at once.
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace rb::app {
+
+struct ScenarioCommandOptions {
+  std::string scenario;                // the user's scenario (.lua)
+  std::vector<std::string> overrides;  // --set block.key=value, applied to every case
+  std::string out;                     // output folder (default out/<scenario stem>_<command>)
+  std::string root;                    // project root
+  std::string program;                 // the workbench executable that runs the cases
+  int jobs = 0;                        // cases at once, 0 = number of cores
+};
+
+// Declares the subcommand `name` on `app` with the scenario and the common options.
+CLI::App* addScenarioCommand(CLI::App& app, const std::string& name, const std::string& description,
+                             ScenarioCommandOptions& options);
+
+}  // namespace rb::app
