@@ -127,10 +127,7 @@ int runEffects(const EffectsOptions& options) {
     o.no_callgrind = true;
   }
   checkOptions(o);
-  scenario::LoadOptions lo;
-  lo.root = o.root;
-  lo.overrides = o.overrides;
-  const scenario::ScenarioSpec scene = scenario::loadScenario(o.scenario, lo);
+  const scenario::ScenarioSpec scene = loadCommandScenario(o, o.overrides);
   if (!scene.has_vehicle)
     throw InputError({o.scenario, 0},
                      "the scenario has no vehicle{} block: nothing is simulated, "
@@ -138,15 +135,9 @@ int runEffects(const EffectsOptions& options) {
   std::vector<std::string> common = o.overrides;
   if (auto len = lengthOverride(scene, o.duration, o.distance); !len.empty()) common.push_back(len);
   // The cases' own load (with the length) is checked here, so bad input runs nothing.
-  lo.overrides = common;
-  const scenario::ScenarioSpec spec = scenario::loadScenario(o.scenario, lo);
+  const scenario::ScenarioSpec spec = loadCommandScenario(o, common);
 
-  StudyOptions so;
-  so.file = o.scenario;
-  so.root = o.root;
-  so.program = o.program;
-  so.jobs = o.jobs;
-  so.out = o.out.empty() ? "out/" + fs::path(o.scenario).stem().string() + "_effects" : o.out;
+  const StudyOptions so = commandStudyOptions(o, "effects");
   std::error_code ec;
   fs::create_directories(so.out, ec);
   if (ec) throw InputError(kCli, "--out: cannot create " + so.out + ": " + ec.message());

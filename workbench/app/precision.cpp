@@ -34,12 +34,8 @@ int runStage(const Plan& p, const PrecisionOptions& o, const fs::path& dir,
   st.cases = cases;
   st.repeats = repeats;
   st.loc = {o.scenario, 0};
-  StudyOptions so;
-  so.file = o.scenario;
+  StudyOptions so = commandStudyOptions(o, "precision");
   so.out = dir.string();
-  so.root = o.root;
-  so.program = o.program;
-  so.jobs = o.jobs;
   return runStudySpec(st, so, {});
 }
 
@@ -221,9 +217,7 @@ int runPrecision(const PrecisionOptions& given) {
   PrecisionOptions o = given;
   if (o.quick && o.repeats == 3) o.repeats = 1;
   Plan p = precision::makePlan(o);
-  const fs::path out = o.out.empty()
-                           ? fs::path("out") / (fs::path(o.scenario).stem().string() + "_precision")
-                           : fs::path(o.out);
+  const fs::path out = commandStudyOptions(o, "precision").out;
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec)

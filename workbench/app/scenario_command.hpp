@@ -4,6 +4,9 @@
 #include <string>
 #include <vector>
 
+#include "workbench/app/study.hpp"
+#include "workbench/scenario/scenario.hpp"
+
 namespace CLI {
 class App;
 }
@@ -22,5 +25,14 @@ struct ScenarioCommandOptions {
 // Declares the subcommand `name` on `app` with the scenario and the common options.
 CLI::App* addScenarioCommand(CLI::App& app, const std::string& name, const std::string& description,
                              ScenarioCommandOptions& options);
+
+// The user's scenario loaded with `overrides` (instead of the options' own): what a case of the
+// command runs. Throws InputError (file:line) when the scenario refuses them.
+scenario::ScenarioSpec loadCommandScenario(const ScenarioCommandOptions& options,
+                                           const std::vector<std::string>& overrides);
+
+// The study options of the command's runs: its program, root and jobs, `file` the scenario, `out`
+// the output folder (given, or out/<scenario stem>_<command>).
+StudyOptions commandStudyOptions(const ScenarioCommandOptions& options, const std::string& command);
 
 }  // namespace rb::app

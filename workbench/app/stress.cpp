@@ -55,13 +55,6 @@ CLI::App* addStressCommand(CLI::App& app, StressOptions& o) {
 
 namespace {
 
-scenario::ScenarioSpec load(const StressOptions& o, const std::vector<std::string>& overrides) {
-  scenario::LoadOptions lo;
-  lo.root = o.root;
-  lo.overrides = overrides;
-  return scenario::loadScenario(o.scenario, lo);
-}
-
 std::map<std::string, std::vector<double>> parseValues(const std::vector<std::string>& given) {
   std::map<std::string, std::vector<double>> out;
   for (const auto& g : given) {
@@ -140,7 +133,7 @@ void validate(const StressOptions& o, const std::vector<std::string>& common,
     std::vector<std::string> ov = common;
     ov.insert(ov.end(), h.overrides.begin(), h.overrides.end());
     ov.insert(ov.end(), reference.overrides.begin(), reference.overrides.end());
-    load(o, ov);
+    loadCommandScenario(o, ov);
   }
 }
 
@@ -165,13 +158,13 @@ int classify(const StressOptions& o, const std::string& dir) {
 
 int runStress(const StressOptions& o) {
   std::vector<std::string> common = o.overrides;
-  scenario::ScenarioSpec spec = load(o, common);
+  scenario::ScenarioSpec spec = loadCommandScenario(o, common);
   if (!spec.has_vehicle)
     throw InputError({o.scenario, 0}, "stress needs a vehicle scenario (no vehicle block)");
   if (o.quick) {
     const auto shorter = stress::shortenRun(spec, o.quickSeconds);
     common.insert(common.end(), shorter.begin(), shorter.end());
-    if (!shorter.empty()) spec = load(o, common);
+    if (!shorter.empty()) spec = loadCommandScenario(o, common);
   }
   stress::PlanRequest req{o.axes, parseValues(o.values), o.quick};
   const stress::Plan plan = stress::planAxes(spec, req);
@@ -191,15 +184,9 @@ int runStress(const StressOptions& o) {
     for (const auto& s : runs) addCase(e, h, s, common, "");
   }
 
-  StudyOptions so;
+  StudyOptions so = commandStudyOptions(o, "stress");
   so.file = e.study.file;
-  so.root = o.root;
-  so.program = o.program;
-  so.jobs = o.jobs;
   so.run_timeout_s = o.run_timeout;
-  so.out = o.out.empty()
-               ? (fs::path("out") / (fs::path(o.scenario).stem().string() + "_stress")).string()
-               : o.out;
   std::error_code ec;
   fs::create_directories(so.out, ec);
   {
