@@ -11,6 +11,9 @@
 --                            lateral) become plain dampers: vertical Kz in parallel with Dz (no
 --                            series stiffness), lateral Dsy alone (no series stiffness Ksy); 16
 --                            fewer states (the damper forces)
+--   primary_longitudinal_stiffness [N/m] = 31391e3 ([T4] Kpx): the primary longitudinal
+--                            springs, which give the wheelset its yaw stiffness to the bogie
+--                            (2 Kpx b^2 with b = 1 m); stability studies vary it
 -- (scenarios/studies/effects.lua measures what each of these costs.)
 -- Sources: [T2] paper Table 2 (masses, inertias); [T4] paper Table 4 (suspension);
 -- [MB] Manchester benchmark vehicle 1 (Iwnicki, Vehicle System Dynamics 30, 1998), geometry as
@@ -27,6 +30,7 @@ return function(opts)
   local with_bumpstops = opts.bumpstops ~= false
   local with_series = opts.series_dampers ~= false
   local with_anti_roll = opts.anti_roll_bar ~= false
+  local kpx = opts.primary_longitudinal_stiffness or 31391e3  -- [T4] Kpx [N/m]
   -- A series damper, or with series_dampers = false the plain damper (and parallel spring).
   local function damper(e)
     if with_series then return series_damper(e) end
@@ -82,7 +86,7 @@ return function(opts)
         -- Primary longitudinal: Kpx 31391 kN/m, Dpx 15 kN s/m in parallel [T4], 4/bogie.
         add(spring_damper { name = "prim_x_" .. ws .. "_" .. tag, from = bogie, to = ws,
                             at_from = at_bogie, at_to = at_ws, direction = "x",
-                            stiffness = 31391e3, damping = 15e3 })
+                            stiffness = kpx, damping = 15e3 })
         -- Primary lateral: Kpy 3884 kN/m, Dpy 2 kN s/m in parallel [T4], 4/bogie.
         add(spring_damper { name = "prim_y_" .. ws .. "_" .. tag, from = bogie, to = ws,
                             at_from = at_bogie, at_to = at_ws, direction = "y",

@@ -1,6 +1,6 @@
 // The `workbench` command line: run, check, assess, tables, study, precision, stress, effects,
-// help scenario, --version. Never prompts; every problem is reported as file:line: message with a
-// non-zero exit code.
+// modes, critical-speed, help scenario, --version. Never prompts; every problem is reported as
+// file:line: message with a non-zero exit code.
 //   exit 0: ok; 1: bad input (scenario, options; nothing was run); 2: the run failed (partial
 //   results kept), or its result could not be written (an earlier result is unchanged);
 //   3: internal error (a bug); 4: only the figures of a study, precision, stress or effects
@@ -14,7 +14,9 @@
 
 #include "railbench/version.hpp"
 #include "workbench/app/assess.hpp"
+#include "workbench/app/critical_speed.hpp"
 #include "workbench/app/effects.hpp"
+#include "workbench/app/modes.hpp"
 #include "workbench/app/precision.hpp"
 #include "workbench/app/run.hpp"
 #include "workbench/app/stress.hpp"
@@ -86,6 +88,12 @@ int workbench(int argc, char** argv) {
   rb::app::EffectsOptions eo;
   auto* effects = rb::app::addEffectsCommand(app, eo);
 
+  // Stability (docs/stability.md).
+  rb::app::ModesOptions mo;
+  auto* modes = rb::app::addModesCommand(app, mo);
+  rb::app::CriticalSpeedOptions cso;
+  auto* critical = rb::app::addCriticalSpeedCommand(app, cso);
+
   rb::app::AssessOptions ao;
   auto* assess = app.add_subcommand(
       "assess", "recompute /assessment of a result file from its datasets and replace it");
@@ -141,6 +149,16 @@ int workbench(int argc, char** argv) {
       eo.root = root;
       eo.program = program;
       return rb::app::runEffects(eo);
+    }
+    if (*modes) {
+      mo.root = root;
+      mo.program = program;
+      return rb::app::runModes(mo);
+    }
+    if (*critical) {
+      cso.root = root;
+      cso.program = program;
+      return rb::app::runCriticalSpeed(cso);
     }
     ro.root = root;
     return rb::app::runScenario(ro);

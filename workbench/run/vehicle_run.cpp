@@ -19,6 +19,7 @@
 #include "workbench/run/simulate.hpp"
 #include "workbench/track/samples.hpp"
 #include "workbench/vehicle/guided.hpp"
+#include "workbench/vehicle/initial_conditions.hpp"
 #include "workbench/vehicle/vehicle_ode.hpp"
 
 namespace rb::run {
@@ -576,6 +577,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   r.system = ode.get();
   r.solver = m.solver;
   r.y0 = ode->initialState(0.0);
+  vehicle::applyInitialConditions(*ode, m.spec.vehicle.initial, r.y0);
   r.t_end = m.t_end;
   r.output_every = m.spec.run.output_every;
   r.progress = o.progress;

@@ -60,6 +60,20 @@ struct ElementSpec {
   SourceLoc loc;
 };
 
+// An initial offset of one coordinate of one body from the state the run would start in (static
+// equilibrium, wheelsets centred), in the body's track frame, and of its rate: vehicle.initial in
+// a scenario (e.g. ws1 = { y = 3e-3 } for a lateral kick of the leading wheelset). A coordinate
+// must be a state of the model: y, z, roll, pitch, yaw of car bodies and bogies; y, yaw (and the
+// spin pitch when it is free) of wheelsets on contact, whose z and roll the contact constraints
+// give; nothing of frames and guided wheelsets.
+struct InitialCondition {
+  std::string body;  // body name
+  int coord = 1;     // vehicle::Coord (kY .. kYaw)
+  bool rate = false;
+  double value = 0.0;  // [m], [rad] or [m/s], [rad/s]
+  SourceLoc loc;
+};
+
 struct VehicleSpec {
   std::string name;
   std::vector<BodySpec> bodies;
@@ -68,6 +82,7 @@ struct VehicleSpec {
   double acceleration = 0.0;   // [m/s^2] constant longitudinal acceleration a: V(t) = V0 + a t
   double wheel_radius = 0.46;  // [m] nominal rolling radius r0 (wheelsets)
   double start = 0.0;          // [m] arc length of the vehicle reference point at t = 0
+  std::vector<InitialCondition> initial;  // added to the initial state (vehicle.initial)
   SourceLoc loc;
 };
 

@@ -1,0 +1,25 @@
+#pragma once
+// `workbench modes SCENARIO.lua`: linearised stability of the vehicle (docs/stability.md): the
+// steady state on the scenario's track at each speed, the Jacobian of the full model there, its
+// eigenvalues and eigenvectors, the modes labelled from their dominant coordinates, and the
+// linear critical speed where the least damped hunting mode crosses zero damping.
+#include <string>
+
+#include "workbench/app/scenario_command.hpp"
+
+namespace rb::app {
+
+struct ModesOptions : ScenarioCommandOptions {
+  std::string speeds;   // "a:b:n" [m/s], n speeds from a to b; "" = the scenario's speed
+  std::string contact;  // "kec" / "lut": the contact method ("" = the scenario's; kec for a
+                        // vehicle file)
+  bool no_plots = false;
+};
+
+CLI::App* addModesCommand(CLI::App& app, ModesOptions& options);
+
+// Returns the process exit code (0 ok, 1 bad input, 2 the analysis failed, 4 figures failed).
+// Throws InputError for a bad scenario or option.
+int runModes(const ModesOptions& options);
+
+}  // namespace rb::app
