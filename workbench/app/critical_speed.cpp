@@ -62,6 +62,16 @@ std::string runName(const std::string& kind, std::size_t index, double v) {
   return s.str();
 }
 
+// One line on a constant-speed run: the numbers behind its verdict under the criterion.
+std::string describe(const KickedRun& r, bool en) {
+  const bool unstable = critical::runUnstable(r, en);
+  std::ostringstream m;
+  m << (unstable ? "unstable" : "stable") << " (";
+  if (en) m << "EN 14363 sliding rms / limit " << r.en_max_ratio << "; ";
+  m << r.verdict.why << ")";
+  return m.str();
+}
+
 // A failed run as a finding: what stopped it, with time and speed.
 void noteFailure(Search& s, const KickedRun& r) {
   if (r.ok) return;
@@ -86,7 +96,7 @@ bool findStart(const CriticalSpeedOptions& o, const StabilityScene& scene, Searc
   double v = o.from > 0.0 ? o.from : defaultStartSpeed(scene);
   for (;;) {
     const KickedRun& r = constantRun(s, "probe", v, o.duration);
-    std::cout << "probe at " << mps(v) << ": " << r.verdict.why << "\n";
+    std::cout << "probe at " << mps(v) << ": " << describe(r, en) << "\n";
     if (critical::runUnstable(r, en)) {
       s.start = v;
       return true;
@@ -105,16 +115,21 @@ void rampDown(const CriticalSpeedOptions& o, Search& s) {
   noteFailure(s, r);
   const critical::RampVerdict v = o.criterion == "en14363"
                                       ? critical::lastExceedance(r.en_speed, r.en_ratio)
-                                      : critical::rampCriticalSpeed(r.windows, o.threshold);
+                                      : critical::rampCriticalSpeed(r.windows, s.setup.threshold);
   if (v.found) {
     s.ramp_critical = v.critical_speed;
   } else if (v.hunting_at_end && r.ok) {
     s.findings.push_back("ramp: the limit cycle lives down to the end speed " + mps(s.end) +
                          ": the critical speed is lower (--to)");
   } else if (r.ok) {
-    s.findings.push_back("ramp: no limit cycle above the threshold during the ramp");
+    s.findings.emplace_back(
+        o.criterion == "en14363"
+            ? "ramp: the EN 14363 sliding rms stayed below its limit during the "
+              "ramp (the start speed is too close to the critical speed: "
+              "start higher)"
+            : "ramp: no limit cycle above the threshold during the ramp");
   } else {
-    s.findings.push_back("ramp: the run stopped before the limit cycle died");
+    s.findings.emplace_back("ramp: the run stopped before the limit cycle died");
   }
   s.runs.push_back(std::move(r));
 }
@@ -124,7 +139,7 @@ void bisect(const CriticalSpeedOptions& o, Search& s) {
   double lo = s.end;
   double hi = s.start;
   const KickedRun& low = constantRun(s, "bracket", lo, o.duration);
-  std::cout << "bracket low end " << mps(lo) << ": " << low.verdict.why << "\n";
+  std::cout << "bracket low end " << mps(lo) << ": " << describe(low, en) << "\n";
   if (critical::runUnstable(low, en)) {
     s.findings.push_back("bisection: hunting at the low end " + mps(lo) +
                          " of the bracket: the critical speed is lower (--to)");
@@ -134,8 +149,7 @@ void bisect(const CriticalSpeedOptions& o, Search& s) {
     const double mid = 0.5 * (lo + hi);
     const KickedRun& r = constantRun(s, "bisection", mid, o.duration);
     const bool unstable = critical::runUnstable(r, en);
-    std::cout << "bisection " << mps(mid) << ": " << (unstable ? "unstable" : "stable") << " ("
-              << r.verdict.why << ")\n";
+    std::cout << "bisection " << mps(mid) << ": " << describe(r, en) << "\n";
     (unstable ? hi : lo) = mid;
   }
   s.bracket_low = lo;
@@ -210,7 +224,7 @@ io::CriticalSpeedResult resultOf(const CriticalSpeedOptions& o, const StabilityS
   number("duration", o.duration);
   number("window", o.window);
   number("transient", o.transient);
-  number("threshold", o.threshold);
+  number("threshold", s.setup.threshold);
   number("decay", o.decay);
   number("tolerance", o.tolerance);
   for (std::size_t k = 0; k < s.runs.size(); ++k) {
@@ -257,7 +271,7 @@ void printSummary(const CriticalSpeedOptions& o, const Search& s) {
               << ", CPU " << r.cpu_s << " s, " << r.rhs_evals << " rhs evaluations\n";
   }
   std::cout << "critical speed (" << o.criterion << " criterion, kick " << o.kick * 1e3
-            << " mm):\n";
+            << " mm, threshold " << s.setup.threshold * 1e3 << " mm):\n";
   if (std::isfinite(s.ramp_critical))
     std::cout << "  ramp-down: " << mps(s.ramp_critical) << " (deceleration " << o.deceleration
               << " m/s^2 from " << mps(s.start) << ")\n";
@@ -316,11 +330,17 @@ CLI::App* addCriticalSpeedCommand(CLI::App& app, CriticalSpeedOptions& o) {
   c->add_option("--duration", o.duration, "duration of a constant-speed run [s] (10)");
   c->add_option("--window", o.window, "amplitude window [s] (1)");
   c->add_option("--transient", o.transient, "time after the kick left out [s] (1)");
-  c->add_option("--threshold", o.threshold, "limit-cycle amplitude threshold [m] (0.001)");
+  c->add_option("--threshold", o.threshold,
+                "limit-cycle amplitude threshold [m] (1e-4; 1e-3 with irregularities)");
   c->add_option("--decay", o.decay, "decay factor last/middle window of a stable run (0.8)");
   c->add_option("--tolerance", o.tolerance, "bracket width of the bisection [m/s] (0.5)");
   c->add_flag("--irregular", o.irregular, "keep the scenario's track irregularities");
   return c;
+}
+
+double thresholdOf(const CriticalSpeedOptions& o, bool irregular_track) {
+  if (o.threshold) return *o.threshold;
+  return irregular_track ? 1e-3 : 1e-4;
 }
 
 double defaultStartSpeed(const StabilityScene& scene) {
@@ -336,7 +356,7 @@ void checkCriticalSpeedOptions(const CriticalSpeedOptions& o) {
   checkPositive("--max-speed", o.max_speed);
   checkPositive("--deceleration", o.deceleration);
   checkPositive("--window", o.window);
-  checkPositive("--threshold", o.threshold);
+  if (o.threshold) checkPositive("--threshold", *o.threshold);
   checkPositive("--tolerance", o.tolerance);
   if (!(std::isfinite(o.kick) && o.kick != 0.0 && std::abs(o.kick) <= 0.02))
     refuse("--kick",
@@ -379,7 +399,7 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
   s.setup.en14363 = o.criterion == "en14363";
   s.setup.window = o.window;
   s.setup.transient = o.transient;
-  s.setup.threshold = o.threshold;
+  s.setup.threshold = thresholdOf(o, o.irregular);
   s.setup.decay = o.decay;
   try {
     search(o, scene, s);
@@ -392,9 +412,10 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
   writeCsv((fs::path(so.out) / "critical_speed.csv").string(), s, s.setup.en14363);
   printSummary(o, s);
   std::cout << "wrote " << h5 << "\n";
-  if (!complete(o, s)) return 2;
-  if (o.no_plots) return 0;
-  return runPlots(so, {"critical-speed", so.out});
+  // The figure also shows what an incomplete search found; it never decides the exit code
+  // beyond 4 (only the figure failed).
+  const int plots = o.no_plots ? 0 : runPlots(so, {"critical-speed", so.out});
+  return complete(o, s) ? plots : 2;
 }
 
 }  // namespace rb::app

@@ -12,6 +12,7 @@
 // Output folder: critical_speed.h5 (workbench/io/critical_speed_file.hpp), critical_speed.csv
 // (one row per window of every run), runs/*.h5 (each kicked run, an ordinary result file),
 // scene.lua for a vehicle file, critical_speed.png (plots/railbench/critical_speed.py).
+#include <optional>
 #include <string>
 
 #include "workbench/app/scenario_command.hpp"
@@ -34,10 +35,11 @@ struct CriticalSpeedOptions : ScenarioCommandOptions {
   double duration = 10.0;     // [s] of a constant-speed run (probe, bisection)
   double window = 1.0;        // [s] amplitude window
   double transient = 1.0;     // [s] after the kick, left out of the windows
-  double threshold = 1e-3;    // [m] limit-cycle amplitude below which the motion is stable
-  double decay = 0.8;         // [-] last / middle window amplitude below which it decays
-  double tolerance = 0.5;     // [m/s] bracket width at which the bisection stops
-  bool irregular = false;     // keep the scenario's irregularities
+  // [m] limit-cycle amplitude below which the motion is stable; unset: thresholdOf()
+  std::optional<double> threshold;
+  double decay = 0.8;      // [-] last / middle window amplitude below which it decays
+  double tolerance = 0.5;  // [m/s] bracket width at which the bisection stops
+  bool irregular = false;  // keep the scenario's irregularities
 };
 
 CLI::App* addCriticalSpeedCommand(CLI::App& app, CriticalSpeedOptions& options);
@@ -45,6 +47,13 @@ CLI::App* addCriticalSpeedCommand(CLI::App& app, CriticalSpeedOptions& options);
 // The speed the search starts at when --from is not given: the scene's vehicle speed. This is
 // the hook for a better estimate (the linear critical speed of `workbench modes` times a margin).
 double defaultStartSpeed(const StabilityScene& scene);
+
+// The amplitude threshold: --threshold, else 0.1 mm on a track without irregularities (no forced
+// response: any motion that stays above the numerical noise, orders of magnitude below, after the
+// kick is self-sustained, so the ramp finds where the last limit cycle dies; the small cycles of
+// the S1002/60E1 tread, 0.1..1 mm, count), else 1 mm (above the forced response to the hard
+// suite's 0.1-scaled ORE B176 irregularities, at most 0.7 mm at 60 m/s, docs/hard_cases.md).
+double thresholdOf(const CriticalSpeedOptions& options, bool irregular_track);
 
 // Refuses an inconsistent option (InputError naming it) before anything runs.
 void checkCriticalSpeedOptions(const CriticalSpeedOptions& options);
