@@ -1,11 +1,312 @@
 #include "workbench/app/critical_speed.hpp"
 
 #include <CLI/CLI.hpp>
-#include <stdexcept>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
 
+#include "workbench/app/critical_speed_runs.hpp"
 #include "workbench/app/stability_scene.hpp"
+#include "workbench/core/error.hpp"
+#include "workbench/core/strings.hpp"
+#include "workbench/io/critical_speed_file.hpp"
+#include "workbench/io/result_file.hpp"
+
+namespace fs = std::filesystem;
 
 namespace rb::app {
+
+namespace {
+
+using critical::KickedRun;
+
+// Probes above the start speed when --from is not given: x 1.2 per probe reaches 2x the start
+// in 4 probes, fine enough that the first hunting probe is within 20 % of the onset.
+constexpr double kProbeFactor = 1.2;
+
+void refuse(const std::string& option, const std::string& message) {
+  throw InputError(SourceLoc{option, 0}, option + " " + message);
+}
+
+void checkPositive(const std::string& option, double v) {
+  if (!(std::isfinite(v) && v > 0.0))
+    refuse(option, "must be a finite number > 0, got " + formatNumber(v));
+}
+
+// The speeds and the findings of one search.
+struct Search {
+  critical::RunSetup setup;
+  std::vector<KickedRun> runs;
+  std::vector<std::string> findings;  // what could not be answered, with time and speed
+  double start = 0.0;                 // [m/s] the start speed showing hunting (0: none)
+  double end = 0.0;                   // [m/s]
+  double ramp_critical = std::nan("");
+  double bisection_critical = std::nan("");
+  double bracket_low = std::nan("");
+  double bracket_high = std::nan("");
+};
+
+std::string mps(double v) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(2) << v << " m/s";
+  return s.str();
+}
+
+std::string runName(const std::string& kind, std::size_t index, double v) {
+  std::ostringstream s;
+  s << kind << "_" << std::setw(2) << std::setfill('0') << index << "_V" << std::fixed
+    << std::setprecision(3) << v;
+  return s.str();
+}
+
+// One line on a constant-speed run: the numbers behind its verdict under the criterion.
+std::string describe(const KickedRun& r, bool en) {
+  const bool unstable = critical::runUnstable(r, en);
+  std::ostringstream m;
+  m << (unstable ? "unstable" : "stable") << " (";
+  if (en) m << "EN 14363 sliding rms / limit " << r.en_max_ratio << "; ";
+  m << r.verdict.why << ")";
+  return m.str();
+}
+
+// A failed run as a finding: what stopped it, with time and speed.
+void noteFailure(Search& s, const KickedRun& r) {
+  if (r.ok) return;
+  std::ostringstream m;
+  m << r.kind << " run from " << mps(r.v0) << " failed at t = " << r.t_reached
+    << " s, V = " << mps(r.v_reached) << ": " << r.message;
+  s.findings.push_back(m.str());
+}
+
+const KickedRun& constantRun(Search& s, const std::string& kind, double v, double duration) {
+  KickedRun r =
+      critical::runKicked(s.setup, kind, runName(kind, s.runs.size(), v), v, 0.0, duration);
+  noteFailure(s, r);
+  s.runs.push_back(std::move(r));
+  return s.runs.back();
+}
+
+// The start speed with hunting: the probe at the start speed, then (without --from) higher
+// speeds. Returns false when none hunts.
+bool findStart(const CriticalSpeedOptions& o, const StabilityScene& scene, Search& s) {
+  const bool en = o.criterion == "en14363";
+  double v = o.from > 0.0 ? o.from : defaultStartSpeed(scene);
+  for (;;) {
+    const KickedRun& r = constantRun(s, "probe", v, o.duration);
+    std::cout << "probe at " << mps(v) << ": " << describe(r, en) << "\n";
+    if (critical::runUnstable(r, en)) {
+      s.start = v;
+      return true;
+    }
+    if (o.from > 0.0 || v * kProbeFactor > o.max_speed) break;
+    v *= kProbeFactor;
+  }
+  s.findings.push_back("no hunting at V0 = " + mps(v) + ": start higher (--from" +
+                       (o.from > 0.0 ? "" : ", --max-speed") + ")");
+  return false;
+}
+
+void rampDown(const CriticalSpeedOptions& o, Search& s) {
+  const double duration = (s.start - s.end) / o.deceleration;
+  KickedRun r = critical::runKicked(s.setup, "ramp", "ramp", s.start, -o.deceleration, duration);
+  noteFailure(s, r);
+  const critical::RampVerdict v = o.criterion == "en14363"
+                                      ? critical::lastExceedance(r.en_speed, r.en_ratio)
+                                      : critical::rampCriticalSpeed(r.windows, s.setup.threshold);
+  if (v.found) {
+    s.ramp_critical = v.critical_speed;
+  } else if (v.hunting_at_end && r.ok) {
+    s.findings.push_back("ramp: the limit cycle lives down to the end speed " + mps(s.end) +
+                         ": the critical speed is lower (--to)");
+  } else if (r.ok) {
+    s.findings.emplace_back(
+        o.criterion == "en14363"
+            ? "ramp: the EN 14363 sliding rms stayed below its limit during the "
+              "ramp (the start speed is too close to the critical speed: "
+              "start higher)"
+            : "ramp: no limit cycle above the threshold during the ramp");
+  } else {
+    s.findings.emplace_back("ramp: the run stopped before the limit cycle died");
+  }
+  s.runs.push_back(std::move(r));
+}
+
+void bisect(const CriticalSpeedOptions& o, Search& s) {
+  const bool en = o.criterion == "en14363";
+  double lo = s.end;
+  double hi = s.start;
+  const KickedRun& low = constantRun(s, "bracket", lo, o.duration);
+  std::cout << "bracket low end " << mps(lo) << ": " << describe(low, en) << "\n";
+  if (critical::runUnstable(low, en)) {
+    s.findings.push_back("bisection: hunting at the low end " + mps(lo) +
+                         " of the bracket: the critical speed is lower (--to)");
+    return;
+  }
+  while (hi - lo > o.tolerance) {
+    const double mid = 0.5 * (lo + hi);
+    const KickedRun& r = constantRun(s, "bisection", mid, o.duration);
+    const bool unstable = critical::runUnstable(r, en);
+    std::cout << "bisection " << mps(mid) << ": " << describe(r, en) << "\n";
+    (unstable ? hi : lo) = mid;
+  }
+  s.bracket_low = lo;
+  s.bracket_high = hi;
+  s.bisection_critical = 0.5 * (lo + hi);
+}
+
+io::CriticalSpeedRun record(const KickedRun& r, const std::string& name, bool en) {
+  io::CriticalSpeedRun o;
+  o.name = name;
+  o.kind = r.kind;
+  o.file = r.file;
+  o.message = r.message;
+  o.v0 = r.v0;
+  o.acceleration = r.acceleration;
+  o.duration = r.duration;
+  o.t_reached = r.t_reached;
+  o.v_reached = r.v_reached;
+  o.cpu_s = r.cpu_s;
+  o.rhs_evals = r.rhs_evals;
+  o.steps = r.steps;
+  o.ok = r.ok;
+  o.unstable = critical::runUnstable(r, en);
+  o.a_first = r.verdict.a_first;
+  o.a_mid = r.verdict.a_mid;
+  o.a_last = r.verdict.a_last;
+  for (const auto& w : r.windows) {
+    o.window_t0.push_back(w.t0);
+    o.window_t1.push_back(w.t1);
+    o.window_speed.push_back(w.speed);
+    o.window_amplitude.push_back(w.amplitude);
+  }
+  o.has_en14363 = en;
+  o.en14363_ratio = std::isfinite(r.en_max_ratio) ? r.en_max_ratio : 0.0;
+  o.en_speed = r.en_speed;
+  o.en_ratio = r.en_ratio;
+  return o;
+}
+
+void addRamp(const KickedRun& r, io::CriticalSpeedResult& res) {
+  res.ramp_speed = r.speed;
+  res.ramp_y = r.y_lead;
+  for (const auto& w : r.windows) {
+    res.ramp_window_speed.push_back(w.speed);
+    res.ramp_window_amplitude.push_back(w.amplitude);
+  }
+}
+
+io::CriticalSpeedResult resultOf(const CriticalSpeedOptions& o, const StabilityScene& scene,
+                                 const Search& s) {
+  io::CriticalSpeedResult res;
+  const bool en = o.criterion == "en14363";
+  res.text = {{"scenario", scene.file},
+              {"method", o.method},
+              {"criterion", o.criterion},
+              {"contact", !scene.spec.has_contact                                     ? "guided"
+                          : scene.spec.contact.method == dynamics::ContactMethod::Lut ? "lut"
+                                                                                      : "kec"},
+              {"status", s.findings.empty() ? "ok" : "incomplete"},
+              {"findings", join(s.findings, "\n")}};
+  auto number = [&](const char* name, double v) {
+    if (std::isfinite(v)) res.numbers.emplace_back(name, v);
+  };
+  number("critical_speed_ramp", s.ramp_critical);
+  number("critical_speed_bisection", s.bisection_critical);
+  number("bracket_low", s.bracket_low);
+  number("bracket_high", s.bracket_high);
+  number("start_speed", s.start);
+  number("end_speed", s.end);
+  number("kick", o.kick);
+  number("deceleration", o.deceleration);
+  number("duration", o.duration);
+  number("window", o.window);
+  number("transient", o.transient);
+  number("threshold", s.setup.threshold);
+  number("decay", o.decay);
+  number("tolerance", o.tolerance);
+  for (std::size_t k = 0; k < s.runs.size(); ++k) {
+    const KickedRun& r = s.runs[k];
+    const std::string name = r.kind == "ramp" ? "ramp" : runName(r.kind, k, r.v0);
+    res.runs.push_back(record(r, name, en));
+    if (r.kind == "ramp") {
+      addRamp(r, res);
+    } else {
+      res.bisection_speed.push_back(r.v0);
+      res.bisection_amplitude.push_back(r.verdict.a_last);
+      res.bisection_unstable.push_back(critical::runUnstable(r, en) ? 1.0 : 0.0);
+    }
+  }
+  return res;
+}
+
+void writeCsv(const std::string& path, const Search& s, bool en) {
+  std::ofstream f(path);
+  f << "run,kind,v0,acceleration,ok,unstable,cpu_s,rhs_evals,window_t0,window_t1,speed,"
+       "amplitude\n";
+  f << std::setprecision(10);
+  for (std::size_t k = 0; k < s.runs.size(); ++k) {
+    const KickedRun& r = s.runs[k];
+    const std::string head = std::to_string(k) + "," + r.kind + "," + formatNumberExact(r.v0) +
+                             "," + formatNumberExact(r.acceleration) + "," + (r.ok ? "1" : "0") +
+                             "," + (critical::runUnstable(r, en) ? "1" : "0") + ",";
+    for (const auto& w : r.windows)
+      f << head << r.cpu_s << "," << r.rhs_evals << "," << w.t0 << "," << w.t1 << "," << w.speed
+        << "," << w.amplitude << "\n";
+    if (r.windows.empty()) f << head << r.cpu_s << "," << r.rhs_evals << ",,,,\n";
+  }
+  if (!f) throw io::WriteError("cannot write " + path);
+}
+
+void printSummary(const CriticalSpeedOptions& o, const Search& s) {
+  double cpu = 0.0;
+  long evals = 0;
+  for (const auto& r : s.runs) {
+    cpu += r.cpu_s;
+    evals += r.rhs_evals;
+    std::cout << "  " << std::left << std::setw(9) << r.kind << " V0 " << mps(r.v0) << " a "
+              << r.acceleration << " m/s^2, " << r.duration << " s: " << (r.ok ? "ok" : "FAILED")
+              << ", CPU " << r.cpu_s << " s, " << r.rhs_evals << " rhs evaluations\n";
+  }
+  std::cout << "critical speed (" << o.criterion << " criterion, kick " << o.kick * 1e3
+            << " mm, threshold " << s.setup.threshold * 1e3 << " mm):\n";
+  if (std::isfinite(s.ramp_critical))
+    std::cout << "  ramp-down: " << mps(s.ramp_critical) << " (deceleration " << o.deceleration
+              << " m/s^2 from " << mps(s.start) << ")\n";
+  if (std::isfinite(s.bisection_critical))
+    std::cout << "  bisection: " << mps(s.bisection_critical) << " (bracket " << mps(s.bracket_low)
+              << " .. " << mps(s.bracket_high) << ")\n";
+  for (const auto& f : s.findings) std::cout << "  finding: " << f << "\n";
+  std::cout << "runs: " << s.runs.size() << ", CPU " << cpu << " s, " << evals
+            << " rhs evaluations\n";
+}
+
+void search(const CriticalSpeedOptions& o, const StabilityScene& scene, Search& s) {
+  if (!findStart(o, scene, s)) return;
+  s.end = o.to > 0.0 ? o.to : 0.5 * s.start;
+  if (s.end >= s.start) {
+    s.findings.push_back("--to " + mps(s.end) + " is not below the start speed " + mps(s.start));
+    return;
+  }
+  if (o.method != "bisection") rampDown(o, s);
+  if (o.method != "ramp") bisect(o, s);
+}
+
+bool hasBogie(const StabilityScene& scene) {
+  for (const auto& b : scene.spec.vehicle.bodies)
+    if (b.kind == vehicle::BodyKind::Bogie) return true;
+  return false;
+}
+
+bool complete(const CriticalSpeedOptions& o, const Search& s) {
+  const bool ramp = o.method == "bisection" || std::isfinite(s.ramp_critical);
+  const bool bis = o.method == "ramp" || std::isfinite(s.bisection_critical);
+  return ramp && bis;
+}
+
+}  // namespace
 
 CLI::App* addCriticalSpeedCommand(CLI::App& app, CriticalSpeedOptions& o) {
   auto* c = addScenarioCommand(app, "critical-speed",
@@ -18,15 +319,103 @@ CLI::App* addCriticalSpeedCommand(CLI::App& app, CriticalSpeedOptions& o) {
       ->check(CLI::IsMember({"amplitude", "en14363"}));
   c->add_option("--contact", o.contact, "contact method kec or lut (default: the scenario's)");
   c->add_flag("--no-plots", o.no_plots, "no figures");
+  c->add_option("--from", o.from,
+                "start speed [m/s] (default: the scene's speed, then x1.2 until hunting)");
+  c->add_option("--to", o.to,
+                "end speed of the ramp and low end of the bracket [m/s] "
+                "(default: half the start speed)");
+  c->add_option("--max-speed", o.max_speed, "highest probe without --from [m/s] (150)");
+  c->add_option("--kick", o.kick, "lateral offset of the first wheelset at t = 0 [m] (0.005)");
+  c->add_option("--deceleration", o.deceleration, "deceleration of the ramp [m/s^2] (0.5)");
+  c->add_option("--duration", o.duration, "duration of a constant-speed run [s] (10)");
+  c->add_option("--window", o.window, "amplitude window [s] (1)");
+  c->add_option("--transient", o.transient, "time after the kick left out [s] (1)");
+  c->add_option("--threshold", o.threshold,
+                "limit-cycle amplitude threshold [m] (1e-4; 1e-3 with irregularities)");
+  c->add_option("--decay", o.decay, "decay factor last/middle window of a stable run (0.8)");
+  c->add_option("--tolerance", o.tolerance, "bracket width of the bisection [m/s] (0.5)");
+  c->add_flag("--irregular", o.irregular, "keep the scenario's track irregularities");
   return c;
 }
 
+double thresholdOf(const CriticalSpeedOptions& o, bool irregular_track) {
+  if (o.threshold) return *o.threshold;
+  return irregular_track ? 1e-3 : 1e-4;
+}
+
+double defaultStartSpeed(const StabilityScene& scene) {
+  return scene.spec.vehicle.speed;
+}
+
+void checkCriticalSpeedOptions(const CriticalSpeedOptions& o) {
+  if (o.from != 0.0) checkPositive("--from", o.from);
+  if (o.to != 0.0) checkPositive("--to", o.to);
+  if (o.from > 0.0 && o.to >= o.from)
+    refuse("--to", "(" + formatNumber(o.to) + " m/s) must be below --from (" +
+                       formatNumber(o.from) + " m/s)");
+  checkPositive("--max-speed", o.max_speed);
+  checkPositive("--deceleration", o.deceleration);
+  checkPositive("--window", o.window);
+  if (o.threshold) checkPositive("--threshold", *o.threshold);
+  checkPositive("--tolerance", o.tolerance);
+  if (!(std::isfinite(o.kick) && o.kick != 0.0 && std::abs(o.kick) <= 0.02))
+    refuse("--kick",
+           "must be a lateral offset with 0 < |kick| <= 0.02 m (inside the flange "
+           "clearance), got " +
+               formatNumber(o.kick));
+  if (!(std::isfinite(o.transient) && o.transient >= 0.0))
+    refuse("--transient", "must be >= 0 s, got " + formatNumber(o.transient));
+  if (!(std::isfinite(o.decay) && o.decay > 0.0 && o.decay <= 1.0))
+    refuse("--decay", "must be in (0, 1], got " + formatNumber(o.decay));
+  checkPositive("--duration", o.duration);
+  if (o.duration < o.transient + 3.0 * o.window)
+    refuse("--duration", "(" + formatNumber(o.duration) +
+                             " s) must hold the transient and at least 3 windows (--transient + "
+                             "3 --window = " +
+                             formatNumber(o.transient + 3.0 * o.window) + " s)");
+}
+
 int runCriticalSpeed(const CriticalSpeedOptions& o) {
+  checkCriticalSpeedOptions(o);
   const StudyOptions so = commandStudyOptions(o, "critical_speed");
   const StabilityScene scene =
       loadStabilityScene(o.scenario, o.contact, o.overrides, o.root, so.out);
-  (void)scene;
-  throw std::runtime_error("workbench critical-speed: not implemented yet");
+  if (!scene.spec.has_vehicle) refuse(o.scenario, "has no vehicle");
+  if (o.criterion == "en14363" && !hasBogie(scene))
+    refuse("--criterion",
+           "en14363 needs a bogie frame (EN 14363 bogie-frame acceleration); the "
+           "vehicle has none");
+  if (o.irregular && scene.spec.track.irregularities.source == track::IrregularitySource::None)
+    refuse("--irregular", "given, but the scene has no track irregularities");
+  Search s;
+  s.setup.scenario = scene.file;
+  s.setup.overrides = scene.overrides;
+  s.setup.root = o.root;
+  s.setup.table_cache = (fs::path(so.out) / ".table-cache").string();
+  s.setup.run_dir = (fs::path(so.out) / "runs").string();
+  s.setup.kick = o.kick;
+  s.setup.drop_irregularities =
+      !o.irregular && scene.spec.track.irregularities.source != track::IrregularitySource::None;
+  s.setup.en14363 = o.criterion == "en14363";
+  s.setup.window = o.window;
+  s.setup.transient = o.transient;
+  s.setup.threshold = thresholdOf(o, o.irregular);
+  s.setup.decay = o.decay;
+  try {
+    search(o, scene, s);
+  } catch (const InputError& e) {
+    if (s.runs.empty()) throw;  // the scene refused the first run: nothing ran
+    s.findings.push_back(std::string("a run was refused: ") + e.what());
+  }
+  const std::string h5 = (fs::path(so.out) / "critical_speed.h5").string();
+  io::writeCriticalSpeedFile(h5, resultOf(o, scene, s));
+  writeCsv((fs::path(so.out) / "critical_speed.csv").string(), s, s.setup.en14363);
+  printSummary(o, s);
+  std::cout << "wrote " << h5 << "\n";
+  // The figure also shows what an incomplete search found; it never decides the exit code
+  // beyond 4 (only the figure failed).
+  const int plots = o.no_plots ? 0 : runPlots(so, {"critical-speed", so.out});
+  return complete(o, s) ? plots : 2;
 }
 
 }  // namespace rb::app

@@ -1,0 +1,184 @@
+"""`workbench critical-speed` (docs/stability.md) on the Manchester wagon.
+
+    critical_speed_cli.py --workbench BIN --out DIR CASE
+
+CASE:
+  hostile     bad options: exit 1, the option named, nothing run (no runs/ folder)
+  no-hunting  a start speed far below the critical speed: exit 2, "no hunting at V0", the
+              result file kept with status "incomplete"
+  quick       ramp-down (fast deceleration) and a coarse bisection with KEC: both find the
+              critical speed, and they agree within their resolution
+  thorough    the same with the default deceleration and tolerance, KEC and LUT (long)
+  stiffness   the nonlinear critical speed at three primary yaw stiffnesses falls as the
+              stiffness falls (long)
+Exit status 0 when every check holds, 1 otherwise (the failed checks are listed).
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import h5py
+
+WAGON = "scenarios/vehicles/manchester_wagon1.lua"
+FAILED: list = []
+
+
+def check(ok: bool, what: str) -> None:
+    print(("ok    " if ok else "FAIL  ") + what)
+    if not ok:
+        FAILED.append(what)
+
+
+def run(wb: str, out: str, *args: str, scenario: str = WAGON):
+    shutil.rmtree(out, ignore_errors=True)
+    cmd = [wb, "critical-speed", scenario, "--out", out, "--no-plots", *args]
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=3000)
+    print("$ " + " ".join(cmd) + f"  -> exit {p.returncode}")
+    print(p.stdout + p.stderr)
+    return p
+
+
+def attrs(out: str) -> dict:
+    with h5py.File(os.path.join(out, "critical_speed.h5"), "r") as f:
+        return {k: (v.decode() if isinstance(v, bytes) else v) for k, v in f.attrs.items()}
+
+
+def hostile(wb: str, out: str) -> None:
+    cases = [
+        (["--kick", "0"], "--kick"),
+        (["--kick", "0.05"], "--kick"),
+        (["--from", "60", "--to", "70"], "--to"),
+        (["--from", "-5"], "--from"),
+        (["--from", "nan"], "--from"),
+        (["--deceleration", "0"], "--deceleration"),
+        (["--duration", "2"], "--duration"),
+        (["--decay", "1.5"], "--decay"),
+        (["--tolerance", "0"], "--tolerance"),
+        (["--threshold", "-1e-3"], "--threshold"),
+        (["--method", "newton"], "--method"),
+        (["--criterion", "sperling"], "--criterion"),
+        (["--contact", "hertz"], "--contact"),
+        (["--irregular"], "--irregular"),
+    ]
+    for k, (args, option) in enumerate(cases):
+        d = os.path.join(out, f"hostile_{k}")
+        p = run(wb, d, *args)
+        check(p.returncode == 1, f"{' '.join(args)}: exit 1 (got {p.returncode})")
+        check(option in p.stderr, f"{' '.join(args)}: names {option}")
+        check(not os.path.exists(os.path.join(d, "runs")), f"{' '.join(args)}: nothing run")
+
+
+def no_hunting(wb: str, out: str) -> None:
+    d = os.path.join(out, "no_hunting")
+    p = run(wb, d, "--from", "30", "--duration", "5")
+    check(p.returncode == 2, f"start at 30 m/s: exit 2 (got {p.returncode})")
+    check("no hunting at V0" in p.stdout, "reports no hunting at V0")
+    a = attrs(d)
+    check(a.get("status") == "incomplete", "critical_speed.h5 kept, status incomplete")
+    check("critical_speed_ramp" not in a, "no critical speed written")
+    # A run that fails is a finding with its time and speed, not a crash: with LUT the 5 mm kick
+    # at 85 m/s lifts a wheel within the first second.
+    d = os.path.join(out, "wheel_lift")
+    p = run(wb, d, "--contact", "lut", "--from", "85", "--deceleration", "2")
+    check(p.returncode == 2, f"LUT from 85 m/s: exit 2 (got {p.returncode})")
+    check(re.search(r"failed at t = [0-9.]+ s, V = [0-9.]+ m/s: .*wheel lift", p.stdout)
+          is not None, "the failed run is reported with its time, speed and cause")
+    check("incomplete" == attrs(d).get("status"), "critical_speed.h5 kept, status incomplete")
+
+
+def both(wb: str, out: str, contact: str, fast: bool, start: float):
+    """Ramp-down and bisection from `start` down to 35 m/s; both must find the critical speed and
+    agree: the ramp lags the quasi-static limit cycle (the motion needs time to decay once the
+    cycle has died, about 2 s near the bifurcation), so its speed may lie below the bisection
+    bracket by the speed lost in that time (2 s x deceleration) plus 1 m/s, and above it by
+    1 m/s."""
+    dec, tol = (2.0, 4.0) if fast else (0.5, 0.5)
+    args = ["--method", "both", "--contact", contact, "--from", str(start), "--to", "35",
+            "--deceleration", str(dec), "--tolerance", str(tol)]
+    if fast:
+        args += ["--duration", "6"]
+    p = run(wb, out, *args)
+    check(p.returncode == 0, f"{contact} both methods: exit 0 (got {p.returncode})")
+    if p.returncode != 0:
+        return None
+    a = attrs(out)
+    ramp, bis = a["critical_speed_ramp"], a["critical_speed_bisection"]
+    lo, hi = a["bracket_low"], a["bracket_high"]
+    check(hi - lo <= tol, f"{contact}: bracket {lo:.2f}..{hi:.2f} within the tolerance {tol}")
+    slack = 2.0 * dec + 1.0
+    check(lo - slack <= ramp <= hi + 1.0,
+          f"{contact}: ramp {ramp:.2f} m/s agrees with the bisection bracket {lo:.2f}..{hi:.2f}"
+          f" (bisection {bis:.2f} m/s; -{slack} / +1 m/s)")
+    check(35 < ramp < start and 35 < bis < start,
+          f"{contact}: critical speeds inside 35..{start} m/s")
+    with h5py.File(os.path.join(out, "critical_speed.h5"), "r") as f:
+        n = len(f["runs"])
+        amp = f["ramp/window_amplitude"][()]
+        check(n >= 3 and amp.max() > 1e-3,
+              f"{contact}: {n} runs recorded, ramp starts on a limit cycle ({amp.max()*1e3:.2f} mm)")
+    return a
+
+
+def stiffness(wb: str, out: str) -> None:
+    speeds = []
+    for k in (31391e3, 15e6, 7.5e6):
+        scen = os.path.join(out, f"wagon_kpx_{k:.0f}.lua")
+        os.makedirs(out, exist_ok=True)
+        with open(scen, "w") as f:
+            f.write(f'''-- Manchester wagon with primary_longitudinal_stiffness = {k:g} N/m on the
+-- default stability scene (written by tests/critical_speed/critical_speed_cli.py).
+track {{ segments = {{ tangent {{ length = 20000 }} }}, step = 0.5 }}
+profiles {{ wheel = "s1002", rail = "60e1", back_to_back = 1.360, gauge = 1.435, r0 = 0.46,
+           inclination = 0.025 }}
+contact {{ method = "kec", creep = "polach", mu = 0.2364 }}
+vehicle (require "vehicles.manchester_wagon1" {{ speed = 90, primary_longitudinal_stiffness = {k!r} }})
+solver {{ method = "dopri5" }}
+run {{ duration = 10, output = {{ every = 0.01 }} }}
+''')
+        d = os.path.join(out, f"kpx_{k:.0f}")
+        p = run(wb, d, "--method", "ramp", "--from", "90", "--to", "20", "--deceleration", "1",
+                scenario=scen)
+        check(p.returncode == 0, f"Kpx {k:g}: exit 0 (got {p.returncode})")
+        speeds.append(attrs(d).get("critical_speed_ramp", float("nan")) if p.returncode == 0
+                      else float("nan"))
+    print("critical speeds:", speeds)
+    # Each halving of the stiffness lowers it by more than the ramp's resolution (1 m/s: one
+    # window at 1 m/s^2).
+    check(speeds[0] - speeds[1] > 1.0 and speeds[1] - speeds[2] > 1.0,
+          f"critical speed falls with the primary yaw stiffness: {speeds}")
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--workbench", required=True)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("case", choices=["hostile", "no-hunting", "quick", "thorough", "stiffness"])
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    if a.case == "hostile":
+        hostile(a.workbench, a.out)
+    elif a.case == "no-hunting":
+        no_hunting(a.workbench, a.out)
+    elif a.case == "quick":
+        both(a.workbench, os.path.join(a.out, "quick_kec"), "kec", True, 85.0)
+    elif a.case == "thorough":
+        both(a.workbench, os.path.join(a.out, "thorough_kec"), "kec", False, 85.0)
+        # LUT from 70 m/s: at 85 m/s the 5 mm kick lifts a wheel (flange impact; a finding of
+        # the command, reported with its time and speed).
+        both(a.workbench, os.path.join(a.out, "thorough_lut"), "lut", False, 70.0)
+    else:
+        stiffness(a.workbench, a.out)
+    if FAILED:
+        print(f"{len(FAILED)} check(s) failed:\n  " + "\n  ".join(FAILED))
+        return 1
+    print("all checks hold")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,109 @@
+// The signal processing of `workbench critical-speed` on signals of known content: the window
+// amplitude of a harmonic motion, the verdict on decaying, sustained and shrinking-onto-a-cycle
+// motions, and the speed where a ramp's limit cycle dies.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "workbench/app/critical_speed_analysis.hpp"
+
+namespace cs = rb::app::critical;
+
+namespace {
+
+struct Signal {
+  std::vector<double> t, v;
+  std::vector<std::vector<double>> y;
+};
+
+// Two wheelsets at f = 4 Hz; the second with amplitude amp(t), the first with half of it.
+template <class Amp, class Speed>
+Signal harmonic(double duration, Amp amp, Speed speed) {
+  Signal s;
+  s.y.resize(2);
+  for (double t = 0.0; t <= duration + 1e-9; t += 0.005) {
+    s.t.push_back(t);
+    s.v.push_back(speed(t));
+    const double phase = std::sin(2.0 * std::numbers::pi * 4.0 * t);
+    s.y[0].push_back(0.5 * amp(t) * phase);
+    s.y[1].push_back(amp(t) * phase);
+  }
+  return s;
+}
+
+TEST(CriticalSpeedAnalysis, WindowAmplitudeOfAHarmonicIsItsAmplitude) {
+  const Signal s = harmonic(
+      5.0, [](double) { return 4e-3; }, [](double) { return 80.0; });
+  const auto w = cs::windowAmplitudes(s.t, s.y, s.v, 1.0, 1.0);
+  ASSERT_EQ(w.size(), 4u);
+  for (const auto& x : w) {
+    EXPECT_NEAR(x.amplitude, 4e-3, 2e-5);  // 200 samples per period: peak within 0.5 %
+    EXPECT_EQ(x.wheelset, 1);
+    EXPECT_DOUBLE_EQ(x.speed, 80.0);
+  }
+  EXPECT_NEAR(w.front().t0, 1.0, 1e-9);
+}
+
+TEST(CriticalSpeedAnalysis, DecayingMotionIsStable) {
+  const Signal s = harmonic(
+      10.0, [](double t) { return 5e-3 * std::exp(-0.5 * t); }, [](double) { return 60.0; });
+  const auto v = cs::judgeKickedRun(cs::windowAmplitudes(s.t, s.y, s.v, 1.0, 1.0), 1e-3, 0.8);
+  ASSERT_TRUE(v.valid);
+  EXPECT_FALSE(v.unstable) << v.why;
+}
+
+TEST(CriticalSpeedAnalysis, SlowDecayAboveTheThresholdIsStable) {
+  // 6 mm decaying by 10 % per second: still above 1 mm at the end, but decaying.
+  const Signal s = harmonic(
+      10.0, [](double t) { return 6e-3 * std::exp(-0.105 * t); }, [](double) { return 70.0; });
+  const auto v = cs::judgeKickedRun(cs::windowAmplitudes(s.t, s.y, s.v, 1.0, 1.0), 1e-3, 0.8);
+  EXPECT_GT(v.a_last, 1e-3);
+  EXPECT_FALSE(v.unstable) << v.why;
+}
+
+TEST(CriticalSpeedAnalysis, KickShrinkingOntoALimitCycleIsHunting) {
+  // 8 mm kick settling onto a 3 mm cycle within 2 s.
+  const Signal s = harmonic(
+      10.0, [](double t) { return 3e-3 + 5e-3 * std::exp(-2.0 * t); }, [](double) { return 80.0; });
+  const auto v = cs::judgeKickedRun(cs::windowAmplitudes(s.t, s.y, s.v, 1.0, 1.0), 1e-3, 0.8);
+  EXPECT_TRUE(v.unstable) << v.why;
+}
+
+TEST(CriticalSpeedAnalysis, TooFewWindowsAreNoVerdict) {
+  const Signal s = harmonic(
+      2.5, [](double) { return 3e-3; }, [](double) { return 80.0; });
+  const auto v = cs::judgeKickedRun(cs::windowAmplitudes(s.t, s.y, s.v, 1.0, 1.0), 1e-3, 0.8);
+  EXPECT_FALSE(v.valid);
+}
+
+TEST(CriticalSpeedAnalysis, RampLimitCycleDiesWhereTheAmplitudeFallsBelowTheThreshold) {
+  // Speed 90 - t; a 4 mm cycle down to 70 m/s, then decaying quickly.
+  auto speed = [](double t) { return 90.0 - t; };
+  auto amp = [&](double t) {
+    const double v = speed(t);
+    return v >= 70.0 ? 4e-3 : 4e-3 * std::exp(-3.0 * (70.0 - v));
+  };
+  const Signal s = harmonic(40.0, amp, speed);
+  const auto r = cs::rampCriticalSpeed(cs::windowAmplitudes(s.t, s.y, s.v, 0.5, 0.5), 1e-3);
+  ASSERT_TRUE(r.found);
+  EXPECT_TRUE(r.hunting_at_start);
+  EXPECT_FALSE(r.hunting_at_end);
+  EXPECT_NEAR(r.critical_speed, 70.0, 1.0);
+}
+
+TEST(CriticalSpeedAnalysis, RampWithoutDeathOrWithoutCycleFindsNothing) {
+  const Signal alive = harmonic(
+      10.0, [](double) { return 4e-3; }, [](double t) { return 90 - t; });
+  const auto a = cs::rampCriticalSpeed(cs::windowAmplitudes(alive.t, alive.y, alive.v, 1, 1), 1e-3);
+  EXPECT_FALSE(a.found);
+  EXPECT_TRUE(a.hunting_at_end);
+  const Signal none = harmonic(
+      10.0, [](double) { return 1e-4; }, [](double t) { return 90 - t; });
+  const auto n = cs::rampCriticalSpeed(cs::windowAmplitudes(none.t, none.y, none.v, 1, 1), 1e-3);
+  EXPECT_FALSE(n.found);
+  EXPECT_FALSE(n.hunting_at_start);
+}
+
+}  // namespace

@@ -1,0 +1,116 @@
+#include "workbench/app/critical_speed_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace rb::app::critical {
+
+namespace {
+
+// Half the peak-to-peak of samples [i0, i1) of y (0 when empty).
+double halfPeakToPeak(const std::vector<double>& y, std::size_t i0, std::size_t i1) {
+  if (i1 <= i0 || i1 > y.size()) return 0.0;
+  const auto [lo, hi] = std::minmax_element(y.begin() + static_cast<std::ptrdiff_t>(i0),
+                                            y.begin() + static_cast<std::ptrdiff_t>(i1));
+  return 0.5 * (*hi - *lo);
+}
+
+Window windowAt(std::span<const double> t, const std::vector<std::vector<double>>& y,
+                std::span<const double> speed, std::size_t i0, std::size_t i1) {
+  Window w;
+  w.t0 = t[i0];
+  w.t1 = t[i1 - 1];
+  const std::size_t mid = (i0 + i1 - 1) / 2;
+  w.speed = mid < speed.size() ? speed[mid] : 0.0;
+  for (std::size_t k = 0; k < y.size(); ++k) {
+    const double a = halfPeakToPeak(y[k], i0, i1);
+    if (a > w.amplitude || w.wheelset < 0) {
+      w.amplitude = a;
+      w.wheelset = static_cast<int>(k);
+    }
+  }
+  return w;
+}
+
+}  // namespace
+
+std::vector<Window> windowAmplitudes(std::span<const double> t,
+                                     const std::vector<std::vector<double>>& y,
+                                     std::span<const double> speed, double window, double t_start) {
+  std::vector<Window> out;
+  if (t.empty() || !(window > 0.0)) return out;
+  const double t_end = t.back();
+  std::size_t i =
+      static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), t_start) - t.begin());
+  for (double a = t_start; a + 0.5 * window <= t_end + 1e-12; a += window) {
+    const double b = a + window;
+    std::size_t j = i;
+    while (j < t.size() && t[j] < b - 1e-12) ++j;
+    if (j > i + 1) out.push_back(windowAt(t, y, speed, i, j));
+    i = j;
+  }
+  return out;
+}
+
+KickedVerdict judgeKickedRun(const std::vector<Window>& windows, double threshold, double decay) {
+  KickedVerdict v;
+  if (windows.size() < 3) {
+    v.why = "too few windows to judge (" + std::to_string(windows.size()) + ")";
+    return v;
+  }
+  v.valid = true;
+  v.a_first = windows.front().amplitude;
+  v.a_mid = windows[windows.size() / 2].amplitude;
+  v.a_last = windows.back().amplitude;
+  const bool sustained = v.a_last >= decay * v.a_mid;
+  v.unstable = v.a_last >= threshold && sustained;
+  std::ostringstream s;
+  s << "amplitude first " << v.a_first * 1e3 << " mm, middle " << v.a_mid * 1e3 << " mm, last "
+    << v.a_last * 1e3 << " mm: "
+    << (v.unstable             ? "sustained (hunting)"
+        : v.a_last < threshold ? "below the threshold (stable)"
+                               : "decaying (stable)");
+  v.why = s.str();
+  return v;
+}
+
+RampVerdict lastExceedance(std::span<const double> speed, std::span<const double> ratio) {
+  RampVerdict r;
+  const std::size_t n = std::min(speed.size(), ratio.size());
+  if (n == 0) return r;
+  r.hunting_at_start = ratio[0] >= 1.0;
+  r.hunting_at_end = ratio[n - 1] >= 1.0;
+  std::size_t last = n;
+  for (std::size_t k = n; k-- > 0;)
+    if (ratio[k] >= 1.0) {
+      last = k;
+      break;
+    }
+  if (last == n || last == n - 1) return r;
+  // Linear interpolation of the ratio between the last exceeding window and the next one.
+  const double r0 = ratio[last];
+  const double r1 = ratio[last + 1];
+  const double f = r0 > r1 ? (r0 - 1.0) / (r0 - r1) : 0.0;
+  r.critical_speed = speed[last] + f * (speed[last + 1] - speed[last]);
+  r.found = true;
+  return r;
+}
+
+RampVerdict rampCriticalSpeed(const std::vector<Window>& windows, double threshold) {
+  std::vector<double> speed;
+  std::vector<double> ratio;
+  double largest = 0.0;
+  for (const auto& w : windows) {
+    speed.push_back(w.speed);
+    ratio.push_back(threshold > 0.0 ? w.amplitude / threshold
+                                    : std::numeric_limits<double>::infinity());
+    largest = std::max(largest, w.amplitude);
+  }
+  RampVerdict r = lastExceedance(speed, ratio);
+  r.start_amplitude = largest;
+  return r;
+}
+
+}  // namespace rb::app::critical
