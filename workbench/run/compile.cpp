@@ -10,6 +10,7 @@
 #include "workbench/run/vehicle_run.hpp"
 #include "workbench/track/psd.hpp"
 #include "workbench/vehicle/guided.hpp"
+#include "workbench/vehicle/initial_conditions.hpp"
 
 namespace rb::run {
 namespace {
@@ -306,6 +307,30 @@ void checkStepLimit(Model& c, integ::OdeSystem& ode, const Eigen::VectorXd& y0, 
                  "anyway (the result would not be reliable)");
 }
 
+// vehicle.initial on the compiled model: every condition names a state of it (the ODE layout
+// decides: a wheelset's z and roll on contact are dependent, frames and guided wheelsets have no
+// state), and the start state y0 + offsets is one the model can evaluate. The contact
+// constraints give every lateral offset inside the contact tables a contact state, so a wheelset
+// pushed into or beyond its flangeway is refused only where the model itself refuses it: outside
+// the tables, or a wheel lifted (contact.min_normal_force), reported here before anything runs
+// rather than as a failure at t = 0. y0 becomes the start state.
+void checkInitialState(const Model& c, vehicle::VehicleOde& ode, Eigen::VectorXd& y0,
+                       Diagnostics& d) {
+  const auto& initial = c.spec.vehicle.initial;
+  if (initial.empty()) return;
+  vehicle::checkInitialConditions(ode, initial, d);
+  if (!d.empty()) return;
+  vehicle::applyInitialConditions(ode, initial, y0);
+  Eigen::VectorXd ydot(y0.size());
+  if (ode.rhs(0.0, y0.data(), ydot.data()) == 0 && ydot.allFinite()) return;
+  const std::string why = ode.lastError().empty() ? "a derivative is not finite" : ode.lastError();
+  d.add(initial.front().loc,
+        "vehicle.initial: the model cannot be evaluated in the start state these offsets give (" +
+            why +
+            "); a wheelset offset beyond the flangeway lifts or derails the wheel: "
+            "give a smaller one");
+}
+
 }  // namespace
 
 std::unique_ptr<vehicle::VehicleOde> makeVehicleOde(const Model& m) {
@@ -336,7 +361,9 @@ Model compile(const CompileOptions& o) {
   // A fixed step must also be stable on the stiffest mode there (step_limit.hpp).
   if (c.vehicle) {
     const std::unique_ptr<vehicle::VehicleOde> ode = makeVehicleOde(c);
-    const Eigen::VectorXd y0 = ode->initialState(0.0);
+    Eigen::VectorXd y0 = ode->initialState(0.0);
+    checkInitialState(c, *ode, y0, d);
+    d.throwIfAny();
     checkStepLimit(c, *ode, y0, d);
     d.throwIfAny();
   }
