@@ -18,32 +18,12 @@ std::string conditionKey(const InitialCondition& c) {
   return "vehicle.initial." + c.body + "." + initialConditionKey(c.coord, c.rate);
 }
 
-// The problem of one condition on `ode`, empty if none; its state index in `index` otherwise.
-std::string conditionProblem(const VehicleOde& ode, const InitialCondition& c, int& index) {
-  index = -1;
-  if (!std::isfinite(c.value)) return "must be finite";
-  if (c.coord < kY || c.coord > kYaw) return "is not a coordinate (y, z, roll, pitch, yaw)";
-  const int body = bodyIndex(ode.model(), c.body);
-  if (body < 0) return "no body named '" + c.body + "'";
-  const std::string why =
-      notAStateReason(ode.model(), ode.layout(), static_cast<std::size_t>(body), c.coord);
-  if (!why.empty()) return "not a state of this model: " + why;
-  index = ode.index(body, static_cast<Coord>(c.coord), c.rate);
-  if (index < 0) return "not a state of this model";
-  return {};
-}
-
-}  // namespace
-
-std::string initialConditionKey(int coord, bool rate) {
-  if (coord < kY || coord > kYaw) return "?";
-  return std::string(kCoordKeys[static_cast<std::size_t>(coord)]) + (rate ? "_dot" : "");
-}
-
-std::string notAStateReason(const VehicleModel& model, const VehicleLayout& layout,
-                            std::size_t body, int coord) {
-  if (body >= model.bodies.size()) return "no such body";
-  const std::string& name = model.bodies[body].name;
+// Why the coordinate of condition c of body `body` is not a state of `ode` (a frame; a guided
+// wheelset; a wheelset's z or roll on contact; the prescribed spin); empty when it is one.
+std::string notAStateReason(const VehicleOde& ode, std::size_t body, const InitialCondition& c) {
+  const VehicleLayout& layout = ode.layout();
+  const int coord = c.coord;
+  const std::string& name = c.body;
   if (layout.freeSlot(body) >= 0) return {};
   if (layout.wheelsetSlot(body) < 0)
     return "'" + name + "' is a frame, fixed in its track frame (it has no state)";
@@ -59,6 +39,27 @@ std::string notAStateReason(const VehicleModel& model, const VehicleLayout& layo
     return "the spin of wheelset '" + name +
            "' is prescribed (contact.wheelset_spin = prescribed: pitch_dot = V / r0)";
   return {};
+}
+
+// The problem of one condition on `ode`, empty if none; its state index in `index` otherwise.
+std::string conditionProblem(const VehicleOde& ode, const InitialCondition& c, int& index) {
+  index = -1;
+  if (!std::isfinite(c.value)) return "must be finite";
+  if (c.coord < kY || c.coord > kYaw) return "is not a coordinate (y, z, roll, pitch, yaw)";
+  const int body = bodyIndex(ode.model(), c.body);
+  if (body < 0) return "no body named '" + c.body + "'";
+  const std::string why = notAStateReason(ode, static_cast<std::size_t>(body), c);
+  if (!why.empty()) return "not a state of this model: " + why;
+  index = ode.index(body, static_cast<Coord>(c.coord), c.rate);
+  if (index < 0) return "not a state of this model";
+  return {};
+}
+
+}  // namespace
+
+std::string initialConditionKey(int coord, bool rate) {
+  if (coord < kY || coord > kYaw) return "?";
+  return std::string(kCoordKeys[static_cast<std::size_t>(coord)]) + (rate ? "_dot" : "");
 }
 
 void checkInitialConditions(const VehicleOde& ode, std::span<const InitialCondition> conditions,

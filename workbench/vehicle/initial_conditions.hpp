@@ -16,12 +16,6 @@ namespace rb::vehicle {
 // "y", "yaw_dot", ...: the scenario key of coordinate c (kY .. kYaw) or its rate.
 std::string initialConditionKey(int coord, bool rate);
 
-// Why coordinate `coord` (kY .. kYaw) of body `body` is not a state of a vehicle ODE with this
-// layout (a frame; a guided wheelset; a wheelset's z or roll on contact; the prescribed spin);
-// empty when it is one.
-std::string notAStateReason(const VehicleModel& model, const VehicleLayout& layout,
-                            std::size_t body, int coord);
-
 // Adds every problem of the conditions on `ode` to d at the condition's loc, naming the key
 // vehicle.initial.BODY.KEY: a body that does not exist, a coordinate that is not a state of the
 // model, a value that is not finite.
