@@ -260,17 +260,29 @@ TEST(InitialConditionsCheck, ACoordinateThatIsNotAStateIsRefusedByCheck) {
   EXPECT_EQ(compileErrors(guided, {"vehicle.initial.car.y=1e-2"}), "<no error>");
 }
 
-TEST(InitialConditionsCheck, AnOffsetOutsideTheContactTablesIsRefusedBeforeTheRun) {
+TEST(InitialConditionsCheck, AWheelsetKickedOntoItsFlangeIsRefusedBeforeTheRun) {
   TempDir t("far");
-  const std::string f = t.write("c.lua", wagonScenario("v.initial = { ws1 = { y = 0.05 } }"));
-  const std::string e = compileErrors(f);
-  EXPECT_EQ(
-      e.rfind((t.path / "c.lua").string() + ":7: vehicle.initial: the model cannot be "
-                                            "evaluated in the start state these offsets give (",
-              0),
-      0U)
-      << e;
-  EXPECT_NE(e.find("flangeway"), std::string::npos) << e;
+  const std::string f = t.write("c.lua", wagonScenario(""));
+  // 6 mm: on the tread (the run test kicks 3 mm); 7 and 9 mm: on the flange at rest (7 mm lifts
+  // the wheel at t = 0, 9 mm within 5 ms); 50 mm: outside the contact tables.
+  EXPECT_EQ(compileErrors(f, {"vehicle.initial.ws1.y=6e-3"}), "<no error>");
+  for (const char* y : {"7e-3", "9e-3", "-9e-3", "0.05"}) {
+    const std::string e = compileErrors(f, {std::string("vehicle.initial.ws1.y=") + y});
+    const std::string side = y[0] == '-' ? "right" : "left";
+    EXPECT_EQ(e.rfind("<command line>: vehicle.initial: the offsets put the " + side +
+                          " wheel of wheelset 'ws1' beyond its flangeway at the start",
+                      0),
+              0U)
+        << e;
+    // The bound is stated: between 6 and 7 mm.
+    const std::size_t at = e.find("(here ");
+    ASSERT_NE(at, std::string::npos) << e;
+    const double bound = std::stod(e.substr(at + 6));
+    EXPECT_GT(bound, 6e-3) << e;
+    EXPECT_LT(bound, 7e-3) << e;
+  }
+  // A car-body kick is not limited by the flangeway.
+  EXPECT_EQ(compileErrors(f, {"vehicle.initial.car.y=0.02"}), "<no error>");
 }
 
 TEST(InitialConditionsCli, CheckAndRunRefuseWithExitOneAndWriteNothing) {
