@@ -10,6 +10,7 @@
 #include "workbench/run/vehicle_run.hpp"
 #include "workbench/track/psd.hpp"
 #include "workbench/vehicle/guided.hpp"
+#include "workbench/vehicle/initial_conditions.hpp"
 
 namespace rb::run {
 namespace {
@@ -306,6 +307,81 @@ void checkStepLimit(Model& c, integ::OdeSystem& ode, const Eigen::VectorXd& y0, 
                  "anyway (the result would not be reliable)");
 }
 
+// WheelOutput::regime of a wheel in contact on its flange alone.
+constexpr int kFlangeOnly = 2;
+
+// The first wheel (2 w + side) that touches its tread in the equilibrium (tread_before) but is
+// on its flange alone at `at`, or has no contact state there (lift); -1 when none. Two-point
+// contact (tread and flange) is inside the flangeway: a kick there is a valid start.
+int wheelOffTread(dynamics::ContactVehicleOde& ode, const std::vector<int>& tread_before,
+                  const Eigen::VectorXd& at, std::vector<dynamics::WheelOutput>& wo) {
+  const bool ok = ode.wheelOutputs(0.0, at.data(), wo) == 0;
+  for (std::size_t k = 0; k < wo.size(); ++k)
+    if (tread_before[k] != 0 && (!ok || wo[k].regime == kFlangeOnly)) return static_cast<int>(k);
+  return -1;
+}
+
+// A kick must leave every wheel that rolls on its tread in the equilibrium on its tread: a
+// wheelset placed at rest inside its flange is thrown back by the flange contact and lifts a
+// wheel within milliseconds (or at once: a negative constraint normal force), which would show
+// as a confusing failure of the run. The flangeway is found by bisection on the scale of the
+// offsets (wheel outputs only, about 30 evaluations, only when a wheel leaves its tread).
+void checkFlangeway(const Model& c, dynamics::ContactVehicleOde& ode,
+                    const Eigen::VectorXd& equilibrium, const Eigen::VectorXd& y0, Diagnostics& d) {
+  std::vector<dynamics::WheelOutput> wo(2 * static_cast<std::size_t>(ode.layout().n_ws));
+  if (ode.wheelOutputs(0.0, equilibrium.data(), wo) != 0) return;
+  std::vector<int> tread(wo.size());
+  for (std::size_t k = 0; k < wo.size(); ++k) tread[k] = wo[k].regime != kFlangeOnly ? 1 : 0;
+  const int wheel = wheelOffTread(ode, tread, y0, wo);
+  if (wheel < 0) return;
+  double lo = 0.0, hi = 1.0;
+  for (int i = 0; i < 30; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    const Eigen::VectorXd y = equilibrium + mid * (y0 - equilibrium);
+    (wheelOffTread(ode, tread, y, wo) < 0 ? lo : hi) = mid;
+  }
+  const auto& initial = c.spec.vehicle.initial;
+  const int w = wheel / 2;
+  const std::string body = c.vehicle->bodies[ode.layout().wheelset(w)].name;
+  std::string limit = "the wheels stay on their treads up to " + formatNumber(lo) + " times them";
+  if (initial.size() == 1)
+    limit += " (here " + formatNumber(std::abs(lo * initial.front().value)) + " in magnitude)";
+  d.add(initial.front().loc,
+        "vehicle.initial: the offsets put the " + std::string(wheel % 2 == 0 ? "left" : "right") +
+            " wheel of wheelset '" + body +
+            "' beyond its flangeway at the start (flange contact or lift): a wheelset placed "
+            "at rest on its flange is thrown back and lifts a wheel at once; " +
+            limit);
+}
+
+// vehicle.initial on the compiled model: every condition names a state of it (the ODE layout
+// decides: a wheelset's z and roll on contact are dependent, frames and guided wheelsets have no
+// state), and the start state y0 + offsets is one the model can evaluate. The contact
+// constraints give every lateral offset inside the contact tables a contact state, so a wheelset
+// pushed into or beyond its flangeway is refused only where the model itself refuses it: outside
+// the tables, or a wheel lifted (contact.min_normal_force), or a wheel moved off its tread onto
+// its flange (checkFlangeway), reported here before anything runs rather than as a failure at
+// the start. y0 becomes the start state.
+void checkInitialState(const Model& c, vehicle::VehicleOde& ode, Eigen::VectorXd& y0,
+                       Diagnostics& d) {
+  const auto& initial = c.spec.vehicle.initial;
+  if (initial.empty()) return;
+  vehicle::checkInitialConditions(ode, initial, d);
+  if (!d.empty()) return;
+  const Eigen::VectorXd equilibrium = y0;
+  vehicle::applyInitialConditions(ode, initial, y0);
+  if (auto* contact = dynamic_cast<dynamics::ContactVehicleOde*>(&ode)) {
+    checkFlangeway(c, *contact, equilibrium, y0, d);
+    if (!d.empty()) return;
+  }
+  Eigen::VectorXd ydot(y0.size());
+  if (ode.rhs(0.0, y0.data(), ydot.data()) == 0 && ydot.allFinite()) return;
+  const std::string why = ode.lastError().empty() ? "a derivative is not finite" : ode.lastError();
+  d.add(initial.front().loc,
+        "vehicle.initial: the model cannot be evaluated in the start state these offsets give (" +
+            why + "); give smaller offsets");
+}
+
 }  // namespace
 
 std::unique_ptr<vehicle::VehicleOde> makeVehicleOde(const Model& m) {
@@ -336,7 +412,9 @@ Model compile(const CompileOptions& o) {
   // A fixed step must also be stable on the stiffest mode there (step_limit.hpp).
   if (c.vehicle) {
     const std::unique_ptr<vehicle::VehicleOde> ode = makeVehicleOde(c);
-    const Eigen::VectorXd y0 = ode->initialState(0.0);
+    Eigen::VectorXd y0 = ode->initialState(0.0);
+    checkInitialState(c, *ode, y0, d);
+    d.throwIfAny();
     checkStepLimit(c, *ode, y0, d);
     d.throwIfAny();
   }

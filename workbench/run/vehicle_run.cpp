@@ -14,6 +14,7 @@
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
 #include "workbench/integrators/registry.hpp"
+#include "workbench/io/initial_output.hpp"
 #include "workbench/io/track_output.hpp"
 #include "workbench/run/assessment_run.hpp"
 #include "workbench/run/simulate.hpp"
@@ -542,6 +543,26 @@ void finishAssessment(const Model& m, AssessmentSetup& as, std::size_t samples, 
   for (auto& w : exceededWarnings(res)) out.warnings.push_back(std::move(w));
 }
 
+// /initial_conditions: the conditions as given and the state the run starts from, so the result
+// alone says where the motion began (written only when vehicle.initial gives any).
+void writeInitialConditions(const vehicle::VehicleOde& ode,
+                            std::span<const vehicle::InitialCondition> conditions,
+                            const Eigen::VectorXd& equilibrium, const Eigen::VectorXd& y0,
+                            io::ResultFile& f) {
+  io::InitialConditionsRecord rec;
+  for (const auto& c : conditions) {
+    rec.body.push_back(c.body);
+    rec.key.push_back(vehicle::initialConditionKey(c.coord, c.rate));
+    rec.value.push_back(c.value);
+    const bool length = c.coord == vehicle::kY || c.coord == vehicle::kZ;
+    rec.unit.push_back(std::string(length ? "m" : "rad") + (c.rate ? "/s" : ""));
+  }
+  for (int i = 0; i < ode.size(); ++i) rec.state_names.push_back(ode.componentName(i));
+  rec.equilibrium.assign(equilibrium.begin(), equilibrium.end());
+  rec.state.assign(y0.begin(), y0.end());
+  io::writeInitialConditions(f, rec);
+}
+
 }  // namespace
 
 assessment::AssessmentSpec applicableAssessment(const Model& m) {
@@ -577,7 +598,12 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   r.system = ode.get();
   r.solver = m.solver;
   r.y0 = ode->initialState(0.0);
-  vehicle::applyInitialConditions(*ode, m.spec.vehicle.initial, r.y0);
+  // The static wheel loads Q0 of the assessment are those of the equilibrium, not of the kick.
+  const Eigen::VectorXd equilibrium = r.y0;
+  if (!m.spec.vehicle.initial.empty()) {
+    vehicle::applyInitialConditions(*ode, m.spec.vehicle.initial, r.y0);
+    writeInitialConditions(*ode, m.spec.vehicle.initial, equilibrium, r.y0, f);
+  }
   r.t_end = m.t_end;
   r.output_every = m.spec.run.output_every;
   r.progress = o.progress;
@@ -634,7 +660,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     f.attr("/stats", "step_limit_mode", m.step_limit.mode);
   }
   // The assessment samples its own signals at its own interval (nothing when not asked).
-  AssessmentSetup as = setupAssessment(m, contact, r.y0, out.assessment_notes);
+  AssessmentSetup as = setupAssessment(m, contact, equilibrium, out.assessment_notes);
   ExtraSampling extra;
   std::vector<Vector6d> aqdd(nb);
   std::vector<dynamics::WheelOutput> awo(wo.size());

@@ -1,3 +1,9 @@
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string_view>
+
+#include "workbench/core/strings.hpp"
 #include "workbench/scenario/build.hpp"
 #include "workbench/scenario/reader.hpp"
 #include "workbench/vehicle/names.hpp"
@@ -41,6 +47,64 @@ vehicle::ElementSpec buildElement(const Node& e, const std::string& path, Diagno
   return el;
 }
 
+// Keys of vehicle.initial.<body> in vehicle::Coord order from kY (vehicle::initialConditionKey).
+constexpr std::array<std::string_view, 5> kInitialKeys = {"y", "z", "roll", "pitch", "yaw"};
+constexpr std::string_view kRateSuffix = "_dot";
+constexpr int kCoordY = 1;  // vehicle::kY (workbench/vehicle/kinematics.hpp)
+
+// One body's table of vehicle.initial: a condition per key given (schema block
+// "vehicle.initial.<body>": unknown keys, non-numbers and non-finite values are reported).
+void buildBodyInitial(const std::string& body, const Node& t,
+                      std::vector<vehicle::InitialCondition>& out, Diagnostics& d) {
+  Reader r(t, block("vehicle.initial.<body>"), "vehicle.initial." + body, d);
+  for (const bool rate : {false, true})
+    for (std::size_t c = 0; c < kInitialKeys.size(); ++c) {
+      const std::string key = std::string(kInitialKeys[c]) + (rate ? std::string(kRateSuffix) : "");
+      const Node* v = r.value(key);
+      if (v == nullptr) continue;
+      const double x = r.number(key);
+      if (v->type != Node::Type::Number || !std::isfinite(x)) continue;
+      vehicle::InitialCondition ic;
+      ic.body = body;
+      ic.coord = kCoordY + static_cast<int>(c);
+      ic.rate = rate;
+      ic.value = x;
+      ic.loc = v->loc;
+      out.push_back(std::move(ic));
+    }
+}
+
+// vehicle.initial = { BODY = { y = ..., yaw_dot = ... }, ... }: the body names are checked here
+// against the vehicle's bodies; whether a coordinate is a state of the model is checked when the
+// model is compiled (vehicle::checkInitialConditions).
+void buildInitial(Reader& r, vehicle::VehicleSpec& v, Diagnostics& d) {
+  const Node* n = r.value("initial");
+  if (n == nullptr) return;
+  if (n->type != Node::Type::Table || !n->items.empty()) {
+    r.error(*n, "initial must be a table keyed by body name, e.g. { ws1 = { y = 3e-3 } }, got " +
+                    n->describe());
+    return;
+  }
+  std::vector<std::string> names;
+  for (const auto& b : v.bodies) names.push_back(b.name);
+  for (const auto& [body, t] : n->fields) {
+    if (std::find(names.begin(), names.end(), body) == names.end()) {
+      const std::string hint = closestMatch(body, names);
+      r.error(t, "initial: no body named '" + body + "'" +
+                     (hint.empty() ? " (bodies: " + join(names, ", ") + ")"
+                                   : " (did you mean '" + hint + "'?)"));
+      continue;
+    }
+    if (t.type != Node::Type::Table) {
+      r.error(t, "initial." + body +
+                     " must be a table of offsets, e.g. { y = 3e-3, yaw_dot = 0.01 }, got " +
+                     t.describe());
+      continue;
+    }
+    buildBodyInitial(body, t, v.initial, d);
+  }
+}
+
 }  // namespace
 
 void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d) {
@@ -54,6 +118,7 @@ void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d) {
   auto bodies = r.blockList("bodies");
   for (std::size_t i = 0; i < bodies.size(); ++i)
     v.bodies.push_back(buildBody(*bodies[i], "vehicle.bodies[" + std::to_string(i + 1) + "]", d));
+  buildInitial(r, v, d);
   if (!r.has("elements")) return;
   auto elements = r.blockList("elements");
   for (std::size_t i = 0; i < elements.size(); ++i)

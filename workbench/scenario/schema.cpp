@@ -271,6 +271,22 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
             dynamics::kMinNormalForceRange)}});
 }
 
+// Schema block of the per-body tables of vehicle.initial (read by build_vehicle.cpp).
+constexpr const char* kInitialBlock = "vehicle.initial.<body>";
+
+struct InitialCoordinate {
+  const char* key;
+  const char* unit;
+  const char* what;
+};
+// The coordinates of vehicle.initial.<body>, in vehicle::Coord order from kY.
+constexpr InitialCoordinate kInitialCoordinates[] = {
+    {"y", "m", "lateral displacement y"},
+    {"z", "m", "vertical displacement z (up)"},
+    {"roll", "rad", "roll angle phi"},
+    {"pitch", "rad", "pitch angle theta (a wheelset: spin angle)"},
+    {"yaw", "rad", "yaw angle psi"}};
+
 void addVehicleBlocks(std::vector<BlockSpec>& s) {
   // Vehicle: bodies in track-frame coordinates and suspension elements (Appendix A).
   s.push_back(
@@ -290,7 +306,29 @@ void addVehicleBlocks(std::vector<BlockSpec>& s) {
         num("start", "m", 0, "arc length of the vehicle reference point at t = 0", 0),
         required(blockKey("bodies", ValueType::BlockList, {"body"}, "rigid bodies")),
         blockKey("elements", ValueType::BlockList, namesOf<vehicle::ElementKind>(),
-                 "suspension elements")}});
+                 "suspension elements"),
+        typed("initial", ValueType::Table, "-",
+              "initial conditions { BODY = { y = 3e-3, yaw_dot = 0.01, ... }, ... } keyed by "
+              "body name: offsets added to the start state (static equilibrium, wheelsets "
+              "centred) in each body's track frame; keys in vehicle.initial.<body>. Only states "
+              "of the model: not the z and roll of a wheelset on contact (the contact "
+              "constraints give them), nothing of frames and guided wheelsets, no wheelset pitch "
+              "with contact.wheelset_spin = prescribed. --set vehicle.initial.ws1.y=0.003 adds "
+              "one")}});
+  // Coordinates relative to the body track frame (paper Eq. 2-3) and their rates.
+  std::vector<KeySpec> initial;
+  for (const bool rate : {false, true})
+    for (const auto& [key, unit, what] : kInitialCoordinates) {
+      const std::string k = std::string(key) + (rate ? "_dot" : "");
+      const std::string u = std::string(unit) + (rate ? "/s" : "");
+      initial.push_back(num(k, u, 0,
+                            rate ? "initial rate of " + std::string(what) + " (added)"
+                                 : "initial " + std::string(what) + " (added)"));
+    }
+  s.push_back({std::string(kInitialBlock),
+               "Initial offsets of one body (vehicle.initial.BODY), in its track frame, added to "
+               "the static-equilibrium start state; SI units; recorded in /initial_conditions.",
+               std::move(initial)});
   s.push_back(
       {"body",
        "A rigid body.",

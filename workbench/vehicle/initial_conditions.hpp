@@ -5,7 +5,9 @@
 #include <Eigen/Dense>
 #include <span>
 #include <string>
+#include <vector>
 
+#include "workbench/core/error.hpp"
 #include "workbench/vehicle/spec.hpp"
 #include "workbench/vehicle/vehicle_ode.hpp"
 
@@ -14,9 +16,14 @@ namespace rb::vehicle {
 // "y", "yaw_dot", ...: the scenario key of coordinate c (kY .. kYaw) or its rate.
 std::string initialConditionKey(int coord, bool rate);
 
-// Adds every condition to y0 (a state of `ode`). Throws rb::InputError at the condition's loc
-// when its body does not exist or its coordinate is not a state of the model (a wheelset's z or
-// roll on contact, a frame, a guided wheelset), or its value is not finite.
+// Adds every problem of the conditions on `ode` to d at the condition's loc, naming the key
+// vehicle.initial.BODY.KEY: a body that does not exist, a coordinate that is not a state of the
+// model, a value that is not finite.
+void checkInitialConditions(const VehicleOde& ode, std::span<const InitialCondition> conditions,
+                            Diagnostics& d);
+
+// Adds every condition to y0 (a state of `ode`). Throws rb::InputError with the problems of
+// checkInitialConditions. A zero value leaves y0 untouched bit for bit (a -0.0 stays -0.0).
 void applyInitialConditions(const VehicleOde& ode, std::span<const InitialCondition> conditions,
                             Eigen::VectorXd& y0);
 

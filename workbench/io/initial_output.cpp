@@ -1,0 +1,23 @@
+#include "workbench/io/initial_output.hpp"
+
+#include <cstdint>
+
+namespace rb::io {
+
+void writeInitialConditions(ResultFile& f, const InitialConditionsRecord& r) {
+  const std::string g = "/initial_conditions";
+  f.attr(g, "count", static_cast<std::int64_t>(r.value.size()));
+  f.attr(g, "description",
+         std::string("vehicle.initial: offsets of body coordinates (track frame) and rates added "
+                     "to the static-equilibrium state; state = equilibrium + offsets, the first "
+                     "output sample"));
+  f.stringDataset(g + "/body", r.body);
+  f.stringDataset(g + "/key", r.key);
+  f.dataset(g + "/value", r.value, "SI (per entry: unit)");
+  f.stringDataset(g + "/unit", r.unit);
+  f.stringDataset(g + "/state_names", r.state_names);
+  f.dataset(g + "/equilibrium", r.equilibrium, "SI (per component: m, rad, m/s, rad/s, N)");
+  f.dataset(g + "/state", r.state, "SI (per component: m, rad, m/s, rad/s, N)");
+}
+
+}  // namespace rb::io
