@@ -15,10 +15,10 @@ namespace rbtest::wickens {
 
 using namespace rb;
 
-Case compileCase(const std::vector<std::string>& overrides) {
+Case compileCase(const std::string& scenario, const std::vector<std::string>& overrides) {
   run::CompileOptions o;
   o.root = RB_SOURCE_DIR;
-  o.scenario = std::string(RB_SOURCE_DIR) + "/scenarios/stability/wickens.lua";
+  o.scenario = std::string(RB_SOURCE_DIR) + "/scenarios/stability/" + scenario;
   o.overrides = overrides;
   Case c;
   c.model = std::make_unique<run::Model>(run::compile(o));
@@ -116,10 +116,12 @@ CentredParameters centredParameters(Case& c, double dy) {
     p.f11 += G * cc * cc * k.c11;
     p.f22 += G * cc * cc * k.c22;
     p.f23 += G * cc * cc * cc * k.c23;
+    p.f33 += G * cc * cc * cc * cc * k.c33;
     if (&q == &first) {
       p.c11 = k.c11;
       p.c22 = k.c22;
       p.c23 = k.c23;
+      p.c33 = k.c33;
     }
   }
   const LateralForces fp = lateralForces(wp), fm = lateralForces(wm);
@@ -129,6 +131,17 @@ CentredParameters centredParameters(Case& c, double dy) {
   const auto& body = c.model->spec.vehicle.bodies.at(static_cast<std::size_t>(ws));
   p.mass = body.mass;
   p.yaw_inertia = body.inertia.z();
+  p.roll_inertia = body.inertia.x();
+  p.spin_inertia = body.inertia.y();
+  const auto roll = [&](double y) {
+    Eigen::VectorXd s = y0;
+    s[ode.layout().wsPosition(0, 0)] += y;
+    std::vector<vehicle::Vector6d> q(c.model->vehicle->bodies.size());
+    if (ode.bodyCoordinates(0.0, s.data(), q) != 0)
+      throw std::runtime_error("body coordinates failed: " + ode.lastError());
+    return q[static_cast<std::size_t>(ws)][vehicle::kRoll];
+  };
+  p.roll_slope = (roll(dy) - roll(-dy)) / (2.0 * dy);
   return p;
 }
 
@@ -159,22 +172,48 @@ double closedFormCriticalSpeed(const CentredParameters& p, const Springs& s,
 }
 
 std::vector<std::complex<double>> twoDofEigenvalues(const CentredParameters& p, const Springs& s,
-                                                    double v, double k_lateral_extra) {
-  const double F1 = 2.0 * p.f11, F2 = 2.0 * p.f22, l0 = p.l0;
-  const double ky = s.ky + k_lateral_extra;
+                                                    double v, bool spin) {
+  const double F1 = 2.0 * p.f11, F2 = 2.0 * p.f22, l0 = p.l0, m = p.mass, I = p.yaw_inertia;
   // x = (y, psi, y_dot, psi_dot):
-  //   m y''   = -F2 (y'/V - psi) - ky y
+  //   m y''   = -F2 (y'/V - psi) - ky y                      [- 2 f23 psi'/V - (k_grav + k_spin) y]
   //   I psi'' = -F1 l0 (l0 psi'/V + lambda y / r0) - kpsi psi
+  //             [+ 2 f23 (y'/V - psi) - 2 f33 psi'/V + f33 d(gamma_l - gamma_r)/dy y / r0]
+  const double ky = s.ky + (spin ? p.k_gravity + p.k_spin : 0.0);
+  const double f23 = spin ? p.f23 : 0.0, f33 = spin ? p.f33 : 0.0;
+  const double rho = spin ? 1.0 + p.r0 * p.roll_slope : 1.0;
+  const double mr = m + (spin ? p.roll_inertia * p.roll_slope * p.roll_slope : 0.0);
+  // Gyroscopic moments of the spinning wheelset (spin V / r0): I_zz psi'' + I_yy Omega phi' =
+  // M_z, I_xx phi'' - I_yy Omega psi' = M_x, with phi = d(roll)/dy y on the constraints.
+  const double gyro = spin ? p.spin_inertia * v / p.r0 * p.roll_slope : 0.0;
   Eigen::Matrix4d A = Eigen::Matrix4d::Zero();
   A(0, 2) = A(1, 3) = 1.0;
-  A(2, 0) = -ky / p.mass;
-  A(2, 1) = F2 / p.mass;
-  A(2, 2) = -F2 / (v * p.mass);
-  A(3, 0) = -F1 * l0 * p.lambda / (p.r0 * p.yaw_inertia);
-  A(3, 1) = -s.kpsi / p.yaw_inertia;
-  A(3, 3) = -F1 * l0 * l0 / (v * p.yaw_inertia);
+  A(2, 0) = -ky / mr;
+  A(2, 1) = rho * F2 / mr;
+  A(2, 2) = -rho * rho * F2 / (v * mr);
+  A(2, 3) = (-2.0 * rho * f23 / v + gyro) / mr;
+  A(3, 0) = (-F1 * l0 * p.lambda + f33 * p.dgamma_dy) / (p.r0 * I);
+  A(3, 1) = -(s.kpsi + 2.0 * f23) / I;
+  A(3, 2) = (2.0 * rho * f23 / v - gyro) / I;
+  A(3, 3) = -(F1 * l0 * l0 + 2.0 * f33) / (v * I);
   const Eigen::EigenSolver<Eigen::Matrix4d> es(A, false);
   return {es.eigenvalues().begin(), es.eigenvalues().end()};
+}
+
+double twoDofCriticalSpeed(const CentredParameters& p, const Springs& s, bool spin, double v_lo,
+                           double v_hi, double rel_tol) {
+  const auto growth = [&](double v) {
+    double g = -std::numeric_limits<double>::infinity();
+    for (const auto& e : twoDofEigenvalues(p, s, v, spin))
+      if (e.imag() > 0.0) g = std::max(g, e.real());
+    return g;
+  };
+  if (!(growth(v_lo) < 0.0 && growth(v_hi) > 0.0))
+    throw std::runtime_error("the 2-dof model's critical speed is not bracketed");
+  while (v_hi - v_lo > rel_tol * v_hi) {
+    const double mid = 0.5 * (v_lo + v_hi);
+    (growth(mid) < 0.0 ? v_lo : v_hi) = mid;
+  }
+  return 0.5 * (v_lo + v_hi);
 }
 
 std::complex<double> Linearisation::leastDamped() const {
@@ -190,14 +229,16 @@ Linearisation linearise(Case& c, double v) {
   auto& contact = contactOde(ode);
   const Eigen::VectorXd y0 = ode->initialState(0.0);
   Linearisation lin;
-  // The centred rolling state is a steady state on tangent track: every derivative but the
-  // spin angle's (theta_dot = V / r0) vanishes.
+  // The centred rolling state is a steady state of the lateral and yaw motion on tangent track.
   Eigen::VectorXd f(ode->size());
   if (ode->rhs(0.0, y0.data(), f.data()) != 0)
     throw std::runtime_error("rhs failed: " + ode->lastError());
-  const int spin = ode->layout().wsPosition(0, 1);
-  for (int i = 0; i < f.size(); ++i)
-    if (i != spin) lin.residual = std::max(lin.residual, std::abs(f[i]));
+  const vehicle::VehicleLayout& l = ode->layout();
+  for (const int coord : {0, 2})
+    for (const int i : {l.wsPosition(0, coord), l.wsRate(0, coord)})
+      lin.residual = std::max(lin.residual, std::abs(f[i]));
+  const int spin = l.wsPosition(0, 1);
+  if (spin >= 0) lin.spin_acceleration = f[l.wsRate(0, 1)];
   contact.resetStats();
   const Eigen::MatrixXd J = vehicle::finiteDifferenceJacobian(*ode, 0.0, y0);
   lin.evaluations = contact.stats().evaluations + 1;
@@ -213,6 +254,10 @@ Linearisation linearise(Case& c, double v) {
   }
   lin.eigenvalues = ev;
   return lin;
+}
+
+double klingelFrequency(const CentredParameters& p, double v) {
+  return v * std::sqrt(p.lambda / (p.r0 * p.l0));
 }
 
 double linearCriticalSpeed(Case& c, double v_lo, double v_hi, double rel_tol, long* evaluations) {
