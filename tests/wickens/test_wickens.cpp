@@ -41,8 +41,8 @@ void printParameters(const char* label, const CentredParameters& p, const Spring
       "N, f23 %.4g N m, k_grav %.4g N/m, k_spin %.4g N/m, m %.0f kg, I %.0f kg m^2, k_y %.4g "
       "N/m, k_psi %.4g N m/rad, d(roll)/dy %.4f rad/m\n",
       label, p.r0, p.l0, p.lambda, p.dgamma_dy, p.gamma0, p.normal, p.a * 1e3, p.b * 1e3, p.c11,
-      p.c22, p.c23, p.f11, p.f22, p.f23, p.k_gravity, p.k_spin, p.mass, p.yaw_inertia, s.ky,
-      s.kpsi, p.roll_slope);
+      p.c22, p.c23, p.f11, p.f22, p.f23, p.k_gravity, p.k_spin, p.mass, p.yaw_inertia, s.ky, s.kpsi,
+      p.roll_slope);
 }
 
 struct Comparison {
@@ -60,13 +60,13 @@ Comparison compare(const std::string& method, int inclination) {
   EXPECT_EQ(r.p.patches_per_wheel, 1) << "the closed form has one contact per wheel";
   r.v_wickens = closedFormCriticalSpeed(r.p, s);
   r.v_extended = closedFormCriticalSpeed(r.p, s, r.p.k_gravity + r.p.k_spin);
-  r.v_spin = twoDofCriticalSpeed(r.p, s, true, 0.5 * r.v_wickens, 1.5 * r.v_wickens,
-                                 kBisectionTolerance);
+  r.v_spin =
+      twoDofCriticalSpeed(r.p, s, true, 0.5 * r.v_wickens, 1.5 * r.v_wickens, kBisectionTolerance);
   r.v_ours = linearCriticalSpeed(c, 0.5 * r.v_wickens, 1.5 * r.v_wickens, kBisectionTolerance,
                                  &r.evaluations);
   std::printf(
       "  V_c ours %.3f m/s, Wickens %.3f m/s (%+.2f %%), with k_grav + k_spin %.3f m/s (%+.2f "
-      "%%), 2-dof with all spin terms %.3f m/s (%+.2f %%), %ld rhs evaluations\n",
+      "%%), 2-dof with every effect %.3f m/s (%+.2f %%), %ld rhs evaluations\n",
       r.v_ours, r.v_wickens, 100.0 * (r.v_ours / r.v_wickens - 1.0), r.v_extended,
       100.0 * (r.v_ours / r.v_extended - 1.0), r.v_spin, 100.0 * (r.v_ours / r.v_spin - 1.0),
       r.evaluations);
@@ -90,21 +90,102 @@ TEST(Wickens, CentredStateIsSteady) {
   }
 }
 
-// The linear critical speed of the full model against the closed form. Tolerance 4 %: the
-// extended closed form (Wickens' model plus the measured gravitational and spin-creep lateral
-// stiffnesses) differs from Wickens' by 2.2 % here; what both neglect (README.md: spin creep
-// with the yaw rate, c C23 / (C22 l0) ~ 0.3 % of the lateral creep damping; the spin moment's
-// yaw stiffness 2 f23 ~ 4e4 N m/rad against k_psi = 8e5, 5 %, entering V_c^2 through A1 and a0
-// with partial cancellation; the roll and height of the wheelset, second order) is worth a few
-// per cent of V_c at most.
+// The linear critical speed of the full model against the closed form, KEC and LUT at 1:60 and
+// LUT at 1:40 (KEC at 1:40 has two patches per wheel at y = 0: README.md).
+// 1. Against Wickens' closed form: tolerance 8 %. The closed form neglects effects our model
+//    has; the 2-dof model with each of them added, measured on our model (gravitational and
+//    spin-creep lateral stiffness, the spin creep terms, the lateral motion r0 d(roll)/dy of the
+//    contact points, the gyroscopic moments of the spinning wheelset: README.md) moves the
+//    critical speed by +5.6 % at 1:60 (gamma0 = 3.7 deg) and +2.8 % at 1:40 (gamma0 = 1.4 deg).
+// 2. Against that extended 2-dof model: tolerance 1 %. What is left out of it: the yaw moments
+//    of the steady normal and spin forces turning with the yaw (2 l0 N gamma0, 2 l0 f23 gamma0
+//    / r0 ~ 5e3 N m/rad against k_psi = 8e5, 0.7 %, entering V_c^2 through a fraction of A1),
+//    the tilt of the contact plane (cos gamma0 = 0.998), the bisection (1e-4).
 TEST(Wickens, ClosedFormCriticalSpeed) {
   for (const auto& [method, inclination] :
        std::vector<std::pair<std::string, int>>{{"kec", 60}, {"lut", 60}, {"lut", 40}}) {
     const Comparison r = compare(method, inclination);
-    EXPECT_NEAR(r.v_ours / r.v_wickens, 1.0, 0.04) << method << " 1:" << inclination;
-    EXPECT_NEAR(r.v_ours / r.v_extended, 1.0, 0.04) << method << " 1:" << inclination;
+    EXPECT_NEAR(r.v_ours / r.v_wickens, 1.0, 0.08) << method << " 1:" << inclination;
+    EXPECT_NEAR(r.v_ours / r.v_spin, 1.0, 0.01) << method << " 1:" << inclination;
     EXPECT_GT(r.v_ours, 20.0);
     EXPECT_LT(r.v_ours, 200.0);
+    EXPECT_LT(r.evaluations, 400);  // a few hundred rhs evaluations per critical speed
+  }
+}
+
+// Conicity through the rail inclination: 1:20, 1:30 and 1:60 give distinct conicities at y = 0
+// (0.009, 0.022, 0.110), each smooth (the same slope of delta r with central differences of 1 um
+// and 0.1 mm: no contact-point jump within 0.1 mm of the centre; 1:35 and, for the KEC, 1:40 and
+// 1:50 fail this and are not used). V_c sqrt(lambda) constant within 3 %: Wickens' closed form
+// with our parameters changes it by 2.4 % over these inclinations (the creep coefficients, l0
+// and r0 move with the contact point), the effects it neglects by a further few per cent at most
+// (point 1 above), partly cancelling; the critical speed itself changes by a factor of 3.5.
+TEST(Wickens, ConicityScaling) {
+  for (const char* method : {"kec", "lut"}) {
+    std::vector<double> lambda, v_c, scaled;
+    for (const int inclination : {20, 30, 60}) {
+      Case c = compileCase("wickens.lua", setup(method, inclination));
+      const CentredParameters p = centredParameters(c);
+      const CentredParameters fine = centredParameters(c, 1e-6);
+      const CentredParameters coarse = centredParameters(c, 1e-4);
+      EXPECT_EQ(p.patches_per_wheel, 1) << method << " 1:" << inclination;
+      EXPECT_NEAR(fine.lambda / coarse.lambda, 1.0, 0.01) << method << " 1:" << inclination;
+      const double vw = closedFormCriticalSpeed(p, springs(c));
+      long evaluations = 0;
+      const double v =
+          linearCriticalSpeed(c, 0.5 * vw, 1.5 * vw, kBisectionTolerance, &evaluations);
+      std::printf(
+          "%s 1:%d: lambda %.5f (1 um %.5f, 0.1 mm %.5f), V_c ours %.3f m/s, Wickens %.3f m/s "
+          "(%+.2f %%), V_c sqrt(lambda) ours %.4f, Wickens %.4f, %ld evaluations\n",
+          method, inclination, p.lambda, fine.lambda, coarse.lambda, v, vw, 100.0 * (v / vw - 1.0),
+          v * std::sqrt(p.lambda), vw * std::sqrt(p.lambda), evaluations);
+      lambda.push_back(p.lambda);
+      v_c.push_back(v);
+      scaled.push_back(v * std::sqrt(p.lambda));
+    }
+    for (std::size_t k = 1; k < lambda.size(); ++k)
+      EXPECT_GT(lambda[k] / lambda[k - 1], 1.5) << method << ": conicities not distinct";
+    const auto [lo, hi] = std::minmax_element(scaled.begin(), scaled.end());
+    EXPECT_LT(*hi / *lo - 1.0, 0.03) << method;
+    const auto [v_lo, v_hi] = std::minmax_element(v_c.begin(), v_c.end());
+    EXPECT_GT(*v_hi / *v_lo - 1.0, 0.5) << method << ": the test could not see a failed scaling";
+  }
+}
+
+// Without springs (wickens_free.lua) the wheelset's lateral mode is Klingel's kinematic
+// oscillation: at 5 m/s the creep forces are stiff against the inertia (the frequency is the
+// same at 2 m/s) and the mode is neutral (|zeta| < 0.01; the net lateral contact stiffness
+// k_grav + k_spin > 0 damps it very slightly at low speed), and it is unstable at 20 m/s.
+// Its frequency is Klingel's omega = V sqrt(lambda / (r0 l0)) up to the 3-D correction of the
+// constrained roll: the contact points move laterally by rho y, rho = 1 + r0 d(roll)/dy, so
+// pure rolling gives omega = omega_Klingel / sqrt(rho) (Antali, Stepan & Hogan, "Kinematic
+// oscillations of railway wheelsets", Multibody System Dynamics 34, 2015, show that Klingel's
+// formula is not exact for 3-D wheelsets). Tolerances: 3 % against Klingel (1 - 1/sqrt(rho) is
+// 2.1 % at 1:60, 0.7 % at 1:40), 1 % against the corrected form (the net contact stiffness and
+// the contact-plane tilt, a few tenths of a per cent).
+TEST(Wickens, KlingelFrequency) {
+  for (const auto& [method, inclination] :
+       std::vector<std::pair<std::string, int>>{{"kec", 60}, {"lut", 60}, {"lut", 40}}) {
+    Case c = compileCase("wickens_free.lua", setup(method, inclination));
+    const CentredParameters p = centredParameters(c);
+    const Springs s = springs(c);
+    EXPECT_EQ(s.ky, 0.0);
+    EXPECT_EQ(s.kpsi, 0.0);
+    const auto slow = linearise(c, 5.0).leastDamped();
+    const double klingel = klingelFrequency(p, 5.0);
+    const double rho = 1.0 + p.r0 * p.roll_slope;
+    const double zeta = -slow.real() / std::abs(slow);
+    const auto fast = linearise(c, 20.0).leastDamped();
+    std::printf(
+        "%s 1:%d free wheelset at 5 m/s: %.4g %+.4gi 1/s, zeta %.4f, Klingel %.4f rad/s (ratio "
+        "%.4f), corrected %.4f rad/s (ratio %.4f); at 20 m/s: %.4g %+.4gi 1/s\n",
+        method.c_str(), inclination, slow.real(), slow.imag(), zeta, klingel, slow.imag() / klingel,
+        klingel / std::sqrt(rho), slow.imag() * std::sqrt(rho) / klingel, fast.real(), fast.imag());
+    EXPECT_NEAR(slow.imag() / klingel, 1.0, 0.03) << method << " 1:" << inclination;
+    EXPECT_NEAR(slow.imag() * std::sqrt(rho) / klingel, 1.0, 0.01)
+        << method << " 1:" << inclination;
+    EXPECT_LT(std::abs(zeta), 0.01) << method << " 1:" << inclination;
+    EXPECT_GT(fast.real(), 0.0) << method << " 1:" << inclination;
   }
 }
 

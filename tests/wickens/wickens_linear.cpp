@@ -247,9 +247,8 @@ Linearisation linearise(Case& c, double v) {
   // one zero eigenvalue, dropped here (the one of smallest modulus).
   std::vector<std::complex<double>> ev(es.eigenvalues().begin(), es.eigenvalues().end());
   if (spin >= 0) {
-    const auto smallest = std::min_element(ev.begin(), ev.end(), [](auto a, auto b) {
-      return std::abs(a) < std::abs(b);
-    });
+    const auto smallest = std::min_element(
+        ev.begin(), ev.end(), [](auto a, auto b) { return std::abs(a) < std::abs(b); });
     ev.erase(smallest);
   }
   lin.eigenvalues = ev;

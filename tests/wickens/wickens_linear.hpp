@@ -33,14 +33,14 @@ Case compileCase(const std::string& scenario, const std::vector<std::string>& ov
 // where the closed form takes sums). Contact quantities of one wheel are the left wheel's (the
 // case is symmetric).
 struct CentredParameters {
-  int patches_per_wheel = 0;  // active contact patches of a wheel (KEC band: 2)
-  double r0 = 0.0;            // [m] rolling radius at the centred contact
-  double l0 = 0.0;            // [m] half lateral distance of the contact points
-  double lambda = 0.0;        // [-] d(r_l - r_r)/dy / 2 at y = 0
-  double dgamma_dy = 0.0;     // [rad/m] d(gamma_l - gamma_r)/dy at y = 0
-  double gamma0 = 0.0;        // [rad] centred contact angle
-  double normal = 0.0;        // [N] normal force of one wheel
-  double a = 0.0, b = 0.0;    // [m] Hertz semi-axes (rolling, lateral)
+  int patches_per_wheel = 0;               // active contact patches of a wheel (KEC band: 2)
+  double r0 = 0.0;                         // [m] rolling radius at the centred contact
+  double l0 = 0.0;                         // [m] half lateral distance of the contact points
+  double lambda = 0.0;                     // [-] d(r_l - r_r)/dy / 2 at y = 0
+  double dgamma_dy = 0.0;                  // [rad/m] d(gamma_l - gamma_r)/dy at y = 0
+  double gamma0 = 0.0;                     // [rad] centred contact angle
+  double normal = 0.0;                     // [N] normal force of one wheel
+  double a = 0.0, b = 0.0;                 // [m] Hertz semi-axes (rolling, lateral)
   double c11 = 0.0, c22 = 0.0, c23 = 0.0;  // Kalker coefficients at a/b, nu
   double f11 = 0.0, f22 = 0.0;             // [N] G c^2 C11, G c^2 C22 of one wheel
   double c33 = 0.0;                        // UNVERIFIED in the table (kalker.hpp)
