@@ -120,31 +120,41 @@ TEST(Wickens, ClosedFormCriticalSpeed) {
 // with our parameters changes it by 2.4 % over these inclinations (the creep coefficients, l0
 // and r0 move with the contact point), the effects it neglects by a further few per cent at most
 // (point 1 above), partly cancelling; the critical speed itself changes by a factor of 3.5.
+struct ConicityPoint {
+  double lambda = 0.0, v_c = 0.0;
+};
+
+// The conicity and linear critical speed at one inclination, with its smoothness checked.
+ConicityPoint conicityPoint(const std::string& method, int inclination) {
+  Case c = compileCase("wickens.lua", setup(method, inclination));
+  const CentredParameters p = centredParameters(c);
+  const CentredParameters fine = centredParameters(c, 1e-6);
+  const CentredParameters coarse = centredParameters(c, 1e-4);
+  EXPECT_EQ(p.patches_per_wheel, 1) << method << " 1:" << inclination;
+  EXPECT_NEAR(fine.lambda / coarse.lambda, 1.0, 0.01) << method << " 1:" << inclination;
+  const double vw = closedFormCriticalSpeed(p, springs(c));
+  long evaluations = 0;
+  const double v = linearCriticalSpeed(c, 0.5 * vw, 1.5 * vw, kBisectionTolerance, &evaluations);
+  std::printf(
+      "%s 1:%d: lambda %.5f (1 um %.5f, 0.1 mm %.5f), V_c ours %.3f m/s, Wickens %.3f m/s "
+      "(%+.2f %%), V_c sqrt(lambda) ours %.4f, Wickens %.4f, %ld evaluations\n",
+      method.c_str(), inclination, p.lambda, fine.lambda, coarse.lambda, v, vw,
+      100.0 * (v / vw - 1.0), v * std::sqrt(p.lambda), vw * std::sqrt(p.lambda), evaluations);
+  return {p.lambda, v};
+}
+
 TEST(Wickens, ConicityScaling) {
-  for (const char* method : {"kec", "lut"}) {
-    std::vector<double> lambda, v_c, scaled;
-    for (const int inclination : {20, 30, 60}) {
-      Case c = compileCase("wickens.lua", setup(method, inclination));
-      const CentredParameters p = centredParameters(c);
-      const CentredParameters fine = centredParameters(c, 1e-6);
-      const CentredParameters coarse = centredParameters(c, 1e-4);
-      EXPECT_EQ(p.patches_per_wheel, 1) << method << " 1:" << inclination;
-      EXPECT_NEAR(fine.lambda / coarse.lambda, 1.0, 0.01) << method << " 1:" << inclination;
-      const double vw = closedFormCriticalSpeed(p, springs(c));
-      long evaluations = 0;
-      const double v =
-          linearCriticalSpeed(c, 0.5 * vw, 1.5 * vw, kBisectionTolerance, &evaluations);
-      std::printf(
-          "%s 1:%d: lambda %.5f (1 um %.5f, 0.1 mm %.5f), V_c ours %.3f m/s, Wickens %.3f m/s "
-          "(%+.2f %%), V_c sqrt(lambda) ours %.4f, Wickens %.4f, %ld evaluations\n",
-          method, inclination, p.lambda, fine.lambda, coarse.lambda, v, vw, 100.0 * (v / vw - 1.0),
-          v * std::sqrt(p.lambda), vw * std::sqrt(p.lambda), evaluations);
-      lambda.push_back(p.lambda);
-      v_c.push_back(v);
-      scaled.push_back(v * std::sqrt(p.lambda));
+  for (const std::string method : {"kec", "lut"}) {
+    std::vector<ConicityPoint> points;
+    for (const int inclination : {20, 30, 60}) points.push_back(conicityPoint(method, inclination));
+    std::vector<double> scaled, v_c;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      if (k > 0)
+        EXPECT_GT(points[k].lambda / points[k - 1].lambda, 1.5)
+            << method << ": conicities not distinct";
+      scaled.push_back(points[k].v_c * std::sqrt(points[k].lambda));
+      v_c.push_back(points[k].v_c);
     }
-    for (std::size_t k = 1; k < lambda.size(); ++k)
-      EXPECT_GT(lambda[k] / lambda[k - 1], 1.5) << method << ": conicities not distinct";
     const auto [lo, hi] = std::minmax_element(scaled.begin(), scaled.end());
     EXPECT_LT(*hi / *lo - 1.0, 0.03) << method;
     const auto [v_lo, v_hi] = std::minmax_element(v_c.begin(), v_c.end());
