@@ -149,9 +149,10 @@ TEST(Wickens, ConicityScaling) {
     for (const int inclination : {20, 30, 60}) points.push_back(conicityPoint(method, inclination));
     std::vector<double> scaled, v_c;
     for (std::size_t k = 0; k < points.size(); ++k) {
-      if (k > 0)
+      if (k > 0) {
         EXPECT_GT(points[k].lambda / points[k - 1].lambda, 1.5)
             << method << ": conicities not distinct";
+      }
       scaled.push_back(points[k].v_c * std::sqrt(points[k].lambda));
       v_c.push_back(points[k].v_c);
     }
