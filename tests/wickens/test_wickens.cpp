@@ -17,6 +17,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -26,6 +28,23 @@ namespace rbtest::wickens {
 namespace {
 
 constexpr double kBisectionTolerance = 1e-4;  // relative, on the speed
+
+// The measured rows for docs/stability.md (plots/railbench/docs_stability.py reads
+// <build>/stability/NAME.csv): header first, one line per case.
+void writeCsv(const std::string& name, const std::string& header,
+              const std::vector<std::string>& rows) {
+  const std::filesystem::path dir = std::filesystem::path(RB_BINARY_DIR) / "stability";
+  std::filesystem::create_directories(dir);
+  std::ofstream f(dir / (name + ".csv"));
+  f << header << "\n";
+  for (const auto& r : rows) f << r << "\n";
+}
+
+std::string csvRow(const char* format, auto... values) {
+  char line[512];
+  std::snprintf(line, sizeof line, format, values...);
+  return line;
+}
 
 // Contact method and rail inclination 1 : denominator.
 std::vector<std::string> setup(const std::string& method, int denominator) {
@@ -102,15 +121,24 @@ TEST(Wickens, CentredStateIsSteady) {
 //    / r0 ~ 5e3 N m/rad against k_psi = 8e5, 0.7 %, entering V_c^2 through a fraction of A1),
 //    the tilt of the contact plane (cos gamma0 = 0.998), the bisection (1e-4).
 TEST(Wickens, ClosedFormCriticalSpeed) {
+  std::vector<std::string> rows;
   for (const auto& [method, inclination] :
        std::vector<std::pair<std::string, int>>{{"kec", 60}, {"lut", 60}, {"lut", 40}}) {
     const Comparison r = compare(method, inclination);
+    rows.push_back(csvRow("%s,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%ld",
+                          method.c_str(), inclination, r.p.lambda, r.p.l0, r.p.r0, r.p.f11, r.p.f22,
+                          r.p.k_gravity, r.p.k_spin, r.v_ours, r.v_wickens, r.v_extended, r.v_spin,
+                          r.evaluations));
     EXPECT_NEAR(r.v_ours / r.v_wickens, 1.0, 0.08) << method << " 1:" << inclination;
     EXPECT_NEAR(r.v_ours / r.v_spin, 1.0, 0.01) << method << " 1:" << inclination;
     EXPECT_GT(r.v_ours, 20.0);
     EXPECT_LT(r.v_ours, 200.0);
     EXPECT_LT(r.evaluations, 400);  // a few hundred rhs evaluations per critical speed
   }
+  writeCsv("wickens",
+           "method,inclination,lambda,l0_m,r0_m,f11_N,f22_N,k_grav_N_per_m,k_spin_N_per_m,"
+           "v_ours,v_wickens,v_wickens_kgrav_kspin,v_extended_2dof,rhs_evals",
+           rows);
 }
 
 // Conicity through the rail inclination: 1:20, 1:30 and 1:60 give distinct conicities at y = 0
@@ -125,7 +153,8 @@ struct ConicityPoint {
 };
 
 // The conicity and linear critical speed at one inclination, with its smoothness checked.
-ConicityPoint conicityPoint(const std::string& method, int inclination) {
+ConicityPoint conicityPoint(const std::string& method, int inclination,
+                            std::vector<std::string>& rows) {
   Case c = compileCase("wickens.lua", setup(method, inclination));
   const CentredParameters p = centredParameters(c);
   const CentredParameters fine = centredParameters(c, 1e-6);
@@ -140,13 +169,18 @@ ConicityPoint conicityPoint(const std::string& method, int inclination) {
       "(%+.2f %%), V_c sqrt(lambda) ours %.4f, Wickens %.4f, %ld evaluations\n",
       method.c_str(), inclination, p.lambda, fine.lambda, coarse.lambda, v, vw,
       100.0 * (v / vw - 1.0), v * std::sqrt(p.lambda), vw * std::sqrt(p.lambda), evaluations);
+  rows.push_back(csvRow("%s,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%ld", method.c_str(), inclination,
+                        p.lambda, fine.lambda, coarse.lambda, v, vw, v * std::sqrt(p.lambda),
+                        evaluations));
   return {p.lambda, v};
 }
 
 TEST(Wickens, ConicityScaling) {
+  std::vector<std::string> rows;
   for (const std::string method : {"kec", "lut"}) {
     std::vector<ConicityPoint> points;
-    for (const int inclination : {20, 30, 60}) points.push_back(conicityPoint(method, inclination));
+    for (const int inclination : {20, 30, 60})
+      points.push_back(conicityPoint(method, inclination, rows));
     std::vector<double> scaled, v_c;
     for (std::size_t k = 0; k < points.size(); ++k) {
       if (k > 0) {
@@ -161,6 +195,10 @@ TEST(Wickens, ConicityScaling) {
     const auto [v_lo, v_hi] = std::minmax_element(v_c.begin(), v_c.end());
     EXPECT_GT(*v_hi / *v_lo - 1.0, 0.5) << method << ": the test could not see a failed scaling";
   }
+  writeCsv("conicity",
+           "method,inclination,lambda,lambda_1um,lambda_0p1mm,v_ours,v_wickens,v_sqrt_lambda,"
+           "rhs_evals",
+           rows);
 }
 
 // Without springs (wickens_free.lua) the wheelset's lateral mode is Klingel's kinematic
@@ -175,6 +213,7 @@ TEST(Wickens, ConicityScaling) {
 // 2.1 % at 1:60, 0.7 % at 1:40), 1 % against the corrected form (the net contact stiffness and
 // the contact-plane tilt, a few tenths of a per cent).
 TEST(Wickens, KlingelFrequency) {
+  std::vector<std::string> rows;
   for (const auto& [method, inclination] :
        std::vector<std::pair<std::string, int>>{{"kec", 60}, {"lut", 60}, {"lut", 40}}) {
     Case c = compileCase("wickens_free.lua", setup(method, inclination));
@@ -197,7 +236,13 @@ TEST(Wickens, KlingelFrequency) {
         << method << " 1:" << inclination;
     EXPECT_LT(std::abs(zeta), 0.01) << method << " 1:" << inclination;
     EXPECT_GT(fast.real(), 0.0) << method << " 1:" << inclination;
+    rows.push_back(csvRow("%s,%d,%.6g,%.6g,%.6g,%.6g,%.6g", method.c_str(), inclination,
+                          slow.imag(), zeta, klingel, klingel / std::sqrt(rho), fast.real()));
   }
+  writeCsv("klingel",
+           "method,inclination,omega_5ms,zeta_5ms,omega_klingel,omega_klingel_corrected,"
+           "re_20ms",
+           rows);
 }
 
 }  // namespace
