@@ -11,6 +11,7 @@
     precision DIR [...]                      `workbench precision`: errors, Pareto front (precision.py)
     stress DIR [...]                         `workbench stress`: the stability map (stress.py)
     effects DIR [...]                        `workbench effects`: cost and change per effect (effects_cmd.py)
+    modes DIR [--dpi N]                      `workbench modes`: root locus, damping vs speed (modes.py)
 
 Each command's own --help tells its options.  Exit status 0 on success, 1 on an error (one line
 "railbench COMMAND: error: ..." on stderr).
@@ -31,6 +32,7 @@ COMMANDS = {
     "precision": "precision",
     "stress": "stress",
     "effects": "effects_cmd",
+    "modes": "modes",
 }
 
 
