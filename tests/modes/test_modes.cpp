@@ -107,6 +107,32 @@ TEST(Modes, NeedsContact) {
   EXPECT_THROW(stability::analyse(s, 20.0), stability::Failure);
 }
 
+// In the R = 500 m curve of the paper's case 3 (20 m/s) the steady state is the curving
+// equilibrium, found after the BDF settle: the wheelsets off centre by millimetres, a small
+// residual; with the vehicle in the transition no steady state exists and the analysis says why.
+TEST(Modes, CurveSteadyState) {
+  scenario::LoadOptions lo;
+  lo.root = kRoot;
+  const scenario::ScenarioSpec s =
+      scenario::loadScenario(kRoot + "/scenarios/studies/case3_base.lua", lo);
+  stability::Options o;
+  o.distance = 300.0;
+  const stability::Analysis a = stability::analyse(s, 20.0, o);
+  EXPECT_TRUE(a.steady.fallback);
+  EXPECT_LT(a.steady.residual, 1e-6);
+  EXPECT_GT(a.steady.max_ws_lateral, 1e-3);
+  EXPECT_LT(a.steady.max_ws_lateral, 12e-3);
+  EXPECT_TRUE(a.step_check_ok);
+  ASSERT_NE(find(a, "car body lower sway"), nullptr);
+  o.distance = 130.0;
+  try {
+    (void)stability::analyse(s, 20.0, o);
+    ADD_FAILURE() << "a steady state in the transition";
+  } catch (const stability::Failure& e) {
+    EXPECT_NE(std::string(e.what()).find("constant-radius"), std::string::npos) << e.what();
+  }
+}
+
 // The linear critical speed exists between 20 and 120 m/s and falls as the primary longitudinal
 // (yaw) stiffness falls from the wagon's 31.4 MN/m (the yaw stiffness 2 Kpx b^2 holds the
 // wheelsets in the bogie against the kinematic yaw of hunting), for KEC and LUT. Above the nominal

@@ -155,6 +155,9 @@ CLI::App* addModesCommand(CLI::App& app, ModesOptions& o) {
   c->add_option("--speeds", o.speeds, "speeds a:b:n [m/s] (default: the scenario's speed)");
   c->add_option("--contact", o.contact, "contact method kec or lut (default: the scenario's)");
   c->add_flag("--no-plots", o.no_plots, "no figures");
+  c->add_option("--distance", o.distance,
+                "travelled distance [m] of the linearisation point (default 0: the start; in a "
+                "constant-radius curve the steady state is the curving equilibrium)");
   c->add_option("--fd-scale", o.fd_scale,
                 "factor on the finite-difference steps of the Jacobian (default 1: 1e-8 m/rad, "
                 "1e-7 m/s, 0.01 N)");
@@ -175,8 +178,11 @@ int runModes(const ModesOptions& o) {
   if (ec) throw InputError({so.out, 0}, "cannot create the output folder: " + ec.message());
   if (!(o.fd_scale > 0.0) || !std::isfinite(o.fd_scale) || o.fd_scale > 1e3)
     throw InputError({"--fd-scale", 0}, "--fd-scale must be in (0, 1000]");
+  if (!(o.distance >= 0.0) || !std::isfinite(o.distance))
+    throw InputError({"--distance", 0}, "--distance must be >= 0 m");
   stability::Options so_opts;
   so_opts.step_scale = o.fd_scale;
+  so_opts.distance = o.distance;
   stability::Analyser an(scene.spec, so_opts);
   std::vector<stability::Analysis> sweep;
   std::string failure;

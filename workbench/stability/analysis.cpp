@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "workbench/core/error.hpp"
+#include "workbench/core/strings.hpp"
 #include "workbench/dynamics/contact_model.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
 #include "workbench/integrators/integrator.hpp"
@@ -120,12 +121,13 @@ bool newton(dynamics::ContactVehicleOde& ode, Steady& st, const std::vector<int>
 }
 
 // Fallback: let the transients die with BDF, then Newton again from there.
-bool settle(dynamics::ContactVehicleOde& ode, Steady& st, const Options& o) {
+bool settle(dynamics::ContactVehicleOde& ode, Steady& st, const Options& o, std::string& why) {
   integ::SolverSpec s;
   s.method = integ::kBdf;
-  s.rtol = 1e-8;
-  s.atol = 1e-10;
+  s.rtol = 1e-6;
+  s.atol = 1e-9;
   s.step = 0.0;
+  s.max_steps = 1000000;
   auto integrator = integ::makeIntegrator(s);
   VectorXd last = st.y;
   const double t1 = st.t + o.settle_time;
@@ -134,10 +136,38 @@ bool settle(dynamics::ContactVehicleOde& ode, Steady& st, const Options& o) {
         last = y;
         return true;
       });
-  if (!res.ok) return false;
+  if (!res.ok) {
+    why = res.message;
+    return false;
+  }
   st.y = last;
   st.t = t1;
   return true;
+}
+
+// The curvature of the track under the vehicle when every body lies on tangents or on one
+// constant-radius curve with a constant cant from t0 to t1 (a fixed point in the track frame
+// exists only there); throws Failure naming the body otherwise.
+double uniformCurvature(const vehicle::VehicleModel& vm, const track::TrackGeometry& g, double t0,
+                        double t1) {
+  double kappa = 0.0, cant = 0.0;
+  bool first = true;
+  for (std::size_t b = 0; b < vm.bodies.size(); ++b)
+    for (const double t : {t0, t1}) {
+      const double s = vm.bodyS(static_cast<int>(b), t);
+      const track::Segment& seg = g.segments()[g.segmentIndex(s)];
+      const bool same = first || (seg.kappa0 == kappa && seg.u0 == cant);
+      if (seg.kappa0 != seg.kappa1 || seg.u0 != seg.u1 || !same)
+        throw Failure("no steady state: body '" + vm.bodies[b].name +
+                      "' at s = " + formatNumber(s) +
+                      " m is not on the tangent or constant-radius curve of the rest of the "
+                      "vehicle (a transition, or a change of radius or cant); choose a distance "
+                      "with the whole vehicle on one tangent or curve");
+      kappa = seg.kappa0;
+      cant = seg.u0;
+      first = false;
+    }
+  return kappa;
 }
 
 std::vector<Coordinate> bodyCoordinates(const vehicle::VehicleOde& ode) {
@@ -297,15 +327,29 @@ Analysis Analyser::analyse(double speed) {
   const std::vector<int> keep = keptStates(ode.layout());
   long fd_evals = 0;
   try {
-    if (!newton(ode, st, keep, options_, &fd_evals)) {
+    // On a tangent the centred start is the steady state up to the suspension's static
+    // deflections: Newton from it. In a curve the wheelsets must first find their rolling-radius
+    // difference (often on the flange): settle with BDF first, then Newton.
+    const double kappa = uniformCurvature(vm, tr.geometry(), st.t, st.t);
+    const VectorXd y0 = st.y;
+    const bool converged = kappa == 0.0 && newton(ode, st, keep, options_, &fd_evals);
+    if (!converged) {
       st.fallback = true;
-      a.notes.push_back(
-          "Newton did not converge from the static equilibrium: BDF settle, then "
-          "Newton");
-      if (!settle(ode, st, options_) || !newton(ode, st, keep, options_, &fd_evals))
-        throw Failure("no steady state at " + std::to_string(speed) +
-                      " m/s: Newton and the BDF settle did not converge (scaled residual " +
-                      std::to_string(st.residual) + " after " + std::to_string(st.iterations) +
+      st.y = y0;  // the settle starts where Newton started, not where it got stuck
+      a.notes.push_back(kappa == 0.0 ? "Newton did not converge from the static equilibrium: "
+                                       "BDF settle, then Newton"
+                                     : "curve: BDF settle from the static equilibrium, then "
+                                       "Newton");
+      (void)uniformCurvature(vm, tr.geometry(), st.t, st.t + options_.settle_time);
+      std::string why;
+      if (!settle(ode, st, options_, why))
+        throw Failure("no steady state at " + formatNumber(speed) + " m/s: the BDF settle of " +
+                      formatNumber(options_.settle_time) + " s failed: " + why);
+      if (!newton(ode, st, keep, options_, &fd_evals))
+        throw Failure("no steady state at " + formatNumber(speed) +
+                      " m/s: Newton did not converge after a BDF settle of " +
+                      formatNumber(options_.settle_time) + " s (scaled residual " +
+                      formatNumber(st.residual) + " after " + std::to_string(st.iterations) +
                       " iterations)");
     }
     for (int w = 0; w < ode.layout().n_ws; ++w)

@@ -37,12 +37,14 @@ class Failure : public std::runtime_error {
 };
 
 struct Options {
-  double distance = 0.0;      // [m] travelled distance of the linearisation point (a curve)
-  double step_scale = 1.0;    // multiplies every finite-difference step (fdSteps)
-  int max_newton = 40;        // Newton iterations per attempt
-  double newton_tol = 1e-9;   // scaled residual (Steady::residual) accepted as converged
-  double settle_time = 20.0;  // [s] BDF integration of the fallback
-  bool step_check = true;     // eigenvalues again with the steps / step_check_ratio
+  double distance = 0.0;     // [m] travelled distance of the linearisation point (a curve)
+  double step_scale = 1.0;   // multiplies every finite-difference step (fdSteps)
+  int max_newton = 40;       // Newton iterations per attempt
+  double newton_tol = 1e-9;  // scaled residual (Steady::residual) accepted as converged
+  // [s] BDF integration of the fallback: the vehicle travels V settle_time further, which must
+  // stay on the same constant-radius curve (or tangent) for the settled state to be its fixed point
+  double settle_time = 5.0;
+  bool step_check = true;  // eigenvalues again with the steps / step_check_ratio
   double step_check_ratio = 3.1622776601683795;  // sqrt(10): see StepRule
   double step_check_limit = 1e-2;  // largest accepted relative change of a relevant eigenvalue
   std::string table_cache;         // contact-table disk cache folder ("" = memory only)
