@@ -25,8 +25,14 @@ std::string noneInRange(const std::vector<Analysis>& sweep) {
   return s.str();
 }
 
-// Refines the bracket [a, b] (damping fa > 0 >= fb) to tol.
-void refine(Analyser& an, CriticalSpeed& c, double a, double fa, double b, double fb, double tol) {
+// A bracket of the critical speed: speeds a < b with the damping fa > 0 >= fb.
+struct Bracket {
+  double a, fa, b, fb;
+};
+
+// Refines the bracket to tol.
+void refine(Analyser& an, CriticalSpeed& c, Bracket br, double tol) {
+  auto& [a, fa, b, fb] = br;
   int side = 0;
   for (int it = 0; it < 40 && b - a > tol; ++it) {
     double v = b - fb * (b - a) / (fb - fa);
@@ -66,7 +72,7 @@ CriticalSpeed linearCriticalSpeed(Analyser& an, std::vector<Analysis> sweep, dou
     const double fb = c.sweep[i + 1].huntingDamping();
     if (fa > 0.0 && fb <= 0.0) {
       try {
-        refine(an, c, c.sweep[i].speed, fa, c.sweep[i + 1].speed, fb, tol);
+        refine(an, c, {c.sweep[i].speed, fa, c.sweep[i + 1].speed, fb}, tol);
       } catch (const Failure& e) {
         c.found = true;  // the sweep's bracket stands
         c.bracket_lo = c.sweep[i].speed;
