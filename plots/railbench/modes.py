@@ -3,9 +3,10 @@
     plots/rbplot modes DIR [--dpi N]
 
 DIR is the output folder of `workbench modes` (modes.h5). Writes DIR/modes_root_locus.png (Re
-against Im of the hunting-relevant modes: wheelset and bogie hunting, car body sway and yaw,
-coloured by speed) and DIR/modes_damping.png (damping ratio of those modes against speed, the least
-damped hunting mode drawn bold, the linear critical speed marked). Exit status 0 drawn, 1 bad input.
+against Im of the hunting-relevant modes: wheelset and bogie hunting, bogie yaw/lateral, car body
+sway and yaw, coloured by speed) and DIR/modes_damping.png (damping ratio of those modes against
+speed, the least damped hunting mode drawn bold, the linear critical speed marked). Exit status 0
+drawn, 1 bad input.
 """
 from __future__ import annotations
 
@@ -16,7 +17,10 @@ import numpy as np
 
 from .common import error, parser, save_figure
 
-RELEVANT = ("hunting", "sway", "car body yaw")
+RELEVANT = ("hunting", "sway", "car body yaw", "bogie yaw/lateral")
+# The root locus shows the lightly damped modes, which decide the stability; the wheelsets' own
+# creep-damped pairs (damping ratio near 1, Re ~ -500 1/s) would squash them against the axis.
+LOCUS_MAX_DAMPING = 0.6
 
 
 def _str(v) -> str:
@@ -58,8 +62,8 @@ def _root_locus(d: dict):
     norm = colors.Normalize(vmin=v.min(), vmax=max(v.max(), v.min() + 1e-9))
     markers = {}
     for speed, s in zip(v, d["per_speed"]):
-        for re, im, lab in zip(s["re"], s["im"], s["label"]):
-            if not _relevant(lab) or im <= 0:
+        for re, im, z, lab in zip(s["re"], s["im"], s["zeta"], s["label"]):
+            if not _relevant(lab) or im <= 0 or z > LOCUS_MAX_DAMPING:
                 continue
             mk = markers.setdefault(lab, "os^vD<>ph*"[len(markers) % 10])
             ax.scatter(re, im, c=[cm.viridis(norm(speed))], marker=mk, s=22)
@@ -68,7 +72,8 @@ def _root_locus(d: dict):
     ax.axvline(0.0, color="k", lw=0.8)
     ax.set_xlabel("Re $\\lambda$ [1/s]")
     ax.set_ylabel("Im $\\lambda$ [rad/s]")
-    ax.set_title(f"Root locus ({d['method']}, {d['creep']})")
+    ax.set_title(f"Root locus ({d['method']}, {d['creep']}; damping ratio <= "
+                 f"{LOCUS_MAX_DAMPING})")
     sm = cm.ScalarMappable(norm=norm, cmap=cm.viridis)
     fig.colorbar(sm, ax=ax, label="speed [m/s]")
     ax.legend(fontsize=7, loc="upper left")

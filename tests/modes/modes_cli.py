@@ -68,6 +68,16 @@ def hostile(wb, out, failures):
                   failures)
     rc, so, se = run(wb, ["no_such_file.lua", "--out", os.path.join(out, "hostile")])
     check(rc == 1, f"missing scenario: exit {rc}", failures)
+    # No steady state (the vehicle in the transition of case 3): exit 2 with the reason.
+    rc, so, se = run(wb, ["scenarios/studies/case3_base.lua", "--distance", "130", "--out",
+                          os.path.join(out, "transition"), "--no-plots"])
+    check(rc == 2, f"vehicle in a transition: exit {rc}", failures)
+    check("constant-radius" in se, f"vehicle in a transition: no reason given: {se.strip()}",
+          failures)
+    for v in ("-1", "nan"):
+        rc, so, se = run(wb, [WAGON, "--distance", v, "--out", os.path.join(out, "hostile"),
+                              "--no-plots"])
+        check(rc == 1 and "--distance" in se, f"--distance {v}: exit {rc}", failures)
 
 
 def main():
