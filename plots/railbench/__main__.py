@@ -12,6 +12,7 @@
     stress DIR [...]                         `workbench stress`: the stability map (stress.py)
     effects DIR [...]                        `workbench effects`: cost and change per effect (effects_cmd.py)
     critical-speed DIR [...]                 `workbench critical-speed`: bifurcation diagram (critical_speed.py)
+    modes DIR [--dpi N]                      `workbench modes`: root locus, damping vs speed (modes.py)
 
 Each command's own --help tells its options.  Exit status 0 on success, 1 on an error (one line
 "railbench COMMAND: error: ..." on stderr).
@@ -33,6 +34,7 @@ COMMANDS = {
     "stress": "stress",
     "effects": "effects_cmd",
     "critical-speed": "critical_speed",
+    "modes": "modes",
 }
 
 

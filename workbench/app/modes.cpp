@@ -1,11 +1,153 @@
 #include "workbench/app/modes.hpp"
 
 #include <CLI/CLI.hpp>
-#include <stdexcept>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
 
 #include "workbench/app/stability_scene.hpp"
+#include "workbench/core/error.hpp"
+#include "workbench/io/modes_file.hpp"
+#include "workbench/stability/stability.hpp"
+
+namespace fs = std::filesystem;
 
 namespace rb::app {
+
+namespace {
+
+constexpr int kMaxSpeeds = 200;
+
+[[noreturn]] void badSpeeds(const std::string& why) {
+  throw InputError({"--speeds", 0}, "--speeds " + why);
+}
+
+double speedNumber(const std::string& text) {
+  std::size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    badSpeeds("expects a:b:n (speeds in m/s, n an integer), got '" + text + "'");
+  }
+  if (used != text.size() || !std::isfinite(v))
+    badSpeeds("expects a:b:n (speeds in m/s, n an integer), got '" + text + "'");
+  return v;
+}
+
+// "a:b:n" -> n speeds from a to b (n = 1: a alone).
+std::vector<double> parseSpeeds(const std::string& text) {
+  std::vector<std::string> parts;
+  std::stringstream ss(text);
+  for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
+  if (parts.size() != 3 || text.back() == ':')
+    badSpeeds("expects a:b:n (e.g. 20:90:15), got '" + text + "'");
+  const double a = speedNumber(parts[0]);
+  const double b = speedNumber(parts[1]);
+  const double nd = speedNumber(parts[2]);
+  if (!(a > 0.0)) badSpeeds("a must be > 0 m/s, got " + parts[0]);
+  if (!(b >= a)) badSpeeds("b must be >= a, got " + parts[1]);
+  if (nd != std::floor(nd) || nd < 1.0) badSpeeds("n must be an integer >= 1, got " + parts[2]);
+  if (nd > kMaxSpeeds)
+    badSpeeds("n must be at most " + std::to_string(kMaxSpeeds) + ", got " + parts[2]);
+  const int n = static_cast<int>(nd);
+  if (n > 1 && b == a) badSpeeds("b must be > a when n > 1");
+  std::vector<double> v;
+  for (int i = 0; i < n; ++i) v.push_back(n == 1 ? a : a + (b - a) * i / (n - 1));
+  return v;
+}
+
+io::ModesAtSpeed toFile(const stability::Analysis& a) {
+  io::ModesAtSpeed s;
+  s.speed = a.speed;
+  for (const auto& c : a.coordinates) s.coordinates.push_back(c.name);
+  for (const auto& m : a.modes) {
+    s.re.push_back(m.eigenvalue.real());
+    s.im.push_back(m.eigenvalue.imag());
+    s.frequency.push_back(m.frequency_hz);
+    s.damping.push_back(m.damping_ratio);
+    s.step_change.push_back(m.step_change);
+    s.labels.push_back(m.label);
+    s.dominant.push_back(m.dominant);
+    s.hunting.push_back(m.hunting ? 1.0 : 0.0);
+    s.participation.insert(s.participation.end(), m.participation.begin(), m.participation.end());
+  }
+  s.residual = a.steady.residual;
+  s.residual_raw = a.steady.residual_raw;
+  s.max_ws_lateral = a.steady.max_ws_lateral;
+  s.iterations = a.steady.iterations;
+  s.fallback = a.steady.fallback;
+  s.states = a.states;
+  s.rhs_evaluations = a.rhs_evaluations;
+  s.step_check = a.step_check;
+  s.step_check_ok = a.step_check_ok;
+  s.hunting_damping = a.huntingDamping();
+  s.cpu_s = a.cpu_s;
+  return s;
+}
+
+void writeCsv(const std::string& path, const std::vector<stability::Analysis>& all) {
+  std::ofstream f(path);
+  f << "speed_m_s,mode,re_1_s,im_1_s,frequency_hz,damping_ratio,label,dominant,hunting,"
+       "step_change\n";
+  f.precision(10);
+  for (const auto& a : all)
+    for (std::size_t i = 0; i < a.modes.size(); ++i) {
+      const auto& m = a.modes[i];
+      f << a.speed << "," << i << "," << m.eigenvalue.real() << "," << m.eigenvalue.imag() << ","
+        << m.frequency_hz << "," << m.damping_ratio << "," << m.label << "," << m.dominant << ","
+        << (m.hunting ? 1 : 0) << "," << m.step_change << "\n";
+    }
+  if (!f) throw InputError({path, 0}, "cannot write the modes table");
+}
+
+// The body modes below 30 Hz (the stiff creep and series modes are in the files).
+void printSpeed(const stability::Analysis& a) {
+  std::printf(
+      "\nV = %.2f m/s (%s, %s, spin %s): steady residual %.2e (%d Newton iterations%s), max |ws "
+      "y| %.2e m, step check %.2e (%s), %ld rhs, %.2f s CPU\n",
+      a.speed, a.method.c_str(), a.creep.c_str(), a.spin.c_str(), a.steady.residual,
+      a.steady.iterations, a.steady.fallback ? ", after a BDF settle" : "", a.steady.max_ws_lateral,
+      a.step_check, a.step_check_ok ? "passed" : "FAILED", a.rhs_evaluations, a.cpu_s);
+  std::printf("  %-34s %10s %10s %9s  %s\n", "mode", "f [Hz]", "zeta [-]", "Re [1/s]", "dominant");
+  for (const auto& m : a.modes) {
+    if (!m.oscillatory || m.frequency_hz >= 30.0) continue;
+    std::printf("  %-34s %10.3f %10.4f %9.3f  %s\n", m.label.c_str(), m.frequency_hz,
+                m.damping_ratio, m.eigenvalue.real(), m.dominant.c_str());
+  }
+}
+
+io::ModesSummary summaryOf(const stability::CriticalSpeed& c, const stability::Analysis& first,
+                           const std::string& scenario, bool sweep) {
+  io::ModesSummary s;
+  s.method = first.method;
+  s.creep = first.creep;
+  s.spin = first.spin;
+  s.scenario = scenario;
+  s.notes = first.notes;
+  s.cpu_s = c.cpu_s;
+  s.rhs_evaluations = c.rhs_evaluations;
+  for (const auto& r : c.refinement) {
+    s.refinement_speeds.push_back(r.speed);
+    s.refinement_damping.push_back(r.huntingDamping());
+  }
+  if (c.found) {
+    s.critical_speed = c.speed;
+    s.bracket_lo = c.bracket_lo;
+    s.bracket_hi = c.bracket_hi;
+    std::ostringstream t;
+    t << c.speed;
+    s.critical = t.str();
+  } else {
+    s.critical = sweep ? c.why : "none in range (one speed: no sweep)";
+  }
+  return s;
+}
+
+}  // namespace
 
 CLI::App* addModesCommand(CLI::App& app, ModesOptions& o) {
   auto* c = addScenarioCommand(
@@ -13,15 +155,67 @@ CLI::App* addModesCommand(CLI::App& app, ModesOptions& o) {
   c->add_option("--speeds", o.speeds, "speeds a:b:n [m/s] (default: the scenario's speed)");
   c->add_option("--contact", o.contact, "contact method kec or lut (default: the scenario's)");
   c->add_flag("--no-plots", o.no_plots, "no figures");
+  c->add_option("--distance", o.distance,
+                "travelled distance [m] of the linearisation point (default 0: the start; in a "
+                "constant-radius curve the steady state is the curving equilibrium)");
+  c->add_option("--fd-scale", o.fd_scale,
+                "factor on the finite-difference steps of the Jacobian (default 1: 1e-8 m/rad, "
+                "1e-7 m/s, 0.01 N)");
   return c;
 }
 
 int runModes(const ModesOptions& o) {
+  std::vector<double> speeds;
+  if (!o.speeds.empty()) speeds = parseSpeeds(o.speeds);
   const StudyOptions so = commandStudyOptions(o, "modes");
   const StabilityScene scene =
       loadStabilityScene(o.scenario, o.contact, o.overrides, o.root, so.out);
-  (void)scene;
-  throw std::runtime_error("workbench modes: not implemented yet");
+  if (speeds.empty()) speeds.push_back(scene.spec.vehicle.speed);
+  if (!(speeds.front() > 0.0))
+    throw InputError(scene.spec.vehicle.loc, "vehicle.speed must be > 0 for workbench modes");
+  std::error_code ec;
+  fs::create_directories(so.out, ec);
+  if (ec) throw InputError({so.out, 0}, "cannot create the output folder: " + ec.message());
+  if (!(o.fd_scale > 0.0) || !std::isfinite(o.fd_scale) || o.fd_scale > 1e3)
+    throw InputError({"--fd-scale", 0}, "--fd-scale must be in (0, 1000]");
+  if (!(o.distance >= 0.0) || !std::isfinite(o.distance))
+    throw InputError({"--distance", 0}, "--distance must be >= 0 m");
+  stability::Options so_opts;
+  so_opts.step_scale = o.fd_scale;
+  so_opts.distance = o.distance;
+  stability::Analyser an(scene.spec, so_opts);
+  std::vector<stability::Analysis> sweep;
+  std::string failure;
+  for (double v : speeds) {
+    try {
+      sweep.push_back(an.analyse(v));
+      printSpeed(sweep.back());
+    } catch (const stability::Failure& e) {
+      failure = e.what();
+      break;
+    }
+  }
+  if (sweep.empty()) {
+    std::fprintf(stderr, "workbench modes: %s\n", failure.c_str());
+    return 2;
+  }
+  const bool swept = sweep.size() > 1;
+  const stability::CriticalSpeed crit = stability::linearCriticalSpeed(an, std::move(sweep));
+  std::vector<io::ModesAtSpeed> rows;
+  for (const auto& a : crit.sweep) rows.push_back(toFile(a));
+  const io::ModesSummary sum = summaryOf(crit, crit.sweep.front(), scene.file, swept);
+  const std::string h5 = (fs::path(so.out) / "modes.h5").string();
+  io::writeModesFile(h5, rows, sum);
+  writeCsv((fs::path(so.out) / "modes.csv").string(), crit.sweep);
+  std::printf("\nlinear critical speed: %s%s\ncost: %.2f s CPU, %lld rhs evaluations\nwrote %s\n",
+              sum.critical.c_str(), crit.found ? " m/s" : "", sum.cpu_s,
+              static_cast<long long>(sum.rhs_evaluations), h5.c_str());
+  if (!failure.empty()) {
+    std::fprintf(stderr, "workbench modes: stopped: %s\n", failure.c_str());
+    return 2;
+  }
+  if (o.no_plots) return 0;
+  return runPlots(so, {"modes", so.out});
 }
 
 }  // namespace rb::app

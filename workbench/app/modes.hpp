@@ -14,6 +14,8 @@ struct ModesOptions : ScenarioCommandOptions {
   std::string contact;  // "kec" / "lut": the contact method ("" = the scenario's; kec for a
                         // vehicle file)
   bool no_plots = false;
+  double distance = 0.0;  // [m] travelled distance of the linearisation point (in a curve)
+  double fd_scale = 1.0;  // multiplies the finite-difference steps (stability::StepRule)
 };
 
 CLI::App* addModesCommand(CLI::App& app, ModesOptions& options);

@@ -26,6 +26,37 @@ Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const 
   return J;
 }
 
+Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const Eigen::VectorXd& y,
+                                         const Eigen::VectorXd& steps, const std::vector<int>& keep,
+                                         long* evaluations) {
+  const int n = sys.size();
+  const auto m = static_cast<Eigen::Index>(keep.size());
+  Eigen::MatrixXd J(m, m);
+  Eigen::VectorXd yp = y, fp(n), fm(n);
+  for (Eigen::Index j = 0; j < m; ++j) {
+    const int c = keep[static_cast<std::size_t>(j)];
+    const double h = steps[c];
+    // The perturbed values are rounded to doubles: divide by the step actually taken.
+    yp[c] = y[c] + h;
+    const double hp = yp[c] - y[c];
+    if (sys.rhs(t, yp.data(), fp.data()) != 0)
+      throw std::runtime_error("rhs failed at " + sys.componentName(c) +
+                               " + h: " + sys.lastError());
+    yp[c] = y[c] - h;
+    const double hm = y[c] - yp[c];
+    if (sys.rhs(t, yp.data(), fm.data()) != 0)
+      throw std::runtime_error("rhs failed at " + sys.componentName(c) +
+                               " - h: " + sys.lastError());
+    yp[c] = y[c];
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const int r = keep[static_cast<std::size_t>(i)];
+      J(i, j) = (fp[r] - fm[r]) / (hp + hm);
+    }
+  }
+  if (evaluations != nullptr) *evaluations += 2 * m;
+  return J;
+}
+
 std::vector<Mode> guidedModes(GuidedVehicleOde& ode, double t, const Eigen::VectorXd& y) {
   const Eigen::MatrixXd J = finiteDifferenceJacobian(ode, t, y);
   const Eigen::EigenSolver<Eigen::MatrixXd> es(J, true);

@@ -15,6 +15,15 @@ namespace rb::vehicle {
 Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const Eigen::VectorXd& y,
                                          double rel_step = 1e-6);
 
+// The Jacobian of the reduced system: rows and columns `keep` of df/dy at (t, y) by central
+// differences with the step steps[c] for state c (c in keep), J(i, j) = d f_keep[i] / d y_keep[j].
+// The states outside `keep` stay at y (cyclic coordinates such as the wheelset spin angles, on
+// which f does not depend). Adds the rhs evaluations to *evaluations when given. Throws
+// std::runtime_error naming the state when the rhs fails.
+Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const Eigen::VectorXd& y,
+                                         const Eigen::VectorXd& steps, const std::vector<int>& keep,
+                                         long* evaluations = nullptr);
+
 struct Mode {
   std::complex<double> eigenvalue;  // lambda = -zeta w0 + i wd
   double frequency_hz = 0.0;        // damped frequency |Im lambda| / (2 pi)

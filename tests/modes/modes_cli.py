@@ -1,0 +1,99 @@
+"""`workbench modes` on the Manchester wagon file with KEC and LUT: modes.h5 (/modes), modes.csv
+and the figures are written, the printed table names the hunting and sway modes; hostile options
+are exit 1 with the option named, nothing written."""
+import argparse
+import os
+import subprocess
+import sys
+
+import h5py
+
+WAGON = "scenarios/vehicles/manchester_wagon1.lua"
+
+
+def run(wb, args):
+    p = subprocess.run([wb, "modes"] + args, capture_output=True, text=True, timeout=900)
+    return p.returncode, p.stdout, p.stderr
+
+
+def check(cond, what, failures):
+    if not cond:
+        failures.append(what)
+
+
+def command(wb, out, contact, failures):
+    d = os.path.join(out, contact)
+    rc, so, se = run(wb, [WAGON, "--contact", contact, "--speeds", "20:100:5", "--out", d])
+    check(rc == 0, f"{contact}: exit {rc}: {se}", failures)
+    if rc != 0:
+        return
+    for name in ("modes.h5", "modes.csv", "modes_root_locus.png", "modes_damping.png", "scene.lua"):
+        check(os.path.isfile(os.path.join(d, name)), f"{contact}: {name} missing", failures)
+    for label in ("wheelset hunting", "bogie hunting", "car body lower sway",
+                  "car body upper sway"):
+        check(label in so, f"{contact}: '{label}' not in the printed table", failures)
+    with h5py.File(os.path.join(d, "modes.h5"), "r") as f:
+        g = f["modes"]
+        check(list(g["speeds"][()]) == [20.0, 40.0, 60.0, 80.0, 100.0],
+              f"{contact}: speeds {g['speeds'][()]}", failures)
+        # The wagon's bogie hunting loses its damping between 40 and 100 m/s with either method.
+        vc = g.attrs.get("critical_speed_value", 0.0)
+        check(40.0 < vc < 100.0, f"{contact}: linear critical speed {vc}", failures)
+        method = g.attrs["contact_method"]
+        method = method.decode() if isinstance(method, bytes) else method
+        check(method == contact, f"{contact}: contact_method {method}", failures)
+        for k in ("critical_speed", "creep_law", "cpu_s", "rhs_evaluations"):
+            check(k in g.attrs, f"{contact}: attribute {k} missing", failures)
+        s0 = g["speed_0"]
+        check(s0.attrs["steady_residual"] < 1e-6, f"{contact}: residual", failures)
+        ps = s0.attrs["step_check_passed"]
+        ps = ps.decode() if isinstance(ps, bytes) else ps
+        check(ps == "yes", f"{contact}: step check {ps}", failures)
+        n = len(s0["re"][()])
+        check(s0["participation"].shape == (n, len(s0["coordinates"][()])),
+              f"{contact}: participation shape", failures)
+
+
+def hostile(wb, out, failures):
+    bad = {"--speeds": ["x", "0:10:3", "-5:10:3", "20:10:3", "20:40:0", "20:40:2.5",
+                        "20:40:100000", "20:40", "20:40:3:4", "nan:40:3"],
+           "--contact": ["abc"]}
+    for opt, values in bad.items():
+        for v in values:
+            d = os.path.join(out, "hostile")
+            rc, so, se = run(wb, [WAGON, opt, v, "--out", d, "--no-plots"])
+            check(rc == 1, f"{opt} {v}: exit {rc}", failures)
+            check(opt in se, f"{opt} {v}: the option is not named: {se.strip()}", failures)
+            check(not os.path.exists(os.path.join(d, "modes.h5")), f"{opt} {v}: wrote modes.h5",
+                  failures)
+    rc, so, se = run(wb, ["no_such_file.lua", "--out", os.path.join(out, "hostile")])
+    check(rc == 1, f"missing scenario: exit {rc}", failures)
+    # No steady state (the vehicle in the transition of case 3): exit 2 with the reason.
+    rc, so, se = run(wb, ["scenarios/studies/case3_base.lua", "--distance", "130", "--out",
+                          os.path.join(out, "transition"), "--no-plots"])
+    check(rc == 2, f"vehicle in a transition: exit {rc}", failures)
+    check("constant-radius" in se, f"vehicle in a transition: no reason given: {se.strip()}",
+          failures)
+    for v in ("-1", "nan"):
+        rc, so, se = run(wb, [WAGON, "--distance", v, "--out", os.path.join(out, "hostile"),
+                              "--no-plots"])
+        check(rc == 1 and "--distance" in se, f"--distance {v}: exit {rc}", failures)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--workbench", required=True)
+    ap.add_argument("--out", required=True)
+    a = ap.parse_args()
+    failures = []
+    hostile(a.workbench, a.out, failures)
+    for contact in ("kec", "lut"):
+        command(a.workbench, a.out, contact, failures)
+    for f in failures:
+        print("FAIL:", f)
+    print("modes_cli:", "ok" if not failures else f"{len(failures)} failures")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

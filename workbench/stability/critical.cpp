@@ -1,0 +1,99 @@
+// The linear critical speed (stability.hpp): the least damped hunting mode's damping ratio on a
+// speed sweep, the first sign change from positive to negative, refined by the Illinois variant of
+// regula falsi (superlinear on a smooth damping curve, never leaves the bracket).
+#include <cmath>
+#include <sstream>
+
+#include "workbench/stability/stability.hpp"
+
+namespace rb::stability {
+
+namespace {
+
+void addCost(CriticalSpeed& c, const Analysis& a) {
+  c.rhs_evaluations += a.rhs_evaluations;
+  c.cpu_s += a.cpu_s;
+}
+
+std::string noneInRange(const std::vector<Analysis>& sweep) {
+  std::ostringstream s;
+  s << "none in range";
+  if (!sweep.empty())
+    s << ": least damped hunting mode damping " << sweep.front().huntingDamping() << " at "
+      << sweep.front().speed << " m/s, " << sweep.back().huntingDamping() << " at "
+      << sweep.back().speed << " m/s";
+  return s.str();
+}
+
+// A bracket of the critical speed: speeds a < b with the damping fa > 0 >= fb.
+struct Bracket {
+  double a, fa, b, fb;
+};
+
+// Refines the bracket to tol.
+void refine(Analyser& an, CriticalSpeed& c, Bracket br, double tol) {
+  auto& [a, fa, b, fb] = br;
+  int side = 0;
+  for (int it = 0; it < 40 && b - a > tol; ++it) {
+    double v = b - fb * (b - a) / (fb - fa);
+    if (!(v > a && v < b)) v = 0.5 * (a + b);
+    Analysis x = an.analyse(v);
+    addCost(c, x);
+    const double fv = x.huntingDamping();
+    c.refinement.push_back(std::move(x));
+    if (!std::isfinite(fv)) break;
+    if (fv > 0.0) {
+      a = v;
+      fa = fv;
+      if (side == -1) fb *= 0.5;  // Illinois: the end kept twice in a row is halved
+      side = -1;
+    } else {
+      b = v;
+      fb = fv;
+      if (side == 1) fa *= 0.5;
+      side = 1;
+    }
+  }
+  c.bracket_lo = a;
+  c.bracket_hi = b;
+  c.speed = b - fb * (b - a) / (fb - fa);
+  if (!(c.speed >= a && c.speed <= b)) c.speed = 0.5 * (a + b);
+  c.found = true;
+}
+
+}  // namespace
+
+CriticalSpeed linearCriticalSpeed(Analyser& an, std::vector<Analysis> sweep, double tol) {
+  CriticalSpeed c;
+  for (const Analysis& a : sweep) addCost(c, a);
+  c.sweep = std::move(sweep);
+  for (std::size_t i = 0; i + 1 < c.sweep.size(); ++i) {
+    const double fa = c.sweep[i].huntingDamping();
+    const double fb = c.sweep[i + 1].huntingDamping();
+    if (fa > 0.0 && fb <= 0.0) {
+      try {
+        refine(an, c, {c.sweep[i].speed, fa, c.sweep[i + 1].speed, fb}, tol);
+      } catch (const Failure& e) {
+        c.found = true;  // the sweep's bracket stands
+        c.bracket_lo = c.sweep[i].speed;
+        c.bracket_hi = c.sweep[i + 1].speed;
+        c.speed = c.bracket_lo - fa * (c.bracket_hi - c.bracket_lo) / (fb - fa);
+        c.why = std::string("refinement stopped: ") + e.what();
+      }
+      return c;
+    }
+  }
+  c.why = noneInRange(c.sweep);
+  return c;
+}
+
+CriticalSpeed linearCriticalSpeed(const scenario::ScenarioSpec& spec, double v_lo, double v_hi,
+                                  int n, const Options& options, double tol) {
+  Analyser an(spec, options);
+  std::vector<Analysis> sweep;
+  const int m = std::max(n, 2);
+  for (int i = 0; i < m; ++i) sweep.push_back(an.analyse(v_lo + (v_hi - v_lo) * i / (m - 1)));
+  return linearCriticalSpeed(an, std::move(sweep), tol);
+}
+
+}  // namespace rb::stability
