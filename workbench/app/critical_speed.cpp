@@ -14,6 +14,7 @@
 #include "workbench/core/strings.hpp"
 #include "workbench/io/critical_speed_file.hpp"
 #include "workbench/io/result_file.hpp"
+#include "workbench/stability/stability.hpp"
 
 namespace fs = std::filesystem;
 
@@ -26,6 +27,11 @@ using critical::KickedRun;
 // Probes above the start speed when --from is not given: x 1.2 per probe reaches 2x the start
 // in 4 probes, fine enough that the first hunting probe is within 20 % of the onset.
 constexpr double kProbeFactor = 1.2;
+
+// The ramp starts this far above the linear critical speed (the ramp-down method: run
+// above it with a kick, then decelerate): the kicked motion grows there whatever the limit-cycle
+// branch, and 10 % keeps the start below the speeds at which the 5 mm kick lifts a wheel at once.
+constexpr double kLinearMargin = 1.1;
 
 void refuse(const std::string& option, const std::string& message) {
   throw InputError(SourceLoc{option, 0}, option + " " + message);
@@ -47,6 +53,7 @@ struct Search {
   double bisection_critical = std::nan("");
   double bracket_low = std::nan("");
   double bracket_high = std::nan("");
+  double linear = std::nan("");  // [m/s] linear critical speed (workbench modes), when found
 };
 
 std::string mps(double v) {
@@ -93,6 +100,21 @@ const KickedRun& constantRun(Search& s, const std::string& kind, double v, doubl
 // speeds. Returns false when none hunts.
 bool findStart(const CriticalSpeedOptions& o, const StabilityScene& scene, Search& s) {
   const bool en = o.criterion == "en14363";
+  if (o.from <= 0.0 && std::isfinite(s.linear) && kLinearMargin * s.linear <= o.max_speed) {
+    const double v = kLinearMargin * s.linear;
+    const KickedRun& r = constantRun(s, "probe", v, o.duration);
+    std::cout << "probe at " << mps(v) << " (1.1 x the linear critical speed): "
+              << (r.ok ? describe(r, en) : "failed: " + r.message) << "\n";
+    // A failed run (the kick lifting a wheel at this speed) is no start for a ramp.
+    if (r.ok && critical::runUnstable(r, en)) {
+      s.start = v;
+      return true;
+    }
+    // Not a gap in the answer: the search goes on from below, and the run stays in /runs with
+    // its message.
+    if (!r.ok) s.findings.pop_back();
+    std::cout << "probing upwards from the scene's speed instead\n";
+  }
   double v = o.from > 0.0 ? o.from : defaultStartSpeed(scene);
   for (;;) {
     const KickedRun& r = constantRun(s, "probe", v, o.duration);
@@ -215,6 +237,7 @@ io::CriticalSpeedResult resultOf(const CriticalSpeedOptions& o, const StabilityS
   };
   number("critical_speed_ramp", s.ramp_critical);
   number("critical_speed_bisection", s.bisection_critical);
+  number("critical_speed_linear", s.linear);
   number("bracket_low", s.bracket_low);
   number("bracket_high", s.bracket_high);
   number("start_speed", s.start);
@@ -272,6 +295,8 @@ void printSummary(const CriticalSpeedOptions& o, const Search& s) {
   }
   std::cout << "critical speed (" << o.criterion << " criterion, kick " << o.kick * 1e3
             << " mm, threshold " << s.setup.threshold * 1e3 << " mm):\n";
+  if (std::isfinite(s.linear))
+    std::cout << "  linear (eigenvalues, workbench modes): " << mps(s.linear) << "\n";
   if (std::isfinite(s.ramp_critical))
     std::cout << "  ramp-down: " << mps(s.ramp_critical) << " (deceleration " << o.deceleration
               << " m/s^2 from " << mps(s.start) << ")\n";
@@ -347,6 +372,24 @@ double defaultStartSpeed(const StabilityScene& scene) {
   return scene.spec.vehicle.speed;
 }
 
+double linearCriticalSpeed(const StabilityScene& scene, double max_speed,
+                           const std::string& table_cache, std::string& note) {
+  if (!scene.spec.has_contact) return std::nan("");
+  stability::Options so;
+  so.table_cache = table_cache;
+  try {
+    // The sweep of `workbench modes` (10 m/s steps up to the probe limit), refined to 0.1 m/s.
+    const int n = std::max(2, static_cast<int>(std::ceil((max_speed - 10.0) / 10.0)) + 1);
+    const stability::CriticalSpeed c =
+        stability::linearCriticalSpeed(scene.spec, 10.0, max_speed, n, so, 0.1);
+    if (c.found) return c.speed;
+    note = "linear critical speed: " + c.why;
+  } catch (const stability::Failure& e) {
+    note = std::string("linear critical speed: ") + e.what();
+  }
+  return std::nan("");
+}
+
 void checkCriticalSpeedOptions(const CriticalSpeedOptions& o) {
   if (o.from != 0.0) checkPositive("--from", o.from);
   if (o.to != 0.0) checkPositive("--to", o.to);
@@ -401,6 +444,11 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
   s.setup.transient = o.transient;
   s.setup.threshold = thresholdOf(o, o.irregular);
   s.setup.decay = o.decay;
+  if (o.from <= 0.0) {
+    std::string note;
+    s.linear = linearCriticalSpeed(scene, o.max_speed, s.setup.table_cache, note);
+    if (!note.empty()) std::cout << note << "; the start is probed from the scene's speed\n";
+  }
   try {
     search(o, scene, s);
   } catch (const InputError& e) {

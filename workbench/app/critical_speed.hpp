@@ -27,7 +27,8 @@ struct CriticalSpeedOptions : ScenarioCommandOptions {
   std::string contact;                  // "kec" / "lut" ("" = the scenario's; kec for a vehicle
                                         // file)
   bool no_plots = false;
-  double from = 0.0;          // [m/s] start speed (0: defaultStartSpeed)
+  double from = 0.0;          // [m/s] start speed (0: 1.1 x the linear critical speed, else
+                              // defaultStartSpeed and upwards)
   double to = 0.0;            // [m/s] end speed of the ramp, low end of the bracket (0: from / 2)
   double max_speed = 150.0;   // [m/s] highest probe when --from is not given
   double kick = 5e-3;         // [m] lateral offset of the first wheelset at t = 0
@@ -44,9 +45,15 @@ struct CriticalSpeedOptions : ScenarioCommandOptions {
 
 CLI::App* addCriticalSpeedCommand(CLI::App& app, CriticalSpeedOptions& options);
 
-// The speed the search starts at when --from is not given: the scene's vehicle speed. This is
-// the hook for a better estimate (the linear critical speed of `workbench modes` times a margin).
+// Without --from the search first probes 1.1 x the linear critical speed (linearCriticalSpeed);
+// when that run does not hunt (or there is no linear critical speed below --max-speed), it probes
+// upwards from the scene's vehicle speed (defaultStartSpeed) by factors of 1.2.
 double defaultStartSpeed(const StabilityScene& scene);
+// The linear critical speed of the scene (workbench/stability: the speed at which the least
+// damped hunting mode loses its damping) between 10 m/s and max_speed; NaN with `note` saying
+// why when there is none (no contact, none in range, no steady state).
+double linearCriticalSpeed(const StabilityScene& scene, double max_speed,
+                           const std::string& table_cache, std::string& note);
 
 // The amplitude threshold: --threshold, else 0.1 mm on a track without irregularities (no forced
 // response: any motion that stays above the numerical noise, orders of magnitude below, after the
