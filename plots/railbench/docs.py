@@ -42,6 +42,7 @@ from . import provenance
 from .common import parser
 from .docs_blocks import assessment_cases_block, accuracy_block, bench_block, bench_integrators_block, effects_block, efficiency_block, fmt, missing, num, read_csv, paper_settings_block, refinement_block, replace_block, speed_block, table, work_precision_block
 from .docs_paper import PAPER_TABLES, flange_paper_block, paper_table_blocks, tables_9_10_block
+from .docs_stability import FOLDERS as STABILITY, stability_blocks
 from .docs_stress import stress_hard_block
 from .docs_three_asks import EFFECTS, PRECISION, STRESS, STRESS_KEC, three_asks_blocks
 from .docs_tables import tables_block
@@ -65,6 +66,9 @@ BLOCK_SOURCES = {
     "coupling_convergence": "build", "assessment_cases": "validation", "tables_summary": "tables",
     "stress_hard": "build", "three_asks_precision": PRECISION, "three_asks_stress": STRESS,
     "three_asks_stress_kec": STRESS_KEC, "three_asks_effects": EFFECTS,
+    "stability_wagon": ("stability_kec", "stability_lut"), "stability_modes":
+    ("stability_kec", "stability_lut"), "stability_method": STABILITY,
+    "stability_verification": "build",
 }
 
 
@@ -84,6 +88,13 @@ def block_provenance(name: str, outdir: str, build: str) -> List[dict]:
                 return []  # a record from before the suite wrote its commit: unknown
             if e not in seen:
                 seen.append(e)
+        return seen
+    if isinstance(src, tuple):  # several folders: every run they name
+        seen = []
+        for folder in src:
+            for e in provenance.read(os.path.join(outdir, folder, "provenance.json")):
+                if e not in seen:
+                    seen.append(e)
         return seen
     if src in BENCH_OUTPUTS:
         return provenance.read(os.path.join(outdir, BENCH_OUTPUTS[src] + ".provenance.json"))
@@ -147,7 +158,7 @@ def coupling_block(build: str) -> Optional[str]:
 
 STUDIES = ("efficiency_case3", "flange_stiffness", "refinement", "work_precision", "effects",
            "speed", "paper_settings_flange", "paper_settings", "validation", "tables", PRECISION,
-           STRESS_KEC, STRESS, EFFECTS)
+           STRESS_KEC, STRESS, EFFECTS) + STABILITY
 
 
 def copy_figures(outdir: str, docs: str, pages) -> List[str]:
@@ -207,6 +218,7 @@ def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
     blocks["contact_geometry.md"] = {"tables_summary": tables_block(outdir)}
     blocks["stress.md"] = {"stress_hard": stress_hard_block(build)}
     blocks["three_asks.md"] = three_asks_blocks(outdir)
+    blocks["stability.md"] = stability_blocks(outdir, build)
     coupling = coupling_block(build)
     blocks["contact_dynamics.md"] = {"coupling_convergence": coupling if coupling is not None
                                      else missing(f"{build}/dynamics/coupling_*.csv "

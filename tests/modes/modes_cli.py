@@ -80,6 +80,21 @@ def hostile(wb, out, failures):
         check(rc == 1 and "--distance" in se, f"--distance {v}: exit {rc}", failures)
 
 
+def vehicle_file_with_overrides(wb, out, failures):
+    """A vehicle file with --set overrides is still put on the stability scene (regression: the
+    overrides' own complaints about a file without blocks hid that it is a vehicle file), and a
+    bad override on it is refused naming the key."""
+    d = os.path.join(out, "overrides")
+    rc, so, se = run(wb, [WAGON, "--set", "solver.method=bdf", "--set",
+                          "contact.wheelset_spin=prescribed", "--speeds", "20:20:1", "--no-plots",
+                          "--out", d])
+    check(rc == 0, f"vehicle file with --set: exit {rc}: {se.strip()}", failures)
+    rc, so, se = run(wb, [WAGON, "--set", "solver.bogus=1", "--speeds", "20:20:1", "--no-plots",
+                          "--out", d])
+    check(rc == 1 and "bogus" in se, f"vehicle file with a bad --set: exit {rc}: {se.strip()}",
+          failures)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--workbench", required=True)
@@ -87,6 +102,7 @@ def main():
     a = ap.parse_args()
     failures = []
     hostile(a.workbench, a.out, failures)
+    vehicle_file_with_overrides(a.workbench, a.out, failures)
     for contact in ("kec", "lut"):
         command(a.workbench, a.out, contact, failures)
     for f in failures:
