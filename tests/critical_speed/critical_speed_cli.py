@@ -14,6 +14,7 @@ CASE:
   linear-nonlinear-kec, linear-nonlinear-lut
               the command's defaults at three primary yaw stiffnesses: nonlinear (ramp-down)
               at or below linear (eigenvalues), both falling with the stiffness
+  fixed-step  a ramp with ABM at 0.25 ms: its duration is put on the step grid
 Exit status 0 when every check holds, 1 otherwise (the failed checks are listed).
 """
 from __future__ import annotations
@@ -156,6 +157,19 @@ run {{ duration = 10, output = {{ every = 0.01 }} }}
           f"critical speed falls with the primary yaw stiffness: {speeds}")
 
 
+def fixed_step(wb: str, out: str) -> None:
+    """A fixed-step integrator: the ramp's duration (speed span / deceleration) is rounded up to
+    the step grid (regression: ABM 0.25 ms refused a ramp ending off its grid)."""
+    p = run(wb, out, "--method", "ramp", "--contact", "kec", "--from", "57.3", "--to", "30.1",
+            "--deceleration", "2.3", "--set", "solver.method=abm", "--set", "solver.step=2.5e-4")
+    text = p.stdout + p.stderr
+    check(p.returncode == 0, f"abm 0.25 ms ramp: exit 0 (got {p.returncode})")
+    check("step grid" not in text, "no run refused for ending off the step grid")
+    a = attrs(out)
+    check(30.1 < a.get("critical_speed_ramp", 0.0) < 57.3,
+          f"abm ramp finds the critical speed: {a.get('critical_speed_ramp')}")
+
+
 # The wagon at three primary yaw stiffnesses (vehicle files of scenarios/stability/).
 WAGONS = (("31.4e6", "scenarios/vehicles/manchester_wagon1.lua"),
           ("15e6", "scenarios/stability/manchester_wagon1_kpx15.lua"),
@@ -200,7 +214,8 @@ def main() -> int:
     ap.add_argument("--workbench", required=True)
     ap.add_argument("--out", required=True)
     ap.add_argument("case", choices=["hostile", "no-hunting", "quick", "thorough", "stiffness",
-                                     "linear-nonlinear-kec", "linear-nonlinear-lut"])
+                                     "linear-nonlinear-kec", "linear-nonlinear-lut",
+                                     "fixed-step"])
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     if a.case == "hostile":
@@ -214,6 +229,8 @@ def main() -> int:
         # LUT from 70 m/s: at 85 m/s the 5 mm kick lifts a wheel (flange impact; a finding of
         # the command, reported with its time and speed).
         both(a.workbench, os.path.join(a.out, "thorough_lut"), "lut", False, 70.0)
+    elif a.case == "fixed-step":
+        fixed_step(a.workbench, a.out)
     elif a.case.startswith("linear-nonlinear-"):
         linear_nonlinear(a.workbench, a.out, a.case.rsplit("-", 1)[1])
     else:

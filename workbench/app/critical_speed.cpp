@@ -12,6 +12,7 @@
 #include "workbench/app/stability_scene.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
+#include "workbench/integrators/registry.hpp"
 #include "workbench/io/critical_speed_file.hpp"
 #include "workbench/io/result_file.hpp"
 #include "workbench/stability/stability.hpp"
@@ -444,6 +445,7 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
   s.setup.transient = o.transient;
   s.setup.threshold = thresholdOf(o, o.irregular);
   s.setup.decay = o.decay;
+  if (integ::isFixedStep(scene.spec.solver.method)) s.setup.step_grid = scene.spec.solver.step;
   if (o.from <= 0.0) {
     std::string note;
     s.linear = linearCriticalSpeed(scene, o.max_speed, s.setup.table_cache, note);

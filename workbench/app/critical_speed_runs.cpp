@@ -94,6 +94,7 @@ void readBack(const std::string& file, const std::vector<std::string>& wheelsets
 
 KickedRun runKicked(const RunSetup& s, const std::string& kind, const std::string& name, double v0,
                     double acceleration, double duration) {
+  if (s.step_grid > 0.0) duration = std::ceil(duration / s.step_grid - 1e-9) * s.step_grid;
   KickedRun run;
   run.kind = kind;
   run.v0 = v0;

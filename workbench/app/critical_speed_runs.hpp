@@ -27,6 +27,8 @@ struct RunSetup {
   double transient = 1.0;              // [s] left out after the kick
   double threshold = 1e-3;             // [m] amplitude of a limit cycle (judgeKickedRun)
   double decay = 0.8;                  // [-] decay factor of judgeKickedRun
+  double step_grid = 0.0;  // [s] the fixed step of rk4 / abm (0: adaptive): a fixed-step run must
+                           // end on its step grid, so run durations are rounded up to it
 };
 
 struct KickedRun {
