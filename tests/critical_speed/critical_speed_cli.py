@@ -38,10 +38,10 @@ def check(ok: bool, what: str) -> None:
         FAILED.append(what)
 
 
-def run(wb: str, out: str, *args: str, scenario: str = WAGON):
+def run(wb: str, out: str, *args: str, scenario: str = WAGON, timeout: float = 3000):
     shutil.rmtree(out, ignore_errors=True)
     cmd = [wb, "critical-speed", scenario, "--out", out, "--no-plots", *args]
-    p = subprocess.run(cmd, capture_output=True, text=True, timeout=3000)
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
     print("$ " + " ".join(cmd) + f"  -> exit {p.returncode}")
     print(p.stdout + p.stderr)
     return p
@@ -68,6 +68,9 @@ def hostile(wb: str, out: str) -> None:
         (["--criterion", "sperling"], "--criterion"),
         (["--contact", "hertz"], "--contact"),
         (["--irregular"], "--irregular"),
+        # Inside the option's bound but beyond the wagon's flangeway: refused by the first run's
+        # check of the initial state, naming the largest admissible offset.
+        (["--kick", "0.015", "--from", "60"], "flangeway"),
     ]
     for k, (args, option) in enumerate(cases):
         d = os.path.join(out, f"hostile_{k}")
@@ -78,6 +81,16 @@ def hostile(wb: str, out: str) -> None:
 
 
 def no_hunting(wb: str, out: str) -> None:
+    # A scene at rest (speed 0) with no linear estimate (--max-speed below the sweep's 10 m/s):
+    # the probes start at 10 m/s and end at --max-speed (regression: 0 m/s probed forever).
+    d = os.path.join(out, "at_rest")
+    try:
+        p = run(wb, d, "--set", "vehicle.speed=0", "--max-speed", "9", "--duration", "4",
+                timeout=300)
+        check(p.returncode == 2, f"scene at rest: exit 2 (got {p.returncode})")
+        check("no hunting at V0" in p.stdout, "scene at rest: reports no hunting")
+    except subprocess.TimeoutExpired:
+        check(False, "scene at rest: the probes do not end")
     d = os.path.join(out, "no_hunting")
     p = run(wb, d, "--from", "30", "--duration", "5")
     check(p.returncode == 2, f"start at 30 m/s: exit 2 (got {p.returncode})")

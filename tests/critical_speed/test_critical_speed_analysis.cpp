@@ -71,6 +71,23 @@ TEST(CriticalSpeedAnalysis, KickShrinkingOntoALimitCycleIsHunting) {
   EXPECT_TRUE(v.unstable) << v.why;
 }
 
+TEST(CriticalSpeedAnalysis, ShortLastWindowDoesNotTurnHuntingIntoDecay) {
+  // A sustained 3 mm cycle at 1 Hz over 10.5 s: the last window [10, 10.5] s holds half a period,
+  // whose half peak-to-peak is half the amplitude. The verdict is on full windows only.
+  Signal s;
+  s.y.resize(1);
+  for (double t = 0.0; t <= 10.5 + 1e-9; t += 0.005) {
+    s.t.push_back(t);
+    s.v.push_back(60.0);
+    s.y[0].push_back(3e-3 * std::sin(2.0 * std::numbers::pi * t));
+  }
+  const auto w = cs::windowAmplitudes(s.t, s.y, s.v, 1.0, 1.0);
+  ASSERT_LT(w.back().amplitude, 0.6 * 3e-3);  // the short window is there, and reads low
+  const auto v = cs::judgeKickedRun(w, 1e-3, 0.8);
+  EXPECT_TRUE(v.unstable) << v.why;
+  EXPECT_NEAR(v.a_last, 3e-3, 3e-5);
+}
+
 TEST(CriticalSpeedAnalysis, TooFewWindowsAreNoVerdict) {
   const Signal s = harmonic(
       2.5, [](double) { return 3e-3; }, [](double) { return 80.0; });

@@ -29,9 +29,10 @@ using critical::KickedRun;
 // in 4 probes, fine enough that the first hunting probe is within 20 % of the onset.
 constexpr double kProbeFactor = 1.2;
 
-// The ramp starts this far above the linear critical speed (the ramp-down method: run
-// above it with a kick, then decelerate): the kicked motion grows there whatever the limit-cycle
-// branch, and 10 % keeps the start below the speeds at which the 5 mm kick lifts a wheel at once.
+// The ramp starts this far above the linear critical speed (the ramp-down method: run above it
+// with a kick, then decelerate), where the kicked motion grows whatever the limit-cycle branch.
+// Where the 5 mm kick lifts a wheel at that speed (the LUT wagon), findStart probes upwards from
+// the scene's speed instead.
 constexpr double kLinearMargin = 1.1;
 
 void refuse(const std::string& option, const std::string& message) {
@@ -370,12 +371,13 @@ double thresholdOf(const CriticalSpeedOptions& o, bool irregular_track) {
 }
 
 double defaultStartSpeed(const StabilityScene& scene) {
-  return scene.spec.vehicle.speed;
+  // A scene at rest (speed 0 with a run.duration) would probe 0 m/s forever: start at 10 m/s.
+  return std::max(scene.spec.vehicle.speed, 10.0);
 }
 
 double linearCriticalSpeed(const StabilityScene& scene, double max_speed,
                            const std::string& table_cache, std::string& note) {
-  if (!scene.spec.has_contact) return std::nan("");
+  if (!scene.spec.has_contact || max_speed <= 10.0) return std::nan("");
   stability::Options so;
   so.table_cache = table_cache;
   try {
@@ -404,8 +406,8 @@ void checkCriticalSpeedOptions(const CriticalSpeedOptions& o) {
   checkPositive("--tolerance", o.tolerance);
   if (!(std::isfinite(o.kick) && o.kick != 0.0 && std::abs(o.kick) <= 0.02))
     refuse("--kick",
-           "must be a lateral offset with 0 < |kick| <= 0.02 m (inside the flange "
-           "clearance), got " +
+           "must be a lateral offset with 0 < |kick| <= 0.02 m (the first run then checks it "
+           "against the flangeway), got " +
                formatNumber(o.kick));
   if (!(std::isfinite(o.transient) && o.transient >= 0.0))
     refuse("--transient", "must be >= 0 s, got " + formatNumber(o.transient));
@@ -438,6 +440,9 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
   s.setup.table_cache = (fs::path(so.out) / ".table-cache").string();
   s.setup.run_dir = (fs::path(so.out) / "runs").string();
   s.setup.kick = o.kick;
+  for (const auto& b : scene.spec.vehicle.bodies)
+    if (b.kind == vehicle::BodyKind::Wheelset && s.setup.first_wheelset.empty())
+      s.setup.first_wheelset = b.name;
   s.setup.drop_irregularities =
       !o.irregular && scene.spec.track.irregularities.source != track::IrregularitySource::None;
   s.setup.en14363 = o.criterion == "en14363";
@@ -465,7 +470,9 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
   // The figure also shows what an incomplete search found; it never decides the exit code
   // beyond 4 (only the figure failed).
   const int plots = o.no_plots ? 0 : runPlots(so, {"critical-speed", so.out});
-  return complete(o, s) ? plots : 2;
+  // Any finding (a failed run among them: it may have decided a bisection step) makes the
+  // answer incomplete: exit 2, as the file's status says.
+  return complete(o, s) && s.findings.empty() ? plots : 2;
 }
 
 }  // namespace rb::app

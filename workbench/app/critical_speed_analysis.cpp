@@ -54,8 +54,16 @@ std::vector<Window> windowAmplitudes(std::span<const double> t,
   return out;
 }
 
-KickedVerdict judgeKickedRun(const std::vector<Window>& windows, double threshold, double decay) {
+KickedVerdict judgeKickedRun(const std::vector<Window>& all, double threshold, double decay) {
   KickedVerdict v;
+  // Full windows only: a last window cut short by the end of the run may hold half a hunting
+  // period, whose half peak-to-peak can be half the amplitude (a sustained cycle would read as
+  // decaying).
+  double longest = 0.0;
+  for (const Window& w : all) longest = std::max(longest, w.t1 - w.t0);
+  std::vector<Window> windows;
+  for (const Window& w : all)
+    if (w.t1 - w.t0 >= 0.75 * longest) windows.push_back(w);
   if (windows.size() < 3) {
     v.why = "too few windows to judge (" + std::to_string(windows.size()) + ")";
     return v;

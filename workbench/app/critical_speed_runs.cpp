@@ -103,6 +103,11 @@ KickedRun runKicked(const RunSetup& s, const std::string& kind, const std::strin
   run::CompileOptions co;
   co.scenario = s.scenario;
   co.overrides = runOverrides(s, v0, acceleration, duration);
+  // The kick goes through the checks of the scenario's own initial conditions (a wheelset beyond
+  // its flangeway is refused with the largest admissible offset) before it replaces them below.
+  if (!s.first_wheelset.empty() && s.kick != 0.0)
+    co.overrides.push_back("vehicle.initial." + s.first_wheelset +
+                           ".y=" + formatNumberExact(s.kick));
   co.root = s.root;
   co.table_cache = s.table_cache;
   run::Model m = run::compile(co);

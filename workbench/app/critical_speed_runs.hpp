@@ -21,6 +21,7 @@ struct RunSetup {
   std::string table_cache;             // contact-table disk cache shared by the runs
   std::string run_dir;                 // folder of the run results
   double kick = 5e-3;                  // [m] lateral offset of the first wheelset at t = 0
+  std::string first_wheelset;          // its name (the kick is checked as vehicle.initial)
   bool drop_irregularities = false;    // run.effects.irregularities = false
   bool en14363 = false;                // run.assessment.stability = true, read back
   double window = 1.0;                 // [s] amplitude window

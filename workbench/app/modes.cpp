@@ -131,9 +131,11 @@ io::ModesSummary summaryOf(const stability::CriticalSpeed& c, const stability::A
   s.cpu_s = c.cpu_s;
   s.rhs_evaluations = c.rhs_evaluations;
   for (const auto& r : c.refinement) {
+    if (!std::isfinite(r.huntingDamping())) continue;  // no hunting mode there: c.why says so
     s.refinement_speeds.push_back(r.speed);
     s.refinement_damping.push_back(r.huntingDamping());
   }
+  if (c.found && !c.why.empty()) s.notes.push_back("linear critical speed: " + c.why);
   if (c.found) {
     s.critical_speed = c.speed;
     s.bracket_lo = c.bracket_lo;
@@ -210,6 +212,7 @@ int runModes(const ModesOptions& o) {
   std::printf("\nlinear critical speed: %s%s\ncost: %.2f s CPU, %lld rhs evaluations\nwrote %s\n",
               sum.critical.c_str(), crit.found ? " m/s" : "", sum.cpu_s,
               static_cast<long long>(sum.rhs_evaluations), h5.c_str());
+  if (crit.found && !crit.why.empty()) std::printf("note: %s\n", crit.why.c_str());
   if (!failure.empty()) {
     std::fprintf(stderr, "workbench modes: stopped: %s\n", failure.c_str());
     return 2;

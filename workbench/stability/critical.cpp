@@ -30,8 +30,9 @@ struct Bracket {
   double a, fa, b, fb;
 };
 
-// Refines the bracket to tol.
-void refine(Analyser& an, CriticalSpeed& c, Bracket br, double tol) {
+// Refines the bracket to tol; `br` keeps the narrowest bracket reached (also when an analysis
+// throws). A refinement speed without a hunting mode ends the refinement, with c.why saying so.
+void refine(Analyser& an, CriticalSpeed& c, Bracket& br, double tol) {
   auto& [a, fa, b, fb] = br;
   int side = 0;
   for (int it = 0; it < 40 && b - a > tol; ++it) {
@@ -41,7 +42,13 @@ void refine(Analyser& an, CriticalSpeed& c, Bracket br, double tol) {
     addCost(c, x);
     const double fv = x.huntingDamping();
     c.refinement.push_back(std::move(x));
-    if (!std::isfinite(fv)) break;
+    if (!std::isfinite(fv)) {
+      std::ostringstream m;
+      m << "refinement stopped at " << v << " m/s: no hunting mode there; the critical speed is "
+        << "interpolated in " << a << " .. " << b << " m/s";
+      c.why = m.str();
+      break;
+    }
     if (fv > 0.0) {
       a = v;
       fa = fv;
@@ -67,21 +74,27 @@ CriticalSpeed linearCriticalSpeed(Analyser& an, std::vector<Analysis> sweep, dou
   CriticalSpeed c;
   for (const Analysis& a : sweep) addCost(c, a);
   c.sweep = std::move(sweep);
-  for (std::size_t i = 0; i + 1 < c.sweep.size(); ++i) {
-    const double fa = c.sweep[i].huntingDamping();
-    const double fb = c.sweep[i + 1].huntingDamping();
+  // Consecutive speeds with a hunting mode: a speed without one (its damping NaN) in between
+  // must not hide the crossing.
+  std::size_t last = c.sweep.size();
+  for (std::size_t i = 0; i < c.sweep.size(); ++i) {
+    const double fb = c.sweep[i].huntingDamping();
+    if (!std::isfinite(fb)) continue;
+    const double fa = last < c.sweep.size() ? c.sweep[last].huntingDamping() : std::nan("");
     if (fa > 0.0 && fb <= 0.0) {
+      Bracket br{c.sweep[last].speed, fa, c.sweep[i].speed, fb};
       try {
-        refine(an, c, {c.sweep[i].speed, fa, c.sweep[i + 1].speed, fb}, tol);
+        refine(an, c, br, tol);
       } catch (const Failure& e) {
-        c.found = true;  // the sweep's bracket stands
-        c.bracket_lo = c.sweep[i].speed;
-        c.bracket_hi = c.sweep[i + 1].speed;
-        c.speed = c.bracket_lo - fa * (c.bracket_hi - c.bracket_lo) / (fb - fa);
+        c.found = true;  // the narrowest bracket reached stands
+        c.bracket_lo = br.a;
+        c.bracket_hi = br.b;
+        c.speed = br.a - br.fa * (br.b - br.a) / (br.fb - br.fa);
         c.why = std::string("refinement stopped: ") + e.what();
       }
       return c;
     }
+    last = i;
   }
   c.why = noneInRange(c.sweep);
   return c;

@@ -54,6 +54,9 @@ Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const 
     }
   }
   if (evaluations != nullptr) *evaluations += 2 * m;
+  // The rhs refuses non-finite states, but a finite state can still give difference quotients
+  // that overflow: never hand a non-finite Jacobian to the eigensolver.
+  if (!J.allFinite()) throw std::runtime_error("the finite-difference Jacobian is not finite");
   return J;
 }
 
