@@ -69,7 +69,10 @@ def wagon_block(outdir: str) -> str:
         bracket = f"{_speed(crit, 'bracket_low')}..{_speed(crit, 'bracket_high')}"
         ratio = (num(crit.get("critical_speed_ramp")) or 0.0) / (num(modes.get(
             "critical_speed_value")) or float("nan"))
-        rows.append([contact, _speed(modes, "critical_speed_value"),
+        unc = num(modes.get("critical_speed_step_uncertainty"))
+        linear = _speed(modes, "critical_speed_value") + (
+            f" ± {fmt(unc, '{:.2g}')}" if unc is not None and unc >= 0 else "")
+        rows.append([contact, linear,
                      _speed(crit, "critical_speed_ramp"),
                      f"{_speed(crit, 'critical_speed_bisection')} ({bracket})",
                      fmt(ratio, "{:.2f}"), _speed(crit, "start_speed"),
@@ -77,7 +80,7 @@ def wagon_block(outdir: str) -> str:
                      f"{int(num(modes.get('rhs_evaluations'), 0)):,}",
                      f"{crit.get('runs', 0)} runs, {fmt(crit.get('runs_cpu_s'), '{:.1f}')} s / "
                      f"{int(crit.get('runs_rhs_evals', 0)):,}"])
-    out = [table(["contact", "linear [m/s]", "nonlinear ramp-down [m/s]",
+    out = [table(["contact", "linear [m/s] (± finite-difference step)", "nonlinear ramp-down [m/s]",
                   "nonlinear bisection [m/s] (bracket)", "ramp / linear", "ramp start [m/s]",
                   "modes: CPU / rhs evals (23 speeds + refinement)",
                   "critical-speed: CPU / rhs evals"], rows)]

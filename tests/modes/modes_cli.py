@@ -39,6 +39,10 @@ def command(wb, out, contact, failures):
         # The wagon's bogie hunting loses its damping between 40 and 100 m/s with either method.
         vc = g.attrs.get("critical_speed_value", 0.0)
         check(40.0 < vc < 100.0, f"{contact}: linear critical speed {vc}", failures)
+        # How far the finite-difference step moves it (step check over the damping's slope):
+        # known, and small against the critical speed.
+        unc = g.attrs.get("critical_speed_step_uncertainty", -1.0)
+        check(0.0 <= unc < 0.05 * vc, f"{contact}: step uncertainty {unc} m/s", failures)
         method = g.attrs["contact_method"]
         method = method.decode() if isinstance(method, bytes) else method
         check(method == contact, f"{contact}: contact_method {method}", failures)

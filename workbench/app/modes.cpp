@@ -140,6 +140,8 @@ io::ModesSummary summaryOf(const stability::CriticalSpeed& c, const stability::A
     s.critical_speed = c.speed;
     s.bracket_lo = c.bracket_lo;
     s.bracket_hi = c.bracket_hi;
+    // -1 when unknown (no hunting mode at the nearest analysis): never NaN in the file.
+    s.step_uncertainty = std::isfinite(c.step_uncertainty) ? c.step_uncertainty : -1.0;
     std::ostringstream t;
     t << c.speed;
     s.critical = t.str();
@@ -212,6 +214,9 @@ int runModes(const ModesOptions& o) {
   std::printf("\nlinear critical speed: %s%s\ncost: %.2f s CPU, %lld rhs evaluations\nwrote %s\n",
               sum.critical.c_str(), crit.found ? " m/s" : "", sum.cpu_s,
               static_cast<long long>(sum.rhs_evaluations), h5.c_str());
+  if (crit.found && std::isfinite(crit.step_uncertainty))
+    std::printf("finite-difference step: the critical speed moves by up to %.2g m/s (step check)\n",
+                crit.step_uncertainty);
   if (crit.found && !crit.why.empty()) std::printf("note: %s\n", crit.why.c_str());
   if (!failure.empty()) {
     std::fprintf(stderr, "workbench modes: stopped: %s\n", failure.c_str());

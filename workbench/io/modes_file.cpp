@@ -60,6 +60,7 @@ void writeModesFile(const std::string& path, const std::vector<ModesAtSpeed>& sp
     f.attr("/modes", "critical_speed_value", sum.critical_speed);
     f.attr("/modes", "critical_bracket_lo", sum.bracket_lo);
     f.attr("/modes", "critical_bracket_hi", sum.bracket_hi);
+    f.attr("/modes", "critical_speed_step_uncertainty", sum.step_uncertainty);
   }
   f.attr("/modes", "contact_method", sum.method);
   f.attr("/modes", "creep_law", sum.creep);

@@ -33,6 +33,7 @@ struct ModesSummary {
   std::string critical;         // "none in range", or the speed as text
   double critical_speed = 0.0;  // [m/s], 0 when none
   double bracket_lo = 0.0, bracket_hi = 0.0;
+  double step_uncertainty = 0.0;  // [m/s] of the critical speed from the FD step (-1: unknown)
   std::vector<double> refinement_speeds, refinement_damping;
   double cpu_s = 0.0;
   std::int64_t rhs_evaluations = 0;

@@ -68,6 +68,21 @@ void refine(Analyser& an, CriticalSpeed& c, Bracket& br, double tol) {
   c.found = true;
 }
 
+// CriticalSpeed::step_uncertainty from the analysis nearest the critical speed and the slope of
+// the damping over the sweep's bracket [v_a, v_b].
+double stepUncertainty(const CriticalSpeed& c, const Analysis& a, const Analysis& b) {
+  const Analysis* nearest = &a;
+  auto closer = [&](const Analysis& x) {
+    if (std::abs(x.speed - c.speed) < std::abs(nearest->speed - c.speed)) nearest = &x;
+  };
+  closer(b);
+  for (const Analysis& x : c.refinement) closer(x);
+  if (nearest->least_hunting < 0) return std::nan("");
+  const double slope = (b.huntingDamping() - a.huntingDamping()) / (b.speed - a.speed);
+  const double dzeta = nearest->modes[static_cast<std::size_t>(nearest->least_hunting)].step_change;
+  return std::abs(dzeta / slope);
+}
+
 }  // namespace
 
 CriticalSpeed linearCriticalSpeed(Analyser& an, std::vector<Analysis> sweep, double tol) {
@@ -92,6 +107,7 @@ CriticalSpeed linearCriticalSpeed(Analyser& an, std::vector<Analysis> sweep, dou
         c.speed = br.a - br.fa * (br.b - br.a) / (br.fb - br.fa);
         c.why = std::string("refinement stopped: ") + e.what();
       }
+      c.step_uncertainty = stepUncertainty(c, c.sweep[last], c.sweep[i]);
       return c;
     }
     last = i;

@@ -171,6 +171,11 @@ struct CriticalSpeed {
   std::vector<Analysis> sweep;                // the sweep, in speed order
   std::vector<Analysis> refinement;           // the refinement steps
   std::string why;  // when not found: "none in range" and the damping seen
+  // [m/s] How far the finite-difference step can move the critical speed: the step check's
+  // relative eigenvalue change of the least damped hunting mode at the analysis nearest the
+  // critical speed (an upper bound of the change of its damping ratio) divided by the slope of
+  // the damping against speed over the sweep's bracket. NaN when not found.
+  double step_uncertainty = 0.0;
   long rhs_evaluations = 0;
   double cpu_s = 0.0;
 };
