@@ -170,14 +170,15 @@ struct CreepageMaximum {
 void addVehicleChannels(const Model& m, io::ResultFile& f, std::vector<OutputChannel>& outputs) {
   const auto& v = *m.vehicle;
   const bool acc = m.spec.run.body_accelerations;
-  static const char* coords[6] = {"s", "y", "z", "roll", "pitch", "yaw"};
   static const char* units[6] = {"m", "m", "m", "rad", "rad", "rad"};
   std::string names;
   for (const auto& b : v.bodies) {
     names += (names.empty() ? "" : "\n") + b.name;
     f.attr("/bodies/" + b.name, "kind", kindName(b.kind));
     for (int k = 0; k < 6; ++k)
-      outputs.push_back({"/bodies/" + b.name + "/" + coords[k], units[k]});
+      outputs.push_back(
+          {"/bodies/" + b.name + "/" + vehicle::kCoordNames[static_cast<std::size_t>(k)],
+           units[k]});
     if (acc)
       for (const char* a : {"ax", "ay", "az"})
         outputs.push_back({"/bodies/" + b.name + "/" + a, "m/s^2"});

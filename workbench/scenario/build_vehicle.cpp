@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <string_view>
 
@@ -47,8 +46,8 @@ vehicle::ElementSpec buildElement(const Node& e, const std::string& path, Diagno
   return el;
 }
 
-// Keys of vehicle.initial.<body> in vehicle::Coord order from kY (vehicle::initialConditionKey).
-constexpr std::array<std::string_view, 5> kInitialKeys = {"y", "z", "roll", "pitch", "yaw"};
+// Keys of vehicle.initial.<body>: the coordinate names from y (vehicle::kY = 1) to yaw, and their
+// rates with "_dot" (vehicle::initialConditionKey).
 constexpr std::string_view kRateSuffix = "_dot";
 constexpr int kCoordY = 1;  // vehicle::kY (workbench/vehicle/kinematics.hpp)
 
@@ -58,15 +57,16 @@ void buildBodyInitial(const std::string& body, const Node& t,
                       std::vector<vehicle::InitialCondition>& out, Diagnostics& d) {
   Reader r(t, block("vehicle.initial.<body>"), "vehicle.initial." + body, d);
   for (const bool rate : {false, true})
-    for (std::size_t c = 0; c < kInitialKeys.size(); ++c) {
-      const std::string key = std::string(kInitialKeys[c]) + (rate ? std::string(kRateSuffix) : "");
+    for (int coord = kCoordY; coord < static_cast<int>(vehicle::kCoordNames.size()); ++coord) {
+      const std::string key = std::string(vehicle::kCoordNames[static_cast<std::size_t>(coord)]) +
+                              (rate ? std::string(kRateSuffix) : "");
       const Node* v = r.value(key);
       if (v == nullptr) continue;
       const double x = r.number(key);
       if (v->type != Node::Type::Number || !std::isfinite(x)) continue;
       vehicle::InitialCondition ic;
       ic.body = body;
-      ic.coord = kCoordY + static_cast<int>(c);
+      ic.coord = coord;
       ic.rate = rate;
       ic.value = x;
       ic.loc = v->loc;

@@ -27,8 +27,6 @@ double cpuSeconds() {
   return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
 }
 
-const char* const kCoordName[6] = {"s", "y", "z", "roll", "pitch", "yaw"};
-
 // Every state but the wheelset spin angles (cyclic coordinates).
 std::vector<int> keptStates(const vehicle::VehicleLayout& l) {
   std::vector<int> spin;
@@ -184,7 +182,8 @@ std::vector<Coordinate> bodyCoordinates(const vehicle::VehicleOde& ode) {
       k.coord = c;
       k.rate_index = r;
       const bool spin = body.kind == vehicle::BodyKind::Wheelset && c == vehicle::kPitch;
-      k.name = body.name + "." + (spin ? "spin" : kCoordName[c]);
+      k.name =
+          body.name + "." + (spin ? "spin" : vehicle::kCoordNames[static_cast<std::size_t>(c)]);
       k.weight = c <= vehicle::kZ ? body.mass : body.inertia[c - vehicle::kRoll];
       out.push_back(std::move(k));
     }

@@ -1,13 +1,10 @@
 #include "workbench/vehicle/initial_conditions.hpp"
 
-#include <array>
 #include <cmath>
 
 namespace rb::vehicle {
 
 namespace {
-constexpr std::array<const char*, 6> kCoordKeys = {"s", "y", "z", "roll", "pitch", "yaw"};
-
 int bodyIndex(const VehicleModel& m, const std::string& name) {
   for (std::size_t b = 0; b < m.bodies.size(); ++b)
     if (m.bodies[b].name == name) return static_cast<int>(b);
@@ -59,7 +56,7 @@ std::string conditionProblem(const VehicleOde& ode, const InitialCondition& c, i
 
 std::string initialConditionKey(int coord, bool rate) {
   if (coord < kY || coord > kYaw) return "?";
-  return std::string(kCoordKeys[static_cast<std::size_t>(coord)]) + (rate ? "_dot" : "");
+  return std::string(kCoordNames[static_cast<std::size_t>(coord)]) + (rate ? "_dot" : "");
 }
 
 void checkInitialConditions(const VehicleOde& ode, std::span<const InitialCondition> conditions,

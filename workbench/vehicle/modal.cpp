@@ -10,20 +10,13 @@ namespace rb::vehicle {
 Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const Eigen::VectorXd& y,
                                          double rel_step) {
   const int n = sys.size();
-  Eigen::MatrixXd J(n, n);
-  Eigen::VectorXd yp = y, fp(n), fm(n);
+  Eigen::VectorXd steps(n);
+  std::vector<int> all(static_cast<std::size_t>(n));
   for (int c = 0; c < n; ++c) {
-    const double h = rel_step * std::max(std::abs(y[c]), 1.0);
-    yp[c] = y[c] + h;
-    if (sys.rhs(t, yp.data(), fp.data()) != 0)
-      throw std::runtime_error("rhs failed: " + sys.lastError());
-    yp[c] = y[c] - h;
-    if (sys.rhs(t, yp.data(), fm.data()) != 0)
-      throw std::runtime_error("rhs failed: " + sys.lastError());
-    yp[c] = y[c];
-    J.col(c) = (fp - fm) / (2.0 * h);
+    steps[c] = rel_step * std::max(std::abs(y[c]), 1.0);
+    all[static_cast<std::size_t>(c)] = c;
   }
-  return J;
+  return finiteDifferenceJacobian(sys, t, y, steps, all);
 }
 
 Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const Eigen::VectorXd& y,

@@ -2,6 +2,7 @@
 // Plain input structs for a vehicle (built by workbench/scenario from the Lua vehicle{} block,
 // compiled by the vehicle module). SI units. Each carries the SourceLoc of its Lua block.
 #include <Eigen/Dense>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,10 @@ struct ElementSpec {
   std::vector<double> table_f;    // [N] bumpstop force table
   SourceLoc loc;
 };
+
+// Names of the body coordinates, indexed by vehicle::Coord (kinematics.hpp: kS .. kYaw): the
+// datasets /bodies/<body>/<name> of a result and the keys of vehicle.initial.<body>.
+inline constexpr std::array<const char*, 6> kCoordNames = {"s", "y", "z", "roll", "pitch", "yaw"};
 
 // An initial offset of one coordinate of one body from the state the run would start in (static
 // equilibrium, wheelsets centred), in the body's track frame, and of its rate: vehicle.initial in
