@@ -1,0 +1,197 @@
+#include "workbench/app/study_summary.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "workbench/core/strings.hpp"
+#include "workbench/io/read_stats.hpp"
+#include "workbench/io/result_file.hpp"
+#include "workbench/vehicle/stage_clock.hpp"
+
+namespace fs = std::filesystem;
+
+namespace rb::app::study_detail {
+namespace {
+
+std::string csvField(std::string s) {
+  bool quote = s.find_first_of(",\"\n") != std::string::npos;
+  std::string out;
+  for (char ch : s) {
+    if (ch == '"') out += '"';
+    out += ch == '\n' ? ' ' : ch;
+  }
+  return quote ? "\"" + out + "\"" : out;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// The solver part of a case's label (caseLabel of its solver.* overrides: "rk4 h=0.25ms",
+// "bdf tol=1e-6 hmax=1ms"), "" when the case keeps the base scenario's solver. The figures
+// group cases by it, so they read it from summary_cases.csv instead of deriving it again.
+std::string solverLabel(const std::vector<std::string>& overrides) {
+  std::vector<std::string> solver;
+  for (const auto& o : overrides)
+    if (o.rfind("solver.", 0) == 0) solver.push_back(o);
+  const std::string label = scenario::caseLabel(solver);
+  return solver.empty() || label == "base" ? std::string() : label;
+}
+
+// The environment of the figures' python: this one with <root>/plots first on PYTHONPATH, so
+
+// timed), the integrator's and the observer's.
+std::vector<std::string> summaryNumbers() {
+  std::vector<std::string> k = {"cpu_time_s",        "wall_time_s",     "rhs_evals",
+                                "rhs_evals_jac",     "steps",           "rejected_steps",
+                                "jacobian_evals",    "nonlinear_iters", "t_reached",
+                                "model_evaluations", "stage_samples"};
+  for (const auto& e : vehicle::kStageNames) k.push_back("stage_share_" + std::string(e.name));
+  k.emplace_back("stage_share_integrator");
+  k.emplace_back("stage_share_observer");
+  return k;
+}
+const std::vector<std::string> kSummaryNumbers = summaryNumbers();
+
+// Per case: the CPU times of its ok repeats, and the status, reason and counts of its first
+// problem (or of its first run when every repeat is ok).
+struct CaseSum {
+  std::vector<double> cpu;
+  int runs = 0;
+  std::string status, message, file;
+  std::map<std::string, double> first;  // counts of the first run (exact, equal over repeats)
+};
+
+// What the summaries hold: summary.csv's text, the per-case sums, the columns of summary.h5.
+struct Summary {
+  std::ostringstream csv;
+  std::map<std::string, CaseSum> cases;
+  std::vector<double> ok;
+  std::map<std::string, std::vector<double>> cols;
+  std::size_t runsOk = 0, runsKnown = 0, runsElsewhere = 0;
+};
+
+// The status of a run in the summary, and its reason.
+struct RunState {
+  std::string status, message;
+};
+
+// The state of a run that left no valid result.
+RunState noResult(const Job& j, Summary& sm) {
+  if (j.outcome == Outcome::Skipped) {
+    ++sm.runsElsewhere;
+    return {"skipped", "being run by another runner when this summary was written"};
+  }
+  if (!j.note.empty()) return {"error", j.note};
+  // The run stopped on bad input or crashed; its log says why.
+  std::ifstream log(j.log);
+  std::string line, last;
+  while (std::getline(log, line))
+    if (!line.empty()) last += (last.empty() ? "" : " | ") + line;
+  return {"error", last.empty() ? "no result" : last.substr(0, 500)};
+}
+
+// One row of summary.csv per run, and the per-case sums.
+void summariseRuns(const std::vector<Job>& all, Summary& sm) {
+  sm.csv.precision(12);  // counts above 1e6 exactly, CPU times to the nanosecond
+  sm.csv << "case,repeat,label,role,base,overrides,status";
+  for (const auto& k : kSummaryNumbers) sm.csv << "," << k;
+  sm.csv << ",message,file\n";
+  for (const auto& j : all) {
+    const bool valid = isDone(j.h5, *j.hash);
+    auto rec = valid ? io::readStats(j.h5) : std::nullopt;
+    const RunState run =
+        rec ? RunState{rec->text["status"], rec->text["message"]} : noResult(j, sm);
+    const std::string& status = run.status;
+    const std::string& message = run.message;
+    if (status != "skipped") ++sm.runsKnown;
+    if (status == "ok") ++sm.runsOk;
+    sm.csv << j.c->id << "," << j.repeat << "," << csvField(j.c->label) << "," << j.c->role << ","
+           << csvField(j.c->base) << "," << csvField(join(j.c->overrides, " ")) << "," << status;
+    std::map<std::string, double> numbers;
+    for (const auto& k : kSummaryNumbers) {
+      numbers[k] = rec && rec->number.count(k) ? rec->number[k] : 0.0;
+      sm.csv << "," << numbers[k];
+      sm.cols[k].push_back(numbers[k]);
+    }
+    sm.csv << "," << csvField(message) << "," << csvField(valid ? j.h5 : "") << "\n";
+    sm.ok.push_back(status == "ok" ? 1.0 : 0.0);
+    CaseSum& cs = sm.cases[j.c->id];
+    ++cs.runs;
+    if (status == "ok" && rec) cs.cpu.push_back(numbers["cpu_time_s"]);
+    // The case's status: ok only when every repeat is ok; else the first problem and its reason.
+    if (cs.status.empty() || (cs.status == "ok" && status != "ok")) {
+      cs.status = status;
+      cs.message = message;
+      cs.file = valid ? j.h5 : "";
+      cs.first = numbers;
+    }
+  }
+}
+
+// summary_cases.csv: one row per case, the median CPU time over its repeats.
+std::string casesCsv(const scenario::StudySpec& st, std::map<std::string, CaseSum>& sum) {
+  std::ostringstream cases;
+  cases.precision(12);
+  cases << "case,label,role,base,overrides,solver,runs,runs_ok,status,median_cpu_time_s,"
+           "min_cpu_time_s,max_cpu_time_s";
+  for (const auto& k : kSummaryNumbers)
+    if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << k;
+  cases << ",message,file\n";
+  for (const auto& c : st.cases) {
+    CaseSum& cs = sum[c.id];
+    auto [lo, hi] =
+        cs.cpu.empty() ? std::pair<double, double>{0.0, 0.0}
+                       : std::pair<double, double>{*std::min_element(cs.cpu.begin(), cs.cpu.end()),
+                                                   *std::max_element(cs.cpu.begin(), cs.cpu.end())};
+    cases << c.id << "," << csvField(c.label) << "," << c.role << "," << csvField(c.base) << ","
+          << csvField(join(c.overrides, " ")) << "," << csvField(solverLabel(c.overrides)) << ","
+          << cs.runs << "," << cs.cpu.size() << "," << cs.status << "," << median(cs.cpu) << ","
+          << lo << "," << hi;
+    for (const auto& k : kSummaryNumbers)
+      if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << cs.first[k];
+    cases << "," << csvField(cs.message) << "," << csvField(cs.file) << "\n";
+  }
+  return cases.str();
+}
+
+// summary.h5: the per-run numbers as datasets under /runs.
+void writeSummaryH5(const fs::path& path, const scenario::StudySpec& st,
+                    const std::vector<Job>& all, Summary& sm) {
+  io::ResultFile h5(path.string());
+  h5.attr("/", "study_file", st.file);
+  h5.attr("/", "base", st.base);
+  std::string caseIds, overrides, labels;
+  for (const auto& j : all) {
+    caseIds += (caseIds.empty() ? "" : "\n") + j.name;
+    overrides += (overrides.empty() ? "" : "\n") + join(j.c->overrides, " ");
+    labels += (labels.empty() ? "" : "\n") + j.c->label;
+  }
+  h5.attr("/runs", "labels", labels);
+  h5.attr("/runs", "ids", caseIds);
+  h5.attr("/runs", "overrides", overrides);
+  h5.dataset("/runs/ok", sm.ok, "-");
+  for (const auto& k : kSummaryNumbers)
+    h5.dataset("/runs/" + k, sm.cols[k],
+               k == "cpu_time_s" || k == "wall_time_s" || k == "t_reached" ? "s" : "-");
+  h5.finalize();
+}
+
+}  // namespace
+
+SummaryCounts writeSummaries(const scenario::StudySpec& st, const std::vector<Job>& all,
+                             const fs::path& dir) {
+  Summary sm;
+  summariseRuns(all, sm);
+  writeAtomically(dir / "summary.csv", sm.csv.str());
+  writeAtomically(dir / "summary_cases.csv", casesCsv(st, sm.cases));
+  writeSummaryH5(dir / "summary.h5", st, all, sm);
+  return {sm.runsOk, sm.runsKnown, sm.runsElsewhere};
+}
+
+}  // namespace rb::app::study_detail

@@ -1,0 +1,22 @@
+#pragma once
+// The summaries of a study folder (app/study.hpp): summary.csv (one row per run), summary_cases.csv
+// (one row per case) and summary.h5, from the result files on disk, so that a local run, shards
+// merged by --summarize and the MPI farm write the same summaries.
+#include <cstddef>
+#include <filesystem>
+#include <vector>
+
+#include "workbench/app/study_jobs.hpp"
+
+namespace rb::app::study_detail {
+
+struct SummaryCounts {
+  std::size_t runsOk = 0, runsKnown = 0, runsElsewhere = 0;
+};
+
+// Writes the three summaries into `dir` (each atomically); throws std::runtime_error when one
+// cannot be written.
+SummaryCounts writeSummaries(const scenario::StudySpec& st, const std::vector<Job>& all,
+                             const std::filesystem::path& dir);
+
+}  // namespace rb::app::study_detail
