@@ -149,6 +149,40 @@ return function(opts)
     end
   end
 
+  -- Named groups of elements for sweeps: --set vehicle.groups.GROUP.KEY=VALUE sets KEY in every
+  -- member (`workbench help vehicle SCENARIO.lua` lists them with the keys all members have).
+  -- They only name elements: the model is the same with or without them.
+  local groups = {
+    -- The 8 primary longitudinal springs Kpx: the wheelsets' yaw stiffness to the bogie
+    -- (2 Kpx b^2, b = 1 m); keys stiffness, damping.
+    primary_longitudinal = { "prim_x_*" },
+    primary_lateral = { "prim_y_*" },        -- Kpy, Dpy: stiffness, damping
+    -- Kpz with its damper Dpz: stiffness, damping, series_stiffness (the latter not with
+    -- series_dampers = false).
+    primary_vertical = { "prim_z_*" },
+    secondary_vertical = { "sec_z_*" },      -- Ksz, Dsz, Kseries_sz
+    secondary_lateral = { "sec_y_*" },       -- lateral dampers Dsy: damping, series_stiffness
+    secondary_longitudinal = { "sec_x_*" },  -- traction links Ksx, Dsx
+    secondary_shear = { "sec_shear_*" },     -- shear stiffness of the springs, x and y
+    secondary_bending = { "sec_bend_*" },    -- Kbend
+  }
+  if with_anti_roll then groups.anti_roll = { "anti_roll_*" } end
+  if with_bumpstops then groups.bumpstops = { "bump_y_*" } end
+  -- The mirrored left/right pairs, which a symmetric vehicle varies together: per wheelset
+  -- (prim_x_ws1 = prim_x_ws1_l and prim_x_ws1_r, ...) and per bogie (sec_z_bogie1, ...).
+  for w = 1, 4 do
+    for _, d in ipairs({ "x", "y", "z" }) do
+      local pair = "prim_" .. d .. "_ws" .. w
+      groups[pair] = { pair .. "_l", pair .. "_r" }
+    end
+  end
+  for b = 1, 2 do
+    for _, e in ipairs({ "sec_z", "sec_y", "sec_shear_x", "sec_shear_y", "sec_bend" }) do
+      local pair = e .. "_bogie" .. b
+      groups[pair] = { pair .. "_l", pair .. "_r" }
+    end
+  end
+
   return {
     name = "manchester_wagon1",
     speed = opts.speed or 20,  -- [m/s] paper case 2/3: V = 20 m/s
@@ -156,5 +190,6 @@ return function(opts)
     start = opts.start or 0,
     bodies = bodies,
     elements = elements,
+    groups = groups,
   }
 end

@@ -24,6 +24,7 @@
 #include "workbench/app/tables.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/io/result_file.hpp"
+#include "workbench/scenario/override_check.hpp"
 #include "workbench/scenario/schema.hpp"
 
 namespace fs = std::filesystem;
@@ -102,10 +103,14 @@ int workbench(int argc, char** argv) {
       ->allow_extra_args(false);
 
   std::string topic;
+  std::string helpScenario;
   auto* help = app.add_subcommand("help", "reference documentation");
-  help->add_option("topic", topic, "topic: scenario")
+  help->add_option("topic", topic,
+                   "topic: scenario (every block and key), vehicle SCENARIO.lua (the named "
+                   "parameters of the scenario's vehicle: bodies, elements, groups)")
       ->required()
-      ->check(CLI::IsMember({"scenario"}));
+      ->check(CLI::IsMember({"scenario", "vehicle"}));
+  help->add_option("scenario", helpScenario, "scenario file (topic vehicle)");
 
   try {
     app.parse(argc, argv);
@@ -115,7 +120,17 @@ int workbench(int argc, char** argv) {
 
   try {
     if (*help) {
-      std::cout << rb::scenario::referenceText();
+      if (topic == "vehicle") {
+        if (helpScenario.empty())
+          throw rb::InputError({"<command line>", 0},
+                               "help vehicle needs a scenario file, e.g. workbench help "
+                               "vehicle scenarios/studies/case3_base.lua");
+        std::cout << rb::scenario::vehicleParametersText(helpScenario, root);
+        return 0;
+      }
+      std::cout << rb::scenario::referenceText()
+                << "\nNamed parameters of a vehicle (its bodies, elements with their keys, and "
+                   "groups): workbench help vehicle SCENARIO.lua\n";
       return 0;
     }
     if (*check) {

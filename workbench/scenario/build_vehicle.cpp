@@ -1,9 +1,12 @@
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <fstream>
 #include <string_view>
 
 #include "workbench/core/strings.hpp"
 #include "workbench/scenario/build.hpp"
+#include "workbench/scenario/overrides.hpp"
 #include "workbench/scenario/reader.hpp"
 #include "workbench/vehicle/names.hpp"
 
@@ -105,6 +108,80 @@ void buildInitial(Reader& r, vehicle::VehicleSpec& v, Diagnostics& d) {
   }
 }
 
+// The first line of `file` from line `from` on holding `needle` (for a group name: followed by
+// '='), 0 when none. Lua records no line for the fields of a plain table, so a group's own line
+// is found in the text.
+int lineOf(const std::string& file, const std::string& needle, bool assigned, int from = 1) {
+  std::ifstream in(file);
+  std::string line;
+  for (int no = 1; std::getline(in, line); ++no) {
+    if (no < from) continue;
+    for (auto p = line.find(needle); p != std::string::npos; p = line.find(needle, p + 1)) {
+      if (!assigned) return no;
+      const auto next = line.find_first_not_of(" \t\"']", p + needle.size());
+      const bool word =
+          p == 0 || !(std::isalnum(static_cast<unsigned char>(line[p - 1])) || line[p - 1] == '_');
+      if (word && next != std::string::npos && line[next] == '=') return no;
+    }
+  }
+  return 0;
+}
+
+// Where a group (or one of its entries) is written: the line of `GROUP =` in the vehicle file
+// (the file of the vehicle's elements and bodies; a vehicle file returns a plain table, whose
+// location would be the scenario's vehicle{} call) or the scenario, and the entry's line from
+// there on; the vehicle{} call when the text does not show them (groups made in a loop).
+SourceLoc groupLoc(const Node& vehicle, const std::string& group, const std::string& entry) {
+  std::vector<std::string> files;
+  for (const char* list : {"elements", "bodies"})
+    if (const Node* l = vehicle.field(list))
+      for (const Node& item : l->items)
+        if (std::find(files.begin(), files.end(), item.loc.file) == files.end())
+          files.push_back(item.loc.file);
+  if (std::find(files.begin(), files.end(), vehicle.loc.file) == files.end())
+    files.push_back(vehicle.loc.file);
+  for (const auto& f : files) {
+    const int line = lineOf(f, group, true);
+    if (line == 0) continue;
+    const int at = entry.empty() ? 0 : lineOf(f, "\"" + entry + "\"", false, line);
+    return {f, at > 0 ? at : line};
+  }
+  return vehicle.loc;
+}
+
+// vehicle.groups = { GROUP = { "name", "glob*", ... }, ... }: every entry must select an element
+// (overrides.cpp resolves them the same way when a --set names the group).
+void buildGroups(Reader& r, const Node& vehicle) {
+  const Node* g = r.value("groups");
+  if (g == nullptr) return;
+  if (g->type != Node::Type::Table || !g->items.empty()) {
+    r.error(*g,
+            "groups must be a table of named lists, e.g. { primary_longitudinal = { "
+            "\"prim_x_*\" } }, got " +
+                g->describe());
+    return;
+  }
+  for (const auto& [name, members] : g->fields) {
+    if (!isParameterName(name))
+      r.errorAt(groupLoc(vehicle, name, ""),
+                "groups: group name '" + name +
+                    "' must be letters, digits and _ (not starting with a digit), so that --set "
+                    "vehicle.groups.NAME.KEY can address it");
+    const GroupMembers m = groupMembers(vehicle, members);
+    for (std::size_t i = 0; i < m.problems.size(); ++i) {
+      // The entry a problem names (quoted), to find its line; else the group's line.
+      std::string entry;
+      for (const Node& item : members.items)
+        if (item.type == Node::Type::String && !item.string.empty() &&
+            m.problems[i].find("'" + item.string + "'") != std::string::npos) {
+          entry = item.string;
+          break;
+        }
+      r.errorAt(groupLoc(vehicle, name, entry), "groups." + name + ": " + m.problems[i]);
+    }
+  }
+}
+
 }  // namespace
 
 void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d) {
@@ -119,6 +196,7 @@ void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d) {
   for (std::size_t i = 0; i < bodies.size(); ++i)
     v.bodies.push_back(buildBody(*bodies[i], "vehicle.bodies[" + std::to_string(i + 1) + "]", d));
   buildInitial(r, v, d);
+  buildGroups(r, n);
   if (!r.has("elements")) return;
   auto elements = r.blockList("elements");
   for (std::size_t i = 0; i < elements.size(); ++i)

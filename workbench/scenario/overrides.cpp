@@ -1,5 +1,6 @@
 #include "workbench/scenario/overrides.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <optional>
@@ -7,6 +8,7 @@
 
 #include "workbench/core/strings.hpp"
 #include "workbench/scenario/lua_host.hpp"
+#include "workbench/scenario/schema.hpp"
 
 namespace rb::scenario {
 namespace {
@@ -15,13 +17,6 @@ const SourceLoc kCommandLine{"<command line>", 0};
 
 bool isIndexToken(const std::string& t) {
   return !t.empty() && t.find_first_not_of("0123456789") == std::string::npos;
-}
-
-bool isNameToken(const std::string& t) {
-  return !t.empty() && !std::isdigit(static_cast<unsigned char>(t[0])) &&
-         t.find_first_not_of(
-             "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_"
-             "0123456789") == std::string::npos;
 }
 
 // Tokens of a path: names and 1-based list positions, "a.b[2].c" or "a.b.2.c".
@@ -40,6 +35,17 @@ std::vector<std::string> pathTokens(const std::string& path) {
   return tokens;
 }
 
+// The tokens [0, n) as a dotted path, for messages.
+std::string prefix(const std::vector<std::string>& tokens, std::size_t n) {
+  std::vector<std::string> head(tokens.begin(), tokens.begin() + static_cast<std::ptrdiff_t>(n));
+  return join(head, ".");
+}
+
+std::string didYouMean(const std::string& word, const std::vector<std::string>& candidates) {
+  const std::string hint = closestMatch(word, candidates);
+  return hint.empty() ? "" : " (did you mean '" + hint + "'?)";
+}
+
 Node commandLineTable(const std::string& kind) {
   Node t;
   t.type = Node::Type::Table;
@@ -56,18 +62,53 @@ Node* topBlock(Node& root, const std::string& name, std::string& problem) {
   bool known = false;
   for (const auto& t : tops) known = known || t == name;
   if (!known) {
-    const std::string hint = closestMatch(name, tops);
-    problem =
-        "unknown block '" + name + "'" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)");
+    problem = "unknown block '" + name + "'" + didYouMean(name, tops);
     return nullptr;
   }
   return &root.setField(name, commandLineTable(name));
 }
 
-// Walks tokens[1..] from `node` and sets the last one to `value`; the problem otherwise.
+// A list of named tables (vehicle.bodies, vehicle.elements): a list whose items carry names.
+bool isNamedList(const Node& list) {
+  return list.fields.empty() && std::any_of(list.items.begin(), list.items.end(),
+                                            [](const Node& i) { return !itemName(i).empty(); });
+}
+
+// What the items of the list at `listPath` are called in messages.
+std::string itemWord(const std::string& listPath) {
+  if (listPath == "vehicle.elements") return "element";
+  if (listPath == "vehicle.bodies") return "body";
+  return "item";
+}
+
+// The item of a named list called `name`; the problem (unknown name, with the nearest one, or a
+// name given twice) otherwise.
+Node* namedItem(Node& list, const std::string& listPath, const std::string& name,
+                std::string& problem) {
+  std::vector<std::string> names;
+  Node* found = nullptr;
+  int count = 0;
+  for (Node& item : list.items) {
+    const std::string n = itemName(item);
+    if (n == name) {
+      found = found ? found : &item;
+      ++count;
+    }
+    if (!n.empty()) names.push_back(n);
+  }
+  const std::string word = itemWord(listPath);
+  if (count > 1)
+    problem = listPath + ": " + std::to_string(count) + " " + word + "s are named '" + name +
+              "'; address one by its list position";
+  else if (!found)
+    problem = listPath + ": no " + word + " named '" + name + "'" + didYouMean(name, names);
+  return count == 1 ? found : nullptr;
+}
+
+// Walks tokens[from..] from `node` and sets the last one to `value`; the problem otherwise.
 std::optional<std::string> setPath(Node* node, const std::vector<std::string>& tokens,
-                                   const std::string& value) {
-  for (std::size_t i = 1; i < tokens.size(); ++i) {
+                                   std::size_t from, const std::string& value) {
+  for (std::size_t i = from; i < tokens.size(); ++i) {
     const std::string& t = tokens[i];
     const bool last = i + 1 == tokens.size();
     if (node->type != Node::Type::Table)
@@ -82,6 +123,16 @@ std::optional<std::string> setPath(Node* node, const std::vector<std::string>& t
         return std::nullopt;
       }
       node = &node->items[idx - 1];
+    } else if (node->field(t) == nullptr && isNamedList(*node)) {
+      std::string problem;
+      Node* item = namedItem(*node, prefix(tokens, i), t, problem);
+      if (item == nullptr) return problem;
+      if (last) {
+        const std::string word = itemWord(prefix(tokens, i));
+        return prefix(tokens, i + 1) + " is a whole " + word + "; name one of its keys, e.g. " +
+               prefix(tokens, i + 1) + (word == "body" ? ".mass" : ".stiffness");
+      }
+      node = item;
     } else if (last) {
       node->setField(t, parseOverrideValue(value));
       return std::nullopt;
@@ -93,7 +144,144 @@ std::optional<std::string> setPath(Node* node, const std::vector<std::string>& t
   return std::nullopt;
 }
 
+// The schema block of an element's kind, nullptr for a table that is not an element constructor
+// (the validator reports it).
+const BlockSpec* kindBlock(const Node& element) {
+  for (const auto& b : schema())
+    if (!element.kind.empty() && b.name == element.kind) return &b;
+  return nullptr;
+}
+
+// The group of vehicle.groups named tokens[2] and its members; the problem otherwise.
+std::optional<std::string> resolveGroup(const Node& vehicle, const std::vector<std::string>& tokens,
+                                        GroupMembers& members) {
+  if (tokens.size() < 3) return "name a group and a key, e.g. vehicle.groups.GROUP.stiffness";
+  const Node* groups = vehicle.field("groups");
+  std::vector<std::string> names;
+  if (groups != nullptr && groups->type == Node::Type::Table)
+    for (const auto& kv : groups->fields) names.push_back(kv.first);
+  const std::string& name = tokens[2];
+  const Node* group = groups != nullptr ? groups->field(name) : nullptr;
+  if (group == nullptr)
+    return "vehicle.groups: no group named '" + name + "'" +
+           (names.empty() ? std::string(" (the vehicle defines no groups)")
+                          : didYouMean(name, names));
+  if (tokens.size() < 4)
+    return "vehicle.groups." + name + " is a group; name the key to set in every member, e.g. " +
+           "vehicle.groups." + name + ".stiffness";
+  members = groupMembers(vehicle, *group);
+  if (!members.problems.empty()) return "vehicle.groups." + name + ": " + members.problems.front();
+  return std::nullopt;
+}
+
+// vehicle.groups.GROUP.KEY...=value: KEY set in every member element. A member whose kind has no
+// such key is an error naming it (never a silent skip), checked before any member is changed.
+std::optional<std::string> setGroup(Node& vehicle, const std::vector<std::string>& tokens,
+                                    const std::string& value) {
+  GroupMembers members;
+  if (auto p = resolveGroup(vehicle, tokens, members)) return p;
+  Node* elements = vehicle.field("elements");
+  const std::string where = "vehicle.groups." + tokens[2];
+  const std::string& key = tokens[3];
+  for (const std::size_t i : members.elements) {
+    const Node& e = elements->items[i];
+    const BlockSpec* bs = kindBlock(e);
+    if (bs != nullptr && bs->key(key) == nullptr)
+      return where + ": element '" + itemName(e) + "' (" + e.kind + ") has no key '" + key + "'" +
+             didYouMean(key, bs->keyNames()) + "; its keys: " + join(bs->keyNames(), ", ");
+  }
+  for (const std::size_t i : members.elements)
+    if (auto p = setPath(&elements->items[i], tokens, 3, value))
+      return where + ": element '" + itemName(elements->items[i]) + "': " + *p;
+  return std::nullopt;
+}
+
+// Why `pattern` of a group selects no element: a body's name, a glob matching nothing, or an
+// unknown name with the nearest element name.
+std::string noMatch(const std::string& pattern, const std::vector<std::string>& elements,
+                    const Node* bodies) {
+  if (bodies != nullptr)
+    for (const Node& b : bodies->items)
+      if (!itemName(b).empty() && globMatch(pattern, itemName(b)))
+        return "'" + pattern + "' names a body ('" + itemName(b) +
+               "'); a group holds suspension elements (set a body's key by its name, "
+               "vehicle.bodies." +
+               itemName(b) + ".mass)";
+  if (pattern.find('*') != std::string::npos) return "pattern '" + pattern + "' matches no element";
+  return "no element named '" + pattern + "'" + didYouMean(pattern, elements);
+}
+
 }  // namespace
+
+bool globMatch(const std::string& pattern, const std::string& name) {
+  // Greedy wildcard match with backtracking to the last '*': linear in practice, at worst
+  // |pattern| * |name| steps.
+  std::size_t p = 0, n = 0, star = std::string::npos, mark = 0;
+  while (n < name.size()) {
+    if (p < pattern.size() && pattern[p] == '*') {
+      star = p++;
+      mark = n;
+    } else if (p < pattern.size() && pattern[p] == name[n]) {
+      ++p;
+      ++n;
+    } else if (star != std::string::npos) {
+      p = star + 1;
+      n = ++mark;
+    } else {
+      return false;
+    }
+  }
+  while (p < pattern.size() && pattern[p] == '*') ++p;
+  return p == pattern.size();
+}
+
+std::string itemName(const Node& item) {
+  if (item.type != Node::Type::Table) return "";
+  const Node* n = item.field("name");
+  return n != nullptr && n->type == Node::Type::String ? n->string : "";
+}
+
+bool isParameterName(const std::string& t) {
+  return !t.empty() && std::isdigit(static_cast<unsigned char>(t[0])) == 0 &&
+         t.find_first_not_of(
+             "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_"
+             "0123456789") == std::string::npos;
+}
+
+GroupMembers groupMembers(const Node& vehicle, const Node& group) {
+  GroupMembers out;
+  if (group.type != Node::Type::Table || !group.fields.empty()) {
+    out.problems.push_back(
+        "must be a list of element names or patterns, e.g. { \"prim_x_*\" }, got " +
+        group.describe());
+    return out;
+  }
+  if (group.items.empty()) out.problems.emplace_back("lists no elements");
+  static const Node kNone;
+  const Node* elementsNode = vehicle.field("elements");
+  const Node& elements = elementsNode != nullptr ? *elementsNode : kNone;
+  std::vector<std::string> names;
+  for (const Node& e : elements.items) names.push_back(itemName(e));
+  std::vector<bool> taken(names.size(), false);
+  for (const Node& entry : group.items) {
+    if (entry.type != Node::Type::String || entry.string.empty()) {
+      out.problems.push_back(
+          "entries must be element names or patterns, got " +
+          (entry.type == Node::Type::String ? std::string("an empty name") : entry.describe()));
+      continue;
+    }
+    bool any = false;
+    for (std::size_t i = 0; i < names.size(); ++i)
+      if (!names[i].empty() && globMatch(entry.string, names[i])) {
+        any = true;
+        taken[i] = true;
+      }
+    if (!any) out.problems.push_back(noMatch(entry.string, names, vehicle.field("bodies")));
+  }
+  for (std::size_t i = 0; i < taken.size(); ++i)
+    if (taken[i]) out.elements.push_back(i);
+  return out;
+}
 
 Node parseOverrideValue(const std::string& text) {
   Node n;
@@ -116,21 +304,25 @@ Node parseOverrideValue(const std::string& text) {
   return n;
 }
 
-void applyOverride(Node& root, const std::string& assignment, Diagnostics& d) {
-  auto fail = [&](const std::string& msg) {
-    d.add(kCommandLine, "--set " + assignment + ": " + msg);
-  };
+std::optional<std::string> overrideProblem(Node& root, const std::string& assignment) {
   auto eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0) return fail("expected key=value, e.g. solver.step=5e-4");
+  if (eq == std::string::npos || eq == 0) return "expected key=value, e.g. solver.step=5e-4";
   const std::vector<std::string> tokens = pathTokens(assignment.substr(0, eq));
-  if (tokens.size() < 2) return fail("the key must name a block and a key, e.g. solver.step");
+  if (tokens.size() < 2) return "the key must name a block and a key, e.g. solver.step";
   for (const auto& t : tokens)
-    if (!isIndexToken(t) && !isNameToken(t))
-      return fail("'" + t + "' is neither a key name nor a list position (1, 2, ...)");
+    if (!isIndexToken(t) && !isParameterName(t))
+      return "'" + t + "' is neither a key name nor a list position (1, 2, ...)";
   std::string problem;
   Node* node = topBlock(root, tokens[0], problem);
-  if (!node) return fail(problem);
-  if (auto p = setPath(node, tokens, assignment.substr(eq + 1))) fail(*p);
+  if (!node) return problem;
+  const std::string value = assignment.substr(eq + 1);
+  if (tokens[0] == "vehicle" && tokens[1] == "groups") return setGroup(*node, tokens, value);
+  return setPath(node, tokens, 1, value);
+}
+
+void applyOverride(Node& root, const std::string& assignment, Diagnostics& d) {
+  if (auto p = overrideProblem(root, assignment))
+    d.add(kCommandLine, "--set " + assignment + ": " + *p);
 }
 
 }  // namespace rb::scenario

@@ -304,9 +304,19 @@ void addVehicleBlocks(std::vector<BlockSpec>& s) {
             -20, 20),
         num("wheel_radius", "m", 0.46, "nominal rolling radius r0 of the wheelsets", 0.2, 0.7),
         num("start", "m", 0, "arc length of the vehicle reference point at t = 0", 0),
-        required(blockKey("bodies", ValueType::BlockList, {"body"}, "rigid bodies")),
+        required(blockKey("bodies", ValueType::BlockList, {"body"},
+                          "rigid bodies; --set vehicle.bodies.NAME.KEY sets a key of the body "
+                          "named NAME (or by list position, vehicle.bodies[2].KEY)")),
         blockKey("elements", ValueType::BlockList, namesOf<vehicle::ElementKind>(),
-                 "suspension elements"),
+                 "suspension elements; --set vehicle.elements.NAME.KEY sets a key of the element "
+                 "named NAME (or by list position, vehicle.elements[5].KEY)"),
+        typed("groups", ValueType::Table, "-",
+              "named sets of suspension elements for --set: { GROUP = { \"prim_x_*\", "
+              "\"sec_y_bogie1_l\", ... }, ... }, element names or globs ('*' = any characters); "
+              "each entry must match an element. --set vehicle.groups.GROUP.KEY=VALUE sets KEY "
+              "in every member (an error naming the member whose kind has no KEY). Groups do not "
+              "change the model. `workbench help vehicle SCENARIO.lua` lists a vehicle's "
+              "bodies, elements, their keys and its groups"),
         typed("initial", ValueType::Table, "-",
               "initial conditions { BODY = { y = 3e-3, yaw_dot = 0.01, ... }, ... } keyed by "
               "body name: offsets added to the start state (static equilibrium, wheelsets "

@@ -13,6 +13,7 @@
 
 #include "workbench/core/strings.hpp"
 #include "workbench/scenario/lua_host.hpp"
+#include "workbench/scenario/override_check.hpp"
 #include "workbench/scenario/schema.hpp"
 
 namespace fs = std::filesystem;
@@ -373,6 +374,7 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
     }
   d.throwIfAny();
   labelCases(st, given, matrixPart);
+  checkStudyOverrides(st, host.text(), root);
   return st;
 }
 

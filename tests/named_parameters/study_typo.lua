@@ -1,0 +1,12 @@
+-- A study whose keys name a group, an element and a body that do not exist.
+study {
+  base = "wagon.lua",
+  matrix = {
+    ["vehicle.groups.primary_longitudnal.stiffness"] = { 1e7, 2e7 },
+    ["vehicle.speed"] = { 10, 20 },
+  },
+  cases = {
+    { ["vehicle.elements.prim_x_ws1_q.stiffness"] = 1e7 },
+    { ["vehicle.bodies.cat.mass"] = 33000 },
+  },
+}

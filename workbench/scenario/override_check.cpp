@@ -1,0 +1,167 @@
+#include "workbench/scenario/override_check.hpp"
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "workbench/core/strings.hpp"
+#include "workbench/scenario/build.hpp"
+#include "workbench/scenario/lua_host.hpp"
+#include "workbench/scenario/overrides.hpp"
+#include "workbench/scenario/schema.hpp"
+#include "workbench/vehicle/names.hpp"
+
+namespace rb::scenario {
+namespace {
+
+// The line of the study text where the key is written as a string ("key" or 'key'), 0 if none.
+// Lua records no line for the fields of a plain table, so the text is searched.
+int keyLine(const std::string& text, const std::string& key) {
+  std::istringstream in(text);
+  std::string line;
+  for (int no = 1; std::getline(in, line); ++no)
+    if (line.find('"' + key + '"') != std::string::npos ||
+        line.find('\'' + key + '\'') != std::string::npos)
+      return no;
+  return 0;
+}
+
+// The distinct override assignments of the study per base scenario (first value of each key).
+std::map<std::string, std::vector<std::string>> assignmentsByBase(const StudySpec& study) {
+  std::map<std::string, std::vector<std::string>> out;
+  std::map<std::string, std::vector<std::string>> keys;
+  for (const auto& c : study.cases)
+    for (const auto& o : c.overrides) {
+      const std::string key = o.substr(0, o.find('='));
+      auto& seen = keys[c.base];
+      if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+      seen.push_back(key);
+      out[c.base].push_back(o);
+    }
+  return out;
+}
+
+// The keys of a schema block a sweep varies: all but the ones that name and place the item.
+std::vector<std::string> settableKeys(const std::string& kind) {
+  static const std::vector<std::string> kFixed = {"name",    "kind",  "from",     "to",
+                                                  "at_from", "at_to", "direction"};
+  std::vector<std::string> out;
+  for (const auto& b : schema())
+    if (b.name == kind)
+      for (const auto& k : b.keys)
+        if (std::find(kFixed.begin(), kFixed.end(), k.name) == kFixed.end()) out.push_back(k.name);
+  return out;
+}
+
+// "stiffness=3.1391e+07 damping=15000 length0 preload": the settable keys, with the values the
+// vehicle gives the number keys.
+std::string keysWithValues(const Node& item) {
+  std::vector<std::string> parts;
+  for (const auto& k : settableKeys(item.kind)) {
+    const Node* v = item.field(k);
+    parts.push_back(
+        v != nullptr && v->type == Node::Type::Number ? k + "=" + formatNumber(v->number) : k);
+  }
+  return join(parts, " ");
+}
+
+// The settable keys every member of a group has.
+std::vector<std::string> commonKeys(const Node& elements, const std::vector<std::size_t>& members) {
+  std::vector<std::string> keys;
+  for (std::size_t j = 0; j < members.size(); ++j) {
+    const std::vector<std::string> own = settableKeys(elements.items[members[j]].kind);
+    if (j == 0) {
+      keys = own;
+      continue;
+    }
+    std::erase_if(keys, [&](const std::string& k) {
+      return std::find(own.begin(), own.end(), k) == own.end();
+    });
+  }
+  return keys;
+}
+
+void listGroups(std::ostream& os, const Node& vehicle) {
+  const Node* groups = vehicle.field("groups");
+  const Node* elements = vehicle.field("elements");
+  if (groups == nullptr || groups->fields.empty() || elements == nullptr) {
+    os << "\nGroups: none (define them in the vehicle table: groups = { NAME = { \"prim_x_*\" } "
+          "})\n";
+    return;
+  }
+  os << "\nGroups (--set vehicle.groups.GROUP.KEY=VALUE sets KEY in every member):\n";
+  for (const auto& [name, g] : groups->fields) {
+    const GroupMembers m = groupMembers(vehicle, g);
+    std::vector<std::string> names;
+    for (const std::size_t i : m.elements) names.push_back(itemName(elements->items[i]));
+    os << "  " << name << " (" << names.size() << "): " << join(names, " ") << "\n"
+       << "      keys: " << join(commonKeys(*elements, m.elements), " ") << "\n";
+  }
+}
+
+}  // namespace
+
+void checkStudyOverrides(const StudySpec& study, const std::string& studyText,
+                         const std::string& root) {
+  Diagnostics d;
+  const auto byBase = assignmentsByBase(study);
+  for (const auto& [base, assignments] : byBase) {
+    HostOptions ho;
+    ho.root = root;
+    LuaHost host(ho);
+    Node tree;
+    try {
+      tree = host.runFile(base);
+    } catch (const InputError&) {
+      continue;  // the base's own problem: every run of it reports that
+    }
+    for (const auto& a : assignments) {
+      const std::string key = a.substr(0, a.find('='));
+      // Only the block the path starts in is copied: the override changes nothing else.
+      const std::string top = key.substr(0, key.find_first_of(".["));
+      Node scratch;
+      scratch.type = Node::Type::Table;
+      if (const Node* b = tree.field(top)) scratch.setField(top, *b);
+      const auto problem = overrideProblem(scratch, a);
+      if (!problem) continue;
+      const int line = keyLine(studyText, key);
+      d.add(line > 0 ? SourceLoc{study.file, line} : study.loc,
+            "study: \"" + key + "\": " + *problem +
+                (byBase.size() > 1 ? " (base scenario " + base + ")" : ""));
+    }
+  }
+  d.throwIfAny();
+}
+
+std::string vehicleParametersText(const std::string& scenarioPath, const std::string& root) {
+  HostOptions ho;
+  ho.root = root;
+  LuaHost host(ho);
+  const Node tree = host.runFile(scenarioPath);
+  const Node* v = tree.field("vehicle");
+  if (v == nullptr)
+    throw InputError({scenarioPath, 0},
+                     "no vehicle{} block: give a scenario that uses the vehicle, e.g. "
+                     "scenarios/studies/case3_base.lua");
+  Diagnostics d;
+  vehicle::VehicleSpec spec;
+  buildVehicle(*v, spec, d);
+  d.throwIfAny();
+  std::ostringstream os;
+  os << "Named parameters of the vehicle '" << spec.name << "' of " << scenarioPath
+     << " (--set paths for run, check and study; SI units):\n";
+  os << "\nBodies (--set vehicle.bodies.NAME.KEY=VALUE; keys: " << join(settableKeys("body"), " ")
+     << "):\n";
+  for (const auto& b : spec.bodies)
+    os << "  " << b.name << " (" << nameOf(b.kind) << "): mass=" << formatNumber(b.mass) << "\n";
+  os << "\nElements (--set vehicle.elements.NAME.KEY=VALUE):\n";
+  if (const Node* elements = v->field("elements"))
+    for (const Node& e : elements->items)
+      os << "  " << itemName(e) << " (" << e.kind << "): " << keysWithValues(e) << "\n";
+  listGroups(os, *v);
+  return os.str();
+}
+
+}  // namespace rb::scenario
