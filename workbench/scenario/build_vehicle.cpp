@@ -168,16 +168,16 @@ void buildGroups(Reader& r, const Node& vehicle) {
                     "' must be letters, digits and _ (not starting with a digit), so that --set "
                     "vehicle.groups.NAME.KEY can address it");
     const GroupMembers m = groupMembers(vehicle, members);
-    for (std::size_t i = 0; i < m.problems.size(); ++i) {
+    for (const std::string& problem : m.problems) {
       // The entry a problem names (quoted), to find its line; else the group's line.
       std::string entry;
       for (const Node& item : members.items)
         if (item.type == Node::Type::String && !item.string.empty() &&
-            m.problems[i].find("'" + item.string + "'") != std::string::npos) {
+            problem.find("'" + item.string + "'") != std::string::npos) {
           entry = item.string;
           break;
         }
-      r.errorAt(groupLoc(vehicle, name, entry), "groups." + name + ": " + m.problems[i]);
+      r.errorAt(groupLoc(vehicle, name, entry), "groups." + name + ": " + problem);
     }
   }
 }
