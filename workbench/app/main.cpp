@@ -1,5 +1,5 @@
 // The `workbench` command line: run, check, assess, tables, study, precision, stress, effects,
-// modes, critical-speed, help scenario, help vehicle SCENARIO, --version. Never prompts; every problem is reported as
+// modes, critical-speed, help scenario, --version. Never prompts; every problem is reported as
 // file:line: message with a non-zero exit code.
 //   exit 0: ok; 1: bad input (scenario, options; nothing was run); 2: the run failed (partial
 //   results kept), or its result could not be written (an earlier result is unchanged);
