@@ -1,4 +1,5 @@
--- A study whose keys name a group, an element and a body that do not exist.
+-- A study whose keys name a group, an element and a body that do not exist (a comment naming
+-- one of them, "vehicle.bodies.cat.mass", is not its line).
 study {
   base = "wagon.lua",
   matrix = {
@@ -7,6 +8,6 @@ study {
   },
   cases = {
     { ["vehicle.elements.prim_x_ws1_q.stiffness"] = 1e7 },
-    { ["vehicle.bodies.cat.mass"] = 33000 },
+    { ['vehicle.bodies.cat.mass'] = 33000 },
   },
 }

@@ -180,13 +180,13 @@ TEST(NamedParameters, UnmatchedGroupPatternAtTheVehicleFileLine) {
   const std::string what = errorOf(kDir + "tiny_bad.lua");
   const std::string file = kDir + "vehicles/tiny_bad.lua:";
   EXPECT_TRUE(contains(what, file +
-                                 "15: vehicle: groups.typo: no element named 'sprung_r' (did you "
+                                 "16: vehicle: groups.typo: no element named 'sprung_r' (did you "
                                  "mean 'spring_r'?)"))
       << what;
-  EXPECT_TRUE(contains(what, file + "16: vehicle: groups.nothing: pattern 'damper_*' matches no "
+  EXPECT_TRUE(contains(what, file + "17: vehicle: groups.nothing: pattern 'damper_*' matches no "
                                     "element"))
       << what;
-  EXPECT_TRUE(contains(what, file + "17: vehicle: groups.empty: lists no elements")) << what;
+  EXPECT_TRUE(contains(what, file + "18: vehicle: groups.empty: lists no elements")) << what;
   EXPECT_FALSE(contains(what, "groups.good")) << what;
 }
 
@@ -225,6 +225,13 @@ TEST(NamedParameters, HostileGroups) {
   EXPECT_TRUE(contains(star, "vehicle.elements: no element named 'stiffness'")) << star;
   EXPECT_TRUE(contains(star, "vehicle.elements: no element named 'dotted'")) << star;
   EXPECT_TRUE(contains(star, "vehicle.groups: no group named 'x'")) << star;
+  // '*' alone: every element; a key one of them lacks is refused, naming it, and changes nothing.
+  EXPECT_TRUE(contains(errorOf(kDir + "tiny.lua", {"vehicle.groups.all.stiffness=1"}),
+                       "vehicle.groups.all: element 'stop' (bumpstop) has no key 'stiffness'"));
+  const ScenarioSpec y = load(kDir + "tiny.lua", {"vehicle.groups.all.direction=y"});
+  ASSERT_EQ(y.vehicle.elements.size(), 5u);
+  for (const auto& e : y.vehicle.elements)
+    EXPECT_EQ(e.direction, rb::vehicle::Direction::Y) << e.name;
 }
 
 TEST(NamedParameters, GlobMatch) {
@@ -247,14 +254,14 @@ TEST(NamedParameters, GlobMatch) {
 TEST(NamedParameters, StudyTypoAtTheStudyLine) {
   const std::string file = kDir + "study_typo.lua";
   const std::string what = studyError(file);
-  EXPECT_TRUE(contains(what, file + ":5: study: \"vehicle.groups.primary_longitudnal.stiffness\": "
+  EXPECT_TRUE(contains(what, file + ":6: study: \"vehicle.groups.primary_longitudnal.stiffness\": "
                                     "vehicle.groups: no group named 'primary_longitudnal' (did you "
                                     "mean 'primary_longitudinal'?)"))
       << what;
-  EXPECT_TRUE(contains(what, file + ":9: study: \"vehicle.elements.prim_x_ws1_q.stiffness\": "
+  EXPECT_TRUE(contains(what, file + ":10: study: \"vehicle.elements.prim_x_ws1_q.stiffness\": "
                                     "vehicle.elements: no element named 'prim_x_ws1_q'"))
       << what;
-  EXPECT_TRUE(contains(what, file + ":10: study: \"vehicle.bodies.cat.mass\": vehicle.bodies: no "
+  EXPECT_TRUE(contains(what, file + ":11: study: \"vehicle.bodies.cat.mass\": vehicle.bodies: no "
                                     "body named 'cat' (did you mean 'car'?)"))
       << what;
   EXPECT_FALSE(contains(what, "vehicle.speed")) << what;
@@ -276,6 +283,13 @@ TEST(NamedParameters, HelpListsTheNamedParameters) {
                        "      keys: stiffness damping length0 preload\n"))
       << text;
   EXPECT_TRUE(contains(text, "  prim_z_ws1 (2): prim_z_ws1_l prim_z_ws1_r\n")) << text;
+  std::string noVehicle;
+  try {
+    rb::scenario::vehicleParametersText("scenarios/tracks/manchester_r500.lua", RB_SOURCE_DIR);
+  } catch (const rb::InputError& e) {
+    noVehicle = e.what();
+  }
+  EXPECT_TRUE(contains(noVehicle, "no vehicle{} block")) << noVehicle;
   // The command line prints the same listing.
   const std::string cmd = std::string(RB_BINARY_DIR) + "/workbench/app/workbench --root " +
                           RB_SOURCE_DIR + " help vehicle " + kDir + "wagon.lua";

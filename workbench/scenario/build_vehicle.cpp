@@ -108,14 +108,15 @@ void buildInitial(Reader& r, vehicle::VehicleSpec& v, Diagnostics& d) {
   }
 }
 
-// The first line of `file` from line `from` on holding `needle` (for a group name: followed by
-// '='), 0 when none. Lua records no line for the fields of a plain table, so a group's own line
-// is found in the text.
+// The first line of `file` from line `from` on holding `needle` outside a comment (for a group
+// name: followed by '='), 0 when none. Lua records no line for the fields of a plain table, so a
+// group's own line is found in the text.
 int lineOf(const std::string& file, const std::string& needle, bool assigned, int from = 1) {
   std::ifstream in(file);
   std::string line;
   for (int no = 1; std::getline(in, line); ++no) {
     if (no < from) continue;
+    line = line.substr(0, line.find("--"));  // a Lua comment may mention a group
     for (auto p = line.find(needle); p != std::string::npos; p = line.find(needle, p + 1)) {
       if (!assigned) return no;
       const auto next = line.find_first_not_of(" \t\"']", p + needle.size());

@@ -16,15 +16,18 @@
 namespace rb::scenario {
 namespace {
 
-// The line of the study text where the key is written as a string ("key" or 'key'), 0 if none.
+// The line of the study text where the key is written as a string ("key" or 'key') outside a
+// comment, 0 if none.
 // Lua records no line for the fields of a plain table, so the text is searched.
 int keyLine(const std::string& text, const std::string& key) {
   std::istringstream in(text);
   std::string line;
-  for (int no = 1; std::getline(in, line); ++no)
+  for (int no = 1; std::getline(in, line); ++no) {
+    line = line.substr(0, line.find("--"));  // a Lua comment may mention the key
     if (line.find('"' + key + '"') != std::string::npos ||
         line.find('\'' + key + '\'') != std::string::npos)
       return no;
+  }
   return 0;
 }
 

@@ -5,6 +5,7 @@ return function(opts)
   local groups = {
     pair = { "spring_l", "spring_r" },
     springs = { "spring_*" },
+    all = { "*" },
   }
   for k, v in pairs(opts.groups or {}) do groups[k] = v end
   return {

@@ -1,4 +1,5 @@
 -- A test vehicle file whose groups name nothing: the errors are reported at these lines.
+-- (this comment, typo = { "sprung_r" }, is not the line of the group typo)
 return function()
   return {
     name = "tiny_bad", speed = 10,
