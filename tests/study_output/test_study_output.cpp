@@ -1,7 +1,7 @@
 // Small per-case output: `workbench run --track-store DIR` writes the track once per distinct
 // track into DIR/<track hash>.h5 and references it from /track; `--compact` leaves out the
-// per-patch datasets. The stored track and every signal a compact run keeps must be the bytes a
-// plain run writes.
+// per-patch datasets and compresses the series. The stored track and every signal a compact run
+// keeps must be the bytes a plain run writes.
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
@@ -63,6 +63,16 @@ bool sameBytes(hid_t a, hid_t b, const std::string& path) {
   const auto x = h5test::dataset(a, path);
   const auto y = h5test::dataset(b, path);
   return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(double)) == 0;
+}
+
+// The number of filters of a dataset's storage.
+int filters(hid_t f, const std::string& path) {
+  hid_t d = H5Dopen2(f, path.c_str(), H5P_DEFAULT);
+  hid_t p = H5Dget_create_plist(d);
+  const int n = H5Pget_nfilters(p);
+  H5Pclose(p);
+  H5Dclose(d);
+  return n;
 }
 
 std::vector<fs::path> storeFiles(const fs::path& dir) {
@@ -207,6 +217,8 @@ TEST(Compact, SignalsAreThePlainRunsBitForBitAndWhatIsLeftOutIsStated) {
   }
   EXPECT_GT(compared, 150u);  // /time, speed, 7 bodies x 6, 8 wheels x 19
   EXPECT_NE(h5test::stringAttr(compact, "/", "compact").find("patch0"), std::string::npos);
+  EXPECT_EQ(filters(compact, "/bodies/ws1/y"), 2);  // shuffle + deflate
+  EXPECT_EQ(filters(plain, "/bodies/ws1/y"), 0);
   H5Fclose(plain);
   H5Fclose(compact);
 }

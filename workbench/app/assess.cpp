@@ -1,5 +1,6 @@
 #include "workbench/app/assess.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -131,9 +132,11 @@ int assessFile(const AssessOptions& o) {
     if (!spec.any()) throw InputError(kCli, "assess: nothing to assess (no group asked)");
     contact_mu = f.number("/contact", "mu").value_or(spec.mu);
     signals = run::signalsFromFile(f, spec, missing);
-    if (!missing.empty())
-      if (const auto compact = f.text("/", "compact"))
-        missing.push_back("the run was compact and left out: " + *compact);
+    const bool patch = std::any_of(missing.begin(), missing.end(), [](const std::string& m) {
+      return m.find("/patch") != std::string::npos;
+    });
+    if (const auto compact = f.text("/", "compact"); patch && compact)
+      missing.push_back("the run was compact and left out: " + *compact);
   }
   if (!missing.empty()) {
     std::vector<Diagnostic> errors;

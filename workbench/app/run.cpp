@@ -118,7 +118,8 @@ int runScenario(const RunOptions& options) {
       throw io::WriteError("cannot create the folder of the result '" + out + "': " + ec.message());
   }
 
-  io::ResultFile f(out);
+  io::ResultFile f(
+      out, options.compact ? io::ResultFile::Storage::Compact : io::ResultFile::Storage::Plain);
   const std::string stored = run::writeProvenance(c, f, isoNow(), options.track_store);
   if (options.compact) f.attr("/", "compact", std::string(kCompactOmits));
 

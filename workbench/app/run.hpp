@@ -27,7 +27,7 @@ struct RunOptions {
 inline constexpr const char* kCompactOmits =
     "per-patch contact datasets /contact/<wheelset>/<side>/patch0, patch1 (as "
     "run.output.patches = false); the per-wheel /contact datasets, /bodies, /elements and "
-    "/assessment are complete";
+    "/assessment are complete; time series stored shuffled and deflate-compressed (lossless)";
 
 // Loads, validates and compiles everything the scenario asks for; throws InputError.
 void checkScenario(const RunOptions& options);
