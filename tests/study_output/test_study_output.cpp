@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -221,4 +222,27 @@ TEST(Compact, SignalsAreThePlainRunsBitForBitAndWhatIsLeftOutIsStated) {
   EXPECT_EQ(filters(plain, "/bodies/ws1/y"), 0);
   H5Fclose(plain);
   H5Fclose(compact);
+}
+
+TEST(TrackStore, HashSeesEveryBitNameAndOrder) {
+  using C = rb::io::TrackContent;
+  C c;
+  c.items.emplace_back(C::Attr{"/track", "length", 500.0});
+  c.items.emplace_back(C::Dataset{"/track/centreline/s", "m", {0.0, 0.5, 1.0}});
+  c.items.emplace_back(C::Dataset{"/track/centreline/x", "m", {0.0, 0.5, 1.0}});
+  const std::string h = rb::io::trackHash(c);
+  EXPECT_EQ(h.size(), 32u);
+  EXPECT_EQ(rb::io::trackHash(c), h);
+  C bit = c;
+  std::get<C::Dataset>(bit.items[2]).data[1] = std::nextafter(0.5, 1.0);  // one ulp
+  EXPECT_NE(rb::io::trackHash(bit), h);
+  C order = c;
+  std::swap(order.items[1], order.items[2]);
+  EXPECT_NE(rb::io::trackHash(order), h);
+  C units = c;
+  std::get<C::Dataset>(units.items[1]).units = "km";
+  EXPECT_NE(rb::io::trackHash(units), h);
+  C kind = c;  // the same number as an integer attribute
+  std::get<C::Attr>(kind.items[0]).value = std::int64_t{500};
+  EXPECT_NE(rb::io::trackHash(kind), h);
 }

@@ -171,8 +171,4 @@ std::string trackHash(const TrackContent& c) {
   return h.hex();
 }
 
-void writeTrack(ResultFile& f, const track::TrackSpec& spec, const track::TrackSamples& t) {
-  writeTrackContent(f, trackContent(spec, t));
-}
-
 }  // namespace rb::io

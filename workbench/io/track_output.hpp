@@ -40,6 +40,4 @@ std::vector<TrackContent::Attr> trackGroupAttrs(const TrackContent& c);
 // attributes, in the same order.
 std::string trackHash(const TrackContent& c);
 
-void writeTrack(ResultFile& f, const track::TrackSpec& spec, const track::TrackSamples& t);
-
 }  // namespace rb::io
