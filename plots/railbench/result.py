@@ -298,8 +298,86 @@ def _load_dynamics(f, res: Result) -> None:
               f"their common length", file=sys.stderr)
 
 
+def _stored_track_file(path: str, g) -> str:
+    """The track store file a reference /track (attribute `stored_in`) names, relative to the
+    result's folder (workbench run --track-store, workbench/io/track_store.hpp)."""
+    rel = _str(g.attrs["stored_in"]).strip()
+    if not rel:
+        raise ResultFileError(f"{path}: /track has an empty 'stored_in'")
+    return os.path.join(os.path.dirname(os.path.abspath(path)), rel)
+
+
+def _open_stored_track(path: str, g):
+    """The open track store file of a reference /track and its /track group, after checking that
+    its track_hash equals the reference's. Raises ResultFileError naming both files."""
+    store = _stored_track_file(path, g)
+    want = _str(g.attrs.get("track_hash", "")).strip()
+    if not want:
+        raise ResultFileError(f"{path}: /track has 'stored_in' but no 'track_hash'")
+    try:
+        sf = open_h5(store, ResultFileError, "track store file")
+    except ResultFileError as e:
+        raise ResultFileError(f"{path}: its track store file (/track/stored_in): {e}") from None
+    try:
+        sg = sf["track"] if "track" in sf else None
+        got = _str(sg.attrs.get("track_hash", "")).strip() if sg is not None else ""
+    except (OSError, KeyError, ValueError) as e:
+        sf.close()
+        raise ResultFileError(f"{path}: cannot read its track store file {store} ({e})") from None
+    if sg is None or got != want:
+        sf.close()
+        what = "has no /track group" if sg is None else f"holds track {got or '(no hash)'}"
+        raise ResultFileError(f"{path}: its track store file {store} {what}, the result "
+                              f"references track {want}")
+    return sf, sg
+
+
+def _read_track(path: str, g, res: Result) -> None:
+    """/track (centreline, segments, irregularities) of group `g` into `res`."""
+    for sub in ("centreline", "segments"):
+        if sub not in g:
+            raise ResultFileError(f"{path}: missing group /track/{sub}")
+    cl = {k: _read_ds(g["centreline"], k, "/track/centreline", u)
+          for k, u in _CENTRELINE.items()}
+    n = cl["s"].size
+    if n < 2:
+        raise ResultFileError(f"{path}: /track/centreline/s has {n} sample(s)")
+    bad = [k for k, v in cl.items() if v.size != n]
+    if bad:
+        raise ResultFileError(f"{path}: /track/centreline datasets differ in length "
+                              f"({', '.join(bad)} vs s={n})")
+    sg = {k: _read_ds(g["segments"], k, "/track/segments", u) for k, u in _SEGMENTS.items()}
+    m = sg["start"].size
+    if any(v.size != m for v in sg.values()):
+        raise ResultFileError(f"{path}: /track/segments datasets differ in length")
+    res.track = Track(attrs=_attrs(g), centreline=cl, segments=sg)
+
+    if "irregularities" in g:
+        ig = g["irregularities"]
+        data = {k: _read_ds(ig, k, "/track/irregularities", u) for k, u in _IRR.items()}
+        for k, u in _IRR_OPTIONAL.items():
+            if k in ig:
+                data[k] = _read_ds(ig, k, "/track/irregularities", u)
+        ni = data["s"].size
+        if any(data[k].size != ni for k in _IRR):
+            raise ResultFileError(f"{path}: /track/irregularities datasets differ in length")
+        target = None
+        if "target_psd" in ig:
+            tg = ig["target_psd"]
+            target = {"omega": _read_ds(tg, "omega", "/track/irregularities/target_psd",
+                                        "rad/m")}
+            for c in CHANNELS:
+                if c in tg:
+                    target[c] = _read_ds(tg, c, "/track/irregularities/target_psd",
+                                         "m^2/(rad/m)")
+        res.irregularities = Irregularities(attrs=_attrs(ig), data=data, target=target)
+
+
 def load_result(path: str) -> Result:
-    """Open and validate a result file. Raises ResultFileError with a one-line message."""
+    """Open and validate a result file. Raises ResultFileError with a one-line message. A /track
+    that references a track store file (attribute `stored_in`) is read from that file; the
+    track's attributes are the store's with the result's own (build_time_s, stored_in,
+    track_hash) on top."""
     hint = " (a run still in progress writes '<name>.tmp')" if os.path.exists(path + ".tmp") else ""
     f = open_h5(path, ResultFileError, "result file", hint)
     try:
@@ -308,43 +386,13 @@ def load_result(path: str) -> Result:
             if "track" not in f:
                 raise ResultFileError(f"{path}: no /track group (not a railbench result file?)")
             g = f["track"]
-            for sub in ("centreline", "segments"):
-                if sub not in g:
-                    raise ResultFileError(f"{path}: missing group /track/{sub}")
-            cl = {k: _read_ds(g["centreline"], k, "/track/centreline", u)
-                  for k, u in _CENTRELINE.items()}
-            n = cl["s"].size
-            if n < 2:
-                raise ResultFileError(f"{path}: /track/centreline/s has {n} sample(s)")
-            bad = [k for k, v in cl.items() if v.size != n]
-            if bad:
-                raise ResultFileError(f"{path}: /track/centreline datasets differ in length "
-                                      f"({', '.join(bad)} vs s={n})")
-            sg = {k: _read_ds(g["segments"], k, "/track/segments", u) for k, u in _SEGMENTS.items()}
-            m = sg["start"].size
-            if any(v.size != m for v in sg.values()):
-                raise ResultFileError(f"{path}: /track/segments datasets differ in length")
-            res.track = Track(attrs=_attrs(g), centreline=cl, segments=sg)
-
-            if "irregularities" in g:
-                ig = g["irregularities"]
-                data = {k: _read_ds(ig, k, "/track/irregularities", u) for k, u in _IRR.items()}
-                for k, u in _IRR_OPTIONAL.items():
-                    if k in ig:
-                        data[k] = _read_ds(ig, k, "/track/irregularities", u)
-                ni = data["s"].size
-                if any(data[k].size != ni for k in _IRR):
-                    raise ResultFileError(f"{path}: /track/irregularities datasets differ in length")
-                target = None
-                if "target_psd" in ig:
-                    tg = ig["target_psd"]
-                    target = {"omega": _read_ds(tg, "omega", "/track/irregularities/target_psd",
-                                                "rad/m")}
-                    for c in CHANNELS:
-                        if c in tg:
-                            target[c] = _read_ds(tg, c, "/track/irregularities/target_psd",
-                                                 "m^2/(rad/m)")
-                res.irregularities = Irregularities(attrs=_attrs(ig), data=data, target=target)
+            if "stored_in" in g.attrs:
+                sf, sg = _open_stored_track(path, g)
+                with sf:
+                    _read_track(path, sg, res)
+                res.track.attrs.update(_attrs(g))
+            else:
+                _read_track(path, g, res)
             _load_dynamics(f, res)
             return res
     except ResultFileError:

@@ -1,5 +1,6 @@
 #include "workbench/app/assess.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -17,6 +18,14 @@ namespace {
 
 const SourceLoc kCli{"<command line>", 0};
 constexpr const char* kPrefix = "run.assessment.";
+
+// Whether the run wrote the per-patch contact datasets the wear assessment reads (a compact run
+// or run.output.patches = false leaves them out).
+bool hasPatchOutputs(const io::ResultReader& f) {
+  for (const auto& ws : f.members("/contact"))
+    if (f.has("/contact/" + ws + "/left/patch0")) return true;
+  return false;
+}
 
 // The parameters the file's assessment applied, and its groups (safety and wear from the outputs
 // when it has none).
@@ -36,7 +45,8 @@ assessment::AssessmentSpec specOfFile(const io::ResultReader& f) {
     s.comfort = f.has(A + "/comfort");
     s.wear = f.has(A + "/wear");
   } else {
-    s.safety = s.wear = f.has("/contact");
+    s.safety = f.has("/contact");
+    s.wear = hasPatchOutputs(f);
   }
   return s;
 }
@@ -122,6 +132,11 @@ int assessFile(const AssessOptions& o) {
     if (!spec.any()) throw InputError(kCli, "assess: nothing to assess (no group asked)");
     contact_mu = f.number("/contact", "mu").value_or(spec.mu);
     signals = run::signalsFromFile(f, spec, missing);
+    const bool patch = std::any_of(missing.begin(), missing.end(), [](const std::string& m) {
+      return m.find("/patch") != std::string::npos;
+    });
+    if (const auto compact = f.text("/", "compact"); patch && compact)
+      missing.push_back("the run was compact and left out: " + *compact);
   }
   if (!missing.empty()) {
     std::vector<Diagnostic> errors;

@@ -57,6 +57,12 @@ int workbench(int argc, char** argv) {
       ->allow_extra_args(false);
   run->add_option("--out", ro.out, "result file (default out/<scenario>.h5)");
   run->add_flag("--quiet", ro.quiet, "no progress line");
+  run->add_option("--track-store", ro.track_store,
+                  "write the track once per distinct track into DIR/<track hash>.h5 and only a "
+                  "reference into the result");
+  run->add_flag("--compact", ro.compact,
+                "leave out the per-patch contact datasets (the result's root attribute "
+                "'compact' says so)");
 
   rb::app::RunOptions co;
   auto* check = app.add_subcommand("check", "validate a scenario without running it");

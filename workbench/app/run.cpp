@@ -106,6 +106,8 @@ int runScenario(const RunOptions& options) {
   // not start never touches an earlier result.
   run::Model c = run::compile(compileOptions(options));
   for (const auto& w : c.warnings) std::cerr << w << "\n";
+  // Output only: the model, its integration and every written signal are those of a full run.
+  if (options.compact) c.spec.run.output_patches = false;
   const unsigned period = stagePeriod(options);
   const std::string out = defaultOut(options);
   checkOutputPath(out, c);
@@ -116,8 +118,10 @@ int runScenario(const RunOptions& options) {
       throw io::WriteError("cannot create the folder of the result '" + out + "': " + ec.message());
   }
 
-  io::ResultFile f(out);
-  run::writeProvenance(c, f, isoNow());
+  io::ResultFile f(
+      out, options.compact ? io::ResultFile::Storage::Compact : io::ResultFile::Storage::Plain);
+  const std::string stored = run::writeProvenance(c, f, isoNow(), options.track_store);
+  if (options.compact) f.attr("/", "compact", std::string(kCompactOmits));
 
   std::ostringstream msg;
   msg << "wrote " << out << ": track " << c.track->geometry().length() << " m, "
@@ -130,6 +134,7 @@ int runScenario(const RunOptions& options) {
       msg << ", measured irregularities";
   }
   msg << " (built in " << c.track_build_s * 1e3 << " ms)";
+  if (!stored.empty()) msg << ", " << stored;
 
   int rc = 0;
   if (c.vehicle) {

@@ -43,8 +43,13 @@ class Series {
 
 class ResultFile {
  public:
+  // How the file stores its time series. Compact, for the many small files of a study: the
+  // chunks of every series are shuffled and deflate-compressed (lossless: a reader gets back the
+  // very bytes written; the padding of a partly filled chunk costs almost nothing) and the chunk
+  // index nodes are small. Plain files are read by any HDF5 reader without filters.
+  enum class Storage { Plain, Compact };
   // Creates the temporary beside `path`. Throws WriteError naming the path on failure.
-  explicit ResultFile(std::string path);
+  explicit ResultFile(std::string path, Storage storage = Storage::Plain);
   // Updates the existing result `path`: the temporary is a copy of it, opened for writing, and
   // finalize() renames it over `path`, so a failed update leaves `path` as it was. Throws
   // WriteError when `path` cannot be copied or opened.
@@ -94,6 +99,7 @@ class ResultFile {
   std::string tmp_;
   std::int64_t file_ = -1;
   bool finalized_ = false;
+  Storage storage_ = Storage::Plain;
   std::vector<std::unique_ptr<Series>> series_;
 };
 

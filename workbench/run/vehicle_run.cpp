@@ -16,6 +16,7 @@
 #include "workbench/integrators/registry.hpp"
 #include "workbench/io/initial_output.hpp"
 #include "workbench/io/track_output.hpp"
+#include "workbench/io/track_store.hpp"
 #include "workbench/run/assessment_run.hpp"
 #include "workbench/run/simulate.hpp"
 #include "workbench/track/samples.hpp"
@@ -683,7 +684,8 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   return out;
 }
 
-void writeProvenance(const Model& c, io::ResultFile& f, const std::string& created) {
+std::string writeProvenance(const Model& c, io::ResultFile& f, const std::string& created,
+                            const std::string& track_store) {
   f.attr("/", "version", std::string(kVersion));
   f.attr("/", "created", created);
   f.attr("/", "scenario_file", c.spec.file);
@@ -711,8 +713,17 @@ void writeProvenance(const Model& c, io::ResultFile& f, const std::string& creat
   }
   f.attr("/", "effects", join(effects, "\n"));
   f.attr("/", "seeds", seeds);
-  io::writeTrack(f, c.spec.track, track::sampleTrack(*c.track));
+  const io::TrackContent track = io::trackContent(c.spec.track, track::sampleTrack(*c.track));
+  std::string note;
+  if (track_store.empty()) {
+    io::writeTrackContent(f, track);
+  } else {
+    const io::StoredTrack stored = io::storeTrack(track, track_store);
+    io::writeTrackReference(f, track, stored);
+    note = "track " + std::string(stored.written ? "stored in " : "found in ") + stored.file;
+  }
   f.attr("/track", "build_time_s", c.track_build_s);
+  return note;
 }
 
 }  // namespace rb::run

@@ -50,8 +50,11 @@ assessment::AssessmentSpec applicableAssessment(const Model& m);
 VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunOptions& options);
 
 // Root provenance attributes (version, scenario text and modules, overrides, effects, seeds) and
-// the /track group of a compiled model.
-void writeProvenance(const Model& m, io::ResultFile& f, const std::string& created);
+// the /track group of a compiled model. With a track_store folder the track is written once per
+// distinct track into that folder (io/track_store.hpp) and /track only references it; the
+// returned message says which store file (empty without a store).
+std::string writeProvenance(const Model& m, io::ResultFile& f, const std::string& created,
+                            const std::string& track_store = {});
 
 // Creepage above which the creep laws leave the range they are calibrated for (assumption, see
 // docs/contact_dynamics.md): a run that exceeds it is recorded with a warning.
