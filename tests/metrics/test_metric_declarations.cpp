@@ -48,7 +48,8 @@ std::string errorOf(const std::string& metrics) {
 }  // namespace
 
 TEST(MetricDeclarations, GoodOnesParse) {
-  StudyFile f(R"(    { name = "y_max", signal = "/bodies/ws1/y", stat = "max_abs", from = 100, to = 400 },
+  StudyFile f(
+      R"(    { name = "y_max", signal = "/bodies/ws1/y", stat = "max_abs", from = 100, to = 400 },
     { name = "y_ss", kind = "steady", signal = "/bodies/ws1/y", length = 50, tolerance = 1e-4 },
     { name = "yq", kind = "assessment", quantity = "y_over_q" },
     { name = "err", kind = "error", signal = "/bodies/ws1/y", along = "time" },
@@ -71,9 +72,11 @@ TEST(MetricDeclarations, GoodOnesParse) {
 
 TEST(MetricDeclarations, BadOnesAreFileLineErrors) {
   const std::vector<std::pair<std::string, std::string>> bad = {
-      {R"({ name = "a", signal = "/bodies/ws1/y", stat = "maxx" })", "unknown stat 'maxx' (did you mean 'max'?)"},
+      {R"({ name = "a", signal = "/bodies/ws1/y", stat = "maxx" })",
+       "unknown stat 'maxx' (did you mean 'max'?)"},
       {R"({ name = "a", stat = "max" })", "needs signal"},
-      {R"({ name = "a", signal = "/bodies/ws1/y", stat = "max", from = 5, to = 1 })", "from must be less than to"},
+      {R"({ name = "a", signal = "/bodies/ws1/y", stat = "max", from = 5, to = 1 })",
+       "from must be less than to"},
       {R"({ name = "a", kind = "rainflow", signal = "/x" })", "unknown kind 'rainflow'"},
       {R"({ name = "a", fn = function(s) return 1 end })", "needs signals"},
       {R"({ name = "a", signal = "bodies/ws1/y", stat = "max" })", "dataset path"},
@@ -81,7 +84,8 @@ TEST(MetricDeclarations, BadOnesAreFileLineErrors) {
       {R"({ name = "a", signal = "/y", stat = "max", colour = 1 })", "unknown key 'colour'"},
       {R"({ name = "a", kind = "assessment", quantity = "yq" })", "unknown assessment quantity"},
       {R"({ name = "a", kind = "linear_critical_speed", speeds = { 80, 20, 4 } })", "0 < lo < hi"},
-      {R"({ name = "a", signal = "/y", stat = "max" }, { name = "a", signal = "/y", stat = "min" })", "name given twice"},
+      {R"({ name = "a", signal = "/y", stat = "max" }, { name = "a", signal = "/y", stat = "min" })",
+       "name given twice"},
   };
   for (const auto& [decl, want] : bad) {
     const std::string e = errorOf("    " + decl + ",");

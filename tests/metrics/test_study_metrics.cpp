@@ -31,22 +31,28 @@ std::vector<std::map<std::string, std::string>> readCsv(const fs::path& p) {
     std::vector<std::string> f(1);
     bool q = false;
     for (char c : line) {
-      if (c == '"') q = !q;
-      else if (c == ',' && !q) f.emplace_back();
-      else f.back() += c;
+      if (c == '"')
+        q = !q;
+      else if (c == ',' && !q)
+        f.emplace_back();
+      else
+        f.back() += c;
     }
     rows.push_back(f);
   }
   std::vector<std::map<std::string, std::string>> out;
   for (std::size_t r = 1; r < rows.size(); ++r) {
     std::map<std::string, std::string> m;
-    for (std::size_t c = 0; c < rows[0].size() && c < rows[r].size(); ++c) m[rows[0][c]] = rows[r][c];
+    for (std::size_t c = 0; c < rows[0].size() && c < rows[r].size(); ++c)
+      m[rows[0][c]] = rows[r][c];
     out.push_back(m);
   }
   return out;
 }
 
-double num(const std::string& s) { return std::strtod(s.c_str(), nullptr); }
+double num(const std::string& s) {
+  return std::strtod(s.c_str(), nullptr);
+}
 
 struct Expected {
   double y_max = 0, y_mean = 0, q_fn = 0;
@@ -95,16 +101,18 @@ const char* kMetrics = R"(
 
 TEST(StudyMetrics, SummaryColumnsMatchAnIndependentComputation) {
   std::random_device rd;
-  const fs::path dir = fs::temp_directory_path() / ("railbench_study_metrics_" + std::to_string(rd()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("railbench_study_metrics_" + std::to_string(rd()));
   fs::create_directories(dir);
   const std::string study = (dir / "m.lua").string();
-  std::ofstream(study) << "study {\n  base = \"" << RB_SOURCE_DIR
-                       << "/scenarios/studies/case3_base.lua\",\n"
-                          "  matrix = { [\"run.distance\"] = { 3 } },\n"
-                          "  cases = { { label = \"ref\", role = \"reference\" },\n"
-                          "            { label = \"same\", [\"solver.max_steps\"] = 100000 },\n"
-                          "            { label = \"damped\", [\"contact.flange_damping\"] = 1e5 } },\n"
-                       << kMetrics << "}\n";
+  std::ofstream(study)
+      << "study {\n  base = \"" << RB_SOURCE_DIR
+      << "/scenarios/studies/case3_base.lua\",\n"
+         "  matrix = { [\"run.distance\"] = { 3 } },\n"
+         "  cases = { { label = \"ref\", role = \"reference\" },\n"
+         "            { label = \"same\", [\"solver.max_steps\"] = 100000 },\n"
+         "            { label = \"damped\", [\"contact.flange_damping\"] = 1e5 } },\n"
+      << kMetrics << "}\n";
   setenv("RAILBENCH_STUDY_PLOTS", "0", 1);
   rb::app::StudyOptions o;
   o.file = study;

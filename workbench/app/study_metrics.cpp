@@ -25,7 +25,9 @@ struct Signal {
   std::string why;
 };
 
-std::string parentOf(const std::string& p) { return p.substr(0, p.rfind('/')); }
+std::string parentOf(const std::string& p) {
+  return p.substr(0, p.rfind('/'));
+}
 
 // The body names of the file, in the vehicle's order.
 std::vector<std::string> bodies(const io::ResultReader& r) {
@@ -82,7 +84,9 @@ Signal readSignal(const io::ResultReader& r, const std::string& path, const std:
   return s;
 }
 
-sm::Window windowOf(const MetricSpec& m) { return {m.from, m.to}; }
+sm::Window windowOf(const MetricSpec& m) {
+  return {m.from, m.to};
+}
 
 sm::Value signalMetric(const io::ResultReader& r, const MetricSpec& m) {
   const Signal s = readSignal(r, m.signal, m.along);

@@ -50,7 +50,6 @@ bool storeCaseMetrics(const scenario::StudySpec& st, const scenario::StudyCase& 
 // The metrics of a case for a summary: those of /metrics when its hash is metricsHash(st), the
 // others (and all of them otherwise) computed from `h5`; the error metrics against `referenceH5`.
 std::vector<io::MetricRecord> summaryMetrics(MetricContext& ctx, const scenario::StudyCase& c,
-                                             const std::string& h5,
-                                             const std::string& referenceH5);
+                                             const std::string& h5, const std::string& referenceH5);
 
 }  // namespace rb::app::study_detail

@@ -67,7 +67,7 @@ struct CaseSum {
   std::vector<double> cpu;
   int runs = 0;
   std::string status, message, file;
-  std::map<std::string, double> first;  // counts of the first run (exact, equal over repeats)
+  std::map<std::string, double> first;    // counts of the first run (exact, equal over repeats)
   std::vector<io::MetricRecord> metrics;  // of the first run (metrics are deterministic)
   bool hasMetrics = false;
 };
@@ -221,8 +221,8 @@ std::string casesCsv(const scenario::StudySpec& st, std::map<std::string, CaseSu
       if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << cs.first[k];
     for (std::size_t k = 0; k < st.metrics.size(); ++k)
       cases << "," << (k < cs.metrics.size() ? exactField(cs.metrics[k].value) : std::string());
-    cases << "," << csvField(withMetricReasons(cs.message, cs.metrics)) << ","
-          << csvField(cs.file) << "\n";
+    cases << "," << csvField(withMetricReasons(cs.message, cs.metrics)) << "," << csvField(cs.file)
+          << "\n";
   }
   return cases.str();
 }

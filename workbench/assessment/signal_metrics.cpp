@@ -8,10 +8,12 @@
 namespace rb::assessment::metrics {
 namespace {
 
-const std::vector<std::string> kStatNames = {"max", "min",  "max_abs",           "mean",
+const std::vector<std::string> kStatNames = {"max", "min", "max_abs",           "mean",
                                              "rms", "std", "half_peak_to_peak", "final"};
 
-std::string num(double v) { return formatNumber(v, 6); }
+std::string num(double v) {
+  return formatNumber(v, 6);
+}
 
 // Mean of y[first, last).
 double meanOf(const std::vector<double>& y, std::size_t first, std::size_t last) {
@@ -59,8 +61,8 @@ double statOver(const std::vector<double>& y, std::size_t first, std::size_t las
 }
 
 // The first NaN or infinity of y[first, last), as a reason; "" when there is none.
-std::string nonFinite(const std::vector<double>& x, const std::vector<double>& y,
-                      std::size_t first, std::size_t last) {
+std::string nonFinite(const std::vector<double>& x, const std::vector<double>& y, std::size_t first,
+                      std::size_t last) {
   for (std::size_t k = first; k < last; ++k)
     if (!std::isfinite(y[k])) return "the signal is " + num(y[k]) + " at " + num(x[k]);
   return {};
@@ -68,7 +70,9 @@ std::string nonFinite(const std::vector<double>& x, const std::vector<double>& y
 
 }  // namespace
 
-const std::vector<std::string>& statNames() { return kStatNames; }
+const std::vector<std::string>& statNames() {
+  return kStatNames;
+}
 
 bool statFromName(const std::string& name, Stat& out) {
   const auto it = std::find(kStatNames.begin(), kStatNames.end(), name);
@@ -138,7 +142,8 @@ Value steady(const std::vector<double>& x, const std::vector<double>& y, const W
   const std::size_t mid = p + (last - p) / 2;
   const double drift = std::fabs(meanOf(y, mid, last) - meanOf(y, p, mid));
   const double half = statOver(y, p, last, Stat::HalfPeakToPeak);
-  const double tol = tolerance >= 0.0 ? tolerance : kSteadyRelTol * statOver(y, p, last, Stat::MaxAbs);
+  const double tol =
+      tolerance >= 0.0 ? tolerance : kSteadyRelTol * statOver(y, p, last, Stat::MaxAbs);
   if (drift > tol || half > tol)
     v.note = "not steady over the last " + num(part) + " (drift " + num(drift) +
              ", half peak-to-peak " + num(half) + " > tolerance " + num(tol) + ")";
@@ -176,8 +181,8 @@ Value maxAbsDifference(const std::vector<double>& x, const std::vector<double>& 
     double yi = 0.0;
     if (!interpolate(x, y, xr[k], yi))
       return Value::fail("the reference's sample at " + num(xr[k]) +
-                         " is outside the case's range [" + num(x.front()) + ", " +
-                         num(x.back()) + "]");
+                         " is outside the case's range [" + num(x.front()) + ", " + num(x.back()) +
+                         "]");
     v.value = std::max(v.value, std::fabs(yi - yr[k]));
   }
   return v;

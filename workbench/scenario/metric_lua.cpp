@@ -78,9 +78,10 @@ struct LuaMetrics::Impl {
     if (self->dead || self->instructions > kMetricInstructionLimit ||
         std::chrono::steady_clock::now() > self->deadline) {
       self->dead = true;
-      luaL_error(L, "metric function exceeded its budget of %I Lua instructions or %f s "
-                 "(endless loop?)", static_cast<lua_Integer>(kMetricInstructionLimit),
-                 kMetricTimeLimit);
+      luaL_error(L,
+                 "metric function exceeded its budget of %I Lua instructions or %f s "
+                 "(endless loop?)",
+                 static_cast<lua_Integer>(kMetricInstructionLimit), kMetricTimeLimit);
     }
   }
 
@@ -150,8 +151,8 @@ struct LuaMetrics::Impl {
         status = luaL_loadbufferx(L, text.data(), text.size(), chunk.c_str(), "t");
       }
     }
-    if (!found) return luaL_error(L, "module '%s' not found below the study's folder or scenarios/",
-                                  name);
+    if (!found)
+      return luaL_error(L, "module '%s' not found below the study's folder or scenarios/", name);
     if (status != LUA_OK) return lua_error(L);
     lua_call(L, 0, 1);
     if (lua_isnil(L, -1)) {
@@ -164,8 +165,10 @@ struct LuaMetrics::Impl {
   }
 
   void openSandbox() {
-    const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},        {LUA_STRLIBNAME, luaopen_string},
-                             {LUA_TABLIBNAME, luaopen_table},  {LUA_MATHLIBNAME, luaopen_math},
+    const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},
+                             {LUA_STRLIBNAME, luaopen_string},
+                             {LUA_TABLIBNAME, luaopen_table},
+                             {LUA_MATHLIBNAME, luaopen_math},
                              {LUA_UTF8LIBNAME, luaopen_utf8}};
     for (const auto& l : libs) {
       luaL_requiref(L, l.name, l.func, 1);
@@ -217,7 +220,8 @@ LuaMetrics::LuaMetrics(const std::string& path, const std::string& root)
   *static_cast<Impl**>(lua_getextraspace(im.L)) = &im;
   std::error_code ec;
   im.moduleRoots.push_back(fs::weakly_canonical(fs::absolute(path, ec).parent_path(), ec));
-  if (!root.empty()) im.moduleRoots.push_back(fs::weakly_canonical(fs::path(root) / "scenarios", ec));
+  if (!root.empty())
+    im.moduleRoots.push_back(fs::weakly_canonical(fs::path(root) / "scenarios", ec));
   im.openSandbox();
   std::string text;
   if (!readText(path, text)) throw InputError({path, 0}, "cannot read the study file");
@@ -271,8 +275,8 @@ bool LuaMetrics::call(int index,
   }
   const bool number = lua_type(L, -1) == LUA_TNUMBER;
   out = number ? lua_tonumber(L, -1) : std::nan("");
-  if (!number) why = std::string("the function returned a ") + luaL_typename(L, -1) +
-                     ", not a number";
+  if (!number)
+    why = std::string("the function returned a ") + luaL_typename(L, -1) + ", not a number";
   else if (!std::isfinite(out))
     why = "the function returned " + std::to_string(out);
   lua_settop(L, 0);

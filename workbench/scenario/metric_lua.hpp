@@ -35,8 +35,8 @@ class LuaMetrics {
   std::unique_ptr<Impl> impl_;
 };
 
-inline constexpr long long kMetricInstructionLimit = 1'000'000'000;  // per call
-inline constexpr double kMetricTimeLimit = 30.0;                       // [s] per call
+inline constexpr long long kMetricInstructionLimit = 1'000'000'000;      // per call
+inline constexpr double kMetricTimeLimit = 30.0;                         // [s] per call
 inline constexpr std::size_t kMetricMemoryLimit = std::size_t{1} << 30;  // bytes
 
 }  // namespace rb::scenario

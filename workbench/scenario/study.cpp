@@ -310,14 +310,14 @@ void labelCases(StudySpec& st, const std::vector<std::string>& given,
   }
 }
 
-const std::vector<std::string> kMetricKinds = {"signal", "steady", "assessment", "error",
-                                               "linear_critical_speed", "lua"};
-const std::vector<std::string> kMetricKeys = {"name",     "kind",   "signal",    "stat",
-                                              "from",     "to",     "along",     "length",
-                                              "tolerance", "quantity", "speeds", "signals", "fn"};
+const std::vector<std::string> kMetricKinds = {
+    "signal", "steady", "assessment", "error", "linear_critical_speed", "lua"};
+const std::vector<std::string> kMetricKeys = {
+    "name",   "kind",      "signal",   "stat",   "from",    "to", "along",
+    "length", "tolerance", "quantity", "speeds", "signals", "fn"};
 // The summary names of /assessment/summary a metric may give alone (docs/assessment.md).
 const std::vector<std::string> kAssessmentNames = {
-    "y_over_q", "dq_over_q",  "y_qst",      "q_qst",       "q_max",      "sum_y",
+    "y_over_q", "dq_over_q",  "y_qst",       "q_qst",       "q_max",        "sum_y",
     "n_mv",     "wz_lateral", "wz_vertical", "t_gamma_max", "stability_rms"};
 
 std::string unknownWithHint(const std::string& what, const std::string& got,
@@ -418,9 +418,8 @@ void checkKind(const Node& m, MetricSpec& ms, const ErrorFn& err) {
     if (ms.quantity.empty())
       err("an assessment metric needs quantity = one of " + join(kAssessmentNames, ", ") +
           " or a path \"/assessment/...@attribute\"");
-    else if (ms.quantity[0] != '/' &&
-             std::find(kAssessmentNames.begin(), kAssessmentNames.end(), ms.quantity) ==
-                 kAssessmentNames.end())
+    else if (ms.quantity[0] != '/' && std::find(kAssessmentNames.begin(), kAssessmentNames.end(),
+                                                ms.quantity) == kAssessmentNames.end())
       err(unknownWithHint("assessment quantity", ms.quantity, kAssessmentNames));
     else if (ms.quantity[0] == '/' && ms.quantity.rfind("/assessment/", 0) != 0)
       err("quantity path must lie below /assessment/, got '" + ms.quantity + "'");
