@@ -113,6 +113,9 @@ TEST(SignalMetrics, MaxAbsDifference) {
   EXPECT_DOUBLE_EQ(m::maxAbsDifference(x, y, xr, yr, {}).value, 0.25);
   EXPECT_DOUBLE_EQ(m::maxAbsDifference(x, y, xr, yr, {2, 3}).value, 0.0);
   // The reference runs further than the case: refused.
-  const std::vector<double> xl = {0, 4}, yl = {0, 4};
+  const std::vector<double> xl = {0, 4.5}, yl = {0, 4.5};
   EXPECT_FALSE(m::maxAbsDifference(x, y, xl, yl, {}).ok());
+  // Within one sample spacing of the case's end: that sample is left out.
+  const std::vector<double> xe = {0, 1.5, 3.5}, ye = {0, 1.5, 9};
+  EXPECT_EQ(m::maxAbsDifference(x, y, xe, ye, {}).value, 0.0);
 }

@@ -68,7 +68,7 @@ struct CaseSum {
   int runs = 0;
   std::string status, message, file;
   std::map<std::string, double> first;    // counts of the first run (exact, equal over repeats)
-  std::vector<io::MetricRecord> metrics;  // of the first run (metrics are deterministic)
+  std::vector<io::MetricRecord> metrics;  // of the first run with a result (deterministic)
   bool hasMetrics = false;
 };
 
@@ -121,35 +121,44 @@ std::string withMetricReasons(std::string message, const std::vector<io::MetricR
   return message;
 }
 
-// The result of the reference case's first valid run, "" when there is none.
-std::string referenceFile(const std::vector<Job>& all) {
+// Per case id, its matrix combination (its matrix overrides joined), "" without a matrix.
+std::map<std::string, std::string> combinations(const scenario::StudySpec& st) {
+  std::map<std::string, std::string> out;
+  for (std::size_t i = 0; i < st.cases.size(); ++i)
+    out[st.cases[i].id] = i < st.matrix_parts.size() ? join(st.matrix_parts[i], " ") : "";
+  return out;
+}
+
+// Per matrix combination, the result of the first valid run of a case with role "reference".
+std::map<std::string, std::string> referenceFiles(const std::map<std::string, std::string>& combo,
+                                                  const std::vector<Job>& all) {
+  std::map<std::string, std::string> out;
   for (const auto& j : all)
-    if (j.c->role == "reference" && isDone(j.h5, *j.hash)) return j.h5;
-  return {};
+    if (j.c->role == "reference" && isDone(j.h5, *j.hash)) out.emplace(combo.at(j.c->id), j.h5);
+  return out;
 }
 
 // The metrics of one run: computed (or read back) from a valid file, else NaN with no reason of
-// their own (the run's message says why there is no result).
+// their own (the run's message says why there is no result). Error metrics compare with the
+// reference case of the same matrix combination.
 std::vector<io::MetricRecord> runMetrics(MetricContext& ctx, const Job& j, bool valid,
                                          const std::string& ref) {
-  if (valid) {
-    if (ref.empty() && j.c->role != "reference") {
-      auto ms = summaryMetrics(ctx, *j.c, j.h5, ref);
-      for (std::size_t k = 0; k < ms.size(); ++k)
-        if (ctx.st.metrics[k].kind == "error") ms[k].why = "the reference case has no result";
-      return ms;
-    }
-    return summaryMetrics(ctx, *j.c, j.h5, ref);
-  }
   std::vector<io::MetricRecord> out;
-  for (const auto& m : ctx.st.metrics) out.push_back({m.name, std::nan(""), "", ""});
+  if (!valid) {
+    for (const auto& m : ctx.st.metrics) out.push_back({m.name, std::nan(""), "", ""});
+    return out;
+  }
+  out = summaryMetrics(ctx, *j.c, j.h5, ref);
+  for (std::size_t k = 0; k < out.size() && ref.empty(); ++k)
+    if (ctx.st.metrics[k].kind == "error") out[k].why = "the reference case has no result";
   return out;
 }
 
 // One row of summary.csv per run, and the per-case sums.
 void summariseRuns(const scenario::StudySpec& st, const std::vector<Job>& all, Summary& sm) {
   MetricContext ctx(st);
-  const std::string ref = referenceFile(all);
+  const std::map<std::string, std::string> combo = combinations(st);
+  const std::map<std::string, std::string> refs = referenceFiles(combo, all);
   sm.metricCols.assign(st.metrics.size(), {});
   sm.csv.precision(12);  // counts above 1e6 exactly, CPU times to the nanosecond
   sm.csv << "case,repeat,label,role,base,overrides,status";
@@ -162,7 +171,8 @@ void summariseRuns(const scenario::StudySpec& st, const std::vector<Job>& all, S
     const RunState run =
         rec ? RunState{rec->text["status"], rec->text["message"]} : noResult(j, sm);
     const std::string& status = run.status;
-    const auto metrics = runMetrics(ctx, j, valid, ref);
+    const auto ref = refs.find(combo.at(j.c->id));
+    const auto metrics = runMetrics(ctx, j, valid, ref == refs.end() ? "" : ref->second);
     const std::string message = withMetricReasons(run.message, metrics);
     if (status != "skipped") ++sm.runsKnown;
     if (status == "ok") ++sm.runsOk;
@@ -182,7 +192,7 @@ void summariseRuns(const scenario::StudySpec& st, const std::vector<Job>& all, S
     sm.ok.push_back(status == "ok" ? 1.0 : 0.0);
     CaseSum& cs = sm.cases[j.c->id];
     ++cs.runs;
-    if (!cs.hasMetrics) {
+    if (!cs.hasMetrics && valid) {
       cs.metrics = metrics;
       cs.hasMetrics = true;
     }

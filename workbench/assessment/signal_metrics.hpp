@@ -64,7 +64,8 @@ bool interpolate(const std::vector<double>& x, const std::vector<double>& y, dou
                  double& out);
 
 // max |y(xr) - yr| over the reference samples xr inside the window, y interpolated onto them.
-// Refused when a reference sample inside the window is outside the case's sampled range.
+// Reference samples beyond the case's range by less than one of its sample spacings are left out;
+// further out, the difference is refused (no extrapolation).
 Value maxAbsDifference(const std::vector<double>& x, const std::vector<double>& y,
                        const std::vector<double>& xr, const std::vector<double>& yr,
                        const Window& w);

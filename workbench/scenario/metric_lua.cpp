@@ -117,6 +117,26 @@ struct LuaMetrics::Impl {
 
   static int noPrint(lua_State*) { return 0; }
 
+  // (fn, signals*): calls fn{ name = { samples... }, ... }. No C++ object lives here, since
+  // Lua errors unwind by longjmp.
+  static int buildAndCall(lua_State* L) {
+    const auto* signals =
+        static_cast<const std::vector<std::pair<std::string, std::vector<double>>>*>(
+            lua_touserdata(L, 2));
+    lua_settop(L, 1);
+    lua_createtable(L, 0, static_cast<int>(signals->size()));
+    for (const auto& sig : *signals) {
+      lua_createtable(L, static_cast<int>(sig.second.size()), 0);
+      for (std::size_t k = 0; k < sig.second.size(); ++k) {
+        lua_pushnumber(L, sig.second[k]);
+        lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+      }
+      lua_setfield(L, -2, sig.first.c_str());
+    }
+    lua_call(L, 1, 1);
+    return 1;
+  }
+
   // The file of module `name` below a module root, "" when there is none.
   std::string findModule(const std::string& name) const {
     std::string rel = name;
@@ -258,17 +278,13 @@ bool LuaMetrics::call(int index,
     why = "study.metrics[" + std::to_string(index) + "].fn is not a function in the study file";
     return false;
   }
-  lua_createtable(L, 0, static_cast<int>(signals.size()));
-  for (const auto& [name, v] : signals) {
-    lua_createtable(L, static_cast<int>(v.size()), 0);
-    for (std::size_t k = 0; k < v.size(); ++k) {
-      lua_pushnumber(L, v[k]);
-      lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
-    }
-    lua_setfield(L, -2, name.c_str());
-  }
+  // The table is built inside the protected call, so a refused allocation is an error of the
+  // call, not a panic. Stack: handler-less pcall of (builder, fn, signals*).
+  lua_pushcfunction(L, &Impl::buildAndCall);
+  lua_insert(L, -2);
+  lua_pushlightuserdata(L, const_cast<void*>(static_cast<const void*>(&signals)));
   im.arm();
-  if (lua_pcall(L, 1, 1, 0) != LUA_OK) {
+  if (lua_pcall(L, 2, 1, 0) != LUA_OK) {
     why = "the function raised: " + im.popError();
     lua_settop(L, 0);
     return false;

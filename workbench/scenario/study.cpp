@@ -582,6 +582,7 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
       d.add(m.loc, "study: metric " + m.name +
                        ": kind error needs a case with role = \"reference\" in cases");
   d.throwIfAny();
+  st.matrix_parts = matrixPart;
   labelCases(st, given, matrixPart);
   return st;
 }

@@ -72,6 +72,10 @@ struct StudySpec {
   std::string base;  // resolved base scenario path
   std::vector<StudyCase> cases;
   std::vector<MetricSpec> metrics;
+  // Per case (by index into cases): the matrix part of its overrides. An error metric compares a
+  // case with the reference case of the same matrix combination. Empty for a study made without
+  // a matrix (or by a command).
+  std::vector<std::vector<std::string>> matrix_parts;
   std::string text;  // the study file's text (a Lua metric's function is part of it)
   std::string root;  // project root the study was loaded with (Lua metrics re-run the file)
   int repeats = 1;
