@@ -6,6 +6,7 @@
 #include <fstream>
 #include <random>
 
+#include "workbench/scenario/metric_lua.hpp"
 #include "workbench/scenario/study.hpp"
 
 namespace fs = std::filesystem;
@@ -113,4 +114,56 @@ TEST(MetricDeclarations, ErrorMetricNeedsAReferenceCase) {
   EXPECT_NE(what.find("s.lua:1: study: metric e: kind error needs a case with role"),
             std::string::npos)
       << what;
+}
+
+TEST(MetricDeclarations, LuaFunctionsRunInTheirSandbox) {
+  StudyFile f(
+      R"(    { name = "n", fn = function(s) return #s.y + s.y[2] end, signals = { y = "/y" } },
+    { name = "bad", fn = function(s) error("no good") end, signals = { y = "/y" } },
+    { name = "str", fn = function(s) return "x" end, signals = { y = "/y" } },
+    { name = "io", fn = function(s) return io.open("/etc/passwd") end, signals = { y = "/y" } },
+    { name = "pat", fn = function(s) return ("aaa"):find("a.") end, signals = { y = "/y" } },
+    { name = "slow", signals = { y = "/y" },
+      fn = function(s) return (("a"):rep(5000)):find("a*a*a*a*b") end },)");
+  const auto st = rb::scenario::loadStudy(f.path(), RB_SOURCE_DIR);
+  rb::scenario::LuaMetrics lua(f.path(), RB_SOURCE_DIR);
+  const std::vector<std::pair<std::string, std::vector<double>>> sig = {{"y", {1.0, 2.5, 3.0}}};
+  double v = 0;
+  std::string why;
+  ASSERT_TRUE(lua.call(1, sig, v, why)) << why;
+  EXPECT_EQ(v, 5.5);
+  EXPECT_FALSE(lua.call(2, sig, v, why));
+  EXPECT_NE(why.find("s.lua:"), std::string::npos) << why;
+  EXPECT_NE(why.find("no good"), std::string::npos) << why;
+  why.clear();
+  EXPECT_FALSE(lua.call(3, sig, v, why));
+  EXPECT_NE(why.find("returned a string"), std::string::npos) << why;
+  why.clear();
+  EXPECT_FALSE(lua.call(4, sig, v, why));  // no io library
+  EXPECT_NE(why.find("io"), std::string::npos) << why;
+  why.clear();
+  ASSERT_TRUE(lua.call(5, sig, v, why)) << why;  // an affordable pattern
+  EXPECT_EQ(v, 1.0);
+  EXPECT_FALSE(lua.call(6, sig, v, why));  // one whose worst case is beyond the bound
+  EXPECT_NE(why.find("pattern too costly"), std::string::npos) << why;
+  why.clear();
+  EXPECT_FALSE(lua.call(9, sig, v, why));
+  EXPECT_NE(why.find("not a function"), std::string::npos) << why;
+}
+
+TEST(MetricDeclarations, ShippedStudiesRunInTheMetricSandbox) {
+  // Their require of studies.lib etc. works there too, so a function metric can be added to any.
+  for (const auto& e : fs::directory_iterator(std::string(RB_SOURCE_DIR) + "/scenarios/studies")) {
+    if (e.path().extension() != ".lua" || e.path().stem() == "lib" ||
+        e.path().stem() == "case3_base")
+      continue;
+    std::string text;
+    {
+      std::ifstream in(e.path());
+      text.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    if (text.find("study {") == std::string::npos && text.find("study{") == std::string::npos)
+      continue;
+    EXPECT_NO_THROW(rb::scenario::LuaMetrics(e.path().string(), RB_SOURCE_DIR)) << e.path();
+  }
 }

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
+#include <tuple>
 
 extern "C" {
 #include <lauxlib.h>
@@ -39,6 +41,56 @@ bool readText(const fs::path& p, std::string& out) {
   ss << in.rdbuf();
   out = ss.str();
   return out.size() <= kMaxScenarioBytes;
+}
+
+// Worst-case work of one call of a Lua pattern function: the bound of the scenario host
+// (lua_host.hpp), which these functions share.
+double patternWork(std::string_view pat, std::size_t subjectLen, bool anchorable) {
+  const double n1 = static_cast<double>(subjectLen) + 1.0;
+  double q = 0, s = 0;
+  std::size_t i = 0;
+  const bool anchored = anchorable && !pat.empty() && pat[0] == '^';
+  if (anchored) i = 1;
+  while (i < pat.size()) {
+    const char c = pat[i];
+    bool single = true;  // a single-character class that a quantifier may follow
+    if (c == '(' || c == ')') {
+      ++i;
+      single = false;
+    } else if (c == '%' && i + 1 < pat.size()) {
+      const char d = pat[i + 1];
+      if (d == 'b') {
+        s += 1;
+        i += 4;
+        single = false;
+      } else if (d == 'f') {
+        i += 2;
+        single = false;  // the set that follows is skipped as a class below
+      } else {
+        if (std::isdigit(static_cast<unsigned char>(d))) s += 1;
+        i += 2;
+      }
+    } else if (c == '[') {
+      ++i;
+      if (i < pat.size() && pat[i] == '^') ++i;
+      if (i < pat.size()) ++i;  // a ']' first in the set is literal
+      while (i < pat.size() && pat[i] != ']') i += pat[i] == '%' ? 2 : 1;
+      ++i;
+    } else {
+      ++i;
+    }
+    if (single && i < pat.size() &&
+        (pat[i] == '*' || pat[i] == '+' || pat[i] == '-' || pat[i] == '?')) {
+      q += 1;
+      ++i;
+    }
+  }
+  const double starts = anchored ? 1.0 : n1;
+  return starts * 2.0 * std::pow(n1, q) * (static_cast<double>(pat.size()) + 2.0 + s * n1);
+}
+
+bool hasPatternSpecials(std::string_view pat) {
+  return pat.find_first_of("^$*+?.([%-") != std::string_view::npos;
 }
 
 bool below(const fs::path& p, const fs::path& root) {
@@ -116,6 +168,33 @@ struct LuaMetrics::Impl {
   }
 
   static int noPrint(lua_State*) { return 0; }
+
+  // True when the pattern call on the stack is within kPatternWorkLimit (upvalues: the library
+  // function, its name, anchorable, takes a `plain` argument).
+  static bool patternAffordable(lua_State* L, double& work) {
+    work = 0.0;
+    if (lua_toboolean(L, lua_upvalueindex(4)) && lua_toboolean(L, 4)) return true;
+    if (lua_type(L, 1) != LUA_TSTRING && lua_type(L, 1) != LUA_TNUMBER) return true;
+    if (lua_type(L, 2) != LUA_TSTRING) return true;  // the library reports the wrong type
+    std::size_t n = 0, m = 0;
+    lua_tolstring(L, 1, &n);
+    const char* pat = lua_tolstring(L, 2, &m);
+    const std::string_view p(pat, m);
+    if (!hasPatternSpecials(p)) return true;
+    work = patternWork(p, n, lua_toboolean(L, lua_upvalueindex(3)));
+    return work <= kPatternWorkLimit;
+  }
+  static int patternGuarded(lua_State* L) {
+    double work = 0.0;
+    if (!patternAffordable(L, work))
+      return luaL_error(L, "string.%s: pattern too costly (worst case %f steps, limit %f)",
+                        lua_tostring(L, lua_upvalueindex(2)), work, kPatternWorkLimit);
+    const int n = lua_gettop(L);
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, n, LUA_MULTRET);
+    return lua_gettop(L);
+  }
 
   // (fn, signals*): calls fn{ name = { samples... }, ... }. No C++ object lives here, since
   // Lua errors unwind by longjmp.
@@ -198,9 +277,16 @@ struct LuaMetrics::Impl {
       lua_pushnil(L);
       lua_setglobal(L, g);
     }
+    // The string table is also the __index of every string, so s:find(...) takes these too.
     lua_getglobal(L, "string");
-    for (const char* f : {"find", "match", "gmatch", "gsub"}) {
-      lua_pushnil(L);
+    for (const auto& [f, anchorable, plainArg] :
+         {std::tuple{"find", true, true}, std::tuple{"match", true, false},
+          std::tuple{"gmatch", false, false}, std::tuple{"gsub", true, false}}) {
+      lua_getfield(L, -1, f);
+      lua_pushstring(L, f);
+      lua_pushboolean(L, anchorable);
+      lua_pushboolean(L, plainArg);
+      lua_pushcclosure(L, &patternGuarded, 4);
       lua_setfield(L, -2, f);
     }
     lua_pop(L, 1);

@@ -5,8 +5,9 @@
 //
 // Sandbox (as the scenario host's, scenario/lua_host.hpp): base, string, table, math and utf8
 // only; no io, os, debug, load, dofile, loadfile or collectgarbage; setmetatable refuses __gc;
-// the pattern functions of the string library (find, match, gmatch, gsub) are left out, since
-// they run in C where the instruction budget cannot stop them; `require "a.b"` reads a/b.lua below
+// the pattern functions of the string library (find, match, gmatch, gsub), which run in C where
+// the instruction budget cannot stop them, refuse a call beyond the host's worst-case bound
+// (kPatternWorkLimit); `require "a.b"` reads a/b.lua below
 // the study's folder or <root>/scenarios (real path checked) as the scenario host does. Each call
 // has an instruction, wall-clock and memory budget.
 #include <memory>
