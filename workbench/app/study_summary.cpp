@@ -69,7 +69,6 @@ struct CaseSum {
   std::string status, message, file;
   std::map<std::string, double> first;    // counts of the first run (exact, equal over repeats)
   std::vector<io::MetricRecord> metrics;  // of the first run with a result (deterministic)
-  bool hasMetrics = false;
 };
 
 // What the summaries hold: summary.csv's text, the per-case sums, the columns of summary.h5.
@@ -154,6 +153,14 @@ std::vector<io::MetricRecord> runMetrics(MetricContext& ctx, const Job& j, bool 
   return out;
 }
 
+// The metric fields of a row of summary.csv and their summary.h5 columns.
+void addMetricFields(const std::vector<io::MetricRecord>& metrics, Summary& sm) {
+  for (std::size_t k = 0; k < metrics.size(); ++k) {
+    sm.csv << "," << exactField(metrics[k].value);
+    sm.metricCols[k].push_back(metrics[k].value);
+  }
+}
+
 // One row of summary.csv per run, and the per-case sums.
 void summariseRuns(const scenario::StudySpec& st, const std::vector<Job>& all, Summary& sm) {
   MetricContext ctx(st);
@@ -184,18 +191,12 @@ void summariseRuns(const scenario::StudySpec& st, const std::vector<Job>& all, S
       sm.csv << "," << numbers[k];
       sm.cols[k].push_back(numbers[k]);
     }
-    for (std::size_t k = 0; k < metrics.size(); ++k) {
-      sm.csv << "," << exactField(metrics[k].value);
-      sm.metricCols[k].push_back(metrics[k].value);
-    }
+    addMetricFields(metrics, sm);
     sm.csv << "," << csvField(message) << "," << csvField(valid ? j.h5 : "") << "\n";
     sm.ok.push_back(status == "ok" ? 1.0 : 0.0);
     CaseSum& cs = sm.cases[j.c->id];
     ++cs.runs;
-    if (!cs.hasMetrics && valid) {
-      cs.metrics = metrics;
-      cs.hasMetrics = true;
-    }
+    if (cs.metrics.empty() && valid) cs.metrics = metrics;
     if (status == "ok" && rec) cs.cpu.push_back(numbers["cpu_time_s"]);
     // The case's status: ok only when every repeat is ok; else the first problem and its reason.
     if (cs.status.empty() || (cs.status == "ok" && status != "ok")) {
