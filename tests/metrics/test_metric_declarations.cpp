@@ -85,6 +85,8 @@ TEST(MetricDeclarations, BadOnesAreFileLineErrors) {
       {R"({ name = "a", signal = "/y", stat = "max", colour = 1 })", "unknown key 'colour'"},
       {R"({ name = "a", kind = "assessment", quantity = "yq" })", "unknown assessment quantity"},
       {R"({ name = "a", kind = "linear_critical_speed", speeds = { 80, 20, 4 } })", "0 < lo < hi"},
+      {R"({ name = "a", kind = "assessment", quantity = "sum_y", from = 3 })",
+       "from, to and along apply"},
       {R"({ name = "a", signal = "/y", stat = "max" }, { name = "a", signal = "/y", stat = "min" })",
        "name given twice"},
   };

@@ -17,6 +17,7 @@
 #include "workbench/app/study.hpp"
 #include "workbench/app/study_metrics.hpp"
 #include "workbench/io/metrics_output.hpp"
+#include "workbench/stability/stability.hpp"
 
 namespace fs = std::filesystem;
 
@@ -181,5 +182,44 @@ TEST(StudyMetrics, SummaryColumnsMatchAnIndependentComputation) {
   rb::io::writeMetrics(h5, *stored);
   EXPECT_EQ(rb::app::study_detail::summaryMetrics(ctx, *c, h5, h5)[0].value,
             num(runs[0].at("metric_y_max")));
+  fs::remove_all(dir);
+}
+
+TEST(StudyMetrics, LinearCriticalSpeedOfTheCaseScenario) {
+  // The metric equals the stability library's answer on the case's scenario (base + overrides).
+  std::random_device rd;
+  const fs::path dir =
+      fs::temp_directory_path() / ("railbench_study_vcrit_" + std::to_string(rd()));
+  fs::create_directories(dir);
+  const std::string study = (dir / "v.lua").string();
+  std::ofstream(study) << "study { base = \"" << RB_SOURCE_DIR
+                       << "/scenarios/studies/case3_base.lua\",\n"
+                          "  matrix = { [\"run.distance\"] = { 1 } },\n"
+                          "  metrics = { { name = \"v\", kind = \"linear_critical_speed\", "
+                          "speeds = { 20, 200, 3 } },\n"
+                          "              { name = \"none\", kind = \"linear_critical_speed\", "
+                          "speeds = { 20, 30, 2 } } } }\n";
+  setenv("RAILBENCH_STUDY_PLOTS", "0", 1);
+  rb::app::StudyOptions o;
+  o.file = study;
+  o.out = (dir / "out").string();
+  o.root = RB_SOURCE_DIR;
+  o.program = std::string(RB_BINARY_DIR) + "/workbench/app/workbench";
+  ASSERT_EQ(rb::app::runStudy(o), 0);
+  const auto cases = readCsv(dir / "out" / "summary_cases.csv");
+  ASSERT_EQ(cases.size(), 1u);
+  rb::scenario::LoadOptions lo;
+  lo.root = RB_SOURCE_DIR;
+  lo.overrides = {"run.distance=1"};
+  const auto cs = rb::stability::linearCriticalSpeed(
+      rb::scenario::loadScenario(std::string(RB_SOURCE_DIR) + "/scenarios/studies/case3_base.lua",
+                                 lo),
+      20, 200, 3);
+  ASSERT_TRUE(cs.found);
+  EXPECT_EQ(num(cases[0].at("metric_v")), cs.speed);
+  // None between 20 and 30 m/s: no value, and the library's reason.
+  EXPECT_EQ(cases[0].at("metric_none"), "");
+  EXPECT_NE(cases[0].at("message").find("metric none: no linear critical speed"), std::string::npos)
+      << cases[0].at("message");
   fs::remove_all(dir);
 }

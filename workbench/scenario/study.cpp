@@ -424,6 +424,9 @@ void checkKind(const Node& m, MetricSpec& ms, const ErrorFn& err) {
     else if (ms.quantity[0] == '/' && ms.quantity.rfind("/assessment/", 0) != 0)
       err("quantity path must lie below /assessment/, got '" + ms.quantity + "'");
   }
+  const bool windowed = needsSignal;
+  if (!windowed && (m.field("from") || m.field("to") || m.field("along")))
+    err("from, to and along apply to kinds signal, steady and error, not " + ms.kind);
   if (ms.kind == "linear_critical_speed") readSpeeds(m, ms, err);
   if (ms.kind == "lua") readLuaSignals(m, ms, err);
   if (ms.kind != "lua" && m.field("signals")) err("signals belongs to a function metric (fn)");
