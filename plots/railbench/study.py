@@ -22,6 +22,8 @@ Figures
     fig_work_precision(rows, stat)         error vs CPU time, log-log, per quantity
     fig_effects(rows)                      microseconds per evaluation per variant
     fig_tables(study)                      contact table build time and size (default/refined)
+    make_metric_outputs(outdir, written)   each metric against the swept parameters
+                                           (study_metrics.py)
 Driver
     make_study_outputs(outdir)             everything that applies; returns the written paths
 
@@ -46,6 +48,7 @@ from .style import DPI
 from .study_data import StudyError, close_all, load_study
 from .study_cost import accuracy_rows, cost_rows, failure_rows, fig_accuracy, fig_cost, fig_lut_integrators, fig_lut_stiffness, fig_tables
 from .study_precision import effect_rows, fig_effects, fig_work_precision, work_precision_rows
+from .study_metrics import make_metric_outputs
 
 
 # Driver
@@ -87,6 +90,8 @@ def make_study_outputs(outdir: str, dpi: int = DPI) -> List[str]:
                       p(f"study_work_precision{suffix}.png"), written, dpi)
                 save_figure(fig_work_precision(rows, "rms", against),
                       p(f"study_work_precision{suffix}_rms.png"), written, dpi)
+
+        make_metric_outputs(outdir, written, dpi)
 
         eff = effect_rows(study)
         if eff:

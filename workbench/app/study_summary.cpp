@@ -1,10 +1,13 @@
 #include "workbench/app/study_summary.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
 
+#include "workbench/app/study_metrics.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/io/read_stats.hpp"
 #include "workbench/io/result_file.hpp"
@@ -64,7 +67,8 @@ struct CaseSum {
   std::vector<double> cpu;
   int runs = 0;
   std::string status, message, file;
-  std::map<std::string, double> first;  // counts of the first run (exact, equal over repeats)
+  std::map<std::string, double> first;    // counts of the first run (exact, equal over repeats)
+  std::vector<io::MetricRecord> metrics;  // of the first run with a result (deterministic)
 };
 
 // What the summaries hold: summary.csv's text, the per-case sums, the columns of summary.h5.
@@ -73,6 +77,7 @@ struct Summary {
   std::map<std::string, CaseSum> cases;
   std::vector<double> ok;
   std::map<std::string, std::vector<double>> cols;
+  std::vector<std::vector<double>> metricCols;  // per metric, per run
   std::size_t runsOk = 0, runsKnown = 0, runsElsewhere = 0;
 };
 
@@ -96,11 +101,76 @@ RunState noResult(const Job& j, Summary& sm) {
   return {"error", last.empty() ? "no result" : last.substr(0, 500)};
 }
 
+// A metric value to the last bit (round trip), "" when it could not be computed.
+std::string exactField(double v) {
+  if (!std::isfinite(v)) return {};
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+// `message` with the reasons of the metrics that could not be computed and the notes of those
+// that were, "metric NAME: reason", joined by "; ".
+std::string withMetricReasons(std::string message, const std::vector<io::MetricRecord>& ms) {
+  for (const auto& m : ms) {
+    const std::string& r = m.why.empty() ? m.note : m.why;
+    if (r.empty()) continue;
+    message += (message.empty() ? "" : "; ") + ("metric " + m.name + ": " + r);
+  }
+  return message;
+}
+
+// Per case id, its matrix combination (its matrix overrides joined), "" without a matrix.
+std::map<std::string, std::string> combinations(const scenario::StudySpec& st) {
+  std::map<std::string, std::string> out;
+  for (std::size_t i = 0; i < st.cases.size(); ++i)
+    out[st.cases[i].id] = i < st.matrix_parts.size() ? join(st.matrix_parts[i], " ") : "";
+  return out;
+}
+
+// Per matrix combination, the result of the first valid run of a case with role "reference".
+std::map<std::string, std::string> referenceFiles(const std::map<std::string, std::string>& combo,
+                                                  const std::vector<Job>& all) {
+  std::map<std::string, std::string> out;
+  for (const auto& j : all)
+    if (j.c->role == "reference" && isDone(j.h5, *j.hash)) out.emplace(combo.at(j.c->id), j.h5);
+  return out;
+}
+
+// The metrics of one run: computed (or read back) from a valid file, else NaN with no reason of
+// their own (the run's message says why there is no result). Error metrics compare with the
+// reference case of the same matrix combination.
+std::vector<io::MetricRecord> runMetrics(MetricContext& ctx, const Job& j, bool valid,
+                                         const std::string& ref) {
+  std::vector<io::MetricRecord> out;
+  if (!valid) {
+    for (const auto& m : ctx.st.metrics) out.push_back({m.name, std::nan(""), "", ""});
+    return out;
+  }
+  out = summaryMetrics(ctx, *j.c, j.h5, ref);
+  for (std::size_t k = 0; k < out.size() && ref.empty(); ++k)
+    if (ctx.st.metrics[k].kind == "error") out[k].why = "the reference case has no result";
+  return out;
+}
+
+// The metric fields of a row of summary.csv and their summary.h5 columns.
+void addMetricFields(const std::vector<io::MetricRecord>& metrics, Summary& sm) {
+  for (std::size_t k = 0; k < metrics.size(); ++k) {
+    sm.csv << "," << exactField(metrics[k].value);
+    sm.metricCols[k].push_back(metrics[k].value);
+  }
+}
+
 // One row of summary.csv per run, and the per-case sums.
-void summariseRuns(const std::vector<Job>& all, Summary& sm) {
+void summariseRuns(const scenario::StudySpec& st, const std::vector<Job>& all, Summary& sm) {
+  MetricContext ctx(st);
+  const std::map<std::string, std::string> combo = combinations(st);
+  const std::map<std::string, std::string> refs = referenceFiles(combo, all);
+  sm.metricCols.assign(st.metrics.size(), {});
   sm.csv.precision(12);  // counts above 1e6 exactly, CPU times to the nanosecond
   sm.csv << "case,repeat,label,role,base,overrides,status";
   for (const auto& k : kSummaryNumbers) sm.csv << "," << k;
+  for (const auto& m : st.metrics) sm.csv << ",metric_" << m.name;
   sm.csv << ",message,file\n";
   for (const auto& j : all) {
     const bool valid = isDone(j.h5, *j.hash);
@@ -108,7 +178,9 @@ void summariseRuns(const std::vector<Job>& all, Summary& sm) {
     const RunState run =
         rec ? RunState{rec->text["status"], rec->text["message"]} : noResult(j, sm);
     const std::string& status = run.status;
-    const std::string& message = run.message;
+    const auto ref = refs.find(combo.at(j.c->id));
+    const auto metrics = runMetrics(ctx, j, valid, ref == refs.end() ? "" : ref->second);
+    const std::string message = withMetricReasons(run.message, metrics);
     if (status != "skipped") ++sm.runsKnown;
     if (status == "ok") ++sm.runsOk;
     sm.csv << j.c->id << "," << j.repeat << "," << csvField(j.c->label) << "," << j.c->role << ","
@@ -119,15 +191,17 @@ void summariseRuns(const std::vector<Job>& all, Summary& sm) {
       sm.csv << "," << numbers[k];
       sm.cols[k].push_back(numbers[k]);
     }
+    addMetricFields(metrics, sm);
     sm.csv << "," << csvField(message) << "," << csvField(valid ? j.h5 : "") << "\n";
     sm.ok.push_back(status == "ok" ? 1.0 : 0.0);
     CaseSum& cs = sm.cases[j.c->id];
     ++cs.runs;
+    if (cs.metrics.empty() && valid) cs.metrics = metrics;
     if (status == "ok" && rec) cs.cpu.push_back(numbers["cpu_time_s"]);
     // The case's status: ok only when every repeat is ok; else the first problem and its reason.
     if (cs.status.empty() || (cs.status == "ok" && status != "ok")) {
       cs.status = status;
-      cs.message = message;
+      cs.message = run.message;
       cs.file = valid ? j.h5 : "";
       cs.first = numbers;
     }
@@ -142,6 +216,7 @@ std::string casesCsv(const scenario::StudySpec& st, std::map<std::string, CaseSu
            "min_cpu_time_s,max_cpu_time_s";
   for (const auto& k : kSummaryNumbers)
     if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << k;
+  for (const auto& m : st.metrics) cases << ",metric_" << m.name;
   cases << ",message,file\n";
   for (const auto& c : st.cases) {
     CaseSum& cs = sum[c.id];
@@ -155,7 +230,10 @@ std::string casesCsv(const scenario::StudySpec& st, std::map<std::string, CaseSu
           << lo << "," << hi;
     for (const auto& k : kSummaryNumbers)
       if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << cs.first[k];
-    cases << "," << csvField(cs.message) << "," << csvField(cs.file) << "\n";
+    for (std::size_t k = 0; k < st.metrics.size(); ++k)
+      cases << "," << (k < cs.metrics.size() ? exactField(cs.metrics[k].value) : std::string());
+    cases << "," << csvField(withMetricReasons(cs.message, cs.metrics)) << "," << csvField(cs.file)
+          << "\n";
   }
   return cases.str();
 }
@@ -179,6 +257,9 @@ void writeSummaryH5(const fs::path& path, const scenario::StudySpec& st,
   for (const auto& k : kSummaryNumbers)
     h5.dataset("/runs/" + k, sm.cols[k],
                k == "cpu_time_s" || k == "wall_time_s" || k == "t_reached" ? "s" : "-");
+  // NaN where a metric could not be computed (summary.csv's message says why).
+  for (std::size_t k = 0; k < st.metrics.size(); ++k)
+    h5.dataset("/runs/metric_" + st.metrics[k].name, sm.metricCols[k], "-");
   h5.finalize();
 }
 
@@ -187,7 +268,7 @@ void writeSummaryH5(const fs::path& path, const scenario::StudySpec& st,
 SummaryCounts writeSummaries(const scenario::StudySpec& st, const std::vector<Job>& all,
                              const fs::path& dir) {
   Summary sm;
-  summariseRuns(all, sm);
+  summariseRuns(st, all, sm);
   writeAtomically(dir / "summary.csv", sm.csv.str());
   writeAtomically(dir / "summary_cases.csv", casesCsv(st, sm.cases));
   writeSummaryH5(dir / "summary.h5", st, all, sm);

@@ -402,6 +402,10 @@ void addStudyBlock(std::vector<BlockSpec>& s) {
         typed("cases", ValueType::Table, "-",
               "{ { [\"solver.method\"] = \"bdf\", [\"solver.rtol\"] = 1e-6 }, ... }: explicit "
               "variants, combined with every matrix combination"),
+        typed("metrics", ValueType::Table, "-",
+              "{ { name = \"y_max\", signal = \"/bodies/ws1/y\", stat = \"max_abs\", from = "
+              "100, to = 400 }, ... }: numbers extracted from every case into the summaries "
+              "(docs/studies.md, Metrics)"),
         integer("repeats", 1, "runs per case (CPU time is reported as the median)", 1, 100),
         integer("jobs", 0, "cases run at once, 0 = number of cores", 0, 64),
         integer("max_cases", 10000,

@@ -11,6 +11,7 @@
 #include <map>
 #include <set>
 
+#include "workbench/assessment/signal_metrics.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/scenario/lua_host.hpp"
 #include "workbench/scenario/override_check.hpp"
@@ -310,7 +311,210 @@ void labelCases(StudySpec& st, const std::vector<std::string>& given,
   }
 }
 
+const std::vector<std::string> kMetricKinds = {
+    "signal", "steady", "assessment", "error", "linear_critical_speed", "lua"};
+const std::vector<std::string> kMetricKeys = {
+    "name",   "kind",      "signal",   "stat",   "from",    "to", "along",
+    "length", "tolerance", "quantity", "speeds", "signals", "fn"};
+// The summary names of /assessment/summary a metric may give alone (docs/assessment.md).
+const std::vector<std::string> kAssessmentNames = {
+    "y_over_q", "dq_over_q",  "y_qst",       "q_qst",       "q_max",        "sum_y",
+    "n_mv",     "wz_lateral", "wz_vertical", "t_gamma_max", "stability_rms"};
+
+std::string unknownWithHint(const std::string& what, const std::string& got,
+                            const std::vector<std::string>& names) {
+  std::string hint = closestMatch(got, names);
+  return "unknown " + what + " '" + got + "'" +
+         (hint.empty() ? "" : " (did you mean '" + hint + "'?)") + "; one of " + join(names, ", ");
+}
+
+// A metric name: a summary column metric_<name>, so letters, digits and '_' only.
+bool columnName(const std::string& s) {
+  if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) return false;
+  return std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  });
+}
+
+// The string key `k` of a metric entry ("" when absent; an error when not a string).
+std::string metricText(const Node& m, const char* k, const ErrorFn& err) {
+  const Node* v = m.field(k);
+  if (!v) return {};
+  if (v->type != Node::Type::String) {
+    err(std::string(k) + " must be a string, got " + v->describe());
+    return {};
+  }
+  return v->string;
+}
+
+// The number key `k` of a metric entry (`def` when absent).
+double metricNumber(const Node& m, const char* k, double def, const ErrorFn& err) {
+  const Node* v = m.field(k);
+  if (!v) return def;
+  if (v->type != Node::Type::Number || !std::isfinite(v->number)) {
+    err(std::string(k) + " must be a finite number, got " + v->describe());
+    return def;
+  }
+  return v->number;
+}
+
+// A dataset path of the result file: "/group/.../name".
+void checkPath(const std::string& key, const std::string& p, const ErrorFn& err) {
+  if (p.size() < 2 || p[0] != '/' || p.back() == '/' || p.find("//") != std::string::npos)
+    err(key + " must be a dataset path such as \"/bodies/ws1/y\", got '" + p + "'");
+}
+
+// signals = { name = "/path", ... } of a Lua metric.
+void readLuaSignals(const Node& m, MetricSpec& ms, const ErrorFn& err) {
+  const Node* s = m.field("signals");
+  if (!s || s->type != Node::Type::Table || !s->items.empty() || s->fields.empty()) {
+    err("a function metric needs signals = { name = \"/dataset/path\", ... }");
+    return;
+  }
+  for (const auto& [k, v] : s->fields) {
+    if (v.type != Node::Type::String) {
+      err("signals." + k + " must be a dataset path string");
+      continue;
+    }
+    checkPath("signals." + k, v.string, err);
+    ms.signals.emplace_back(k, v.string);
+  }
+}
+
+// speeds = { lo, hi, n } of a linear critical speed metric.
+void readSpeeds(const Node& m, MetricSpec& ms, const ErrorFn& err) {
+  const Node* s = m.field("speeds");
+  const bool shape = s && s->type == Node::Type::Table && s->fields.empty() &&
+                     s->items.size() == 3 &&
+                     std::all_of(s->items.begin(), s->items.end(),
+                                 [](const Node& v) { return v.type == Node::Type::Number; });
+  if (!shape) {
+    err("linear_critical_speed needs speeds = { lowest [m/s], highest [m/s], count }");
+    return;
+  }
+  ms.v_lo = s->items[0].number;
+  ms.v_hi = s->items[1].number;
+  const double n = s->items[2].number;
+  if (!(ms.v_lo > 0.0 && ms.v_hi > ms.v_lo && n >= 2 && n <= 1000 && n == std::floor(n)))
+    err("speeds = { lo, hi, n } needs 0 < lo < hi and a whole n in [2, 1000]");
+  else
+    ms.speeds = static_cast<int>(n);
+}
+
+// The keys a kind needs, and the ones it does not take.
+void checkKind(const Node& m, MetricSpec& ms, const ErrorFn& err) {
+  const bool needsSignal = ms.kind == "signal" || ms.kind == "steady" || ms.kind == "error";
+  if (needsSignal && ms.signal.empty()) err("kind " + ms.kind + " needs signal = \"/path\"");
+  if (!ms.signal.empty()) checkPath("signal", ms.signal, err);
+  if (ms.kind == "signal") {
+    assessment::metrics::Stat st{};
+    if (ms.stat.empty())
+      err("a signal metric needs stat = one of " + join(assessment::metrics::statNames(), ", "));
+    else if (!assessment::metrics::statFromName(ms.stat, st))
+      err(unknownWithHint("stat", ms.stat, assessment::metrics::statNames()));
+  } else if (!ms.stat.empty()) {
+    err("stat belongs to kind signal, not " + ms.kind);
+  }
+  if (ms.kind == "assessment") {
+    if (ms.quantity.empty())
+      err("an assessment metric needs quantity = one of " + join(kAssessmentNames, ", ") +
+          " or a path \"/assessment/...@attribute\"");
+    else if (ms.quantity[0] != '/' && std::find(kAssessmentNames.begin(), kAssessmentNames.end(),
+                                                ms.quantity) == kAssessmentNames.end())
+      err(unknownWithHint("assessment quantity", ms.quantity, kAssessmentNames));
+    else if (ms.quantity[0] == '/' && ms.quantity.rfind("/assessment/", 0) != 0)
+      err("quantity path must lie below /assessment/, got '" + ms.quantity + "'");
+  }
+  const bool windowed = needsSignal;
+  if (!windowed && (m.field("from") || m.field("to") || m.field("along")))
+    err("from, to and along apply to kinds signal, steady and error, not " + ms.kind);
+  if (ms.kind == "linear_critical_speed") readSpeeds(m, ms, err);
+  if (ms.kind == "lua") readLuaSignals(m, ms, err);
+  if (ms.kind != "lua" && m.field("signals")) err("signals belongs to a function metric (fn)");
+}
+
+// One entry of study.metrics.
+MetricSpec readMetric(const Node& m, int index, const SourceLoc& loc, const ErrorFn& err) {
+  MetricSpec ms;
+  ms.index = index;
+  ms.loc = loc;
+  for (const auto& [k, v] : m.fields)
+    if (std::find(kMetricKeys.begin(), kMetricKeys.end(), k) == kMetricKeys.end())
+      err(unknownWithHint("key", k, kMetricKeys));
+  ms.name = metricText(m, "name", err);
+  if (!columnName(ms.name))
+    err("name must be letters, digits and '_' (it names the column metric_<name>), got '" +
+        ms.name + "'");
+  const Node* fn = m.field("fn");
+  if (fn && fn->type != Node::Type::Function) err("fn must be a function(s) ... end");
+  ms.kind = metricText(m, "kind", err);
+  if (ms.kind.empty()) ms.kind = fn ? "lua" : "signal";
+  if (std::find(kMetricKinds.begin(), kMetricKinds.end(), ms.kind) == kMetricKinds.end()) {
+    err(unknownWithHint("kind", ms.kind, kMetricKinds));
+    return ms;
+  }
+  if (ms.kind == "lua" && !fn) err("kind lua needs fn = function(s) ... end");
+  if (ms.kind != "lua" && fn) err("fn belongs to kind lua, not " + ms.kind);
+  ms.signal = metricText(m, "signal", err);
+  ms.stat = metricText(m, "stat", err);
+  ms.quantity = metricText(m, "quantity", err);
+  const std::string along = metricText(m, "along", err);
+  if (!along.empty() && along != "distance" && along != "time")
+    err("along must be \"distance\" or \"time\", got '" + along + "'");
+  if (!along.empty()) ms.along = along;
+  ms.from = metricNumber(m, "from", ms.from, err);
+  ms.to = metricNumber(m, "to", ms.to, err);
+  if (!(ms.from < ms.to)) err("from must be less than to");
+  ms.length = metricNumber(m, "length", 0.0, err);
+  ms.tolerance = metricNumber(m, "tolerance", -1.0, err);
+  if (ms.kind != "steady" && (m.field("length") || m.field("tolerance")))
+    err("length and tolerance belong to kind steady");
+  if (m.field("length") && ms.length <= 0.0) err("length must be positive");
+  if (m.field("tolerance") && ms.tolerance < 0.0) err("tolerance must not be negative");
+  checkKind(m, ms, err);
+  return ms;
+}
+
+// study.metrics: a list of metric tables with distinct names.
+std::vector<MetricSpec> readMetrics(const Node& n, Diagnostics& d) {
+  std::vector<MetricSpec> out;
+  const Node* ms = n.field("metrics");
+  if (!ms) return out;
+  if (ms->type != Node::Type::Table || !ms->fields.empty()) {
+    d.add(ms->loc, "study: metrics must be a list of { name = ..., ... } tables");
+    return out;
+  }
+  std::set<std::string> names;
+  for (std::size_t i = 0; i < ms->items.size(); ++i) {
+    const Node& m = ms->items[i];
+    const Node* nm = m.field("name");
+    const std::string where = "study: metrics[" + std::to_string(i + 1) + "]" +
+                              (nm && nm->type == Node::Type::String ? " (" + nm->string + ")" : "");
+    const ErrorFn err = [&](const std::string& msg) { d.add(m.loc, where + ": " + msg); };
+    if (m.type != Node::Type::Table || !m.items.empty()) {
+      err("must be { name = ..., ... }");
+      continue;
+    }
+    MetricSpec spec = readMetric(m, static_cast<int>(i + 1), m.loc, err);
+    if (!spec.name.empty() && !names.insert(spec.name).second) err("name given twice");
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
 }  // namespace
+
+std::string MetricSpec::definition() const {
+  std::string t = "name=" + name + ";kind=" + kind + ";signal=" + signal + ";stat=" + stat +
+                  ";along=" + along + ";from=" + formatNumberExact(from) +
+                  ";to=" + formatNumberExact(to) + ";length=" + formatNumberExact(length) +
+                  ";tolerance=" + formatNumberExact(tolerance) + ";quantity=" + quantity;
+  if (kind == "linear_critical_speed")
+    t += ";speeds=" + formatNumberExact(v_lo) + "," + formatNumberExact(v_hi) + "," +
+         std::to_string(speeds);
+  for (const auto& [k, p] : signals) t += ";signals." + k + "=" + p;
+  return t;
+}
 
 std::string studyCaseId(const std::vector<std::string>& overrides, const std::string& ownBase) {
   std::string key = join(overrides, ";");
@@ -345,6 +549,9 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
   st.repeats = wholeNumber(*n, "repeats", err);
   st.jobs = wholeNumber(*n, "jobs", err);
   st.max_cases = wholeNumber(*n, "max_cases", err);
+  st.text = host.text();
+  st.root = root;
+  st.metrics = readMetrics(*n, d);
   const Axes axes = readMatrix(*n, err);
   const std::vector<Variant> variants = readCases(*n, path, err);
   d.throwIfAny();
@@ -372,7 +579,14 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
                           "); give them different values");
       st.cases.push_back(sc);
     }
+  const bool hasReference = std::any_of(st.cases.begin(), st.cases.end(),
+                                        [](const StudyCase& c) { return c.role == "reference"; });
+  for (const auto& m : st.metrics)
+    if (m.kind == "error" && !hasReference)
+      d.add(m.loc, "study: metric " + m.name +
+                       ": kind error needs a case with role = \"reference\" in cases");
   d.throwIfAny();
+  st.matrix_parts = matrixPart;
   labelCases(st, given, matrixPart);
   checkStudyOverrides(st, host.text(), root);
   return st;

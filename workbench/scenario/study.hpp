@@ -15,7 +15,9 @@
 //                           "reference_same_tables" (the reference's settings on the cases' own
 //                           contact tables: integration error only), "baseline" (the full
 //                           model of an effects study)
+#include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "workbench/core/error.hpp"
@@ -30,10 +32,52 @@ struct StudyCase {
   std::string role;                    // "", "reference", "reference_check", "baseline", ...
 };
 
+// One entry of study.metrics (docs/studies.md, "Metrics"): a number extracted from each case's
+// result file. Kinds:
+//   "signal"    stat (max, min, max_abs, mean, rms, std, half_peak_to_peak, final) of the 1-D
+//               dataset `signal` over the window [from, to]
+//   "steady"    the steady-state value of `signal`: the mean over the last `length` of the window
+//               (default the last 20 %), checked for drift and oscillation against `tolerance`
+//   "assessment" a number of /assessment: `quantity` a summary name ("y_over_q", "sum_y", ...)
+//               or a path "/assessment/...@attribute"
+//   "error"     max |signal - signal of the reference case| on the reference's samples in the
+//               window (computed when the summary is written)
+//   "linear_critical_speed"  the stability library's linear critical speed of the case's
+//               scenario over speeds = { lo, hi, n }
+//   "lua"       fn(s) over `signals` (name -> path) in the Lua sandbox (scenario/metric_lua)
+// The window is along the track coordinate s [m] of the signal's body (along = "distance") or
+// time [s] (along = "time").
+struct MetricSpec {
+  std::string name;
+  std::string kind;    // "signal", "steady", "assessment", "error", "linear_critical_speed", "lua"
+  std::string signal;  // dataset path (signal, steady, error)
+  std::string stat;    // signal kind: the statistic's name
+  std::string along = "distance";  // "distance" or "time"
+  double from = -std::numeric_limits<double>::infinity();
+  double to = std::numeric_limits<double>::infinity();
+  double length = 0.0;      // steady: length of the last part [m or s]; 0 = 20 % of the window
+  double tolerance = -1.0;  // steady: absolute tolerance; < 0 = 1 % of the part's largest |value|
+  std::string quantity;     // assessment: summary name or "/assessment/...@attr" or a dataset
+  double v_lo = 0.0, v_hi = 0.0;  // linear_critical_speed: speeds [m/s]
+  int speeds = 0;                 // linear_critical_speed: number of speeds of the sweep
+  std::vector<std::pair<std::string, std::string>> signals;  // lua: name -> dataset path
+  int index = 0;  // position in study.metrics (1-based), how metric_lua finds the function
+  SourceLoc loc;
+  // The definition as text (every key that changes the value), hashed into /metrics.
+  std::string definition() const;
+};
+
 struct StudySpec {
   std::string file;  // the study file as given
   std::string base;  // resolved base scenario path
   std::vector<StudyCase> cases;
+  std::vector<MetricSpec> metrics;
+  // Per case (by index into cases): the matrix part of its overrides. An error metric compares a
+  // case with the reference case of the same matrix combination. Empty for a study made without
+  // a matrix (or by a command).
+  std::vector<std::vector<std::string>> matrix_parts;
+  std::string text;  // the study file's text (a Lua metric's function is part of it)
+  std::string root;  // project root the study was loaded with (Lua metrics re-run the file)
   int repeats = 1;
   int jobs = 0;
   // Largest number of cases (matrix combinations x entries of `cases`) loadStudy expands: a
