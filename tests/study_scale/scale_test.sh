@@ -49,7 +49,7 @@ cat >"$TMP/slow.lua" <<LUA
 study { base = "$ROOT/scenarios/studies/case3_base.lua",
         matrix = { ["run.distance"] = { 40, 80, 120, 160, 200, 240 } } }
 LUA
-results() { find "$1" -maxdepth 1 -regex '.*_r[0-9]+\.h5' | sort; }
+results() { find "$1" -maxdepth 1 -regex '.*_r[0-9]+\.h5' 2>/dev/null | sort; }
 nresults() { results "$1" | wc -l; }
 # name inode mtime(ns) of every result file
 snapshot() { results "$1" | "$PY" -c '
@@ -163,7 +163,8 @@ same_mpi)
   ;;
 kill_shard)
   O="$TMP/kill"
-  wb study "$TMP/slow.lua" --out "$O" --shard 1/2 --jobs 1 >/dev/null 2>"$TMP/e1" &
+  "$WB" --root "$ROOT" study "$TMP/slow.lua" --out "$O" --shard 1/2 --jobs 1 </dev/null \
+    >/dev/null 2>"$TMP/e1" &
   pids+=($!)
   waitfirst "$O" || bad "no result within 120 s"
   kill -KILL "${pids[0]}"; wait "${pids[0]}" 2>/dev/null
