@@ -45,6 +45,10 @@ cat >"$TMP/six.lua" <<LUA
 study { base = "$ROOT/scenarios/studies/case3_base.lua",
         matrix = { ["run.distance"] = { 3, 4, 5 }, ["solver.step"] = { 2.5e-4, 2e-4 } } }
 LUA
+cat >"$TMP/err.lua" <<LUA
+study { base = "$ROOT/scenarios/studies/case3_base.lua",
+        matrix = { ["run.distance"] = { 3 }, ["solver.step"] = { 2.5e-4, -1 } } }
+LUA
 cat >"$TMP/slow.lua" <<LUA
 study { base = "$ROOT/scenarios/studies/case3_base.lua",
         matrix = { ["run.distance"] = { 40, 80, 120, 160, 200, 240 } } }
@@ -128,6 +132,14 @@ same)
   wb study "$TMP/six.lua" --out "$TMP/shards" --summarize >/dev/null 2>&1
   [ "$(grep -c ',missing,' "$TMP/shards/summary.csv")" = 1 ] && ok "a removed result is missing" \
     || bad "removed result: $(cat "$TMP/shards/summary.csv")"
+  # A run that leaves no result (bad input: exit 1) is an error with its log's reason in both.
+  wb study "$TMP/err.lua" --out "$TMP/errlocal" --jobs 2 >/dev/null 2>&1
+  for k in 1 2; do wb study "$TMP/err.lua" --out "$TMP/errshards" --shard "$k/2" >/dev/null 2>&1; done
+  wb study "$TMP/err.lua" --out "$TMP/errshards" --summarize >/dev/null 2>&1
+  grep -q ',error,.*step' "$TMP/errshards/summary.csv" \
+    && "$PY" "$HERE/compare_summaries.py" "$TMP/errshards" "$TMP/errlocal" \
+    && ok "a run with no result: the same error row from shards + --summarize" \
+    || bad "no-result run: $(cat "$TMP/errshards/summary.csv" "$TMP/errlocal/summary.csv")"
   for s in 0/3 4/3 3 a/b 1/0 -1/2 "2/3x" "1/3/4"; do
     wb study "$TMP/six.lua" --out "$TMP/bad" --shard "$s" >/dev/null 2>"$TMP/e"; rc=$?
     [ $rc -eq 1 ] && grep -q "expected K/N" "$TMP/e" && ok "--shard $s is an error" \
