@@ -86,6 +86,14 @@ int workbench(int argc, char** argv) {
       ->add_option("--run-timeout", so.run_timeout_s,
                    "kill a run after this many seconds of wall time and report it (0: no limit)")
       ->check(CLI::NonNegativeNumber);
+  auto* shard = study->add_option("--shard", so.shard,
+                                  "run only shard K of N (K/N, 1 <= K <= N) and write no summary");
+  auto* summarize =
+      study->add_flag("--summarize", so.summarize,
+                      "run nothing: write the summaries and figures of what is on disk");
+  auto* mpi = study->add_flag("--mpi", so.mpi, "run as an MPI task farm (mpirun -np N ... --mpi)");
+  shard->excludes(summarize)->excludes(mpi);
+  summarize->excludes(mpi);
 
   // The users' three asks on any scenario (docs/three_asks.md).
   rb::app::PrecisionOptions po;

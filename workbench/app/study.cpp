@@ -6,10 +6,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <string_view>
 #include <thread>
 
 #include "railbench/version.hpp"
@@ -18,7 +20,11 @@
 #include "workbench/contact/table_io.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/files.hpp"
+#include "workbench/io/read_stats.hpp"
 #include "workbench/track/spec.hpp"
+#ifdef RB_HAVE_MPI
+#include "workbench/app/study_mpi.hpp"
+#endif
 
 namespace fs = std::filesystem;
 
@@ -125,30 +131,43 @@ int runStudy(const StudyOptions& o) {
   return runStudySpec(st, so, {"study", so.out});
 }
 
-int runStudySpec(const scenario::StudySpec& st, const StudyOptions& o,
-                 const std::vector<std::string>& plotArgs) {
-  const fs::path dir = o.out;
+Shard parseShard(const std::string& text, const std::string& file) {
+  Shard sh;
+  const auto slash = text.find('/');
+  auto number = [&](std::string_view part, int& v) {
+    const char* end = part.data() + part.size();
+    auto [ptr, ec] = std::from_chars(part.data(), end, v);
+    return !part.empty() && ec == std::errc() && ptr == end;
+  };
+  const std::string_view all(text);
+  if (slash == std::string::npos || !number(all.substr(0, slash), sh.k) ||
+      !number(all.substr(slash + 1), sh.n) || sh.n < 1 || sh.k < 1 || sh.k > sh.n)
+    throw InputError({file, 0}, "--shard " + text +
+                                    ": expected K/N with integers 1 <= K <= N (e.g. --shard 2/8)");
+  return sh;
+}
+
+namespace study_detail {
+
+void makePlan(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& plan) {
+  plan.dir = o.out;
   std::error_code ec;
-  fs::create_directories(dir / ".locks", ec);
+  fs::create_directories(plan.dir / ".locks", ec);
   if (ec)
     throw InputError({o.file, 0}, "cannot create the study's output folder " +
-                                      (dir / ".locks").string() + ": " + ec.message());
-  int jobs = o.jobs > 0    ? o.jobs
-             : st.jobs > 0 ? st.jobs
-                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+                                      (plan.dir / ".locks").string() + ": " + ec.message());
+  plan.jobs = o.jobs > 0    ? o.jobs
+              : st.jobs > 0 ? st.jobs
+                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  for (const auto& c : st.cases) plan.hashes[c.id] = plan.hashOf(c);
+  plan.all = listJobs(st, plan.dir, plan.hashes);
+  for (std::size_t i = 0; i < plan.all.size(); ++i)
+    if (!isDone(plan.all[i].h5, *plan.all[i].hash)) plan.todo.push_back(i);
+}
 
-  const CaseHasher hashOf{o, buildId(o.program)};
-  std::map<std::string, std::string> hashes;
-  for (const auto& c : st.cases) hashes[c.id] = hashOf(c);
-  std::vector<Job> all = listJobs(st, dir, hashes);
-  std::vector<std::size_t> todo;
-  for (std::size_t i = 0; i < all.size(); ++i)
-    if (!isDone(all[i].h5, *all[i].hash)) todo.push_back(i);
-  std::cerr << st.file << ": " << st.cases.size() << " cases x " << st.repeats << " repeats, "
-            << all.size() - todo.size() << " already done, running " << todo.size() << " with "
-            << jobs << " jobs\n";
-  const std::size_t skipped = runJobs(o, dir, hashOf, all, todo, jobs);
-
+int summarizeStudy(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& plan,
+                   const std::vector<std::string>& plotArgs, std::size_t skipped) {
+  const fs::path& dir = plan.dir;
   // Summaries of everything this folder holds for the study, written under a study-wide lock so
   // that runners finishing together do not interleave them.
   int summaryLock = ::open((dir / ".locks" / "summary.lock").c_str(),
@@ -156,14 +175,14 @@ int runStudySpec(const scenario::StudySpec& st, const StudyOptions& o,
   if (summaryLock >= 0) ::flock(summaryLock, LOCK_EX);
   SummaryCounts sm;
   try {
-    sm = writeSummaries(st, all, dir);
+    sm = writeSummaries(st, plan.all, dir);
   } catch (const std::exception& e) {
     if (summaryLock >= 0) ::close(summaryLock);
     std::cerr << "study: cannot write the summary in " << dir.string() << ": " << e.what() << "\n";
     return 2;
   }
   if (summaryLock >= 0) ::close(summaryLock);
-  std::cout << "study " << st.file << ": " << all.size() << " runs, summary in "
+  std::cout << "study " << st.file << ": " << plan.all.size() << " runs, summary in "
             << (dir / "summary.csv").string() << "\n";
   if (skipped > 0 || sm.runsElsewhere > 0)
     std::cerr << "study: " << sm.runsElsewhere
@@ -176,6 +195,94 @@ int runStudySpec(const scenario::StudySpec& st, const StudyOptions& o,
     return 2;
   }
   return plots;
+}
+
+}  // namespace study_detail
+
+namespace {
+
+// The command that summarises a folder, as the user would type it.
+std::string summarizeCommand(const StudyOptions& o) {
+  return "workbench study " + o.file + " --out " + o.out + " --summarize";
+}
+
+// --summarize: the summaries and figures of what is on disk; nothing is run.
+int summarizeOnly(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& plan,
+                  const std::vector<std::string>& plotArgs) {
+  outcomesFromDisk(plan.all);
+  std::size_t missing = 0, busy = 0;
+  for (const Job& j : plan.all) {
+    missing += j.outcome == Outcome::Pending && !isDone(j.h5, *j.hash) ? 1 : 0;
+    busy += j.outcome == Outcome::Skipped ? 1 : 0;
+  }
+  std::cerr << st.file << ": summarising " << plan.all.size() << " runs in " << o.out << ": "
+            << plan.all.size() - plan.todo.size() << " done, " << missing << " missing, " << busy
+            << " being run\n";
+  if (missing > 0)
+    std::cerr << "study: " << missing
+              << " runs have no result of the current inputs (status \"missing\"); run the "
+                 "study, its shards or the MPI farm again to complete them\n";
+  return summarizeStudy(st, o, plan, plotArgs, 0);
+}
+
+// --shard K/N: the runs i with i mod N == K - 1, through the local pool; no summary.
+int runShard(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& plan) {
+  const Shard sh = parseShard(o.shard, o.file);
+  std::vector<std::size_t> mine, todo;
+  for (std::size_t i = 0; i < plan.all.size(); ++i) {
+    if (static_cast<int>(i % static_cast<std::size_t>(sh.n)) != sh.k - 1) continue;
+    mine.push_back(i);
+    if (!isDone(plan.all[i].h5, *plan.all[i].hash)) todo.push_back(i);
+  }
+  std::cerr << st.file << ": shard " << o.shard << ": " << mine.size() << " of " << plan.all.size()
+            << " runs, " << mine.size() - todo.size() << " already done, running " << todo.size()
+            << " with " << plan.jobs << " jobs\n";
+  const std::size_t skipped = runJobs(o, plan.dir, plan.hashOf, plan.all, todo, plan.jobs);
+  std::size_t known = 0, ok = 0;
+  for (std::size_t i : mine) {
+    const Job& j = plan.all[i];
+    const bool done = isDone(j.h5, *j.hash);
+    if (!done && j.outcome != Outcome::Ran) continue;
+    ++known;
+    const auto rec = done ? io::readStats(j.h5) : std::nullopt;
+    if (rec && rec->text.count("status") && rec->text.at("status") == "ok") ++ok;
+  }
+  std::cout << "study " << st.file << ": shard " << o.shard << " ran " << todo.size() - skipped
+            << " runs (" << mine.size() - todo.size() << " were done, " << skipped
+            << " being run by another runner), " << ok << " of its " << mine.size()
+            << " runs ok; no summary written. Once every shard has finished:\n  "
+            << summarizeCommand(o) << "\n";
+  if (known > 0 && ok == 0) {
+    std::cerr << "study: no run of shard " << o.shard << " is ok (" << known
+              << " failed or could not run)\n";
+    return 2;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int runStudySpec(const scenario::StudySpec& st, const StudyOptions& o,
+                 const std::vector<std::string>& plotArgs) {
+  if (!o.shard.empty()) parseShard(o.shard, o.file);  // a bad shard runs nothing
+  if (o.mpi) {
+#ifdef RB_HAVE_MPI
+    return runStudyMpi(st, o, plotArgs);
+#else
+    throw InputError({o.file, 0},
+                     "--mpi: this workbench was built without MPI (install libopenmpi-dev and "
+                     "openmpi-bin and configure with cmake -DRB_MPI=ON)");
+#endif
+  }
+  StudyPlan plan(o, buildId(o.program));
+  makePlan(st, o, plan);
+  if (o.summarize) return summarizeOnly(st, o, plan, plotArgs);
+  if (!o.shard.empty()) return runShard(st, o, plan);
+  std::cerr << st.file << ": " << st.cases.size() << " cases x " << st.repeats << " repeats, "
+            << plan.all.size() - plan.todo.size() << " already done, running " << plan.todo.size()
+            << " with " << plan.jobs << " jobs\n";
+  const std::size_t skipped = runJobs(o, plan.dir, plan.hashOf, plan.all, plan.todo, plan.jobs);
+  return summarizeStudy(st, o, plan, plotArgs, skipped);
 }
 
 }  // namespace rb::app

@@ -18,6 +18,21 @@
 // holds a complete, stamped file (a runner or run killed at any point leaves at most a stray
 // .run-* file, removed the next time the case is run). Runs die with their runner.
 //
+// Three ways of running one study share those locks, the resume and the summaries, so any mix of
+// them on one folder gives the summaries of a local run (cost columns aside):
+//   local     (default)     a pool of `jobs` processes on this machine, then the summaries.
+//   --shard K/N             only the K-th of N deterministic shards: run i of the expanded
+//                           (case, repeat) list (0-based) belongs to shard (i mod N) + 1, so the
+//                           shards of any N cover every run once; writes no summary.
+//   --summarize             runs nothing: the summaries and figures of what is on disk; a run with
+//                           no result of the current inputs has status "missing", one locked by
+//                           a runner at work "skipped".
+//   --mpi                   an MPI task farm (app/study_mpi.hpp): rank 0 hands out the runs one at
+//                           a time to the ranks that ask, runs runs itself while idle and writes
+//                           the summaries once every run is done.
+// A run that left no result records why in .locks/<id>_r<k>.noresult (the input hash, then the
+// runner's note), so that a summary written by another runner reports it as the local one does.
+//
 // Outputs:
 //   summary.csv        one row per run: case, repeat, label, role, base, overrides, status, the
 //                      /stats numbers, message (the reason of a failure), file
@@ -44,11 +59,27 @@ struct StudyOptions {
   int jobs = 0;         // 0: from the study file, else the number of cores
   // Wall time after which a run is killed and reported as an error (a hang); 0 = no limit.
   double run_timeout_s = 0.0;
+  std::string shard;       // "K/N": run only the K-th of N shards and write no summary
+  bool summarize = false;  // run nothing: summaries and figures of what is on disk
+  bool mpi = false;        // MPI task farm (app/study_mpi.hpp)
 };
 
+// A shard "K/N" (1 <= K <= N) of the runs of a study.
+struct Shard {
+  int k = 1, n = 1;
+};
+
+// Parses "K/N"; throws InputError naming `file` when it is not two integers with 1 <= K <= N.
+Shard parseShard(const std::string& text, const std::string& file);
+
 // Returns 0 when the study ran and at least one of its runs is ok (a failed case is a result),
-// 1 on bad input (nothing was run), 2 when every run of the study failed or could not run, 4 when
-// the figures failed (the summaries are complete).
+// 1 on bad input (nothing was run; also a bad --shard, --mpi in a build without MPI), 2 when every
+// run of the study failed or could not run, 4 when the figures failed (the summaries are
+// complete). A shard returns 0 when it ran its runs (or they were done) and at least one of
+// them is ok or it has none, 2 when every run of the shard with a result failed or could not run.
+// --summarize returns 0 when at least one run on disk is ok, 2 when none is (all missing or
+// failed), 4 when the figures failed. Under --mpi rank 0 returns as a local run, the other ranks
+// 0 (1 on bad input, as every rank).
 int runStudy(const StudyOptions& options);
 
 // Runs the cases of an already expanded study `st` (a study file's, or one a command such as

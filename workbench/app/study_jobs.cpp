@@ -184,8 +184,14 @@ pid_t launch(const StudyOptions& o, const Job& j) {
 // `jobs` at a time, and gives each finished run its final name.
 class Pool {
  public:
-  Pool(const StudyOptions& o, const fs::path& dir, const CaseHasher& hashOf, std::size_t total)
-      : o_(o), dir_(dir), hashOf_(hashOf), total_(total), stray_(leftovers(dir)) {}
+  Pool(const StudyOptions& o, const fs::path& dir, const CaseHasher& hashOf, std::size_t total,
+       std::string who)
+      : o_(o),
+        dir_(dir),
+        hashOf_(hashOf),
+        total_(total),
+        stray_(leftovers(dir)),
+        who_(std::move(who)) {}
 
   // Starts the run `index` of `all`, or reports why not (held by another runner, done, error).
   void start(std::vector<Job>& all, std::size_t index) {
@@ -213,6 +219,7 @@ class Pool {
     removeLeftovers(stray_, j);
     std::error_code ignored;
     fs::remove(j.h5, ignored);  // a result of other inputs: never to be mistaken for this one
+    fs::remove(noResultPath(j), ignored);
     j.work = (dir_ / (j.name + ".run-" + uniqueSuffix() + ".h5")).string();
     pid_t pid = launch(o_, j);
     if (pid < 0) {
@@ -253,6 +260,7 @@ class Pool {
     // A run that exits with another code than ok (0) or failed (2) has no result: its log says
     // why, and whatever file it left is removed.
     std::error_code ignored;
+    bool kept = false;
     if (overdue) {
       // Killed mid-write: its result and the temporary files of its writer are incomplete.
       auto files = leftovers(dir_);
@@ -261,8 +269,10 @@ class Pool {
       fs::remove(j.work, ignored);
     } else if (isRegularFile(j.work)) {
       j.note = keep(j);
-      if (!j.note.empty()) fs::remove(j.work, ignored);
+      kept = j.note.empty();
+      if (!kept) fs::remove(j.work, ignored);
     }
+    if (!kept) recordNoResult(j);
     unlock(j);
     report(j, !j.note.empty() ? "error: " + j.note
               : code == 0     ? "ok"
@@ -291,9 +301,17 @@ class Pool {
     return ec ? "cannot rename " + j.work + " to " + j.h5 + ": " + ec.message() : std::string();
   }
 
+  // Written under the run's lock, so a summary written elsewhere reads a complete record.
+  static void recordNoResult(const Job& j) {
+    try {
+      writeAtomically(noResultPath(j), *j.hash + "\n" + j.note);
+    } catch (const std::exception&) {  // the summary of another runner then says "missing"
+    }
+  }
+
   void report(const Job& j, const std::string& what) {
-    std::cerr << "  [" << ++done_ << "/" << total_ << "] " << j.c->id << " r" << j.repeat << ": "
-              << what << "  " << j.c->label << "\n";
+    std::cerr << who_ << "  [" << ++done_ << "/" << total_ << "] " << j.c->id << " r" << j.repeat
+              << ": " << what << "  " << j.c->label << "\n";
   }
 
   const StudyOptions& o_;
@@ -302,6 +320,7 @@ class Pool {
   std::size_t total_;
   std::map<std::string, std::vector<fs::path>> stray_;
   std::size_t done_ = 0;
+  std::string who_;
 };
 
 // Runs the runs `todo` of `all`, `jobs` at a time; the number skipped (held by another runner).
@@ -333,13 +352,38 @@ std::size_t runPool(Pool& pool, std::vector<Job>& all, const std::vector<std::si
   return pool.skipped;
 }
 
-// The /stats numbers of every run in the summaries: the counts, then the share of the run's cost
 }  // namespace
 
 std::size_t runJobs(const StudyOptions& o, const fs::path& dir, const CaseHasher& hashOf,
-                    std::vector<Job>& all, const std::vector<std::size_t>& todo, int jobs) {
-  Pool pool(o, dir, hashOf, todo.size());
+                    std::vector<Job>& all, const std::vector<std::size_t>& todo, int jobs,
+                    const std::string& who) {
+  Pool pool(o, dir, hashOf, todo.size(), who);
   return runPool(pool, all, todo, jobs);
+}
+
+std::string noResultPath(const Job& j) {
+  const std::string suffix = ".lock";
+  return j.lock.substr(0, j.lock.size() - suffix.size()) + ".noresult";
+}
+
+void outcomesFromDisk(std::vector<Job>& all) {
+  for (Job& j : all) {
+    if (j.outcome != Outcome::Pending || isDone(j.h5, *j.hash)) continue;
+    std::string why;
+    const Lock l = tryLock(j, why);
+    if (l == Lock::Busy) {
+      j.outcome = Outcome::Skipped;
+      continue;
+    }
+    std::string why2;
+    auto record = readRegularFile(noResultPath(j), why2);
+    unlock(j);
+    if (!record) continue;
+    const auto eol = record->find('\n');
+    if (eol == std::string::npos || record->substr(0, eol) != *j.hash) continue;
+    j.outcome = Outcome::Ran;
+    j.note = record->substr(eol + 1);
+  }
 }
 
 }  // namespace rb::app::study_detail

@@ -78,10 +78,44 @@ std::vector<Job> listJobs(const scenario::StudySpec& st, const std::filesystem::
                           std::map<std::string, std::string>& hashes);
 
 // Runs the runs `todo` of `all`, `jobs` at a time, each under its lock (a run another runner
-// holds is skipped), and gives each finished run its final, stamped name. Returns the number
-// skipped.
+// holds is skipped), and gives each finished run its final, stamped name; a run that leaves no
+// result records why (noResultPath). Progress lines start with `who` (e.g. "rank 2: ").
+// Returns the number skipped.
 std::size_t runJobs(const StudyOptions& o, const std::filesystem::path& dir,
                     const CaseHasher& hashOf, std::vector<Job>& all,
-                    const std::vector<std::size_t>& todo, int jobs);
+                    const std::vector<std::size_t>& todo, int jobs, const std::string& who = "");
+
+// .locks/<id>_r<k>.noresult: the input hash of a run that left no result, then the runner's note
+// ("" when its log says why).
+std::string noResultPath(const Job& j);
+
+// What the folder says of the runs that another runner ran (shards, MPI ranks) or that nobody
+// ran: a run with no result of its inputs whose lock is held is Skipped (being run); one whose
+// .noresult holds its input hash is Ran with that note (as the runner that ran it knew it);
+// any other stays Pending (missing). Runs that are done or whose outcome is known are unchanged.
+void outcomesFromDisk(std::vector<Job>& all);
+
+// Everything each way of running a study (local, shard, --summarize, every MPI rank) computes
+// first, the same way: the output folder, the input hash of every case, every run and the runs
+// not done at listing. Built in place (the jobs point into `hashes`): makePlan.
+struct StudyPlan {
+  explicit StudyPlan(const StudyOptions& o, std::string build) : hashOf{o, std::move(build)} {}
+  std::filesystem::path dir;
+  CaseHasher hashOf;
+  std::map<std::string, std::string> hashes;
+  std::vector<Job> all;
+  std::vector<std::size_t> todo;
+  int jobs = 1;  // runs at once on this runner
+};
+
+// (app/study.cpp) Lists the runs of `st` in the folder o.out (created with its .locks). Throws
+// InputError when the folder cannot be created.
+void makePlan(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& plan);
+
+// (app/study.cpp) Writes the summaries of `plan` (under the folder's summary lock) and draws the
+// figures (plotArgs; none when empty); returns the study's exit code (app/study.hpp). `skipped`:
+// how many runs this runner found held by another runner.
+int summarizeStudy(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& plan,
+                   const std::vector<std::string>& plotArgs, std::size_t skipped);
 
 }  // namespace rb::app::study_detail

@@ -92,6 +92,8 @@ RunState noResult(const Job& j, Summary& sm) {
     ++sm.runsElsewhere;
     return {"skipped", "being run by another runner when this summary was written"};
   }
+  if (j.outcome == Outcome::Pending)  // no runner ran it with these inputs (outcomesFromDisk)
+    return {"missing", "no result of the current inputs on disk: not run yet (or not finished)"};
   if (!j.note.empty()) return {"error", j.note};
   // The run stopped on bad input or crashed; its log says why.
   std::ifstream log(j.log);
