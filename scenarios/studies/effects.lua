@@ -37,6 +37,9 @@ local cases = {
 
 study {
   base = "case3_base.lua",
+  -- Full case files: this study's figures and docs read the cases' complete results (the
+  -- per-patch series, the track in each file), and it measures what a plain run costs.
+  output = "full",
   -- ABM 0.25 ms is the base scenario's solver; matrix values keep the two methods apart.
   matrix = { ["contact.method"] = { "kec", "lut" }, ["solver.step"] = { 2.5e-4 } },
   cases = cases,

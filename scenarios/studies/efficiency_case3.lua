@@ -34,6 +34,9 @@ for _, c in ipairs(lib.accuracy_cases(spin)) do cases[#cases + 1] = c end
 
 study {
   base = "case3_base.lua",
+  -- Full case files: this study's figures and docs read the cases' complete results (the
+  -- per-patch series, the track in each file), and it measures what a plain run costs.
+  output = "full",
   cases = cases,
   repeats = 3,
 }

@@ -25,6 +25,9 @@ end
 
 study {
   base = "bases/flange_curve.lua",
+  -- Full case files: this study's figures and docs read the cases' complete results (the
+  -- per-patch series, the track in each file), and it measures what a plain run costs.
+  output = "full",
   cases = cases,
   repeats = 3,
 }

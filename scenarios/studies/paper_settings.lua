@@ -11,6 +11,9 @@ local lib = require "studies.lib"
 
 study {
   base = "case3_base.lua",
+  -- Full case files: this study's figures and docs read the cases' complete results (the
+  -- per-patch series, the track in each file), and it measures what a plain run costs.
+  output = "full",
   cases = lib.paper_settings_cases(),
   repeats = 3,
   jobs = 1,

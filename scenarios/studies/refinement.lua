@@ -44,6 +44,9 @@ for _, s in ipairs({ bdf6, dopri7 }) do add(lib.lut(7.075e13), s, lib.interpolat
 
 study {
   base = "case3_base.lua",
+  -- Full case files: this study's figures and docs read the cases' complete results (the
+  -- per-patch series, the track in each file), and it measures what a plain run costs.
+  output = "full",
   cases = cases,
   repeats = 3,
 }

@@ -41,6 +41,9 @@ local cases = {
 
 study {
   base = "case3_base.lua",
+  -- Full case files: this study's figures and docs read the cases' complete results (the
+  -- per-patch series, the track in each file), and it measures what a plain run costs.
+  output = "full",
   cases = cases,
   repeats = 5,
   jobs = 1,

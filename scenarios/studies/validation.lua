@@ -36,6 +36,9 @@ end
 
 study {
   base = "../validation/case3_kec.lua",
+  -- Full case files: this study's figures and docs read the cases' complete results (the
+  -- per-patch series, the track in each file), and it measures what a plain run costs.
+  output = "full",
   cases = cases,
   repeats = 3,
   jobs = 1,

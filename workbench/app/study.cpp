@@ -102,12 +102,14 @@ std::string buildId(const std::string& program) {
   return "build:" + hex16(h.value());
 }
 
-std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string& build_id) {
+std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string& build_id,
+                          const std::string& output) {
   Hasher h;
   h.field("railbench case inputs", "1");
   h.field("workbench", kVersion);
   h.field("table_algorithm", std::to_string(contact::kTableAlgorithmVersion));
   h.field("build", build_id);
+  if (output != "full") h.field("output", output);
   h.field("scenario", spec.text);
   for (const auto& [path, text] : spec.modules) h.field("module " + path, text);
   for (const auto& ov : spec.overrides) h.field("set", ov);
@@ -159,6 +161,7 @@ void makePlan(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& p
   plan.jobs = o.jobs > 0    ? o.jobs
               : st.jobs > 0 ? st.jobs
                             : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  plan.hashOf.study = &st;
   for (const auto& c : st.cases) plan.hashes[c.id] = plan.hashOf(c);
   plan.all = listJobs(st, plan.dir, plan.hashes);
   for (std::size_t i = 0; i < plan.all.size(); ++i)

@@ -106,6 +106,8 @@ std::string buildId(const std::string& program);
 
 // 16 hex digits: the hash of everything that determines the result of a run of `spec` (see the
 // header comment) by the build `build_id`.
-std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string& build_id);
+// `output` is what the case writes ("full" = a plain run's file, hashed as nothing, or "compact").
+std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string& build_id,
+                          const std::string& output = "full");
 
 }  // namespace rb::app

@@ -19,7 +19,10 @@
 
 #include "workbench/core/error.hpp"
 #include "workbench/core/files.hpp"
+#include "workbench/app/study_metrics.hpp"
 #include "workbench/io/read_stats.hpp"
+#include "workbench/io/result_reader.hpp"
+#include "workbench/io/track_store.hpp"
 #include "workbench/io/root_text.hpp"
 
 namespace fs = std::filesystem;
@@ -31,7 +34,15 @@ bool isDone(const std::string& h5, const std::string& hash) {
   auto rec = io::readStats(h5);
   if (!rec || !rec->text.count("status")) return false;
   auto stamp = io::readRootText(h5, "input_hash");
-  return stamp && *stamp == hash;
+  if (!stamp || *stamp != hash) return false;
+  // A compact result whose stored track is gone (a deleted tracks/ folder) is run again: its
+  // readers could not load it.
+  const io::ResultReader r(h5);
+  const auto in = r.text("/track", "stored_in");
+  const auto trackHash = r.text("/track", "track_hash");
+  if (!in) return true;
+  return trackHash &&
+         io::isStoredTrack((std::filesystem::path(h5).parent_path() / *in).string(), *trackHash);
 }
 
 std::string uniqueSuffix() {
@@ -72,7 +83,8 @@ std::string CaseHasher::operator()(const scenario::StudyCase& c) const {
     scenario::LoadOptions lo;
     lo.root = o.root;
     lo.overrides = c.overrides;
-    return caseInputHash(scenario::loadScenario(c.base, lo), build);
+    return caseInputHash(scenario::loadScenario(c.base, lo), build,
+                         study ? study->output : std::string("full"));
   } catch (const InputError&) {
     return std::string();
   }
@@ -151,9 +163,15 @@ void removeLeftovers(std::map<std::string, std::vector<fs::path>>& stray, const 
 // Starts `workbench run` for one job with stdout/stderr to its log; returns the pid. The run is
 // killed when the runner dies (PR_SET_PDEATHSIG), so a killed runner leaves no orphan writing
 // into the folder after its locks are gone.
-pid_t launch(const StudyOptions& o, const Job& j) {
+pid_t launch(const StudyOptions& o, const scenario::StudySpec* study, const Job& j) {
   std::vector<std::string> args = {o.program, "--root", o.root, "run",
                                    j.c->base, "--out",  j.work, "--quiet"};
+  if (study && study->output == "compact") {
+    // The track once per distinct track, beside the results (the reference is relative to the
+    // result's folder, so the study folder can be moved).
+    args.insert(args.end(),
+                {"--compact", "--track-store", (fs::path(j.h5).parent_path() / "tracks").string()});
+  }
   for (const auto& ov : j.c->overrides) {
     args.push_back("--set");
     args.push_back(ov);
@@ -221,7 +239,7 @@ class Pool {
     fs::remove(j.h5, ignored);  // a result of other inputs: never to be mistaken for this one
     fs::remove(noResultPath(j), ignored);
     j.work = (dir_ / (j.name + ".run-" + uniqueSuffix() + ".h5")).string();
-    pid_t pid = launch(o_, j);
+    pid_t pid = launch(o_, hashOf_.study, j);
     if (pid < 0) {
       j.outcome = Outcome::Ran;
       j.note = "cannot start a process: " + std::string(std::strerror(errno));
@@ -294,6 +312,14 @@ class Pool {
     if (j.hash->empty() || hashOf_(*j.c) != *j.hash)
       return "the case's input files changed while it ran; its result was discarded (run the "
              "study again)";
+    // The metrics are computed by the runner that ran the case, so the farm's workers share
+    // the work; a failure here loses nothing (the summary computes them from the file).
+    if (const scenario::StudySpec* st = hashOf_.study; st && !st->metrics.empty()) {
+      std::string why;
+      if (!storeCaseMetrics(*st, *j.c, j.work, why))
+        std::cerr << "  " << j.name << ": metrics not stored (" << why
+                  << "); the summary computes them\n";
+    }
     if (!io::writeRootText(j.work, "input_hash", *j.hash))
       return "cannot stamp the input hash into " + j.work;
     std::error_code ec;

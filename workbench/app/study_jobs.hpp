@@ -70,6 +70,9 @@ void writeAtomically(const std::filesystem::path& path, const std::string& text)
 struct CaseHasher {
   const StudyOptions& o;
   std::string build;
+  // The study (set by makePlan): its output mode is part of every case's hash, and its metrics
+  // are stored into every result the runner keeps.
+  const scenario::StudySpec* study = nullptr;
   std::string operator()(const scenario::StudyCase& c) const;
 };
 

@@ -406,6 +406,10 @@ void addStudyBlock(std::vector<BlockSpec>& s) {
               "{ { name = \"y_max\", signal = \"/bodies/ws1/y\", stat = \"max_abs\", from = "
               "100, to = 400 }, ... }: numbers extracted from every case into the summaries "
               "(docs/studies.md, Metrics)"),
+        choice("output", {"compact", "full"}, "compact",
+               "what each case writes: compact = its signals and metrics (no per-patch "
+               "series, compressed), the track once per distinct track in tracks/<hash>.h5; "
+               "full = everything a plain `workbench run` writes"),
         integer("repeats", 1, "runs per case (CPU time is reported as the median)", 1, 100),
         integer("jobs", 0, "cases run at once, 0 = number of cores", 0, 64),
         integer("max_cases", 10000,

@@ -549,6 +549,13 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
   st.repeats = wholeNumber(*n, "repeats", err);
   st.jobs = wholeNumber(*n, "jobs", err);
   st.max_cases = wholeNumber(*n, "max_cases", err);
+  st.output = "compact";
+  if (const Node* out = n->field("output")) {
+    if (out->type != Node::Type::String || (out->string != "compact" && out->string != "full"))
+      d.add(out->loc, "study: output must be \"compact\" or \"full\"");
+    else
+      st.output = out->string;
+  }
   st.text = host.text();
   st.root = root;
   st.metrics = readMetrics(*n, d);

@@ -78,6 +78,10 @@ struct StudySpec {
   std::vector<std::vector<std::string>> matrix_parts;
   std::string text;  // the study file's text (a Lua metric's function is part of it)
   std::string root;  // project root the study was loaded with (Lua metrics re-run the file)
+  // What every case writes: "full" (as `workbench run`), or "compact" (study files' default: the
+  // signals without the per-patch series, compressed, and the track once per distinct track in
+  // <out>/tracks/, referenced from /track).
+  std::string output = "full";
   int repeats = 1;
   int jobs = 0;
   // Largest number of cases (matrix combinations x entries of `cases`) loadStudy expands: a
