@@ -44,6 +44,7 @@ from .docs_blocks import assessment_cases_block, accuracy_block, bench_block, be
 from .docs_paper import PAPER_TABLES, flange_paper_block, paper_table_blocks, tables_9_10_block
 from .docs_stability import FOLDERS as STABILITY, stability_blocks
 from .docs_stress import stress_hard_block
+from .docs_sweeps import SWEEP, THROUGHPUT, sweep_blocks
 from .docs_three_asks import EFFECTS, PRECISION, STRESS, STRESS_KEC, three_asks_blocks
 from .docs_tables import tables_block
 from .docs_validation import hard_block, hard_detail_block, hard_rows, validation_blocks
@@ -68,7 +69,7 @@ BLOCK_SOURCES = {
     "three_asks_stress_kec": STRESS_KEC, "three_asks_effects": EFFECTS,
     "stability_wagon": ("stability_kec", "stability_lut"), "stability_modes":
     ("stability_kec", "stability_lut"), "stability_method": STABILITY,
-    "stability_verification": "build",
+    "stability_verification": "build", SWEEP: SWEEP, THROUGHPUT: THROUGHPUT,
 }
 
 
@@ -158,7 +159,7 @@ def coupling_block(build: str) -> Optional[str]:
 
 STUDIES = ("efficiency_case3", "flange_stiffness", "refinement", "work_precision", "effects",
            "speed", "paper_settings_flange", "paper_settings", "validation", "tables", PRECISION,
-           STRESS_KEC, STRESS, EFFECTS) + STABILITY
+           STRESS_KEC, STRESS, EFFECTS, SWEEP) + STABILITY
 
 
 def copy_figures(outdir: str, docs: str, pages) -> List[str]:
@@ -219,6 +220,8 @@ def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
     blocks["stress.md"] = {"stress_hard": stress_hard_block(build)}
     blocks["three_asks.md"] = three_asks_blocks(outdir)
     blocks["stability.md"] = stability_blocks(outdir, build)
+    for md, items in sweep_blocks(outdir).items():
+        blocks[md].update(items)
     coupling = coupling_block(build)
     blocks["contact_dynamics.md"] = {"coupling_convergence": coupling if coupling is not None
                                      else missing(f"{build}/dynamics/coupling_*.csv "

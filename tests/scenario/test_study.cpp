@@ -85,7 +85,7 @@ TEST(Study, ShippedStudiesValidate) {
       {"work_precision.lua", 99},   {"speed.lua", 9},
       {"paper_settings.lua", 20},   {"paper_settings_flange.lua", 20},
       {"flange_stiffness.lua", 90}, {"effects.lua", 20},
-      {"guided_integrators.lua", 4}};
+      {"guided_integrators.lua", 4}, {"primary_yaw.lua", 24}};
   for (const auto& [name, count] : expected) {
     auto st = loadStudy("scenarios/studies/" + name, RB_SOURCE_DIR);
     EXPECT_EQ(st.cases.size(), count) << name;
