@@ -81,10 +81,10 @@ TEST(Study, DuplicateCases) {
 // validator, so a long study never stops on a typo in its 40th case.
 TEST(Study, ShippedStudiesValidate) {
   const std::map<std::string, std::size_t> expected = {
-      {"efficiency_case3.lua", 66}, {"refinement.lua", 80},
-      {"work_precision.lua", 99},   {"speed.lua", 9},
-      {"paper_settings.lua", 20},   {"paper_settings_flange.lua", 20},
-      {"flange_stiffness.lua", 90}, {"effects.lua", 20},
+      {"efficiency_case3.lua", 66},  {"refinement.lua", 80},
+      {"work_precision.lua", 99},    {"speed.lua", 9},
+      {"paper_settings.lua", 20},    {"paper_settings_flange.lua", 20},
+      {"flange_stiffness.lua", 90},  {"effects.lua", 20},
       {"guided_integrators.lua", 4}, {"primary_yaw.lua", 24}};
   for (const auto& [name, count] : expected) {
     auto st = loadStudy("scenarios/studies/" + name, RB_SOURCE_DIR);

@@ -43,7 +43,19 @@ esac
 # and 6 runs of about a second each for the kill tests.
 cat >"$TMP/six.lua" <<LUA
 study { base = "$ROOT/scenarios/studies/case3_base.lua",
-        matrix = { ["run.distance"] = { 3, 4, 5 }, ["solver.step"] = { 2.5e-4, 2e-4 } } }
+        matrix = { ["run.distance"] = { 3, 4, 5 }, ["solver.step"] = { 2.5e-4, 2e-4 } },
+        metrics = {
+          { name = "y_max", signal = "/bodies/ws1/y", stat = "max_abs" },
+          { name = "q_rms", signal = "/contact/ws1/left/Q", stat = "rms", along = "time",
+            from = 0.02, to = 0.1 },
+          { name = "yaw_p2p", signal = "/bodies/ws2/yaw", stat = "half_peak_to_peak" },
+          { name = "y_sum", signals = { a = "/bodies/ws1/y", b = "/bodies/ws4/y" },
+            fn = function(s) local t = 0 for i = 1, #s.a do t = t + s.a[i] - s.b[i] end return t end },
+        } }
+LUA
+cat >"$TMP/full.lua" <<LUA
+study { base = "$ROOT/scenarios/studies/case3_base.lua", output = "full",
+        matrix = { ["run.distance"] = { 3, 4 } } }
 LUA
 cat >"$TMP/err.lua" <<LUA
 study { base = "$ROOT/scenarios/studies/case3_base.lua",
@@ -98,6 +110,24 @@ case "$MODE" in
 same)
   wb study "$TMP/six.lua" --out "$TMP/local" --jobs 2 >/dev/null 2>"$TMP/e"; rc=$?
   [ $rc -eq 0 ] && summary_ok "$TMP/local" 6 && ok "local run of 6 runs" || bad "local ($rc): $(cat "$TMP/e")"
+  # The comparisons below cover the metrics: every run has its 4 values, stored in its file by
+  # the runner that ran it; the compact cases share one stored track.
+  "$PY" - "$TMP/local" <<'PY' && ok "4 metrics per run, stored in every case file" || bad "metrics missing"
+import csv, glob, os, sys
+import h5py
+d = sys.argv[1]
+rows = list(csv.DictReader(open(os.path.join(d, "summary.csv"))))
+names = ["metric_y_max", "metric_q_rms", "metric_yaw_p2p", "metric_y_sum"]
+assert all(r[n] not in ("", "nan") for r in rows for n in names), rows[0]
+files = glob.glob(os.path.join(d, "case_*_r0.h5"))
+assert len(files) == 6
+for f in files:
+    with h5py.File(f, "r") as h:
+        assert "metrics" in h and "definitions_hash" in h["metrics"].attrs, f
+        assert "stored_in" in h["track"].attrs and "compact" in h.attrs, f
+PY
+  [ "$(ls "$TMP/local/tracks" | wc -l)" -eq 1 ] && ok "one stored track for the 6 cases" \
+    || bad "stored tracks: $(ls "$TMP/local/tracks")"
   for k in 1 2 3; do
     wb study "$TMP/six.lua" --out "$TMP/shards" --shard "$k/3" --jobs 1 >"$TMP/o$k" 2>"$TMP/e$k"
     rc=$?
@@ -153,6 +183,34 @@ same)
     [ $rc -eq 1 ] && grep -q "without MPI" "$TMP/e" && ok "--mpi without MPI is an error" \
       || bad "--mpi without MPI ($rc): $(cat "$TMP/e")"
   fi
+  ;;
+output)
+  # output = "full": plain case files (the track in each), no store; compact is the default.
+  wb study "$TMP/full.lua" --out "$TMP/full" >/dev/null 2>"$TMP/e"; rc=$?
+  [ $rc -eq 0 ] && [ ! -e "$TMP/full/tracks" ] && "$PY" - "$TMP/full" <<'PY' \
+    && ok "output = full: plain case files" || bad "output = full ($rc): $(cat "$TMP/e")"
+import glob, sys
+import h5py
+files = glob.glob(sys.argv[1] + "/case_*_r0.h5")
+assert len(files) == 2
+for f in files:
+    with h5py.File(f, "r") as h:
+        assert "centreline" in h["track"] and "compact" not in h.attrs, f
+PY
+  # A compact result whose stored track is gone is not done: the study runs it again.
+  wb study "$TMP/six.lua" --out "$TMP/compact" --jobs 2 >/dev/null 2>&1
+  wb study "$TMP/six.lua" --out "$TMP/compact" >/dev/null 2>"$TMP/e"
+  grep -q "6 already done, running 0" "$TMP/e" && ok "compact results resume" \
+    || bad "compact rerun: $(cat "$TMP/e")"
+  rm -rf "$TMP/compact/tracks"
+  wb study "$TMP/six.lua" --out "$TMP/compact" --jobs 2 >/dev/null 2>"$TMP/e"; rc=$?
+  [ $rc -eq 0 ] && grep -q "0 already done, running 6" "$TMP/e" && [ -d "$TMP/compact/tracks" ] \
+    && ok "a deleted track store runs the cases again" || bad "track store deleted ($rc): $(cat "$TMP/e")"
+  # Switching the output mode is a change of inputs: the cases run again.
+  sed -i 's/matrix = { \["run.distance"\] = { 3, 4 } }/matrix = { ["run.distance"] = { 3, 4 } }, output = "compact"/; s/output = "full", //' "$TMP/full.lua"
+  wb study "$TMP/full.lua" --out "$TMP/full" >/dev/null 2>"$TMP/e"
+  grep -q "0 already done, running 2" "$TMP/e" && ok "output mode in the case hash" \
+    || bad "output mode switch: $(cat "$TMP/e")"
   ;;
 same_mpi)
   wb study "$TMP/six.lua" --out "$TMP/local" --jobs 2 >/dev/null 2>"$TMP/e"; rc=$?

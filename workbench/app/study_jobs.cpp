@@ -17,13 +17,13 @@
 #include <stdexcept>
 #include <thread>
 
+#include "workbench/app/study_metrics.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/files.hpp"
-#include "workbench/app/study_metrics.hpp"
 #include "workbench/io/read_stats.hpp"
 #include "workbench/io/result_reader.hpp"
-#include "workbench/io/track_store.hpp"
 #include "workbench/io/root_text.hpp"
+#include "workbench/io/track_store.hpp"
 
 namespace fs = std::filesystem;
 
