@@ -89,6 +89,11 @@ TEST(MetricDeclarations, BadOnesAreFileLineErrors) {
        "from, to and along apply"},
       {R"({ name = "a", signal = "/y", stat = "max" }, { name = "a", signal = "/y", stat = "min" })",
        "name given twice"},
+      // /metrics keeps <name>_why and <name>_note beside the values: a metric of such a name
+      // would overwrite another's reason.
+      {R"({ name = "y_why", signal = "/y", stat = "max" })", "is reserved"},
+      {R"({ name = "y_note", signal = "/y", stat = "max" })", "is reserved"},
+      {R"({ name = "definitions_hash", signal = "/y", stat = "max" })", "is reserved"},
   };
   for (const auto& [decl, want] : bad) {
     const std::string e = errorOf("    " + decl + ",");

@@ -61,8 +61,10 @@ def test_blocks_replaced_between_markers():
     blocks_s = ["efficiency", "paper_table7", "paper_table12", "paper_table13", "paper_table14",
                 "paper_table15", "paper_table16", "accuracy", "flange", "flange_paper",
                 "flange_accuracy", "refinement", "paper_tables9_10", "paper_table11",
-                "paper_table17", "paper_table18", "work_precision", "hard_cases"]
-    blocks_p = ["speed", "bench", "effects", "paper_settings", "paper_settings_flange"]
+                "paper_table17", "paper_table18", "work_precision", "hard_cases",
+                "primary_yaw"]
+    blocks_p = ["speed", "bench", "effects", "paper_settings", "paper_settings_flange",
+                "study_throughput"]
     blocks_v = ["validation_case1", "validation_case2", "validation_case3", "validation_cost"]
     blocks_h = ["hard_cases_detail"]
     for md, names in (("studies.md", blocks_s), ("performance.md", blocks_p),

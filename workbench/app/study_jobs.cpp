@@ -215,7 +215,14 @@ class Pool {
   void start(std::vector<Job>& all, std::size_t index) {
     Job& j = all[index];
     std::string why;
-    const Lock l = tryLock(j, why);
+    Lock l = tryLock(j, why);
+    // A summary written beside this runner (outcomesFromDisk) holds a run's lock for a moment
+    // to see whether a runner has it: try again briefly before leaving the run to another
+    // runner, which holds it for the whole run.
+    for (int attempt = 0; l == Lock::Busy && attempt < 5; ++attempt) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      l = tryLock(j, why);
+    }
     if (l == Lock::Busy) {
       j.outcome = Outcome::Skipped;
       ++skipped;

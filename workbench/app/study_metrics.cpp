@@ -198,7 +198,10 @@ std::string metricsHash(const scenario::StudySpec& st) {
     h.field("metric", m.definition());
     lua = lua || m.kind == "lua";
   }
-  if (lua) h.field("study_text", st.text);
+  if (lua) {
+    h.field("study_text", st.text);
+    h.field("study_modules", st.modules_text);
+  }
   return hex16(h.value());
 }
 
@@ -206,6 +209,10 @@ std::vector<io::MetricRecord> caseMetrics(MetricContext& ctx, const scenario::St
                                           const std::string& h5, const std::string& referenceH5) {
   std::vector<io::MetricRecord> out;
   io::ResultReader r(h5);
+  // A fresh sandbox per case: a function's globals or a budget one case exhausted never carry
+  // over, so a value is the same whether the runner stored it or a summary computed it.
+  ctx.lua.reset();
+  ctx.luaError.clear();
   for (const auto& m : ctx.st.metrics) {
     if (!r.ok()) {
       out.push_back(record(m, sm::Value::fail("the result file cannot be read")));

@@ -134,8 +134,14 @@ std::map<std::string, std::string> combinations(const scenario::StudySpec& st) {
 std::map<std::string, std::string> referenceFiles(const std::map<std::string, std::string>& combo,
                                                   const std::vector<Job>& all) {
   std::map<std::string, std::string> out;
-  for (const auto& j : all)
-    if (j.c->role == "reference" && isDone(j.h5, *j.hash)) out.emplace(combo.at(j.c->id), j.h5);
+  // Only a reference that ran to its end: a failed one would give the error over the part it
+  // covered as if it were the whole run.
+  for (const auto& j : all) {
+    if (j.c->role != "reference" || !isDone(j.h5, *j.hash)) continue;
+    const auto rec = io::readStats(j.h5);
+    if (rec && rec->text.count("status") && rec->text.at("status") == "ok")
+      out.emplace(combo.at(j.c->id), j.h5);
+  }
   return out;
 }
 
@@ -151,7 +157,8 @@ std::vector<io::MetricRecord> runMetrics(MetricContext& ctx, const Job& j, bool 
   }
   out = summaryMetrics(ctx, *j.c, j.h5, ref);
   for (std::size_t k = 0; k < out.size() && ref.empty(); ++k)
-    if (ctx.st.metrics[k].kind == "error") out[k].why = "the reference case has no result";
+    if (ctx.st.metrics[k].kind == "error")
+      out[k].why = "the reference case has no result that ran to its end (status ok)";
   return out;
 }
 

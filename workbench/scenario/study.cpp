@@ -445,6 +445,15 @@ MetricSpec readMetric(const Node& m, int index, const SourceLoc& loc, const Erro
   if (!columnName(ms.name))
     err("name must be letters, digits and '_' (it names the column metric_<name>), got '" +
         ms.name + "'");
+  // /metrics stores <name>, <name>_why and <name>_note beside `names` and `definitions_hash`
+  // (io/metrics_output): a name that is another metric's reason or note would overwrite it.
+  auto endsWith = [&](const std::string& tail) {
+    return ms.name.size() > tail.size() &&
+           ms.name.compare(ms.name.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  if (endsWith("_why") || endsWith("_note") || ms.name == "names" || ms.name == "definitions_hash")
+    err("name '" + ms.name +
+        "' is reserved (names ending in _why or _note, names, definitions_hash)");
   const Node* fn = m.field("fn");
   if (fn && fn->type != Node::Type::Function) err("fn must be a function(s) ... end");
   ms.kind = metricText(m, "kind", err);
@@ -557,6 +566,8 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
       st.output = out->string;
   }
   st.text = host.text();
+  for (const auto& [module, text] : host.modules())
+    st.modules_text += "-- file: " + module + "\n" + text;
   st.root = root;
   st.metrics = readMetrics(*n, d);
   const Axes axes = readMatrix(*n, err);

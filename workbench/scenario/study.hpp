@@ -77,6 +77,9 @@ struct StudySpec {
   // a matrix (or by a command).
   std::vector<std::vector<std::string>> matrix_parts;
   std::string text;  // the study file's text (a Lua metric's function is part of it)
+  // The modules the study file requires ("-- file: <path>" and its text each): a Lua metric's
+  // function may come from one, so they are part of the metrics' definitions.
+  std::string modules_text;
   std::string root;  // project root the study was loaded with (Lua metrics re-run the file)
   // What every case writes: "full" (as `workbench run`), or "compact" (study files' default: the
   // signals without the per-patch series, compressed, and the track once per distinct track in
