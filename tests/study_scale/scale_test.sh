@@ -226,6 +226,12 @@ same_mpi)
   "$PY" "$HERE/compare_summaries.py" "$TMP/mpi" "$TMP/local" 6 \
     && ok "MPI farm: the local summaries" || bad "MPI farm summaries differ from local"
   [ -e "$TMP/mpi/summary.h5" ] && ok "summary.h5 written" || bad "no summary.h5"
+  # A rank that cannot go on ends the farm (MPI_Abort) instead of leaving the others waiting.
+  timeout 120 "${mpi[@]}" -np 2 "$WB" --root "$ROOT" study "$TMP/six.lua" --out /proc/no/such \
+    --mpi </dev/null >/dev/null 2>"$TMP/e"; rc=$?
+  [ $rc -ne 0 ] && [ $rc -ne 124 ] && grep -q "MPI rank [0-9]*: .*cannot create the study's output folder" "$TMP/e" \
+    && ok "an unusable output folder ends the farm with the reason" \
+    || bad "unusable folder ($rc): $(cat "$TMP/e")"
   "${mpi[@]}" -np 1 "$WB" --root "$ROOT" study "$TMP/six.lua" --out "$TMP/mpi" --mpi \
     </dev/null >/dev/null 2>"$TMP/e"; rc=$?
   [ $rc -eq 0 ] && grep -q "6 already done, running 0" "$TMP/e" && ok "a farm run again runs nothing" \

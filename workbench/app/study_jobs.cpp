@@ -387,6 +387,20 @@ std::size_t runPool(Pool& pool, std::vector<Job>& all, const std::vector<std::si
 
 }  // namespace
 
+struct SerialRunner::Impl {
+  Pool pool;
+};
+
+SerialRunner::SerialRunner(const StudyOptions& o, const fs::path& dir, const CaseHasher& hashOf,
+                           std::size_t total, const std::string& who)
+    : impl_(new Impl{Pool(o, dir, hashOf, total, who)}) {}
+
+SerialRunner::~SerialRunner() = default;
+
+void SerialRunner::run(std::vector<Job>& all, std::size_t index) {
+  runPool(impl_->pool, all, {index}, 1);
+}
+
 std::size_t runJobs(const StudyOptions& o, const fs::path& dir, const CaseHasher& hashOf,
                     std::vector<Job>& all, const std::vector<std::size_t>& todo, int jobs,
                     const std::string& who) {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,23 @@ std::size_t runJobs(const StudyOptions& o, const std::filesystem::path& dir,
 
 // .locks/<id>_r<k>.noresult: the input hash of a run that left no result, then the runner's note
 // ("" when its log says why).
+// Runs single runs one after another through one pool, so the folder is listed for the
+// leftovers of killed attempts once, not once per run (the MPI farm's ranks, given one run at a
+// time).
+class SerialRunner {
+ public:
+  SerialRunner(const StudyOptions& o, const std::filesystem::path& dir, const CaseHasher& hashOf,
+               std::size_t total, const std::string& who);
+  ~SerialRunner();
+  SerialRunner(const SerialRunner&) = delete;
+  SerialRunner& operator=(const SerialRunner&) = delete;
+  void run(std::vector<Job>& all, std::size_t index);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 std::string noResultPath(const Job& j);
 
 // What the folder says of the runs that another runner ran (shards, MPI ranks) or that nobody

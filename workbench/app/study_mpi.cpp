@@ -60,25 +60,37 @@ void dispatch(Dispenser& runs, int ranks) {
 
 // A rank other than 0: asks for a run, runs it, asks again.
 void work(const StudyOptions& o, StudyPlan& plan, const std::string& who) {
+  SerialRunner runner(o, plan.dir, plan.hashOf, plan.todo.size(), who);
   for (;;) {
     long long ask = 0, index = -1;
     MPI_Send(&ask, 1, MPI_LONG_LONG, 0, kAsk, MPI_COMM_WORLD);
     MPI_Recv(&index, 1, MPI_LONG_LONG, 0, kRun, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     if (index < 0) return;
-    runJobs(o, plan.dir, plan.hashOf, plan.all, {static_cast<std::size_t>(index)}, 1, who);
+    runner.run(plan.all, static_cast<std::size_t>(index));
   }
 }
 
-// Whether rank 0 runs runs itself besides answering (see the header).
-bool rankZeroRuns(int ranks) {
+// Whether rank 0 runs runs itself besides answering (see the header): from a second thread,
+// which needs an MPI that allows threads (the thread itself makes no MPI call).
+bool rankZeroRuns(int ranks, int provided) {
   const char* env = std::getenv("RAILBENCH_MPI_RANK0_RUNS");
-  return ranks == 1 || !env || std::string(env) != "0";
+  return ranks == 1 || (provided >= MPI_THREAD_FUNNELED && (!env || std::string(env) != "0"));
+}
+
+// A rank that cannot go on takes the whole farm down: the others would wait for it forever
+// under a launcher that does not end a job when one rank exits (srun without
+// --kill-on-bad-exit).
+[[noreturn]] void abortFarm(int rank, const std::string& what) {
+  std::cerr << "study: MPI rank " << rank << ": " << what << "\n";
+  std::cerr.flush();
+  MPI_Abort(MPI_COMM_WORLD, 1);
+  std::_Exit(1);  // MPI_Abort does not return
 }
 
 // Rank 0: the farm, then (out of MPI) the summaries.
 int lead(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& plan,
-         const std::vector<std::string>& plotArgs, int ranks) {
-  const bool runs = rankZeroRuns(ranks);
+         const std::vector<std::string>& plotArgs, int ranks, int provided) {
+  const bool runs = rankZeroRuns(ranks, provided);
   std::cerr << st.file << ": " << st.cases.size() << " cases x " << st.repeats << " repeats, "
             << plan.all.size() - plan.todo.size() << " already done, running " << plan.todo.size()
             << " on " << ranks << " MPI ranks (rank 0 "
@@ -87,8 +99,13 @@ int lead(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& plan,
   std::thread own;
   if (runs)
     own = std::thread([&] {
-      for (long long i = runsLeft.take(); i >= 0; i = runsLeft.take())
-        runJobs(o, plan.dir, plan.hashOf, plan.all, {static_cast<std::size_t>(i)}, 1, "rank 0:");
+      try {
+        SerialRunner runner(o, plan.dir, plan.hashOf, plan.todo.size(), "rank 0:");
+        for (long long i = runsLeft.take(); i >= 0; i = runsLeft.take())
+          runner.run(plan.all, static_cast<std::size_t>(i));
+      } catch (const std::exception& e) {
+        abortFarm(0, e.what());
+      }
     });
   dispatch(runsLeft, ranks);
   if (own.joinable()) own.join();
@@ -116,13 +133,16 @@ int runStudyMpi(const scenario::StudySpec& st, const StudyOptions& o,
   StudyPlan plan(o, buildId(o.program));
   try {
     makePlan(st, o, plan);
-  } catch (...) {
-    MPI_Finalize();
-    if (rank == 0) throw;
-    return 1;
+  } catch (const std::exception& e) {
+    abortFarm(rank, e.what());
   }
-  if (rank == 0) return lead(st, o, plan, plotArgs, ranks);
-  work(o, plan, "rank " + std::to_string(rank) + ":");
+  // Rank 0 writes the summaries after MPI_Finalize: a problem there is reported as by a local run.
+  if (rank == 0) return lead(st, o, plan, plotArgs, ranks, provided);
+  try {
+    work(o, plan, "rank " + std::to_string(rank) + ":");
+  } catch (const std::exception& e) {
+    abortFarm(rank, e.what());
+  }
   MPI_Finalize();
   return 0;
 }
