@@ -121,6 +121,23 @@ def figures(stored, tmp):
     check(len(paths) == 3 and all(os.path.getsize(p) > 0 for p in paths), f"figures {paths}")
 
 
+def planted(wb, tmp):
+    """A store file with the right hash attribute but other data (planted, or damaged in place)
+    is not reused: the next run with that track writes it again."""
+    folder = os.path.join(tmp, "planted")
+    store = os.path.join(folder, "tracks")
+    run(wb, os.path.join(folder, "a.h5"), "--compact", "--track-store", store)
+    name = os.path.join(store, os.listdir(store)[0])
+    with h5py.File(name, "r+") as f:
+        ds = f["track/centreline/s"]
+        good = float(ds[1])
+        ds[1] = good + 1.0
+    run(wb, os.path.join(folder, "b.h5"), "--compact", "--track-store", store)
+    with h5py.File(name, "r") as f:
+        check(float(f["track/centreline/s"][1]) == good,
+              "a store file whose data differ from its hash is written again")
+
+
 def main():
     wb = os.path.abspath(sys.argv[1])
     tmp = tempfile.mkdtemp(prefix="rb_study_output_")
@@ -148,6 +165,7 @@ def main():
         check(load_result(stored).track is not None, "the assessed case still loads its track")
         figures(stored, tmp)
         concurrent(wb, tmp)
+        planted(wb, tmp)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     print("all checks passed")

@@ -1,5 +1,6 @@
 #include "workbench/io/track_store.hpp"
 
+#include <cstring>
 #include <filesystem>
 #include <system_error>
 
@@ -16,11 +17,32 @@ bool isStoredTrack(const std::string& file, const std::string& hash) {
   return r.ok() && r.text("/track", "track_hash") == hash && r.has("/track/centreline/s");
 }
 
+namespace {
+
+// Every dataset of the store equals the content in hand, value for value (bit for bit): a store
+// file is only reused when it holds exactly this track, whatever its hash attribute says.
+bool holds(const std::string& file, const TrackContent& c) {
+  const ResultReader r(file);
+  if (!r.ok()) return false;
+  for (const auto& item : c.items) {
+    const auto* d = std::get_if<TrackContent::Dataset>(&item);
+    if (!d) continue;
+    const auto stored = r.dataset(d->path);
+    if (!stored || stored->size() != d->data.size() ||
+        (!d->data.empty() &&
+         std::memcmp(stored->data(), d->data.data(), d->data.size() * sizeof(double)) != 0))
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 StoredTrack storeTrack(const TrackContent& c, const std::string& dir) {
   StoredTrack s;
   s.hash = trackHash(c);
   s.file = (fs::path(dir) / (s.hash + ".h5")).string();
-  if (isStoredTrack(s.file, s.hash)) return s;
+  if (isStoredTrack(s.file, s.hash) && holds(s.file, c)) return s;
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw WriteError("cannot create the track store '" + dir + "': " + ec.message());
