@@ -1,0 +1,56 @@
+#include "workbench/scenario/lua_patterns.hpp"
+
+#include <cctype>
+#include <cmath>
+
+namespace rb::scenario {
+
+double patternWork(std::string_view pat, std::size_t subjectLen, bool anchorable) {
+  const double n1 = static_cast<double>(subjectLen) + 1.0;
+  double q = 0, s = 0;
+  std::size_t i = 0;
+  const bool anchored = anchorable && !pat.empty() && pat[0] == '^';
+  if (anchored) i = 1;
+  while (i < pat.size()) {
+    const char c = pat[i];
+    bool single = true;  // a single-character class that a quantifier may follow
+    if (c == '(' || c == ')') {
+      ++i;
+      single = false;
+    } else if (c == '%' && i + 1 < pat.size()) {
+      const char d = pat[i + 1];
+      if (d == 'b') {
+        s += 1;
+        i += 4;
+        single = false;
+      } else if (d == 'f') {
+        i += 2;
+        single = false;  // the set that follows is skipped as a class below
+      } else {
+        if (std::isdigit(static_cast<unsigned char>(d))) s += 1;
+        i += 2;
+      }
+    } else if (c == '[') {
+      ++i;
+      if (i < pat.size() && pat[i] == '^') ++i;
+      if (i < pat.size()) ++i;  // a ']' first in the set is literal
+      while (i < pat.size() && pat[i] != ']') i += pat[i] == '%' ? 2 : 1;
+      ++i;
+    } else {
+      ++i;
+    }
+    if (single && i < pat.size() &&
+        (pat[i] == '*' || pat[i] == '+' || pat[i] == '-' || pat[i] == '?')) {
+      q += 1;
+      ++i;
+    }
+  }
+  const double starts = anchored ? 1.0 : n1;
+  return starts * 2.0 * std::pow(n1, q) * (static_cast<double>(pat.size()) + 2.0 + s * n1);
+}
+
+bool hasPatternSpecials(std::string_view pat) {
+  return pat.find_first_of("^$*+?.([%-") != std::string_view::npos;
+}
+
+}  // namespace rb::scenario
