@@ -157,9 +157,10 @@ struct LuaMetrics::Impl {
     lua_createtable(L, 0, static_cast<int>(signals->size()));
     for (const auto& sig : *signals) {
       lua_createtable(L, static_cast<int>(sig.second.size()), 0);
-      for (std::size_t k = 0; k < sig.second.size(); ++k) {
-        lua_pushnumber(L, sig.second[k]);
-        lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+      lua_Integer position = 0;  // Lua arrays count from 1
+      for (const double v : sig.second) {
+        lua_pushnumber(L, v);
+        lua_rawseti(L, -2, ++position);
       }
       lua_setfield(L, -2, sig.first.c_str());
     }
