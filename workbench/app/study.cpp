@@ -231,12 +231,14 @@ int summarizeOnly(const scenario::StudySpec& st, const StudyOptions& o, StudyPla
 // --shard K/N: the runs i with i mod N == K - 1, through the local pool; no summary.
 int runShard(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& plan) {
   const Shard sh = parseShard(o.shard, o.file);
+  auto ofShard = [&](std::size_t i) {
+    return static_cast<int>(i % static_cast<std::size_t>(sh.n)) == sh.k - 1;
+  };
   std::vector<std::size_t> mine, todo;
-  for (std::size_t i = 0; i < plan.all.size(); ++i) {
-    if (static_cast<int>(i % static_cast<std::size_t>(sh.n)) != sh.k - 1) continue;
-    mine.push_back(i);
-    if (!isDone(plan.all[i].h5, *plan.all[i].hash)) todo.push_back(i);
-  }
+  for (std::size_t i = 0; i < plan.all.size(); ++i)
+    if (ofShard(i)) mine.push_back(i);
+  for (std::size_t i : plan.todo)  // not done at planning
+    if (ofShard(i)) todo.push_back(i);
   std::cerr << st.file << ": shard " << o.shard << ": " << mine.size() << " of " << plan.all.size()
             << " runs, " << mine.size() - todo.size() << " already done, running " << todo.size()
             << " with " << plan.jobs << " jobs\n";

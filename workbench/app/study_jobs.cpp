@@ -31,13 +31,13 @@ namespace rb::app::study_detail {
 
 bool isDone(const std::string& h5, const std::string& hash) {
   if (hash.empty() || !isRegularFile(h5)) return false;
-  auto rec = io::readStats(h5);
-  if (!rec || !rec->text.count("status")) return false;
-  auto stamp = io::readRootText(h5, "input_hash");
+  // One open of the file for the three questions (every run of a study is asked at planning).
+  const io::ResultReader r(h5);
+  if (!r.text("/stats", "status")) return false;
+  const auto stamp = r.text("/", "input_hash");
   if (!stamp || *stamp != hash) return false;
   // A compact result whose stored track is gone (a deleted tracks/ folder) is run again: its
   // readers could not load it.
-  const io::ResultReader r(h5);
   const auto in = r.text("/track", "stored_in");
   const auto trackHash = r.text("/track", "track_hash");
   if (!in) return true;
