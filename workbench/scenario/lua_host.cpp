@@ -17,7 +17,7 @@
 
 #include "workbench/core/files.hpp"
 #include "workbench/core/strings.hpp"
-#include "workbench/scenario/lua_patterns.hpp"
+#include "workbench/scenario/lua_sandbox.hpp"
 #include "workbench/track/names.hpp"
 #include "workbench/vehicle/names.hpp"
 
@@ -96,23 +96,6 @@ Diagnostic parseLuaMessage(const std::string& msg, const std::string& fallbackFi
 
 bool hasLocation(const std::string& msg) {
   return parseLuaMessage(msg, "").loc.line > 0;
-}
-
-bool isPlainName(const std::string& name) {
-  if (name.empty() || name.size() > kMaxModuleName) return false;
-  bool segmentStart = true;
-  for (char c : name) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '.') {
-      if (segmentStart) return false;
-      segmentStart = true;
-    } else if (std::isalpha(u) || c == '_' || (!segmentStart && std::isdigit(u))) {
-      segmentStart = false;
-    } else {
-      return false;
-    }
-  }
-  return !segmentStart;
 }
 
 }  // namespace

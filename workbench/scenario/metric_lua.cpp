@@ -16,8 +16,9 @@ extern "C" {
 }
 
 #include "workbench/core/error.hpp"
+#include "workbench/core/files.hpp"
 #include "workbench/scenario/lua_host.hpp"
-#include "workbench/scenario/lua_patterns.hpp"
+#include "workbench/scenario/lua_sandbox.hpp"
 
 namespace fs = std::filesystem;
 
@@ -28,20 +29,13 @@ constexpr int kHookEvery = 1000;
 constexpr const char* kStudyKey = "rb.metric.study";
 constexpr const char* kLoadedKey = "rb.metric.loaded";
 
-bool plainModuleName(const std::string& s) {
-  if (s.empty() || s.size() > kMaxModuleName || s.front() == '.' || s.back() == '.') return false;
-  for (char c : s)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.')) return false;
-  return s.find("..") == std::string::npos;
-}
-
-bool readText(const fs::path& p, std::string& out) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  out = ss.str();
-  return out.size() <= kMaxScenarioBytes;
+// A study file or module, within the scenario host's size limit.
+bool readText(const std::string& path, std::string& out) {
+  std::string why;
+  auto bytes = readRegularFile(path, why, kMaxScenarioBytes);
+  if (!bytes) return false;
+  out = std::move(*bytes);
+  return true;
 }
 
 bool below(const fs::path& p, const fs::path& root) {
@@ -194,7 +188,7 @@ struct LuaMetrics::Impl {
     int status = LUA_ERRFILE;
     {
       const std::string n = name;
-      const std::string file = plainModuleName(n) ? self->findModule(n) : std::string();
+      const std::string file = isPlainName(n) ? self->findModule(n) : std::string();
       std::string text;
       found = !file.empty() && readText(file, text);
       if (found) {

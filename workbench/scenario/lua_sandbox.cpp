@@ -1,4 +1,6 @@
-#include "workbench/scenario/lua_patterns.hpp"
+#include "workbench/scenario/lua_sandbox.hpp"
+
+#include "workbench/scenario/lua_host.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -51,6 +53,23 @@ double patternWork(std::string_view pat, std::size_t subjectLen, bool anchorable
 
 bool hasPatternSpecials(std::string_view pat) {
   return pat.find_first_of("^$*+?.([%-") != std::string_view::npos;
+}
+
+bool isPlainName(const std::string& name) {
+  if (name.empty() || name.size() > kMaxModuleName) return false;
+  bool segmentStart = true;
+  for (char c : name) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '.') {
+      if (segmentStart) return false;
+      segmentStart = true;
+    } else if (std::isalpha(u) || c == '_' || (!segmentStart && std::isdigit(u))) {
+      segmentStart = false;
+    } else {
+      return false;
+    }
+  }
+  return !segmentStart;
 }
 
 }  // namespace rb::scenario
