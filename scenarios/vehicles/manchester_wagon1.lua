@@ -187,6 +187,10 @@ return function(opts)
     name = "manchester_wagon1",
     speed = opts.speed or 20,  -- [m/s] paper case 2/3: V = 20 m/s
     wheel_radius = r0,
+    -- EN 14363 category (alpha = 1.0 of the track shift limit). ASSUMPTION: the benchmark's
+    -- vehicle 1 is a passenger coach (a 32 t body on two bogies 19 m apart with two-stage
+    -- suspension, as Iwnicki 1998 describes it; the paper itself was not at hand).
+    category = "passenger",
     start = opts.start or 0,
     bodies = bodies,
     elements = elements,

@@ -1,6 +1,7 @@
 // Reading the signals of an assessment back from a result file (`workbench assess`).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "workbench/run/assessment_run.hpp"
 
@@ -62,6 +63,48 @@ void readWheel(const io::ResultReader& f, const std::string& safety_base,
   }
 }
 
+// The arc length of a body's first output minus the leading body's (0 when the file lacks them):
+// the s_offset of a wheel written before the assessment kept it.
+double offsetOf(const io::ResultReader& f, const std::string& body) {
+  auto own = f.dataset("/bodies/" + body + "/s");
+  if (!own || own->empty()) return 0.0;
+  double lead = own->front();
+  for (const auto& b : f.members("/bodies")) {
+    auto s = f.dataset("/bodies/" + b + "/s");
+    if (s && !s->empty()) lead = std::max(lead, s->front());
+  }
+  return own->front() - lead;
+}
+
+// The sections a run's assessment wrote (/assessment/sections, in their order).
+std::vector<assessment::TrackSection> sectionsWritten(const io::ResultReader& f) {
+  std::vector<assessment::TrackSection> out;
+  const std::string names = f.text("/assessment/sections", "names").value_or("");
+  std::size_t from = 0;
+  while (from < names.size()) {
+    const std::size_t end = std::min(names.find('\n', from), names.size());
+    const std::string name = names.substr(from, end - from);
+    from = end + 1;
+    const std::string g = "/assessment/sections/" + name;
+    assessment::TrackSection t;
+    t.name = name;
+    t.kind = parse<assessment::SectionKind>(f.text(g, "kind").value_or(""))
+                 .value_or(assessment::SectionKind::Given);
+    t.zone = parse<assessment::TestZone>(f.text(g, "zone").value_or(""))
+                 .value_or(assessment::TestZone::None);
+    const double nan = std::nan("");
+    t.from = f.number(g, "from").value_or(-std::numeric_limits<double>::infinity());
+    t.to = f.number(g, "to").value_or(std::numeric_limits<double>::infinity());
+    t.radius = f.number(g, "radius")
+                   .value_or(t.kind == assessment::SectionKind::Tangent
+                                 ? std::numeric_limits<double>::infinity()
+                                 : nan);
+    t.cant = f.number(g, "cant").value_or(t.kind == assessment::SectionKind::Tangent ? 0.0 : nan);
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
 // From the series a run's assessment wrote.
 void fromAssessment(const io::ResultReader& f, const assessment::AssessmentSpec& spec,
                     AssessmentSignals& s, std::vector<std::string>& missing) {
@@ -74,6 +117,7 @@ void fromAssessment(const io::ResultReader& f, const assessment::AssessmentSpec&
   for (auto& w : s.wheels) {
     const std::string wheel = "/" + w.wheelset + "/" + w.side;
     w.q0 = f.number(A + "/safety" + wheel, "q0").value_or(std::nan(""));
+    w.s_offset = f.number(A + "/safety" + wheel, "s_offset").value_or(offsetOf(f, w.wheelset));
     if (spec.safety && !std::isfinite(w.q0)) missing.push_back("no q0 on " + A + "/safety" + wheel);
     readWheel(f, A + "/safety" + wheel, A + "/wear" + wheel, spec, n, w, missing);
   }
@@ -81,10 +125,19 @@ void fromAssessment(const io::ResultReader& f, const assessment::AssessmentSpec&
        spec.stability ? f.members(A + "/stability") : std::vector<std::string>{})
     for (const auto& ws : f.members(A + "/stability/" + bogie)) {
       const std::string g = A + "/stability/" + bogie + "/" + ws;
-      BogiePointSignals b{bogie, ws, f.number(g, "bogie_mass").value_or(0.0),
-                          series(f, g + "/acceleration", n, missing)};
+      BogiePointSignals b;
+      b.bogie = bogie;
+      b.wheelset = ws;
+      b.bogie_mass = f.number(g, "bogie_mass").value_or(0.0);
+      b.s_offset = f.number(g, "s_offset").value_or(offsetOf(f, ws));
+      b.ay = series(f, g + "/acceleration", n, missing);
       s.bogies.push_back(std::move(b));
     }
+  s.sections = sectionsWritten(f);
+  s.q0_source = f.text(A, "q0_source")
+                    .value_or(
+                        "the Q0 attributes the run wrote (a result written before Q0 came "
+                        "from the statics: the load of the run's initial state)");
   if (spec.stability && s.bogies.empty())
     missing.push_back("stability: no bogie-frame accelerations in " + A +
                       "/stability (run with run.assessment.stability = true)");
@@ -133,7 +186,11 @@ void fromOutputs(const io::ResultReader& f, const assessment::AssessmentSpec& sp
     const std::string base = "/contact/" + w.wheelset + "/" + w.side;
     readWheel(f, base, base, spec, n, w, missing);
     w.q0 = w.Q.empty() ? 0.0 : w.Q.front();  // the first output is the initial state
+    w.s_offset = offsetOf(f, w.wheelset);
   }
+  s.q0_source =
+      "the Q of the first output (the run's initial state; on a curve or an irregular track "
+      "that is not the static wheel load: rerun with run.assessment for the statics' Q0)";
   if (spec.stability)
     missing.push_back(
         "stability: the bogie-frame accelerations are sampled only by "

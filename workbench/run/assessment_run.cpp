@@ -4,11 +4,13 @@
 #include <cmath>
 #include <complex>
 #include <cstdint>
+#include <cstdio>
 #include <numbers>
 #include <sstream>
 
 #include "workbench/assessment/signal.hpp"
 #include "workbench/assessment/sperling.hpp"
+#include "workbench/core/strings.hpp"
 
 namespace rb::run {
 namespace {
@@ -55,16 +57,26 @@ Assessed assessed(const Check& c, const char* unit, const std::string& clause,
   return {c, unit, clause, where, at_s};
 }
 
+// The distance series shifted by a body's offset: its own arc length at every sample [m].
+std::vector<double> ownDistance(const AssessmentSignals& sig, double s_offset) {
+  std::vector<double> s(sig.distance);
+  for (double& x : s) x += s_offset;
+  return s;
+}
+
 WheelSafety wheelSafety(const WheelSignals& w, const AssessmentSignals& sig,
                         const assessment::AssessmentSpec& spec, double mu) {
   WheelSafety r;
   const double dt = sig.dt;
-  r.y_over_q = a14::derailmentQuotient(w.Y, w.Q, sig.distance, dt, spec.yq_limit);
+  const std::vector<double> s = ownDistance(sig, w.s_offset);
+  r.y_over_q = a14::derailmentQuotient(w.Y, w.Q, s, dt, spec.yq_limit);
   r.nadal_limit = a14::nadalLimit(spec.flange_angle, mu);
   r.nadal_mu = mu;
   r.yq = assessed(r.y_over_q.check, "-", std::string(kEn14363) + ": (Y/Q)_2m, 2 m sliding mean",
                   wheelName(w), positionOfMaxAbs(r.y_over_q.series));
-  const std::vector<double> qf = a14::lowPassForce(w.Q, dt);
+  r.y_filtered = a14::lowPassForce(w.Y, dt);
+  r.q_filtered = a14::lowPassForce(w.Q, dt);
+  const std::vector<double>& qf = r.q_filtered;
   r.dq_series.resize(qf.size());
   std::size_t kmax = 0;
   for (std::size_t k = 0; k < qf.size(); ++k) {
@@ -73,7 +85,7 @@ WheelSafety wheelSafety(const WheelSignals& w, const AssessmentSignals& sig,
   }
   r.dq = assessed(a14::wheelUnloading(w.Q, dt, w.q0), "-",
                   std::string(kEn14363) + ": wheel unloading dQ/Q0", wheelName(w),
-                  qf.empty() ? std::numeric_limits<double>::quiet_NaN() : sig.distance[kmax]);
+                  qf.empty() ? std::numeric_limits<double>::quiet_NaN() : s[kmax]);
   r.y_qst =
       assessed(a14::quasiStaticGuidingForce(w.Y, dt), "N",
                std::string(kEn14363) + ": quasi-static guiding force Y_qst (50 %)", wheelName(w));
@@ -86,6 +98,132 @@ WheelSafety wheelSafety(const WheelSignals& w, const AssessmentSignals& sig,
   return r;
 }
 
+// ---- per section ------------------------------------------------------------------------------
+
+// The samples k with from <= s[k] < to.
+std::vector<double> within(const std::vector<double>& x, const std::vector<double>& s, double from,
+                           double to) {
+  std::vector<double> out;
+  for (std::size_t k = 0; k < x.size() && k < s.size(); ++k)
+    if (s[k] >= from && s[k] < to) out.push_back(x[k]);
+  return out;
+}
+
+// A sliding-mean quantity over the windows lying wholly in [from, to]: max(|F1|, |F2|) of them
+// against `limit` and where the largest |value| is; value NaN when no window fits.
+Assessed slidingInSection(const assessment::DistanceSeries& series, double from, double to,
+                          double limit, const char* unit, const std::string& clause,
+                          const std::string& where) {
+  std::vector<double> v;
+  double best = -1.0, at = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t k = 0; k < series.value.size(); ++k) {
+    const double p = series.position[k];
+    if (p < from + a14::kSlidingWindow - 1e-9 || p > to + 1e-9) continue;
+    v.push_back(series.value[k]);
+    if (std::abs(series.value[k]) > best) {
+      best = std::abs(series.value[k]);
+      at = p;
+    }
+  }
+  if (v.empty())
+    return assessed(assessment::check(std::numeric_limits<double>::quiet_NaN(), limit), unit,
+                    clause, where);
+  const a14::Extremes e = a14::extremes(v);
+  return assessed(assessment::check(std::max(std::abs(e.upper), std::abs(e.lower)), limit), unit,
+                  clause, where, at);
+}
+
+SectionWheel sectionWheel(const WheelSignals& w, const WheelSafety& ws,
+                          const AssessmentSignals& sig, const assessment::AssessmentSpec& spec,
+                          const assessment::TrackSection& sec) {
+  SectionWheel r;
+  const std::vector<double> s = ownDistance(sig, w.s_offset);
+  const double lo = std::max(sec.from, s.front()), hi = std::min(sec.to, s.back());
+  if (hi - lo < a14::kSlidingWindow) return r;  // this wheel did not run through the section
+  r.assessed = true;
+  const std::string name = wheelName(w);
+  r.yq = slidingInSection(ws.y_over_q.series, sec.from, sec.to, spec.yq_limit, "-",
+                          std::string(kEn14363) + ": (Y/Q)_2m, 2 m sliding mean", name);
+  const std::vector<double> dq = within(ws.dq_series, s, sec.from, sec.to);
+  const std::vector<double> pos = within(s, s, sec.from, sec.to);
+  std::size_t kmax = 0;
+  for (std::size_t k = 1; k < dq.size(); ++k)
+    if (dq[k] > dq[kmax]) kmax = k;
+  r.dq = assessed(assessment::check(dq[kmax], a14::kWheelUnloadingLimit), "-",
+                  std::string(kEn14363) + ": wheel unloading dQ/Q0", name, pos[kmax]);
+  const std::vector<double> q = within(ws.q_filtered, s, sec.from, sec.to);
+  r.q_max =
+      assessed(assessment::check(assessment::percentile(q, a14::kUpperPercentile), 90e3 + w.q0),
+               "N", std::string(kEn14363) + ": maximum wheel force Q (99.85 %), 90 kN + Q0", name);
+  r.quasi_static = assessment::hasQuasiStatic(sec.kind);
+  if (r.quasi_static) {
+    const std::vector<double> y = within(ws.y_filtered, s, sec.from, sec.to);
+    r.y_qst =
+        assessed(assessment::check(std::abs(assessment::percentile(y, a14::kMedianPercentile)),
+                                   a14::kQuasiStaticGuidingLimit),
+                 "N", std::string(kEn14363) + ": quasi-static guiding force Y_qst (50 %)", name);
+    r.q_qst =
+        assessed(assessment::check(assessment::percentile(q, a14::kMedianPercentile),
+                                   a14::kQuasiStaticWheelLimit),
+                 "N", std::string(kEn14363) + ": quasi-static wheel force Q_qst (50 %)", name);
+  }
+  return r;
+}
+
+// Keeps the worst of one key among the section's wheels (NaN values are not assessed).
+void worst(std::vector<SummaryItem>& items, const std::string& key, const std::string& unit,
+           const Assessed& a) {
+  if (std::isnan(a.check.value)) return;
+  for (auto& it : items)
+    if (it.key == key) {
+      if (a.check.value > it.a.check.value || (!a.check.ok() && it.a.check.ok())) it.a = a;
+      return;
+    }
+  items.push_back({key, unit, a});
+}
+
+SectionResult assessSection(const AssessmentSignals& sig, const assessment::AssessmentSpec& spec,
+                            const assessment::TrackSection& sec, const AssessmentResult& r) {
+  SectionResult out;
+  out.section = sec;
+  const double lead_lo = std::max(sec.from, sig.distance.front());
+  const double lead_hi = std::min(sec.to, sig.distance.back());
+  out.covered = std::max(0.0, lead_hi - lead_lo);
+  for (std::size_t k = 0; k < sig.wheels.size(); ++k) {
+    out.wheels.push_back(sectionWheel(sig.wheels[k], r.wheel_safety[k], sig, spec, sec));
+    const SectionWheel& w = out.wheels.back();
+    if (!w.assessed) continue;
+    worst(out.summary, "y_over_q", "-", w.yq);
+    worst(out.summary, "dq_over_q", "-", w.dq);
+    worst(out.summary, "q_max", "N", w.q_max);
+    if (w.quasi_static) {
+      worst(out.summary, "y_qst", "N", w.y_qst);
+      worst(out.summary, "q_qst", "N", w.q_qst);
+    }
+  }
+  for (const auto& ws : r.wheelset_safety) {
+    out.sum_y.push_back(slidingInSection(ws.sum_y.series, sec.from, sec.to, ws.sum_y.check.limit,
+                                         "N", ws.sy.clause, ws.wheelset));
+    worst(out.summary, "sum_y", "N", out.sum_y.back());
+  }
+  if (out.summary.empty())
+    out.notes.push_back("section " + sec.name + ": no wheel ran 2 m through it; not assessed");
+  return out;
+}
+
+// The sections of a run: the given ones, or one covering the whole run.
+std::vector<assessment::TrackSection> sectionsOf(const AssessmentSignals& sig) {
+  if (!sig.sections.empty()) return sig.sections;
+  assessment::TrackSection whole;
+  whole.name = "run";
+  whole.kind = assessment::SectionKind::Given;
+  whole.from = -std::numeric_limits<double>::infinity();
+  whole.to = std::numeric_limits<double>::infinity();
+  whole.radius = whole.cant = std::numeric_limits<double>::quiet_NaN();
+  whole.zone = assessment::TestZone::None;
+  return {whole};
+}
+
 void assessSafety(const AssessmentSignals& sig, const assessment::AssessmentSpec& spec, double mu,
                   AssessmentResult& r) {
   if (sig.distance.back() - sig.distance.front() < a14::kSlidingWindow) {
@@ -93,28 +231,45 @@ void assessSafety(const AssessmentSignals& sig, const assessment::AssessmentSpec
     r.spec.safety = false;
     return;
   }
-  for (const auto& w : sig.wheels) {
-    r.wheel_safety.push_back(wheelSafety(w, sig, spec, mu));
-    const auto& s = r.wheel_safety.back();
-    summarize(r.summary, "y_over_q", "-", s.yq);
-    summarize(r.summary, "dq_over_q", "-", s.dq);
-    summarize(r.summary, "y_qst", "N", s.y_qst);
-    summarize(r.summary, "q_qst", "N", s.q_qst);
-    summarize(r.summary, "q_max", "N", s.q_max);
-  }
+  for (const auto& w : sig.wheels) r.wheel_safety.push_back(wheelSafety(w, sig, spec, mu));
   for (std::size_t k = 0; k + 1 < sig.wheels.size(); k += 2) {
     const auto& l = sig.wheels[k];
     const auto& rr = sig.wheels[k + 1];
     WheelsetSafety ws;
     ws.wheelset = l.wheelset;
     ws.q0 = 0.5 * (l.q0 + rr.q0);
-    ws.sum_y = a14::trackShiftForce(l.y_track, rr.y_track, sig.distance, sig.dt, ws.q0, spec.alpha);
+    ws.sum_y = a14::trackShiftForce(l.y_track, rr.y_track, ownDistance(sig, l.s_offset), sig.dt,
+                                    ws.q0, r.spec.alpha);
     ws.sy = assessed(ws.sum_y.check, "N",
                      std::string(kEn14363) + ": track shift force (sum Y)_2m, Prud'homme",
                      ws.wheelset, positionOfMaxAbs(ws.sum_y.series));
-    summarize(r.summary, "sum_y", "N", ws.sy);
     r.wheelset_safety.push_back(std::move(ws));
   }
+  // EN 14363 evaluates per track section: the summary is the worst section, named in `where`.
+  bool quasi_static = false;
+  for (const auto& sec : sectionsOf(sig)) {
+    r.sections.push_back(assessSection(sig, spec, sec, r));
+    const SectionResult& sr = r.sections.back();
+    for (const auto& n : sr.notes) r.notes.push_back("safety: " + n);
+    for (SummaryItem it : sr.summary) {
+      quasi_static = quasi_static || it.key == "y_qst";
+      if (!sig.sections.empty()) it.a.where += " in " + sec.name;
+      summarize(r.summary, it.key, it.unit, it.a);
+    }
+  }
+  if (!quasi_static)
+    r.notes.push_back(
+        "safety: no curve section was run through; the quasi-static forces Y_qst and Q_qst "
+        "(evaluated per curve section) are not assessed");
+  // The summary in a fixed order (the readers show it so).
+  static constexpr std::array<std::string_view, 6> kOrder = {"y_over_q", "dq_over_q", "y_qst",
+                                                             "q_qst",    "q_max",     "sum_y"};
+  const auto rank = [](const std::string& k) {
+    return std::find(kOrder.begin(), kOrder.end(), k) - kOrder.begin();
+  };
+  std::stable_sort(
+      r.summary.begin(), r.summary.end(),
+      [&](const SummaryItem& a, const SummaryItem& b) { return rank(a.key) < rank(b.key); });
 }
 
 // f0 of one bogie: the scenario's, or the spectrum peak of its (first) frame signal.
@@ -140,7 +295,7 @@ void assessStability(const AssessmentSignals& sig, const assessment::AssessmentS
     s.wheelset = b.wheelset;
     s.bogie_mass = b.bogie_mass;
     s.f0 = instabilityFrequency(b, sig.dt, spec);
-    s.st = a14::stability(b.ay, sig.distance, sig.dt, s.f0, b.bogie_mass);
+    s.st = a14::stability(b.ay, ownDistance(sig, b.s_offset), sig.dt, s.f0, b.bogie_mass);
     s.a = assessed(s.st.check, "m/s^2",
                    std::string(kEn14363) +
                        ": running stability, simplified method (sliding rms 100 m of the "
@@ -167,6 +322,10 @@ void assessComfort(const AssessmentSignals& sig, const assessment::AssessmentSpe
     c.n_mv = a12::meanComfort(p.ax, p.ay, p.az, sig.dt, spec.comfort_limit);
     c.n = assessed(c.n_mv.check, "-", "EN 12299:2009 6.7.2: mean comfort N_MV (standard method)",
                    p.name);
+    if (c.n_mv.blocks < static_cast<std::size_t>(assessment::kComfortBlocksRequired))
+      c.n.where += " (" + std::to_string(c.n_mv.blocks) + " of the " +
+                   std::to_string(assessment::kComfortBlocksRequired) +
+                   " 5 s blocks EN 12299 asks for: indicative)";
     c.nc[0] = a12::continuousComfort(p.ax, a12::Axis::X, sig.dt);
     c.nc[1] = a12::continuousComfort(p.ay, a12::Axis::Y, sig.dt);
     c.nc[2] = a12::continuousComfort(p.az, a12::Axis::Z, sig.dt);
@@ -229,13 +388,14 @@ void writeSliding(io::ResultFile& f, const std::string& g, const Assessed& a,
 }
 
 void writeSafety(io::ResultFile& f, const AssessmentSignals& sig, const AssessmentResult& r) {
-  if (!r.wheelset_safety.empty())
-    f.dataset("/assessment/safety/s", r.wheelset_safety.front().sum_y.series.position, "m");
   for (std::size_t k = 0; k < r.wheel_safety.size(); ++k) {
     const auto& w = sig.wheels[k];
     const auto& s = r.wheel_safety[k];
     const std::string base = "/assessment/safety/" + w.wheelset + "/" + w.side + "/";
     writeSliding(f, base + "y_over_q", s.yq, s.y_over_q, "-");
+    // Window ends in this wheel's own arc length.
+    f.dataset(base + "y_over_q/s", s.y_over_q.series.position, "m");
+    f.attr("/assessment/safety/" + w.wheelset + "/" + w.side, "s_offset", w.s_offset);
     f.attr(base + "y_over_q", "nadal_limit", s.nadal_limit);
     f.attr(base + "y_over_q", "flange_angle", r.spec.flange_angle);
     f.attr(base + "y_over_q", "mu", s.nadal_mu);
@@ -255,9 +415,76 @@ void writeSafety(io::ResultFile& f, const AssessmentSignals& sig, const Assessme
   for (const auto& ws : r.wheelset_safety) {
     const std::string g = "/assessment/safety/" + ws.wheelset + "/sum_y";
     writeSliding(f, g, ws.sy, ws.sum_y, "N");
+    f.dataset(g + "/s", ws.sum_y.series.position, "m");
     f.attr(g, "alpha", r.spec.alpha);
     f.attr(g, "q0", ws.q0);
   }
+}
+
+// The summary attributes of one set of items under group g (/assessment/summary, a section).
+void writeItems(io::ResultFile& f, const std::string& g, const std::vector<SummaryItem>& items) {
+  for (const auto& it : items) {
+    f.attr(g, it.key, it.a.check.value);
+    // A quantity without a limit (T gamma) has no Q_limit and Q_ok: readers show its value alone.
+    if (std::isfinite(it.a.check.limit)) {
+      f.attr(g, it.key + "_limit", it.a.check.limit);
+      f.attr(g, it.key + "_ok", std::int64_t{it.a.check.ok() ? 1 : 0});
+    }
+    f.attr(g, it.key + "_where", it.a.where);
+    f.attr(g, it.key + "_unit", it.unit);
+    if (std::isfinite(it.a.at_s)) f.attr(g, it.key + "_at_s", it.a.at_s);
+  }
+}
+
+void writeSectionWheel(io::ResultFile& f, const std::string& g, const SectionWheel& w) {
+  const auto put = [&](const char* key, const Assessed& a) {
+    if (std::isnan(a.check.value)) return;
+    f.attr(g, key, a.check.value);
+    f.attr(g, std::string(key) + "_limit", a.check.limit);
+    if (std::isfinite(a.at_s)) f.attr(g, std::string(key) + "_at_s", a.at_s);
+  };
+  put("y_over_q", w.yq);
+  put("dq_over_q", w.dq);
+  put("q_max", w.q_max);
+  if (w.quasi_static) {
+    put("y_qst", w.y_qst);
+    put("q_qst", w.q_qst);
+  }
+}
+
+// /assessment/sections/<name>: the section (kind, test zone, range, radius, cant) and its
+// quantities, worst first (as /assessment/summary) and per wheel and wheelset.
+void writeSections(io::ResultFile& f, const AssessmentSignals& sig, const AssessmentResult& r) {
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < r.sections.size(); ++i) {
+    const SectionResult& sr = r.sections[i];
+    const auto& sec = sr.section;
+    names.push_back(sec.name);
+    const std::string g = "/assessment/sections/" + sec.name;
+    f.attr(g, "order", static_cast<std::int64_t>(i));
+    f.attr(g, "kind", std::string(nameOf(sec.kind)));
+    f.attr(g, "zone", std::string(nameOf(sec.zone)));
+    if (std::isfinite(sec.from)) f.attr(g, "from", sec.from);
+    if (std::isfinite(sec.to)) f.attr(g, "to", sec.to);
+    if (std::isfinite(sec.radius)) f.attr(g, "radius", sec.radius);
+    if (std::isfinite(sec.cant)) f.attr(g, "cant", sec.cant);
+    f.attr(g, "covered", sr.covered);
+    f.attr(g, "notes", join(sr.notes, "\n"));
+    writeItems(f, g, sr.summary);
+    for (std::size_t k = 0; k < sr.wheels.size(); ++k)
+      if (sr.wheels[k].assessed)
+        writeSectionWheel(f, g + "/" + sig.wheels[k].wheelset + "/" + sig.wheels[k].side,
+                          sr.wheels[k]);
+    for (std::size_t k = 0; k < sr.sum_y.size(); ++k) {
+      const Assessed& a = sr.sum_y[k];
+      if (std::isnan(a.check.value)) continue;
+      const std::string wg = g + "/" + r.wheelset_safety[k].wheelset;
+      f.attr(wg, "sum_y", a.check.value);
+      f.attr(wg, "sum_y_limit", a.check.limit);
+      if (std::isfinite(a.at_s)) f.attr(wg, "sum_y_at_s", a.at_s);
+    }
+  }
+  if (!names.empty()) f.attr("/assessment/sections", "names", join(names, "\n"));
 }
 
 void writeStability(io::ResultFile& f, const AssessmentSignals& sig, const AssessmentResult& r) {
@@ -270,6 +497,7 @@ void writeStability(io::ResultFile& f, const AssessmentSignals& sig, const Asses
     f.dataset(g + "/acceleration", sig.bogies[k].ay, "m/s^2");
     f.attr(g, "f0", s.f0);
     f.attr(g, "bogie_mass", s.bogie_mass);
+    f.attr(g, "s_offset", sig.bogies[k].s_offset);
   }
 }
 
@@ -322,17 +550,7 @@ void writeWear(io::ResultFile& f, const AssessmentSignals& sig, const Assessment
 
 void writeSummary(io::ResultFile& f, const AssessmentResult& r) {
   const std::string g = "/assessment/summary";
-  for (const auto& it : r.summary) {
-    f.attr(g, it.key, it.a.check.value);
-    // A quantity without a limit (T gamma) has no Q_limit and Q_ok: readers show its value alone.
-    if (std::isfinite(it.a.check.limit)) {
-      f.attr(g, it.key + "_limit", it.a.check.limit);
-      f.attr(g, it.key + "_ok", std::int64_t{it.a.check.ok() ? 1 : 0});
-    }
-    f.attr(g, it.key + "_where", it.a.where);
-    f.attr(g, it.key + "_unit", it.unit);
-    if (std::isfinite(it.a.at_s)) f.attr(g, it.key + "_at_s", it.a.at_s);
-  }
+  writeItems(f, g, r.summary);
   bool all_ok = true;
   for (const auto& it : r.summary) all_ok = all_ok && it.a.check.ok();
   f.attr(g, "all_ok", std::int64_t{all_ok ? 1 : 0});
@@ -365,7 +583,10 @@ void writeAssessment(io::ResultFile& f, const AssessmentSignals& sig, const Asse
   f.dataset(g + "/time", sig.time, "s");
   f.dataset(g + "/distance", sig.distance, "m");
   writeSummary(f, r);
+  f.attr(g, "q0_source", sig.q0_source);
+  f.attr(g, "category", std::string(nameOf(r.spec.category)));
   if (r.spec.safety) writeSafety(f, sig, r);
+  if (r.spec.safety) writeSections(f, sig, r);
   if (r.spec.stability) writeStability(f, sig, r);
   if (r.spec.comfort) writeComfort(f, sig, r);
   if (r.spec.wear) writeWear(f, sig, r);
@@ -400,18 +621,30 @@ AssessmentResult assess(const AssessmentSignals& sig, const assessment::Assessme
   r.sample_every = sig.dt;
   const double mu = spec.mu > 0.0 ? spec.mu : contact_mu;
   r.mu = mu;
+  if (r.spec.alpha <= 0.0) {
+    r.spec.alpha = assessment::trackShiftAlpha(spec.category);
+    if (spec.category == assessment::VehicleCategory::Unstated && spec.safety)
+      r.notes.push_back(
+          "safety: the vehicle states no vehicle.category; alpha = 1.0 of the track shift limit "
+          "(locomotives, passenger vehicles) assumed: a freight wagon has alpha = 0.85 "
+          "(vehicle.category = \"freight\" or run.assessment.alpha)");
+  }
   r.assumptions = {
       "wheel forces low-pass filtered at 20 Hz (4th-order Butterworth) before processing",
-      "distance axis: travelled distance of the leading wheelset for every wheel",
-      "Q0 per wheel: the wheel load Q of the initial (static) state",
-      "whole run assessed as one section (no split into tangent and curve zones)",
+      "positions: every wheel's, wheelset's and bogie point's own arc length along the track",
+      "Q0 per wheel: " + (sig.q0_source.empty() ? std::string("as given") : sig.q0_source),
+      sig.sections.empty()
+          ? std::string("whole run assessed as one section (no track sections known)")
+          : std::string("running safety and track loading per track section (each wheel over "
+                        "its own stretch of it); the summary gives the worst section; Y_qst "
+                        "and Q_qst in curve and given sections only"),
       std::string("floor points at the car body's centre-of-mass height; absolute "
                   "accelerations in the body's track frame, gravity not included (the comfort "
                   "weightings remove the static part)"),
       std::string("bogie-frame lateral acceleration at the frame point above each axle, "
                   "centre-of-mass height"),
       "Nadal's limit with flange angle " + fmt(spec.flange_angle) + " rad and mu " + fmt(mu),
-      "sum Y limit alpha (10 kN + 2 Q0 / 3) with alpha " + fmt(spec.alpha) +
+      "sum Y limit alpha (10 kN + 2 Q0 / 3) with alpha " + fmt(r.spec.alpha) +
           " and Q0 the mean static wheel load of the wheelset"};
   if (sig.time.size() < 2) {
     r.notes.push_back("assessment: fewer than 2 samples; nothing assessed");
@@ -421,6 +654,12 @@ AssessmentResult assess(const AssessmentSignals& sig, const assessment::Assessme
   if (r.spec.safety) assessSafety(sig, spec, mu, r);
   if (r.spec.stability) assessStability(sig, spec, r);
   if (r.spec.comfort) assessComfort(sig, spec, r);
+  if (!r.comfort.empty() &&
+      r.comfort.front().n_mv.blocks < static_cast<std::size_t>(assessment::kComfortBlocksRequired))
+    r.notes.push_back("comfort: N_MV rests on " + std::to_string(r.comfort.front().n_mv.blocks) +
+                      " blocks of 5 s; EN 12299 asks for " +
+                      std::to_string(assessment::kComfortBlocksRequired) +
+                      " (5 minutes): the value and its verdict are indicative only");
   if (r.spec.wear) assessWear(sig, r);
   for (const auto& it : r.summary) r.quantities.push_back(it.key);
   return r;
@@ -441,7 +680,50 @@ std::vector<std::string> summaryLines(const AssessmentResult& r) {
     os << ")";
     out.push_back(os.str());
   }
+  for (const auto& line : sectionLines(r)) out.push_back("  " + line);
   for (const auto& n : r.notes) out.push_back("  " + n);
+  return out;
+}
+
+std::vector<std::string> sectionLines(const AssessmentResult& r) {
+  std::vector<std::string> out;
+  if (r.sections.size() < 2 && (r.sections.empty() || std::isinf(r.sections[0].section.to)))
+    return out;  // the whole run is the only section: the summary says it all
+  static constexpr std::array<std::pair<const char*, double>, 6> kCols = {{{"y_over_q", 1.0},
+                                                                           {"sum_y", 1e-3},
+                                                                           {"dq_over_q", 1.0},
+                                                                           {"y_qst", 1e-3},
+                                                                           {"q_qst", 1e-3},
+                                                                           {"q_max", 1e-3}}};
+  out.emplace_back("per section (EN 14363; the worst wheel or wheelset of each):");
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "  %-14s %-22s %-15s %6s %7s %6s %7s %7s %7s", "section",
+                "kind, zone", "s [m]", "Y/Q", "SY[kN]", "dQ/Q0", "Yqst", "Qqst", "Qmax");
+  out.emplace_back(buf);
+  for (const auto& sr : r.sections) {
+    const auto& sec = sr.section;
+    std::string kind = std::string(nameOf(sec.kind));
+    if (sec.zone != assessment::TestZone::None) kind += ", " + std::string(nameOf(sec.zone));
+    const std::string range = fmt(sec.from) + "-" + fmt(sec.to);
+    std::string line;
+    std::snprintf(buf, sizeof buf, "  %-14s %-22s %-15s", sec.name.c_str(), kind.c_str(),
+                  range.c_str());
+    line = buf;
+    for (const auto& [key, scale] : kCols) {
+      const auto it = std::find_if(sr.summary.begin(), sr.summary.end(),
+                                   [&](const SummaryItem& i) { return i.key == key; });
+      const int width = key == std::string("y_over_q") || key == std::string("dq_over_q") ? 6 : 7;
+      if (it == sr.summary.end()) {
+        std::snprintf(buf, sizeof buf, " %*s", width, "-");
+      } else {
+        std::snprintf(buf, sizeof buf, " %*.*f%s", width - 1, scale < 1.0 ? 1 : 3,
+                      it->a.check.value * scale, it->a.check.ok() ? " " : "!");
+      }
+      line += buf;
+    }
+    out.push_back(line);
+  }
+  out.emplace_back("  (! = limit exceeded; forces in kN; Y_qst, Q_qst in curve sections only)");
   return out;
 }
 

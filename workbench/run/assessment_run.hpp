@@ -9,6 +9,7 @@
 
 #include "workbench/assessment/en12299.hpp"
 #include "workbench/assessment/en14363.hpp"
+#include "workbench/assessment/sections.hpp"
 #include "workbench/assessment/spec.hpp"
 #include "workbench/assessment/wear.hpp"
 #include "workbench/io/result_file.hpp"
@@ -17,11 +18,14 @@
 namespace rb::run {
 
 // One wheel's track-frame forces (EN 14363 Y, Q, y_track [N]) and per patch T gamma [N] and
-// frictional power [W] at the sample times, with its static wheel load Q0 [N] (the Q of the
-// initial state).
+// frictional power [W] at the sample times, with its static wheel load Q0 [N] (the vehicle's
+// static equilibrium on perfect tangent track, staticWheelLoads()).
 struct WheelSignals {
   std::string wheelset, side;  // as in /contact
   double q0 = 0.0;             // [N]
+  // [m] this wheel's arc length minus AssessmentSignals::distance (<= 0 behind the leading
+  // wheelset): every position of this wheel's quantities is its own distance along the track.
+  double s_offset = 0.0;
   std::vector<double> Y, Q, y_track;
   std::vector<double> t_gamma[2], power[2];
 };
@@ -30,6 +34,7 @@ struct WheelSignals {
 struct BogiePointSignals {
   std::string bogie, wheelset;
   double bogie_mass = 0.0;  // [kg]
+  double s_offset = 0.0;    // [m] the wheelset's arc length minus AssessmentSignals::distance
   std::vector<double> ay;
 };
 
@@ -41,8 +46,12 @@ struct FloorPointSignals {
 };
 
 struct AssessmentSignals {
-  double dt = 0.0;                        // sample interval [s]
-  std::vector<double> time, distance;     // [s], [m] (leading wheelset)
+  double dt = 0.0;                     // sample interval [s]
+  std::vector<double> time, distance;  // [s], [m] (leading wheelset)
+  // The sections assessed on their own (the track's segments or run.assessment.sections); empty:
+  // the whole run is one section.
+  std::vector<assessment::TrackSection> sections;
+  std::string q0_source;                  // where the static wheel loads Q0 come from (a sentence)
   std::vector<WheelSignals> wheels;       // per wheelset: left, right
   std::vector<BogiePointSignals> bogies;  // per bogie: its wheelsets, leading first
   std::vector<FloorPointSignals> floor;
@@ -56,6 +65,7 @@ struct Assessed {
 };
 
 struct WheelSafety {
+  std::vector<double> y_filtered, q_filtered;  // the 20 Hz low-passed Y and Q [N]
   assessment::en14363::SlidingAssessment y_over_q;
   Assessed yq;               // (Y/Q)_2m against yq_limit
   double nadal_limit = 0.0;  // [-] Nadal's flange-climbing limit
@@ -96,6 +106,22 @@ struct SummaryItem {
   Assessed a;
 };
 
+// The EN 14363 quantities of one track section, each wheel on its own stretch of the section
+// (its own arc length), and the worst of them.
+struct SectionWheel {
+  bool assessed = false;  // the wheel's samples cover the section
+  Assessed yq, dq, q_max, y_qst, q_qst;
+  bool quasi_static = false;  // y_qst and q_qst assessed (curve and given sections)
+};
+struct SectionResult {
+  assessment::TrackSection section;
+  double covered = 0.0;              // [m] length of the section the leading wheel sampled
+  std::vector<SectionWheel> wheels;  // order of signals.wheels
+  std::vector<Assessed> sum_y;       // per wheelset (NaN value: not assessed)
+  std::vector<SummaryItem> summary;  // the worst wheel or wheelset per quantity
+  std::vector<std::string> notes;
+};
+
 struct AssessmentResult {
   assessment::AssessmentSpec spec;  // as applied (groups that do not apply dropped)
   double sample_every = 0.0;
@@ -106,12 +132,14 @@ struct AssessmentResult {
   std::vector<StabilityResult> stability;
   std::vector<ComfortResult> comfort;
   std::vector<WearResult> wear;  // per wheel
+  std::vector<SectionResult> sections;
   std::vector<SummaryItem> summary;
   std::vector<std::string> quantities;
 };
 
 // Computes every asked quantity from the signals (pure). mu is the friction coefficient of
-// Nadal's limit when spec.mu < 0.
+// Nadal's limit when spec.mu < 0. The safety quantities are evaluated per section
+// (signals.sections, or the whole run as one section); the summary gives the worst section.
 AssessmentResult assess(const AssessmentSignals& signals, const assessment::AssessmentSpec& spec,
                         double contact_mu);
 
@@ -123,6 +151,8 @@ void writeAssessment(io::ResultFile& f, const AssessmentSignals& signals,
 // The one-screen summary printed after a run: one line per summary quantity, "ok" or
 // "EXCEEDED".
 std::vector<std::string> summaryLines(const AssessmentResult& r);
+// The per-section table of the summary (no lines when the whole run is one section).
+std::vector<std::string> sectionLines(const AssessmentResult& r);
 // The warnings of a result whose quantities exceed their limits (one line each).
 std::vector<std::string> exceededWarnings(const AssessmentResult& r);
 

@@ -220,6 +220,9 @@ void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
          std::string(dynamics::ContactModel::couplingName(cm.coupling)));
   f.attr("/contact", "min_normal_force", cm.min_normal_force);
   f.attr("/contact", "mu", m.spec.contact.mu);
+  // The flange angle of Nadal's limit (run.assessment.flange_angle, default S1002's): the contact
+  // figures draw the same limit as the assessment.
+  f.attr("/contact", "flange_angle", m.spec.run.assessment.flange_angle);
   // Which interpolation the tables were read with (cubic/bicubic or the paper's linear, section
   // 5.5): results of the two are not interchangeable.
   f.attr("/contact", "table_interpolation", std::string(nameOf(cm.geometry.interpolation)));
@@ -348,6 +351,7 @@ int bogieOf(const vehicle::VehicleModel& v, int ws, const std::vector<int>& bogi
 // What applies to this vehicle: the groups it cannot give are dropped (with a note).
 assessment::AssessmentSpec applicable(const Model& m, std::vector<std::string>& notes) {
   assessment::AssessmentSpec a = m.spec.run.assessment;
+  a.category = m.spec.vehicle.category;
   const auto& v = *m.vehicle;
   auto drop = [&](bool& flag, bool applies, const char* what) {
     if (flag && !applies) {
@@ -401,7 +405,8 @@ void addFloorPoints(const vehicle::VehicleModel& v, AssessmentSetup& as) {
   }
 }
 
-void addBogiePoints(const vehicle::VehicleModel& v, AssessmentSetup& as) {
+void addBogiePoints(const Model& m, AssessmentSetup& as) {
+  const vehicle::VehicleModel& v = *m.vehicle;
   const auto bogies = bodiesOfKind(v, vehicle::BodyKind::Bogie);
   auto wheelsets = bodiesOfKind(v, vehicle::BodyKind::Wheelset);
   std::sort(wheelsets.begin(), wheelsets.end(),
@@ -414,35 +419,134 @@ void addBogiePoints(const vehicle::VehicleModel& v, AssessmentSetup& as) {
       bp.bogie = v.bodies[b].name;
       bp.wheelset = v.bodies[w].name;
       bp.bogie_mass = v.bodies[b].mass;
+      bp.s_offset = v.bodies[w].x - m.leadingX();
       as.signals.bogies.push_back(std::move(bp));
     }
 }
 
-// The wheels with their static loads Q0 (the wheel loads of the initial state).
-void addWheels(const Model& m, dynamics::ContactVehicleOde& contact, const Eigen::VectorXd& y0,
-               AssessmentSetup& as) {
-  std::vector<dynamics::WheelOutput> wo(2 * m.contact->wheelsets.size());
-  RB_CHECK(contact.wheelOutputs(0.0, y0.data(), wo) == 0,
-           "the wheel outputs of the initial state failed");
+// The wheels with their static loads Q0 and their places behind the leading wheelset.
+void addWheels(const Model& m, AssessmentSetup& as) {
+  const StaticWheelLoads q0 = staticWheelLoads(m);
   std::size_t k = 0;
   for (const int w : m.contact->wheelsets)
     for (const char* side : {"left", "right"}) {
       WheelSignals ws;
       ws.wheelset = m.vehicle->bodies[w].name;
       ws.side = side;
-      ws.q0 = wo[k++].force.Q;
+      ws.q0 = q0.load[k++];
+      ws.s_offset = m.vehicle->bodies[w].x - m.leadingX();
       as.signals.wheels.push_back(std::move(ws));
     }
+  as.signals.q0_source = q0.source;
 }
 
+// A given section's radius and cant where they are constant over it (every segment it overlaps
+// a tangent, or a curve body of one radius and cant), NaN otherwise.
+void constantGeometry(const track::TrackGeometry& g, assessment::TrackSection& t) {
+  double radius = std::numeric_limits<double>::quiet_NaN(), cant = radius;
+  bool first = true, constant = true;
+  for (const auto& seg : g.segments()) {
+    if (seg.s0 + seg.length <= t.from || seg.s0 >= t.to) continue;
+    double r = std::numeric_limits<double>::quiet_NaN(), c = r;
+    if (seg.kind == track::SegmentKind::Tangent) {
+      r = std::numeric_limits<double>::infinity();
+      c = 0.0;
+    } else if (seg.kind == track::SegmentKind::Curve) {
+      r = seg.radius;
+      c = seg.cant;
+    }
+    constant = constant && !std::isnan(r) && (first || (r == radius && c == cant));
+    radius = r;
+    cant = c;
+    first = false;
+  }
+  t.radius = constant && !first ? radius : std::numeric_limits<double>::quiet_NaN();
+  t.cant = constant && !first ? cant : std::numeric_limits<double>::quiet_NaN();
+  t.zone = std::isnan(t.radius) ? assessment::TestZone::None : assessment::testZone(t.radius);
+}
+
+}  // namespace
+
+std::vector<assessment::TrackSection> assessmentSections(const Model& m) {
+  std::vector<assessment::TrackSection> out;
+  const auto& g = m.track->geometry();
+  for (const auto& given : m.spec.run.assessment.sections) {
+    assessment::TrackSection t;
+    t.name = given.name;
+    t.kind = assessment::SectionKind::Given;
+    t.from = given.from;
+    t.to = given.to;
+    constantGeometry(g, t);
+    out.push_back(std::move(t));
+  }
+  if (!out.empty()) return out;
+  const auto& segs = g.segments();
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    const auto& seg = segs[i];
+    assessment::TrackSection t;
+    t.from = seg.s0;
+    t.to = seg.s0 + seg.length;
+    switch (seg.kind) {
+      case track::SegmentKind::Tangent:
+        t.kind = assessment::SectionKind::Tangent;
+        t.radius = std::numeric_limits<double>::infinity();
+        t.cant = 0.0;
+        break;
+      case track::SegmentKind::Transition:
+        t.kind = assessment::SectionKind::Transition;
+        t.radius = t.cant = std::numeric_limits<double>::quiet_NaN();
+        break;
+      case track::SegmentKind::Curve:
+        t.kind = assessment::SectionKind::Curve;
+        t.radius = seg.radius;
+        t.cant = seg.cant;
+        break;
+    }
+    t.zone = t.kind == assessment::SectionKind::Transition ? assessment::TestZone::None
+                                                           : assessment::testZone(t.radius);
+    t.name = std::string(nameOf(t.kind)) + std::to_string(i + 1);
+    out.push_back(std::move(t));
+  }
+  return out;
+}
+
+StaticWheelLoads staticWheelLoads(const Model& m) {
+  RB_CHECK(m.vehicle && m.contact && m.track, "staticWheelLoads needs a contact vehicle");
+  // The same track without its design geometry and irregularities: one level tangent as long as
+  // the run's track, same gauge, rail positions and inclination.
+  track::TrackSpec spec = m.track->spec();
+  track::SegmentSpec tangent;
+  tangent.kind = track::SegmentKind::Tangent;
+  tangent.length = m.track->geometry().length();
+  tangent.loc = spec.loc;
+  spec.segments = {tangent};
+  spec.irregularities = track::IrregularitySpec{};
+  const track::TrackModel perfect = track::compileTrack(spec);
+  dynamics::ContactVehicleOde ode(*m.vehicle, *m.contact, perfect);
+  const Eigen::VectorXd y = ode.initialState(0.0);
+  std::vector<dynamics::WheelOutput> wo(2 * m.contact->wheelsets.size());
+  RB_CHECK(ode.wheelOutputs(0.0, y.data(), wo) == 0,
+           "the wheel outputs of the static equilibrium failed");
+  StaticWheelLoads out;
+  for (const auto& w : wo) out.load.push_back(w.force.Q);
+  out.source =
+      "static wheel loads of the vehicle's equilibrium on perfect level tangent track (the "
+      "run's wheel and rail profiles, gauge and rail inclination; no curvature, cant or "
+      "irregularities), the same for every run of this vehicle";
+  return out;
+}
+
+namespace {
+
 AssessmentSetup setupAssessment(const Model& m, dynamics::ContactVehicleOde* contact,
-                                const Eigen::VectorXd& y0, std::vector<std::string>& notes) {
+                                std::vector<std::string>& notes) {
   AssessmentSetup as;
   as.spec = applicable(m, notes);
   if (!as.spec.any()) return as;
   as.signals.dt = sampleInterval(m, as.spec.sample_every);
-  if ((as.spec.safety || as.spec.wear) && contact != nullptr) addWheels(m, *contact, y0, as);
-  if (as.spec.stability) addBogiePoints(*m.vehicle, as);
+  if ((as.spec.safety || as.spec.wear) && contact != nullptr) addWheels(m, as);
+  if (as.spec.safety) as.signals.sections = assessmentSections(m);
+  if (as.spec.stability) addBogiePoints(m, as);
   if (as.spec.comfort) addFloorPoints(*m.vehicle, as);
   return as;
 }
@@ -572,9 +676,26 @@ assessment::AssessmentSpec applicableAssessment(const Model& m) {
   return applicable(m, notes);
 }
 
+namespace {
+// Given sections must lie on the track.
+void checkSections(const Model& m) {
+  Diagnostics d;
+  const double length = m.track->geometry().length();
+  for (const auto& sec : m.spec.run.assessment.sections)
+    if (sec.to > length)
+      d.add(sec.loc, "run.assessment.sections: section '" + sec.name + "' ends at " + num(sec.to) +
+                         " m, beyond the track's end at " + num(length) + " m");
+  d.throwIfAny();
+}
+}  // namespace
+
 void checkAssessment(const Model& m) {
   const auto& a = m.spec.run.assessment;
-  if (!a.any() || a.all || !m.vehicle) return;
+  if (!a.any() || !m.vehicle) return;
+  if (a.all) {
+    checkSections(m);
+    return;
+  }
   std::vector<std::string> notes;
   const assessment::AssessmentSpec applied = applicable(m, notes);
   std::string msg;
@@ -586,6 +707,7 @@ void checkAssessment(const Model& m) {
   need(a.stability, applied.stability, "stability needs a bogie");
   need(a.comfort, applied.comfort, "comfort needs a car body");
   if (!msg.empty()) throw InputError(a.loc, "run.assessment: " + msg);
+  checkSections(m);
 }
 
 VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunOptions& o) {
@@ -600,7 +722,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   r.system = ode.get();
   r.solver = m.solver;
   r.y0 = ode->initialState(0.0);
-  // The static wheel loads Q0 of the assessment are those of the equilibrium, not of the kick.
+  // The equilibrium the initial conditions offset (recorded in /initial_conditions).
   const Eigen::VectorXd equilibrium = r.y0;
   if (!m.spec.vehicle.initial.empty()) {
     vehicle::applyInitialConditions(*ode, m.spec.vehicle.initial, r.y0);
@@ -662,7 +784,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     f.attr("/stats", "step_limit_mode", m.step_limit.mode);
   }
   // The assessment samples its own signals at its own interval (nothing when not asked).
-  AssessmentSetup as = setupAssessment(m, contact, equilibrium, out.assessment_notes);
+  AssessmentSetup as = setupAssessment(m, contact, out.assessment_notes);
   ExtraSampling extra;
   std::vector<Vector6d> aqdd(nb);
   std::vector<dynamics::WheelOutput> awo(wo.size());

@@ -45,6 +45,22 @@ void checkAssessment(const Model& m);
 // The assessment groups that apply to the vehicle of m (those it cannot give dropped).
 assessment::AssessmentSpec applicableAssessment(const Model& m);
 
+// The static wheel load Q0 of every wheel (per wheelset of m.contact: left, right) [N]: the
+// vehicle's static equilibrium on perfect level tangent track with the run's profiles, gauge and
+// rail inclination (EN 14363's Q0 is the static wheel force, the same for every run of the
+// vehicle, not the load of a run's first state on its curve or irregular track), and a sentence
+// saying so. m must have a vehicle on wheel/rail contact.
+struct StaticWheelLoads {
+  std::vector<double> load;  // [N]
+  std::string source;
+};
+StaticWheelLoads staticWheelLoads(const Model& m);
+
+// The track sections a run's safety assessment evaluates on their own: run.assessment.sections,
+// else one per track segment (tangentN, transitionN, curveN with N the segment's number), with
+// test zone, radius and cant.
+std::vector<assessment::TrackSection> assessmentSections(const Model& m);
+
 // Integrates m (which must have a vehicle) and writes outputs, /stats and warnings into f (not
 // finalized). Throws InputError only for problems compile() could not know.
 VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunOptions& options);

@@ -29,6 +29,75 @@ std::vector<double> floorPositions(Reader& r) {
   return out;
 }
 
+// run.assessment.sections: a list of { name = "...", from = s0, to = s1 } with finite
+// 0 <= from < to [m] and distinct names (names are HDF5 group names: letters, digits, '_', '-').
+std::vector<assessment::SectionSpec> sections(Reader& r) {
+  std::vector<assessment::SectionSpec> out;
+  const Node* v = r.value("sections");
+  if (!v) return out;
+  if (v->type != Node::Type::Table || !v->fields.empty() || v->items.empty()) {
+    r.error(*v,
+            "sections must be a non-empty list { { name = \"...\", from = s0, to = s1 }, "
+            "... } [m], got " +
+                v->describe());
+    return out;
+  }
+  if (v->items.size() > assessment::kMaxSections) {
+    r.error(*v, "sections: at most " + std::to_string(assessment::kMaxSections) +
+                    " sections, got " + std::to_string(v->items.size()));
+    return out;
+  }
+  for (std::size_t i = 0; i < v->items.size(); ++i) {
+    const Node& item = v->items[i];
+    const std::string what = "sections[" + std::to_string(i + 1) + "]";
+    if (item.type != Node::Type::Table || !item.items.empty()) {
+      r.error(item, what + " must be a table { name = \"...\", from = s0, to = s1 }, got " +
+                        item.describe());
+      continue;
+    }
+    assessment::SectionSpec sec;
+    sec.loc = item.loc;
+    bool ok = true;
+    for (const auto& [key, value] : item.fields) {
+      if (key == "name" && value.type == Node::Type::String) {
+        sec.name = value.string;
+      } else if ((key == "from" || key == "to") && value.type == Node::Type::Number &&
+                 std::isfinite(value.number)) {
+        (key == "from" ? sec.from : sec.to) = value.number;
+      } else {
+        r.error(value, what + "." + key +
+                           (key == "name"                  ? " must be a string"
+                            : key == "from" || key == "to" ? " must be a finite number [m]"
+                                                           : " is not a key (name, from, to)") +
+                           ", got " + value.describe());
+        ok = false;
+      }
+    }
+    if (!ok) continue;
+    if (!item.field("name") || !item.field("from") || !item.field("to")) {
+      r.error(item, what + " needs name, from and to");
+      continue;
+    }
+    if (!assessment::validSectionName(sec.name)) {
+      r.error(*item.field("name"),
+              what + ".name '" + sec.name + "' must be 1-64 letters, digits, '_' or '-'");
+      continue;
+    }
+    if (!(sec.from >= 0.0 && sec.from < sec.to)) {
+      r.error(item, what + " needs 0 <= from < to, got from = " + formatNumber(sec.from) +
+                        " m, to = " + formatNumber(sec.to) + " m");
+      continue;
+    }
+    for (const auto& other : out)
+      if (other.name == sec.name) {
+        r.error(item, what + ".name '" + sec.name + "' is given twice");
+        ok = false;
+      }
+    if (ok) out.push_back(std::move(sec));
+  }
+  return out;
+}
+
 void buildAssessment(const Node& n, assessment::AssessmentSpec& a, Diagnostics& d) {
   Reader r(n, block("run.assessment"), "run.assessment", d);
   a.loc = n.loc;
@@ -39,6 +108,10 @@ void buildAssessment(const Node& n, assessment::AssessmentSpec& a, Diagnostics& 
   a.sample_every = r.number("sample_every");
   a.floor_positions = floorPositions(r);
   a.alpha = r.number("alpha");
+  if (r.has("alpha") && a.alpha <= 0)
+    r.error(n, "alpha must be in (0, 1] (omit it to take it from vehicle.category), got " +
+                   formatNumber(a.alpha));
+  a.sections = sections(r);
   a.flange_angle = r.number("flange_angle");
   a.mu = r.number("mu");
   if (r.has("mu") && a.mu <= 0) r.error(n, "mu must be > 0 (omit it to use contact.mu)");

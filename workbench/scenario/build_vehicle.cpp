@@ -193,6 +193,7 @@ void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d) {
   v.acceleration = r.number("acceleration");
   v.wheel_radius = r.number("wheel_radius");
   v.start = r.number("start");
+  v.category = r.choiceOf<assessment::VehicleCategory>("category");
   auto bodies = r.blockList("bodies");
   for (std::size_t i = 0; i < bodies.size(); ++i)
     v.bodies.push_back(buildBody(*bodies[i], "vehicle.bodies[" + std::to_string(i + 1) + "]", d));

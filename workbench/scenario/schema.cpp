@@ -303,6 +303,9 @@ void addVehicleBlocks(std::vector<BlockSpec>& s) {
             "over the run",
             -20, 20),
         num("wheel_radius", "m", 0.46, "nominal rolling radius r0 of the wheelsets", 0.2, 0.7),
+        enumChoice("category", assessment::VehicleCategory::Unstated,
+                   "kind of vehicle (EN 14363): sets alpha of the track shift limit of "
+                   "run.assessment (1.0 passenger and locomotive, 0.85 freight)"),
         num("start", "m", 0, "arc length of the vehicle reference point at t = 0", 0),
         required(blockKey("bodies", ValueType::BlockList, {"body"},
                           "rigid bodies; --set vehicle.bodies.NAME.KEY sets a key of the body "
@@ -501,11 +504,17 @@ void addAssessmentBlock(std::vector<BlockSpec>& s) {
         typed("floor_positions", ValueType::Table, "m",
               "floor points of the car body, x offsets from its centre of mass {x1, x2, ...}; "
               "default: over the two bogie centres and mid-car (front, centre, rear)"),
-        num("alpha", "-", 1.0,
+        num("alpha", "-", -1,
             "track shift factor of Prud'homme's limit alpha (10 kN + 2 Q0 / 3): 1.0 for "
-            "locomotives and passenger vehicles, 0.85 for freight wagons (EN 14363); the default "
-            "1.0 is the standard's base value, set 0.85 for a freight wagon",
-            0, 1, true),
+            "locomotives and passenger vehicles, 0.85 for freight wagons (EN 14363); default "
+            "(-1): from vehicle.category (1.0 assumed, and said in the summary, when the vehicle "
+            "states no category)",
+            -1, 1),
+        typed("sections", ValueType::Table, "-",
+              "track sections assessed on their own (EN 14363 evaluates per section): a list "
+              "{ { name = \"curve\", from = 120, to = 480 }, ... } of arc-length ranges [m]; "
+              "default: one section per track segment (tangent, transition, constant-radius "
+              "curve body), each with its EN 14363 test zone by radius"),
         num("flange_angle", "rad", assessment::kS1002FlangeAngle,
             "flange angle of Nadal's flange-climbing limit (default: S1002, about 70 deg)", 0,
             1.5707963267948966, true),
