@@ -47,7 +47,9 @@ class Assessment:
     summary: Dict[str, object]
     time: Optional[np.ndarray] = None            # /assessment/time [s]
     distance: Optional[np.ndarray] = None        # /assessment/distance [m]
-    safety_s: Optional[np.ndarray] = None        # /assessment/safety/s [m]
+    safety_s: Optional[np.ndarray] = None        # /assessment/safety/s [m] (older files)
+    s_offset: Dict[Tuple[str, str], float] = field(default_factory=dict)      # (ws, side) [m]
+    sections: List["Section"] = field(default_factory=list)                   # in track order
     y_over_q: Dict[Tuple[str, str], Quantity] = field(default_factory=dict)   # (ws, side)
     dq_over_q: Dict[Tuple[str, str], Quantity] = field(default_factory=dict)  # (ws, side)
     sum_y: Dict[str, Quantity] = field(default_factory=dict)                  # ws
@@ -60,6 +62,44 @@ class Assessment:
         have = {"y_over_q": self.y_over_q, "sum_y": self.sum_y, "dq_over_q": self.dq_over_q,
                 "comfort": self.comfort, "stability": self.stability, "wear": self.wear}
         return [k for k in PANELS if have[k]]
+
+
+@dataclass
+class Section:
+    """One track section of /assessment/sections: name, kind, zone, range, radius, and its
+    attributes (per quantity: value, _limit, _ok, _where, _at_s)."""
+    name: str
+    attrs: Dict[str, object]
+
+    def get(self, key: str) -> Optional[float]:
+        return _num(self.attrs.get(key))
+
+    def text(self) -> str:
+        """"curve3 (curve, zone 3, R 500 m, 150–500 m): Y/Q 0.35 · ΣY 15.6 kN · ..."."""
+        a = self.attrs
+        head = [str(a.get("kind", "")), str(a.get("zone", ""))]
+        head = [h for h in head if h and h != "none"]
+        r = self.get("radius")
+        if r is not None and math.isfinite(r):
+            head.append(f"R {r:.0f} m")
+        lo, hi = self.get("from"), self.get("to")
+        if lo is not None and hi is not None:
+            head.append(f"{lo:.0f}–{hi:.0f} m")
+        parts = []
+        for key, label, scale, unit in SECTION_COLUMNS:
+            v = self.get(key)
+            if v is None:
+                continue
+            ok = a.get(key + "_ok")
+            bad = ok is not None and not bool(ok)
+            digits = 2 if scale == 1.0 else 1
+            parts.append(f"{label} {v * scale:.{digits}f}{unit}" + (" EXCEEDED" if bad else ""))
+        return f"{self.name} ({', '.join(head)}): " + (" · ".join(parts) if parts else "not run")
+
+
+SECTION_COLUMNS = (("y_over_q", "Y/Q", 1.0, ""), ("sum_y", "ΣY", 1e-3, ""),
+                   ("dq_over_q", "ΔQ/Q0", 1.0, ""), ("y_qst", "Y_qst", 1e-3, ""),
+                   ("q_qst", "Q_qst", 1e-3, ""), ("q_max", "Q_max", 1e-3, ""))
 
 
 PANELS = ("y_over_q", "sum_y", "dq_over_q", "comfort", "stability", "wear")
@@ -107,6 +147,9 @@ def _read_safety(g, a: Assessment) -> None:
             sg = wg.get(side)
             if sg is None:
                 continue
+            off = _num(_attrs(sg).get("s_offset"))
+            if off is not None:
+                a.s_offset[(ws, side)] = off
             if "y_over_q" in sg:
                 a.y_over_q[(ws, side)] = _quantity(sg["y_over_q"])
             if "dq_over_q" in sg:
@@ -121,6 +164,10 @@ def _read(f) -> Optional[Assessment]:
     a.time, a.distance = _dataset(g, "time"), _dataset(g, "distance")
     if "safety" in g:
         _read_safety(g["safety"], a)
+    if "sections" in g:
+        sg = g["sections"]
+        names = [n for n in str(_attrs(sg).get("names", "")).split("\n") if n in sg]
+        a.sections = [Section(n, _attrs(sg[n])) for n in names]
     for bogie, bg in _group_items(g["stability"]) if "stability" in g else ():
         for pos, pg in _group_items(bg):
             a.stability[(bogie, pos)] = _quantity(pg)
@@ -248,6 +295,9 @@ def _candidates(a: Assessment, key: str) -> Dict[tuple, Quantity]:
 def locate(a: Assessment, key: str, item: SummaryItem) -> Optional[float]:
     """s [m] where a summary quantity occurs: the at_s of its group, the one whose name parts
     all appear in the summary's `where` (else the one whose value is the summary's value)."""
+    at = _num(a.summary.get(key + "_at_s"))
+    if at is not None:
+        return at
     groups = _candidates(a, key)
     words = set(re.split(r"[\s,;/]+", item.where))
     match = [q for name, q in groups.items() if set(name) <= words]
@@ -314,6 +364,14 @@ def _sample_axis(a: Assessment) -> Tuple[Optional[np.ndarray], str]:
     return a.time, "time t [s]"
 
 
+def _own(a: Assessment, x: Optional[np.ndarray], ws: str, side: str) -> Optional[np.ndarray]:
+    """The sample axis as this wheel's own distance (the leading wheelset's plus its s_offset)
+    when the axis is the distance."""
+    if x is None or a.distance is None or x is not a.distance:
+        return x
+    return x + a.s_offset.get((ws, side), 0.0)
+
+
 def _wheel_index(a: Assessment) -> Dict[str, int]:
     names = {k[0] for k in list(a.y_over_q) + list(a.dq_over_q) + list(a.wear)} | set(a.sum_y)
     return {w: i for i, w in enumerate(sorted(names, key=_natural))}
@@ -322,7 +380,8 @@ def _wheel_index(a: Assessment) -> Dict[str, int]:
 def _panel_y_over_q(ax, a: Assessment, idx):
     lo = math.inf
     for (ws, side), q in a.y_over_q.items():
-        lo = min(lo, _plot(ax, a.safety_s, q.series("value"), label=f"{ws} {side}",
+        s = q.series("s") if q.series("s") is not None else a.safety_s
+        lo = min(lo, _plot(ax, s, q.series("value"), label=f"{ws} {side}",
                            **_wheel_style(idx, ws, side)))
     limits = _limits(a.y_over_q.values())
     _limit_lines(ax, limits, 1.0, lo, LIMIT_STYLE, "limit {:.2f}")
@@ -336,7 +395,8 @@ def _panel_y_over_q(ax, a: Assessment, idx):
 def _panel_sum_y(ax, a: Assessment, idx):
     lo = math.inf
     for ws, q in a.sum_y.items():
-        lo = min(lo, _plot(ax, a.safety_s, q.series("value"), 1e-3, label=ws,
+        s = q.series("s") if q.series("s") is not None else a.safety_s
+        lo = min(lo, _plot(ax, s, q.series("value"), 1e-3, label=ws,
                            color=RUN_COLORS[idx[ws] % len(RUN_COLORS)]))
     _limit_lines(ax, _limits(a.sum_y.values()), 1e-3, lo, LIMIT_STYLE, "limit {:.1f} kN")
     ax.set_ylabel("(ΣY)$_{2m}$ [kN]")
@@ -346,7 +406,8 @@ def _panel_sum_y(ax, a: Assessment, idx):
 def _panel_dq_over_q(ax, a: Assessment, idx):
     x, xlabel = _sample_axis(a)
     for (ws, side), q in a.dq_over_q.items():
-        _plot(ax, x, q.series("value"), label=f"{ws} {side}", **_wheel_style(idx, ws, side))
+        _plot(ax, _own(a, x, ws, side), q.series("value"), label=f"{ws} {side}",
+              **_wheel_style(idx, ws, side))
     _limit_lines(ax, _limits(a.dq_over_q.values()), 1.0, math.inf, LIMIT_STYLE, "limit {:.2f}")
     ax.set_ylabel("ΔQ/Q$_0$ [-]")
     return "(c) wheel unloading ΔQ/Q0 per wheel", xlabel
@@ -388,7 +449,8 @@ def _panel_wear(ax, a: Assessment, idx):
     for (ws, side), q in a.wear.items():
         mx = _num(q.attrs.get("max"))
         lab = f"{ws} {side}" + (f" (max {mx:.0f} N)" if mx is not None else "")
-        _plot(ax, x, q.series("t_gamma"), label=lab, **_wheel_style(idx, ws, side))
+        _plot(ax, _own(a, x, ws, side), q.series("t_gamma"), label=lab,
+              **_wheel_style(idx, ws, side))
     ax.set_ylabel("Tγ [N]")
     return "(f) wear number T-gamma per wheel", xlabel
 
@@ -406,7 +468,10 @@ def _summary_lines(a: Assessment) -> List[str]:
         return []
     exceeded = [it.quantity.label for it in items if it.ok is False]
     head = ("EXCEEDED: " + ", ".join(exceeded)) if exceeded else "every assessed limit kept"
-    return [head] + summary_lines(a)
+    sections = [sec.text() for sec in a.sections] if len(a.sections) > 1 else []
+    if sections:
+        sections.insert(0, "per section (worst wheel; forces in kN):")
+    return [head] + summary_lines(a) + sections
 
 
 def _summary_box(ax, lines: List[str]) -> None:

@@ -697,8 +697,8 @@ std::vector<std::string> sectionLines(const AssessmentResult& r) {
                                                                            {"q_max", 1e-3}}};
   out.emplace_back("per section (EN 14363; the worst wheel or wheelset of each):");
   char buf[256];
-  std::snprintf(buf, sizeof buf, "  %-14s %-22s %-15s %6s %7s %6s %7s %7s %7s", "section",
-                "kind, zone", "s [m]", "Y/Q", "SY[kN]", "dQ/Q0", "Yqst", "Qqst", "Qmax");
+  std::snprintf(buf, sizeof buf, "  %-14s %-22s %-15s %7s %6s %7s %6s %7s %7s %7s", "section",
+                "kind, zone", "s [m]", "run [m]", "Y/Q", "SY[kN]", "dQ/Q0", "Yqst", "Qqst", "Qmax");
   out.emplace_back(buf);
   for (const auto& sr : r.sections) {
     const auto& sec = sr.section;
@@ -706,8 +706,8 @@ std::vector<std::string> sectionLines(const AssessmentResult& r) {
     if (sec.zone != assessment::TestZone::None) kind += ", " + std::string(nameOf(sec.zone));
     const std::string range = fmt(sec.from) + "-" + fmt(sec.to);
     std::string line;
-    std::snprintf(buf, sizeof buf, "  %-14s %-22s %-15s", sec.name.c_str(), kind.c_str(),
-                  range.c_str());
+    std::snprintf(buf, sizeof buf, "  %-14s %-22s %-15s %7.1f", sec.name.c_str(), kind.c_str(),
+                  range.c_str(), sr.covered);
     line = buf;
     for (const auto& [key, scale] : kCols) {
       const auto it = std::find_if(sr.summary.begin(), sr.summary.end(),
@@ -723,7 +723,9 @@ std::vector<std::string> sectionLines(const AssessmentResult& r) {
     }
     out.push_back(line);
   }
-  out.emplace_back("  (! = limit exceeded; forces in kN; Y_qst, Q_qst in curve sections only)");
+  out.emplace_back(
+      "  (run: the length of the section the leading wheelset ran; ! = limit exceeded; forces "
+      "in kN; Y_qst, Q_qst in curve and given sections only)");
   return out;
 }
 
