@@ -40,7 +40,7 @@ from typing import Dict, List, Optional
 
 from . import provenance
 from .common import parser
-from .docs_blocks import assessment_cases_block, accuracy_block, bench_block, bench_integrators_block, effects_block, efficiency_block, fmt, missing, num, read_csv, paper_settings_block, refinement_block, replace_block, speed_block, table, work_precision_block
+from .docs_blocks import ROUTE, route_sections_block, assessment_cases_block, accuracy_block, bench_block, bench_integrators_block, effects_block, efficiency_block, fmt, missing, num, read_csv, paper_settings_block, refinement_block, replace_block, speed_block, table, work_precision_block
 from .docs_paper import PAPER_TABLES, flange_paper_block, paper_table_blocks, tables_9_10_block
 from .docs_stability import FOLDERS as STABILITY, stability_blocks
 from .docs_stress import stress_hard_block
@@ -64,7 +64,7 @@ BLOCK_SOURCES = {
     "bench_integrators": "bench_integrators",
     "validation_case1": "validation", "validation_case2": "validation",
     "validation_case3": "validation", "validation_cost": "validation",
-    "coupling_convergence": "build", "assessment_cases": "validation", "tables_summary": "tables",
+    "coupling_convergence": "build", "assessment_cases": "validation", "route_sections": ROUTE, "tables_summary": "tables",
     "stress_hard": "build", "three_asks_precision": PRECISION, "three_asks_stress": STRESS,
     "three_asks_stress_kec": STRESS_KEC, "three_asks_effects": EFFECTS,
     "stability_wagon": ("stability_kec", "stability_lut"), "stability_modes":
@@ -159,7 +159,7 @@ def coupling_block(build: str) -> Optional[str]:
 
 STUDIES = ("efficiency_case3", "flange_stiffness", "refinement", "work_precision", "effects",
            "speed", "paper_settings_flange", "paper_settings", "validation", "tables", PRECISION,
-           STRESS_KEC, STRESS, EFFECTS, SWEEP) + STABILITY
+           STRESS_KEC, STRESS, EFFECTS, SWEEP, ROUTE) + STABILITY
 
 
 def copy_figures(outdir: str, docs: str, pages) -> List[str]:
@@ -216,6 +216,7 @@ def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
     blocks["hard_cases.md"]["hard_cases_detail"] = hard_detail_block(build)
     blocks["integrators.md"]["bench_integrators"] = bench_integrators_block(outdir)
     blocks["assessment.md"]["assessment_cases"] = assessment_cases_block(outdir)
+    blocks["assessment.md"]["route_sections"] = route_sections_block(outdir)
     blocks["contact_geometry.md"] = {"tables_summary": tables_block(outdir)}
     blocks["stress.md"] = {"stress_hard": stress_hard_block(build)}
     blocks["three_asks.md"] = three_asks_blocks(outdir)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import csv
 import json
+import math
 import os
 import re
 from typing import Dict, List, Optional
@@ -611,3 +612,87 @@ def assessment_cases_block(outdir: str) -> str:
 
 
 # ---- hard cases --------------------------------------------------------------------------------
+
+
+# ---- a route, section by section (docs/assessment.md) ------------------------------------------
+
+ROUTE = "route_assessment"          # OUT/route_assessment/route.h5 (./wb studies --only route_assessment)
+ROUTE_FIGURE = "route_assessment_route_assessment.png"  # OUT/route_assessment/route_assessment.png
+
+
+def _cell(sec, key: str, scale: float, digits: int) -> str:
+    v = sec.get(key)
+    if v is None:
+        return "–"
+    ok = sec.attrs.get(key + "_ok")
+    lim = sec.get(key + "_limit")
+    text = f"{v * scale:.{digits}f}"
+    if ok is not None and not bool(ok):
+        text += f" > {lim * scale:.{digits}f} EXCEEDED"
+    where = str(sec.attrs.get(key + "_where", "")).strip()
+    return text + (f" ({where})" if where else "")
+
+
+def route_sections_block(outdir: str) -> str:
+    """docs/assessment.md: the route scenario's /assessment section by section (EN 14363 per track
+    section and test zone), its static wheel loads Q0 and where each wheel unloads most, in its
+    own distance along the track."""
+    from .assessment import read_assessment
+    path = os.path.join(outdir, ROUTE, "route.h5")
+    try:
+        a = read_assessment(path) if os.path.exists(path) else None
+    except OSError:
+        a = None
+    if a is None or not a.sections:
+        return missing(f"out/studies/{ROUTE}/route.h5 (./wb studies --only {ROUTE})")
+    rows = []
+    for sec in a.sections:
+        r = sec.get("radius")
+        lo, hi = sec.get("from"), sec.get("to")
+        rows.append([sec.name, str(sec.attrs.get("kind", "")), str(sec.attrs.get("zone", "")),
+                     "∞" if sec.attrs.get("kind") == "tangent" else ("–" if r is None else f"{r:.0f}"),
+                     "–" if sec.get("cant") is None else f"{sec.get('cant') * 1e3:.0f}",
+                     f"{lo:.0f}–{hi:.0f}", fmt(sec.get("covered"), "{:.0f}"),
+                     _cell(sec, "y_over_q", 1.0, 3), _cell(sec, "sum_y", 1e-3, 1),
+                     _cell(sec, "dq_over_q", 1.0, 3), _cell(sec, "y_qst", 1e-3, 1),
+                     _cell(sec, "q_qst", 1e-3, 1), _cell(sec, "q_max", 1e-3, 1)])
+    out = ("`scenarios/assessment/route.lua` (Manchester wagon 1 at 25 m/s over tangents, "
+           "transitions, a left R = 600 m and a right R = 350 m curve, ORE B176 low): "
+           "/assessment/sections of its run, each quantity the worst wheel (or wheelset, ΣY) of "
+           "its section, with the wheel that gives it. Forces in kN; `run` is the length of the "
+           "section the leading wheelset ran; Y_qst and Q_qst are evaluated in the curve "
+           "sections only. Limits: (Y/Q)_2m 0.8, ΣY alpha (10 kN + 2 Q0/3), ΔQ/Q0 0.6, "
+           "Y_qst 60 kN, Q_qst 145 kN, Q_max 90 kN + Q0.\n\n" +
+           table(["section", "kind", "test zone", "R [m]", "cant [mm]", "s [m]", "run [m]",
+                  "(Y/Q)_2m", "(ΣY)_2m", "ΔQ/Q0", "Y_qst", "Q_qst", "Q_max"], rows))
+    q0 = sorted({round(_num_attr(q.attrs.get("q0")) or 0.0, 1)
+                 for q in a.dq_over_q.values() if q.attrs.get("q0") is not None})
+    src = str(a.attrs.get("q0_source", "")).strip()
+    if q0:
+        out += ("\n\nQ0 of the eight wheels: " + ", ".join(f"{v / 1e3:.3f} kN" for v in q0) +
+                (f" ({src})." if src else "."))
+    wheel_rows = []
+    for (ws, side), q in a.dq_over_q.items():
+        off = a.s_offset.get((ws, side))
+        at = _num_attr(q.attrs.get("at_s"))
+        v = _num_attr(q.attrs.get("value"))
+        wheel_rows.append([f"{ws} {side}", fmt(off, "{:.2f}"), fmt(v, "{:.3f}"),
+                           fmt(at, "{:.1f}")])
+    if wheel_rows:
+        out += ("\n\nThe largest ΔQ/Q0 of each wheel over the run and where it occurs, in that "
+                "wheel's own distance along the track (its offset behind the leading wheelset "
+                "is `s_offset`): the wheels of one bogie meet the same track defects a "
+                "wheelbase apart, so their positions agree where the same defect unloads them."
+                "\n\n" + table(["wheel", "s_offset [m]", "max ΔQ/Q0", "at s [m]"], wheel_rows))
+    fig = os.path.join(outdir, ROUTE, "route_assessment.png")
+    if os.path.exists(fig):
+        out += f"\n\n![Assessment of the route](figures/{ROUTE_FIGURE})"
+    return out
+
+
+def _num_attr(v) -> Optional[float]:
+    try:
+        x = float(v)
+    except (TypeError, ValueError):
+        return None
+    return x if math.isfinite(x) else None

@@ -286,7 +286,9 @@ def test_docs_block_from_synthetic_results():
     os.makedirs(docs)
     with open(os.path.join(docs, "assessment.md"), "w") as f:
         f.write("# hand text\n<!-- generated: assessment_cases (plots/rbplot docs) -->\nOLD\n"
-                "<!-- end: assessment_cases -->\nhand text after\n")
+                "<!-- end: assessment_cases -->\nhand text after\n"
+                "<!-- generated: route_sections (plots/rbplot docs) -->\n"
+                "<!-- end: route_sections -->\n")
     r = in_process(update_docs, out, "--build", os.path.join(TMP, "nobuild"), "--docs", docs)
     text = open(os.path.join(docs, "assessment.md")).read()
     check(r.returncode == 0 and "OLD" not in text and "hand text after" in text and
@@ -309,3 +311,71 @@ def test_docs_block_missing():
     block = assessment_cases_block(os.path.join(TMP, "noassess"))
     check(block.startswith(NOT_GENERATED) and "/assessment" in block,
           f"result files without /assessment: Not generated ({block})")
+
+
+# ---- sections, own positions (docs/assessment.md "Track sections and test zones") -------------
+
+def _sections(path, offset=-10.0):
+    """Adds two sections (tangent 0-100 m, curve 100-200 m of R = 500 m), the per-quantity
+    window positions and a trailing wheelset ws2 `offset` metres behind ws1."""
+    with h5py.File(path, "a") as f:
+        g = f.require_group("/assessment/sections")
+        g.attrs["names"] = "tangent1\ncurve2"
+        for k, (name, kind, zone, lo, hi, yq) in enumerate(
+                (("tangent1", "tangent", "zone 1", 0.0, 100.0, 0.1),
+                 ("curve2", "curve", "zone 3", 100.0, 200.0, 0.95))):
+            s = g.create_group(name)
+            s.attrs.update(dict(order=k, kind=kind, zone=zone, to=hi, covered=hi - lo))
+            s.attrs["from"] = lo
+            if kind == "curve":
+                s.attrs.update(dict(radius=500.0, cant=0.0, y_qst=20e3, y_qst_limit=60e3,
+                                    y_qst_ok=1, y_qst_where="ws1 left"))
+            s.attrs.update(dict(y_over_q=yq, y_over_q_limit=0.8, y_over_q_ok=int(yq <= 0.8),
+                                y_over_q_where="ws1 left", sum_y=12e3, sum_y_limit=43.3e3,
+                                sum_y_ok=1, sum_y_where="ws2"))
+        a = f["/assessment"]
+        a.attrs["q0_source"] = "static wheel loads on perfect level tangent track"
+        for side in ("left", "right"):
+            w = f[f"/assessment/safety/ws2/{side}"]
+            w.attrs["s_offset"] = offset
+            w["y_over_q/s"] = f["/assessment/safety/s"][()] + offset
+            w["dq_over_q"].attrs["at_s"] = 150.0
+
+
+def test_sections_in_the_summary_and_own_positions():
+    path = write_result("sections")
+    _sections(path)
+    a = read_assessment(path)
+    check([s.name for s in a.sections] == ["tangent1", "curve2"], "sections in track order")
+    check(a.s_offset[("ws2", "left")] == -10.0, "s_offset per wheel")
+    text = a.sections[1].text()
+    check(text.startswith("curve2 (curve, zone 3, R 500 m, 100–200 m): Y/Q 0.95 EXCEEDED")
+          and "Y_qst 20.0" in text, f"a section's line: {text!r}")
+    r, spec = _figure(path)
+    fig = build_figure(r, spec)
+    texts = " ".join(t.get_text() for ax in fig.axes for t in ax.texts)
+    check("per section (worst wheel; forces in kN):" in texts and "tangent1 (tangent, zone 1"
+          in texts, f"the sections under the summary: {texts!r}")
+    yq = next(ax for ax in fig.axes if ax.get_gid() == "y_over_q")
+    starts = sorted({float(ln.get_xdata()[0]) for ln in yq.get_lines() if ln.get_gid() == "data"})
+    check(starts[0] == S[0] + 2.0 - 10.0, f"ws2's windows in its own distance: {starts}")
+    dq = next(ax for ax in fig.axes if ax.get_gid() == "dq_over_q")
+    starts = sorted({float(ln.get_xdata()[0]) for ln in dq.get_lines() if ln.get_gid() == "data"})
+    check(starts == [S[0] - 10.0, S[0]], f"ΔQ/Q0 of ws2 against its own distance: {starts}")
+    plt.close(fig)
+
+
+def test_route_sections_block():
+    from railbench.docs_blocks import ROUTE, route_sections_block
+    out = os.path.join(TMP, "route_studies")
+    check(route_sections_block(out).startswith(NOT_GENERATED), "no run: not generated")
+    d = os.path.join(out, ROUTE)
+    os.makedirs(d, exist_ok=True)
+    path = write_result("route", folder=d)
+    _sections(path)
+    block = route_sections_block(out)
+    rows = [ln for ln in block.splitlines() if ln.startswith("| curve2 ")]
+    check(len(rows) == 1 and "zone 3" in rows[0] and "0.950 > 0.800 EXCEEDED (ws1 left)" in rows[0]
+          and "20.0 (ws1 left)" in rows[0], f"the curve's row: {rows}")
+    check("| ws2 left | -10.00 |" in block and "| 150.0 |" in block,
+          f"each wheel at its own distance: {block}")
