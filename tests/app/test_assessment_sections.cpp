@@ -193,6 +193,8 @@ TEST(StaticWheelLoads, TheRunAssessesAgainstThem) {
     }
   EXPECT_GT(spread, 0.01);  // the start state on the irregular track is not the statics
   EXPECT_NE(h5test::stringAttr(f, "/assessment", "q0_source").find("tangent"), std::string::npos);
+  // The contact figures draw Nadal's limit of the same flange angle as the assessment.
+  EXPECT_NEAR(h5test::numAttr<double>(f, "/contact", "flange_angle"), 1.2217, 1e-9);
   // The trailing wheelset's position is its own: 21.56 m behind the leading one.
   EXPECT_NEAR(h5test::numAttr<double>(f, "/assessment/safety/ws4/left", "s_offset"), -21.56, 1e-9);
   H5Fclose(f);

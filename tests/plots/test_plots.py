@@ -358,8 +358,10 @@ def test_e_y_over_q_drawn_for_every_wheel():
                 for y, side in zip(lines, ("left", "right")):
                     ref = f[f"contact/{w}/{side}/y_over_q"][()]
                     check(np.allclose(y, ref), f"{name} {w} {side}: Y/Q differs")
-        # The engine writes no mu / flange angle: the limit is not drawn, and the legend says so.
-        check("Nadal limit not drawn" in d.text, f"{name}: legend does not explain the Nadal line")
+        # The engine writes mu and the flange angle of the assessment (S1002's by default): the
+        # contact figure draws the same Nadal limit as the assessment figure.
+        check("Nadal limit" in d.text and "not drawn" not in d.text,
+              f"{name}: no Nadal limit in the legend: {d.text!r}")
 
 
 def test_e_nadal_limit_when_the_file_gives_mu_and_flange_angle():
