@@ -68,7 +68,7 @@ TEST(AssessmentKeys, DefaultsAndTrue) {
   const auto a = rb::scenario::loadScenario(none, opts()).run.assessment;
   EXPECT_FALSE(a.any());
   EXPECT_EQ(a.sample_every, 2.5e-3);
-  EXPECT_EQ(a.alpha, 1.0);
+  EXPECT_LT(a.alpha, 0.0);  // from vehicle.category (1.0 when the vehicle states none)
   EXPECT_EQ(a.yq_limit, 0.8);
   EXPECT_EQ(a.comfort_limit, 2.0);
   EXPECT_LT(a.mu, 0.0);  // contact.mu
