@@ -174,3 +174,27 @@ TEST(MetricDeclarations, ShippedStudiesRunInTheMetricSandbox) {
     EXPECT_NO_THROW(rb::scenario::LuaMetrics(e.path().string(), RB_SOURCE_DIR)) << e.path();
   }
 }
+
+// A function that catches its own budget error and tries again (pcall in a loop), or whose xpcall
+// message handler loops, still ends with the budget error: once a budget is exceeded the hook
+// raises on every instruction and handlers are skipped.
+TEST(MetricDeclarations, RetriesInsidePcallCannotEscapeTheBudget) {
+  StudyFile f(
+      R"(    { name = "retry", signals = { y = "/y" }, fn = function(s)
+        while true do pcall(function() while true do end end) end
+      end },
+    { name = "handler", signals = { y = "/y" }, fn = function(s)
+        return xpcall(function() while true do end end, function() while true do end end)
+      end },)");
+  rb::scenario::LuaMetrics lua(f.path(), RB_SOURCE_DIR);
+  const std::vector<std::pair<std::string, std::vector<double>>> sig = {{"y", {1.0, 2.0}}};
+  double v = 0;
+  std::string why;
+  EXPECT_FALSE(lua.call(1, sig, v, why));
+  EXPECT_NE(why.find("exceeded its budget"), std::string::npos) << why;
+  EXPECT_NE(why.find("line 7"), std::string::npos) << why;  // where the function was stopped
+  rb::scenario::LuaMetrics fresh(f.path(), RB_SOURCE_DIR);
+  why.clear();
+  EXPECT_FALSE(fresh.call(2, sig, v, why));
+  EXPECT_NE(why.find("exceeded its budget"), std::string::npos) << why;
+}

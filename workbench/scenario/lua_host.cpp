@@ -111,11 +111,12 @@ struct LuaHost::Impl {
   long long instructionLimit = 0;
   double timeLimit = kDefaultTimeLimit;
   std::chrono::steady_clock::time_point deadline;
-  bool dead = false;      // a budget was exceeded: every further Lua instruction raises
-  std::string deathMsg;   // "file:line: ..." of the first budget error
-  SourceLoc memoryLoc;    // last place seen by the hook while memory was high
-  std::string chunkFile;  // the scenario file as shown
-  std::vector<std::string> moduleRoots;                      // canonical: scenario dir, scenarios/
+  // A budget was exceeded: every further Lua instruction raises death.message ("file:line: ..."
+  // of the first budget error); xpcall's message handlers are skipped (lua_sandbox.hpp).
+  SandboxDeath death;
+  SourceLoc memoryLoc;                   // last place seen by the hook while memory was high
+  std::string chunkFile;                 // the scenario file as shown
+  std::vector<std::string> moduleRoots;  // canonical: scenario dir, scenarios/
   std::vector<std::pair<std::string, std::string>> modules;  // required files: path, text
   std::vector<std::string> loading;                          // require calls in progress
 
@@ -170,22 +171,22 @@ struct LuaHost::Impl {
 
   // Marks the state dead with `msg` at the current Lua line and pushes the message.
   void die(lua_State* state, const std::string& msg) {
-    if (!dead) {
-      dead = true;
+    if (!death.dead) {
+      death.dead = true;
       SourceLoc loc = luaLoc(state, 0);
       if (loc.line == 0) loc.file = chunkFile;
-      deathMsg = loc.str() + ": " + msg;
+      death.message = loc.str() + ": " + msg;
       // From now on the hook fires on every instruction, so the error is raised again as soon as
       // a pcall that caught it returns.
       lua_sethook(state, &Impl::countHook, LUA_MASKCOUNT, 1);
     }
-    lua_pushlstring(state, deathMsg.data(), deathMsg.size());
+    lua_pushlstring(state, death.message.data(), death.message.size());
   }
 
   // Checks the budgets that do not count instructions; false with the error pushed if exceeded.
   bool checkBudgets(lua_State* state) {
-    if (dead) {
-      lua_pushlstring(state, deathMsg.data(), deathMsg.size());
+    if (death.dead) {
+      lua_pushlstring(state, death.message.data(), death.message.size());
       return false;
     }
     if (memoryRefused || memory > memoryLimit + (hostPhase ? kHostReserve : 0)) {
@@ -204,7 +205,7 @@ struct LuaHost::Impl {
 
   static bool countHookBody(lua_State* L) {
     Impl* self = from(L);
-    if (self->dead) return self->checkBudgets(L);
+    if (self->death.dead) return self->checkBudgets(L);
     self->instructions += kHookEvery;
     if (self->memory > self->memoryLimit / 2) self->memoryLoc = luaLoc(L, 0);
     if (self->instructions > self->instructionLimit) {
@@ -222,8 +223,8 @@ struct LuaHost::Impl {
   // Lua line that raised it) and a string message, whatever value was raised.
   static void messageBody(lua_State* L) {
     Impl* self = from(L);
-    if (self->dead) {
-      lua_pushlstring(L, self->deathMsg.data(), self->deathMsg.size());
+    if (self->death.dead) {
+      lua_pushlstring(L, self->death.message.data(), self->death.message.size());
       return;
     }
     std::string msg;
@@ -462,36 +463,6 @@ struct LuaHost::Impl {
   }
   static void unknownHelper(lua_State* L, const char* msg) { push(L, callerLoc(L), msg); }
 
-  // xpcall with the message handler guarded: Lua calls the handler of an error raised by a hook
-  // with hooks still off, so a handler that loops could not be stopped. Once the state is dead
-  // (the only time the hook raises) the handler is skipped and the budget error kept.
-  // Upvalue 1: the library's xpcall.
-  static int xpcallGuarded(lua_State* L) {
-    if (lua_type(L, 2) == LUA_TFUNCTION) {
-      lua_pushvalue(L, 2);
-      lua_pushcclosure(L, &Impl::handlerGuard, 1);
-      lua_replace(L, 2);
-    }
-    const int n = lua_gettop(L);
-    lua_pushvalue(L, lua_upvalueindex(1));
-    lua_insert(L, 1);
-    lua_call(L, n, LUA_MULTRET);
-    return lua_gettop(L);
-  }
-  // Upvalue 1: the script's message handler.
-  static int handlerGuard(lua_State* L) {
-    Impl* self = from(L);
-    if (self->dead) {
-      lua_pushlstring(L, self->deathMsg.data(), self->deathMsg.size());
-      return 1;
-    }
-    const int n = lua_gettop(L);
-    lua_pushvalue(L, lua_upvalueindex(1));
-    lua_insert(L, 1);
-    lua_call(L, n, 1);
-    return 1;
-  }
-
   // string.find/match/gmatch/gsub: refuses calls whose worst-case work is beyond the limit, then
   // runs the library function (upvalue 1). Upvalue 2: function name; upvalue 3: true if a leading
   // '^' anchors the pattern; upvalue 4: true for find (argument 4 asks for a plain search).
@@ -557,7 +528,7 @@ struct LuaHost::Impl {
 
   // The error of a failed protected call, as an InputError.
   InputError errorOf(int status) {
-    if (dead) return InputError({parseLuaMessage(deathMsg, chunkFile)});
+    if (death.dead) return InputError({parseLuaMessage(death.message, chunkFile)});
     if (status == LUA_ERRMEM || memoryRefused) {
       SourceLoc loc = memoryLoc.line > 0 ? memoryLoc : SourceLoc{chunkFile, 0};
       return InputError(loc, memoryMessage());
@@ -614,9 +585,7 @@ LuaHost::LuaHost(HostOptions options) : impl_(new Impl), options_(std::move(opti
   lua_getglobal(L, "setmetatable");
   lua_pushcclosure(L, &Impl::setmetatableGuarded, 1);
   lua_setglobal(L, "setmetatable");
-  lua_getglobal(L, "xpcall");
-  lua_pushcclosure(L, &Impl::xpcallGuarded, 1);
-  lua_setglobal(L, "xpcall");
+  guardMessageHandlers(L, &impl_->death);
   // The string table is also the __index of every string, so s:find(...) takes these too.
   lua_getglobal(L, "string");
   struct PatternFn {
@@ -758,7 +727,7 @@ struct Converter {
             lua_pop(state, 2);
             throw e;
           }
-          if (host->dead) {  // the function caught a budget error and returned
+          if (host->death.dead) {  // the function caught a budget error and returned
             lua_pop(state, 2);
             throw host->errorOf(LUA_ERRRUN);
           }
@@ -875,7 +844,7 @@ Node LuaHost::runFile(const std::string& path) {
   if (status == LUA_OK) status = lua_pcall(L, 0, 0, -2);
   // From here on the host converts the result: give it the reserve beyond the script's budget.
   impl_->hostPhase = true;
-  if (status != LUA_OK || impl_->dead || impl_->memoryRefused) {
+  if (status != LUA_OK || impl_->death.dead || impl_->memoryRefused) {
     InputError e = impl_->errorOf(status);
     lua_settop(L, 0);
     throw e;

@@ -5,7 +5,59 @@
 #include <cctype>
 #include <cmath>
 
+extern "C" {
+#include <lua.h>
+}
+
 namespace rb::scenario {
+namespace {
+
+constexpr const char* kDeathKey = "rb.sandbox.death";
+
+const SandboxDeath* deathOf(lua_State* L) {
+  lua_getfield(L, LUA_REGISTRYINDEX, kDeathKey);
+  const auto* d = static_cast<const SandboxDeath*>(lua_touserdata(L, -1));
+  lua_pop(L, 1);
+  return d;
+}
+
+// Upvalue 1: the script's message handler.
+int handlerGuard(lua_State* L) {
+  const SandboxDeath* d = deathOf(L);
+  if (d != nullptr && d->dead) {
+    lua_pushlstring(L, d->message.data(), d->message.size());
+    return 1;
+  }
+  const int n = lua_gettop(L);
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, n, 1);
+  return 1;
+}
+
+// Upvalue 1: the library's xpcall.
+int xpcallGuarded(lua_State* L) {
+  if (lua_type(L, 2) == LUA_TFUNCTION) {
+    lua_pushvalue(L, 2);
+    lua_pushcclosure(L, &handlerGuard, 1);
+    lua_replace(L, 2);
+  }
+  const int n = lua_gettop(L);
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, n, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
+}  // namespace
+
+void guardMessageHandlers(lua_State* L, const SandboxDeath* death) {
+  lua_pushlightuserdata(L, const_cast<SandboxDeath*>(death));
+  lua_setfield(L, LUA_REGISTRYINDEX, kDeathKey);
+  lua_getglobal(L, "xpcall");
+  lua_pushcclosure(L, &xpcallGuarded, 1);
+  lua_setglobal(L, "xpcall");
+}
 
 double patternWork(std::string_view pat, std::size_t subjectLen, bool anchorable) {
   const double n1 = static_cast<double>(subjectLen) + 1.0;

@@ -7,7 +7,22 @@
 #include <string>
 #include <string_view>
 
+struct lua_State;
+
 namespace rb::scenario {
+
+// A sandbox whose budget was exceeded is dead: its hook raises `message` on every further Lua
+// instruction, so a pcall that catches the budget error cannot go on (the error is raised again
+// as soon as the pcall returns).
+struct SandboxDeath {
+  bool dead = false;
+  std::string message;
+};
+
+// Replaces xpcall by one whose message handler is skipped once `death` is dead: Lua calls the
+// handler of an error raised by a hook with hooks off, so a handler that loops could not be
+// stopped; the budget error is kept instead. `death` must outlive the state.
+void guardMessageHandlers(lua_State* L, const SandboxDeath* death);
 
 // Worst-case work of one call of a Lua pattern function on a subject of `subjectLen` bytes.
 double patternWork(std::string_view pat, std::size_t subjectLen, bool anchorable);

@@ -50,7 +50,7 @@ struct LuaMetrics::Impl {
   std::size_t memory = 0;
   long long instructions = 0;
   std::chrono::steady_clock::time_point deadline;
-  bool dead = false;  // a budget was exceeded: every further instruction raises
+  SandboxDeath death;  // a budget was exceeded: every further instruction raises
   std::vector<fs::path> moduleRoots;
 
   static Impl* from(lua_State* L) { return *static_cast<Impl**>(lua_getextraspace(L)); }
@@ -72,13 +72,24 @@ struct LuaMetrics::Impl {
   static void hook(lua_State* L, lua_Debug*) {
     Impl* self = from(L);
     self->instructions += kHookEvery;
-    if (self->dead || self->instructions > kMetricInstructionLimit ||
+    if (self->death.dead || self->instructions > kMetricInstructionLimit ||
         std::chrono::steady_clock::now() > self->deadline) {
-      self->dead = true;
-      luaL_error(L,
-                 "metric function exceeded its budget of %I Lua instructions or %f s "
-                 "(endless loop?)",
-                 static_cast<lua_Integer>(kMetricInstructionLimit), kMetricTimeLimit);
+      if (!self->death.dead) {
+        self->death.dead = true;
+        lua_Debug ar;
+        int line = 0;
+        if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "l", &ar)) line = ar.currentline;
+        self->death.message = (line > 0 ? "line " + std::to_string(line) + ": " : std::string()) +
+                              "metric function exceeded its budget of " +
+                              std::to_string(kMetricInstructionLimit) + " Lua instructions or " +
+                              std::to_string(static_cast<int>(kMetricTimeLimit)) +
+                              " s (endless loop?)";
+        // From now on the hook fires on every instruction: a pcall that caught the error gets
+        // it again as soon as it returns, so no retry loop can outlast the budget.
+        lua_sethook(L, &hook, LUA_MASKCOUNT, 1);
+      }
+      lua_pushlstring(L, self->death.message.data(), self->death.message.size());
+      lua_error(L);
     }
   }
 
@@ -251,6 +262,7 @@ struct LuaMetrics::Impl {
         lua_pushcclosure(L, &construct, 1);
         lua_setglobal(L, k.c_str());
       }
+    guardMessageHandlers(L, &death);
     lua_sethook(L, &hook, LUA_MASKCOUNT, kHookEvery);
   }
 
@@ -296,7 +308,7 @@ bool LuaMetrics::call(int index,
                       double& out, std::string& why) {
   Impl& im = *impl_;
   lua_State* L = im.L;
-  if (im.dead) {
+  if (im.death.dead) {
     why = "the metric functions' Lua state exceeded a budget in an earlier call";
     return false;
   }
@@ -318,6 +330,11 @@ bool LuaMetrics::call(int index,
   im.arm();
   if (lua_pcall(L, 2, 1, 0) != LUA_OK) {
     why = "the function raised: " + im.popError();
+    lua_settop(L, 0);
+    return false;
+  }
+  if (im.death.dead) {  // the function caught its budget error and returned: still a failure
+    why = "the function raised: " + im.death.message;
     lua_settop(L, 0);
     return false;
   }
