@@ -4,7 +4,9 @@
 #    no crash), an earlier result under that name is left byte for byte, no temporary is left;
 #  - two runs to one --out at once: both complete, the result is a whole file of one of them;
 #  - SIGKILL during a run: the earlier result is untouched;
-#  - --out naming a FIFO or a non-HDF5 file: refused (exit 1), nothing blocks or is replaced.
+#  - --out naming a FIFO or a non-HDF5 file: refused (exit 1), nothing blocks or is replaced;
+#  - assess on a full disk: exit 1, the file unchanged; a killed run's temporary removed by the
+#    next run; an unusable --track-store refused with exit 1.
 # usage: fault_test.sh WORKBENCH_BINARY   (run from the repository root)
 set -u
 WB="$1"
@@ -36,8 +38,11 @@ SHORT=(scenarios/validation/case1_R500_kec.lua --set run.duration=0.5 --quiet)
 # 1. Disk full.
 if [ "$(id -u)" -eq 0 ] && mkdir -p "$TMP/mnt" && mount -t tmpfs -o size=4m tmpfs "$TMP/mnt" 2>/dev/null; then
   MNT="$TMP/mnt"
-  if "$WB" run "$TRACK" --out "$MNT/r.h5" --quiet </dev/null >"$TMP/log" 2>&1; then
+  if "$WB" run "$TRACK" --out "$MNT/r.h5" --quiet </dev/null >"$TMP/log" 2>&1 &&
+     "$WB" run "${SHORT[@]}" --set run.assessment.safety=true --out "$MNT/a.h5" </dev/null \
+       >>"$TMP/log" 2>&1; then
     sum_before=$(md5sum <"$MNT/r.h5")
+    sum_a=$(md5sum <"$MNT/a.h5")
     # Fill the disk, leaving too little for a second result.
     dd if=/dev/zero of="$MNT/fill" bs=64k 2>/dev/null
     rm -f "$MNT/fill"; dd if=/dev/zero of="$MNT/fill" bs=1k count=$(( $(df --output=avail -k "$MNT" | tail -1) - 200 )) 2>/dev/null
@@ -46,6 +51,11 @@ if [ "$(id -u)" -eq 0 ] && mkdir -p "$TMP/mnt" && mount -t tmpfs -o size=4m tmpf
     grep -q "cannot write the result" "$TMP/e" && ok "disk full: message" || bad "disk full: message: $(cat "$TMP/e")"
     [ "$(md5sum <"$MNT/r.h5")" = "$sum_before" ] && ok "disk full: earlier result unchanged" || bad "disk full: earlier result changed"
     ls "$MNT" | grep -q "\.tmp\." && bad "disk full: temporary left: $(ls "$MNT")" || ok "disk full: no temporary left"
+    # assess on a full disk: nothing was run, the file is as it was: exit 1 (not 2) with a message.
+    "$WB" assess "$MNT/a.h5" </dev/null >"$TMP/o" 2>"$TMP/e"; rc=$?
+    [ $rc -eq 1 ] && grep -q "the file is unchanged" "$TMP/e" && ok "assess on a full disk: exit 1" || bad "assess on a full disk: exit $rc: $(cat "$TMP/e")"
+    [ "$(md5sum <"$MNT/a.h5")" = "$sum_a" ] && ok "assess on a full disk: file unchanged" || bad "assess on a full disk: file changed"
+    ls "$MNT" | grep -q "\.tmp\." && bad "assess on a full disk: temporary left: $(ls "$MNT")" || ok "assess on a full disk: no temporary left"
   else
     bad "disk full: first run failed: $(cat "$TMP/log")"
   fi
@@ -76,6 +86,10 @@ if kill -0 $k 2>/dev/null; then
 else
   wait $k; bad "SIGKILL: the run ended before the kill (make it longer)"
 fi
+# The killed run's temporary is removed by the next writer of that result (its process is gone).
+ls "$TMP" | grep -q "kill.h5.tmp." && ok "SIGKILL: the killed run left its temporary" || skip "SIGKILL: no temporary left to clean"
+"$WB" run "${SHORT[@]}" --out "$out" </dev/null >/dev/null 2>&1
+ls "$TMP" | grep -q "kill.h5.tmp." && bad "SIGKILL: stale temporary not removed: $(ls "$TMP")" || ok "SIGKILL: stale temporary removed by the next run"
 
 # 4. --out that is a FIFO or not an HDF5 file.
 mkfifo "$TMP/fifo.h5"
@@ -84,6 +98,12 @@ timeout 20 "$WB" run "$TRACK" --out "$TMP/fifo.h5" --quiet </dev/null >"$TMP/o" 
 echo "my notes" >"$TMP/notes.txt"
 "$WB" run "$TRACK" --out "$TMP/notes.txt" --quiet </dev/null >"$TMP/o" 2>"$TMP/e"; rc=$?
 [ $rc -eq 1 ] && [ "$(cat "$TMP/notes.txt")" = "my notes" ] && ok "--out text file refused" || bad "--out text file: exit $rc"
+
+# 5. --track-store that cannot be used (a file, a FIFO): refused before anything runs, exit 1.
+for store in "$TMP/notes.txt" "$TMP/fifo.h5"; do
+  timeout 20 "$WB" run "${SHORT[@]}" --track-store "$store" --out "$TMP/ts.h5" </dev/null >"$TMP/o" 2>"$TMP/e"; rc=$?
+  [ $rc -eq 1 ] && grep -q -- "--track-store" "$TMP/e" && [ ! -e "$TMP/ts.h5" ] && ok "--track-store $(basename "$store") refused" || bad "--track-store $(basename "$store"): exit $rc: $(cat "$TMP/e")"
+done
 
 echo "$pass passed, $fail failed, $skipped skipped"
 [ $fail -eq 0 ]

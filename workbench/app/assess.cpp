@@ -144,10 +144,18 @@ int assessFile(const AssessOptions& o) {
     throw InputError(std::move(errors));
   }
   const run::AssessmentResult r = run::assess(signals, spec, contact_mu);
-  io::ResultFile f(o.file, io::ResultFile::UpdateExisting{});
-  f.remove("/assessment");
-  run::writeAssessment(f, signals, r);
-  f.finalize();
+  try {
+    io::ResultFile f(o.file, io::ResultFile::UpdateExisting{});
+    f.remove("/assessment");
+    run::writeAssessment(f, signals, r);
+    f.finalize();
+  } catch (const io::WriteError& e) {
+    // Nothing was run and the file is as it was (the copy is deleted): an environment problem
+    // (read-only folder, disk full) before anything changed, exit 1 as for bad input.
+    throw InputError(SourceLoc{o.file, 0},
+                     std::string("assess: cannot write the new /assessment: ") + e.what() +
+                         "; the file is unchanged");
+  }
   if (!o.quiet)
     for (const auto& line : run::summaryLines(r)) std::cout << line << "\n";
   for (const auto& w : run::exceededWarnings(r)) std::cout << "warning: " << w << "\n";

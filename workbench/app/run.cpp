@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -94,6 +96,26 @@ unsigned stagePeriod(const RunOptions& o) {
   return static_cast<unsigned>(n);
 }
 
+// --track-store must be a folder this process can write (created when missing): a file, a FIFO,
+// a read-only place is refused before anything runs (exit 1, nothing written).
+void checkTrackStore(const std::string& dir) {
+  if (dir.empty()) return;
+  const SourceLoc cli{"<command line>", 0};
+  std::error_code ec;
+  const fs::file_status st = fs::status(dir, ec);
+  if (fs::exists(st) && !fs::is_directory(st))
+    throw InputError(cli, "--track-store: '" + dir + "' exists and is not a folder");
+  if (!fs::exists(st)) {
+    fs::create_directories(dir, ec);
+    if (ec)
+      throw InputError(cli,
+                       "--track-store: cannot create the folder '" + dir + "': " + ec.message());
+  }
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw InputError(
+        cli, "--track-store: the folder '" + dir + "' is not writable: " + std::strerror(errno));
+}
+
 }  // namespace
 
 void checkScenario(const RunOptions& options) {
@@ -111,11 +133,13 @@ int runScenario(const RunOptions& options) {
   const unsigned period = stagePeriod(options);
   const std::string out = defaultOut(options);
   checkOutputPath(out, c);
+  checkTrackStore(options.track_store);
   if (fs::path(out).has_parent_path()) {
     std::error_code ec;
     fs::create_directories(fs::path(out).parent_path(), ec);
     if (ec)
-      throw io::WriteError("cannot create the folder of the result '" + out + "': " + ec.message());
+      throw InputError(SourceLoc{"<command line>", 0},
+                       "--out: cannot create the folder of '" + out + "': " + ec.message());
   }
 
   io::ResultFile f(

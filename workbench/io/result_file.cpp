@@ -4,11 +4,13 @@
 
 #include <fcntl.h>
 #include <hdf5.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <system_error>
@@ -41,10 +43,51 @@ class Handle {
   Closer close_;
 };
 
+// The name of this machine: temporaries carry it, so only the machine that made one judges
+// whether its process is gone (a study folder may be shared by the nodes of a cluster).
+std::string hostName() {
+  char buf[256] = {};
+  if (::gethostname(buf, sizeof buf - 1) != 0 || buf[0] == '\0') return "host";
+  std::string h(buf);
+  for (char& c : h)
+    if (c == '.' || c == '/') c = '_';
+  return h;
+}
+
+// Removes the temporaries of `path` ("<path>.tmp.<host>.<pid>.<n>") whose process on this
+// machine no longer exists: a process killed while writing (SIGKILL cannot be caught) leaves its
+// temporary behind. A temporary of another machine is left to that machine. The scan reads at
+// most kMaxScanned entries of the folder, so a huge folder costs a bounded time.
+void removeStaleTemporaries(const std::string& path, const std::string& host) {
+  namespace fs = std::filesystem;
+  constexpr int kMaxScanned = 100000;
+  std::error_code ec;
+  const fs::path p(path);
+  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  const std::string prefix = p.filename().string() + ".tmp." + host + ".";
+  int scanned = 0;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end && scanned < kMaxScanned;
+       it.increment(ec), ++scanned) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const std::string rest = name.substr(prefix.size());  // "<pid>.<n>"
+    const std::size_t dot = rest.find('.');
+    if (dot == 0 || dot == std::string::npos) continue;
+    char* stop = nullptr;
+    const long pid = std::strtol(rest.c_str(), &stop, 10);
+    if (stop != rest.c_str() + dot || pid <= 0 || pid == ::getpid()) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // alive (or unknown)
+    std::error_code rm;
+    if (it->is_regular_file(rm)) fs::remove(it->path(), rm);
+  }
+}
+
 // A unique temporary name beside `path`, created exclusively so that no other run (or a second
 // run of the same scenario) can write to it. The HDF5 file is then created over the empty file.
 std::string claimTemporary(const std::string& path) {
-  const std::string base = path + ".tmp." + std::to_string(::getpid()) + ".";
+  static const std::string host = hostName();
+  removeStaleTemporaries(path, host);
+  const std::string base = path + ".tmp." + host + "." + std::to_string(::getpid()) + ".";
   for (int n = 0; n < 1000; ++n) {
     std::string name = base + std::to_string(n);
     const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);

@@ -2,8 +2,9 @@
 // The HDF5 result file (architecture.md, "Output layout"). This folder is the only code that
 // includes HDF5 headers; the rest of the engine sees this small interface.
 //
-// Life cycle: a file is written under a temporary name of its own, "<path>.tmp.<pid>.<n>", created
-// exclusively (two runs writing the same <path> never share a temporary). finalize() flushes,
+// Life cycle: a file is written under a temporary name of its own, "<path>.tmp.<host>.<pid>.<n>",
+// created exclusively (two runs writing the same <path> never share a temporary); the temporaries
+// of <path> left by processes of this host that no longer exist (killed) are removed then. finalize() flushes,
 // closes and only then renames it over <path>, so <path> only ever holds a complete, closed file.
 // A file that is not finalized (an exception, a run that did not start) is closed and deleted by
 // the destructor: an earlier result at <path> is never replaced by a run that did not run. Every
