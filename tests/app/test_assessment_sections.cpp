@@ -303,3 +303,33 @@ TEST(GivenSections, AreAssessedAsGiven) {
   EXPECT_DOUBLE_EQ(h5test::numAttr<double>(f, "/assessment/sections/second", "to"), 60.0);
   H5Fclose(f);
 }
+
+// Work bounded before it starts, and nothing assessed that is not there.
+TEST(AssessmentSettings, RefusedBeforeTheRun) {
+  rb::app::RunOptions o;
+  o.root = RB_SOURCE_DIR;
+  o.scenario = "scenarios/validation/case2_kec.lua";
+  o.overrides = {"run.assessment.sample_every=1e-9", "solver.method=dopri5"};
+  try {
+    rb::app::checkScenario(o);
+    ADD_FAILURE() << "no error";
+  } catch (const rb::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("sample_every: 1e-09 s over"), std::string::npos)
+        << e.what();
+  }
+  const std::string far = writeScenario(
+      "far_floor.lua",
+      "run { distance = 50, assessment = { comfort = true, floor_positions = { 0, 1e9 } } }\n");
+  EXPECT_NE(checkErrors(far).find("floor_positions: 1e+09 m is not on the vehicle"),
+            std::string::npos)
+      << checkErrors(far);
+  const fs::path d = fs::temp_directory_path() / "rb_test_sections";
+  const std::string track_only = (d / "track_only.lua").string();
+  std::ofstream(track_only) << "track { segments = { tangent { length = 100 } } }\n"
+                               "run { assessment = true }\n";
+  EXPECT_NE(checkErrors(track_only)
+                .find("track_only.lua:2: run.assessment: the scenario has no "
+                      "vehicle to assess"),
+            std::string::npos)
+      << checkErrors(track_only);
+}

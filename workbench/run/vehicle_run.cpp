@@ -544,6 +544,10 @@ AssessmentSetup setupAssessment(const Model& m, dynamics::ContactVehicleOde* con
   as.spec = applicable(m, notes);
   if (!as.spec.any()) return as;
   as.signals.dt = sampleInterval(m, as.spec.sample_every);
+  if (as.signals.dt > as.spec.sample_every * (1 + 1e-9))
+    notes.push_back("assessment: sample_every " + num(as.spec.sample_every) +
+                    " s is below the solver step; the signals are sampled at every step (" +
+                    num(as.signals.dt) + " s)");
   if ((as.spec.safety || as.spec.wear) && contact != nullptr) addWheels(m, as);
   if (as.spec.safety) as.signals.sections = assessmentSections(m);
   if (as.spec.stability) addBogiePoints(m, as);
@@ -677,6 +681,34 @@ assessment::AssessmentSpec applicableAssessment(const Model& m) {
 }
 
 namespace {
+// The assessment's samples are bounded like the outputs (run.output.max_samples), and its floor
+// points lie on the vehicle: between its foremost and rearmost bodies, with at most
+// kFloorOverhang beyond them (assumption: the car-body ends overhang the end axles by less).
+constexpr double kFloorOverhang = 5.0;  // [m]
+void checkSampling(const Model& m) {
+  const auto& a = m.spec.run.assessment;
+  Diagnostics d;
+  const double n = std::ceil(m.t_end / sampleInterval(m, a.sample_every) - 1e-9);
+  if (n > m.spec.run.max_output_samples)
+    d.add(a.loc, "run.assessment.sample_every: " + num(a.sample_every) + " s over " + num(m.t_end) +
+                     " s gives " + num(n) + " samples, more than run.output.max_samples = " +
+                     num(m.spec.run.max_output_samples));
+  double lo = 0.0, hi = 0.0;
+  const auto cars = bodiesOfKind(*m.vehicle, vehicle::BodyKind::CarBody);
+  for (const auto& b : m.vehicle->bodies) {
+    const double x = b.x - (cars.empty() ? 0.0 : m.vehicle->bodies[cars.front()].x);
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+  }
+  for (const double x : a.floor_positions)
+    if (x < lo - kFloorOverhang || x > hi + kFloorOverhang)
+      d.add(a.loc, "run.assessment.floor_positions: " + num(x) +
+                       " m is not on the vehicle (its bodies lie between " + num(lo) + " and " +
+                       num(hi) + " m from the car body's centre; at most " + num(kFloorOverhang) +
+                       " m beyond)");
+  d.throwIfAny();
+}
+
 // Given sections must lie on the track.
 void checkSections(const Model& m) {
   Diagnostics d;
@@ -691,7 +723,12 @@ void checkSections(const Model& m) {
 
 void checkAssessment(const Model& m) {
   const auto& a = m.spec.run.assessment;
-  if (!a.any() || !m.vehicle) return;
+  if (!a.any()) return;
+  if (!m.vehicle)
+    throw InputError(a.loc,
+                     "run.assessment: the scenario has no vehicle to assess (a track-only "
+                     "scenario); remove run.assessment or add a vehicle");
+  checkSampling(m);
   if (a.all) {
     checkSections(m);
     return;
