@@ -18,7 +18,7 @@
 namespace rb::io {
 namespace {
 
-constexpr hsize_t kChunk = 1024;
+constexpr hsize_t kChunk = kSeriesChunk;
 // Compact storage: deflate level (4: most of level 9's gain on float series at a fraction of its
 // time) and the rank of the chunk index B-tree nodes (HDF5's default 32 sizes every node for 64
 // chunks; a study case's series have a few).

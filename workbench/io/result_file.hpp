@@ -4,13 +4,13 @@
 //
 // Life cycle: a file is written under a temporary name of its own, "<path>.tmp.<host>.<pid>.<n>",
 // created exclusively (two runs writing the same <path> never share a temporary); the temporaries
-// of <path> left by processes of this host that no longer exist (killed) are removed then. finalize() flushes,
-// closes and only then renames it over <path>, so <path> only ever holds a complete, closed file.
-// A file that is not finalized (an exception, a run that did not start) is closed and deleted by
-// the destructor: an earlier result at <path> is never replaced by a run that did not run. Every
-// HDF5 call is checked; a failure (disk full, I/O error) throws WriteError and the temporary is
-// deleted. Time series are appendable and flushed in chunks so a run that fails keeps everything
-// written so far (its caller finalizes it with /stats/status = "failed").
+// of <path> left by processes of this host that no longer exist (killed) are removed then.
+// finalize() flushes, closes and only then renames it over <path>, so <path> only ever holds a
+// complete, closed file. A file that is not finalized (an exception, a run that did not start) is
+// closed and deleted by the destructor: an earlier result at <path> is never replaced by a run that
+// did not run. Every HDF5 call is checked; a failure (disk full, I/O error) throws WriteError and
+// the temporary is deleted. Time series are appendable and flushed in chunks so a run that fails
+// keeps everything written so far (its caller finalizes it with /stats/status = "failed").
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
@@ -27,6 +27,10 @@ class WriteError : public std::runtime_error {
 };
 
 class ResultFile;
+
+// Samples per HDF5 chunk of an appendable series: a writer that flushes every kSeriesChunk
+// samples writes whole chunks only.
+inline constexpr std::size_t kSeriesChunk = 1024;
 
 // An appendable 1-D float64 dataset with a `units` attribute, buffered in memory between flushes.
 class Series {

@@ -10,6 +10,9 @@
 namespace rb::run {
 namespace {
 
+constexpr std::size_t kFlushSamples = io::kSeriesChunk;  // output times between flushes
+constexpr double kFlushSeconds = 10.0;                   // [s] wall time between flushes at most
+
 double wallNow() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
@@ -85,6 +88,7 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
   RB_CHECK(r.outputs.empty() || r.sample, "output channels need a sampler");
   std::vector<double> values(r.outputs.size());
   double lastFlush = wallNow();
+  std::size_t unflushed = 0;  // output times appended since the last flush
   double start = lastFlush;
   double lastDistance = 0.0;
 
@@ -113,10 +117,14 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
     t_written = t;
     for (std::size_t i = 0; i < series.size(); ++i) series[i]->append(values[i]);
     if (r.distance) lastDistance = r.distance(t, y);
-    double now = wallNow();
-    if (now - lastFlush > 1.0) {  // keep results on disk as the run goes
+    // Keep results on disk as the run goes, by data volume (every kFlushSamples output times:
+    // whole HDF5 chunks, so no chunk is rewritten, and the same work in every run of a scene,
+    // which keeps callgrind counts reproducible) and at least every kFlushSeconds of wall time.
+    ++unflushed;
+    if (unflushed >= kFlushSamples || wallNow() - lastFlush > kFlushSeconds) {
       f.flush();
-      lastFlush = now;
+      lastFlush = wallNow();
+      unflushed = 0;
     }
     return true;
   };
