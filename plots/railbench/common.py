@@ -42,12 +42,46 @@ def write_figures(specs: Sequence[FigureSpec], item, outdir: Optional[str], stem
     outdir = outdir or os.path.dirname(os.path.abspath(item.path))
     stem = stem or item.stem
     os.makedirs(outdir, exist_ok=True)
-    written: List[str] = []
-    for spec in specs:
-        if spec.is_available(item):
-            fig = build(item, spec) if build else spec.make(item)
-            save_figure(fig, os.path.join(outdir, f"{stem}_{spec.suffix}.{fmt}"), written, dpi)
-    return written
+    todo = [spec for spec in specs if spec.is_available(item)]
+
+    def one(spec) -> List[str]:
+        done: List[str] = []
+        fig = build(item, spec) if build else spec.make(item)
+        save_figure(fig, os.path.join(outdir, f"{stem}_{spec.suffix}.{fmt}"), done, dpi)
+        return done
+
+    jobs = plot_jobs(len(todo))
+    if jobs <= 1:
+        return [p for spec in todo for p in one(spec)]
+    # The figures are independent: drawn by forked processes that share the loaded file (the
+    # parent's memory), in the specs' order; a failure in one is raised here as before.
+    import multiprocessing
+    global _FORK_TASK
+    _FORK_TASK = lambda k: one(todo[k])  # noqa: E731 (inherited by the forked workers)
+    try:
+        with multiprocessing.get_context("fork").Pool(jobs) as pool:
+            parts = pool.map(_run_fork_task, range(len(todo)), chunksize=1)
+    finally:
+        _FORK_TASK = None
+    return [p for part in parts for p in part]
+
+
+_FORK_TASK: Optional[Callable] = None
+
+
+def _run_fork_task(arg):
+    return _FORK_TASK(arg)
+
+
+def plot_jobs(n: int) -> int:
+    """Processes that draw a file's figures: RAILBENCH_PLOT_JOBS, else one per core (at most the
+    number of figures); 1 draws them in this process."""
+    env = os.environ.get("RAILBENCH_PLOT_JOBS", "").strip()
+    try:
+        jobs = int(env) if env else (os.cpu_count() or 1)
+    except ValueError:
+        jobs = 1
+    return max(1, min(jobs, n))
 
 
 def write_csv(path: str, rows: List[dict]) -> None:
