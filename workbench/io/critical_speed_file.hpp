@@ -3,7 +3,8 @@
 //   /                 attributes: the options, the critical speed of each method, status
 //   /runs/<name>      one group per kicked run (attributes: kind, file, v0, acceleration,
 //                     duration, ok, message, t_reached, v_reached, cpu_s, rhs_evals, steps,
-//                     unstable, a_first, a_mid, a_last, en14363_ratio); datasets window_t0,
+//                     unstable, state (hunting, sustained small-amplitude oscillation, stable),
+//                     a_first, a_mid, a_last, trend, en14363_ratio); datasets window_t0,
 //                     window_t1 [s], window_speed [m/s], window_amplitude [m] and, with the
 //                     EN 14363 criterion, en14363_speed [m/s], en14363_ratio [-]
 //   /ramp             speed [m/s] and y [m] (lateral displacement of the first wheelset) of the
@@ -35,6 +36,8 @@ struct CriticalSpeedRun {
   double a_first = 0.0;
   double a_mid = 0.0;
   double a_last = 0.0;
+  double trend = 0.0;  // amplitude ratio per window over the second half
+  std::string state;   // KickedVerdict::state()
   double en14363_ratio = 0.0;  // NaN-free: not written when the criterion is not en14363
   bool has_en14363 = false;
   std::vector<double> window_t0, window_t1, window_speed, window_amplitude;
