@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -161,6 +162,29 @@ TEST(PrecisionAnswer, QuantitiesAreCheckedBeforeAnyRun) {
   EXPECT_THROW((void)pr::makePlan(o), rb::InputError);
   o.quantities = "y,YQ,ws.roll";
   EXPECT_NO_THROW((void)pr::makePlan(o));
+}
+
+TEST(PrecisionAnswer, EveryOptionIsNamedBeforeAnyRun) {
+  auto refused = [](const std::function<void(rb::app::PrecisionOptions&)>& set,
+                    const std::string& option) {
+    rb::app::PrecisionOptions o;
+    o.scenario = kSmall;
+    o.root = kRoot;
+    o.quick = true;
+    set(o);
+    try {
+      (void)pr::makePlan(o);
+    } catch (const rb::InputError& e) {
+      return std::string(e.what()).find(option) != std::string::npos;
+    }
+    return false;
+  };
+  EXPECT_TRUE(refused([](auto& o) { o.jobs = -2; }, "--jobs"));
+  EXPECT_TRUE(refused([](auto& o) { o.repeats = 0; }, "--repeats"));
+  EXPECT_TRUE(refused([](auto& o) { o.levels = "0.1,x"; }, "--levels"));
+  EXPECT_TRUE(refused([](auto& o) { o.tolerances = "1e-3,,1e-5"; }, "--tolerances"));
+  EXPECT_TRUE(refused([](auto& o) { o.reference_methods = "bdf"; }, "--reference-methods"));
+  EXPECT_TRUE(refused([](auto& o) { o.methods = "kec,wrong"; }, "--methods"));
 }
 
 TEST(PrecisionAnswer, FixedStepsFitTheOutputInterval) {

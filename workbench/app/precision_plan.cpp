@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
+
+#include <unistd.h>
 
 #include "workbench/app/precision_answer.hpp"
 #include "workbench/core/error.hpp"
@@ -41,6 +44,19 @@ std::string csvField(const std::string& s) {
     out += ch == '\n' ? ' ' : ch;
   }
   return quote ? "\"" + out + "\"" : out;
+}
+
+// An executable named `name` in a folder of $PATH.
+bool onPath(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  if (path == nullptr) return false;
+  std::stringstream ss(path);
+  for (std::string d; std::getline(ss, d, ':');) {
+    std::error_code ec;
+    const fs::path p = fs::path(d.empty() ? "." : d) / name;
+    if (fs::is_regular_file(p, ec) && access(p.c_str(), X_OK) == 0) return true;
+  }
+  return false;
 }
 
 bool isFixed(const std::string& integrator) {
@@ -313,7 +329,13 @@ Plan makePlan(const PrecisionOptions& o) {
   if (!(o.reference_tol > 0.0 && o.reference_tol < 1e-2))
     throw InputError(kCommandLine, "--reference-tol must be in (0, 1e-2)");
   if (o.repeats < 1 || o.repeats > 100)
-    throw InputError(kCommandLine, "--repeats must be in 1..100");
+    throw InputError(kCommandLine, "--repeats must be in 1..100, got " + std::to_string(o.repeats));
+  if (o.jobs < 0)
+    throw InputError(kCommandLine,
+                     "--jobs must be >= 0 (0: every core), got " + std::to_string(o.jobs));
+  // --callgrind runs valgrind after the whole matrix: its absence must show before the matrix.
+  if (o.callgrind && !onPath("valgrind"))
+    throw InputError(kCommandLine, "--callgrind: valgrind is not on the PATH");
   if (o.distance > 0.0) p.base.push_back("run.distance=" + num(o.distance));
   if (o.duration > 0.0) p.base.push_back("run.duration=" + num(o.duration));
 
