@@ -89,7 +89,7 @@ std::string runName(const std::string& kind, std::size_t index, double v) {
 std::string describe(const KickedRun& r, bool en) {
   const bool unstable = critical::runUnstable(r, en);
   std::ostringstream m;
-  m << (unstable                 ? "unstable"
+  m << (unstable                ? "unstable"
         : r.verdict.small_cycle ? "NOT stable: sustained small-amplitude oscillation"
                                 : "stable")
     << " (";
@@ -166,7 +166,8 @@ void rampDown(const CriticalSpeedOptions& o, Search& s) {
                                       ? critical::lastExceedance(r.en_speed, r.en_ratio)
                                       : critical::rampCriticalSpeed(r.windows, s.setup.threshold);
   if (!r.windows.empty()) {
-    s.ramp_start_amplitude = critical::rampCriticalSpeed(r.windows, s.setup.threshold).start_amplitude;
+    s.ramp_start_amplitude =
+        critical::rampCriticalSpeed(r.windows, s.setup.threshold).start_amplitude;
     s.ramp_end_amplitude = r.windows.back().amplitude;
     // Below the threshold at the end but not died out: the ramp's answer is where the cycle
     // fell below the threshold, not where the motion ceased.
@@ -307,6 +308,7 @@ io::CriticalSpeedResult resultOf(const CriticalSpeedOptions& o, const StabilityS
       res.bisection_speed.push_back(r.v0);
       res.bisection_amplitude.push_back(r.verdict.a_last);
       res.bisection_unstable.push_back(critical::runUnstable(r, en) ? 1.0 : 0.0);
+      res.bisection_small.push_back(r.verdict.small_cycle ? 1.0 : 0.0);
     }
   }
   return res;
@@ -366,13 +368,14 @@ void printSummary(const CriticalSpeedOptions& o, const Search& s) {
   std::cout << "critical speed (" << o.criterion << " criterion, kick " << o.kick * 1e3
             << " mm, threshold " << mm(s.setup.threshold) << "):\n";
   if (std::isfinite(s.linear_all.any) || !s.linear_all.mode.empty()) {
-    std::cout << "  linear, any mode (eigenvalues, workbench modes): "
-              << (std::isfinite(s.linear_all.any) ? mps(s.linear_all.any) : s.linear_all.note)
-              << "\n      the lowest speed at which a mode of the linearised vehicle on the centred "
-                 "track loses its damping"
-              << (s.linear_all.mode.empty() ? "" : " (" + s.linear_all.mode + ")")
-              << ";\n      use it for small-disturbance stability and design comparison; no "
-                 "amplitude is judged (eigenvalues: any small motion grows above it)\n";
+    std::cout
+        << "  linear, any mode (eigenvalues, workbench modes): "
+        << (std::isfinite(s.linear_all.any) ? mps(s.linear_all.any) : s.linear_all.note)
+        << "\n      the lowest speed at which a mode of the linearised vehicle on the centred "
+           "track loses its damping"
+        << (s.linear_all.mode.empty() ? "" : " (" + s.linear_all.mode + ")")
+        << ";\n      use it for small-disturbance stability and design comparison; no "
+           "amplitude is judged (eigenvalues: any small motion grows above it)\n";
   }
   if (std::isfinite(s.linear))
     std::cout << "  linear, hunting modes: " << mps(s.linear)
@@ -388,8 +391,8 @@ void printSummary(const CriticalSpeedOptions& o, const Search& s) {
                  "speed (the lowest speed with sustained hunting); judged: "
               << (en ? std::string("EN 14363 sliding rms / limit = 1")
                      : "window amplitude " + mm(s.ramp_start_amplitude) +
-                           " at the start against the threshold " + mm(s.setup.threshold) +
-                           ", " + mm(s.ramp_end_amplitude) + " at the end")
+                           " at the start against the threshold " + mm(s.setup.threshold) + ", " +
+                           mm(s.ramp_end_amplitude) + " at the end")
               << "\n";
   if (std::isfinite(s.bisection_critical))
     std::cout << "  bisection: " << mps(s.bisection_critical) << " (bracket " << mps(s.bracket_low)
@@ -562,6 +565,15 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
     s.linear = s.linear_all.hunting;
     if (!s.linear_all.hunting_note.empty())
       std::cout << s.linear_all.hunting_note << "; the start is probed from the scene's speed\n";
+    // A mode other than hunting loses its damping first: the nonlinear answers below are the
+    // hunting limit, and the vehicle is not stable below them.
+    const bool earlier = !std::isfinite(s.linear_all.any) || !std::isfinite(s.linear) ||
+                         s.linear_all.any < s.linear - 1e-9;
+    if (!s.linear_all.mode.empty() && earlier)
+      s.caveats.push_back("linear: a mode is unstable below the hunting speed (" +
+                          s.linear_all.mode +
+                          "): the ramp and bisection answers are the hunting limit, not the "
+                          "lower end of a stable range");
   }
   try {
     search(o, scene, s);

@@ -56,6 +56,7 @@ void writeCriticalSpeedFile(const std::string& path, const CriticalSpeedResult& 
     f.dataset("/bisection/speed", result.bisection_speed, "m/s");
     f.dataset("/bisection/amplitude", result.bisection_amplitude, "m");
     f.dataset("/bisection/unstable", result.bisection_unstable, "-");
+    f.dataset("/bisection/small_cycle", result.bisection_small, "-");
   }
   f.finalize();
 }
