@@ -37,8 +37,8 @@ std::string noneInRange(const std::vector<Analysis>& sweep, Which w) {
   s << "none in range";
   if (!sweep.empty())
     s << ": " << modeWord(w) << " damping " << damping(sweep.front(), w) << " at "
-      << sweep.front().speed << " m/s, " << damping(sweep.back(), w) << " at "
-      << sweep.back().speed << " m/s";
+      << sweep.front().speed << " m/s, " << damping(sweep.back(), w) << " at " << sweep.back().speed
+      << " m/s";
   return s.str();
 }
 
@@ -158,8 +158,6 @@ CriticalSpeed linearCriticalSpeed(Analyser& an, std::vector<Analysis> sweep, dou
   CriticalSpeed c;
   for (const Analysis& a : sweep) addCost(c, a);
   c.sweep = std::move(sweep);
-  // Refinement analyses are appended to c.refinement, which may reallocate: take what is needed
-  // of the unstable side before the next crossing.
   // A mode unstable at the lowest speed analysed puts the answer below the range, whatever
   // crossings follow (a mode may regain its damping and another lose it further up).
   if (!c.sweep.empty() && !c.sweep.front().unstableModes().empty()) {
@@ -174,6 +172,8 @@ CriticalSpeed linearCriticalSpeed(Analyser& an, std::vector<Analysis> sweep, dou
     c.why = s.str();
     c.step_uncertainty = std::nan("");
   } else {
+    // Refinement analyses are appended to c.refinement, which may reallocate: what is needed of
+    // the unstable side is taken before the hunting crossing below.
     const Crossing any = crossing(an, c, tol, Which::Any);
     c.why = any.why;
     c.step_uncertainty = any.step_uncertainty;
