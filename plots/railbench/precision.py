@@ -149,6 +149,7 @@ def write_h5(path: str, rows, ref_rows, rec_rows, qs, levels, limit, refs) -> No
         f.attrs["quantities"] = ",".join(q.tag for q in qs)
         f.attrs["units"] = ",".join(q.unit for q in qs)
         f.attrs["levels"] = np.array(levels, float)
+        f.create_dataset("levels", data=np.array(levels, float))  # as the engine writes it
         f.attrs["reference_limit"] = limit
         for model, rf in refs.items():
             g = f.create_group(f"reference_bound/{model}")

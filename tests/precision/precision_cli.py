@@ -121,6 +121,9 @@ def default_suite(wb, out):
         recs = rows(os.path.join(noplots, "precision_recommendation.csv"))
         if [r["level"] for r in recs] != ["1", "0.1", "0.01"] or not recs[0]["setting"]:
             problems.append(f"plots off: recommendation {recs}")
+        with h5py.File(os.path.join(noplots, "precision.h5"), "r") as f:
+            if "recommendation/setting" not in f or "reference_bound" not in f:
+                problems.append("plots off: precision.h5 lacks the engine's answer")
 
     # Bad input: exit 1 naming the option, nothing run (a mistyped quantity is refused before
     # the matrix, not after it).

@@ -12,6 +12,7 @@
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/io/read_stats.hpp"
+#include "workbench/io/result_file.hpp"
 #include "workbench/io/result_reader.hpp"
 
 namespace fs = std::filesystem;
@@ -398,6 +399,73 @@ std::string recommendationCsv(const Answer& a) {
       << "," << csvField(r.note) << "\n";
   }
   return s.str();
+}
+
+void writeAnswerH5(const Answer& a, const std::string& path) {
+  io::ResultFile f(path);
+  std::vector<std::string> tags, units;
+  for (const auto& q : a.quantities) {
+    tags.push_back(q.tag);
+    units.push_back(q.unit);
+  }
+  f.attr("/", "quantities", join(tags, ","));
+  f.attr("/", "units", join(units, ","));
+  f.attr("/", "reference_limit", a.limit);
+  f.dataset("/levels", a.levels, a.quantities.front().unit);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& r : a.references) {
+    const std::string g = "/reference_bound/" + r.model;
+    f.attr(g, "verified", std::int64_t{r.verified ? 1 : 0});
+    f.attr(g, "why", r.why);
+    for (std::size_t k = 0; k < a.quantities.size(); ++k) {
+      const Quantity& q = a.quantities[k];
+      const std::string u = "_" + q.unit;
+      f.attr(g, q.tag + "_max" + u, r.bound[k].have ? r.bound[k].max : nan);
+      f.attr(g, q.tag + "_rms" + u, r.bound[k].have ? r.bound[k].rms : nan);
+      f.attr(g, q.tag + "_table_error_max" + u, r.table[k].have ? r.table[k].max : nan);
+    }
+  }
+  std::vector<std::string> model, unit, quantity, setting, integrator, id, note;
+  std::vector<double> level, value, cpu, rhs, error, total, reached, verified, limited;
+  for (const auto& r : a.recommendations) {
+    const CaseAnswer* c = r.best >= 0 ? &a.cases[static_cast<std::size_t>(r.best)] : nullptr;
+    model.push_back(r.model);
+    level.push_back(r.level);
+    unit.push_back(a.quantities.front().unit);
+    quantity.push_back(a.quantities.front().tag);
+    setting.push_back(c ? c->label : "none reaches it");
+    integrator.push_back(c ? c->integrator : "");
+    value.push_back(c ? c->value : nan);
+    cpu.push_back(c ? c->cpu : nan);
+    rhs.push_back(c ? c->rhs : nan);
+    error.push_back(c ? c->integration.max : nan);
+    total.push_back(c && c->total.have ? c->total.max : nan);
+    id.push_back(c ? c->id : "");
+    reached.push_back(r.reached ? 1.0 : 0.0);
+    verified.push_back(r.verified ? 1.0 : 0.0);
+    limited.push_back(r.table_limited ? 1.0 : 0.0);
+    note.push_back(r.note);
+  }
+  if (!model.empty()) {
+    const std::string g = "/recommendation/";
+    f.stringDataset(g + "model", model);
+    f.dataset(g + "level", level, a.quantities.front().unit);
+    f.stringDataset(g + "unit", unit);
+    f.stringDataset(g + "quantity", quantity);
+    f.stringDataset(g + "setting", setting);
+    f.stringDataset(g + "integrator", integrator);
+    f.dataset(g + "value", value, "s or -");
+    f.dataset(g + "cpu_median_s", cpu, "s");
+    f.dataset(g + "rhs_evals", rhs, "-");
+    f.dataset(g + "error_max", error, a.quantities.front().unit);
+    f.dataset(g + "total_error_max", total, a.quantities.front().unit);
+    f.stringDataset(g + "case", id);
+    f.dataset(g + "reached", reached, "-");
+    f.dataset(g + "verified", verified, "-");
+    f.dataset(g + "table_limited", limited, "-");
+    f.stringDataset(g + "note", note);
+  }
+  f.finalize();
 }
 
 void printAnswer(const Answer& a, std::ostream& out) {

@@ -102,6 +102,12 @@ Answer computeAnswer(const Plan& plan, const std::string& out, int repeats);
 // precision_recommendation.csv (one row per model and level).
 std::string recommendationCsv(const Answer& answer);
 
+// precision.h5 as the engine knows it: /recommendation (the columns of the CSV as datasets),
+// /reference_bound/<model> attributes (verified, why, per quantity the bound and the table
+// error), root attributes quantities, units, reference_limit and the dataset /levels. The
+// plotting step rewrites the file with the per-case tables added.
+void writeAnswerH5(const Answer& answer, const std::string& path);
+
 // The printed answer: per model the reference state, bound and table error, then the table.
 void printAnswer(const Answer& answer, std::ostream& out);
 
