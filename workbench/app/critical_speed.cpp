@@ -1,6 +1,7 @@
 #include "workbench/app/critical_speed.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -61,6 +62,7 @@ struct Search {
   LinearAnswer linear_all;  // the linear answer of every mode (the lowest unstable one)
   double ramp_start_amplitude = std::nan("");  // [m] largest window amplitude of the ramp
   double ramp_end_amplitude = std::nan("");    // [m] last window amplitude of the ramp
+  double ramp_max_ratio = std::nan("");        // EN 14363: largest sliding rms / limit of the ramp
   // What a reader must know beside the answers: runs whose motion neither died out nor reached
   // the threshold (sustained small-amplitude oscillations), with speed and amplitude.
   std::vector<std::string> caveats;
@@ -165,6 +167,8 @@ void rampDown(const CriticalSpeedOptions& o, Search& s) {
   const critical::RampVerdict v = o.criterion == "en14363"
                                       ? critical::lastExceedance(r.en_speed, r.en_ratio)
                                       : critical::rampCriticalSpeed(r.windows, s.setup.threshold);
+  if (!r.en_ratio.empty())
+    s.ramp_max_ratio = *std::max_element(r.en_ratio.begin(), r.en_ratio.end());
   if (!r.windows.empty()) {
     s.ramp_start_amplitude =
         critical::rampCriticalSpeed(r.windows, s.setup.threshold).start_amplitude;
@@ -365,8 +369,10 @@ void printSummary(const CriticalSpeedOptions& o, const Search& s) {
               << ", CPU " << r.cpu_s << " s, " << r.rhs_evals << " rhs evaluations\n";
   }
   const bool en = o.criterion == "en14363";
-  std::cout << "critical speed (" << o.criterion << " criterion, kick " << o.kick * 1e3
-            << " mm, threshold " << mm(s.setup.threshold) << "):\n";
+  std::cout << "critical speed (" << o.criterion << " criterion, kick " << o.kick * 1e3 << " mm, "
+            << (en ? std::string("sliding rms against its EN 14363 limit")
+                   : "threshold " + mm(s.setup.threshold))
+            << "):\n";
   if (std::isfinite(s.linear_all.any) || !s.linear_all.mode.empty()) {
     std::cout
         << "  linear, any mode (eigenvalues, workbench modes): "
@@ -389,7 +395,8 @@ void printSummary(const CriticalSpeedOptions& o, const Search& s) {
                      : "limit cycle fell below the threshold")
               << " for the last time while decelerating;\n      use it as the nonlinear critical "
                  "speed (the lowest speed with sustained hunting); judged: "
-              << (en ? std::string("EN 14363 sliding rms / limit = 1")
+              << (en ? "EN 14363 sliding rms / limit against 1 (largest " +
+                           formatNumber(s.ramp_max_ratio, 3) + ")"
                      : "window amplitude " + mm(s.ramp_start_amplitude) +
                            " at the start against the threshold " + mm(s.setup.threshold) + ", " +
                            mm(s.ramp_end_amplitude) + " at the end")
