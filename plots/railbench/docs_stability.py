@@ -143,11 +143,14 @@ def method_block(outdir: str) -> str:
             body.append([contact, what, "–", "not run", "–", "–"])
             continue
         findings = (crit.get("findings") or "").strip()
+        # A sustained small-amplitude oscillation (not stable, below the threshold) is said too.
+        caveats = (crit.get("caveats") or "").strip()
         body.append([contact, what, _speed(modes, "critical_speed_value"),
                      _speed(crit, "critical_speed_ramp"),
                      _speed(crit, "critical_speed_bisection"),
                      f"{crit.get('runs', 0)} runs, {fmt(crit.get('runs_cpu_s'), '{:.1f}')} s"
-                     + ("; " + findings.splitlines()[0][:160] if findings else "")])
+                     + ("; " + findings.splitlines()[0][:160] if findings else "")
+                     + ("; caveat: " + caveats.splitlines()[0][:160] if caveats else "")])
     if all(r[3] == "not run" for r in body):
         return missing(f"{outdir}/stability_*/critical_speed.h5 (./wb studies --only stability)")
     return table(["contact", "variant", "linear [m/s]", "ramp-down [m/s]", "bisection [m/s]",

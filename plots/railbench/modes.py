@@ -37,6 +37,8 @@ def _load(path: str) -> dict:
                "hunting_damping": np.asarray(g["hunting_damping"][()], dtype=float),
                "critical": _str(g.attrs.get("critical_speed", "none")),
                "critical_value": float(g.attrs.get("critical_speed_value", 0.0)),
+               "critical_mode": _str(g.attrs.get("critical_mode", "")),
+               "hunting_value": float(g.attrs.get("hunting_critical_speed_value", 0.0)),
                "method": _str(g.attrs.get("contact_method", "")),
                "creep": _str(g.attrs.get("creep_law", "")), "per_speed": []}
         for i in range(len(out["speeds"])):
@@ -46,6 +48,8 @@ def _load(path: str) -> dict:
                 "im": np.asarray(s["im"][()], dtype=float),
                 "freq": np.asarray(s["frequency"][()], dtype=float),
                 "zeta": np.asarray(s["damping_ratio"][()], dtype=float),
+                "unstable": (np.asarray(s["unstable"][()], dtype=float) if "unstable" in s
+                             else np.zeros(len(s["re"][()]))),
                 "label": [_str(x) for x in s["label"][()]]})
         return out
 
@@ -94,6 +98,13 @@ def _damping(d: dict):
     for lab, p in sorted(pts.items()):
         p = np.asarray(p)
         ax.scatter(p[:, 0], p[:, 1], s=12, label=lab)
+    # Every unstable mode, whatever its kind or frequency (the engine's flag), ringed in red.
+    bad = [(speed, z) for speed, s in zip(v, d["per_speed"])
+           for z, u in zip(s["zeta"], s["unstable"]) if u > 0]
+    if bad:
+        b = np.asarray(bad)
+        ax.scatter(b[:, 0], b[:, 1], s=60, facecolors="none", edgecolors="r", lw=1.2,
+                   label="unstable mode")
     hd = d["hunting_damping"]
     ok = hd < 1.0
     if ok.any():
@@ -101,9 +112,14 @@ def _damping(d: dict):
     ax.axhline(0.0, color="k", lw=0.8)
     if d["critical_value"] > 0:
         ax.axvline(d["critical_value"], color="r", ls="--",
-                   label=f"linear critical speed {d['critical_value']:.1f} m/s")
+                   label=f"linear critical speed {d['critical_value']:.1f} m/s (any mode)")
+        if d["critical_mode"]:
+            ax.set_title("first unstable: " + d["critical_mode"], fontsize=8)
     else:
-        ax.set_title("linear critical speed: " + d["critical"], fontsize=9)
+        ax.set_title("linear critical speed: " + d["critical"], fontsize=8, wrap=True)
+    if d["hunting_value"] > 0 and d["hunting_value"] != d["critical_value"]:
+        ax.axvline(d["hunting_value"], color="m", ls=":",
+                   label=f"hunting modes unstable from {d['hunting_value']:.1f} m/s")
     ax.set_xlabel("speed [m/s]")
     ax.set_ylabel("damping ratio [-]")
     ax.legend(fontsize=7)

@@ -8,8 +8,9 @@ Reads OUT/precision_plan.csv (written by the command: every case, its model, int
 setting and role) and the study folders OUT/reference and OUT/cases. Writes into OUT:
 precision.csv (per case: cost, integration and total error per quantity), precision_references.csv
 (the references, their bound, verified or not, and the table error), precision_recommendation.csv
-(the cheapest setting per model and level), precision.h5 (all of these as datasets), and one
-figure per model, precision_<model>.png.
+is the engine's (the cheapest setting per model and level, computed and printed by `workbench
+precision` before this step: read here, never recomputed), precision.h5 (all of these as
+datasets), and one figure per model, precision_<model>.png.
 """
 from __future__ import annotations
 
@@ -25,8 +26,7 @@ import h5py
 import numpy as np
 
 from .common import parser, read_csv, write_csv
-from .precision_errors import (Quantity, QuantityError, errors, parse_quantities, pareto,
-                               recommend, verify)
+from .precision_errors import Quantity, QuantityError, errors, parse_quantities, verify
 from .study_data import Case, StudyError, load_study
 
 
@@ -119,30 +119,15 @@ def _num(s) -> Optional[float]:
     return v
 
 
-def recommendation_rows(rows: List[dict], refs: Dict[str, dict], q: Quantity,
-                        levels: List[float]) -> List[dict]:
-    out = []
-    for model in dict.fromkeys(r["model"] for r in rows):
-        rf = refs.get(model.replace(" refined", ""), {})
-        bound = rf.get("bound", {}).get(q.tag, (math.inf, 0))[0]
-        cand = [dict(ok=r["status"] == "ok",
-                     error=_num(r[f"{q.tag}_integration_max_{q.unit}"]),
-                     cpu=_num(r["cpu_median_s"]) or 0.0, rhs_evals=_num(r["rhs_evals"]) or 0,
-                     row=r) for r in rows if r["model"] == model]
-        for level in levels:
-            best, note = recommend(cand, level, bound)
-            if not rf.get("verified"):
-                note = ("reference UNVERIFIED; " + note).strip("; ")
-            r = best["row"] if best else None
-            out.append(dict(model=model, level=f"{level:g}", unit=q.unit, quantity=q.tag,
-                            setting=r["label"] if r else "none reaches it",
-                            integrator=r["integrator"] if r else "",
-                            value=r["value"] if r else "",
-                            cpu_median_s=r["cpu_median_s"] if r else "",
-                            rhs_evals=r["rhs_evals"] if r else "",
-                            error_max=_fmt(best["error"]) if best else "",
-                            case=r["case"] if r else "", note=note))
-    return out
+def recommendation_rows(outdir: str) -> List[dict]:
+    """The recommendation as the engine computed it (`workbench precision` writes
+    precision_recommendation.csv before any figure: the rule lives in
+    workbench/app/precision_answer.cpp). This module only draws and tabulates it."""
+    path = os.path.join(outdir, "precision_recommendation.csv")
+    if not os.path.exists(path):
+        raise FileNotFoundError(f"{path} not found: the recommendation is computed by "
+                                f"`workbench precision` (run it again to write it)")
+    return read_csv(path)
 
 
 def _table_to_h5(g: h5py.Group, rows: List[dict]) -> None:
@@ -164,6 +149,7 @@ def write_h5(path: str, rows, ref_rows, rec_rows, qs, levels, limit, refs) -> No
         f.attrs["quantities"] = ",".join(q.tag for q in qs)
         f.attrs["units"] = ",".join(q.unit for q in qs)
         f.attrs["levels"] = np.array(levels, float)
+        f.create_dataset("levels", data=np.array(levels, float))  # as the engine writes it
         f.attrs["reference_limit"] = limit
         for model, rf in refs.items():
             g = f.create_group(f"reference_bound/{model}")
@@ -242,24 +228,6 @@ def _callgrind(rec_rows: List[dict], cases: Dict[str, Case], workbench: str, roo
             r["instructions_per_eval"] = f"{d[0] / d[1]:.1f}" if d and d[1] else ""
 
 
-def print_recommendation(rec_rows: List[dict], refs: Dict[str, dict], q: Quantity) -> None:
-    print(f"\nRecommendation: cheapest setting whose integration error (max |{q.tag}| against "
-          f"the reference on the same tables) reaches each level")
-    for model, rf in refs.items():
-        b = rf["bound"].get(q.tag)
-        t = rf["table"].get(q.tag)
-        state = "verified" if rf["verified"] else "UNVERIFIED (" + rf["why"] + ")"
-        print(f"  {model}: reference {state}; bound {_fmt(b[0]) if b else '?'} {q.unit}; "
-              f"table error {_fmt(t[0]) if t else '?'} {q.unit}")
-    w = max([len(r["setting"]) for r in rec_rows] + [10])
-    print(f"  {'model':14s} {'level':>10s}  {'setting':{w}s} {'CPU [s]':>9s} {'rhs evals':>10s} "
-          f"{'error':>9s}  note")
-    for r in rec_rows:
-        print(f"  {r['model']:14s} {r['level'] + ' ' + r['unit']:>10s}  {r['setting']:{w}s} "
-              f"{r['cpu_median_s']:>9s} {str(r['rhs_evals']):>10s} {r['error_max']:>9s}  "
-              f"{r['note']}")
-
-
 def markdown(rows: List[dict], rec_rows: List[dict], refs: Dict[str, dict],
              qs: List[Quantity]) -> str:
     """The results as a markdown block: the references (bound, verified, table error), the
@@ -298,7 +266,7 @@ def block_from_folder(outdir: str, quantities: str = "y,yaw", levels: str = "1,0
     cases = _cases(outdir)
     refs = reference_rows(plan, cases, qs, lim)
     rows = case_rows(plan, cases, refs, qs)
-    return markdown(rows, recommendation_rows(rows, refs, qs[0], lv), refs, qs)
+    return markdown(rows, recommendation_rows(outdir), refs, qs)
 
 
 def _slug(model: str) -> str:
@@ -339,19 +307,19 @@ def main(argv=None) -> int:
     refs = reference_rows(plan, cases, qs, limit)
     rows = case_rows(plan, cases, refs, qs)
     ref_rows = _reference_table(refs, qs, limit)
-    rec_rows = recommendation_rows(rows, refs, qs[0], levels)
-    if a.callgrind and a.workbench:
-        _callgrind(rec_rows, cases, a.workbench, a.root)
+    try:
+        rec_rows = recommendation_rows(a.outdir)
+    except FileNotFoundError as e:
+        print(f"railbench precision: {e}", file=sys.stderr)
+        return 1
     write_csv(os.path.join(a.outdir, "precision.csv"), rows)
     write_csv(os.path.join(a.outdir, "precision_references.csv"), ref_rows)
-    write_csv(os.path.join(a.outdir, "precision_recommendation.csv"), rec_rows)
+    if a.callgrind and a.workbench:
+        # Adds the instruction counts of the recommended settings as columns.
+        _callgrind(rec_rows, cases, a.workbench, a.root)
+        write_csv(os.path.join(a.outdir, "precision_recommendation.csv"), rec_rows)
     write_h5(os.path.join(a.outdir, "precision.h5"), rows, ref_rows, rec_rows, qs, levels, limit,
              refs)
-    for model, rf in refs.items():
-        if not rf["verified"]:
-            print(f"precision: WARNING: the reference of {model} is UNVERIFIED: {rf['why']}; "
-                  f"its errors are not trustworthy below that difference", file=sys.stderr)
-    print_recommendation(rec_rows, refs, qs[0])
     if a.markdown:
         with open(a.markdown, "w") as f:
             f.write(markdown(rows, rec_rows, refs, qs))
@@ -361,7 +329,8 @@ def main(argv=None) -> int:
     for model in dict.fromkeys(r["model"] for r in rows):
         fig = fig_model(model, [r for r in rows if r["model"] == model],
                         refs.get(model.replace(" refined", ""), {}), qs, levels,
-                        refined=model.endswith("refined"))
+                        refined=model.endswith("refined"),
+                        recommended=[r for r in rec_rows if r["model"] == model and r["case"]])
         if fig is not None:
             path = os.path.join(a.outdir, f"precision_{_slug(model)}.png")
             fig.savefig(path, dpi=DPI)

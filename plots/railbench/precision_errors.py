@@ -1,13 +1,14 @@
 """The numbers of `workbench precision` (docs/precision.md): errors of result files against a
 reference on the quantities the user names, the verification bound of the reference, the error
-split (table / integration), Pareto fronts and the recommendation rule. Pure functions of result
-files and rows, so that tests can check them on files of known content."""
+split (table / integration) and Pareto fronts for the figures. Pure functions of result files and
+rows, so that tests can check them on files of known content. The recommendation rule is the
+engine's (workbench/app/precision_answer.cpp); the error rule is the same here and there."""
 from __future__ import annotations
 
 import math
 import re
 from dataclasses import dataclass
-from typing import Dict, List, Optional, Sequence, Tuple
+from typing import Dict, List, Sequence, Tuple
 
 import h5py
 import numpy as np
@@ -115,6 +116,10 @@ def errors(path: str, ref_path: str, quantities: Sequence[Quantity]
             for key, rv in r.items():
                 if key not in s:
                     continue
+                # One rule with the engine (workbench/app/precision_answer.cpp): a non-finite
+                # value of the run (diverged) makes its error infinite.
+                if not np.all(np.isfinite(s[key][:len(t)])):
+                    mx = math.inf
                 m, v = on_grid(tr[:len(rv)], t, s[key])
                 if not m.any():
                     continue
@@ -126,8 +131,8 @@ def errors(path: str, ref_path: str, quantities: Sequence[Quantity]
                     mx = max(mx, float(np.max(np.abs(d))))
                     ssum += float(np.sum(d * d))
                     n += len(d)
-            if n:
-                out[q.tag] = (mx, math.sqrt(ssum / n))
+            if n or math.isinf(mx):
+                out[q.tag] = (mx, math.sqrt(ssum / n) if n and math.isfinite(mx) else math.inf)
     return out
 
 
@@ -157,17 +162,3 @@ def pareto(points: Sequence[Tuple[float, float]]) -> List[int]:
             front.append(i)
             best = e
     return front
-
-
-def recommend(rows: List[dict], level: float, bound: float) -> Tuple[Optional[dict], str]:
-    """The cheapest ok row (median CPU time, then rhs evaluations) whose error ("error") is at
-    most `level`; a note when none reaches it or when the level is below the reference bound
-    (not resolvable: the error of such a setting cannot be told from the reference's own)."""
-    ok = [r for r in rows if r["ok"] and r["error"] is not None and r["error"] <= level]
-    note = ""
-    if bound > level:
-        note = f"below the reference bound ({bound:.3g}): not resolvable"
-    if not ok:
-        return None, note or "none reaches it"
-    best = min(ok, key=lambda r: (r["cpu"], r["rhs_evals"]))
-    return best, note

@@ -20,7 +20,7 @@ def _f(s) -> Optional[float]:
     return v
 
 
-def _panel(ax, rows: List[dict], key: str, cost: str, bound, table, levels):
+def _panel(ax, rows: List[dict], key: str, cost: str, bound, table, levels, chosen=()):
     pts = [(r, _f(r[key]), _f(r[cost])) for r in rows]
     ok = [(r, e, c) for r, e, c in pts if r["status"] == "ok" and e and c and e > 0 and c > 0]
     for integ in dict.fromkeys(r["integrator"] for r in rows):
@@ -40,6 +40,11 @@ def _panel(ax, rows: List[dict], key: str, cost: str, bound, table, levels):
         if r["status"] not in ("ok", "skipped", "planned") and e and c and e > 0 and c > 0 \
                 and math.isfinite(e):
             ax.plot(e, c, "x", color=FAIL_COLOR, ms=5)
+    # The engine's recommendation (precision_recommendation.csv), drawn as it was computed.
+    rec = [(e, c) for r, e, c in ok if r.get("case") in chosen]
+    if rec:
+        ax.plot([p[0] for p in rec], [p[1] for p in rec], "*", color="#1f5fa8", ms=11, mfc="none",
+                mew=1.2, zorder=5, label="recommended (workbench precision)")
     xs = [e for _, e, _ in ok] + [v for v in (bound, table) if v and v > 0]
     if xs:
         lo, hi = min(xs) / 3, max(xs) * 3
@@ -58,7 +63,7 @@ def _panel(ax, rows: List[dict], key: str, cost: str, bound, table, levels):
 
 
 def fig_model(model: str, rows: List[dict], ref: Dict, qs: List[Quantity], levels: List[float],
-              refined: bool = False):
+              refined: bool = False, recommended: List[dict] = ()):
     if not any(r["status"] == "ok" for r in rows):
         return None
     with report_style():
@@ -72,7 +77,8 @@ def fig_model(model: str, rows: List[dict], ref: Dict, qs: List[Quantity], level
                                                 ("rhs_evals", "rhs evaluations"))):
                 ax = axes[i][j]
                 _panel(ax, rows, key, cost, b[0] if b else None, t[0] if t else None,
-                       levels if i == 0 else [])
+                       levels if i == 0 else [],
+                       {r.get("case") for r in recommended} if i == 0 else set())
                 ax.set_xlabel(f"max |error| of {q.title} [{q.unit}]\n(integration error: "
                               f"against the reference on the same tables)", fontsize=7)
                 ax.set_ylabel(label)

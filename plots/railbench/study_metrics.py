@@ -8,6 +8,12 @@ metric_<name> of summary_cases.csv against the swept parameters.
     fig_metric_map(cases, name, keys)      heat map of the metric over the first two parameters
     make_metric_outputs(outdir, written)   study_metric_<name>.png (+ _map.png for two parameters)
 
+Axes are labelled from study_labels.csv, which the study runner writes from the scenario schema
+(workbench/scenario/override_check.hpp: a --set path as words with its SI unit,
+vehicle.groups.primary_longitudinal.stiffness -> "primary longitudinal stiffness [N/m]") and
+from the metrics (unit of the signal or assessment quantity, and the standard's limit where the
+metric has one, e.g. Y/Q 0.8 of EN 14363, drawn as a red line; map cells beyond it in red).
+
 A case whose metric could not be computed (empty field) is left out of the lines and shown as a
 blank cell of the map; summary_cases.csv's message column says why.
 """
@@ -44,6 +50,43 @@ def _number(v: str) -> Optional[float]:
     return x if math.isfinite(x) else None
 
 
+Labels = Dict[Tuple[str, str], dict]
+
+
+def load_labels(outdir: str) -> Labels:
+    """{(kind, name): row} of study_labels.csv (empty when the runner wrote none)."""
+    path = os.path.join(outdir, "study_labels.csv")
+    if not os.path.exists(path):
+        return {}
+    with open(path, newline="") as f:
+        return {(r["kind"], r["name"]): r for r in csv.DictReader(f)}
+
+
+def axis_label(labels: Labels, kind: str, name: str) -> str:
+    """'primary longitudinal stiffness [N/m]'; the raw name when nothing is known."""
+    r = labels.get((kind, name))
+    if not r:
+        return name
+    unit = r.get("unit", "")
+    return f"{r.get('label') or name} [{unit}]" if unit else (r.get("label") or name)
+
+
+def legend_value(labels: Labels, key: str, value: str) -> str:
+    """'vehicle speed = 40 m/s' for one line of the second swept parameter."""
+    r = labels.get(("parameter", key))
+    if not r:
+        return f"{key} = {value}"
+    unit = r.get("unit", "")
+    unit = "" if unit in ("", "-") else " " + unit
+    return f"{r.get('label') or key} = {value}{unit}"
+
+
+def limit_of(labels: Labels, name: str) -> Tuple[Optional[float], str]:
+    """The standard's limit of a metric and where it comes from (None when there is none)."""
+    r = labels.get(("metric", name), {})
+    return _number(r.get("limit", "")), r.get("limit_source", "")
+
+
 def load_cases(outdir: str) -> List[dict]:
     with open(os.path.join(outdir, "summary_cases.csv"), newline="") as f:
         return list(csv.DictReader(f))
@@ -77,7 +120,8 @@ def _value(case: dict, name: str) -> Optional[float]:
     return _number(case.get("metric_" + name, ""))
 
 
-def fig_metric_lines(cases: List[dict], name: str, keys: List[str]):
+def fig_metric_lines(cases: List[dict], name: str, keys: List[str], labels: Labels = None):
+    labels = labels or {}
     if not keys:
         return None
     _, per_case = metric_sweeps(cases)
@@ -101,18 +145,21 @@ def fig_metric_lines(cases: List[dict], name: str, keys: List[str]):
         if pts:
             drawn = True
             ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-",
-                    label=f"{lkey} = {lv}" if lkey else None)
+                    label=legend_value(labels, lkey, lv) if lkey else None)
     if not drawn:
         plt.close(fig)
         return None
     if not numeric:
         ax.set_xticks(range(len(xs)))
         ax.set_xticklabels(xs, rotation=20)
-    ax.set_xlabel(xkey)
-    ax.set_ylabel(name)
+    limit, source = limit_of(labels, name)
+    if limit is not None:
+        ax.axhline(limit, color="#c0392b", ls="--", lw=1.2, label=f"limit {limit:g} ({source})")
+    ax.set_xlabel(axis_label(labels, "parameter", xkey))
+    ax.set_ylabel(axis_label(labels, "metric", name))
     ax.set_title(f"metric {name}")
     ax.grid(True, alpha=0.3)
-    if lkey:
+    if lkey or limit is not None:
         ax.legend(fontsize=8)
     fig.tight_layout()
     return fig
@@ -131,7 +178,8 @@ def metric_grid(cases: List[dict], name: str, keys: List[str]):
     return xs, ys, grid
 
 
-def fig_metric_map(cases: List[dict], name: str, keys: List[str]):
+def fig_metric_map(cases: List[dict], name: str, keys: List[str], labels: Labels = None):
+    labels = labels or {}
     if len(keys) < 2:
         return None
     xs, ys, grid = metric_grid(cases, name, keys)
@@ -143,13 +191,20 @@ def fig_metric_map(cases: List[dict], name: str, keys: List[str]):
     ax.set_xticklabels(xs, rotation=20)
     ax.set_yticks(range(len(ys)))
     ax.set_yticklabels(ys)
-    ax.set_xlabel(keys[0])
-    ax.set_ylabel(keys[1])
+    ax.set_xlabel(axis_label(labels, "parameter", keys[0]))
+    ax.set_ylabel(axis_label(labels, "parameter", keys[1]))
+    limit, source = limit_of(labels, name)
     for (i, j), v in np.ndenumerate(grid):
         if np.isfinite(v):
-            ax.text(j, i, f"{v:.3g}", ha="center", va="center", color="w", fontsize=8)
-    fig.colorbar(im, ax=ax, label=name)
-    ax.set_title(f"metric {name}")
+            over = limit is not None and v > limit
+            ax.text(j, i, f"{v:.3g}", ha="center", va="center",
+                    color="#ff4d4d" if over else "w", fontsize=8,
+                    fontweight="bold" if over else "normal")
+    fig.colorbar(im, ax=ax, label=axis_label(labels, "metric", name))
+    title = f"metric {name}"
+    if limit is not None:
+        title += f"\nlimit {limit:g} ({source}): values above it in red"
+    ax.set_title(title, fontsize=9)
     fig.tight_layout()
     return fig
 
@@ -165,7 +220,8 @@ def make_metric_outputs(outdir: str, written: List[str], dpi: int = DPI) -> None
     if not names:
         return
     keys, _ = metric_sweeps(cases)
+    labels = load_labels(outdir)
     for name in names:
         p = os.path.join(outdir, f"study_metric_{_safe(name)}")
-        save_figure(fig_metric_lines(cases, name, keys), p + ".png", written, dpi)
-        save_figure(fig_metric_map(cases, name, keys), p + "_map.png", written, dpi)
+        save_figure(fig_metric_lines(cases, name, keys, labels), p + ".png", written, dpi)
+        save_figure(fig_metric_map(cases, name, keys, labels), p + "_map.png", written, dpi)

@@ -33,9 +33,10 @@ def _errors(case: Case, ref: Case) -> Optional[Dict[str, Tuple[float, float, str
             if not m.any():
                 continue
             d = (v - rv[:len(m)][m]) * scale
-            d = d[np.isfinite(d)]
-            if not len(d):
-                continue
+            # The rule of workbench precision: a non-finite value (diverged) is an infinite
+            # error, never left out.
+            if not np.all(np.isfinite(d)) or not np.all(np.isfinite(sq[key][:len(s.t)])):
+                d = np.array([math.inf])
             mx = max(mx, float(np.max(np.abs(d))))
             sq_sum += float(np.sum(d * d))
             n += len(d)

@@ -138,6 +138,17 @@ def both(wb: str, out: str, contact: str, fast: bool, start: float):
         amp = f["ramp/window_amplitude"][()]
         check(n >= 3 and amp.max() > 1e-3,
               f"{contact}: {n} runs recorded, ramp starts on a limit cycle ({amp.max()*1e3:.2f} mm)")
+        states = {r.attrs["state"].decode() if isinstance(r.attrs["state"], bytes)
+                  else str(r.attrs["state"]) for r in f["runs"].values()}
+        check(states <= {"ramp", "hunting", "stable", "sustained small-amplitude oscillation",
+                         "not judged"}, f"{contact}: run states {states}")
+    # Each answer says what it is, what to use it for and what amplitude it was judged on.
+    text = p.stdout
+    for answer in ("ramp-down:", "bisection:"):
+        block = text[text.find(answer):]
+        check(answer in text and "use it" in block[:600] and "judged:" in block[:900]
+              and "threshold" in block[:900],
+              f"{contact}: the {answer[:-1]} answer says what it is for and what it judged")
     return a
 
 

@@ -88,6 +88,42 @@ TEST(CriticalSpeedAnalysis, ShortLastWindowDoesNotTurnHuntingIntoDecay) {
   EXPECT_NEAR(v.a_last, 3e-3, 3e-5);
 }
 
+TEST(CriticalSpeedAnalysis, SustainedCycleJustBelowTheThresholdIsNotStable) {
+  // A limit cycle of 0.097 mm that neither grows nor decays, judged against 0.1 mm: the amplitude
+  // is below the threshold, but the motion is sustained, so the run is no proof of stability.
+  const Signal s = harmonic(
+      10.0, [](double) { return 0.097e-3; }, [](double) { return 45.0; });
+  const auto v = cs::judgeKickedRun(cs::windowAmplitudes(s.t, s.y, s.v, 1.0, 1.0), 1e-4, 0.8);
+  ASSERT_TRUE(v.valid);
+  EXPECT_FALSE(v.unstable) << v.why;  // not hunting by the threshold criterion
+  EXPECT_TRUE(v.small_cycle) << v.why;
+  EXPECT_EQ(v.state(), "sustained small-amplitude oscillation");
+  EXPECT_NE(v.why.find("sustained small-amplitude oscillation of 0.09"), std::string::npos)
+      << v.why;
+  EXPECT_EQ(v.why.find("(stable)"), std::string::npos) << v.why;
+  EXPECT_NEAR(v.trend, 1.0, 0.01);
+  EXPECT_DOUBLE_EQ(v.threshold, 1e-4);
+}
+
+TEST(CriticalSpeedAnalysis, MotionDecayedToNoiseIsStable) {
+  // A kick decaying at 3 1/s to 1e-11 m: died out, stable (not a small cycle).
+  const Signal s = harmonic(
+      10.0, [](double t) { return 5e-3 * std::exp(-3.0 * t); }, [](double) { return 45.0; });
+  const auto v = cs::judgeKickedRun(cs::windowAmplitudes(s.t, s.y, s.v, 1.0, 1.0), 1e-4, 0.8);
+  EXPECT_FALSE(v.unstable) << v.why;
+  EXPECT_FALSE(v.small_cycle) << v.why;
+  EXPECT_EQ(v.state(), "stable");
+}
+
+TEST(CriticalSpeedAnalysis, SlowlyDecayingSmallMotionIsStable) {
+  // 0.09 mm decaying by 30 % per second: below the threshold and decaying, stable.
+  const Signal s = harmonic(
+      10.0, [](double t) { return 0.09e-3 * std::exp(-0.36 * t); }, [](double) { return 45.0; });
+  const auto v = cs::judgeKickedRun(cs::windowAmplitudes(s.t, s.y, s.v, 1.0, 1.0), 1e-4, 0.8);
+  EXPECT_FALSE(v.small_cycle) << v.why;
+  EXPECT_EQ(v.state(), "stable");
+}
+
 TEST(CriticalSpeedAnalysis, TooFewWindowsAreNoVerdict) {
   const Signal s = harmonic(
       2.5, [](double) { return 3e-3; }, [](double) { return 80.0; });

@@ -64,3 +64,31 @@ def test_no_metrics_no_figures():
     written = []
     sm.make_metric_outputs(folder, written)
     assert written == []
+
+
+def test_labels_units_and_limit_line():
+    """study_labels.csv (written by the study runner from the schema) names the axes with units,
+    and a metric with a standard limit gets its line (Y/Q 0.8, EN 14363)."""
+    folder = tempfile.mkdtemp(prefix="rb_metric_plots_")
+    write_cases(folder)
+    with open(os.path.join(folder, "study_labels.csv"), "w", newline="") as f:
+        f.write("kind,name,label,unit,limit,limit_source\n"
+                f"parameter,{K},vehicle speed,m/s,,\n"
+                f"parameter,{P},spring1 stiffness,N/m,,\n"
+                "metric,y_max,y_max (y_over_q),-,0.8,EN 14363 limit of y_over_q\n")
+    cases = [c for c in sm.load_cases(folder) if not c["role"]]
+    keys, _ = sm.metric_sweeps(cases)
+    labels = sm.load_labels(folder)
+    fig = sm.fig_metric_lines(cases, "y_max", keys, labels)
+    ax = fig.axes[0]
+    assert ax.get_xlabel() == "vehicle speed [m/s]"
+    assert ax.get_ylabel() == "y_max (y_over_q) [-]"
+    texts = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert "spring1 stiffness = 1e6 N/m" in texts
+    assert any(t.startswith("limit 0.8") and "EN 14363" in t for t in texts)
+    assert any(list(line.get_ydata()) == [0.8, 0.8] for line in ax.get_lines())
+    m = sm.fig_metric_map(cases, "y_max", keys, labels)
+    assert m.axes[0].get_ylabel() == "spring1 stiffness [N/m]"
+    assert "limit 0.8" in m.axes[0].get_title()
+    # Without the file the raw paths stay (an old folder).
+    assert sm.fig_metric_lines(cases, "y_max", keys).axes[0].get_xlabel() == K

@@ -1,6 +1,7 @@
 """`workbench modes` on the Manchester wagon file with KEC and LUT: modes.h5 (/modes), modes.csv
 and the figures are written, the printed table names the hunting and sway modes; hostile options
-are exit 1 with the option named, nothing written."""
+are exit 1 with the option named, nothing written; on the two-axle wagon every unstable mode is
+named at every speed and the linear critical speed is the lowest speed with any unstable mode."""
 import argparse
 import os
 import subprocess
@@ -99,6 +100,45 @@ def vehicle_file_with_overrides(wb, out, failures):
           failures)
 
 
+def two_axle_wagon(wb, out, failures):
+    """A car-body mode unstable below the hunting speed (scenarios/vehicles/two_axle_wagon.lua):
+    the console, modes.csv and modes.h5 name every unstable mode at every speed, and the linear
+    critical speed is the lowest speed with any unstable mode, that mode named."""
+    d = os.path.join(out, "two_axle")
+    rc, so, se = run(wb, ["scenarios/vehicles/two_axle_wagon.lua", "--speeds", "5:60:12",
+                          "--no-plots", "--out", d])
+    check(rc == 0, f"two-axle wagon: exit {rc}: {se}", failures)
+    if rc != 0:
+        return
+    check("UNSTABLE" in so, "two-axle wagon: no mode flagged UNSTABLE in the table", failures)
+    check("10 m/s: car body lower sway" in so and "20 m/s: car body yaw" in so,
+          "two-axle wagon: the unstable car-body modes are not listed per speed", failures)
+    check("first unstable mode: car body" in so,
+          "two-axle wagon: the linear critical speed does not name the car-body mode", failures)
+    check("hunting modes (wheelset/bogie hunting) unstable from: 40.6" in so,
+          "two-axle wagon: the hunting modes' own critical speed is not printed", failures)
+    with h5py.File(os.path.join(d, "modes.h5"), "r") as f:
+        g = f["modes"]
+        vc = g.attrs.get("critical_speed_value", 0.0)
+        check(5.0 < vc < 10.0, f"two-axle wagon: linear critical speed {vc}", failures)
+        mode = g.attrs["critical_mode"]
+        mode = mode.decode() if isinstance(mode, bytes) else mode
+        check(mode.startswith("car body"), f"two-axle wagon: critical_mode {mode}", failures)
+        listed = g.attrs["unstable_modes"]
+        listed = listed.decode() if isinstance(listed, bytes) else listed
+        check("car body yaw" in listed and "wheelset hunting" in listed,
+              f"two-axle wagon: unstable_modes {listed}", failures)
+        i20 = list(g["speeds"][()]).index(20.0)
+        s20 = g[f"speed_{i20}"]
+        labels = [x.decode() if isinstance(x, bytes) else x for x in s20["label"][()]]
+        flagged = [lab for lab, u in zip(labels, s20["unstable"][()]) if u > 0]
+        check(flagged == ["car body yaw"], f"two-axle wagon: unstable at 20 m/s {flagged}",
+              failures)
+    with open(os.path.join(d, "modes.csv")) as f:
+        header = f.readline().strip().split(",")
+    check("unstable" in header, "two-axle wagon: modes.csv has no unstable column", failures)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--workbench", required=True)
@@ -107,6 +147,7 @@ def main():
     failures = []
     hostile(a.workbench, a.out, failures)
     vehicle_file_with_overrides(a.workbench, a.out, failures)
+    two_axle_wagon(a.workbench, a.out, failures)
     for contact in ("kec", "lut"):
         command(a.workbench, a.out, contact, failures)
     for f in failures:

@@ -175,3 +175,61 @@ TEST_P(CriticalSpeedVsKpx, RisesWithStiffness) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Contact, CriticalSpeedVsKpx, ::testing::Values("kec", "lut"));
+
+namespace {
+
+// The two-axle wagon (scenarios/vehicles/two_axle_wagon.lua): its car-body modes lose their
+// damping far below the wheelset hunting speed (at 10 m/s the lower sway, from 15 to 30 m/s the
+// yaw; hunting at about 41 m/s). The linear critical speed is the lowest speed with any unstable
+// mode, named; every unstable mode is reported; the hunting modes' own crossing is kept apart.
+scenario::ScenarioSpec twoAxleWagon() {
+  return app::loadStabilityScene(kRoot + "/scenarios/vehicles/two_axle_wagon.lua", "kec", {}, kRoot,
+                                 outDir("two_axle"))
+      .spec;
+}
+
+TEST(TwoAxleWagon, BodyModeBelowHuntingIsTheLinearCriticalSpeed) {
+  const stability::CriticalSpeed c =
+      stability::linearCriticalSpeed(twoAxleWagon(), 5.0, 60.0, 12, {}, 0.1);
+  ASSERT_TRUE(c.found) << c.why;
+  EXPECT_GT(c.speed, 5.0);
+  EXPECT_LT(c.speed, 10.0) << c.mode;
+  EXPECT_FALSE(c.mode_is_hunting) << c.mode;
+  EXPECT_NE(c.mode.find("car body"), std::string::npos) << c.mode;
+  ASSERT_TRUE(c.hunting_found) << c.hunting_why;
+  EXPECT_GT(c.hunting_speed, 35.0);
+  EXPECT_LT(c.hunting_speed, 50.0);
+  // At 20 m/s the car-body yaw is unstable and no hunting mode is: it is among the unstable modes.
+  const stability::Analysis* at20 = nullptr;
+  for (const auto& a : c.sweep)
+    if (a.speed == 20.0) at20 = &a;
+  ASSERT_NE(at20, nullptr);
+  bool yaw = false;
+  for (std::size_t i : at20->unstableModes()) {
+    EXPECT_FALSE(at20->modes[i].hunting) << stability::describe(at20->modes[i]);
+    yaw = yaw || at20->modes[i].label == "car body yaw";
+  }
+  EXPECT_TRUE(yaw);
+  EXPECT_FALSE(at20->huntingDamping() <= 0.0);  // damped, or no oscillatory hunting mode (NaN)
+  EXPECT_LT(at20->leastDamping(), 0.0);
+}
+
+TEST(TwoAxleWagon, UnstableAtTheLowestSpeedIsBelowTheRange) {
+  const stability::CriticalSpeed c =
+      stability::linearCriticalSpeed(twoAxleWagon(), 20.0, 30.0, 2, {}, 0.1);
+  EXPECT_FALSE(c.found);
+  EXPECT_TRUE(c.below_range);
+  EXPECT_NE(c.why.find("car body yaw"), std::string::npos) << c.why;
+  EXPECT_NE(c.why.find("below the lowest speed"), std::string::npos) << c.why;
+  // 10 m/s steps: unstable at 10 (sway), 20, 30 (yaw), damped at 40, hunting at 50. The sweep's
+  // later crossing (40 -> 50) must not hide the instability at its lowest speed.
+  const stability::CriticalSpeed d =
+      stability::linearCriticalSpeed(twoAxleWagon(), 10.0, 50.0, 5, {}, 0.1);
+  EXPECT_FALSE(d.found) << d.speed;
+  EXPECT_TRUE(d.below_range);
+  EXPECT_NE(d.why.find("car body lower sway"), std::string::npos) << d.why;
+  ASSERT_TRUE(d.hunting_found) << d.hunting_why;
+  EXPECT_NEAR(d.hunting_speed, 40.6, 0.5);
+}
+
+}  // namespace

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "workbench/scenario/lua_host.hpp"
 #include "workbench/scenario/override_check.hpp"
 #include "workbench/scenario/overrides.hpp"
 #include "workbench/scenario/scenario.hpp"
@@ -301,3 +302,31 @@ TEST(NamedParameters, HelpListsTheNamedParameters) {
   EXPECT_EQ(pclose(p), 0);
   EXPECT_EQ(out, text);
 }
+
+namespace {
+
+// A --set path as an axis label: words and the schema's SI unit, an element's or a group's key by
+// its members' kind (a bending spring's stiffness is N m/rad, a spring's N/m).
+TEST(NamedParameters, LabelsWithUnitsFromTheSchema) {
+  rb::scenario::HostOptions ho;
+  ho.root = RB_SOURCE_DIR;
+  rb::scenario::LuaHost host(ho);
+  const rb::scenario::Node tree = host.runFile(kDir + "wagon.lua");
+  auto label = [&](const std::string& path) {
+    const auto l = rb::scenario::parameterLabel(tree, path);
+    return l.label + " [" + l.unit + "]";
+  };
+  EXPECT_EQ(label("vehicle.groups.primary_longitudinal.stiffness"),
+            "primary longitudinal stiffness [N/m]");
+  EXPECT_EQ(label("vehicle.elements.sec_bend_bogie1_l.stiffness"),
+            "sec bend bogie1 l stiffness [N m/rad]");
+  EXPECT_EQ(label("vehicle.speed"), "vehicle speed [m/s]");
+  EXPECT_EQ(label("vehicle.bodies.car.mass"), "car mass [kg]");
+  EXPECT_EQ(label("track.segments[1].length"), "track segments 1 length [m]");
+  EXPECT_EQ(label("run.duration"), "run duration [s]");
+  EXPECT_EQ(label("vehicle.initial.ws1.y"), "initial ws1 y [m]");
+  // A path that names nothing keeps its text, without a unit.
+  EXPECT_EQ(label("vehicle.groups.nothing.stiffness"), "vehicle.groups.nothing.stiffness []");
+}
+
+}  // namespace

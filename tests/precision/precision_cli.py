@@ -107,8 +107,29 @@ def default_suite(wb, out):
                             for r in later):
             problems.append(f"--budget: later rungs not skipped: {later}")
 
-    # Bad input: exit 1 naming the option, nothing run.
+    # Plots off: the answer is the engine's, printed and written all the same.
+    noplots = os.path.join(out, "noplots")
+    shutil.rmtree(noplots, ignore_errors=True)
+    p = subprocess.run([wb, "precision", SMALL, "--out", noplots, "--jobs", "2", "--quick",
+                        "--distance", "45"], capture_output=True, text=True, timeout=3000,
+                       env={**os.environ, "RAILBENCH_STUDY_PLOTS": "0"})
+    if p.returncode != 0:
+        problems.append(f"plots off: exit {p.returncode}: {(p.stdout + p.stderr)[-1500:]}")
+    else:
+        if "Recommendation (computed by the engine)" not in p.stdout:
+            problems.append("plots off: no recommendation printed")
+        recs = rows(os.path.join(noplots, "precision_recommendation.csv"))
+        if [r["level"] for r in recs] != ["1", "0.1", "0.01"] or not recs[0]["setting"]:
+            problems.append(f"plots off: recommendation {recs}")
+        with h5py.File(os.path.join(noplots, "precision.h5"), "r") as f:
+            if "recommendation/setting" not in f or "reference_bound" not in f:
+                problems.append("plots off: precision.h5 lacks the engine's answer")
+
+    # Bad input: exit 1 naming the option, nothing run (a mistyped quantity is refused before
+    # the matrix, not after it).
     for extra, word in ((["--integrators", "rk5"], "--integrators"),
+                        (["--quantities", "y,Ymax"], "--quantities"),
+                        (["--set", "run.output.every=0.005", "--steps", "2e-3"], "--steps"),
                         (["--levels", "0.1,-1"], "--levels"),
                         (["--set", "solver.methd=abm"], "methd")):
         code, text = run(wb, SMALL, os.path.join(out, "bad"), "--quick", *extra)

@@ -1,6 +1,6 @@
 """The numbers of `workbench precision` on result files of known content: the errors against a
 reference, the reference's verification bound (a loose reference must be flagged), the Pareto
-front and the recommendation rule (plots/railbench/precision_errors.py)."""
+front (plots/railbench/precision_errors.py); a diverged run's error is infinite, the engine's rule."""
 import math
 import os
 
@@ -8,8 +8,7 @@ import h5py
 import numpy as np
 import pytest
 
-from railbench.precision_errors import (QuantityError, errors, parse_quantities, pareto,
-                                        recommend, verify)
+from railbench.precision_errors import QuantityError, errors, parse_quantities, pareto, verify
 
 
 def _result(path, t, ws, contact=True, other=None):
@@ -86,18 +85,18 @@ def test_loose_reference_is_flagged_unverified(tmp_path):
     assert not verify({"y": (math.nan, 0.0), "yaw": (0.0, 0.0)}, qs, 0.1, True)[0]
 
 
-def test_pareto_and_recommendation():
+def test_pareto():
     pts = [(1.0, 1.0), (0.5, 2.0), (0.8, 3.0), (0.01, 10.0), (0.02, 20.0)]
     assert pareto(pts) == [0, 1, 3]
-    rows = [dict(ok=True, error=e, cpu=c, rhs_evals=c * 100, label=str(i))
-            for i, (e, c) in enumerate(pts)]
-    rows.append(dict(ok=False, error=1e-6, cpu=0.1, rhs_evals=1, label="failed"))
-    best, note = recommend(rows, 0.6, 1e-4)
-    assert best["label"] == "1" and note == ""
-    best, note = recommend(rows, 0.001, 1e-4)
-    assert best is None and note == "none reaches it"
-    best, note = recommend(rows, 0.05, 0.1)
-    assert best["label"] == "3" and "not resolvable" in note
+
+
+def test_diverged_run_has_infinite_error(tmp_path):
+    t = np.linspace(0, 1, 5)
+    ref = _result(str(tmp_path / "ref.h5"), t, {"ws1": (np.zeros(5), np.zeros(5))})
+    run = _result(str(tmp_path / "run.h5"), t,
+                  {"ws1": ([0, 1e-6, math.nan, 1e-6, 0], np.zeros(5))})
+    e = errors(run, ref, parse_quantities("y,yaw"))
+    assert math.isinf(e["y"][0]) and e["yaw"][0] == 0.0
 
 
 def test_bad_quantity():

@@ -1,6 +1,7 @@
 #include "workbench/app/critical_speed.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -55,12 +56,27 @@ struct Search {
   double bisection_critical = std::nan("");
   double bracket_low = std::nan("");
   double bracket_high = std::nan("");
-  double linear = std::nan("");  // [m/s] linear critical speed (workbench modes), when found
+  // [m/s] The linear critical speed of the hunting modes (workbench modes), when found: where the
+  // search starts.
+  double linear = std::nan("");
+  LinearAnswer linear_all;  // the linear answer of every mode (the lowest unstable one)
+  double ramp_start_amplitude = std::nan("");  // [m] largest window amplitude of the ramp
+  double ramp_end_amplitude = std::nan("");    // [m] last window amplitude of the ramp
+  double ramp_max_ratio = std::nan("");        // EN 14363: largest sliding rms / limit of the ramp
+  // What a reader must know beside the answers: runs whose motion neither died out nor reached
+  // the threshold (sustained small-amplitude oscillations), with speed and amplitude.
+  std::vector<std::string> caveats;
 };
 
 std::string mps(double v) {
   std::ostringstream s;
   s << std::fixed << std::setprecision(2) << v << " m/s";
+  return s.str();
+}
+
+std::string mm(double v) {
+  std::ostringstream s;
+  s << std::setprecision(3) << v * 1e3 << " mm";
   return s.str();
 }
 
@@ -75,7 +91,10 @@ std::string runName(const std::string& kind, std::size_t index, double v) {
 std::string describe(const KickedRun& r, bool en) {
   const bool unstable = critical::runUnstable(r, en);
   std::ostringstream m;
-  m << (unstable ? "unstable" : "stable") << " (";
+  m << (unstable                ? "unstable"
+        : r.verdict.small_cycle ? "NOT stable: sustained small-amplitude oscillation"
+                                : "stable")
+    << " (";
   if (en) m << "EN 14363 sliding rms / limit " << r.en_max_ratio << "; ";
   m << r.verdict.why << ")";
   return m.str();
@@ -94,6 +113,14 @@ const KickedRun& constantRun(Search& s, const std::string& kind, double v, doubl
   KickedRun r =
       critical::runKicked(s.setup, kind, runName(kind, s.runs.size(), v), v, 0.0, duration);
   noteFailure(s, r);
+  if (r.verdict.small_cycle) {
+    std::ostringstream m;
+    m << kind << " run at " << mps(v) << ": sustained small-amplitude oscillation of "
+      << mm(r.verdict.a_last) << " (amplitude ratio per window " << std::setprecision(3)
+      << r.verdict.trend << "), below the " << mm(s.setup.threshold)
+      << " threshold: counted as not hunting by the threshold, but not stable";
+    s.caveats.push_back(m.str());
+  }
   s.runs.push_back(std::move(r));
   return s.runs.back();
 }
@@ -140,6 +167,23 @@ void rampDown(const CriticalSpeedOptions& o, Search& s) {
   const critical::RampVerdict v = o.criterion == "en14363"
                                       ? critical::lastExceedance(r.en_speed, r.en_ratio)
                                       : critical::rampCriticalSpeed(r.windows, s.setup.threshold);
+  if (!r.en_ratio.empty())
+    s.ramp_max_ratio = *std::max_element(r.en_ratio.begin(), r.en_ratio.end());
+  if (!r.windows.empty()) {
+    s.ramp_start_amplitude =
+        critical::rampCriticalSpeed(r.windows, s.setup.threshold).start_amplitude;
+    s.ramp_end_amplitude = r.windows.back().amplitude;
+    // Below the threshold at the end but not died out: the ramp's answer is where the cycle
+    // fell below the threshold, not where the motion ceased.
+    if (s.ramp_end_amplitude >= critical::kRestFraction * s.setup.threshold &&
+        s.ramp_end_amplitude < s.setup.threshold) {
+      std::ostringstream m;
+      m << "ramp: at its end speed " << mps(s.end) << " the lateral motion is still "
+        << mm(s.ramp_end_amplitude) << " (below the " << mm(s.setup.threshold)
+        << " threshold, not died out)";
+      s.caveats.push_back(m.str());
+    }
+  }
   if (v.found) {
     s.ramp_critical = v.critical_speed;
   } else if (v.hunting_at_end && r.ok) {
@@ -200,6 +244,8 @@ io::CriticalSpeedRun record(const KickedRun& r, const std::string& name, bool en
   o.a_first = r.verdict.a_first;
   o.a_mid = r.verdict.a_mid;
   o.a_last = r.verdict.a_last;
+  o.trend = r.verdict.trend;
+  o.state = r.kind == "ramp" ? std::string("ramp") : r.verdict.state();
   for (const auto& w : r.windows) {
     o.window_t0.push_back(w.t0);
     o.window_t1.push_back(w.t1);
@@ -233,13 +279,17 @@ io::CriticalSpeedResult resultOf(const CriticalSpeedOptions& o, const StabilityS
                           : scene.spec.contact.method == dynamics::ContactMethod::Lut ? "lut"
                                                                                       : "kec"},
               {"status", s.findings.empty() ? "ok" : "incomplete"},
-              {"findings", join(s.findings, "\n")}};
+              {"findings", join(s.findings, "\n")},
+              {"caveats", join(s.caveats, "\n")},
+              {"linear_mode", s.linear_all.mode},
+              {"linear_note", s.linear_all.note}};
   auto number = [&](const char* name, double v) {
     if (std::isfinite(v)) res.numbers.emplace_back(name, v);
   };
   number("critical_speed_ramp", s.ramp_critical);
   number("critical_speed_bisection", s.bisection_critical);
   number("critical_speed_linear", s.linear);
+  number("critical_speed_linear_any_mode", s.linear_all.any);
   number("bracket_low", s.bracket_low);
   number("bracket_high", s.bracket_high);
   number("start_speed", s.start);
@@ -262,6 +312,7 @@ io::CriticalSpeedResult resultOf(const CriticalSpeedOptions& o, const StabilityS
       res.bisection_speed.push_back(r.v0);
       res.bisection_amplitude.push_back(r.verdict.a_last);
       res.bisection_unstable.push_back(critical::runUnstable(r, en) ? 1.0 : 0.0);
+      res.bisection_small.push_back(r.verdict.small_cycle ? 1.0 : 0.0);
     }
   }
   return res;
@@ -285,6 +336,28 @@ void writeCsv(const std::string& path, const Search& s, bool en) {
   if (!f) throw io::WriteError("cannot write " + path);
 }
 
+// The last constant-speed run at speed v (nullptr when none).
+const KickedRun* runAt(const Search& s, double v) {
+  const KickedRun* out = nullptr;
+  for (const auto& r : s.runs)
+    if (r.kind != "ramp" && r.v0 == v) out = &r;
+  return out;
+}
+
+// What a constant-speed run was judged on: amplitude and verdict, or the EN 14363 ratio.
+std::string judged(const KickedRun* r, bool en) {
+  if (r == nullptr) return "no run";
+  std::ostringstream m;
+  m << "V " << mps(r->v0) << ": ";
+  if (en)
+    m << "EN 14363 sliding rms / limit " << r->en_max_ratio;
+  else
+    m << "last-window amplitude " << mm(r->verdict.a_last) << " (" << r->verdict.state() << ")";
+  return m.str();
+}
+
+// Every answer the command computed, each with what it is, what to use it for, and the amplitude
+// (or EN 14363 ratio) it was judged on against its threshold.
 void printSummary(const CriticalSpeedOptions& o, const Search& s) {
   double cpu = 0.0;
   long evals = 0;
@@ -295,17 +368,53 @@ void printSummary(const CriticalSpeedOptions& o, const Search& s) {
               << r.acceleration << " m/s^2, " << r.duration << " s: " << (r.ok ? "ok" : "FAILED")
               << ", CPU " << r.cpu_s << " s, " << r.rhs_evals << " rhs evaluations\n";
   }
-  std::cout << "critical speed (" << o.criterion << " criterion, kick " << o.kick * 1e3
-            << " mm, threshold " << s.setup.threshold * 1e3 << " mm):\n";
+  const bool en = o.criterion == "en14363";
+  std::cout << "critical speed (" << o.criterion << " criterion, kick " << o.kick * 1e3 << " mm, "
+            << (en ? std::string("sliding rms against its EN 14363 limit")
+                   : "threshold " + mm(s.setup.threshold))
+            << "):\n";
+  if (std::isfinite(s.linear_all.any) || !s.linear_all.mode.empty()) {
+    std::cout
+        << "  linear, any mode (eigenvalues, workbench modes): "
+        << (std::isfinite(s.linear_all.any) ? mps(s.linear_all.any) : s.linear_all.note)
+        << "\n      the lowest speed at which a mode of the linearised vehicle on the centred "
+           "track loses its damping"
+        << (s.linear_all.mode.empty() ? "" : " (" + s.linear_all.mode + ")")
+        << ";\n      use it for small-disturbance stability and design comparison; no "
+           "amplitude is judged (eigenvalues: any small motion grows above it)\n";
+  }
   if (std::isfinite(s.linear))
-    std::cout << "  linear (eigenvalues, workbench modes): " << mps(s.linear) << "\n";
+    std::cout << "  linear, hunting modes: " << mps(s.linear)
+              << "\n      where the wheelset/bogie hunting modes lose their damping; the nonlinear "
+                 "search starts above it;\n      hunting limit cycles can exist below it "
+                 "(subcritical): it is no safe speed by itself\n";
   if (std::isfinite(s.ramp_critical))
     std::cout << "  ramp-down: " << mps(s.ramp_critical) << " (deceleration " << o.deceleration
-              << " m/s^2 from " << mps(s.start) << ")\n";
+              << " m/s^2 from " << mps(s.start) << ")\n      the speed at which the kicked "
+              << (en ? "EN 14363 sliding rms fell below its limit"
+                     : "limit cycle fell below the threshold")
+              << " for the last time while decelerating;\n      use it as the nonlinear critical "
+                 "speed (the lowest speed with sustained hunting); judged: "
+              << (en ? "EN 14363 sliding rms / limit against 1 (largest " +
+                           formatNumber(s.ramp_max_ratio, 3) + ")"
+                     : "window amplitude " + mm(s.ramp_start_amplitude) +
+                           " at the start against the threshold " + mm(s.setup.threshold) + ", " +
+                           mm(s.ramp_end_amplitude) + " at the end")
+              << "\n";
   if (std::isfinite(s.bisection_critical))
     std::cout << "  bisection: " << mps(s.bisection_critical) << " (bracket " << mps(s.bracket_low)
-              << " .. " << mps(s.bracket_high) << ")\n";
+              << " .. " << mps(s.bracket_high)
+              << ")\n      between the fastest constant-speed kicked run judged not hunting and "
+                 "the slowest judged hunting;\n      use it to check the ramp (no deceleration "
+                 "effect); judged: "
+              << judged(runAt(s, s.bracket_low), en) << "; " << judged(runAt(s, s.bracket_high), en)
+              << (en ? "" : "; threshold " + mm(s.setup.threshold)) << "\n";
+  if (en)
+    std::cout << "  the EN 14363 criterion (sliding rms of the bogie-frame lateral acceleration "
+                 "against its limit) decided the ramp and the bisection: the answers are the "
+                 "acceptance criterion's, for a report\n";
   for (const auto& f : s.findings) std::cout << "  finding: " << f << "\n";
+  for (const auto& c : s.caveats) std::cout << "  caveat: " << c << "\n";
   std::cout << "runs: " << s.runs.size() << ", CPU " << cpu << " s, " << evals
             << " rhs evaluations\n";
 }
@@ -375,9 +484,10 @@ double defaultStartSpeed(const StabilityScene& scene) {
   return std::max(scene.spec.vehicle.speed, 10.0);
 }
 
-double linearCriticalSpeed(const StabilityScene& scene, double max_speed,
-                           const std::string& table_cache, std::string& note) {
-  if (!scene.spec.has_contact || max_speed <= 10.0) return std::nan("");
+LinearAnswer linearCriticalSpeed(const StabilityScene& scene, double max_speed,
+                                 const std::string& table_cache) {
+  LinearAnswer out;
+  if (!scene.spec.has_contact || max_speed <= 10.0) return out;
   stability::Options so;
   so.table_cache = table_cache;
   try {
@@ -385,12 +495,18 @@ double linearCriticalSpeed(const StabilityScene& scene, double max_speed,
     const int n = std::max(2, static_cast<int>(std::ceil((max_speed - 10.0) / 10.0)) + 1);
     const stability::CriticalSpeed c =
         stability::linearCriticalSpeed(scene.spec, 10.0, max_speed, n, so, 0.1);
-    if (c.found) return c.speed;
-    note = "linear critical speed: " + c.why;
+    if (c.found) out.any = c.speed;
+    out.mode = c.mode;
+    if (!c.found) out.note = c.why;
+    if (c.hunting_found)
+      out.hunting = c.hunting_speed;
+    else
+      out.hunting_note = "linear critical speed of the hunting modes: " + c.hunting_why;
   } catch (const stability::Failure& e) {
-    note = std::string("linear critical speed: ") + e.what();
+    out.note = e.what();
+    out.hunting_note = std::string("linear critical speed: ") + e.what();
   }
-  return std::nan("");
+  return out;
 }
 
 void checkCriticalSpeedOptions(const CriticalSpeedOptions& o) {
@@ -452,9 +568,19 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
   s.setup.decay = o.decay;
   if (integ::isFixedStep(scene.spec.solver.method)) s.setup.step_grid = scene.spec.solver.step;
   if (o.from <= 0.0) {
-    std::string note;
-    s.linear = linearCriticalSpeed(scene, o.max_speed, s.setup.table_cache, note);
-    if (!note.empty()) std::cout << note << "; the start is probed from the scene's speed\n";
+    s.linear_all = linearCriticalSpeed(scene, o.max_speed, s.setup.table_cache);
+    s.linear = s.linear_all.hunting;
+    if (!s.linear_all.hunting_note.empty())
+      std::cout << s.linear_all.hunting_note << "; the start is probed from the scene's speed\n";
+    // A mode other than hunting loses its damping first: the nonlinear answers below are the
+    // hunting limit, and the vehicle is not stable below them.
+    const bool earlier = !std::isfinite(s.linear_all.any) || !std::isfinite(s.linear) ||
+                         s.linear_all.any < s.linear - 1e-9;
+    if (!s.linear_all.mode.empty() && earlier)
+      s.caveats.push_back("linear: a mode is unstable below the hunting speed (" +
+                          s.linear_all.mode +
+                          "): the ramp and bisection answers are the hunting limit, not the "
+                          "lower end of a stable range");
   }
   try {
     search(o, scene, s);

@@ -12,6 +12,7 @@
 // Output folder: critical_speed.h5 (workbench/io/critical_speed_file.hpp), critical_speed.csv
 // (one row per window of every run), runs/*.h5 (each kicked run, an ordinary result file),
 // scene.lua for a vehicle file, critical_speed.png (plots/railbench/critical_speed.py).
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -49,11 +50,19 @@ CLI::App* addCriticalSpeedCommand(CLI::App& app, CriticalSpeedOptions& options);
 // when that run does not hunt (or there is no linear critical speed below --max-speed), it probes
 // upwards from the scene's vehicle speed (defaultStartSpeed) by factors of 1.2.
 double defaultStartSpeed(const StabilityScene& scene);
-// The linear critical speed of the scene (workbench/stability: the speed at which the least
-// damped hunting mode loses its damping) between 10 m/s and max_speed; NaN with `note` saying
-// why when there is none (no contact, none in range, no steady state).
-double linearCriticalSpeed(const StabilityScene& scene, double max_speed,
-                           const std::string& table_cache, std::string& note);
+// The linear answers of the scene (workbench/stability) between 10 m/s and max_speed: the lowest
+// speed at which any mode is unstable (with that mode), and the speed at which the least damped
+// hunting mode loses its damping (where the nonlinear search starts). NaN with a note saying why
+// when there is none (no contact, none in range or below it, no steady state).
+struct LinearAnswer {
+  double any = std::numeric_limits<double>::quiet_NaN();      // [m/s]
+  double hunting = std::numeric_limits<double>::quiet_NaN();  // [m/s]
+  std::string mode;  // the first unstable mode (stability::describe)
+  std::string note;  // why `any` is NaN
+  std::string hunting_note;  // why `hunting` is NaN
+};
+LinearAnswer linearCriticalSpeed(const StabilityScene& scene, double max_speed,
+                                 const std::string& table_cache);
 
 // The amplitude threshold: --threshold, else 0.1 mm on a track without irregularities (no forced
 // response: any motion that stays above the numerical noise, orders of magnitude below, after the

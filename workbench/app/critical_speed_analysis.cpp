@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <iomanip>
 #include <sstream>
 
 namespace rb::app::critical {
@@ -69,19 +70,44 @@ KickedVerdict judgeKickedRun(const std::vector<Window>& all, double threshold, d
     return v;
   }
   v.valid = true;
+  v.threshold = threshold;
+  const std::size_t mid = windows.size() / 2;
   v.a_first = windows.front().amplitude;
-  v.a_mid = windows[windows.size() / 2].amplitude;
+  v.a_mid = windows[mid].amplitude;
   v.a_last = windows.back().amplitude;
+  v.a_prev = windows[windows.size() - 2].amplitude;
+  const double span = static_cast<double>(windows.size() - 1 - mid);
+  v.trend = v.a_mid > 0.0 && span > 0.0 ? std::pow(v.a_last / v.a_mid, 1.0 / span) : 0.0;
   const bool sustained = v.a_last >= decay * v.a_mid;
+  // The last cycles: a motion that still shrinks from the window before the last by the decay
+  // factor is decaying even when the middle window happened to be low.
+  const bool still_decaying = v.a_last < decay * v.a_prev;
+  const bool at_rest = v.a_last < kRestFraction * threshold;
   v.unstable = v.a_last >= threshold && sustained;
+  v.small_cycle = !v.unstable && !at_rest && v.a_last < threshold && sustained && !still_decaying;
   std::ostringstream s;
   s << "amplitude first " << v.a_first * 1e3 << " mm, middle " << v.a_mid * 1e3 << " mm, last "
-    << v.a_last * 1e3 << " mm: "
-    << (v.unstable             ? "sustained (hunting)"
-        : v.a_last < threshold ? "below the threshold (stable)"
-                               : "decaying (stable)");
+    << v.a_last * 1e3 << " mm, ratio per window " << v.trend << ", threshold " << threshold * 1e3
+    << " mm: ";
+  if (v.unstable)
+    s << "sustained (hunting)";
+  else if (v.small_cycle)
+    s << "sustained small-amplitude oscillation of " << std::setprecision(3) << v.a_last * 1e3
+      << " mm (not decayed by the decay factor over the second half, not died out; below the "
+         "threshold: not stable, not counted as hunting)";
+  else if (at_rest)
+    s << "died out (stable)";
+  else
+    s << "decaying (stable)";
   v.why = s.str();
   return v;
+}
+
+std::string KickedVerdict::state() const {
+  if (!valid) return "not judged";
+  if (unstable) return "hunting";
+  if (small_cycle) return "sustained small-amplitude oscillation";
+  return "stable";
 }
 
 RampVerdict lastExceedance(std::span<const double> speed, std::span<const double> ratio) {

@@ -35,13 +35,27 @@ std::vector<Window> windowAmplitudes(std::span<const double> t,
 // decayed by the factor `decay` over the second half of the run). The second half, not the
 // first window, is the reference so that a kick larger than the limit cycle, which shrinks onto
 // the cycle during the first half, still counts as hunting.
+// Below the threshold the amplitude alone proves nothing: a motion that has not decayed over the
+// second half (a_last >= decay * a_mid, and the last window not smaller than the one before by the
+// factor decay either) is a sustained small-amplitude oscillation, a small limit cycle or a mode at
+// the edge of its damping, not a stable run. It is kept apart (small_cycle) with its amplitude,
+// and only called "at rest" (stable) when it has died out to below kRestFraction of the threshold
+// (there the numerical noise of the run, not the vehicle, sets the amplitude).
+inline constexpr double kRestFraction = 0.01;
 struct KickedVerdict {
-  bool valid = false;     // enough windows (at least 3) to judge
-  bool unstable = false;  // limit cycle (hunting) or growth
-  double a_first = 0.0;   // [m]
-  double a_mid = 0.0;     // [m]
-  double a_last = 0.0;    // [m]
-  std::string why;        // one line: the numbers behind the verdict
+  bool valid = false;        // enough windows (at least 3) to judge
+  bool unstable = false;     // limit cycle at or above the threshold (hunting) or growth
+  bool small_cycle = false;  // sustained below the threshold: neither hunting nor stable
+  double a_first = 0.0;      // [m]
+  double a_mid = 0.0;        // [m]
+  double a_last = 0.0;       // [m]
+  double a_prev = 0.0;       // [m] the window before the last
+  double threshold = 0.0;    // [m] the threshold it was judged against
+  // Amplitude ratio per window over the second half, (a_last / a_mid)^(1 / windows): < 1 decays,
+  // 1 sustained, > 1 grows.
+  double trend = 0.0;
+  std::string why;  // one line: the numbers behind the verdict
+  std::string state() const;  // "hunting", "sustained small-amplitude oscillation", "stable", ...
 };
 KickedVerdict judgeKickedRun(const std::vector<Window>& windows, double threshold, double decay);
 

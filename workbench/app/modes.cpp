@@ -73,6 +73,7 @@ io::ModesAtSpeed toFile(const stability::Analysis& a) {
     s.labels.push_back(m.label);
     s.dominant.push_back(m.dominant);
     s.hunting.push_back(m.hunting ? 1.0 : 0.0);
+    s.unstable.push_back(stability::unstable(m) ? 1.0 : 0.0);
     s.participation.insert(s.participation.end(), m.participation.begin(), m.participation.end());
   }
   s.residual = a.steady.residual;
@@ -85,6 +86,7 @@ io::ModesAtSpeed toFile(const stability::Analysis& a) {
   s.step_check = a.step_check;
   s.step_check_ok = a.step_check_ok;
   s.hunting_damping = a.huntingDamping();
+  s.least_damping = a.leastDamping();
   s.cpu_s = a.cpu_s;
   return s;
 }
@@ -92,19 +94,32 @@ io::ModesAtSpeed toFile(const stability::Analysis& a) {
 void writeCsv(const std::string& path, const std::vector<stability::Analysis>& all) {
   std::ofstream f(path);
   f << "speed_m_s,mode,re_1_s,im_1_s,frequency_hz,damping_ratio,label,dominant,hunting,"
-       "step_change\n";
+       "step_change,unstable\n";
   f.precision(10);
   for (const auto& a : all)
     for (std::size_t i = 0; i < a.modes.size(); ++i) {
       const auto& m = a.modes[i];
       f << a.speed << "," << i << "," << m.eigenvalue.real() << "," << m.eigenvalue.imag() << ","
         << m.frequency_hz << "," << m.damping_ratio << "," << m.label << "," << m.dominant << ","
-        << (m.hunting ? 1 : 0) << "," << m.step_change << "\n";
+        << (m.hunting ? 1 : 0) << "," << m.step_change << "," << (stability::unstable(m) ? 1 : 0)
+        << "\n";
     }
   if (!f) throw InputError({path, 0}, "cannot write the modes table");
 }
 
-// The body modes below 30 Hz (the stiff creep and series modes are in the files).
+// "V m/s: mode; mode" naming every unstable mode at one speed ("" when none).
+std::string unstableLine(const stability::Analysis& a) {
+  std::string s;
+  for (std::size_t i : a.unstableModes())
+    s += (s.empty() ? "" : "; ") + stability::describe(a.modes[i]);
+  if (s.empty()) return s;
+  std::ostringstream t;
+  t << a.speed << " m/s: " << s;
+  return t.str();
+}
+
+// The body modes below 30 Hz (the stiff creep and series modes are in the files), and every
+// unstable mode whatever its kind or frequency.
 void printSpeed(const stability::Analysis& a) {
   std::printf(
       "\nV = %.2f m/s (%s, %s, spin %s): steady residual %.2e (%d Newton iterations%s), max |ws "
@@ -114,10 +129,17 @@ void printSpeed(const stability::Analysis& a) {
       a.step_check, a.step_check_ok ? "passed" : "FAILED", a.rhs_evaluations, a.cpu_s);
   std::printf("  %-34s %10s %10s %9s  %s\n", "mode", "f [Hz]", "zeta [-]", "Re [1/s]", "dominant");
   for (const auto& m : a.modes) {
-    if (!m.oscillatory || m.frequency_hz >= 30.0) continue;
-    std::printf("  %-34s %10.3f %10.4f %9.3f  %s\n", m.label.c_str(), m.frequency_hz,
-                m.damping_ratio, m.eigenvalue.real(), m.dominant.c_str());
+    const bool bad = stability::unstable(m);
+    if (!bad && (!m.oscillatory || m.frequency_hz >= 30.0)) continue;
+    std::printf("  %-34s %10.3f %10.4f %9.3f  %s%s\n", m.label.c_str(), m.frequency_hz,
+                m.damping_ratio, m.eigenvalue.real(), m.dominant.c_str(),
+                bad ? "  UNSTABLE" : "");
   }
+  const std::size_t n = a.unstableModes().size();
+  if (n == 0)
+    std::printf("  every mode damped\n");
+  else
+    std::printf("  %zu unstable mode%s at %.2f m/s\n", n, n == 1 ? "" : "s", a.speed);
 }
 
 io::ModesSummary summaryOf(const stability::CriticalSpeed& c, const stability::Analysis& first,
@@ -131,9 +153,20 @@ io::ModesSummary summaryOf(const stability::CriticalSpeed& c, const stability::A
   s.cpu_s = c.cpu_s;
   s.rhs_evaluations = c.rhs_evaluations;
   for (const auto& r : c.refinement) {
-    if (!std::isfinite(r.huntingDamping())) continue;  // no hunting mode there: c.why says so
+    if (!std::isfinite(r.leastDamping())) continue;  // no damped mode there: c.why says so
     s.refinement_speeds.push_back(r.speed);
-    s.refinement_damping.push_back(r.huntingDamping());
+    s.refinement_damping.push_back(r.leastDamping());
+  }
+  for (const auto& a : c.sweep)
+    if (const std::string u = unstableLine(a); !u.empty()) s.unstable.push_back(u);
+  s.critical_mode = c.mode;
+  if (c.hunting_found) {
+    s.hunting_speed = c.hunting_speed;
+    std::ostringstream t;
+    t << c.hunting_speed;
+    s.hunting = t.str();
+  } else {
+    s.hunting = sweep ? c.hunting_why : "none in range (one speed: no sweep)";
   }
   if (c.found && !c.why.empty()) s.notes.push_back("linear critical speed: " + c.why);
   if (c.found) {
@@ -145,6 +178,8 @@ io::ModesSummary summaryOf(const stability::CriticalSpeed& c, const stability::A
     std::ostringstream t;
     t << c.speed;
     s.critical = t.str();
+  } else if (c.below_range) {
+    s.critical = c.why;
   } else {
     s.critical = sweep ? c.why : "none in range (one speed: no sweep)";
   }
@@ -211,8 +246,22 @@ int runModes(const ModesOptions& o) {
   const std::string h5 = (fs::path(so.out) / "modes.h5").string();
   io::writeModesFile(h5, rows, sum);
   writeCsv((fs::path(so.out) / "modes.csv").string(), crit.sweep);
-  std::printf("\nlinear critical speed: %s%s\ncost: %.2f s CPU, %lld rhs evaluations\nwrote %s\n",
-              sum.critical.c_str(), crit.found ? " m/s" : "", sum.cpu_s,
+  // Every unstable mode of the sweep, then the linear critical speed: the lowest speed at which
+  // any mode is unstable (a car-body mode can go before hunting), and the hunting modes' own.
+  if (sum.unstable.empty()) {
+    std::printf("\nunstable modes: none at the speeds analysed\n");
+  } else {
+    std::printf("\nunstable modes (every one, at every speed analysed):\n");
+    for (const auto& u : sum.unstable) std::printf("  %s\n", u.c_str());
+  }
+  std::printf("linear critical speed (lowest speed with any unstable mode): %s%s\n",
+              sum.critical.c_str(), crit.found ? " m/s" : "");
+  if (!sum.critical_mode.empty())
+    std::printf("  %s mode: %s\n", crit.found ? "first unstable" : "least damped unstable",
+                sum.critical_mode.c_str());
+  std::printf("hunting modes (wheelset/bogie hunting) unstable from: %s%s\n", sum.hunting.c_str(),
+              crit.hunting_found ? " m/s" : "");
+  std::printf("cost: %.2f s CPU, %lld rhs evaluations\nwrote %s\n", sum.cpu_s,
               static_cast<long long>(sum.rhs_evaluations), h5.c_str());
   if (crit.found && std::isfinite(crit.step_uncertainty))
     std::printf("finite-difference step: the critical speed moves by up to %.2g m/s (step check)\n",

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <thread>
 
+#include "workbench/app/precision_answer.hpp"
 #include "workbench/app/precision_plan.hpp"
 #include "workbench/app/study.hpp"
 #include "workbench/core/error.hpp"
@@ -145,6 +146,7 @@ void printPlan(const Plan& p, const PrecisionOptions& o) {
   for (const auto& nt : p.notes)
     std::cout << "  note: " << nt.model << (nt.integrator.empty() ? "" : " " + nt.integrator)
               << ": " << nt.text << "\n";
+  for (const auto& a : p.adaptations) std::cout << "  adapted: " << a << "\n";
 }
 
 void writeText(const fs::path& path, const std::string& text) {
@@ -233,6 +235,15 @@ int runPrecision(const PrecisionOptions& given) {
   const int refCode = runStage(p, o, out / "reference", refs, 1);
   const int caseCode = runLadders(p, o, out / "cases", start);
   writeText(out / "precision_plan.csv", precision::planCsv(p));
+  // The answer is the engine's: computed, written and printed here whether or not figures follow.
+  const precision::Answer answer = precision::computeAnswer(p, out.string(), o.repeats);
+  writeText(out / "precision_recommendation.csv", precision::recommendationCsv(answer));
+  precision::writeAnswerH5(answer, (out / "precision.h5").string());
+  precision::printAnswer(answer, std::cout);
+  for (const auto& r : answer.references)
+    if (!r.verified)
+      std::cerr << "precision: WARNING: the reference of " << r.model << " is UNVERIFIED: " << r.why
+                << "; its errors are not trustworthy below that difference\n";
 
   StudyOptions so;
   so.root = o.root;

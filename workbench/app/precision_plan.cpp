@@ -1,9 +1,14 @@
 #include "workbench/app/precision_plan.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
+#include <unistd.h>
+
+#include "workbench/app/precision_answer.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/scenario/scenario.hpp"
@@ -39,6 +44,19 @@ std::string csvField(const std::string& s) {
     out += ch == '\n' ? ' ' : ch;
   }
   return quote ? "\"" + out + "\"" : out;
+}
+
+// An executable named `name` in a folder of $PATH.
+bool onPath(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  if (path == nullptr) return false;
+  std::stringstream ss(path);
+  for (std::string d; std::getline(ss, d, ':');) {
+    std::error_code ec;
+    const fs::path p = fs::path(d.empty() ? "." : d) / name;
+    if (fs::is_regular_file(p, ec) && access(p.c_str(), X_OK) == 0) return true;
+  }
+  return false;
 }
 
 bool isFixed(const std::string& integrator) {
@@ -176,11 +194,70 @@ bool addReferences(Plan& p, const PrecisionOptions& o, const Model& m,
   return true;
 }
 
+bool isMultiple(double t, double h) {
+  const double r = t / h;
+  return std::abs(r - std::round(r)) <= 1e-6;
+}
+
+// The largest step not above h that a fixed-step run can use with this output interval and
+// duration: every output time k * every (and the end, `duration` when given) must lie on the step
+// grid (run/compile.cpp refuses the run otherwise), so the step is every / n for the smallest
+// integer n that also divides the duration. 0 when none is found.
+double onGridStep(double h, double every, double duration) {
+  const int n0 = std::max(1, static_cast<int>(std::ceil(every / h - 1e-9)));
+  for (int n = n0; n <= n0 + 100000; ++n) {
+    const double c = every / n;
+    if (duration <= 0.0 || isMultiple(duration, c)) return c;
+  }
+  return 0.0;
+}
+
+// The fixed-step ladder. The defaults are moved onto the scenario's output grid (each to the
+// largest step below it that divides the output interval), and the plan says so; a step the user
+// gives that does not divide it is refused before anything runs (a skipped setting must never be
+// silent).
+std::vector<double> fixedSteps(Plan& p, const PrecisionOptions& o, const scenario::RunSpec& run) {
+  const double every = run.output_every;
+  const double duration = run.duration;
+  if (!o.steps.empty()) {
+    std::vector<double> steps = splitNumbers(o.steps, "--steps");
+    for (double h : steps) {
+      if (isMultiple(every, h) && (duration <= 0.0 || isMultiple(duration, h))) continue;
+      const double fit = onGridStep(h, every, duration);
+      throw InputError(
+          kCommandLine,
+          "--steps: " + num(h) +
+              " s does not divide the output interval run.output.every = " + num(every) + " s" +
+              (duration > 0.0 ? " and the duration " + num(duration) + " s" : "") +
+              " (a fixed-step run must reach every output time on its step grid)" +
+              (fit > 0.0 ? "; the largest step below it that does is " + formatNumber(fit) + " s"
+                         : "") +
+              ", or change the output interval with --set run.output.every=...");
+    }
+    return steps;
+  }
+  std::vector<double> steps;
+  for (double h : o.quick ? kQuickSteps : kSteps) {
+    const double fit = onGridStep(h, every, duration);
+    if (fit <= 0.0) {
+      p.adaptations.push_back("fixed steps: no step near " + num(h) +
+                              " s divides the output interval " + num(every) + " s" +
+                              (duration > 0.0 ? " and the duration " + num(duration) + " s" : "") +
+                              ": left out");
+      continue;
+    }
+    if (!isMultiple(fit, h) || !isMultiple(h, fit))
+      p.adaptations.push_back(
+          "fixed steps: " + num(h) + " s does not divide the output interval run.output.every = " +
+          num(every) + " s" + (duration > 0.0 ? " and the duration " + num(duration) + " s" : "") +
+          ": the ladder uses " + formatNumber(fit) + " s instead");
+    if (std::find(steps.begin(), steps.end(), fit) == steps.end()) steps.push_back(fit);
+  }
+  return steps;
+}
+
 void addLadders(Plan& p, const PrecisionOptions& o, const Model& m,
-                const std::vector<std::string>& integrators) {
-  const std::vector<double> steps = !o.steps.empty() ? splitNumbers(o.steps, "--steps")
-                                    : o.quick        ? kQuickSteps
-                                                     : kSteps;
+                const std::vector<std::string>& integrators, const std::vector<double>& steps) {
   const std::vector<double> tols = !o.tolerances.empty()
                                        ? splitNumbers(o.tolerances, "--tolerances")
                                    : o.quick ? kQuickTolerances
@@ -252,7 +329,13 @@ Plan makePlan(const PrecisionOptions& o) {
   if (!(o.reference_tol > 0.0 && o.reference_tol < 1e-2))
     throw InputError(kCommandLine, "--reference-tol must be in (0, 1e-2)");
   if (o.repeats < 1 || o.repeats > 100)
-    throw InputError(kCommandLine, "--repeats must be in 1..100");
+    throw InputError(kCommandLine, "--repeats must be in 1..100, got " + std::to_string(o.repeats));
+  if (o.jobs < 0)
+    throw InputError(kCommandLine,
+                     "--jobs must be >= 0 (0: every core), got " + std::to_string(o.jobs));
+  // --callgrind runs valgrind after the whole matrix: its absence must show before the matrix.
+  if (o.callgrind && !onPath("valgrind"))
+    throw InputError(kCommandLine, "--callgrind: valgrind is not on the PATH");
   if (o.distance > 0.0) p.base.push_back("run.distance=" + num(o.distance));
   if (o.duration > 0.0) p.base.push_back("run.duration=" + num(o.duration));
 
@@ -267,6 +350,9 @@ Plan makePlan(const PrecisionOptions& o) {
 
   p.quantities = o.quantities.empty() ? std::vector<std::string>{"y", "yaw"}
                                       : splitList(o.quantities, "--quantities");
+  for (const auto& b : spec.vehicle.bodies) p.bodies.push_back(b.name);
+  // Every quantity is checked now, before any run: a mistyped one must not cost the matrix.
+  (void)parseQuantities(p.quantities, p.bodies, p.contact);
   p.levels = o.levels.empty() ? kLevels : splitNumbers(o.levels, "--levels");
   std::sort(p.levels.begin(), p.levels.end(), std::greater<>());
   p.limit = o.reference_limit > 0.0 ? o.reference_limit : p.levels.back() / 10.0;
@@ -297,7 +383,9 @@ Plan makePlan(const PrecisionOptions& o) {
     throw InputError({o.scenario, 0},
                      "no contact model of the scenario accepts the reference "
                      "settings (see the notes above)");
-  for (const auto& m : p.models) addLadders(p, o, m, integrators);
+  const bool anyFixed = std::any_of(integrators.begin(), integrators.end(), isFixed);
+  const std::vector<double> steps = anyFixed ? fixedSteps(p, o, spec.run) : std::vector<double>{};
+  for (const auto& m : p.models) addLadders(p, o, m, integrators, steps);
   return p;
 }
 
@@ -330,6 +418,7 @@ std::string planCsv(const Plan& plan) {
   for (const auto& n : plan.notes)
     s << ",,note," << csvField(n.model) << ",,," << n.integrator << ",,,,left out,"
       << csvField(n.text) << "\n";
+  for (const auto& a : plan.adaptations) s << ",,note,,,,,,,,adapted," << csvField(a) << "\n";
   return s.str();
 }
 

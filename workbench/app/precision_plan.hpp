@@ -57,13 +57,17 @@ struct Note {
 };
 
 struct Plan {
-  std::string scenario;           // resolved path
-  std::vector<std::string> base;  // the user's --set and the run shortening
-  bool contact = false;           // the scenario has wheel/rail contact
+  std::string scenario;             // resolved path
+  std::vector<std::string> base;    // the user's --set and the run shortening
+  bool contact = false;             // the scenario has wheel/rail contact
+  std::vector<std::string> bodies;  // the vehicle's body names (BODY.y quantities)
   std::vector<Model> models;
   std::vector<Reference> references;
   std::vector<Ladder> ladders;
   std::vector<Note> notes;
+  // What the plan changed so that every setting can run (e.g. a step that does not divide the
+  // output interval), printed and written to the plan.
+  std::vector<std::string> adaptations;
   std::vector<std::string> quantities;
   std::vector<double> levels;
   double limit = 0.0;  // verification limit of the reference, display units

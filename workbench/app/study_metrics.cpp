@@ -140,7 +140,8 @@ sm::Value criticalSpeedMetric(const scenario::StudySpec& st, const scenario::Stu
     if (!cs.found) return sm::Value::fail("no linear critical speed: " + cs.why);
     sm::Value v;
     v.value = cs.speed;
-    v.note = cs.why;
+    // Which mode loses its damping there (a car-body mode can go before hunting).
+    v.note = cs.why.empty() ? "mode: " + cs.mode : cs.why + "; mode: " + cs.mode;
     return v;
   } catch (const std::exception& e) {
     return sm::Value::fail(std::string("linear critical speed: ") + e.what());

@@ -11,6 +11,8 @@
 #include "workbench/core/strings.hpp"
 #include "workbench/io/read_stats.hpp"
 #include "workbench/io/result_file.hpp"
+#include "workbench/io/result_reader.hpp"
+#include "workbench/scenario/override_check.hpp"
 #include "workbench/vehicle/stage_clock.hpp"
 
 namespace fs = std::filesystem;
@@ -272,6 +274,78 @@ void writeSummaryH5(const fs::path& path, const scenario::StudySpec& st,
   h5.finalize();
 }
 
+struct MetricLabel {
+  std::string label, unit, limit, limit_source;
+};
+
+// What a metric is, in which unit, and the standard's limit it is judged against where there is
+// one: an assessment quantity carries its unit and limit in each result (/assessment/summary
+// <key>_unit, <key>_limit: the limit is drawn when it is the same for every case), a signal its
+// dataset's units; the maximum of a Y/Q signal is judged against EN 14363's flange-climbing limit
+// (Y/Q)lim = 0.8, the default of run.assessment.yq_limit.
+MetricLabel metricLabel(const scenario::MetricSpec& m, const std::vector<Job>& all) {
+  MetricLabel out;
+  out.label = m.name;
+  auto firstWith = [&](const std::string& object, const std::string& attr) {
+    for (const auto& j : all) {
+      if (!fs::exists(j.h5)) continue;
+      const io::ResultReader r(j.h5);
+      if (auto t = r.text(object, attr)) return *t;
+    }
+    return std::string();
+  };
+  if (m.kind == "linear_critical_speed") {
+    out.label = m.name + " (linear critical speed)";
+    out.unit = "m/s";
+  } else if (m.kind == "assessment" && !m.quantity.empty() && m.quantity[0] != '/') {
+    out.label = m.name + " (" + m.quantity + ")";
+    out.unit = firstWith("/assessment/summary", m.quantity + "_unit");
+    std::vector<double> limits;
+    for (const auto& j : all) {
+      if (!fs::exists(j.h5)) continue;
+      const io::ResultReader r(j.h5);
+      if (auto v = r.number("/assessment/summary", m.quantity + "_limit")) limits.push_back(*v);
+    }
+    if (!limits.empty() &&
+        std::all_of(limits.begin(), limits.end(), [&](double v) { return v == limits[0]; })) {
+      out.limit = formatNumberExact(limits[0]);
+      out.limit_source = "EN 14363 limit of " + m.quantity + " (run.assessment)";
+    } else if (!limits.empty()) {
+      out.limit_source = "the limit of " + m.quantity + " differs between the cases";
+    }
+  } else if (m.kind == "signal" || m.kind == "steady" || m.kind == "error") {
+    const std::string units = firstWith(m.signal, "units");
+    out.unit = units;
+    out.label = m.name + " (" +
+                (m.kind == "error"    ? "max |difference| of "
+                 : m.kind == "steady" ? "steady "
+                                      : "") +
+                (m.kind == "signal" ? m.stat + " of " : "") + m.signal + ")";
+    const bool yq = m.signal.size() >= 8 && m.signal.ends_with("y_over_q");
+    if (yq && m.kind == "signal" && m.stat.find("max") != std::string::npos) {
+      out.limit = "0.8";
+      out.limit_source = "EN 14363 flange-climbing limit (Y/Q)lim";
+    }
+  }
+  return out;
+}
+
+// study_labels.csv: the swept parameters and the metrics as a figure's axes read them (label,
+// SI unit) and the limit line of a metric that has a standard limit.
+std::string labelsCsv(const scenario::StudySpec& st, const std::vector<Job>& all) {
+  std::ostringstream s;
+  s << "kind,name,label,unit,limit,limit_source\n";
+  for (const auto& p : scenario::studyParameterLabels(st))
+    s << "parameter," << csvField(p.key) << "," << csvField(p.label) << "," << csvField(p.unit)
+      << ",,\n";
+  for (const auto& m : st.metrics) {
+    const MetricLabel l = metricLabel(m, all);
+    s << "metric," << csvField(m.name) << "," << csvField(l.label) << "," << csvField(l.unit) << ","
+      << l.limit << "," << csvField(l.limit_source) << "\n";
+  }
+  return s.str();
+}
+
 }  // namespace
 
 SummaryCounts writeSummaries(const scenario::StudySpec& st, const std::vector<Job>& all,
@@ -281,6 +355,12 @@ SummaryCounts writeSummaries(const scenario::StudySpec& st, const std::vector<Jo
   writeAtomically(dir / "summary.csv", sm.csv.str());
   writeAtomically(dir / "summary_cases.csv", casesCsv(st, sm.cases));
   writeSummaryH5(dir / "summary.h5", st, all, sm);
+  // Labels are for the figures: a base scenario that cannot be read again leaves them raw.
+  try {
+    writeAtomically(dir / "study_labels.csv", labelsCsv(st, all));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "study: study_labels.csv not written: %s\n", e.what());
+  }
   return {sm.runsOk, sm.runsKnown, sm.runsElsewhere};
 }
 

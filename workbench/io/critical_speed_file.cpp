@@ -26,6 +26,8 @@ void writeRun(ResultFile& f, const CriticalSpeedRun& r) {
   f.attr(g, "a_first", r.a_first);
   f.attr(g, "a_mid", r.a_mid);
   f.attr(g, "a_last", r.a_last);
+  f.attr(g, "trend", r.trend);
+  f.attr(g, "state", r.state);
   f.dataset(g + "/window_t0", r.window_t0, "s");
   f.dataset(g + "/window_t1", r.window_t1, "s");
   f.dataset(g + "/window_speed", r.window_speed, "m/s");
@@ -54,6 +56,7 @@ void writeCriticalSpeedFile(const std::string& path, const CriticalSpeedResult& 
     f.dataset("/bisection/speed", result.bisection_speed, "m/s");
     f.dataset("/bisection/amplitude", result.bisection_amplitude, "m");
     f.dataset("/bisection/unstable", result.bisection_unstable, "-");
+    f.dataset("/bisection/small_cycle", result.bisection_small, "-");
   }
   f.finalize();
 }

@@ -15,6 +15,7 @@ void writeSpeed(ResultFile& f, const std::string& g, const ModesAtSpeed& s) {
   f.dataset(g + "/damping_ratio", s.damping, "-");
   f.dataset(g + "/step_change", s.step_change, "-");
   f.dataset(g + "/hunting", s.hunting, "-");
+  f.dataset(g + "/unstable", s.unstable, "-");
   f.stringDataset(g + "/label", s.labels);
   f.stringDataset(g + "/dominant", s.dominant);
   f.stringDataset(g + "/coordinates", s.coordinates);
@@ -32,6 +33,10 @@ void writeSpeed(ResultFile& f, const std::string& g, const ModesAtSpeed& s) {
     f.attr(g, "hunting_damping", s.hunting_damping);
   else
     f.attr(g, "hunting_damping", std::string("none"));
+  if (std::isfinite(s.least_damping))
+    f.attr(g, "least_damping", s.least_damping);
+  else
+    f.attr(g, "least_damping", std::string("none"));
   f.attr(g, "rhs_evaluations", s.rhs_evaluations);
   f.attr(g, "cpu_s", s.cpu_s);
 }
@@ -62,6 +67,12 @@ void writeModesFile(const std::string& path, const std::vector<ModesAtSpeed>& sp
     f.attr("/modes", "critical_bracket_hi", sum.bracket_hi);
     f.attr("/modes", "critical_speed_step_uncertainty", sum.step_uncertainty);
   }
+  f.attr("/modes", "critical_mode", sum.critical_mode);
+  f.attr("/modes", "hunting_critical_speed", sum.hunting);
+  if (sum.hunting_speed > 0.0) f.attr("/modes", "hunting_critical_speed_value", sum.hunting_speed);
+  std::string unstable;
+  for (const auto& u : sum.unstable) unstable += u + "\n";
+  f.attr("/modes", "unstable_modes", unstable.empty() ? std::string("none") : unstable);
   f.attr("/modes", "contact_method", sum.method);
   f.attr("/modes", "creep_law", sum.creep);
   f.attr("/modes", "wheelset_spin", sum.spin);

@@ -104,7 +104,153 @@ void listGroups(std::ostream& os, const Node& vehicle) {
   }
 }
 
+// "primary_longitudinal" -> "primary longitudinal".
+std::string words(std::string s) {
+  std::replace(s.begin(), s.end(), '_', ' ');
+  return s;
+}
+
+const BlockSpec* findBlock(const std::string& name) {
+  for (const auto& b : schema())
+    if (b.name == name) return &b;
+  return nullptr;
+}
+
+// The unit of `key` in the blocks of `kinds` when they agree ("" when none has it or they differ).
+std::string unitOfKinds(const std::vector<std::string>& kinds, const std::string& key) {
+  std::string unit;
+  bool first = true;
+  for (const auto& k : kinds) {
+    const BlockSpec* b = findBlock(k);
+    const KeySpec* ks = b != nullptr ? b->key(key) : nullptr;
+    if (ks == nullptr) continue;
+    if (!first && ks->unit != unit) return "";
+    unit = ks->unit;
+    first = false;
+  }
+  return unit;
+}
+
+// The tokens of a path: "track.segments[2].radius" -> track, segments, 2, radius.
+std::vector<std::string> tokens(const std::string& path) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char ch : path) {
+    if (ch == '.' || ch == '[' || ch == ']') {
+      if (!cur.empty()) out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += ch;
+    }
+  }
+  if (!cur.empty()) out.push_back(cur);
+  return out;
+}
+
+// The item of a list of named tables by name or 1-based position (nullptr when none).
+const Node* listItem(const Node* list, const std::string& token) {
+  if (list == nullptr) return nullptr;
+  for (const Node& it : list->items)
+    if (itemName(it) == token) return &it;
+  if (!token.empty() && std::all_of(token.begin(), token.end(), ::isdigit)) {
+    const std::size_t i = std::stoul(token);
+    if (i >= 1 && i <= list->items.size()) return &list->items[i - 1];
+  }
+  return nullptr;
+}
+
 }  // namespace
+
+ParameterLabel parameterLabel(const Node& tree, const std::string& path) {
+  ParameterLabel out{path, path, ""};
+  const std::vector<std::string> t = tokens(path);
+  if (t.size() < 2) return out;
+  const Node* vehicle = tree.field("vehicle");
+  // Named vehicle parameters: the element or group (its members' kind) or the body decides.
+  if (t[0] == "vehicle" && t.size() == 4) {
+    const std::string& what = t[1];
+    const std::string& name = t[2];
+    const std::string& key = t[3];
+    const Node* elements = vehicle != nullptr ? vehicle->field("elements") : nullptr;
+    if (what == "groups" && vehicle != nullptr && elements != nullptr) {
+      const Node* groups = vehicle->field("groups");
+      const Node* g = groups != nullptr ? groups->field(name) : nullptr;
+      if (g != nullptr) {
+        std::vector<std::string> kinds;
+        for (std::size_t i : groupMembers(*vehicle, *g).elements)
+          kinds.push_back(elements->items[i].kind);
+        return {path, words(name) + " " + words(key), unitOfKinds(kinds, key)};
+      }
+    }
+    if (what == "elements") {
+      if (const Node* e = listItem(elements, name))
+        return {path, words(itemName(*e).empty() ? name : itemName(*e)) + " " + words(key),
+                unitOfKinds({e->kind}, key)};
+    }
+    if (what == "bodies") return {path, words(name) + " " + words(key), unitOfKinds({"body"}, key)};
+    if (what == "initial")
+      return {path, "initial " + words(name) + " " + words(key),
+              unitOfKinds({"vehicle.initial.<body>"}, key)};
+  }
+  // A schema path: block.key, block.sub.key, block.list[n].key.
+  const BlockSpec* b = findBlock(t[0]);
+  const Node* node = tree.field(t[0]);
+  std::vector<std::string> label = {words(t[0])};
+  for (std::size_t i = 1; b != nullptr && i < t.size(); ++i) {
+    const KeySpec* ks = b->key(t[i]);
+    if (ks == nullptr) return out;
+    label.push_back(words(t[i]));
+    const Node* child = node != nullptr ? node->field(t[i]) : nullptr;
+    if (i + 1 == t.size()) {
+      out.label = join(label, " ");
+      out.unit = ks->unit;
+      return out;
+    }
+    if (ks->type == ValueType::BlockList) {
+      const Node* item = listItem(child, t[i + 1]);
+      if (item == nullptr) return out;
+      label.push_back(t[i + 1]);
+      ++i;
+      b = findBlock(item->kind);
+      node = item;
+    } else if (ks->type == ValueType::Block) {
+      b = findBlock(!ks->sub.empty()                           ? ks->sub
+                    : child != nullptr && !child->kind.empty() ? child->kind
+                                                               : b->name + "." + t[i]);
+      node = child;
+    } else {
+      return out;
+    }
+  }
+  return out;
+}
+
+std::vector<ParameterLabel> studyParameterLabels(const StudySpec& study) {
+  std::vector<ParameterLabel> out;
+  std::vector<std::string> seen;
+  std::map<std::string, Node> trees;
+  for (const auto& c : study.cases)
+    for (const auto& o : c.overrides) {
+      const std::string key = o.substr(0, o.find('='));
+      if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+      seen.push_back(key);
+      auto it = trees.find(c.base);
+      if (it == trees.end()) {
+        Node tree;
+        try {
+          HostOptions ho;
+          ho.root = study.root;
+          LuaHost host(ho);
+          tree = host.runFile(c.base);
+        } catch (const InputError&) {
+          // The base's own problem, reported by its runs: its paths keep their text.
+        }
+        it = trees.emplace(c.base, std::move(tree)).first;
+      }
+      out.push_back(parameterLabel(it->second, key));
+    }
+  return out;
+}
 
 void checkStudyOverrides(const StudySpec& study, const std::string& studyText,
                          const std::string& root) {

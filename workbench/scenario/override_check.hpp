@@ -2,7 +2,9 @@
 // Named parameters before anything runs: a study's --set paths tried on its base scenarios, and
 // the listing of a vehicle's named parameters (`workbench help vehicle SCENARIO.lua`).
 #include <string>
+#include <vector>
 
+#include "workbench/scenario/node.hpp"
 #include "workbench/scenario/study.hpp"
 
 namespace rb::scenario {
@@ -14,6 +16,20 @@ namespace rb::scenario {
 // the key is written (studyText: that file's text), with the nearest existing name.
 void checkStudyOverrides(const StudySpec& study, const std::string& studyText,
                          const std::string& root);
+
+// A --set path as a figure axis reads it: a label in words and the SI unit of the key, from the
+// schema (the key's unit; an element's or a group's key by the kind of its members on the tree of
+// the base scenario): vehicle.groups.primary_longitudinal.stiffness -> "primary longitudinal
+// stiffness", "N/m"; vehicle.speed -> "vehicle speed", "m/s". A path that does not resolve keeps
+// its own text as label and an empty unit ("-" for a dimensionless key).
+struct ParameterLabel {
+  std::string key, label, unit;
+};
+ParameterLabel parameterLabel(const Node& tree, const std::string& path);
+
+// parameterLabel of every distinct override path of the study's cases, each on the tree of its
+// base scenario (run once per base; a base that does not load leaves its paths unresolved).
+std::vector<ParameterLabel> studyParameterLabels(const StudySpec& study);
 
 // The named parameters of the vehicle of a scenario: its bodies, its elements with their kind
 // and keys, its groups with their members and the keys every member has. Throws InputError

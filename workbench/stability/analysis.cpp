@@ -279,6 +279,25 @@ double Analysis::huntingDamping() const {
                            : modes[static_cast<std::size_t>(least_hunting)].damping_ratio;
 }
 
+double Analysis::leastDamping() const {
+  return least_damped < 0 ? std::numeric_limits<double>::quiet_NaN()
+                          : modes[static_cast<std::size_t>(least_damped)].damping_ratio;
+}
+
+std::vector<std::size_t> Analysis::unstableModes() const {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < modes.size(); ++i)
+    if (unstable(modes[i])) out.push_back(i);
+  return out;
+}
+
+std::string describe(const Mode& m) {
+  return m.label + " (" + m.dominant + "), " +
+         (m.oscillatory ? formatNumber(m.frequency_hz, 4) + " Hz" : std::string("aperiodic")) +
+         ", damping ratio " + formatNumber(m.damping_ratio, 3) + ", Re " +
+         formatNumber(m.eigenvalue.real(), 3) + " 1/s";
+}
+
 struct Analyser::Impl {
   std::optional<track::TrackModel> track;
   dynamics::TableCache cache;
@@ -370,11 +389,20 @@ Analysis Analyser::analyse(double speed) {
     throw Failure(std::string("the model cannot be evaluated near the steady state: ") + e.what());
   }
   double least = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < a.modes.size(); ++i)
+  double least_any = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < a.modes.size(); ++i) {
     if (a.modes[i].hunting && a.modes[i].damping_ratio < least) {
       least = a.modes[i].damping_ratio;
       a.least_hunting = static_cast<int>(i);
     }
+    // A neutral mode (|Re lambda| within the floor: a real eigenvalue of round-off size has the
+    // damping ratio +-1 by its sign alone) neither grows nor decays in any run: it decides nothing.
+    const bool neutral = std::abs(a.modes[i].eigenvalue.real()) <= kUnstableFloor;
+    if (!neutral && a.modes[i].damping_ratio < least_any) {
+      least_any = a.modes[i].damping_ratio;
+      a.least_damped = static_cast<int>(i);
+    }
+  }
   a.rhs_evaluations = ode.stats().evaluations;
   a.cpu_s = cpuSeconds() - cpu0;
   return a;

@@ -11,9 +11,13 @@
 //      (Analysis::step_check);
 //   3. its eigenvalues and eigenvectors, each mode labelled from the kinetic-energy shares of the
 //      body coordinates (modeLabel below);
-//   4. the linear critical speed: the speed at which the least damped hunting mode (wheelset or
-//      bogie hunting) crosses zero damping, bracketed on a speed sweep and refined by the Illinois
-//      variant of regula falsi on the speed.
+//   4. the linear critical speed: the lowest speed at which any mode is unstable (its least damped
+//      mode crosses zero damping), bracketed on a speed sweep and refined by the Illinois variant
+//      of regula falsi on the speed; beside it the same for the hunting modes alone (wheelset or
+//      bogie hunting), the speed the nonlinear search of `critical-speed` starts from. A car-body
+//      mode of a two-axle wagon can lose its damping far below the hunting speed (the body modes
+//      couple with the kinematic motion of the wheelsets when the kinematic frequency V / L_k
+//      passes their natural frequency): it limits the vehicle as much as hunting does.
 // The scene is the scenario's track at spec.vehicle.speed (constant: the acceleration is set to
 // 0), irregularities off, the normal-force coupling forced to "consistent" (the lagged coupling
 // gives the rhs a memory of the previous evaluation, so its difference quotients would not be
@@ -84,6 +88,15 @@ struct Mode {
   double step_change = 0.0;           // |lambda(h) - lambda(h / step_check_ratio)| / |lambda(h)|
 };
 
+// [1/s] A mode is unstable when its motion grows, exp(Re lambda t): Re lambda above this floor (a
+// doubling time of 8 days, beyond any run, so that round-off on a neutral mode is not reported).
+inline constexpr double kUnstableFloor = 1e-6;
+inline bool unstable(const Mode& m) {
+  return m.eigenvalue.real() > kUnstableFloor;
+}
+// One line naming a mode: "car body yaw (car.yaw), 2.065 Hz, damping ratio -0.0405".
+std::string describe(const Mode& m);
+
 struct Analysis {
   double speed = 0.0;               // [m/s]
   std::string method, creep, spin;  // contact method, creep law, wheelset spin
@@ -96,11 +109,14 @@ struct Analysis {
   double step_check = 0.0;
   bool step_check_ok = true;
   int least_hunting = -1;  // index into modes of the least damped hunting mode, -1 if none
+  int least_damped = -1;   // index into modes of the least damped mode of any kind, -1 if none
   long rhs_evaluations = 0;
   double cpu_s = 0.0;
   std::vector<std::string> notes;
 
   double huntingDamping() const;  // damping ratio of modes[least_hunting] (NaN if none)
+  double leastDamping() const;    // damping ratio of modes[least_damped] (NaN if none)
+  std::vector<std::size_t> unstableModes() const;  // indices of the unstable modes
 };
 
 // The finite-difference step of every state (length = the ODE's size), before step_scale:
@@ -168,9 +184,22 @@ struct CriticalSpeed {
   bool found = false;
   double speed = 0.0;                         // [m/s] linear critical speed (when found)
   double bracket_lo = 0.0, bracket_hi = 0.0;  // [m/s] last bracket of the refinement
-  std::vector<Analysis> sweep;                // the sweep, in speed order
-  std::vector<Analysis> refinement;           // the refinement steps
+  // The mode that loses its damping at `speed` (describe()), or, with below_range, the least
+  // damped of the modes already unstable at the sweep's lowest speed.
+  std::string mode;
+  bool mode_is_hunting = false;
+  // A mode is unstable at the sweep's lowest speed: the linear critical speed is below the range
+  // (found = false, why says so and names the modes).
+  bool below_range = false;
+  std::vector<Analysis> sweep;       // the sweep, in speed order
+  std::vector<Analysis> refinement;  // the refinement steps (of both crossings)
   std::string why;  // when not found: "none in range" and the damping seen
+  // The same crossing for the hunting modes alone (wheelset or bogie hunting): where the nonlinear
+  // search of `critical-speed` starts. Equal to `speed` when a hunting mode is the first to lose
+  // its damping.
+  bool hunting_found = false;
+  double hunting_speed = 0.0;  // [m/s]
+  std::string hunting_why;     // when not found, or a note on its refinement
   // [m/s] How far the finite-difference step can move the critical speed: the step check's
   // relative eigenvalue change of the least damped hunting mode at the analysis nearest the
   // critical speed (an upper bound of the change of its damping ratio) divided by the slope of
@@ -181,8 +210,8 @@ struct CriticalSpeed {
 };
 
 // n >= 2 speeds from v_lo to v_hi, then refinement to tol [m/s]. The critical speed is the lowest
-// speed at which the least damped hunting mode's damping ratio changes sign from positive to
-// negative.
+// speed at which the least damped mode's damping ratio (any mode) changes sign from positive to
+// negative; hunting_speed the same for the least damped hunting mode.
 CriticalSpeed linearCriticalSpeed(const scenario::ScenarioSpec& spec, double v_lo, double v_hi,
                                   int n, const Options& options = {}, double tol = 0.05);
 // The same on speeds already analysed by `analyser` (the sweep is moved into the result).

@@ -1,0 +1,501 @@
+#include "workbench/app/precision_answer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+#include <optional>
+#include <regex>
+#include <sstream>
+
+#include "workbench/core/error.hpp"
+#include "workbench/core/strings.hpp"
+#include "workbench/io/read_stats.hpp"
+#include "workbench/io/result_file.hpp"
+#include "workbench/io/result_reader.hpp"
+
+namespace fs = std::filesystem;
+
+namespace rb::app::precision {
+namespace {
+
+const SourceLoc kCommandLine{"<command line>", 0};
+
+struct Unit {
+  double scale;
+  const char* unit;
+};
+
+// Display unit of a body coordinate (from SI).
+std::optional<Unit> bodyUnit(const std::string& c) {
+  if (c == "y" || c == "z") return Unit{1e3, "mm"};
+  if (c == "roll" || c == "pitch" || c == "yaw") return Unit{1e3, "mrad"};
+  return std::nullopt;
+}
+
+// The per-wheel quantities: the wheel/rail normal force, the lateral creep force, and the
+// EN 14363 running-safety quantities of the contact output (track-lateral wheel force Y, Y/Q).
+struct WheelTag {
+  const char* tag;
+  const char* dataset;
+  double scale;
+  const char* unit;
+};
+constexpr WheelTag kWheelTags[] = {{"Q", "normal_force", 1e-3, "kN"},
+                                   {"Fy", "creep_force_y", 1e-3, "kN"},
+                                   {"Y", "Y", 1e-3, "kN"},
+                                   {"YQ", "y_over_q", 1.0, "-"}};
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  for (std::string l; std::getline(ss, l);) {
+    l.erase(0, l.find_first_not_of(" \t\r"));
+    l.erase(l.find_last_not_of(" \t\r") + 1);
+    if (!l.empty()) out.push_back(l);
+  }
+  return out;
+}
+
+// {series name: values in SI} of quantity q in a result file.
+std::map<std::string, std::vector<double>> series(const io::ResultReader& f, const Quantity& q) {
+  std::map<std::string, std::vector<double>> out;
+  const std::vector<std::string> names = lines(f.text("/bodies", "names").value_or(""));
+  auto kind = [&](const std::string& n) { return f.text("/bodies/" + n, "kind").value_or(""); };
+  auto put = [&](const std::string& key, const std::string& path) {
+    if (auto v = f.dataset(path)) out[key] = std::move(*v);
+  };
+  if (q.group == "body") {
+    put(q.body, "/bodies/" + q.body + "/" + q.dataset);
+  } else if (q.group == "wheels") {
+    for (const auto& n : names)
+      if (kind(n) == "wheelset")
+        for (const char* side : {"left", "right"})
+          put(n + " " + side, "/contact/" + n + "/" + side + "/" + q.dataset);
+  } else {
+    // Guided wheelsets follow the track kinematically (no error of their own): on a vehicle
+    // without contact the quantity covers every other body.
+    const bool contact = f.has("/contact");
+    for (const auto& n : names)
+      if ((kind(n) == "wheelset") == contact) put(n, "/bodies/" + n + "/" + q.dataset);
+  }
+  return out;
+}
+
+// Linear interpolation of (t, v) at x, t increasing, x inside [t.front(), t.back()].
+double interpolate(const std::vector<double>& t, const std::vector<double>& v, std::size_t n,
+                   double x) {
+  const auto it = std::lower_bound(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(n), x);
+  std::size_t j = static_cast<std::size_t>(it - t.begin());
+  if (j >= n) return v[n - 1];
+  if (t[j] == x || j == 0) return v[j];
+  const double w = (x - t[j - 1]) / (t[j] - t[j - 1]);
+  return v[j - 1] + w * (v[j] - v[j - 1]);
+}
+
+std::string fmt(double v) {
+  if (std::isinf(v)) return "inf";
+  if (!std::isfinite(v)) return "";
+  return formatNumber(v, 4);
+}
+
+std::string csvField(const std::string& s) {
+  const bool quote = s.find_first_of(",\"\n") != std::string::npos;
+  std::string out;
+  for (char ch : s) {
+    if (ch == '"') out += '"';
+    out += ch == '\n' ? ' ' : ch;
+  }
+  return quote ? "\"" + out + "\"" : out;
+}
+
+struct RunFile {
+  bool exists = false;
+  bool ok = false;
+  std::string status;
+  std::string message;  // of the first repeat that did not end ok
+  double rhs = 0.0;
+};
+
+// Every repeat of a case ended ok (status of /stats), its rhs evaluations from the first.
+RunFile runFile(const fs::path& dir, const std::string& id, int repeats) {
+  RunFile r;
+  r.ok = true;
+  for (int k = 0; k < repeats; ++k) {
+    const auto st = io::readStats((dir / (id + "_r" + std::to_string(k) + ".h5")).string());
+    if (!st) {
+      r.ok = false;
+      continue;
+    }
+    const std::string s = st->text.count("status") ? st->text.at("status") : "";
+    if (!r.exists) {
+      r.status = s;
+      if (st->number.count("rhs_evals")) r.rhs = st->number.at("rhs_evals");
+    }
+    if (s != "ok" && r.message.empty() && st->text.count("message"))
+      r.message = st->text.at("message");
+    if (s != "ok") r.status = s.empty() ? "failed" : s;
+    r.exists = true;
+    r.ok = r.ok && s == "ok";
+  }
+  if (!r.exists) {
+    r.ok = false;
+    r.status = "missing";
+  }
+  return r;
+}
+
+Error fileError(const fs::path& run, const fs::path& ref, const Quantity& q) {
+  if (!fs::exists(run) || !fs::exists(ref)) return {};
+  const io::ResultReader a(run.string());
+  const io::ResultReader b(ref.string());
+  if (!a.ok() || !b.ok()) return {};
+  return runError(a, b, q);
+}
+
+std::string baseModel(const std::string& model) {
+  const auto sp = model.find(" refined");
+  return sp == std::string::npos ? model : model.substr(0, sp);
+}
+
+}  // namespace
+
+std::vector<Quantity> parseQuantities(const std::vector<std::string>& tags,
+                                      const std::vector<std::string>& bodies, bool contact) {
+  std::vector<Quantity> out;
+  static const std::regex kBody(R"(([A-Za-z0-9_\-]+)\.(y|z|roll|pitch|yaw))");
+  for (const auto& tag : tags) {
+    Quantity q;
+    q.tag = tag;
+    std::smatch m;
+    const auto wheel = std::find_if(std::begin(kWheelTags), std::end(kWheelTags),
+                                    [&](const WheelTag& w) { return tag == w.tag; });
+    if (tag == "y" || tag == "yaw") {
+      const Unit u = *bodyUnit(tag);
+      q.group = "wheelsets";
+      q.dataset = tag;
+      q.scale = u.scale;
+      q.unit = u.unit;
+    } else if (wheel != std::end(kWheelTags)) {
+      if (!contact)
+        throw InputError(kCommandLine, "--quantities: '" + tag +
+                                           "' is a wheel/rail contact quantity, but the "
+                                           "scenario's vehicle has no contact (guided)");
+      q.group = "wheels";
+      q.dataset = wheel->dataset;
+      q.scale = wheel->scale;
+      q.unit = wheel->unit;
+    } else if (std::regex_match(tag, m, kBody)) {
+      q.group = "body";
+      q.body = m[1];
+      q.dataset = m[2];
+      if (std::find(bodies.begin(), bodies.end(), q.body) == bodies.end())
+        throw InputError(kCommandLine, "--quantities: '" + tag + "': the vehicle has no body '" +
+                                           q.body + "' (bodies: " + join(bodies) + ")");
+      const Unit u = *bodyUnit(q.dataset);
+      q.scale = u.scale;
+      q.unit = u.unit;
+    } else {
+      throw InputError(kCommandLine, "--quantities: unknown '" + tag +
+                                         "' (y, yaw, Q, Fy, Y, YQ or BODY.y|z|roll|pitch|yaw)");
+    }
+    out.push_back(std::move(q));
+  }
+  if (out.empty()) throw InputError(kCommandLine, "--quantities: no entry");
+  return out;
+}
+
+Error runError(const io::ResultReader& run, const io::ResultReader& ref, const Quantity& q) {
+  Error e;
+  const auto t = run.dataset("/time");
+  const auto tr = ref.dataset("/time");
+  if (!t || !tr || t->size() < 2 || tr->size() < 2) return e;
+  const auto s = series(run, q);
+  const auto r = series(ref, q);
+  double mx = 0.0, sum = 0.0;
+  std::size_t n = 0;
+  bool diverged = false;
+  for (const auto& [key, rv] : r) {
+    const auto it = s.find(key);
+    if (it == s.end()) continue;
+    const std::vector<double>& v = it->second;
+    const std::size_t nv = std::min(t->size(), v.size());
+    if (nv < 2) continue;
+    const double t0 = (*t)[0] - 1e-12, t1 = (*t)[nv - 1] + 1e-12;
+    // A non-finite value of the run inside its range: diverged, whatever the reference says.
+    if (!std::all_of(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(nv),
+                     [](double x) { return std::isfinite(x); }))
+      diverged = true;
+    const std::size_t nr = std::min(tr->size(), rv.size());
+    for (std::size_t i = 0; i < nr; ++i) {
+      const double x = (*tr)[i];
+      if (x < t0 || x > t1) continue;
+      const double d = (interpolate(*t, v, nv, x) - rv[i]) * q.scale;
+      if (!std::isfinite(d)) {
+        diverged = true;
+        continue;
+      }
+      mx = std::max(mx, std::abs(d));
+      sum += d * d;
+      ++n;
+    }
+  }
+  if (n == 0 && !diverged) return e;
+  e.have = true;
+  e.max = diverged ? kInf : mx;
+  e.rms = diverged ? kInf : std::sqrt(sum / static_cast<double>(n));
+  return e;
+}
+
+Recommendation recommend(const std::string& model, double level,
+                         const std::vector<CaseAnswer>& cases, const ReferenceAnswer* ref,
+                         bool refined_tables, const std::string& unit) {
+  Recommendation r;
+  r.model = model;
+  r.level = level;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const CaseAnswer& c = cases[i];
+    if (c.model != model || !c.ok || !c.integration.have || !(c.integration.max <= level)) continue;
+    const CaseAnswer* b = r.best < 0 ? nullptr : &cases[static_cast<std::size_t>(r.best)];
+    if (b == nullptr || c.cpu < b->cpu || (c.cpu == b->cpu && c.rhs < b->rhs))
+      r.best = static_cast<int>(i);
+  }
+  r.reached = r.best >= 0;
+  std::vector<std::string> notes;
+  if (!r.reached) notes.push_back("none reaches it");
+  const std::string lv = formatNumber(level) + " " + unit;
+  if (ref == nullptr) {
+    notes.push_back("no reference: cannot be verified");
+  } else {
+    if (!ref->verified)
+      notes.push_back("reference UNVERIFIED (" + ref->why + "): cannot be verified");
+    const Error& b = ref->bound.front();
+    if (!b.have || b.max > level)
+      notes.push_back("below the reference bound (" + (b.have ? fmt(b.max) : std::string("?")) +
+                      " " + unit + "): not resolvable, cannot be verified");
+    const Error& t = ref->table.front();
+    if (!refined_tables && t.have && t.max > level) {
+      r.table_limited = true;
+      notes.push_back("cannot be reached with these tables: the table error " + fmt(t.max) + " " +
+                      unit + " exceeds " + lv +
+                      ", so the total error stays above it whatever the setting (the integration "
+                      "error alone is answered; refined tables: --refine)");
+    }
+    r.verified = ref->verified && b.have && b.max <= level;
+  }
+  r.note = join(notes, "; ");
+  return r;
+}
+
+Answer computeAnswer(const Plan& p, const std::string& out, int repeats) {
+  Answer a;
+  a.quantities = parseQuantities(p.quantities, p.bodies, p.contact);
+  a.levels = p.levels;
+  a.limit = p.limit;
+  const fs::path refDir = fs::path(out) / "reference";
+  const fs::path caseDir = fs::path(out) / "cases";
+  auto refFile = [&](const std::string& model, const std::string& role) -> std::string {
+    for (const auto& r : p.references)
+      if (r.model == model && r.role == role) return r.c.id;
+    return "";
+  };
+  auto h5 = [](const fs::path& dir, const std::string& id) { return dir / (id + "_r0.h5"); };
+  for (const auto& m : p.models) {
+    if (m.refined) continue;
+    ReferenceAnswer ra;
+    ra.model = m.name;
+    const std::string ref = refFile(m.name, kRoleReference);
+    const std::string check = refFile(m.name, kRoleCheck);
+    const std::string same = refFile(m.name, kRoleSameTables);
+    const RunFile fr = runFile(refDir, ref, 1);
+    const RunFile fc = runFile(refDir, check, 1);
+    const bool both_ok = !ref.empty() && !check.empty() && fr.ok && fc.ok;
+    for (const auto& q : a.quantities) {
+      ra.bound.push_back(fileError(h5(refDir, check), h5(refDir, ref), q));
+      ra.table.push_back(fileError(h5(refDir, same), h5(refDir, ref), q));
+    }
+    ra.verified = both_ok;
+    if (!both_ok) {
+      // Which one and why (e.g. a wheel lift on the refined tables): the reader must see what
+      // stands between the answer and its verification.
+      std::vector<std::string> why;
+      for (const auto& [role, f] : {std::pair{kRoleReference, &fr}, std::pair{kRoleCheck, &fc}})
+        if (!f->ok)
+          why.push_back(std::string(role) + " " + f->status +
+                        (f->message.empty() ? "" : ": " + f->message.substr(0, 200)));
+      ra.why = "a reference run failed (" + join(why, "; ") + ")";
+    }
+    for (std::size_t k = 0; k < a.quantities.size() && ra.verified; ++k) {
+      const Quantity& q = a.quantities[k];
+      if (!ra.bound[k].have) {
+        ra.verified = false;
+        ra.why = "no " + q.tag + " in the references";
+      } else if (!(ra.bound[k].max <= a.limit)) {
+        ra.verified = false;
+        ra.why = "the references differ by " + fmt(ra.bound[k].max) + " " + q.unit + " in " +
+                 q.tag + " (limit " + formatNumber(a.limit) + ")";
+      }
+    }
+    a.references.push_back(std::move(ra));
+  }
+  const Quantity& q0 = a.quantities.front();
+  for (const auto& l : p.ladders) {
+    const std::string base = baseModel(l.model);
+    const bool refined = base != l.model;
+    const std::string ref = refFile(base, kRoleReference);
+    const std::string same = refined ? ref : refFile(base, kRoleSameTables);
+    for (const auto& rung : l.rungs) {
+      CaseAnswer c;
+      c.model = l.model;
+      c.integrator = l.integrator;
+      c.label = rung.c.label;
+      c.id = rung.c.id;
+      c.fixed = l.fixed;
+      c.value = rung.value;
+      c.cpu = rung.cpu;
+      if (rung.status != "run") {
+        c.status = rung.status;
+      } else {
+        const RunFile f = runFile(caseDir, c.id, repeats);
+        c.status = f.status;
+        c.ok = f.ok;
+        c.rhs = f.rhs;
+        if (f.exists) {
+          c.integration = fileError(h5(caseDir, c.id), h5(refDir, same), q0);
+          c.total = fileError(h5(caseDir, c.id), h5(refDir, ref), q0);
+        }
+      }
+      a.cases.push_back(std::move(c));
+    }
+  }
+  for (const auto& m : p.models) {
+    const std::string base = baseModel(m.name);
+    const ReferenceAnswer* ref = nullptr;
+    for (const auto& r : a.references)
+      if (r.model == base) ref = &r;
+    for (double level : a.levels)
+      a.recommendations.push_back(recommend(m.name, level, a.cases, ref, m.refined, q0.unit));
+  }
+  return a;
+}
+
+std::string recommendationCsv(const Answer& a) {
+  std::ostringstream s;
+  s << "model,level,unit,quantity,setting,integrator,value,cpu_median_s,rhs_evals,error_max,"
+       "total_error_max,case,reached,verified,table_limited,note\n";
+  const Quantity& q = a.quantities.front();
+  for (const auto& r : a.recommendations) {
+    s << csvField(r.model) << "," << formatNumber(r.level) << "," << q.unit << "," << q.tag << ",";
+    if (r.best >= 0) {
+      const CaseAnswer& c = a.cases[static_cast<std::size_t>(r.best)];
+      s << csvField(c.label) << "," << c.integrator << "," << formatNumberExact(c.value) << ","
+        << fmt(c.cpu) << "," << formatNumber(c.rhs, 12) << "," << fmt(c.integration.max) << ","
+        << (c.total.have ? fmt(c.total.max) : "") << "," << c.id << ",";
+    } else {
+      s << "none reaches it,,,,,,,,";
+    }
+    s << (r.reached ? 1 : 0) << "," << (r.verified ? 1 : 0) << "," << (r.table_limited ? 1 : 0)
+      << "," << csvField(r.note) << "\n";
+  }
+  return s.str();
+}
+
+void writeAnswerH5(const Answer& a, const std::string& path) {
+  io::ResultFile f(path);
+  std::vector<std::string> tags, units;
+  for (const auto& q : a.quantities) {
+    tags.push_back(q.tag);
+    units.push_back(q.unit);
+  }
+  f.attr("/", "quantities", join(tags, ","));
+  f.attr("/", "units", join(units, ","));
+  f.attr("/", "reference_limit", a.limit);
+  f.dataset("/levels", a.levels, a.quantities.front().unit);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const auto& r : a.references) {
+    const std::string g = "/reference_bound/" + r.model;
+    f.attr(g, "verified", std::int64_t{r.verified ? 1 : 0});
+    f.attr(g, "why", r.why);
+    for (std::size_t k = 0; k < a.quantities.size(); ++k) {
+      const Quantity& q = a.quantities[k];
+      const std::string u = "_" + q.unit;
+      f.attr(g, q.tag + "_max" + u, r.bound[k].have ? r.bound[k].max : nan);
+      f.attr(g, q.tag + "_rms" + u, r.bound[k].have ? r.bound[k].rms : nan);
+      f.attr(g, q.tag + "_table_error_max" + u, r.table[k].have ? r.table[k].max : nan);
+    }
+  }
+  std::vector<std::string> model, unit, quantity, setting, integrator, id, note;
+  std::vector<double> level, value, cpu, rhs, error, total, reached, verified, limited;
+  for (const auto& r : a.recommendations) {
+    const CaseAnswer* c = r.best >= 0 ? &a.cases[static_cast<std::size_t>(r.best)] : nullptr;
+    model.push_back(r.model);
+    level.push_back(r.level);
+    unit.push_back(a.quantities.front().unit);
+    quantity.push_back(a.quantities.front().tag);
+    setting.push_back(c ? c->label : "none reaches it");
+    integrator.push_back(c ? c->integrator : "");
+    value.push_back(c ? c->value : nan);
+    cpu.push_back(c ? c->cpu : nan);
+    rhs.push_back(c ? c->rhs : nan);
+    error.push_back(c ? c->integration.max : nan);
+    total.push_back(c && c->total.have ? c->total.max : nan);
+    id.push_back(c ? c->id : "");
+    reached.push_back(r.reached ? 1.0 : 0.0);
+    verified.push_back(r.verified ? 1.0 : 0.0);
+    limited.push_back(r.table_limited ? 1.0 : 0.0);
+    note.push_back(r.note);
+  }
+  if (!model.empty()) {
+    const std::string g = "/recommendation/";
+    f.stringDataset(g + "model", model);
+    f.dataset(g + "level", level, a.quantities.front().unit);
+    f.stringDataset(g + "unit", unit);
+    f.stringDataset(g + "quantity", quantity);
+    f.stringDataset(g + "setting", setting);
+    f.stringDataset(g + "integrator", integrator);
+    f.dataset(g + "value", value, "s or -");
+    f.dataset(g + "cpu_median_s", cpu, "s");
+    f.dataset(g + "rhs_evals", rhs, "-");
+    f.dataset(g + "error_max", error, a.quantities.front().unit);
+    f.dataset(g + "total_error_max", total, a.quantities.front().unit);
+    f.stringDataset(g + "case", id);
+    f.dataset(g + "reached", reached, "-");
+    f.dataset(g + "verified", verified, "-");
+    f.dataset(g + "table_limited", limited, "-");
+    f.stringDataset(g + "note", note);
+  }
+  f.finalize();
+}
+
+void printAnswer(const Answer& a, std::ostream& out) {
+  const Quantity& q = a.quantities.front();
+  out << "\nRecommendation (computed by the engine): the cheapest setting whose integration error "
+         "(max |"
+      << q.tag << "| against the reference on the same tables) reaches each level\n";
+  for (const auto& r : a.references) {
+    out << "  " << r.model << ": reference "
+        << (r.verified ? std::string("verified") : "UNVERIFIED (" + r.why + ")") << "; bound "
+        << (r.bound.front().have ? fmt(r.bound.front().max) : "?") << " " << q.unit
+        << "; table error " << (r.table.front().have ? fmt(r.table.front().max) : "?") << " "
+        << q.unit << "\n";
+  }
+  std::size_t w = 10;
+  for (const auto& r : a.recommendations)
+    if (r.best >= 0) w = std::max(w, a.cases[static_cast<std::size_t>(r.best)].label.size());
+  out << "  " << std::left << std::setw(14) << "model" << std::right << std::setw(10) << "level"
+      << "  " << std::left << std::setw(static_cast<int>(w)) << "setting" << std::right
+      << std::setw(10) << "CPU [s]" << std::setw(11) << "rhs evals" << std::setw(10) << "error"
+      << "  note\n";
+  for (const auto& r : a.recommendations) {
+    const CaseAnswer* c = r.best >= 0 ? &a.cases[static_cast<std::size_t>(r.best)] : nullptr;
+    out << "  " << std::left << std::setw(14) << r.model << std::right << std::setw(10)
+        << (formatNumber(r.level) + " " + q.unit) << "  " << std::left
+        << std::setw(static_cast<int>(w)) << (c ? c->label : std::string("none reaches it"))
+        << std::right << std::setw(10) << (c ? fmt(c->cpu) : "") << std::setw(11)
+        << (c ? formatNumber(c->rhs, 12) : "") << std::setw(10)
+        << (c ? fmt(c->integration.max) : "") << "  " << r.note << "\n";
+  }
+}
+
+}  // namespace rb::app::precision

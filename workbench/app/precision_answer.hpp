@@ -1,0 +1,114 @@
+#pragma once
+// The answer of `workbench precision` (docs/precision.md), computed in the engine once the runs
+// are done, so that it exists and is printed whether or not the figures are drawn: the error of
+// every run against its reference, the references' verification, and the cheapest setting per
+// accuracy level with a plain note when a level cannot be reached or verified. The plotting step
+// (plots/railbench/precision.py) reads precision_recommendation.csv and only draws.
+//
+// The error rule (one rule for every run and reference): quantity q of a run against a reference
+// is max and RMS of |run - reference| in q's display unit over the reference's output times
+// inside the run's time range (a failed run: the part it ran), the run's series interpolated
+// linearly onto them, over every series q covers. A non-finite value of either series inside that
+// range (a diverged run) makes the error infinite: such a run is not accurate at any level.
+#include <limits>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "workbench/app/precision_plan.hpp"
+
+namespace rb::io {
+class ResultReader;
+}
+
+namespace rb::app::precision {
+
+// An error quantity (--quantities): y, yaw of every wheelset (a guided vehicle: every other body),
+// Q, Fy, Y, YQ of every wheel, BODY.y|z|roll|pitch|yaw of one body.
+struct Quantity {
+  std::string tag;      // as the user wrote it
+  std::string group;    // "wheelsets", "wheels" or "body"
+  std::string dataset;  // body coordinate, or the contact dataset of a wheel
+  double scale = 1.0;   // SI -> display unit
+  std::string unit;     // display unit
+  std::string body;     // group "body": its name
+};
+
+// Parses the --quantities entries; InputError naming --quantities for an unknown one, a body the
+// vehicle does not have (`bodies`), or a wheel quantity on a vehicle without wheel/rail contact.
+std::vector<Quantity> parseQuantities(const std::vector<std::string>& tags,
+                                      const std::vector<std::string>& bodies, bool contact);
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+struct Error {
+  bool have = false;  // the quantity is in both files and their times overlap
+  double max = kInf;  // [display unit]
+  double rms = kInf;
+};
+
+// The error rule above. have = false when either file lacks the quantity or the times.
+Error runError(const io::ResultReader& run, const io::ResultReader& ref, const Quantity& q);
+
+struct ReferenceAnswer {
+  std::string model;  // default-table model ("KEC")
+  bool verified = false;
+  std::string why;           // when not verified
+  std::vector<Error> bound;  // per quantity: reference_check against reference
+  std::vector<Error> table;  // per quantity: reference_same_tables against reference
+};
+
+struct CaseAnswer {
+  std::string model, integrator, label, id;
+  bool fixed = false;
+  double value = 0.0;
+  std::string status;  // ok, failed, skipped, missing
+  bool ok = false;     // every repeat ended ok
+  double cpu = 0.0;    // [s] median CPU time
+  double rhs = 0.0;    // rhs evaluations (first repeat)
+  Error integration;   // first quantity, against the same-tables reference
+  Error total;         // first quantity, against the refined-table reference
+};
+
+struct Recommendation {
+  std::string model;
+  double level = 0.0;
+  bool reached = false;        // a setting's integration error is at most the level
+  int best = -1;               // index into Answer::cases
+  bool verified = false;       // the level is verified: reference verified, bound below it
+  bool table_limited = false;  // the table error exceeds the level (default tables)
+  std::string note;            // every reason the level is not reached or not verified
+};
+
+struct Answer {
+  std::vector<Quantity> quantities;
+  std::vector<double> levels;
+  double limit = 0.0;
+  std::vector<ReferenceAnswer> references;
+  std::vector<CaseAnswer> cases;
+  std::vector<Recommendation> recommendations;
+};
+
+// The recommendation rule for one model and level, on the cases of that model: the ok case with
+// the smallest median CPU time (ties: fewer rhs evaluations) whose integration error on the first
+// quantity is at most `level`. `ref` holds the model's bound and table error (nullptr: none).
+Recommendation recommend(const std::string& model, double level,
+                         const std::vector<CaseAnswer>& cases, const ReferenceAnswer* ref,
+                         bool refined_tables, const std::string& unit);
+
+// Reads the runs of `plan` from <out>/reference and <out>/cases and computes the answer.
+Answer computeAnswer(const Plan& plan, const std::string& out, int repeats);
+
+// precision_recommendation.csv (one row per model and level).
+std::string recommendationCsv(const Answer& answer);
+
+// precision.h5 as the engine knows it: /recommendation (the columns of the CSV as datasets),
+// /reference_bound/<model> attributes (verified, why, per quantity the bound and the table
+// error), root attributes quantities, units, reference_limit and the dataset /levels. The
+// plotting step rewrites the file with the per-case tables added.
+void writeAnswerH5(const Answer& answer, const std::string& path);
+
+// The printed answer: per model the reference state, bound and table error, then the table.
+void printAnswer(const Answer& answer, std::ostream& out);
+
+}  // namespace rb::app::precision
