@@ -464,7 +464,8 @@ TEST(ScenarioSchema, HelpAndValidatorAgreeOnRanges) {
               "track { segments = { tangent { length = 400 } },\n"
               "  irregularities = psd { spectrum = 'ore_b176_low', components = 100001 } }\n"
               "vehicle (require 'vehicles.manchester_wagon1' { speed = 10 })\n"
-              "solver { method = 'bdf', rtol = 1 }\n");
+              "solver { method = 'bdf', rtol = 1 }\n"
+              "contact { method = 'guided' }\n");
   EXPECT_EQ(errorsOf(f), f +
                              ":2: track.irregularities (psd): components must be <= 100000, got "
                              "100001\n" +
@@ -476,20 +477,25 @@ namespace {
 // Every entry of an enum's name table parses back to its value, and the schema key that offers
 // the enum's names offers exactly the table's names.
 template <class E>
-void expectTableIsSchemaChoice(const std::string& block, const std::string& key) {
+void expectTableIsSchemaChoice(const std::string& block, const std::string& key,
+                               std::vector<std::string> extra = {}) {
   for (const auto& e : nameTable(E{})) {
     EXPECT_EQ(rb::parse<E>(e.name), e.value) << e.name;
     EXPECT_EQ(rb::nameOf(e.value), e.name);
   }
   const rb::scenario::KeySpec* k = rb::scenario::block(block).key(key);
   ASSERT_NE(k, nullptr) << block << "." << key;
-  EXPECT_EQ(k->choices, rb::namesOf<E>()) << block << "." << key;
+  std::vector<std::string> names = rb::namesOf<E>();
+  names.insert(names.end(), extra.begin(), extra.end());
+  EXPECT_EQ(k->choices, names) << block << "." << key;
 }
 
 }  // namespace
 
 TEST(ScenarioSchema, ChoicesComeFromTheNameTables) {
-  expectTableIsSchemaChoice<rb::dynamics::ContactMethod>("contact", "method");
+  // contact.method also offers "guided": no contact model (scenario.hpp).
+  expectTableIsSchemaChoice<rb::dynamics::ContactMethod>("contact", "method",
+                                                         {rb::scenario::kGuidedContact});
   expectTableIsSchemaChoice<rb::dynamics::CreepModel>("contact", "creep");
   expectTableIsSchemaChoice<rb::dynamics::NormalForceCoupling>("contact", "normal_forces");
   expectTableIsSchemaChoice<rb::dynamics::WheelsetSpin>("contact", "wheelset_spin");
@@ -531,4 +537,38 @@ TEST(ScenarioSchema, ReferenceShowsTheHelpOfEveryChoice) {
   for (const auto& e : rb::dynamics::kWheelsetSpinNames)
     EXPECT_NE(help.find(std::string(e.name) + ": " + std::string(e.help)), std::string::npos)
         << e.name;
+}
+
+// A vehicle with wheelsets and no contact{} block is an error at the vehicle, never a silent
+// guided run; guided wheelsets are asked for by name, and then take no contact keys or profiles.
+TEST(ScenarioContact, WheelsetsWithoutContactBlockAreAnError) {
+  TempDir t("guided");
+  const std::string wagon = "vehicle (require 'vehicles.manchester_wagon1' { speed = 10 })\n";
+  const std::string missing = t.write("missing.lua", kTrack + wagon);
+  EXPECT_EQ(errorsOf(missing),
+            missing +
+                ":2: vehicle: 4 wheelsets and no contact{} block: give contact { method = "
+                "\"kec\" } (or \"lut\") for wheel/rail contact, or contact { method = \"guided\" } "
+                "for wheelsets that follow the track kinematically (no wheel/rail forces)");
+  const std::string guided =
+      t.write("guided.lua", kTrack + wagon + "contact { method = 'guided' }\n");
+  auto spec = loadScenario(guided, opts());
+  EXPECT_TRUE(spec.guided);
+  EXPECT_FALSE(spec.has_contact);
+  const std::string extra = t.write("extra.lua", kTrack + wagon +
+                                                     "profiles { wheel = 's1002' }\n"
+                                                     "contact { method = 'guided', mu = 0.3 }\n");
+  EXPECT_EQ(errorsOf(extra),
+            extra +
+                ":4: contact: mu has no effect with method = \"guided\" (the wheelsets follow the "
+                "track kinematically, no wheel/rail forces)\n" +
+                extra +
+                ":3: profiles{} has no effect with contact { method = \"guided\" } (no wheel/rail "
+                "contact); remove it or choose a contact method");
+  // A vehicle without wheelsets (a frame alone) needs no contact model.
+  const std::string frame = t.write(
+      "frame.lua", kTrack +
+                       "vehicle { speed = 10, bodies = { body { name = 'f', kind = 'frame', mass = "
+                       "1, inertia = {1, 1, 1} } } }\n");
+  EXPECT_NO_THROW(loadScenario(frame, opts()));
 }

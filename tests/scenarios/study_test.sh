@@ -29,6 +29,7 @@ local wagon = require "vehicles.manchester_wagon1"
 local mine = require "mine"
 track { segments = lib.manchester_r500() }
 vehicle (wagon { speed = mine.speed })
+contact { method = "guided" }
 solver { method = "abm", step = 1e-3 }
 run { duration = 0.2, output = { every = 0.01 } }
 LUA

@@ -247,9 +247,6 @@ void collectWarnings(Model& c) {
   if (c.contact)
     for (const auto& w : c.contact->warnings)
       c.warnings.push_back(w);  // already "file:line: warning: ..."
-  if (c.vehicle && !spec.has_contact)
-    c.warnings.push_back(spec.vehicle.loc.str() +
-                         ": note: no contact{} block: wheelsets follow the track kinematically");
 }
 
 // A fixed step beyond the linear stability limit of the model's stiffest decaying mode makes that

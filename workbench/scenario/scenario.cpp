@@ -3,8 +3,28 @@
 #include "workbench/scenario/build.hpp"
 #include "workbench/scenario/lua_host.hpp"
 #include "workbench/scenario/overrides.hpp"
+#include "workbench/vehicle/names.hpp"
 
 namespace rb::scenario {
+namespace {
+
+// Wheelsets without a contact{} block would run guided (no wheel/rail forces) and write a
+// plausible result: the wheel/rail model is never assumed, it is named, contact { method = "kec" }
+// or "lut" for contact, "guided" for wheelsets that follow the track kinematically.
+void checkWheelsetContact(const ScenarioSpec& spec, Diagnostics& d) {
+  if (!spec.has_vehicle || spec.has_contact || spec.guided) return;
+  int wheelsets = 0;
+  for (const auto& b : spec.vehicle.bodies)
+    if (b.kind == vehicle::BodyKind::Wheelset) ++wheelsets;
+  if (wheelsets == 0) return;
+  d.add(spec.vehicle.loc,
+        "vehicle: " + std::to_string(wheelsets) + (wheelsets == 1 ? " wheelset" : " wheelsets") +
+            " and no contact{} block: give contact { method = \"kec\" } (or \"lut\") for "
+            "wheel/rail contact, or contact { method = \"guided\" } for wheelsets that follow "
+            "the track kinematically (no wheel/rail forces)");
+}
+
+}  // namespace
 
 ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   ScenarioSpec spec;
@@ -33,13 +53,18 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
             "track.rail_lr / track.rail_inclination");
   }
   if (const Node* c = root.field("contact")) {
-    spec.has_contact = true;
-    buildContact(*c, spec.contact, d);
+    spec.guided = buildContact(*c, spec.contact, d);
+    spec.has_contact = !spec.guided;
   }
   if (const Node* v = root.field("vehicle")) {
     spec.has_vehicle = true;
     buildVehicle(*v, spec.vehicle, d);
   }
+  checkWheelsetContact(spec, d);
+  if (spec.guided && spec.has_profiles)
+    d.add(spec.profiles.loc,
+          "profiles{} has no effect with contact { method = \"guided\" } (no wheel/rail "
+          "contact); remove it or choose a contact method");
   if (const Node* s = root.field("solver")) {
     spec.has_solver = true;
     buildSolver(*s, spec.solver, d);

@@ -214,6 +214,18 @@ void addIrregularityBlocks(std::vector<BlockSpec>& s) {
                    "where the file does not cover the track [0, length]")}});
 }
 
+// contact.method: the contact methods, and "guided" for wheelsets without contact asked by name.
+KeySpec contactMethod() {
+  KeySpec k = enumChoice("method", dynamics::ContactMethod::Kec,
+                         "constraint contact method, or \"guided\": no wheel/rail contact");
+  k.choices.emplace_back(kGuidedContact);
+  k.choice_help.emplace_back(
+      "no contact model: the wheelsets follow the track centreline kinematically (no wheel/rail "
+      "forces, no creep, no flange); the block then takes no other key. A vehicle with "
+      "wheelsets needs a contact{} block, so guided wheelsets are always asked for by name");
+  return k;
+}
+
 // profiles{} and contact{} (paper Table 1, sections 2.3-2.5).
 void addContactBlocks(std::vector<BlockSpec>& s) {
   s.push_back(
@@ -244,7 +256,7 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
       {"contact",
        "Wheel/rail contact: constraint method (paper section 2.3-2.4), LUT flange Hertz contact "
        "(Table 3, Eq. 20), tangential forces (section 2.5).",
-       {enumChoice("method", dynamics::ContactMethod::Kec, "constraint contact method"),
+       {contactMethod(),
         num("dhat", "m", 0.5e-3, "KEC tread-flange transition length on the flange side",
             dynamics::kKecTransitionRange),
         num("dbar", "m", 1e-3, "KEC tread-flange transition length on the tread side",
