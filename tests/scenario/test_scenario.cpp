@@ -572,3 +572,14 @@ TEST(ScenarioContact, WheelsetsWithoutContactBlockAreAnError) {
                        "1, inertia = {1, 1, 1} } } }\n");
   EXPECT_NO_THROW(loadScenario(frame, opts()));
 }
+
+// A built-in profile name in the wrong case is not a file: the error points to the built-in.
+TEST(ScenarioContact, ProfileNameInTheWrongCaseGetsADidYouMean) {
+  TempDir t("profile_case");
+  const std::string f = t.write("p.lua", kTrack + "profiles { wheel = 'S1002', rail = '60E1' }\n");
+  const std::string e = errorsOf(f);
+  EXPECT_NE(e.find(f + ":2: profiles: wheel: file 'S1002' not found"), std::string::npos) << e;
+  EXPECT_NE(e.find("(did you mean the built-in profile 's1002'?)"), std::string::npos) << e;
+  EXPECT_NE(e.find(f + ":2: profiles: rail: file '60E1' not found"), std::string::npos) << e;
+  EXPECT_NE(e.find("(did you mean the built-in profile '60e1'?)"), std::string::npos) << e;
+}
