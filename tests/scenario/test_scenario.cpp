@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -13,6 +14,7 @@
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/scenario/schema.hpp"
 #include "workbench/track/names.hpp"
+#include "workbench/track/track.hpp"
 #include "workbench/vehicle/names.hpp"
 
 using rb::scenario::LoadOptions;
@@ -582,4 +584,34 @@ TEST(ScenarioContact, ProfileNameInTheWrongCaseGetsADidYouMean) {
   EXPECT_NE(e.find("(did you mean the built-in profile 's1002'?)"), std::string::npos) << e;
   EXPECT_NE(e.find(f + ":2: profiles: rail: file '60E1' not found"), std::string::npos) << e;
   EXPECT_NE(e.find("(did you mean the built-in profile '60e1'?)"), std::string::npos) << e;
+}
+
+// Synthesised irregularities fade in over track.irregularities.fade_in (default 20 m) with a
+// raised cosine: no step at s = 0, where the perfect track before the start meets the synthesis
+// (an FRA class 4 wagon could not even start: its KEC constraints had no solution at t = 0).
+TEST(ScenarioTrack, IrregularitiesFadeInFromTheStart) {
+  TempDir t("fade");
+  const std::string f =
+      t.write("f.lua",
+              "track { segments = { tangent { length = 100 } },\n"
+              "  irregularities = psd { spectrum = 'fra_class_4', seed = 3 } }\n");
+  const auto on = loadScenario(f, opts());
+  EXPECT_DOUBLE_EQ(on.track.irregularities.fade_in, 20.0);
+  const auto off = loadScenario(f, opts({"track.irregularities.fade_in=0"}));
+  const auto a = rb::track::compileTrack(on.track);
+  const auto b = rb::track::compileTrack(off.track);
+  const auto& ia = *a.irregularities();
+  const auto& ib = *b.irregularities();
+  double step0 = 0.0;
+  for (double x : ib.at(0.0).xi) step0 = std::max(step0, std::abs(x));
+  EXPECT_GT(step0, 1e-4);  // today's start: a step of a tenth of a millimetre or more
+  for (int c = 0; c < rb::track::kChannels; ++c) {
+    const auto k = static_cast<std::size_t>(c);
+    EXPECT_EQ(ia.at(0.0).xi[k], 0.0);
+    EXPECT_NEAR(ia.at(10.0).xi[k], 0.5 * ib.at(10.0).xi[k], 1e-12);  // half-way: (1 - cos)/2
+    EXPECT_NEAR(ia.at(5.0).xi[k], 0.5 * (1 - std::cos(M_PI / 4)) * ib.at(5.0).xi[k], 1e-12);
+    EXPECT_NEAR(ia.at(40.0).xi[k], ib.at(40.0).xi[k], 1e-12);  // unchanged beyond the fade-in
+  }
+  EXPECT_NE(errorsOf(f, opts({"track.irregularities.fade_in=-1"})).find("fade_in must be >= 0"),
+            std::string::npos);
 }

@@ -191,6 +191,11 @@ void addIrregularityBlocks(std::vector<BlockSpec>& s) {
         wl, integer("components", 2000, "cosines per channel", 1, track::kMaxPsdComponents),
         num("step", "m", 0.1, "spline sampling step (paper: 0.1 m)", 0, kInf, true),
         num("scale", "-", 1, "amplitude factor on every channel", 0, 100), channels,
+        num("fade_in", "m", track::kDefaultFadeIn,
+            "raised-cosine fade-in of every channel from s = 0 over this length, (1 - cos(pi s / "
+            "fade_in)) / 2, so the vehicle meets no step where the irregularities begin (recorded "
+            "in /track/irregularities@fade_in); 0 = none (the paper's validation cases)",
+            0, 1e5),
         boolean("randomize_frequencies", true,
                 "draw each cosine's frequency inside its band (false: band centres, periodic)"),
         psdInput(track::Channel::Alignment), psdInput(track::Channel::Vertical),
@@ -211,7 +216,12 @@ void addIrregularityBlocks(std::vector<BlockSpec>& s) {
                    "unit of the irregularity columns (s is always in m); values above 0.1 m are "
                    "refused as implausible"),
         enumChoice("beyond", track::Beyond::Error,
-                   "where the file does not cover the track [0, length]")}});
+                   "where the file does not cover the track [0, length]"),
+        num("fade_in", "m", 0,
+            "raised-cosine fade-in of every channel from s = 0 over this length, (1 - cos(pi s / "
+            "fade_in)) / 2 (recorded in /track/irregularities@fade_in); 0 = the record as "
+            "measured",
+            0, 1e5)}});
 }
 
 // contact.method: the contact methods, and "guided" for wheelsets without contact asked by name.
