@@ -615,3 +615,40 @@ TEST(ScenarioTrack, IrregularitiesFadeInFromTheStart) {
   EXPECT_NE(errorsOf(f, opts({"track.irregularities.fade_in=-1"})).find("fade_in must be >= 0"),
             std::string::npos);
 }
+
+// A mistyped require is collected like any other problem: the rest of the file runs on a
+// stand-in, its other errors are reported with it, and only the blocks made from the missing
+// module are left unchecked (no error about them being absent).
+TEST(ScenarioErrors, MissingModuleDoesNotHideTheOtherErrors) {
+  TempDir t("require");
+  const std::string f =
+      t.write("r.lua",
+              "local wagon = require 'vehicles.manchester_wagn1'\n"
+              "local lib = require 'tracks.lib'\n"
+              "track { segments = lib.manchester_r500(), stpe = 0.5 }\n"
+              "vehicle (wagon { speed = 20 })\n"
+              "contact { method = 'kec', mu = -1 }\n"
+              "for i, b in ipairs(wagon.bodies) do error('a stand-in is an empty list') end\n"
+              "local n = #wagon.bodies + wagon.x * 2\n"
+              "solver { method = 'dopri5', rtol = 2 }\n");
+  const std::string e = errorsOf(f);
+  EXPECT_EQ(e.rfind(f + ":1: require \"vehicles.manchester_wagn1\": module not found (did you "
+                        "mean \"vehicles.manchester_wagon1\"?); tried:",
+                    0),
+            0u)
+      << e;
+  EXPECT_NE(e.find(f + ":3: track: unknown key 'stpe' (did you mean 'step'?)"), std::string::npos)
+      << e;
+  EXPECT_NE(e.find(f + ":5: contact: mu must be"), std::string::npos) << e;
+  EXPECT_NE(e.find(f + ":8: solver: rtol must be < 1, got 2"), std::string::npos) << e;
+  EXPECT_EQ(e.find("vehicle"), e.find("vehicles.manchester_wagn1")) << e;  // nothing else on it
+  EXPECT_EQ(e.find("solver{} has no effect"), std::string::npos) << e;
+  // A script error after a missing module keeps the module's error first.
+  const std::string g = t.write("g.lua",
+                                "local m = require 'nope.nothing'\n"
+                                "track { segments = { tangent { length = 100 } } }\n"
+                                "local x = math.floor(m.value)\n");
+  const std::string eg = errorsOf(g);
+  EXPECT_EQ(eg.rfind(g + ":1: require \"nope.nothing\": module not found", 0), 0u) << eg;
+  EXPECT_NE(eg.find(g + ":3:"), std::string::npos) << eg;
+}

@@ -1,5 +1,7 @@
 #include "workbench/scenario/scenario.hpp"
 
+#include <algorithm>
+
 #include "workbench/scenario/build.hpp"
 #include "workbench/scenario/lua_host.hpp"
 #include "workbench/scenario/overrides.hpp"
@@ -33,16 +35,24 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   HostOptions ho;
   ho.root = options.root;
   ho.instruction_limit = options.instruction_limit;
+  // A mistyped require must not hide the file's other problems: it is collected, and the blocks
+  // made from the missing module are left out (they cannot be checked without it).
+  ho.collect_missing_modules = true;
   LuaHost host(ho);
   Node root = host.runFile(path);
   spec.text = host.text();  // the bytes that ran, read once (never reopened: it may have changed)
   spec.modules = host.modules();
   Diagnostics d;
+  for (const auto& m : host.missingModules()) d.add(m.loc, m.message);
+  const auto& incomplete = host.incompleteBlocks();
+  auto unchecked = [&](const char* kind) {
+    return std::find(incomplete.begin(), incomplete.end(), kind) != incomplete.end();
+  };
   for (const auto& o : options.overrides) applyOverride(root, o, d);
 
   if (const Node* t = root.field("track"))
     buildTrack(*t, host, spec.track, spec.track_rails_given, d);
-  else
+  else if (!unchecked("track"))
     d.add({path, 0}, "scenario has no track { ... } block");
   if (const Node* p = root.field("profiles")) {
     spec.has_profiles = true;
@@ -60,6 +70,9 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
     spec.has_vehicle = true;
     buildVehicle(*v, spec.vehicle, d);
   }
+  // A block left unchecked still exists: no error about it being absent.
+  spec.has_vehicle = spec.has_vehicle || unchecked("vehicle");
+  spec.has_contact = spec.has_contact || unchecked("contact");
   checkWheelsetContact(spec, d);
   if (spec.guided && spec.has_profiles)
     d.add(spec.profiles.loc,
