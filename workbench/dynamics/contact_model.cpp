@@ -336,7 +336,13 @@ void gaugeWarnings(ContactModel& m, const track::TrackModel& track) {
   if (*hi > 0.0) {
     const double y = m.flangeway[0] + 0.5 * *hi;
     const contact::TreadContact t = m.solver->solveTread(y, *hi);
-    if (!t.converged || t.penetration > 1e-4)
+    // The profiles are extended beyond their ends (profile.hpp): a contact point there is not
+    // on the wheel or the rail.
+    const auto& cfg = m.solver->config();
+    const bool onProfiles = cfg.right_wheel->inside(t.right.s_w) &&
+                            cfg.right_rail->inside(t.right.s_r) &&
+                            cfg.left_wheel->inside(t.left.s_w) && cfg.left_rail->inside(t.left.s_r);
+    if (!t.converged || t.penetration > 1e-4 || !onProfiles)
       m.gauge_warnings.push_back("the gauge irregularity widens the gauge by " + mm(*hi) +
                                  " (at s = " + formatNumber(s_hi, 4) +
                                  " m): against its flange (y = " + mm(y) +
