@@ -52,10 +52,10 @@ inline constexpr double kMaxIrregularity = 0.1;
 // [m] Default length of the raised-cosine fade-in of synthesised irregularities from s = 0
 // (IrregularitySpec::fade_in). Before s = 0 the track is perfect, so an unfaded synthesis starts
 // with a step of the sum of its cosines (several mm for FRA class 4-6) that the first wheelsets hit
-// at once. 20 m: longer than the longest wavelength a vehicle responds to strongly (bogie pitch
-// and yaw modes, 3-25 m at 20-40 m/s) and the wheelbase of a bogie, so the ramp itself excites
-// little; short against a test section (EN 14363 zones are >= 100 m of track), so the faded
-// part is a small share of the evaluated track.
+// at once. 20 m: the ramp is half a cosine period, so its own content lies at wavelengths of 2 L =
+// 40 m and longer (0.5 Hz and below at 20 m/s), under the car-body bounce and sway modes (about
+// 1 Hz) and far under the bogie modes, and it is longer than a bogie's wheelbase; yet short
+// against a test section (EN 14363 evaluates sections of 100 m and more).
 inline constexpr double kDefaultFadeIn = 20.0;
 
 // The four centreline irregularities of paper Fig. 3 (Eq. before (4)).
