@@ -9,7 +9,9 @@ local hard = require "hard.lib"
 track {
   segments = lib.manchester_r500(),
   step = 0.5,
-  irregularities = psd { spectrum = "ore_b176_low", seed = 42, wavelengths = { 3, 70 }, step = 0.1 },
+  -- fade_in = 0: case 3's irregularities as the paper's (no ramp at the start).
+  irregularities = psd { spectrum = "ore_b176_low", seed = 42, wavelengths = { 3, 70 }, step = 0.1,
+                         fade_in = 0 },
 }
 hard.profiles()
 contact { method = "lut", flange_stiffness = hard.K_HERTZ, flange_damping = hard.D_HERTZ,

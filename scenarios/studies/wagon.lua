@@ -17,7 +17,9 @@ return function(o)
   o = o or {}
   local irr = nil
   if o.irregularities ~= false then
-    irr = psd { spectrum = "ore_b176_low", seed = 42, wavelengths = { 3, 70 }, step = 0.1 }
+    -- fade_in = 0: case 3 as the paper and scenarios/validation/common.lua have it (no ramp).
+    irr = psd { spectrum = "ore_b176_low", seed = 42, wavelengths = { 3, 70 }, step = 0.1,
+                fade_in = 0 }
   end
   local segments = o.tangent and { tangent { length = 500 } } or lib.manchester_r500()
   track { segments = segments, step = 0.5, irregularities = irr }

@@ -12,5 +12,6 @@ track {
     seed = 42,
     wavelengths = { 3, 70 },
     step = 0.1,            -- paper section 2.1
+    fade_in = 0,           -- the paper's start, without the default 20 m ramp (docs/track.md)
   },
 }

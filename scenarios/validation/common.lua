@@ -80,7 +80,10 @@ end
 function M.wagon(method, irregular, anti_roll_bar)
   local irr = nil
   if irregular then
-    irr = psd { spectrum = "ore_b176_low", seed = 42, wavelengths = { 3, 70 }, step = 0.1 }
+    -- fade_in = 0: the paper's irregularities start at s = 0 without a ramp (the default 20 m
+    -- raised-cosine fade-in, docs/track.md, would change the locked case-3 values).
+    irr = psd { spectrum = "ore_b176_low", seed = 42, wavelengths = { 3, 70 }, step = 0.1,
+                fade_in = 0 }
   end
   track { segments = lib.manchester_r500(), step = 0.5, irregularities = irr }
   M.profiles()

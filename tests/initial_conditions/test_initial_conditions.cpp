@@ -52,7 +52,7 @@ std::string wagonScenario(const std::string& initial, bool contact = true,
          "track { segments = { tangent { length = 200 } }, step = 0.5 }\n" +  // 2
          (contact ? "hard.profiles()\n" : "\n") +                             // 3
          (contact ? "contact { method = \"kec\", creep = \"polach\", mu = hard.MU_PAPER }\n"
-                  : "\n") +                                                     // 4
+                  : "contact { method = \"guided\" }\n") +                      // 4
          "local v = require \"vehicles.manchester_wagon1\" { speed = 20 }\n" +  // 5
          initial +
          "\n" +                                               // 6
@@ -246,7 +246,7 @@ TEST(InitialConditionsCheck, ACoordinateThatIsNotAStateIsRefusedByCheck) {
                  "(contact.wheelset_spin = prescribed: pitch_dot = V / r0)");
   EXPECT_EQ(compileErrors(guided, {"vehicle.initial.ws3.y=1e-3"}),
             cl + "ws3.y: not a state of this model: the wheelsets are guided: they follow the "
-                 "track kinematically (no contact{} block), so 'ws3' has no state");
+                 "track kinematically (contact.method = guided), so 'ws3' has no state");
   // The single wheelset's guided frame.
   const std::string frame =
       t.write("f.lua", "local common = require 'validation.common'\ncommon.case1(300, 'kec')\n");

@@ -8,3 +8,5 @@ vehicle (require "vehicles.tiny" { groups = {
   everything = { "*" },
   dotted = { "dotted.name" },
 } })
+-- Guided wheelsets, asked for by name (a vehicle with wheelsets needs a contact{} block).
+contact { method = "guided" }

@@ -163,3 +163,21 @@ TEST(Positioning, PaperTable1Constants) {
 }
 
 }  // namespace
+
+namespace {
+
+// The inclination a rail profile is drawn with, from the symmetry of its head: the upright 60E1
+// gives 0, the benchmark file (drawn at 1:40) its 1:40, and 60E1 drawn at any cant that cant.
+TEST(RailInclination, DrawnInclinationFromTheHeadSymmetry) {
+  const auto upright = drawnInclination(rail60E1(RailSide::Left));
+  ASSERT_TRUE(upright.has_value());
+  EXPECT_NEAR(*upright, 0.0, 1e-4);
+  const Profile file = readSimpackProfile(projectFile("profiles/MBench_UIC60_v3.prr"));
+  const auto canted = drawnInclination(file);
+  ASSERT_TRUE(canted.has_value());
+  EXPECT_NEAR(*canted, kCant, 1e-3);
+  std::printf("drawn inclination: 60E1 %.6f rad, MBench_UIC60_v3.prr %.6f rad (1:%.2f)\n", *upright,
+              *canted, 1.0 / std::tan(*canted));
+}
+
+}  // namespace

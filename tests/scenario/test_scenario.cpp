@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -13,6 +14,7 @@
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/scenario/schema.hpp"
 #include "workbench/track/names.hpp"
+#include "workbench/track/track.hpp"
 #include "workbench/vehicle/names.hpp"
 
 using rb::scenario::LoadOptions;
@@ -464,7 +466,8 @@ TEST(ScenarioSchema, HelpAndValidatorAgreeOnRanges) {
               "track { segments = { tangent { length = 400 } },\n"
               "  irregularities = psd { spectrum = 'ore_b176_low', components = 100001 } }\n"
               "vehicle (require 'vehicles.manchester_wagon1' { speed = 10 })\n"
-              "solver { method = 'bdf', rtol = 1 }\n");
+              "solver { method = 'bdf', rtol = 1 }\n"
+              "contact { method = 'guided' }\n");
   EXPECT_EQ(errorsOf(f), f +
                              ":2: track.irregularities (psd): components must be <= 100000, got "
                              "100001\n" +
@@ -476,20 +479,25 @@ namespace {
 // Every entry of an enum's name table parses back to its value, and the schema key that offers
 // the enum's names offers exactly the table's names.
 template <class E>
-void expectTableIsSchemaChoice(const std::string& block, const std::string& key) {
+void expectTableIsSchemaChoice(const std::string& block, const std::string& key,
+                               std::vector<std::string> extra = {}) {
   for (const auto& e : nameTable(E{})) {
     EXPECT_EQ(rb::parse<E>(e.name), e.value) << e.name;
     EXPECT_EQ(rb::nameOf(e.value), e.name);
   }
   const rb::scenario::KeySpec* k = rb::scenario::block(block).key(key);
   ASSERT_NE(k, nullptr) << block << "." << key;
-  EXPECT_EQ(k->choices, rb::namesOf<E>()) << block << "." << key;
+  std::vector<std::string> names = rb::namesOf<E>();
+  names.insert(names.end(), extra.begin(), extra.end());
+  EXPECT_EQ(k->choices, names) << block << "." << key;
 }
 
 }  // namespace
 
 TEST(ScenarioSchema, ChoicesComeFromTheNameTables) {
-  expectTableIsSchemaChoice<rb::dynamics::ContactMethod>("contact", "method");
+  // contact.method also offers "guided": no contact model (scenario.hpp).
+  expectTableIsSchemaChoice<rb::dynamics::ContactMethod>("contact", "method",
+                                                         {rb::scenario::kGuidedContact});
   expectTableIsSchemaChoice<rb::dynamics::CreepModel>("contact", "creep");
   expectTableIsSchemaChoice<rb::dynamics::NormalForceCoupling>("contact", "normal_forces");
   expectTableIsSchemaChoice<rb::dynamics::WheelsetSpin>("contact", "wheelset_spin");
@@ -531,4 +539,116 @@ TEST(ScenarioSchema, ReferenceShowsTheHelpOfEveryChoice) {
   for (const auto& e : rb::dynamics::kWheelsetSpinNames)
     EXPECT_NE(help.find(std::string(e.name) + ": " + std::string(e.help)), std::string::npos)
         << e.name;
+}
+
+// A vehicle with wheelsets and no contact{} block is an error at the vehicle, never a silent
+// guided run; guided wheelsets are asked for by name, and then take no contact keys or profiles.
+TEST(ScenarioContact, WheelsetsWithoutContactBlockAreAnError) {
+  TempDir t("guided");
+  const std::string wagon = "vehicle (require 'vehicles.manchester_wagon1' { speed = 10 })\n";
+  const std::string missing = t.write("missing.lua", kTrack + wagon);
+  EXPECT_EQ(errorsOf(missing),
+            missing +
+                ":2: vehicle: 4 wheelsets and no contact{} block: give contact { method = "
+                "\"kec\" } (or \"lut\") for wheel/rail contact, or contact { method = \"guided\" } "
+                "for wheelsets that follow the track kinematically (no wheel/rail forces)");
+  const std::string guided =
+      t.write("guided.lua", kTrack + wagon + "contact { method = 'guided' }\n");
+  auto spec = loadScenario(guided, opts());
+  EXPECT_TRUE(spec.guided);
+  EXPECT_FALSE(spec.has_contact);
+  const std::string extra = t.write("extra.lua", kTrack + wagon +
+                                                     "profiles { wheel = 's1002' }\n"
+                                                     "contact { method = 'guided', mu = 0.3 }\n");
+  EXPECT_EQ(errorsOf(extra),
+            extra +
+                ":4: contact: mu has no effect with method = \"guided\" (the wheelsets follow the "
+                "track kinematically, no wheel/rail forces)\n" +
+                extra +
+                ":3: profiles{} has no effect with contact { method = \"guided\" } (no wheel/rail "
+                "contact); remove it or choose a contact method");
+  // A vehicle without wheelsets (a frame alone) needs no contact model.
+  const std::string frame = t.write(
+      "frame.lua", kTrack +
+                       "vehicle { speed = 10, bodies = { body { name = 'f', kind = 'frame', mass = "
+                       "1, inertia = {1, 1, 1} } } }\n");
+  EXPECT_NO_THROW(loadScenario(frame, opts()));
+}
+
+// A built-in profile name in the wrong case is not a file: the error points to the built-in.
+TEST(ScenarioContact, ProfileNameInTheWrongCaseGetsADidYouMean) {
+  TempDir t("profile_case");
+  const std::string f = t.write("p.lua", kTrack + "profiles { wheel = 'S1002', rail = '60E1' }\n");
+  const std::string e = errorsOf(f);
+  EXPECT_NE(e.find(f + ":2: profiles: wheel: file 'S1002' not found"), std::string::npos) << e;
+  EXPECT_NE(e.find("(did you mean the built-in profile 's1002'?)"), std::string::npos) << e;
+  EXPECT_NE(e.find(f + ":2: profiles: rail: file '60E1' not found"), std::string::npos) << e;
+  EXPECT_NE(e.find("(did you mean the built-in profile '60e1'?)"), std::string::npos) << e;
+}
+
+// Synthesised irregularities fade in over track.irregularities.fade_in (default 20 m) with a
+// raised cosine: no step at s = 0, where the perfect track before the start meets the synthesis
+// (an FRA class 4 wagon could not even start: its KEC constraints had no solution at t = 0).
+TEST(ScenarioTrack, IrregularitiesFadeInFromTheStart) {
+  TempDir t("fade");
+  const std::string f =
+      t.write("f.lua",
+              "track { segments = { tangent { length = 100 } },\n"
+              "  irregularities = psd { spectrum = 'fra_class_4', seed = 3 } }\n");
+  const auto on = loadScenario(f, opts());
+  EXPECT_DOUBLE_EQ(on.track.irregularities.fade_in, 20.0);
+  const auto off = loadScenario(f, opts({"track.irregularities.fade_in=0"}));
+  const auto a = rb::track::compileTrack(on.track);
+  const auto b = rb::track::compileTrack(off.track);
+  const auto& ia = *a.irregularities();
+  const auto& ib = *b.irregularities();
+  double step0 = 0.0;
+  for (double x : ib.at(0.0).xi) step0 = std::max(step0, std::abs(x));
+  EXPECT_GT(step0, 1e-4);  // today's start: a step of a tenth of a millimetre or more
+  for (int c = 0; c < rb::track::kChannels; ++c) {
+    const auto k = static_cast<std::size_t>(c);
+    EXPECT_EQ(ia.at(0.0).xi[k], 0.0);
+    EXPECT_NEAR(ia.at(10.0).xi[k], 0.5 * ib.at(10.0).xi[k], 1e-12);  // half-way: (1 - cos)/2
+    EXPECT_NEAR(ia.at(5.0).xi[k], 0.5 * (1 - std::cos(M_PI / 4)) * ib.at(5.0).xi[k], 1e-12);
+    EXPECT_NEAR(ia.at(40.0).xi[k], ib.at(40.0).xi[k], 1e-12);  // unchanged beyond the fade-in
+  }
+  EXPECT_NE(errorsOf(f, opts({"track.irregularities.fade_in=-1"})).find("fade_in must be >= 0"),
+            std::string::npos);
+}
+
+// A mistyped require is collected like any other problem: the rest of the file runs on a
+// stand-in, its other errors are reported with it, and only the blocks made from the missing
+// module are left unchecked (no error about them being absent).
+TEST(ScenarioErrors, MissingModuleDoesNotHideTheOtherErrors) {
+  TempDir t("require");
+  const std::string f =
+      t.write("r.lua",
+              "local wagon = require 'vehicles.manchester_wagn1'\n"
+              "local lib = require 'tracks.lib'\n"
+              "track { segments = lib.manchester_r500(), stpe = 0.5 }\n"
+              "vehicle (wagon { speed = 20 })\n"
+              "contact { method = 'kec', mu = -1 }\n"
+              "for i, b in ipairs(wagon.bodies) do error('a stand-in is an empty list') end\n"
+              "local n = #wagon.bodies + wagon.x * 2\n"
+              "solver { method = 'dopri5', rtol = 2 }\n");
+  const std::string e = errorsOf(f);
+  EXPECT_EQ(e.rfind(f + ":1: require \"vehicles.manchester_wagn1\": module not found (did you "
+                        "mean \"vehicles.manchester_wagon1\"?); tried:",
+                    0),
+            0u)
+      << e;
+  EXPECT_NE(e.find(f + ":3: track: unknown key 'stpe' (did you mean 'step'?)"), std::string::npos)
+      << e;
+  EXPECT_NE(e.find(f + ":5: contact: mu must be"), std::string::npos) << e;
+  EXPECT_NE(e.find(f + ":8: solver: rtol must be < 1, got 2"), std::string::npos) << e;
+  EXPECT_EQ(e.find("vehicle"), e.find("vehicles.manchester_wagn1")) << e;  // nothing else on it
+  EXPECT_EQ(e.find("solver{} has no effect"), std::string::npos) << e;
+  // A script error after a missing module keeps the module's error first.
+  const std::string g = t.write("g.lua",
+                                "local m = require 'nope.nothing'\n"
+                                "track { segments = { tangent { length = 100 } } }\n"
+                                "local x = math.floor(m.value)\n");
+  const std::string eg = errorsOf(g);
+  EXPECT_EQ(eg.rfind(g + ":1: require \"nope.nothing\": module not found", 0), 0u) << eg;
+  EXPECT_NE(eg.find(g + ":3:"), std::string::npos) << eg;
 }

@@ -29,6 +29,7 @@ local wagon = require "vehicles.manchester_wagon1"
 local mine = require "mine"
 track { segments = lib.manchester_r500() }
 vehicle (wagon { speed = mine.speed })
+contact { method = "guided" }
 solver { method = "abm", step = 1e-3 }
 run { duration = 0.2, output = { every = 0.01 } }
 LUA
@@ -122,6 +123,22 @@ wb study "$TMP/s/long.lua" --out "$O" >/dev/null 2>"$TMP/e"; rc=$?
 wb study "$TMP/s/allfail.lua" --out "$TMP/o4" >/dev/null 2>"$TMP/e"; rc=$?
 [ $rc -eq 2 ] && grep -q "no run of the study is ok" "$TMP/e" && ok "all cases failing exits 2" \
   || bad "all-fail study exit $rc: $(cat "$TMP/e")"
+
+# 4b. A metric on a signal no case writes is refused before any run, every such metric at once,
+# each with its did-you-mean; nothing is written.
+cat >"$TMP/s/badsignal.lua" <<'LUA'
+study { base = "base.lua", matrix = { ["solver.method"] = { "rk4", "abm" } },
+  metrics = {
+    { name = "y", signal = "/bodies/ws1/y", stat = "max_abs" },
+    { name = "typo", signal = "/bodies/ws9/y", stat = "max_abs" },
+    { name = "wheel", signal = "/contact/ws1/left/Q", stat = "max" },
+  } }
+LUA
+wb study "$TMP/s/badsignal.lua" --out "$TMP/o4b" >/dev/null 2>"$TMP/e"; rc=$?
+[ $rc -eq 1 ] && grep -q "badsignal.lua:1: study.metrics\[2\] (typo): signal '/bodies/ws9/y': no body 'ws9' (did you mean 'ws1'?)" "$TMP/e" \
+  && grep -q "study.metrics\[3\] (wheel): signal '/contact/ws1/left/Q': the scenario has no wheel/rail contact model" "$TMP/e" \
+  && grep -q "^2 problems found; nothing was run" "$TMP/e" && [ ! -e "$TMP/o4b" ] \
+  && ok "metric signals checked before the runs" || bad "metric signals ($rc): $(cat "$TMP/e")"
 
 # 5. A 1e8-case matrix is refused at check time, before anything runs.
 wb study tests/scenario/study/huge.lua --out "$TMP/o5" >/dev/null 2>"$TMP/e"; rc=$?

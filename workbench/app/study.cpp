@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <set>
 #include <string_view>
 #include <thread>
 
@@ -21,6 +22,7 @@
 #include "workbench/core/error.hpp"
 #include "workbench/core/files.hpp"
 #include "workbench/io/read_stats.hpp"
+#include "workbench/run/vehicle_run.hpp"
 #include "workbench/track/spec.hpp"
 #ifdef RB_HAVE_MPI
 #include "workbench/app/study_mpi.hpp"
@@ -265,11 +267,51 @@ int runShard(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& pl
   return 0;
 }
 
+// Every signal a metric reads that no case's run would write, before any run starts: a typo in
+// a metric otherwise shows only when the summary is written, after every run. Checked against
+// each case's scenario (a case may change the vehicle or the outputs); a case whose scenario does
+// not load is left to its run, which reports why.
+void checkMetricSignals(const scenario::StudySpec& st, const StudyOptions& o) {
+  Diagnostics d;
+  std::set<std::string> seen;
+  std::map<std::string, bool> loaded;  // base + overrides already checked
+  for (const auto& c : st.cases) {
+    std::string key = c.base;
+    for (const auto& ov : c.overrides) key += "\n" + ov;
+    if (loaded.count(key) != 0) continue;
+    loaded[key] = true;
+    scenario::ScenarioSpec spec;
+    try {
+      scenario::LoadOptions lo;
+      lo.root = o.root;
+      lo.overrides = c.overrides;
+      spec = scenario::loadScenario(c.base, lo);
+    } catch (const InputError&) {
+      continue;
+    }
+    for (const auto& m : st.metrics) {
+      std::vector<std::pair<std::string, std::string>> paths;
+      if (!m.signal.empty()) paths.emplace_back("signal", m.signal);
+      for (const auto& [name, path] : m.signals) paths.emplace_back("signals." + name, path);
+      for (const auto& [what, path] : paths) {
+        const std::string why = run::signalProblem(spec, path);
+        if (why.empty()) continue;
+        const std::string msg = "study.metrics[" + std::to_string(m.index) + "] (" + m.name +
+                                "): " + what + " '" + path + "': " + why;
+        if (!seen.insert(msg).second) continue;
+        d.add(m.loc, msg + (st.cases.size() > 1 ? " (case '" + c.label + "')" : ""));
+      }
+    }
+  }
+  d.throwIfAny();
+}
+
 }  // namespace
 
 int runStudySpec(const scenario::StudySpec& st, const StudyOptions& o,
                  const std::vector<std::string>& plotArgs) {
   if (!o.shard.empty()) parseShard(o.shard, o.file);  // a bad shard runs nothing
+  if (!o.summarize) checkMetricSignals(st, o);
   if (o.mpi) {
 #ifdef RB_HAVE_MPI
     return runStudyMpi(st, o, plotArgs);

@@ -91,7 +91,13 @@ struct ContactModel {
 
   std::vector<int> wheelsets;         // body indices of the vehicle's wheelsets, in body order
   std::vector<std::string> warnings;  // table warnings and other notes for the user
-  SourceLoc loc;                      // the contact{} block
+  // Flangeway play of the profiles on the nominal gauge: how far [m] the centred wheelset moves
+  // to the left (y > 0) and to the right until that side's flange touches its rail (NaN when no
+  // flange contact within 30 mm), and the warnings on the track's gauge irregularity against it
+  // (messages without location: narrowing beyond the play, widening beyond tread contact).
+  double flangeway[2] = {0.0, 0.0};
+  std::vector<std::string> gauge_warnings;
+  SourceLoc loc;  // the contact{} block
 
   // Build statistics of the table in use (time, bytes, warnings, notes).
   const contact::TableBuildStats& tableStats() const;

@@ -38,10 +38,12 @@ void addIrregularities(Builder& f, const track::TrackSpec& spec, const track::Tr
     f.attr(r, "wavelength_max", irr.wavelength_max);
     f.attr(r, "components", static_cast<std::int64_t>(irr.components));
     f.attr(r, "scale", irr.scale);
+    f.attr(r, "fade_in", irr.fade_in);
   } else {
     f.attr(r, "csv_path", irr.csv_path);
     f.attr(r, "csv_unit", std::string(nameOf(irr.csv_unit)));
     f.attr(r, "beyond", std::string(nameOf(irr.beyond)));
+    f.attr(r, "fade_in", irr.fade_in);
   }
   f.dataset(r + "/s", t.irr_s, "m");
   f.dataset(r + "/alignment", t.alignment, "m");

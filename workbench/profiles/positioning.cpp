@@ -47,6 +47,59 @@ TopPoint highestPoint(const Profile& rail, double angle) {
   return {s, rotatedPoint(rail, s, angle)};
 }
 
+namespace {
+
+// Lateral offset of the midpoint of the head's chord `depth` below the top from the top, in the
+// frame rotated by `angle`; nullopt when the profile ends before the chord.
+std::optional<double> chordOffset(const Profile& rail, double angle, double depth) {
+  const TopPoint top = highestPoint(rail, angle);
+  const double target = top.p.z - depth;
+  const double c = std::cos(angle), sn = std::sin(angle);
+  auto z = [&](double s) { return s * sn + rail.at(s).h * c; };
+  auto y = [&](double s) { return s * c - rail.at(s).h * sn; };
+  constexpr double kWalk = 1e-4;  // [m] below the knot spacing of any usable rail head
+  auto side = [&](double dir) -> std::optional<double> {
+    double inside = top.s;
+    for (double s = top.s + dir * kWalk; rail.inside(s); s += dir * kWalk) {
+      if (z(s) < target) {
+        double a = inside, b = s;  // z(a) >= target > z(b)
+        for (int it = 0; it < 60; ++it) {
+          const double m = 0.5 * (a + b);
+          (z(m) >= target ? a : b) = m;
+        }
+        return y(0.5 * (a + b));
+      }
+      inside = s;
+    }
+    return std::nullopt;
+  };
+  const auto lo = side(-1.0), hi = side(1.0);
+  if (!lo || !hi) return std::nullopt;
+  return 0.5 * (*lo + *hi) - top.p.y;
+}
+
+}  // namespace
+
+std::optional<double> drawnInclination(const Profile& rail, double depth) {
+  constexpr double kRange = 0.06;  // [rad] well beyond any rail inclination in use (1:20 = 0.05)
+  double a = -kRange, b = kRange;
+  auto fa = chordOffset(rail, a, depth), fb = chordOffset(rail, b, depth);
+  if (!fa || !fb || (*fa > 0.0) == (*fb > 0.0)) return std::nullopt;
+  for (int it = 0; it < 50; ++it) {
+    const double m = 0.5 * (a + b);
+    const auto fm = chordOffset(rail, m, depth);
+    if (!fm) return std::nullopt;
+    if ((*fm > 0.0) == (*fa > 0.0)) {
+      a = m;
+      fa = fm;
+    } else {
+      b = m;
+    }
+  }
+  // The angle that makes the head symmetric undoes the inclination it is drawn with.
+  return -0.5 * (a + b);
+}
+
 PlanePoint gaugePoint(const Profile& rail, RailSide side, double angle, double depth,
                       double* s_out) {
   const TopPoint top = highestPoint(rail, angle);

@@ -10,6 +10,7 @@
 //   lateral offset of the gauge point from the rail profile origin, in the inclined rail frame.
 //   The gauge point lies kGaugePointDepth = 14 mm below the highest point of the inclined head, on
 //   its gauge side; for 60E1 at 1:40, |y_gp| = 35.53 mm (computed by gaugePoint(), not hard-coded).
+#include <optional>
 #include <vector>
 
 #include "workbench/profiles/profile.hpp"
@@ -67,6 +68,14 @@ TopPoint highestPoint(const Profile& rail, double angle);
 // for the left rail) and, through s_out if given, its profile parameter.
 PlanePoint gaugePoint(const Profile& rail, RailSide side, double angle,
                       double depth = kGaugePointDepth, double* s_out = nullptr);
+
+// The inclination a rail profile is drawn with: the angle by which its points must be rotated
+// (rotatedPoint) for the head to be symmetric about the vertical through its highest point,
+// measured by the chord `depth` below the top (a rail head is symmetric about its axis, so an
+// upright 60E1 gives 0 and a profile drawn at 1:40 about 0.025 in magnitude). nullopt when the
+// profile does not reach `depth` on both sides of its top or no angle in +-0.06 rad makes it
+// symmetric (not a rail head).
+std::optional<double> drawnInclination(const Profile& rail, double depth = 0.008);
 
 // ---- Positions ---------------------------------------------------------------------------------
 // Lw = B/2 + flangeBackDistance, Lr = G/2 + gaugePointOffset (both offsets > 0).

@@ -244,12 +244,15 @@ void collectWarnings(Model& c) {
                          "' are UNVERIFIED against a primary source (see docs/track.md)");
   for (const auto& w : c.track->warnings())
     c.warnings.push_back(w.loc.str() + ": warning: " + w.message);
-  if (c.contact)
+  if (c.contact) {
     for (const auto& w : c.contact->warnings)
       c.warnings.push_back(w);  // already "file:line: warning: ..."
-  if (c.vehicle && !spec.has_contact)
-    c.warnings.push_back(spec.vehicle.loc.str() +
-                         ": note: no contact{} block: wheelsets follow the track kinematically");
+    // Printed by check and run, and recorded in the result's /stats/warnings.
+    for (const auto& w : c.contact->gauge_warnings) {
+      c.warnings.push_back(irr.loc.str() + ": warning: " + w);
+      c.run_warnings.push_back(w);
+    }
+  }
 }
 
 // A fixed step beyond the linear stability limit of the model's stiffest decaying mode makes that

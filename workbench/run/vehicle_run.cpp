@@ -885,4 +885,90 @@ std::string writeProvenance(const Model& c, io::ResultFile& f, const std::string
   return note;
 }
 
+namespace {
+
+// The parts of a dataset path: "/bodies/ws1/y" -> {"bodies", "ws1", "y"}.
+std::vector<std::string> pathParts(const std::string& path) {
+  std::vector<std::string> out;
+  std::size_t at = 1;
+  while (at <= path.size()) {
+    const std::size_t next = std::min(path.find('/', at), path.size());
+    out.push_back(path.substr(at, next - at));
+    at = next + 1;
+  }
+  return out;
+}
+
+// "'x' is not one of a, b (did you mean 'a'?)" for a name that is not among `names`.
+std::string notAmong(const std::string& what, const std::string& x,
+                     const std::vector<std::string>& names) {
+  const std::string hint = closestMatch(x, names);
+  return "no " + what + " '" + x + "'" +
+         (hint.empty() ? " (there are: " + join(names, ", ") + ")"
+                       : " (did you mean '" + hint + "'?)");
+}
+
+}  // namespace
+
+std::string signalProblem(const scenario::ScenarioSpec& spec, const std::string& path) {
+  if (path.size() < 2 || path[0] != '/') return {};
+  const std::vector<std::string> p = pathParts(path);
+  const std::string& group = p[0];
+  if (group != "vehicle" && group != "bodies" && group != "elements" && group != "contact")
+    return {};
+  if (!spec.has_vehicle) return "the scenario has no vehicle, so its result has no /" + group;
+  const auto& v = spec.vehicle;
+  std::vector<std::string> bodies, wheelsets;
+  for (const auto& b : v.bodies) {
+    bodies.push_back(b.name);
+    if (b.kind == vehicle::BodyKind::Wheelset) wheelsets.push_back(b.name);
+  }
+  if (group == "vehicle") {
+    if (p.size() == 2 && p[1] == "speed") return {};
+    return "the vehicle group holds /vehicle/speed only";
+  }
+  if (group == "bodies") {
+    if (p.size() != 3) return "a body's signal is /bodies/<body>/<coordinate>";
+    if (std::find(bodies.begin(), bodies.end(), p[1]) == bodies.end())
+      return notAmong("body", p[1], bodies);
+    std::vector<std::string> q(vehicle::kCoordNames.begin(), vehicle::kCoordNames.end());
+    if (spec.run.body_accelerations)
+      for (const char* a : {"ax", "ay", "az"}) q.emplace_back(a);
+    if (std::find(q.begin(), q.end(), p[2]) == q.end())
+      return notAmong("body signal", p[2], q) +
+             (spec.run.body_accelerations || (p[2] != "ax" && p[2] != "ay" && p[2] != "az")
+                  ? ""
+                  : "; ax, ay, az need run.output.body_accelerations = true");
+    return {};
+  }
+  if (group == "elements") {
+    const auto& out = spec.run.output_elements;
+    if (p.size() != 3) return "an element's signal is /elements/<name>/deflection or force";
+    if (std::find(out.begin(), out.end(), p[1]) == out.end())
+      return "element '" + p[1] + "' is not written: name it in run.output.elements" +
+             (out.empty() ? "" : " (written: " + join(out, ", ") + ")");
+    if (p[2] != "deflection" && p[2] != "force")
+      return notAmong("element signal", p[2], {"deflection", "force"});
+    return {};
+  }
+  // contact
+  if (!spec.has_contact)
+    return "the scenario has no wheel/rail contact model, so its result has no /contact";
+  if (p.size() < 4) return "a wheel's signal is /contact/<wheelset>/<left|right>/<quantity>";
+  if (std::find(wheelsets.begin(), wheelsets.end(), p[1]) == wheelsets.end())
+    return notAmong("wheelset", p[1], wheelsets);
+  if (p[2] != "left" && p[2] != "right") return notAmong("side", p[2], {"left", "right"});
+  std::vector<std::string> q;
+  if (p.size() == 4) {
+    for (const auto& [name, unit] : kWheelQ) q.emplace_back(name);
+    if (std::find(q.begin(), q.end(), p[3]) == q.end()) return notAmong("wheel signal", p[3], q);
+    return {};
+  }
+  if (p.size() != 5 || (p[3] != "patch0" && p[3] != "patch1"))
+    return "a patch's signal is /contact/<wheelset>/<side>/patch0|patch1/<quantity>";
+  for (const auto& [name, unit] : kPatchQ) q.emplace_back(name);
+  if (std::find(q.begin(), q.end(), p[4]) == q.end()) return notAmong("patch signal", p[4], q);
+  return {};
+}
+
 }  // namespace rb::run

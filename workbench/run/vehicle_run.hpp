@@ -72,6 +72,12 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
 std::string writeProvenance(const Model& m, io::ResultFile& f, const std::string& created,
                             const std::string& track_store = {});
 
+// Why `path` is not a dataset a vehicle run of `spec` writes, "" when it is one or when it lies
+// outside the groups known before the run (/vehicle, /bodies, /elements, /contact; /assessment,
+// /track and the rest are resolved against the result file). A study checks its metrics' signals
+// with it before any run starts.
+std::string signalProblem(const scenario::ScenarioSpec& spec, const std::string& path);
+
 // Creepage above which the creep laws leave the range they are calibrated for (assumption, see
 // docs/contact_dynamics.md): a run that exceeds it is recorded with a warning.
 inline constexpr double kCreepageWarning = 0.1;

@@ -12,7 +12,8 @@ namespace rb::scenario {
 void buildTrack(const Node& n, LuaHost& host, track::TrackSpec& t, bool& railsGiven,
                 Diagnostics& d);
 void buildProfiles(const Node& n, LuaHost& host, dynamics::ProfilesSpec& p, Diagnostics& d);
-void buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d);
+// contact{}; returns true for method = "guided" (no contact model: c is left at its defaults).
+bool buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d);
 void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d);
 void buildSolver(const Node& n, integ::SolverSpec& s, Diagnostics& d);
 void buildRun(const Node& n, RunSpec& run, Diagnostics& d);

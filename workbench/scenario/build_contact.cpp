@@ -5,9 +5,17 @@
 
 namespace rb::scenario {
 
-void buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
+bool buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
   Reader r(n, block("contact"), "contact", d);
   c.loc = n.loc;
+  if (r.choice("method") == kGuidedContact) {
+    // Guided wheelsets have no wheel/rail contact: every other key would be silently unused.
+    for (const auto& [k, v] : n.fields)
+      if (k != "method")
+        r.error(v, k + " has no effect with method = \"" + std::string(kGuidedContact) +
+                       "\" (the wheelsets follow the track kinematically, no wheel/rail forces)");
+    return true;
+  }
   c.method = r.choiceOf<dynamics::ContactMethod>("method");
   c.kec_dhat = r.number("dhat");
   c.kec_dbar = r.number("dbar");
@@ -30,6 +38,7 @@ void buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
           std::string(k) + " applies to method 'lut' only (KEC treats the flange as a constraint)");
   for (const char* k : {"dhat", "dbar"})
     if (!kec && r.has(k)) r.error(*n.field(k), std::string(k) + " applies to method 'kec' only");
+  return false;
 }
 
 }  // namespace rb::scenario

@@ -1,3 +1,4 @@
+#include "workbench/core/strings.hpp"
 #include "workbench/scenario/build.hpp"
 #include "workbench/scenario/reader.hpp"
 
@@ -12,7 +13,10 @@ std::string profileSource(Reader& r, const Node& n, const std::string& key,
   try {
     return host.resolveDataFile(v, n.loc);
   } catch (const InputError& e) {
-    r.error(n, key + ": " + e.diagnostics().front().message);
+    // A near miss of the built-in name ("60E1", "S1002") is the likely intent, not a file.
+    const std::string hint = closestMatch(v, {builtin});
+    r.error(n, key + ": " + e.diagnostics().front().message +
+                   (hint.empty() ? "" : " (did you mean the built-in profile '" + hint + "'?)"));
     return builtin;
   }
 }

@@ -69,6 +69,7 @@ void buildMeasured(const Node& n, const std::string& path, LuaHost& host,
   const std::string file = r.string("file");
   out.csv_unit = r.choiceOf<track::CsvUnit>("unit");
   out.beyond = r.choiceOf<track::Beyond>("beyond");
+  out.fade_in = r.number("fade_in");
   if (file.empty()) return;
   try {
     out.csv_path = host.resolveDataFile(file, n.loc);
@@ -112,6 +113,7 @@ void buildIrregularities(const Node& n, const std::string& path, LuaHost& host,
   out.components = static_cast<int>(r.number("components"));
   out.step = r.number("step");
   out.scale = r.number("scale");
+  out.fade_in = r.number("fade_in");
   out.randomize_frequencies = r.boolean("randomize_frequencies");
   r.pair("wavelengths", out.wavelength_min, out.wavelength_max);
   const std::vector<std::string> channels = r.stringList("channels");

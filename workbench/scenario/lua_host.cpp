@@ -43,9 +43,10 @@ const std::vector<std::string>& nestedConstructors() {
 
 namespace {
 
-const char* const kMetaKey = "railbench.meta";      // registry: table -> {kind, file, line}
-const char* const kBlocksKey = "railbench.blocks";  // registry: array of top-level tables
-const char* const kLoadedKey = "railbench.loaded";  // registry: module name -> value
+const char* const kMetaKey = "railbench.meta";        // registry: table -> {kind, file, line}
+const char* const kBlocksKey = "railbench.blocks";    // registry: array of top-level tables
+const char* const kLoadedKey = "railbench.loaded";    // registry: module name -> value
+const char* const kStandinKey = "railbench.standin";  // registry: metatable of the stand-ins
 
 // Memory the host itself may use beyond the script's budget once the script has ended (converting
 // the tree, references to PSD functions): an allocation refused outside a protected call would
@@ -119,6 +120,9 @@ struct LuaHost::Impl {
   std::vector<std::string> moduleRoots;  // canonical: scenario dir, scenarios/
   std::vector<std::pair<std::string, std::string>> modules;  // required files: path, text
   std::vector<std::string> loading;                          // require calls in progress
+  bool collectMissing = false;                               // HostOptions::collect_missing_modules
+  bool moduleMissing = false;              // set by findModule: the error is "not found"
+  std::vector<Diagnostic> missingModules;  // collected requires of modules not found
 
   static Impl* from(lua_State* L) { return *static_cast<Impl**>(lua_getextraspace(L)); }
 
@@ -304,6 +308,26 @@ struct LuaHost::Impl {
   }
   static int construct(lua_State* L) { return constructBody(L) ? 1 : lua_error(L); }
 
+  // The modules beside where `name` was looked for (same folder, every module root), as dotted
+  // names: the candidates of a did-you-mean. At most 1000 entries per folder are looked at.
+  std::vector<std::string> siblingModules(const std::string& name) const {
+    const auto dot = name.rfind('.');
+    const std::string prefix = dot == std::string::npos ? "" : name.substr(0, dot + 1);
+    std::string folder = prefix;
+    for (char& c : folder)
+      if (c == '.') c = '/';
+    std::vector<std::string> out;
+    for (const auto& root : moduleRoots) {
+      std::error_code ec;
+      fs::directory_iterator it(fs::path(root) / folder, ec), end;
+      for (int n = 0; !ec && it != end && n < 1000; it.increment(ec), ++n) {
+        const fs::path& f = it->path();
+        if (f.extension() == ".lua") out.push_back(prefix + f.stem().string());
+      }
+    }
+    return out;
+  }
+
   // Finds and reads the module file; false with the error pushed.
   bool findModule(lua_State* state, const std::string& name, const SourceLoc& loc,
                   std::string& shown, std::string& text) {
@@ -335,7 +359,11 @@ struct LuaHost::Impl {
       text = std::move(*content);
       return true;
     }
-    push(state, loc, "require \"" + name + "\": module not found; tried:" + tried);
+    const std::string hint = closestMatch(name, siblingModules(name));
+    push(state, loc,
+         "require \"" + name + "\": module not found" +
+             (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)") + "; tried:" + tried);
+    moduleMissing = true;
     return false;
   }
 
@@ -406,10 +434,22 @@ struct LuaHost::Impl {
       lua_settop(L, 1);
     }
     bool ok = false;
+    Impl* self = from(L);
+    self->moduleMissing = false;
     {
       std::string name;
       ok = requireLoad(L, name);
-      if (ok) from(L)->loading.push_back(name);
+      if (ok) self->loading.push_back(name);
+    }
+    if (!ok && self->moduleMissing && self->collectMissing) {
+      // Collected: the rest of the script runs on a stand-in (see HostOptions).
+      self->moduleMissing = false;
+      std::size_t len = 0;
+      const char* msg = lua_tolstring(L, -1, &len);
+      self->missingModules.push_back(parseLuaMessage(std::string(msg, len), self->chunkFile));
+      lua_pop(L, 1);
+      pushStandin(L);
+      return 1;
     }
     if (!ok) return lua_error(L);
     // Stack: [name, chunk]. Run it under the message handler so errors keep their own line.
@@ -429,6 +469,68 @@ struct LuaHost::Impl {
     lua_rawset(L, -3);
     lua_pop(L, 1);
     return 1;
+  }
+
+  // A stand-in for a module that was not found: an empty table whose metatable answers every
+  // field name, call and arithmetic with a new stand-in (list positions with nil, so ipairs and
+  // # see an empty list), compares false and converts to text.
+  static void pushStandin(lua_State* L) {
+    lua_newtable(L);
+    lua_getfield(L, LUA_REGISTRYINDEX, kStandinKey);
+    lua_setmetatable(L, -2);
+  }
+  static int standinNew(lua_State* L) {
+    pushStandin(L);
+    return 1;
+  }
+  static int standinIndex(lua_State* L) {
+    if (lua_type(L, 2) == LUA_TSTRING)
+      pushStandin(L);
+    else
+      lua_pushnil(L);
+    return 1;
+  }
+  static int standinFalse(lua_State* L) {
+    lua_pushboolean(L, 0);
+    return 1;
+  }
+  static int standinLen(lua_State* L) {
+    lua_pushinteger(L, 0);
+    return 1;
+  }
+  static int standinText(lua_State* L) {
+    lua_pushliteral(L, "<module not found>");
+    return 1;
+  }
+  static void defineStandin(lua_State* L) {
+    lua_newtable(L);
+    lua_pushcfunction(L, &standinIndex);
+    lua_setfield(L, -2, "__index");
+    for (const char* op :
+         {"__call", "__add", "__sub", "__mul", "__div", "__mod", "__pow", "__unm", "__idiv",
+          "__concat", "__band", "__bor", "__bxor", "__shl", "__shr", "__bnot"}) {
+      lua_pushcfunction(L, &standinNew);
+      lua_setfield(L, -2, op);
+    }
+    lua_pushcfunction(L, &standinFalse);
+    lua_setfield(L, -2, "__lt");
+    lua_pushcfunction(L, &standinFalse);
+    lua_setfield(L, -2, "__le");
+    lua_pushcfunction(L, &standinLen);
+    lua_setfield(L, -2, "__len");
+    lua_pushcfunction(L, &standinText);
+    lua_setfield(L, -2, "__tostring");
+    lua_pushliteral(L, "locked");
+    lua_setfield(L, -2, "__metatable");
+    lua_setfield(L, LUA_REGISTRYINDEX, kStandinKey);
+  }
+  // True when the value at idx is a stand-in.
+  static bool isStandin(lua_State* L, int idx) {
+    if (!lua_getmetatable(L, idx)) return false;
+    lua_getfield(L, LUA_REGISTRYINDEX, kStandinKey);
+    const bool same = lua_rawequal(L, -1, -2) != 0;
+    lua_pop(L, 2);
+    return same;
   }
 
   static int print(lua_State* L) {
@@ -613,6 +715,8 @@ LuaHost::LuaHost(HostOptions options) : impl_(new Impl), options_(std::move(opti
   lua_setfield(L, LUA_REGISTRYINDEX, kBlocksKey);
   lua_newtable(L);
   lua_setfield(L, LUA_REGISTRYINDEX, kLoadedKey);
+  Impl::defineStandin(L);
+  impl_->collectMissing = options_.collect_missing_modules;
   auto defineConstructors = [&](const std::vector<std::string>& names, bool top) {
     for (const auto& n : names) {
       lua_pushstring(L, n.c_str());
@@ -633,6 +737,10 @@ LuaHost::LuaHost(HostOptions options) : impl_(new Impl), options_(std::move(opti
   impl_->hostPhase = false;
 }
 
+const std::vector<Diagnostic>& LuaHost::missingModules() const {
+  return impl_->missingModules;
+}
+
 const std::vector<std::pair<std::string, std::string>>& LuaHost::modules() const {
   return impl_->modules;
 }
@@ -651,6 +759,7 @@ struct Converter {
   std::set<const void*> active;
   std::size_t values = 0;
   bool stopped = false;  // a limit that ends the conversion was hit
+  bool standin = false;  // a stand-in of a missing module was met (HostOptions)
 
   void fail(const SourceLoc& loc, const std::string& msg) {
     if (diags.size() >= 50) {
@@ -764,6 +873,10 @@ struct Converter {
       stopped = true;
       return;
     }
+    if (LuaHost::Impl::isStandin(L, idx)) {
+      standin = true;  // its kind and place, if a constructor made it, are still read below
+      n.type = Node::Type::Nil;
+    }
     active.insert(ptr);
     lua_getfield(L, LUA_REGISTRYINDEX, kMetaKey);
     lua_pushvalue(L, idx);
@@ -847,7 +960,12 @@ Node LuaHost::runFile(const std::string& path) {
   if (status != LUA_OK || impl_->death.dead || impl_->memoryRefused) {
     InputError e = impl_->errorOf(status);
     lua_settop(L, 0);
-    throw e;
+    if (impl_->missingModules.empty()) throw e;
+    // The missing modules first: the error may well follow from a stand-in.
+    Diagnostics all;
+    for (const auto& m : impl_->missingModules) all.add(m.loc, m.message);
+    all.add(e);
+    all.throwIfAny();
   }
   lua_settop(L, 0);
 
@@ -860,10 +978,16 @@ Node LuaHost::runFile(const std::string& path) {
   lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, -1));
   for (lua_Integer i = 1; i <= n && !conv.stopped; ++i) {
     lua_rawgeti(L, -1, i);
+    conv.standin = false;
     Node block = conv.convert(-1, {path, 0}, "", 0);
     lua_pop(L, 1);
     block.loc.file = block.loc.file.empty() ? path : block.loc.file;
     std::string kind = block.kind;
+    if (conv.standin) {
+      // Made (in part) from a missing module: not validated, its kind kept for the caller.
+      incomplete_.push_back(kind);
+      continue;
+    }
     if (const Node* prev = root.field(kind)) {
       diags.add(block.loc, kind + " block given twice (first at " + prev->loc.str() + ")");
       continue;

@@ -38,6 +38,12 @@ struct HostOptions {
   // Wall-clock budget [s] of everything run in this host (script and PSD functions); 0 takes
   // RAILBENCH_LUA_SECONDS from the environment, else kDefaultTimeLimit.
   double time_limit = 0.0;
+  // A require of a module that is not found is collected (missingModules()) instead of ending
+  // the script: the require returns a stand-in that absorbs every use (fields, calls,
+  // arithmetic), so the rest of the script runs and its other problems are reported with it. The
+  // top-level blocks built from a stand-in are left out of the tree, their kinds listed in
+  // incompleteBlocks(). The caller must report missingModules() (loadScenario does).
+  bool collect_missing_modules = false;
 };
 
 inline constexpr double kDefaultTimeLimit = 30.0;                     // [s]
@@ -65,6 +71,11 @@ class LuaHost {
   // function values in the tree stay callable while this host lives.
   Node runFile(const std::string& path);
 
+  // With HostOptions::collect_missing_modules: the requires whose module was not found, and the
+  // kinds of the top-level blocks made from their stand-ins (not in the tree runFile returns).
+  const std::vector<Diagnostic>& missingModules() const;
+  const std::vector<std::string>& incompleteBlocks() const { return incomplete_; }
+
   // The text of the scenario file read by runFile.
   const std::string& text() const { return text_; }
 
@@ -86,6 +97,7 @@ class LuaHost {
   std::vector<std::string> roots_;
   std::string scenarioDir_;
   std::string text_;
+  std::vector<std::string> incomplete_;
 };
 
 }  // namespace rb::scenario

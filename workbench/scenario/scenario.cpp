@@ -1,10 +1,32 @@
 #include "workbench/scenario/scenario.hpp"
 
+#include <algorithm>
+
 #include "workbench/scenario/build.hpp"
 #include "workbench/scenario/lua_host.hpp"
 #include "workbench/scenario/overrides.hpp"
+#include "workbench/vehicle/names.hpp"
 
 namespace rb::scenario {
+namespace {
+
+// Wheelsets without a contact{} block would run guided (no wheel/rail forces) and write a
+// plausible result: the wheel/rail model is never assumed, it is named, contact { method = "kec" }
+// or "lut" for contact, "guided" for wheelsets that follow the track kinematically.
+void checkWheelsetContact(const ScenarioSpec& spec, Diagnostics& d) {
+  if (!spec.has_vehicle || spec.has_contact || spec.guided) return;
+  int wheelsets = 0;
+  for (const auto& b : spec.vehicle.bodies)
+    if (b.kind == vehicle::BodyKind::Wheelset) ++wheelsets;
+  if (wheelsets == 0) return;
+  d.add(spec.vehicle.loc,
+        "vehicle: " + std::to_string(wheelsets) + (wheelsets == 1 ? " wheelset" : " wheelsets") +
+            " and no contact{} block: give contact { method = \"kec\" } (or \"lut\") for "
+            "wheel/rail contact, or contact { method = \"guided\" } for wheelsets that follow "
+            "the track kinematically (no wheel/rail forces)");
+}
+
+}  // namespace
 
 ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   ScenarioSpec spec;
@@ -13,16 +35,24 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   HostOptions ho;
   ho.root = options.root;
   ho.instruction_limit = options.instruction_limit;
+  // A mistyped require must not hide the file's other problems: it is collected, and the blocks
+  // made from the missing module are left out (they cannot be checked without it).
+  ho.collect_missing_modules = true;
   LuaHost host(ho);
   Node root = host.runFile(path);
   spec.text = host.text();  // the bytes that ran, read once (never reopened: it may have changed)
   spec.modules = host.modules();
   Diagnostics d;
+  for (const auto& m : host.missingModules()) d.add(m.loc, m.message);
+  const auto& incomplete = host.incompleteBlocks();
+  auto unchecked = [&](const char* kind) {
+    return std::find(incomplete.begin(), incomplete.end(), kind) != incomplete.end();
+  };
   for (const auto& o : options.overrides) applyOverride(root, o, d);
 
   if (const Node* t = root.field("track"))
     buildTrack(*t, host, spec.track, spec.track_rails_given, d);
-  else
+  else if (!unchecked("track"))
     d.add({path, 0}, "scenario has no track { ... } block");
   if (const Node* p = root.field("profiles")) {
     spec.has_profiles = true;
@@ -33,13 +63,21 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
             "track.rail_lr / track.rail_inclination");
   }
   if (const Node* c = root.field("contact")) {
-    spec.has_contact = true;
-    buildContact(*c, spec.contact, d);
+    spec.guided = buildContact(*c, spec.contact, d);
+    spec.has_contact = !spec.guided;
   }
   if (const Node* v = root.field("vehicle")) {
     spec.has_vehicle = true;
     buildVehicle(*v, spec.vehicle, d);
   }
+  // A block left unchecked still exists: no error about it being absent.
+  spec.has_vehicle = spec.has_vehicle || unchecked("vehicle");
+  spec.has_contact = spec.has_contact || unchecked("contact");
+  checkWheelsetContact(spec, d);
+  if (spec.guided && spec.has_profiles)
+    d.add(spec.profiles.loc,
+          "profiles{} has no effect with contact { method = \"guided\" } (no wheel/rail "
+          "contact); remove it or choose a contact method");
   if (const Node* s = root.field("solver")) {
     spec.has_solver = true;
     buildSolver(*s, spec.solver, d);

@@ -37,8 +37,11 @@ struct ScenarioSpec {
   bool track_rails_given = false;  // track.rail_lr or track.rail_inclination set explicitly
   bool has_profiles = false;
   dynamics::ProfilesSpec profiles;
-  bool has_contact = false;
+  bool has_contact = false;  // a contact model (kec or lut); false for guided wheelsets
   dynamics::ContactSpec contact;
+  // contact { method = "guided" }: the wheelsets follow the track kinematically, asked for by
+  // name (a vehicle with wheelsets and no contact{} block is an error, never a silent default).
+  bool guided = false;
   bool has_vehicle = false;
   vehicle::VehicleSpec vehicle;
   bool has_solver = false;

@@ -191,6 +191,11 @@ void addIrregularityBlocks(std::vector<BlockSpec>& s) {
         wl, integer("components", 2000, "cosines per channel", 1, track::kMaxPsdComponents),
         num("step", "m", 0.1, "spline sampling step (paper: 0.1 m)", 0, kInf, true),
         num("scale", "-", 1, "amplitude factor on every channel", 0, 100), channels,
+        num("fade_in", "m", track::kDefaultFadeIn,
+            "raised-cosine fade-in of every channel from s = 0 over this length, (1 - cos(pi s / "
+            "fade_in)) / 2, so the vehicle meets no step where the irregularities begin (recorded "
+            "in /track/irregularities@fade_in); 0 = none (the paper's validation cases)",
+            0, 1e5),
         boolean("randomize_frequencies", true,
                 "draw each cosine's frequency inside its band (false: band centres, periodic)"),
         psdInput(track::Channel::Alignment), psdInput(track::Channel::Vertical),
@@ -211,7 +216,24 @@ void addIrregularityBlocks(std::vector<BlockSpec>& s) {
                    "unit of the irregularity columns (s is always in m); values above 0.1 m are "
                    "refused as implausible"),
         enumChoice("beyond", track::Beyond::Error,
-                   "where the file does not cover the track [0, length]")}});
+                   "where the file does not cover the track [0, length]"),
+        num("fade_in", "m", 0,
+            "raised-cosine fade-in of every channel from s = 0 over this length, (1 - cos(pi s / "
+            "fade_in)) / 2 (recorded in /track/irregularities@fade_in); 0 = the record as "
+            "measured",
+            0, 1e5)}});
+}
+
+// contact.method: the contact methods, and "guided" for wheelsets without contact asked by name.
+KeySpec contactMethod() {
+  KeySpec k = enumChoice("method", dynamics::ContactMethod::Kec,
+                         "constraint contact method, or \"guided\": no wheel/rail contact");
+  k.choices.emplace_back(kGuidedContact);
+  k.choice_help.emplace_back(
+      "no contact model: the wheelsets follow the track centreline kinematically (no wheel/rail "
+      "forces, no creep, no flange); the block then takes no other key. A vehicle with "
+      "wheelsets needs a contact{} block, so guided wheelsets are always asked for by name");
+  return k;
 }
 
 // profiles{} and contact{} (paper Table 1, sections 2.3-2.5).
@@ -244,7 +266,7 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
       {"contact",
        "Wheel/rail contact: constraint method (paper section 2.3-2.4), LUT flange Hertz contact "
        "(Table 3, Eq. 20), tangential forces (section 2.5).",
-       {enumChoice("method", dynamics::ContactMethod::Kec, "constraint contact method"),
+       {contactMethod(),
         num("dhat", "m", 0.5e-3, "KEC tread-flange transition length on the flange side",
             dynamics::kKecTransitionRange),
         num("dbar", "m", 1e-3, "KEC tread-flange transition length on the tread side",

@@ -9,6 +9,10 @@
 
 namespace rb::scenario {
 
+// contact.method for wheelsets that follow the track kinematically (no contact model; the other
+// choices are dynamics::ContactMethod's names).
+inline constexpr const char* kGuidedContact = "guided";
+
 enum class ValueType {
   Number,   // real, SI unit in `unit`
   Integer,  // whole number

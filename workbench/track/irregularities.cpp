@@ -109,6 +109,16 @@ void evaluateCosineSeries(const CosineSeries& series, double h, std::span<double
   }
 }
 
+void applyFadeIn(IrregularityTable& t, double length) {
+  if (!(length > 0.0)) return;
+  for (std::size_t j = 0; j < t.s.size(); ++j) {
+    const double s = t.s[j];
+    if (s >= length) continue;
+    const double w = s <= 0.0 ? 0.0 : 0.5 * (1.0 - std::cos(std::numbers::pi * s / length));
+    for (auto& ch : t.channel) ch[j] *= w;
+  }
+}
+
 IrregularityTable synthesizeIrregularities(const IrregularitySpec& spec, double track_length) {
   RB_CHECK(spec.step > 0.0 && track_length > 0.0, "invalid synthesis length or step");
   const auto intervals =
@@ -126,6 +136,7 @@ IrregularityTable synthesizeIrregularities(const IrregularitySpec& spec, double 
     }
     evaluateCosineSeries(series, spec.step, ch);
   }
+  applyFadeIn(t, spec.fade_in);
   return t;
 }
 

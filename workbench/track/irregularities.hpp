@@ -94,6 +94,11 @@ class Irregularities {
   CubicSplineSet spline_;  // channels in Channel order
 };
 
+// Multiplies every channel of `t` by the raised-cosine fade-in over [0, length] (spec.hpp,
+// IrregularitySpec::fade_in): 0 for s <= 0, (1 - cos(pi s / length)) / 2 inside, 1 beyond.
+// length <= 0 leaves the table unchanged.
+void applyFadeIn(IrregularityTable& t, double length);
+
 // Synthesises all four channels of a valid Psd spec over [0, track_length].
 IrregularityTable synthesizeIrregularities(const IrregularitySpec& spec, double track_length);
 

@@ -49,6 +49,14 @@ inline constexpr double kMaxTrackLength = 1e7;
 // [m] Largest plausible irregularity (CSV value, synthesised RMS): track irregularities are
 // millimetres to a few centimetres; 0.1 m is a unit mistake or a wrong PSD.
 inline constexpr double kMaxIrregularity = 0.1;
+// [m] Default length of the raised-cosine fade-in of synthesised irregularities from s = 0
+// (IrregularitySpec::fade_in). Before s = 0 the track is perfect, so an unfaded synthesis starts
+// with a step of the sum of its cosines (several mm for FRA class 4-6) that the first wheelsets hit
+// at once. 20 m: the ramp is half a cosine period, so its own content lies at wavelengths of 2 L =
+// 40 m and longer (0.5 Hz and below at 20 m/s), under the car-body bounce and sway modes (about
+// 1 Hz) and far under the bogie modes, and it is longer than a bogie's wheelbase; yet short
+// against a test section (EN 14363 evaluates sections of 100 m and more).
+inline constexpr double kDefaultFadeIn = 20.0;
 
 // The four centreline irregularities of paper Fig. 3 (Eq. before (4)).
 enum class Channel { Alignment = 0, Vertical = 1, Gauge = 2, CrossLevel = 3 };
@@ -80,6 +88,11 @@ struct IrregularitySpec {
   double wavelength_max = 70.0;  // [m]
   int components = 2000;         // number of cosines per channel, 1..kMaxPsdComponents
   double step = 0.1;             // [m] spline sampling step (paper: 0.1 m)
+  // [m] Raised-cosine fade-in of every channel from s = 0: the amplitudes are multiplied by
+  // (1 - cos(pi s / fade_in)) / 2 over [0, fade_in] (continuous in value and slope at both ends),
+  // so the vehicle meets no step where the irregularities begin; 0 = none. Synthesised
+  // irregularities default to kDefaultFadeIn; a measured record is the track as measured (0).
+  double fade_in = 0.0;
   // (Added by the track module.) Draw each cosine's frequency uniformly inside its band of width
   // dOmega (true), or put it at the band centre (false: the realisation then repeats every
   // 2 pi / dOmega metres).

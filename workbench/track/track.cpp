@@ -415,6 +415,7 @@ TrackModel compileTrack(const TrackSpec& spec) {
       break;
     case IrregularitySource::Csv:
       RB_CHECK(csv.has_value(), "csv table missing after validation");
+      applyFadeIn(*csv, spec.irregularities.fade_in);
       irr.emplace(std::move(*csv), spec.rail_lr);
       break;
   }

@@ -25,7 +25,8 @@ std::string notAStateReason(const VehicleOde& ode, std::size_t body, const Initi
   if (layout.wheelsetSlot(body) < 0)
     return "'" + name + "' is a frame, fixed in its track frame (it has no state)";
   if (layout.ws_dof == kGuidedWheelsetDof)
-    return "the wheelsets are guided: they follow the track kinematically (no contact{} block), "
+    return "the wheelsets are guided: they follow the track kinematically (contact.method = "
+           "guided), "
            "so '" +
            name + "' has no state";
   if (coord == kZ || coord == kRoll)

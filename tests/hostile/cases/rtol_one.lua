@@ -3,3 +3,5 @@
 track { segments = { tangent { length = 200 } } }
 vehicle(require "vehicles.manchester_wagon1" { speed = 10 })
 solver { method = "bdf", rtol = 1 }
+-- Guided wheelsets, asked for by name (a vehicle with wheelsets needs a contact{} block).
+contact { method = "guided" }

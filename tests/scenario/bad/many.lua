@@ -9,3 +9,5 @@ track {
 solver { method = "rk5" }
 run { distance = -1 }
 vehicle (require "vehicles.manchester_wagon1" { speed = 10 })
+-- Guided wheelsets, asked for by name (a vehicle with wheelsets needs a contact{} block).
+contact { method = "guided" }

@@ -10,3 +10,5 @@ vehicle {
     bumpstop { name = "b", from = "car", to = "ws", table = { 0.025, 0 } },
   },
 }
+-- Guided wheelsets, asked for by name (a vehicle with wheelsets needs a contact{} block).
+contact { method = "guided" }

@@ -19,3 +19,5 @@ track {
 solver { method = "bdf", rtol = 1e-5, atol = 1e-7, max_step = 1e-3 }
 run { distance = 300, output = { every = 0.005 } }
 vehicle (require "vehicles.two_body" { speed = 10 })
+-- Guided wheelsets, asked for by name (a vehicle with wheelsets needs a contact{} block).
+contact { method = "guided" }

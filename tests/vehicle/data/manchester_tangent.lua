@@ -3,3 +3,5 @@
 local wagon = require "vehicles.manchester_wagon1"
 track { segments = { tangent { length = 200 } } }
 vehicle (wagon { speed = 20, start = 20 })
+-- Guided wheelsets, asked for by name (a vehicle with wheelsets needs a contact{} block).
+contact { method = "guided" }
