@@ -2,7 +2,8 @@
 -- docs/assessment.md ("A route, section by section"): Manchester wagon 1 at 25 m/s (90 km/h)
 -- over a tangent, a left curve of R = 600 m (test zone 2), a tangent, a right curve of R = 350 m
 -- (test zone 4), and a tangent, every curve entered and left through a clothoid transition with a
--- linear cant ramp; ORE B176 low irregularities (seed 7) faded in over the first metres.
+-- linear cant ramp; ORE B176 low irregularities (seed 7) faded in over the first 20 m (the
+-- default track.irregularities.fade_in).
 -- ASSUMPTIONS (a route made up for the page, not a real line): cants 80 mm (R = 600 m) and
 -- 150 mm (R = 350 m) give cant deficiencies of 0.52 and 0.81 m/s^2 at 25 m/s (a = V^2/R -
 -- g u / 1.5 m), inside the 1.0 m/s^2 usual for conventional vehicles; transition lengths 60 and

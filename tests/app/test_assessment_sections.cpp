@@ -333,3 +333,33 @@ TEST(AssessmentSettings, RefusedBeforeTheRun) {
             std::string::npos)
       << checkErrors(track_only);
 }
+
+// N_MV from fewer than the 60 blocks of 5 s EN 12299 asks for is said to be indicative, in the
+// quantity's place and in a note of the summary.
+TEST(ComfortBlocks, FewerThanTheStandardAsksForAreSaid) {
+  rb::run::AssessmentSignals s = signals(400.0);  // 20 s: 4 blocks
+  rb::run::FloorPointSignals p;
+  p.name = "centre";
+  for (const double t : s.time) {
+    p.ax.push_back(0.0);
+    p.ay.push_back(0.3 * std::sin(2.0 * M_PI * 1.0 * t));
+    p.az.push_back(0.2 * std::sin(2.0 * M_PI * 3.0 * t));
+  }
+  s.floor.push_back(std::move(p));
+  rb::assessment::AssessmentSpec spec;
+  spec.comfort = true;
+  const auto r = rb::run::assess(s, spec, 0.36);
+  const auto* n = item(r, "n_mv");
+  ASSERT_NE(n, nullptr);
+  EXPECT_NE(n->a.where.find("4 of the 60 5 s blocks EN 12299 asks for: indicative"),
+            std::string::npos)
+      << n->a.where;
+  bool noted = false;
+  for (const auto& note : r.notes)
+    noted = noted || note.find("indicative only") != std::string::npos;
+  EXPECT_TRUE(noted);
+  bool printed = false;
+  for (const auto& line : rb::run::summaryLines(r))
+    printed = printed || line.find("indicative") != std::string::npos;
+  EXPECT_TRUE(printed);
+}
