@@ -515,7 +515,9 @@ def fig_assessment(result):
     summary = _summary_lines(a)
     with report_style():
         box_h = 0.13 * len(summary) + 0.12 if summary else 0.0
-        fig_h = min(1.3 * len(keys) + 0.75 + box_h + (0.3 if track is not None else 0.0), 9.4)
+        # The panels keep their height however long the summary (sections) is.
+        fig_h = min(1.3 * len(keys) + 0.75 + box_h + (0.3 if track is not None else 0.0),
+                    9.4 + box_h)
         ratios = ([box_h] if summary else []) + [1.3] * len(keys)
         fig, axes = plt.subplots(len(ratios), 1, figsize=(A4_WIDTH_IN, fig_h), squeeze=False,
                                  layout="constrained", gridspec_kw=dict(height_ratios=ratios))
