@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import csv
 import json
-import math
 import os
 import re
 from typing import Dict, List, Optional
@@ -638,6 +637,7 @@ def route_sections_block(outdir: str) -> str:
     section and test zone), its static wheel loads Q0 and where each wheel unloads most, in its
     own distance along the track."""
     from .assessment import read_assessment
+    from .layout import _num
     path = os.path.join(outdir, ROUTE, "route.h5")
     try:
         a = read_assessment(path) if os.path.exists(path) else None
@@ -665,7 +665,7 @@ def route_sections_block(outdir: str) -> str:
            "Y_qst 60 kN, Q_qst 145 kN, Q_max 90 kN + Q0.\n\n" +
            table(["section", "kind", "test zone", "R [m]", "cant [mm]", "s [m]", "run [m]",
                   "(Y/Q)_2m", "(ΣY)_2m", "ΔQ/Q0", "Y_qst", "Q_qst", "Q_max"], rows))
-    q0 = sorted({round(_num_attr(q.attrs.get("q0")) or 0.0, 1)
+    q0 = sorted({round(_num(q.attrs.get("q0")) or 0.0, 1)
                  for q in a.dq_over_q.values() if q.attrs.get("q0") is not None})
     src = str(a.attrs.get("q0_source", "")).strip()
     if q0:
@@ -674,8 +674,8 @@ def route_sections_block(outdir: str) -> str:
     wheel_rows = []
     for (ws, side), q in a.dq_over_q.items():
         off = a.s_offset.get((ws, side))
-        at = _num_attr(q.attrs.get("at_s"))
-        v = _num_attr(q.attrs.get("value"))
+        at = _num(q.attrs.get("at_s"))
+        v = _num(q.attrs.get("value"))
         wheel_rows.append([f"{ws} {side}", fmt(off, "{:.2f}"), fmt(v, "{:.3f}"),
                            fmt(at, "{:.1f}")])
     if wheel_rows:
@@ -689,10 +689,3 @@ def route_sections_block(outdir: str) -> str:
         out += f"\n\n![Assessment of the route](figures/{ROUTE_FIGURE})"
     return out
 
-
-def _num_attr(v) -> Optional[float]:
-    try:
-        x = float(v)
-    except (TypeError, ValueError):
-        return None
-    return x if math.isfinite(x) else None
