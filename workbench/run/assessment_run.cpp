@@ -709,10 +709,12 @@ std::vector<std::string> sectionLines(const AssessmentResult& r) {
     std::snprintf(buf, sizeof buf, "  %-14s %-22s %-15s %7.1f", sec.name.c_str(), kind.c_str(),
                   range.c_str(), sr.covered);
     line = buf;
-    for (const auto& [key, scale] : kCols) {
+    for (const auto& col : kCols) {
+      const std::string key = col.first;
+      const double scale = col.second;
       const auto it = std::find_if(sr.summary.begin(), sr.summary.end(),
                                    [&](const SummaryItem& i) { return i.key == key; });
-      const int width = key == std::string("y_over_q") || key == std::string("dq_over_q") ? 6 : 7;
+      const int width = key == "y_over_q" || key == "dq_over_q" ? 6 : 7;
       if (it == sr.summary.end()) {
         std::snprintf(buf, sizeof buf, " %*s", width, "-");
       } else {

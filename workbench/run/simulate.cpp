@@ -17,6 +17,20 @@ double wallNow() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+// Keeps results on disk as the run goes, by data volume (every kFlushSamples output times:
+// whole HDF5 chunks, so no chunk is rewritten, and the same work in every run of a scene, which
+// keeps callgrind counts reproducible) and at least every kFlushSeconds of wall time.
+struct Flusher {
+  double last = wallNow();
+  std::size_t unflushed = 0;  // output times appended since the last flush
+  void appended(io::ResultFile& f) {
+    if (++unflushed < kFlushSamples && wallNow() - last <= kFlushSeconds) return;
+    f.flush();
+    last = wallNow();
+    unflushed = 0;
+  }
+};
+
 }  // namespace
 
 std::vector<double> outputTimes(double t0, double t_end, double every) {
@@ -87,9 +101,8 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
   for (const auto& o : r.outputs) series.push_back(&f.series(o.path, o.units));
   RB_CHECK(r.outputs.empty() || r.sample, "output channels need a sampler");
   std::vector<double> values(r.outputs.size());
-  double lastFlush = wallNow();
-  std::size_t unflushed = 0;  // output times appended since the last flush
-  double start = lastFlush;
+  Flusher flusher;
+  double start = wallNow();
   double lastDistance = 0.0;
 
   std::string invalid;  // why the observer stopped the run, if it did
@@ -120,12 +133,7 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
     // Keep results on disk as the run goes, by data volume (every kFlushSamples output times:
     // whole HDF5 chunks, so no chunk is rewritten, and the same work in every run of a scene,
     // which keeps callgrind counts reproducible) and at least every kFlushSeconds of wall time.
-    ++unflushed;
-    if (unflushed >= kFlushSamples || wallNow() - lastFlush > kFlushSeconds) {
-      f.flush();
-      lastFlush = wallNow();
-      unflushed = 0;
-    }
+    flusher.appended(f);
     return true;
   };
   double lastPrint = start;

@@ -910,6 +910,63 @@ std::string notAmong(const std::string& what, const std::string& x,
 
 }  // namespace
 
+namespace {
+
+bool among(const std::string& x, const std::vector<std::string>& names) {
+  return std::find(names.begin(), names.end(), x) != names.end();
+}
+
+std::string bodySignalProblem(const scenario::ScenarioSpec& spec,
+                              const std::vector<std::string>& p) {
+  if (p.size() != 3) return "a body's signal is /bodies/<body>/<coordinate>";
+  std::vector<std::string> bodies;
+  for (const auto& b : spec.vehicle.bodies) bodies.push_back(b.name);
+  if (!among(p[1], bodies)) return notAmong("body", p[1], bodies);
+  std::vector<std::string> q(vehicle::kCoordNames.begin(), vehicle::kCoordNames.end());
+  const bool acc = spec.run.body_accelerations;
+  if (acc)
+    for (const char* a : {"ax", "ay", "az"}) q.emplace_back(a);
+  if (among(p[2], q)) return {};
+  const bool asks_acc = p[2] == "ax" || p[2] == "ay" || p[2] == "az";
+  return notAmong("body signal", p[2], q) +
+         (acc || !asks_acc ? "" : "; ax, ay, az need run.output.body_accelerations = true");
+}
+
+std::string elementSignalProblem(const scenario::ScenarioSpec& spec,
+                                 const std::vector<std::string>& p) {
+  const auto& out = spec.run.output_elements;
+  if (p.size() != 3) return "an element's signal is /elements/<name>/deflection or force";
+  if (!among(p[1], out))
+    return "element '" + p[1] + "' is not written: name it in run.output.elements" +
+           (out.empty() ? "" : " (written: " + join(out, ", ") + ")");
+  if (p[2] != "deflection" && p[2] != "force")
+    return notAmong("element signal", p[2], {"deflection", "force"});
+  return {};
+}
+
+std::string contactSignalProblem(const scenario::ScenarioSpec& spec,
+                                 const std::vector<std::string>& p) {
+  if (!spec.has_contact)
+    return "the scenario has no wheel/rail contact model, so its result has no /contact";
+  if (p.size() < 4) return "a wheel's signal is /contact/<wheelset>/<left|right>/<quantity>";
+  std::vector<std::string> wheelsets;
+  for (const auto& b : spec.vehicle.bodies)
+    if (b.kind == vehicle::BodyKind::Wheelset) wheelsets.push_back(b.name);
+  if (!among(p[1], wheelsets)) return notAmong("wheelset", p[1], wheelsets);
+  if (p[2] != "left" && p[2] != "right") return notAmong("side", p[2], {"left", "right"});
+  std::vector<std::string> q;
+  if (p.size() == 4) {
+    for (const auto& [name, unit] : kWheelQ) q.emplace_back(name);
+    return among(p[3], q) ? std::string() : notAmong("wheel signal", p[3], q);
+  }
+  if (p.size() != 5 || (p[3] != "patch0" && p[3] != "patch1"))
+    return "a patch's signal is /contact/<wheelset>/<side>/patch0|patch1/<quantity>";
+  for (const auto& [name, unit] : kPatchQ) q.emplace_back(name);
+  return among(p[4], q) ? std::string() : notAmong("patch signal", p[4], q);
+}
+
+}  // namespace
+
 std::string signalProblem(const scenario::ScenarioSpec& spec, const std::string& path) {
   if (path.size() < 2 || path[0] != '/') return {};
   const std::vector<std::string> p = pathParts(path);
@@ -917,58 +974,12 @@ std::string signalProblem(const scenario::ScenarioSpec& spec, const std::string&
   if (group != "vehicle" && group != "bodies" && group != "elements" && group != "contact")
     return {};
   if (!spec.has_vehicle) return "the scenario has no vehicle, so its result has no /" + group;
-  const auto& v = spec.vehicle;
-  std::vector<std::string> bodies, wheelsets;
-  for (const auto& b : v.bodies) {
-    bodies.push_back(b.name);
-    if (b.kind == vehicle::BodyKind::Wheelset) wheelsets.push_back(b.name);
-  }
-  if (group == "vehicle") {
-    if (p.size() == 2 && p[1] == "speed") return {};
-    return "the vehicle group holds /vehicle/speed only";
-  }
-  if (group == "bodies") {
-    if (p.size() != 3) return "a body's signal is /bodies/<body>/<coordinate>";
-    if (std::find(bodies.begin(), bodies.end(), p[1]) == bodies.end())
-      return notAmong("body", p[1], bodies);
-    std::vector<std::string> q(vehicle::kCoordNames.begin(), vehicle::kCoordNames.end());
-    if (spec.run.body_accelerations)
-      for (const char* a : {"ax", "ay", "az"}) q.emplace_back(a);
-    if (std::find(q.begin(), q.end(), p[2]) == q.end())
-      return notAmong("body signal", p[2], q) +
-             (spec.run.body_accelerations || (p[2] != "ax" && p[2] != "ay" && p[2] != "az")
-                  ? ""
-                  : "; ax, ay, az need run.output.body_accelerations = true");
-    return {};
-  }
-  if (group == "elements") {
-    const auto& out = spec.run.output_elements;
-    if (p.size() != 3) return "an element's signal is /elements/<name>/deflection or force";
-    if (std::find(out.begin(), out.end(), p[1]) == out.end())
-      return "element '" + p[1] + "' is not written: name it in run.output.elements" +
-             (out.empty() ? "" : " (written: " + join(out, ", ") + ")");
-    if (p[2] != "deflection" && p[2] != "force")
-      return notAmong("element signal", p[2], {"deflection", "force"});
-    return {};
-  }
-  // contact
-  if (!spec.has_contact)
-    return "the scenario has no wheel/rail contact model, so its result has no /contact";
-  if (p.size() < 4) return "a wheel's signal is /contact/<wheelset>/<left|right>/<quantity>";
-  if (std::find(wheelsets.begin(), wheelsets.end(), p[1]) == wheelsets.end())
-    return notAmong("wheelset", p[1], wheelsets);
-  if (p[2] != "left" && p[2] != "right") return notAmong("side", p[2], {"left", "right"});
-  std::vector<std::string> q;
-  if (p.size() == 4) {
-    for (const auto& [name, unit] : kWheelQ) q.emplace_back(name);
-    if (std::find(q.begin(), q.end(), p[3]) == q.end()) return notAmong("wheel signal", p[3], q);
-    return {};
-  }
-  if (p.size() != 5 || (p[3] != "patch0" && p[3] != "patch1"))
-    return "a patch's signal is /contact/<wheelset>/<side>/patch0|patch1/<quantity>";
-  for (const auto& [name, unit] : kPatchQ) q.emplace_back(name);
-  if (std::find(q.begin(), q.end(), p[4]) == q.end()) return notAmong("patch signal", p[4], q);
-  return {};
+  if (group == "vehicle")
+    return p.size() == 2 && p[1] == "speed" ? std::string()
+                                            : "the vehicle group holds /vehicle/speed only";
+  if (group == "bodies") return bodySignalProblem(spec, p);
+  if (group == "elements") return elementSignalProblem(spec, p);
+  return contactSignalProblem(spec, p);
 }
 
 }  // namespace rb::run

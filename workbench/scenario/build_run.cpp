@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "workbench/core/strings.hpp"
 #include "workbench/scenario/build.hpp"
@@ -29,8 +31,52 @@ std::vector<double> floorPositions(Reader& r) {
   return out;
 }
 
-// run.assessment.sections: a list of { name = "...", from = s0, to = s1 } with finite
-// 0 <= from < to [m] and distinct names (names are HDF5 group names: letters, digits, '_', '-').
+// One entry of run.assessment.sections, { name = "...", from = s0, to = s1 } with finite
+// 0 <= from < to [m] and a name that is an HDF5 group name (letters, digits, '_', '-'); nullopt
+// after reporting what is wrong.
+std::optional<assessment::SectionSpec> section(Reader& r, const Node& item,
+                                               const std::string& what) {
+  if (item.type != Node::Type::Table || !item.items.empty()) {
+    r.error(item, what + " must be a table { name = \"...\", from = s0, to = s1 }, got " +
+                      item.describe());
+    return std::nullopt;
+  }
+  assessment::SectionSpec sec;
+  sec.loc = item.loc;
+  bool ok = true;
+  for (const auto& [key, value] : item.fields) {
+    const bool range = key == "from" || key == "to";
+    if (key == "name" && value.type == Node::Type::String) {
+      sec.name = value.string;
+    } else if (range && value.type == Node::Type::Number && std::isfinite(value.number)) {
+      (key == "from" ? sec.from : sec.to) = value.number;
+    } else {
+      const char* why = key == "name" ? " must be a string"
+                        : range       ? " must be a finite number [m]"
+                                      : " is not a key (name, from, to)";
+      r.error(value, what + "." + key + why + ", got " + value.describe());
+      ok = false;
+    }
+  }
+  if (!ok) return std::nullopt;
+  if (!item.field("name") || !item.field("from") || !item.field("to")) {
+    r.error(item, what + " needs name, from and to");
+    return std::nullopt;
+  }
+  if (!assessment::validSectionName(sec.name)) {
+    r.error(*item.field("name"),
+            what + ".name '" + sec.name + "' must be 1-64 letters, digits, '_' or '-'");
+    return std::nullopt;
+  }
+  if (!(sec.from >= 0.0 && sec.from < sec.to)) {
+    r.error(item, what + " needs 0 <= from < to, got from = " + formatNumber(sec.from) +
+                      " m, to = " + formatNumber(sec.to) + " m");
+    return std::nullopt;
+  }
+  return sec;
+}
+
+// run.assessment.sections: a list of sections with distinct names.
 std::vector<assessment::SectionSpec> sections(Reader& r) {
   std::vector<assessment::SectionSpec> out;
   const Node* v = r.value("sections");
@@ -48,52 +94,15 @@ std::vector<assessment::SectionSpec> sections(Reader& r) {
     return out;
   }
   for (std::size_t i = 0; i < v->items.size(); ++i) {
-    const Node& item = v->items[i];
     const std::string what = "sections[" + std::to_string(i + 1) + "]";
-    if (item.type != Node::Type::Table || !item.items.empty()) {
-      r.error(item, what + " must be a table { name = \"...\", from = s0, to = s1 }, got " +
-                        item.describe());
-      continue;
-    }
-    assessment::SectionSpec sec;
-    sec.loc = item.loc;
-    bool ok = true;
-    for (const auto& [key, value] : item.fields) {
-      if (key == "name" && value.type == Node::Type::String) {
-        sec.name = value.string;
-      } else if ((key == "from" || key == "to") && value.type == Node::Type::Number &&
-                 std::isfinite(value.number)) {
-        (key == "from" ? sec.from : sec.to) = value.number;
-      } else {
-        r.error(value, what + "." + key +
-                           (key == "name"                  ? " must be a string"
-                            : key == "from" || key == "to" ? " must be a finite number [m]"
-                                                           : " is not a key (name, from, to)") +
-                           ", got " + value.describe());
-        ok = false;
-      }
-    }
-    if (!ok) continue;
-    if (!item.field("name") || !item.field("from") || !item.field("to")) {
-      r.error(item, what + " needs name, from and to");
-      continue;
-    }
-    if (!assessment::validSectionName(sec.name)) {
-      r.error(*item.field("name"),
-              what + ".name '" + sec.name + "' must be 1-64 letters, digits, '_' or '-'");
-      continue;
-    }
-    if (!(sec.from >= 0.0 && sec.from < sec.to)) {
-      r.error(item, what + " needs 0 <= from < to, got from = " + formatNumber(sec.from) +
-                        " m, to = " + formatNumber(sec.to) + " m");
-      continue;
-    }
-    for (const auto& other : out)
-      if (other.name == sec.name) {
-        r.error(item, what + ".name '" + sec.name + "' is given twice");
-        ok = false;
-      }
-    if (ok) out.push_back(std::move(sec));
+    auto sec = section(r, v->items[i], what);
+    if (!sec) continue;
+    const bool twice = std::any_of(out.begin(), out.end(),
+                                   [&](const auto& other) { return other.name == sec->name; });
+    if (twice)
+      r.error(v->items[i], what + ".name '" + sec->name + "' is given twice");
+    else
+      out.push_back(std::move(*sec));
   }
   return out;
 }
