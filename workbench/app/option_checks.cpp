@@ -1,6 +1,7 @@
 #include "workbench/app/option_checks.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <thread>
 
 #include "workbench/core/strings.hpp"
@@ -21,6 +22,11 @@ void badOption(Diagnostics& d, const std::string& option, double value, const st
   badOption(d, option, formatNumber(value), why);
 }
 
+std::string notPositive(double v, double most) {
+  if (std::isfinite(v) && v > 0.0 && v <= most) return "";
+  return "must be a finite number in (0, " + formatNumber(most) + "]";
+}
+
 void checkJobs(Diagnostics& d, int jobs, bool zero_is_cores) {
   const int most = maxJobs();
   if (jobs < (zero_is_cores ? 0 : 1) || jobs > most)
@@ -30,17 +36,17 @@ void checkJobs(Diagnostics& d, int jobs, bool zero_is_cores) {
                   (zero_is_cores ? "; 0: every core" : "") + ")");
 }
 
-void checkOptionOverrides(const ScenarioCommandOptions& o, const std::vector<std::string>& base,
-                          const std::vector<OptionOverride>& options) {
-  if (options.empty()) return;
+double checkOptionOverrides(const ScenarioCommandOptions& o, const std::vector<std::string>& base,
+                            const std::vector<OptionOverride>& options) {
   run::CompileOptions co;
   co.scenario = o.scenario;
   co.root = o.root;
   co.overrides = base;
   for (const auto& opt : options) co.overrides.push_back(opt.key_value);
   try {
-    (void)run::compile(co);
+    return run::compile(co).t_end;
   } catch (const InputError& e) {
+    if (options.empty()) throw;
     // The scenario with the user's own --set alone: its problems are the user's, as they are.
     co.overrides = base;
     (void)run::compile(co);

@@ -32,6 +32,9 @@ void badOption(Diagnostics& d, const std::string& option, const std::string& val
                const std::string& why);
 void badOption(Diagnostics& d, const std::string& option, double value, const std::string& why);
 
+// An option given as `text` that is not a positive finite number at most `most`; "" when it is.
+std::string notPositive(double v, double most);
+
 // A scenario override made from an option: "--duration 1e9" -> "run.duration=1e9".
 struct OptionOverride {
   std::string option;     // "--duration"
@@ -42,8 +45,9 @@ struct OptionOverride {
 // Compiles (no run: the checks of `workbench check`, among them the track's end and the output
 // bound) the scenario of `o` with `base` and then with `base` plus the options' overrides. A
 // problem of the second only is reported against the options the user typed, not against the
-// scenario key they became. Throws InputError.
-void checkOptionOverrides(const ScenarioCommandOptions& o, const std::vector<std::string>& base,
-                          const std::vector<OptionOverride>& options);
+// scenario key they became. Throws InputError. Returns the simulated time of the compiled run
+// [s] (0 without a vehicle).
+double checkOptionOverrides(const ScenarioCommandOptions& o, const std::vector<std::string>& base,
+                            const std::vector<OptionOverride>& options);
 
 }  // namespace rb::app
