@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "railbench/version.hpp"
+#include "workbench/app/option_checks.hpp"
 #include "workbench/app/study_jobs.hpp"
 #include "workbench/app/study_summary.hpp"
 #include "workbench/contact/table_io.hpp"
@@ -127,6 +128,14 @@ std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string&
 }
 
 int runStudy(const StudyOptions& o) {
+  // A typed --jobs is checked before the study file is read: 0 or a negative number is no default
+  // (it was read as "the study's jobs, else the cores"), and more runs than the cores can take
+  // only queue and multiply the memory in flight.
+  if (o.jobs_given) {
+    Diagnostics d;
+    checkJobs(d, o.jobs, false);
+    d.throwIfAny();
+  }
   const scenario::StudySpec st = scenario::loadStudy(o.file, o.root);
   StudyOptions so = o;
   if (so.out.empty()) so.out = (fs::path("out") / fs::path(o.file).stem()).string();
