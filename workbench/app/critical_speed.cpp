@@ -443,6 +443,32 @@ void search(const CriticalSpeedOptions& o, const StabilityScene& scene, Search& 
   if (o.method != "ramp") bisect(o, s);
 }
 
+// The first run must fit on the scene's track: a --duration (or a ramp) that carries the vehicle
+// beyond its end at the start speed is refused as the option, before any run (a later run at a
+// higher probe speed that does not fit is a finding of the search).
+void checkTrackReach(const CriticalSpeedOptions& o, const StabilityScene& scene) {
+  const double reach = trackReach(scene.spec);
+  const double v0 = o.from_given ? o.from : defaultStartSpeed(scene);
+  Diagnostics d;
+  if (v0 * o.duration > reach)
+    badOption(d, "--duration", o.duration,
+              "a constant-speed run at " + formatNumber(v0) + " m/s covers " +
+                  formatNumber(v0 * o.duration) + " m, beyond the end of the track (at most " +
+                  formatNumber(reach / v0) + " s at that speed)");
+  if (o.from_given && o.method != "bisection") {
+    const double end = o.to_given ? o.to : 0.5 * o.from;
+    const double ramp = (o.from * o.from - end * end) / (2.0 * o.deceleration);
+    if (ramp > reach)
+      badOption(d, "--deceleration", o.deceleration,
+                "the ramp from " + formatNumber(o.from) + " to " + formatNumber(end) +
+                    " m/s covers " + formatNumber(ramp) +
+                    " m, beyond the end of the track (at "
+                    "most " +
+                    formatNumber(reach) + " m)");
+  }
+  d.throwIfAny();
+}
+
 bool hasBogie(const StabilityScene& scene) {
   for (const auto& b : scene.spec.vehicle.bodies)
     if (b.kind == vehicle::BodyKind::Bogie) return true;
@@ -590,6 +616,7 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
            "vehicle has none");
   if (o.irregular && scene.spec.track.irregularities.source == track::IrregularitySource::None)
     refuse("--irregular", "given, but the scene has no track irregularities");
+  checkTrackReach(o, scene);
   Search s;
   s.setup.scenario = scene.file;
   s.setup.overrides = scene.overrides;

@@ -15,7 +15,6 @@
 #include "workbench/core/strings.hpp"
 #include "workbench/io/modes_file.hpp"
 #include "workbench/stability/stability.hpp"
-#include "workbench/track/track.hpp"
 
 namespace fs = std::filesystem;
 
@@ -234,17 +233,12 @@ void checkModesOptions(const ModesOptions& o) {
 // (and the settling run of a curve integrates up to it before failing).
 void checkDistance(const ModesOptions& o, const scenario::ScenarioSpec& spec) {
   if (o.distance <= 0.0) return;
-  track::TrackSpec t = spec.track;
-  t.irregularities = track::IrregularitySpec{};
-  const double length = track::compileTrack(t).geometry().length();
-  double lead = 0.0;
-  for (const auto& b : spec.vehicle.bodies) lead = std::max(lead, b.x);
-  const double most = length - spec.vehicle.start - lead;
+  const double most = trackReach(spec);
   if (o.distance > most) {
     Diagnostics d;
-    badOption(d, "--distance", o.distance,
-              "puts the leading body beyond the end of the track at " + formatNumber(length) +
-                  " m (at most " + formatNumber(std::max(most, 0.0)) + " m)");
+    badOption(
+        d, "--distance", o.distance,
+        "puts the leading body beyond the end of the track (at most " + formatNumber(most) + " m)");
     d.throwIfAny();
   }
 }

@@ -6,6 +6,7 @@
 
 #include "workbench/core/strings.hpp"
 #include "workbench/run/compile.hpp"
+#include "workbench/track/track.hpp"
 
 namespace rb::app {
 
@@ -20,6 +21,15 @@ void badOption(Diagnostics& d, const std::string& option, const std::string& val
 
 void badOption(Diagnostics& d, const std::string& option, double value, const std::string& why) {
   badOption(d, option, formatNumber(value), why);
+}
+
+double trackReach(const scenario::ScenarioSpec& spec) {
+  track::TrackSpec t = spec.track;
+  t.irregularities = track::IrregularitySpec{};
+  const double length = track::compileTrack(t).geometry().length();
+  double lead = 0.0;
+  for (const auto& b : spec.vehicle.bodies) lead = std::max(lead, b.x);
+  return std::max(0.0, length - spec.vehicle.start - lead);
 }
 
 std::string notPositive(double v, double most) {

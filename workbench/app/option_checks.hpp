@@ -35,6 +35,10 @@ void badOption(Diagnostics& d, const std::string& option, double value, const st
 // An option given as `text` that is not a positive finite number at most `most`; "" when it is.
 std::string notPositive(double v, double most);
 
+// [m] How far the vehicle's reference point can travel on the track of `spec` before its leading
+// body reaches the end (the design track, irregularities off; 0 when it starts beyond it).
+double trackReach(const scenario::ScenarioSpec& spec);
+
 // A scenario override made from an option: "--duration 1e9" -> "run.duration=1e9".
 struct OptionOverride {
   std::string option;     // "--duration"
