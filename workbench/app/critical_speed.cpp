@@ -469,6 +469,30 @@ void checkTrackReach(const CriticalSpeedOptions& o, const StabilityScene& scene)
   d.throwIfAny();
 }
 
+// The kick becomes an initial condition of the first wheelset: a kick beyond its flangeway is
+// refused as --kick (with the largest admissible offset) before any run, on the first run's
+// settings, not as the vehicle.initial key it becomes.
+void checkKick(const CriticalSpeedOptions& o, const StabilityScene& scene,
+               const critical::RunSetup& setup) {
+  if (setup.first_wheelset.empty()) return;
+  const double v0 = o.from_given ? o.from : defaultStartSpeed(scene);
+  double duration = o.duration;
+  if (setup.step_grid > 0.0)
+    duration = std::ceil(duration / setup.step_grid - 1e-9) * setup.step_grid;
+  std::vector<std::string> base = scene.overrides;
+  base.push_back("vehicle.speed=" + formatNumberExact(v0));
+  base.push_back("vehicle.acceleration=0");
+  base.push_back("run.duration=" + formatNumberExact(duration));
+  if (setup.drop_irregularities) base.emplace_back("run.effects.irregularities=false");
+  ScenarioCommandOptions sc;
+  sc.scenario = scene.file;
+  sc.root = o.root;
+  (void)checkOptionOverrides(
+      sc, base,
+      {{"--kick", formatNumber(o.kick),
+        "vehicle.initial." + setup.first_wheelset + ".y=" + formatNumberExact(o.kick)}});
+}
+
 bool hasBogie(const StabilityScene& scene) {
   for (const auto& b : scene.spec.vehicle.bodies)
     if (b.kind == vehicle::BodyKind::Bogie) return true;
@@ -635,6 +659,7 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
   s.setup.threshold = thresholdOf(o, o.irregular);
   s.setup.decay = o.decay;
   if (integ::isFixedStep(scene.spec.solver.method)) s.setup.step_grid = scene.spec.solver.step;
+  checkKick(o, scene, s.setup);
   if (o.from <= 0.0) {
     s.linear_all = linearCriticalSpeed(scene, o.max_speed, s.setup.table_cache);
     s.linear = s.linear_all.hunting;
