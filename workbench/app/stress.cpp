@@ -114,6 +114,19 @@ void checkStressOptions(const StressOptions& o) {
     badOption(d, "--integrators", std::to_string(o.integrators.size()) + " settings",
               "at most " + std::to_string(kMaxSettings) + " settings");
   checkJobs(d, o.jobs, true);
+  const auto& names = stress::axisNames();
+  const auto known = [&](const std::string& a) {
+    return std::find(names.begin(), names.end(), a) != names.end();
+  };
+  for (const auto& a : o.axes)
+    if (!known(a))
+      d.add(kOptionLoc, "--axes: unknown axis '" + a + "' (axes: " + rb::join(names, ", ") + ")");
+  for (const auto& g : o.values) {
+    const std::string name = g.substr(0, g.find('='));
+    if (g.find('=') != std::string::npos && (!known(name) || name == "nominal"))
+      d.add(kOptionLoc,
+            "--values: unknown axis '" + name + "' (axes: " + rb::join(names, ", ") + ")");
+  }
   try {
     (void)parseValues(o.values);
   } catch (const InputError& e) {
