@@ -369,7 +369,14 @@ void checkNumbers(const PrecisionOptions& o) {
       } else if (std::string(option) == "--steps" || std::string(option) == "--levels") {
         (void)splitNumbers(*text, option);
       } else {
-        (void)splitList(*text, option);
+        const std::string name(option);
+        const std::vector<std::string>* valid =
+            name == "--methods"                                        ? &kMethods
+            : name == "--integrators" || name == "--reference-methods" ? &kIntegrators
+                                                                       : nullptr;
+        for (const auto& v : splitList(*text, option))
+          if (valid != nullptr && std::find(valid->begin(), valid->end(), v) == valid->end())
+            d.add(kCommandLine, name + ": unknown '" + v + "' (one of " + join(*valid) + ")");
       }
     } catch (const InputError& e) {
       d.add(e);
