@@ -425,7 +425,11 @@ Plan makePlan(const PrecisionOptions& o) {
   (void)scenario::loadScenario(p.scenario, lo);  // the user's own --set: bad: exit 1
   // The run as every case runs it (the track's end, the output bound): a refusal names the
   // option that shortened it, not the scenario key it became.
-  const double t_end = checkOptionOverrides(o, o.overrides, lengths);
+  // Every case sets its own integrator: the check runs an adaptive one, so that the scenario's
+  // own fixed step does not refuse a length the ladders' steps fit.
+  std::vector<std::string> adaptive = o.overrides;
+  adaptive.emplace_back("solver.method=dopri5");
+  const double t_end = checkOptionOverrides(o, adaptive, lengths);
   lo.overrides = p.base;
   const scenario::ScenarioSpec spec = scenario::loadScenario(p.scenario, lo);
   if (!spec.has_vehicle)

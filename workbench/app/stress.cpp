@@ -274,7 +274,11 @@ int runStress(const StressOptions& o) {
   const auto runs = settings(o, spec);
   const stress::Setting reference =
       stress::parseSetting(o.reference, spec.has_contact, "--reference", spec.solver.max_step);
-  const double t_end = checkOptionOverrides(o, common, {});
+  // The run's length as the cases run it; every setting brings its own integrator, so the check
+  // runs an adaptive one (the scenario's own fixed step must not refuse it).
+  std::vector<std::string> adaptive = common;
+  adaptive.emplace_back("solver.method=dopri5");
+  const double t_end = checkOptionOverrides(o, adaptive, {});
   checkSettings(o.integrators, "--integrators", t_end, spec.run.max_output_samples);
   checkSettings({o.reference}, "--reference", t_end, spec.run.max_output_samples);
   const std::size_t total = plan.cases.size() * (runs.size() + 1);
