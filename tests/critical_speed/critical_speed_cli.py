@@ -63,6 +63,17 @@ def hostile(wb: str, out: str) -> None:
         (["--duration", "2"], "--duration"),
         (["--decay", "1.5"], "--decay"),
         (["--tolerance", "0"], "--tolerance"),
+        # Unbounded work and typed zeros (regressions: a 1e-300 tolerance repeated one probe
+        # forever, --max-speed 1e9 swept 1e8 speeds, --from 0 was read as "not given").
+        (["--method", "bisection", "--tolerance", "1e-300"], "--tolerance 1e-300"),
+        (["--max-speed", "1e9"], "--max-speed 1e+09"),
+        (["--from", "0"], "--from 0"),
+        (["--from", "250"], "--from 250"),
+        (["--duration", "1e9"], "--duration 1e+09"),
+        (["--deceleration", "1e-9"], "--deceleration 1e-09"),
+        (["--jobs", "100000"], "--jobs 100000"),
+        # On the scene's 20 km track: a ramp from 190 m/s at 0.5 m/s^2 covers 27 km.
+        (["--from", "190", "--to", "10"], "--deceleration 0.5"),
         (["--threshold", "-1e-3"], "--threshold"),
         (["--method", "newton"], "--method"),
         (["--criterion", "sperling"], "--criterion"),

@@ -5,9 +5,12 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
+#include "workbench/app/critical_speed.hpp"
 #include "workbench/app/critical_speed_analysis.hpp"
+#include "workbench/core/error.hpp"
 
 namespace cs = rb::app::critical;
 
@@ -160,3 +163,56 @@ TEST(CriticalSpeedAnalysis, RampWithoutDeathOrWithoutCycleFindsNothing) {
 }
 
 }  // namespace
+
+namespace {
+
+// The problems checkCriticalSpeedOptions reports for `o` (empty when it accepts them).
+std::vector<std::string> optionProblems(const rb::app::CriticalSpeedOptions& o) {
+  try {
+    rb::app::checkCriticalSpeedOptions(o);
+  } catch (const rb::InputError& e) {
+    std::vector<std::string> out;
+    for (const auto& d : e.diagnostics()) out.push_back(d.message);
+    return out;
+  }
+  return {};
+}
+
+}  // namespace
+
+TEST(CriticalSpeedOptions, DefaultsAreAccepted) {
+  EXPECT_TRUE(optionProblems(rb::app::CriticalSpeedOptions{}).empty());
+}
+
+TEST(CriticalSpeedOptions, UnboundedWorkIsRefusedAllAtOnceWithTheValues) {
+  rb::app::CriticalSpeedOptions o;
+  o.tolerance = 1e-300;  // repeated one bisection probe forever
+  o.max_speed = 1e9;     // swept the linear critical speed over 1e8 speeds
+  o.duration = 1e9;
+  const auto p = optionProblems(o);
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_NE(p[0].find("--max-speed 1e+09"), std::string::npos) << p[0];
+  EXPECT_NE(p[1].find("--tolerance 1e-300"), std::string::npos) << p[1];
+  EXPECT_NE(p[2].find("--duration 1e+09"), std::string::npos) << p[2];
+}
+
+TEST(CriticalSpeedOptions, ATypedZeroSpeedIsNoDefault) {
+  rb::app::CriticalSpeedOptions o;
+  o.from = 0.0;
+  o.from_given = true;
+  const auto p = optionProblems(o);
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_NE(p[0].find("--from 0:"), std::string::npos) << p[0];
+  o.from_given = false;  // not typed: the default search start
+  EXPECT_TRUE(optionProblems(o).empty());
+}
+
+TEST(CriticalSpeedOptions, ToleranceIsBoundedRelativeToTheSpeed) {
+  rb::app::CriticalSpeedOptions o;
+  o.from = 100.0;
+  o.from_given = true;
+  o.tolerance = 0.005;  // below 1e-4 x 100 m/s
+  EXPECT_EQ(optionProblems(o).size(), 1u);
+  o.tolerance = 0.02;
+  EXPECT_TRUE(optionProblems(o).empty());
+}

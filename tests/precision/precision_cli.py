@@ -131,7 +131,14 @@ def default_suite(wb, out):
                         (["--quantities", "y,Ymax"], "--quantities"),
                         (["--set", "run.output.every=0.005", "--steps", "2e-3"], "--steps"),
                         (["--levels", "0.1,-1"], "--levels"),
-                        (["--set", "solver.methd=abm"], "methd")):
+                        (["--set", "solver.methd=abm"], "methd"),
+                        # Unbounded work, typed zeros and empties, the option named (not the key
+                        # it becomes).
+                        (["--steps", "1e-12"], "--steps 1e-12"),
+                        (["--tolerances", "2"], "--tolerances 2"),
+                        (["--duration", "0"], "--duration 0"),
+                        (["--levels", ""], "--levels"),
+                        (["--duration", "1e9"], "--duration 1e+09 (run.duration=1e+09)")):
         code, text = run(wb, SMALL, os.path.join(out, "bad"), "--quick", *extra)
         if code != 1 or word not in text:
             problems.append(f"{extra}: exit {code}, expected 1 naming {word}: {text[-500:]}")

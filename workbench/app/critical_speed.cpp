@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "workbench/app/critical_speed_runs.hpp"
+#include "workbench/app/option_checks.hpp"
 #include "workbench/app/stability_scene.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
@@ -36,13 +37,17 @@ constexpr double kProbeFactor = 1.2;
 // the scene's speed instead.
 constexpr double kLinearMargin = 1.1;
 
+// Bounds of the options (docs/stability.md, "Options and their limits"): every run is bounded
+// in simulated time, the ramp's (start - end) / deceleration too.
+constexpr double kMaxDuration = 600.0;       // [s] a constant-speed run
+constexpr double kMinDeceleration = 0.05;    // [m/s^2] a ramp from 200 m/s lasts at most 4000 s
+constexpr double kMaxDeceleration = 20.0;    // [m/s^2]
+constexpr double kMinWindow = 0.05;          // [s] a window holds a hunting period or more
+constexpr double kToleranceFraction = 1e-4;  // the finest tolerance / the highest speed
+constexpr int kMaxBisections = 40;           // guard behind the tolerance bound
+
 void refuse(const std::string& option, const std::string& message) {
   throw InputError(SourceLoc{option, 0}, option + " " + message);
-}
-
-void checkPositive(const std::string& option, double v) {
-  if (!(std::isfinite(v) && v > 0.0))
-    refuse(option, "must be a finite number > 0, got " + formatNumber(v));
 }
 
 // The speeds and the findings of one search.
@@ -213,8 +218,16 @@ void bisect(const CriticalSpeedOptions& o, Search& s) {
                          " of the bracket: the critical speed is lower (--to)");
     return;
   }
-  while (hi - lo > o.tolerance) {
+  for (int probes = 0; hi - lo > o.tolerance; ++probes) {
     const double mid = 0.5 * (lo + hi);
+    // The options bound the tolerance, so this is a guard: never the same probe twice, never more
+    // than kMaxBisections probes.
+    if (!(mid > lo && mid < hi) || probes >= kMaxBisections) {
+      s.findings.push_back("bisection: stopped after " + std::to_string(probes) +
+                           " probes at a bracket of " + mps(hi - lo) + " (--tolerance " +
+                           formatNumber(o.tolerance) + " m/s)");
+      break;
+    }
     const KickedRun& r = constantRun(s, "bisection", mid, o.duration);
     const bool unstable = critical::runUnstable(r, en);
     std::cout << "bisection " << mps(mid) << ": " << describe(r, en) << "\n";
@@ -430,6 +443,56 @@ void search(const CriticalSpeedOptions& o, const StabilityScene& scene, Search& 
   if (o.method != "ramp") bisect(o, s);
 }
 
+// The first run must fit on the scene's track: a --duration (or a ramp) that carries the vehicle
+// beyond its end at the start speed is refused as the option, before any run (a later run at a
+// higher probe speed that does not fit is a finding of the search).
+void checkTrackReach(const CriticalSpeedOptions& o, const StabilityScene& scene) {
+  const double reach = trackReach(scene.spec);
+  const double v0 = o.from_given ? o.from : defaultStartSpeed(scene);
+  Diagnostics d;
+  if (v0 * o.duration > reach)
+    badOption(d, "--duration", o.duration,
+              "a constant-speed run at " + formatNumber(v0) + " m/s covers " +
+                  formatNumber(v0 * o.duration) + " m, beyond the end of the track (at most " +
+                  formatNumber(reach / v0) + " s at that speed)");
+  if (o.from_given && o.method != "bisection") {
+    const double end = o.to_given ? o.to : 0.5 * o.from;
+    const double ramp = (o.from * o.from - end * end) / (2.0 * o.deceleration);
+    if (ramp > reach)
+      badOption(d, "--deceleration", o.deceleration,
+                "the ramp from " + formatNumber(o.from) + " to " + formatNumber(end) +
+                    " m/s covers " + formatNumber(ramp) +
+                    " m, beyond the end of the track (at "
+                    "most " +
+                    formatNumber(reach) + " m)");
+  }
+  d.throwIfAny();
+}
+
+// The kick becomes an initial condition of the first wheelset: a kick beyond its flangeway is
+// refused as --kick (with the largest admissible offset) before any run, on the first run's
+// settings, not as the vehicle.initial key it becomes.
+void checkKick(const CriticalSpeedOptions& o, const StabilityScene& scene,
+               const critical::RunSetup& setup) {
+  if (setup.first_wheelset.empty()) return;
+  const double v0 = o.from_given ? o.from : defaultStartSpeed(scene);
+  double duration = o.duration;
+  if (setup.step_grid > 0.0)
+    duration = std::ceil(duration / setup.step_grid - 1e-9) * setup.step_grid;
+  std::vector<std::string> base = scene.overrides;
+  base.push_back("vehicle.speed=" + formatNumberExact(v0));
+  base.push_back("vehicle.acceleration=0");
+  base.push_back("run.duration=" + formatNumberExact(duration));
+  if (setup.drop_irregularities) base.emplace_back("run.effects.irregularities=false");
+  ScenarioCommandOptions sc;
+  sc.scenario = scene.file;
+  sc.root = o.root;
+  (void)checkOptionOverrides(
+      sc, base,
+      {{"--kick", formatNumber(o.kick),
+        "vehicle.initial." + setup.first_wheelset + ".y=" + formatNumberExact(o.kick)}});
+}
+
 bool hasBogie(const StabilityScene& scene) {
   for (const auto& b : scene.spec.vehicle.bodies)
     if (b.kind == vehicle::BodyKind::Bogie) return true;
@@ -456,20 +519,28 @@ CLI::App* addCriticalSpeedCommand(CLI::App& app, CriticalSpeedOptions& o) {
   c->add_option("--contact", o.contact, "contact method kec or lut (default: the scenario's)");
   c->add_flag("--no-plots", o.no_plots, "no figures");
   c->add_option("--from", o.from,
-                "start speed [m/s] (default: the scene's speed, then x1.2 until hunting)");
+                "start speed [m/s], (0, 200] (default: the scene's speed, then x1.2 until "
+                "hunting)")
+      ->each([&o](const std::string&) { o.from_given = true; });
   c->add_option("--to", o.to,
-                "end speed of the ramp and low end of the bracket [m/s] "
-                "(default: half the start speed)");
-  c->add_option("--max-speed", o.max_speed, "highest probe without --from [m/s] (150)");
-  c->add_option("--kick", o.kick, "lateral offset of the first wheelset at t = 0 [m] (0.005)");
-  c->add_option("--deceleration", o.deceleration, "deceleration of the ramp [m/s^2] (0.5)");
-  c->add_option("--duration", o.duration, "duration of a constant-speed run [s] (10)");
-  c->add_option("--window", o.window, "amplitude window [s] (1)");
+                "end speed of the ramp and low end of the bracket [m/s], (0, 200] "
+                "(default: half the start speed)")
+      ->each([&o](const std::string&) { o.to_given = true; });
+  c->add_option("--max-speed", o.max_speed, "highest probe without --from [m/s], (0, 200] (150)");
+  c->add_option("--kick", o.kick,
+                "lateral offset of the first wheelset at t = 0 [m], 0 < |kick| <= 0.02 (0.005)");
+  c->add_option("--deceleration", o.deceleration,
+                "deceleration of the ramp [m/s^2], [0.05, 20] (0.5)");
+  c->add_option("--duration", o.duration, "duration of a constant-speed run [s], <= 600 (10)");
+  c->add_option("--window", o.window, "amplitude window [s], >= 0.05 (1)");
   c->add_option("--transient", o.transient, "time after the kick left out [s] (1)");
   c->add_option("--threshold", o.threshold,
-                "limit-cycle amplitude threshold [m] (1e-4; 1e-3 with irregularities)");
+                "limit-cycle amplitude threshold [m], [1e-7, 0.02] (1e-4; 1e-3 with "
+                "irregularities)");
   c->add_option("--decay", o.decay, "decay factor last/middle window of a stable run (0.8)");
-  c->add_option("--tolerance", o.tolerance, "bracket width of the bisection [m/s] (0.5)");
+  c->add_option("--tolerance", o.tolerance,
+                "bracket width of the bisection [m/s], at least 1e-4 x the highest speed "
+                "(--from, else --max-speed) (0.5)");
   c->add_flag("--irregular", o.irregular, "keep the scenario's track irregularities");
   return c;
 }
@@ -510,31 +581,51 @@ LinearAnswer linearCriticalSpeed(const StabilityScene& scene, double max_speed,
 }
 
 void checkCriticalSpeedOptions(const CriticalSpeedOptions& o) {
-  if (o.from != 0.0) checkPositive("--from", o.from);
-  if (o.to != 0.0) checkPositive("--to", o.to);
-  if (o.from > 0.0 && o.to >= o.from)
-    refuse("--to", "(" + formatNumber(o.to) + " m/s) must be below --from (" +
-                       formatNumber(o.from) + " m/s)");
-  checkPositive("--max-speed", o.max_speed);
-  checkPositive("--deceleration", o.deceleration);
-  checkPositive("--window", o.window);
-  if (o.threshold) checkPositive("--threshold", *o.threshold);
-  checkPositive("--tolerance", o.tolerance);
+  Diagnostics d;
+  // A speed option given as 0 is no default: 0 m/s (or less) never hunts.
+  auto speed = [&](const std::string& option, double v) {
+    if (!(std::isfinite(v) && v > 0.0 && v <= kMaxOptionSpeed))
+      badOption(d, option, v,
+                "must be a speed in (0, " + formatNumber(kMaxOptionSpeed) +
+                    "] m/s (the range of vehicle.speed)");
+  };
+  auto positive = [&](const std::string& option, double v, double lo, double hi,
+                      const std::string& unit) {
+    if (!(std::isfinite(v) && v >= lo && v <= hi))
+      badOption(d, option, v,
+                "must be in [" + formatNumber(lo) + ", " + formatNumber(hi) + "] " + unit);
+  };
+  if (o.from_given) speed("--from", o.from);
+  if (o.to_given) speed("--to", o.to);
+  if (o.from_given && o.to_given && o.from > 0.0 && o.to >= o.from)
+    badOption(d, "--to", o.to, "must be below --from (" + formatNumber(o.from) + " m/s)");
+  speed("--max-speed", o.max_speed);
+  positive("--deceleration", o.deceleration, kMinDeceleration, kMaxDeceleration, "m/s^2");
+  positive("--window", o.window, kMinWindow, kMaxDuration / 3.0, "s");
+  if (o.threshold) positive("--threshold", *o.threshold, 1e-7, 0.02, "m");
+  // The bracket is bisected down to the tolerance: one far below the speed's resolution repeats
+  // one probe forever, so it is bounded relative to the highest speed of the search.
+  const double top = o.from_given ? o.from : o.max_speed;
+  const double finest = kToleranceFraction * (std::isfinite(top) && top > 0.0 ? top : 1.0);
+  positive("--tolerance", o.tolerance, finest, kMaxOptionSpeed, "m/s");
   if (!(std::isfinite(o.kick) && o.kick != 0.0 && std::abs(o.kick) <= 0.02))
-    refuse("--kick",
-           "must be a lateral offset with 0 < |kick| <= 0.02 m (the first run then checks it "
-           "against the flangeway), got " +
-               formatNumber(o.kick));
-  if (!(std::isfinite(o.transient) && o.transient >= 0.0))
-    refuse("--transient", "must be >= 0 s, got " + formatNumber(o.transient));
+    badOption(d, "--kick", o.kick,
+              "must be a lateral offset with 0 < |kick| <= 0.02 m (the first run then checks it "
+              "against the flangeway)");
+  if (!(std::isfinite(o.transient) && o.transient >= 0.0 && o.transient <= kMaxDuration))
+    badOption(d, "--transient", o.transient,
+              "must be in [0, " + formatNumber(kMaxDuration) + "] s");
   if (!(std::isfinite(o.decay) && o.decay > 0.0 && o.decay <= 1.0))
-    refuse("--decay", "must be in (0, 1], got " + formatNumber(o.decay));
-  checkPositive("--duration", o.duration);
-  if (o.duration < o.transient + 3.0 * o.window)
-    refuse("--duration", "(" + formatNumber(o.duration) +
-                             " s) must hold the transient and at least 3 windows (--transient + "
-                             "3 --window = " +
-                             formatNumber(o.transient + 3.0 * o.window) + " s)");
+    badOption(d, "--decay", o.decay, "must be in (0, 1]");
+  if (!(std::isfinite(o.duration) && o.duration > 0.0 && o.duration <= kMaxDuration))
+    badOption(d, "--duration", o.duration,
+              "must be in (0, " + formatNumber(kMaxDuration) + "] s (one constant-speed run)");
+  else if (o.duration < o.transient + 3.0 * o.window)
+    badOption(d, "--duration", o.duration,
+              "must hold the transient and at least 3 windows (--transient + 3 --window = " +
+                  formatNumber(o.transient + 3.0 * o.window) + " s)");
+  checkJobs(d, o.jobs, true);
+  d.throwIfAny();
 }
 
 int runCriticalSpeed(const CriticalSpeedOptions& o) {
@@ -549,6 +640,7 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
            "vehicle has none");
   if (o.irregular && scene.spec.track.irregularities.source == track::IrregularitySource::None)
     refuse("--irregular", "given, but the scene has no track irregularities");
+  checkTrackReach(o, scene);
   Search s;
   s.setup.scenario = scene.file;
   s.setup.overrides = scene.overrides;
@@ -567,6 +659,7 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
   s.setup.threshold = thresholdOf(o, o.irregular);
   s.setup.decay = o.decay;
   if (integ::isFixedStep(scene.spec.solver.method)) s.setup.step_grid = scene.spec.solver.step;
+  checkKick(o, scene, s.setup);
   if (o.from <= 0.0) {
     s.linear_all = linearCriticalSpeed(scene, o.max_speed, s.setup.table_cache);
     s.linear = s.linear_all.hunting;

@@ -31,6 +31,8 @@ struct CriticalSpeedOptions : ScenarioCommandOptions {
   double from = 0.0;          // [m/s] start speed (0: 1.1 x the linear critical speed, else
                               // defaultStartSpeed and upwards)
   double to = 0.0;            // [m/s] end speed of the ramp, low end of the bracket (0: from / 2)
+  bool from_given = false;    // --from was typed (then 0 is refused, not the default)
+  bool to_given = false;      // --to was typed
   double max_speed = 150.0;   // [m/s] highest probe when --from is not given
   double kick = 5e-3;         // [m] lateral offset of the first wheelset at t = 0
   double deceleration = 0.5;  // [m/s^2] of the ramp
@@ -57,8 +59,8 @@ double defaultStartSpeed(const StabilityScene& scene);
 struct LinearAnswer {
   double any = std::numeric_limits<double>::quiet_NaN();      // [m/s]
   double hunting = std::numeric_limits<double>::quiet_NaN();  // [m/s]
-  std::string mode;  // the first unstable mode (stability::describe)
-  std::string note;  // why `any` is NaN
+  std::string mode;          // the first unstable mode (stability::describe)
+  std::string note;          // why `any` is NaN
   std::string hunting_note;  // why `hunting` is NaN
 };
 LinearAnswer linearCriticalSpeed(const StabilityScene& scene, double max_speed,

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "workbench/app/effects_cases.hpp"
+#include "workbench/app/option_checks.hpp"
 #include "workbench/app/study.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
@@ -30,18 +31,33 @@ std::vector<std::string> commaList(const std::string& text) {
   return out;
 }
 
+// The user's options, before --quick changes any: all problems at once, each with its value. A
+// length typed as 0 is no default, and an option --quick overrides is not silently dropped.
 void checkOptions(const EffectsOptions& o) {
   Diagnostics d;
-  if (o.duration < 0 || !std::isfinite(o.duration))
-    d.add(kCli, "--duration must be > 0 s, got " + formatNumber(o.duration));
-  if (o.distance < 0 || !std::isfinite(o.distance))
-    d.add(kCli, "--distance must be > 0 m, got " + formatNumber(o.distance));
+  const auto typed = [&](const char* option) { return o.given.contains(option); };
+  if (typed("--duration") || o.duration != 0.0)
+    if (const auto why = notPositive(o.duration, 1e9); !why.empty())
+      badOption(d, "--duration", o.duration, why + " s");
+  if (typed("--distance") || o.distance != 0.0)
+    if (const auto why = notPositive(o.distance, 1e12); !why.empty())
+      badOption(d, "--distance", o.distance, why + " m");
   if (o.duration > 0 && o.distance > 0) d.add(kCli, "give either --duration or --distance");
-  if (!(o.cost_duration > 0) || !std::isfinite(o.cost_duration))
-    d.add(kCli, "--cost-duration must be > 0 s, got " + formatNumber(o.cost_duration));
+  if (const auto why = notPositive(o.cost_duration, 1e9); !why.empty())
+    badOption(d, "--cost-duration", o.cost_duration, why + " s");
   if (o.repeats < 1 || o.repeats > 100)
-    d.add(kCli, "--repeats must be 1..100, got " + std::to_string(o.repeats));
-  for (const auto& q : commaList(o.quantities)) {
+    badOption(d, "--repeats", std::to_string(o.repeats), "must be in 1..100");
+  else if (o.quick && typed("--repeats") && o.repeats != 1)
+    badOption(d, "--repeats", std::to_string(o.repeats),
+              "--quick runs one repeat per case; give one of them");
+  if (o.quick && typed("--cost-duration"))
+    badOption(d, "--cost-duration", o.cost_duration,
+              "--quick runs no callgrind, so there is no cost run; give one of them");
+  checkJobs(d, o.jobs, true);
+  const auto quantities = commaList(o.quantities);
+  if (quantities.empty())
+    d.add(kCli, "--quantities: no quantity (one of: " + join(kQuantities, ", ") + ")");
+  for (const auto& q : quantities) {
     bool known = false;
     for (const auto& k : kQuantities) known = known || k == q;
     if (!known)
@@ -103,14 +119,18 @@ CLI::App* addEffectsCommand(CLI::App& app, EffectsOptions& o) {
       "each optional effect of the scene switched off in turn: what it costs (instructions per "
       "evaluation) and what it changes in the answer",
       o);
-  c->add_option("--repeats", o.repeats, "runs per case, CPU time per evaluation is their median")
+  c->add_option("--repeats", o.repeats,
+                "runs per case (1..100), CPU time per evaluation is their median")
       ->capture_default_str();
   c->add_option("--duration", o.duration,
-                "simulated time of every case [s] (default: the scene's)");
-  c->add_option("--distance", o.distance, "distance of every case [m] (default: the scene's)");
+                "simulated time of every case [s] > 0, on the track (default: the scene's)");
+  c->add_option("--distance", o.distance,
+                "distance of every case [m] > 0, on the track (default: the scene's)");
   c->add_option("--cost-duration", o.cost_duration,
-                "simulated time of each case's callgrind run [s]")
+                "simulated time of each case's callgrind run [s], on the track")
       ->capture_default_str();
+  for (const char* name : {"--repeats", "--duration", "--distance", "--cost-duration"})
+    c->get_option(name)->each([&o, name](const std::string&) { o.given.insert(name); });
   c->add_flag("--no-callgrind", o.no_callgrind, "skip the instruction counts (valgrind)");
   c->add_flag("--quick", o.quick, "a smoke test: 0.2 s, one repeat, no callgrind");
   c->add_option("--quantities", o.quantities,
@@ -120,22 +140,38 @@ CLI::App* addEffectsCommand(CLI::App& app, EffectsOptions& o) {
 }
 
 int runEffects(const EffectsOptions& options) {
+  checkOptions(options);
   EffectsOptions o = options;
   if (o.quick) {
     if (!(o.duration > 0) && !(o.distance > 0)) o.duration = 0.2;
     o.repeats = 1;
     o.no_callgrind = true;
   }
-  checkOptions(o);
   const scenario::ScenarioSpec scene = loadCommandScenario(o, o.overrides);
   if (!scene.has_vehicle)
     throw InputError({o.scenario, 0},
                      "the scenario has no vehicle{} block: nothing is simulated, "
                      "no effect to measure");
   std::vector<std::string> common = o.overrides;
-  if (auto len = lengthOverride(scene, o.duration, o.distance); !len.empty()) common.push_back(len);
-  // The cases' own load (with the length) is checked here, so bad input runs nothing.
+  std::vector<OptionOverride> lengths;
+  if (auto len = lengthOverride(scene, o.duration, o.distance); !len.empty()) {
+    common.push_back(len);
+    // What the user typed (--quick's 0.2 s included, as --quick).
+    if (options.duration > 0 || options.distance > 0)
+      lengths.push_back({options.duration > 0 ? "--duration" : "--distance",
+                         formatNumber(options.duration > 0 ? options.duration : options.distance),
+                         len});
+    else
+      lengths.push_back({"--quick", "(0.2 s)", len});
+  }
+  // The cases' own run (with the length: the track's end, the output bound) is checked here, so
+  // bad input runs nothing; a refusal names the option that set the length.
+  (void)checkOptionOverrides(o, o.overrides, lengths);
   const scenario::ScenarioSpec spec = loadCommandScenario(o, common);
+  if (!o.no_callgrind)
+    (void)checkOptionOverrides(o, o.overrides,
+                               {{"--cost-duration", formatNumber(o.cost_duration),
+                                 lengthOverride(spec, o.cost_duration, 0)}});
 
   const StudyOptions so = commandStudyOptions(o, "effects");
   std::error_code ec;

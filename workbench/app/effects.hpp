@@ -4,6 +4,7 @@
 // (run.effects, workbench/scenario/effect_names.hpp), what each costs (callgrind instructions per
 // right-hand-side evaluation, CPU time per evaluation beside it) and what it changes in the answer
 // (the wheelsets' lateral displacement and yaw against the full scene).
+#include <set>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 namespace rb::app {
 
 struct EffectsOptions : ScenarioCommandOptions {
+  std::set<std::string> given;       // the options typed (a typed 0 is refused, not a default)
   int repeats = 3;                   // runs per case: CPU time per evaluation is their median
   double duration = 0.0;             // [s] simulated time of every case (0: the scene's)
   double distance = 0.0;             // [m] travelled distance of every case (0: the scene's)

@@ -81,11 +81,12 @@ int workbench(int argc, char** argv) {
   auto* study = app.add_subcommand("study", "run a study: a matrix of cases over a base scenario");
   study->add_option("file", so.file, "study file (.lua)")->required();
   study->add_option("--out", so.out, "output folder (default out/<study>)");
-  study->add_option("--jobs", so.jobs, "cases at once (default: the study's jobs, else cores)");
   study
-      ->add_option("--run-timeout", so.run_timeout_s,
-                   "kill a run after this many seconds of wall time and report it (0: no limit)")
-      ->check(CLI::NonNegativeNumber);
+      ->add_option("--jobs", so.jobs,
+                   "cases at once, 1..4 x cores (default: the study's jobs, else cores)")
+      ->each([&so](const std::string&) { so.jobs_given = true; });
+  study->add_option("--run-timeout", so.run_timeout_s,
+                    "kill a run after this many seconds of wall time and report it (0: no limit)");
   auto* shard = study->add_option("--shard", so.shard,
                                   "run only shard K of N (K/N, 1 <= K <= N) and write no summary");
   auto* summarize =

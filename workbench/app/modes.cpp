@@ -1,6 +1,7 @@
 #include "workbench/app/modes.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -8,8 +9,10 @@
 #include <limits>
 #include <sstream>
 
+#include "workbench/app/option_checks.hpp"
 #include "workbench/app/stability_scene.hpp"
 #include "workbench/core/error.hpp"
+#include "workbench/core/strings.hpp"
 #include "workbench/io/modes_file.hpp"
 #include "workbench/stability/stability.hpp"
 
@@ -50,6 +53,9 @@ std::vector<double> parseSpeeds(const std::string& text) {
   const double nd = speedNumber(parts[2]);
   if (!(a > 0.0)) badSpeeds("a must be > 0 m/s, got " + parts[0]);
   if (!(b >= a)) badSpeeds("b must be >= a, got " + parts[1]);
+  if (b > kMaxOptionSpeed)
+    badSpeeds("b must be at most " + formatNumber(kMaxOptionSpeed) +
+              " m/s (the range of vehicle.speed), got " + parts[1]);
   if (nd != std::floor(nd) || nd < 1.0) badSpeeds("n must be an integer >= 1, got " + parts[2]);
   if (nd > kMaxSpeeds)
     badSpeeds("n must be at most " + std::to_string(kMaxSpeeds) + ", got " + parts[2]);
@@ -132,8 +138,7 @@ void printSpeed(const stability::Analysis& a) {
     const bool bad = stability::unstable(m);
     if (!bad && (!m.oscillatory || m.frequency_hz >= 30.0)) continue;
     std::printf("  %-34s %10.3f %10.4f %9.3f  %s%s\n", m.label.c_str(), m.frequency_hz,
-                m.damping_ratio, m.eigenvalue.real(), m.dominant.c_str(),
-                bad ? "  UNSTABLE" : "");
+                m.damping_ratio, m.eigenvalue.real(), m.dominant.c_str(), bad ? "  UNSTABLE" : "");
   }
   const std::size_t n = a.unstableModes().size();
   if (n == 0)
@@ -191,19 +196,57 @@ io::ModesSummary summaryOf(const stability::CriticalSpeed& c, const stability::A
 CLI::App* addModesCommand(CLI::App& app, ModesOptions& o) {
   auto* c = addScenarioCommand(
       app, "modes", "linearised stability: modes, damping versus speed, linear critical speed", o);
-  c->add_option("--speeds", o.speeds, "speeds a:b:n [m/s] (default: the scenario's speed)");
+  c->add_option("--speeds", o.speeds,
+                "speeds a:b:n [m/s]: 0 < a <= b <= 200, n <= 200 (default: the scenario's speed)");
   c->add_option("--contact", o.contact, "contact method kec or lut (default: the scenario's)");
   c->add_flag("--no-plots", o.no_plots, "no figures");
   c->add_option("--distance", o.distance,
-                "travelled distance [m] of the linearisation point (default 0: the start; in a "
-                "constant-radius curve the steady state is the curving equilibrium)");
+                "travelled distance [m] of the linearisation point, on the track (default 0: the "
+                "start; in a constant-radius curve the steady state is the curving equilibrium)");
   c->add_option("--fd-scale", o.fd_scale,
                 "factor on the finite-difference steps of the Jacobian (default 1: 1e-8 m/rad, "
                 "1e-7 m/s, 0.01 N)");
   return c;
 }
 
+namespace {
+
+// The options that need no scenario, all at once, before anything is loaded or written.
+void checkModesOptions(const ModesOptions& o) {
+  Diagnostics d;
+  if (!(o.fd_scale > 0.0) || !std::isfinite(o.fd_scale) || o.fd_scale > 1e3)
+    badOption(d, "--fd-scale", o.fd_scale, "must be in (0, 1000]");
+  if (!(o.distance >= 0.0) || !std::isfinite(o.distance))
+    badOption(d, "--distance", o.distance, "must be a finite distance >= 0 m");
+  checkJobs(d, o.jobs, true);
+  if (!o.speeds.empty()) {
+    try {
+      (void)parseSpeeds(o.speeds);
+    } catch (const InputError& e) {
+      d.add(e);
+    }
+  }
+  d.throwIfAny();
+}
+
+// The linearisation point must lie on the track: beyond its end the geometry is extrapolated
+// (and the settling run of a curve integrates up to it before failing).
+void checkDistance(const ModesOptions& o, const scenario::ScenarioSpec& spec) {
+  if (o.distance <= 0.0) return;
+  const double most = trackReach(spec);
+  if (o.distance > most) {
+    Diagnostics d;
+    badOption(
+        d, "--distance", o.distance,
+        "puts the leading body beyond the end of the track (at most " + formatNumber(most) + " m)");
+    d.throwIfAny();
+  }
+}
+
+}  // namespace
+
 int runModes(const ModesOptions& o) {
+  checkModesOptions(o);
   std::vector<double> speeds;
   if (!o.speeds.empty()) speeds = parseSpeeds(o.speeds);
   const StudyOptions so = commandStudyOptions(o, "modes");
@@ -212,13 +255,10 @@ int runModes(const ModesOptions& o) {
   if (speeds.empty()) speeds.push_back(scene.spec.vehicle.speed);
   if (!(speeds.front() > 0.0))
     throw InputError(scene.spec.vehicle.loc, "vehicle.speed must be > 0 for workbench modes");
+  checkDistance(o, scene.spec);
   std::error_code ec;
   fs::create_directories(so.out, ec);
   if (ec) throw InputError({so.out, 0}, "cannot create the output folder: " + ec.message());
-  if (!(o.fd_scale > 0.0) || !std::isfinite(o.fd_scale) || o.fd_scale > 1e3)
-    throw InputError({"--fd-scale", 0}, "--fd-scale must be in (0, 1000]");
-  if (!(o.distance >= 0.0) || !std::isfinite(o.distance))
-    throw InputError({"--distance", 0}, "--distance must be >= 0 m");
   stability::Options so_opts;
   so_opts.step_scale = o.fd_scale;
   so_opts.distance = o.distance;

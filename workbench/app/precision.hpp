@@ -8,6 +8,7 @@
 // integration error), and the matrix contact method x integrator x step / tolerance ladder run as
 // an expanded study (study.hpp: resumable, one process per run). `plots/rbplot precision` then
 // computes the errors, the Pareto fronts, the figures and the recommendation table.
+#include <set>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,9 @@
 namespace rb::app {
 
 struct PrecisionOptions : ScenarioCommandOptions {
+  // The options typed on the command line: a typed empty list or 0 is refused, never read as
+  // "the default".
+  std::set<std::string> given;
   std::string methods;            // contact methods "kec,lut" ("" = default)
   std::string integrators;        // "rk4,abm,dopri5,bdf" ("" = default)
   std::string quantities;         // error quantities "y,yaw" ("" = default)

@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include "workbench/app/option_checks.hpp"
 #include "workbench/app/precision_answer.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
@@ -31,6 +32,8 @@ const std::vector<double> kTolerances = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8};
 const std::vector<double> kQuickSteps = {1e-3, 5e-4};
 const std::vector<double> kQuickTolerances = {1e-3, 1e-5};
 const std::vector<double> kLevels = {1.0, 0.1, 0.01};  // [mm] of the first quantity
+// The finest relative tolerance of a ladder or the references: about 50 ulp of a double.
+constexpr double kFinestTolerance = 1e-14;
 
 std::string num(double v) {
   return formatNumberExact(v);
@@ -317,35 +320,122 @@ std::vector<double> splitNumbers(const std::string& text, const std::string& opt
   return out;
 }
 
+namespace {
+
+// The options that need no scenario: every problem at once, each with its value.
+void checkNumbers(const PrecisionOptions& o) {
+  Diagnostics d;
+  auto typed = [&](const char* option) { return o.given.contains(option); };
+  // A length typed as 0 is no default: it would run the scenario's whole length unasked.
+  if (typed("--distance") || o.distance != 0.0)
+    if (const auto why = notPositive(o.distance, 1e12); !why.empty())
+      badOption(d, "--distance", o.distance, why + " m");
+  if (typed("--duration") || o.duration != 0.0)
+    if (const auto why = notPositive(o.duration, 1e9); !why.empty())
+      badOption(d, "--duration", o.duration, why + " s");
+  if (o.distance > 0.0 && o.duration > 0.0)
+    d.add(kCommandLine, "--distance and --duration: give one of them");
+  if (!(std::isfinite(o.budget) && o.budget >= 0.0))
+    badOption(d, "--budget", o.budget, "must be a finite time >= 0 s (0: none)");
+  if (!(std::isfinite(o.reference_limit) && o.reference_limit >= 0.0))
+    badOption(d, "--reference-limit", o.reference_limit,
+              "must be a finite number >= 0 (0: the smallest level / 10)");
+  if (!(o.reference_tol >= kFinestTolerance && o.reference_tol < 1e-2))
+    badOption(d, "--reference-tol", o.reference_tol,
+              "must be in [" + formatNumber(kFinestTolerance) + ", 1e-2)");
+  if (o.repeats < 1 || o.repeats > 100)
+    badOption(d, "--repeats", std::to_string(o.repeats), "must be in 1..100");
+  checkJobs(d, o.jobs, true);
+  // A list typed empty ('') is refused, not read as the default list.
+  const std::vector<std::pair<const char*, const std::string*>> lists = {
+      {"--methods", &o.methods},
+      {"--integrators", &o.integrators},
+      {"--steps", &o.steps},
+      {"--tolerances", &o.tolerances},
+      {"--quantities", &o.quantities},
+      {"--levels", &o.levels},
+      {"--reference-methods", &o.reference_methods}};
+  for (const auto& [option, text] : lists) {
+    if (!typed(option) && text->empty()) continue;
+    try {
+      if (std::string(option) == "--tolerances") {
+        // A relative tolerance is a fraction: 1 or more accepts any answer; below 1e-14 it is
+        // under the resolution of a double and only costs work.
+        for (double t : splitNumbers(*text, option))
+          if (!(t >= kFinestTolerance && t < 1.0))
+            badOption(
+                d, option, formatNumber(t),
+                "a relative tolerance must be in [" + formatNumber(kFinestTolerance) + ", 1)");
+      } else if (std::string(option) == "--steps" || std::string(option) == "--levels") {
+        (void)splitNumbers(*text, option);
+      } else {
+        const std::string name(option);
+        const std::vector<std::string>* valid =
+            name == "--methods"                                        ? &kMethods
+            : name == "--integrators" || name == "--reference-methods" ? &kIntegrators
+                                                                       : nullptr;
+        for (const auto& v : splitList(*text, option))
+          if (valid != nullptr && std::find(valid->begin(), valid->end(), v) == valid->end())
+            d.add(kCommandLine, name + ": unknown '" + v + "' (one of " + join(*valid) + ")");
+      }
+    } catch (const InputError& e) {
+      d.add(e);
+    }
+  }
+  d.throwIfAny();
+}
+
+// Every fixed step must keep a run's work bounded: its number of steps over the run stays under
+// the run's output bound (run.output.max_samples), as the output times do.
+void checkStepCount(const PrecisionOptions& o, double t_end, double max_samples) {
+  if (o.steps.empty() || !(t_end > 0.0)) return;
+  Diagnostics d;
+  for (double h : splitNumbers(o.steps, "--steps")) {
+    const double n = t_end / h;
+    if (n > max_samples)
+      badOption(d, "--steps", formatNumber(h),
+                formatNumber(n) + " steps over the run's " + formatNumber(t_end) +
+                    " s, more than run.output.max_samples = " + formatNumber(max_samples) +
+                    " (the bound of a run's work; raise it with --set "
+                    "run.output.max_samples=N, or shorten the run with --duration)");
+  }
+  d.throwIfAny();
+}
+
+}  // namespace
+
 Plan makePlan(const PrecisionOptions& o) {
   Plan p;
   p.scenario = fs::absolute(o.scenario).lexically_normal().string();
   p.base = o.overrides;
-  if (o.distance < 0.0 || o.duration < 0.0 || o.budget < 0.0 || o.reference_limit < 0.0)
-    throw InputError(kCommandLine,
-                     "--distance, --duration, --budget and --reference-limit must be >= 0");
-  if (o.distance > 0.0 && o.duration > 0.0)
-    throw InputError(kCommandLine, "--distance and --duration: give one of them");
-  if (!(o.reference_tol > 0.0 && o.reference_tol < 1e-2))
-    throw InputError(kCommandLine, "--reference-tol must be in (0, 1e-2)");
-  if (o.repeats < 1 || o.repeats > 100)
-    throw InputError(kCommandLine, "--repeats must be in 1..100, got " + std::to_string(o.repeats));
-  if (o.jobs < 0)
-    throw InputError(kCommandLine,
-                     "--jobs must be >= 0 (0: every core), got " + std::to_string(o.jobs));
+  checkNumbers(o);
   // --callgrind runs valgrind after the whole matrix: its absence must show before the matrix.
   if (o.callgrind && !onPath("valgrind"))
     throw InputError(kCommandLine, "--callgrind: valgrind is not on the PATH");
-  if (o.distance > 0.0) p.base.push_back("run.distance=" + num(o.distance));
-  if (o.duration > 0.0) p.base.push_back("run.duration=" + num(o.duration));
+  std::vector<OptionOverride> lengths;
+  if (o.distance > 0.0)
+    lengths.push_back({"--distance", num(o.distance), "run.distance=" + num(o.distance)});
+  if (o.duration > 0.0)
+    lengths.push_back({"--duration", num(o.duration), "run.duration=" + num(o.duration)});
+  for (const auto& l : lengths) p.base.push_back(l.key_value);
 
   scenario::LoadOptions lo;
   lo.root = o.root;
+  lo.overrides = o.overrides;
+  (void)scenario::loadScenario(p.scenario, lo);  // the user's own --set: bad: exit 1
+  // The run as every case runs it (the track's end, the output bound): a refusal names the
+  // option that shortened it, not the scenario key it became.
+  // Every case sets its own integrator: the check runs an adaptive one, so that the scenario's
+  // own fixed step does not refuse a length the ladders' steps fit.
+  std::vector<std::string> adaptive = o.overrides;
+  adaptive.emplace_back("solver.method=dopri5");
+  const double t_end = checkOptionOverrides(o, adaptive, lengths);
   lo.overrides = p.base;
-  const scenario::ScenarioSpec spec = scenario::loadScenario(p.scenario, lo);  // bad: exit 1
+  const scenario::ScenarioSpec spec = scenario::loadScenario(p.scenario, lo);
   if (!spec.has_vehicle)
     throw InputError({o.scenario, 0},
                      "precision needs a vehicle{} block: nothing is integrated without one");
+  checkStepCount(o, t_end, spec.run.max_output_samples);
   p.contact = spec.has_contact;
 
   p.quantities = o.quantities.empty() ? std::vector<std::string>{"y", "yaw"}

@@ -12,7 +12,8 @@ CLI::App* addScenarioCommand(CLI::App& app, const std::string& name, const std::
   c->add_option("--set", o.overrides, "override a scenario value in every case: block.key=value")
       ->allow_extra_args(false);
   c->add_option("--out", o.out, "output folder (default out/<scenario>_" + name + ")");
-  c->add_option("--jobs", o.jobs, "runs at once (default: cores; 1 for quiet CPU timings)");
+  c->add_option("--jobs", o.jobs,
+                "runs at once, 0..4 x cores (default 0: cores; 1 for quiet CPU timings)");
   return c;
 }
 

@@ -1,15 +1,19 @@
 #include "workbench/app/stress.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
+#include "workbench/app/option_checks.hpp"
 #include "workbench/app/stress_plan.hpp"
 #include "workbench/app/study.hpp"
 #include "workbench/core/error.hpp"
+#include "workbench/core/strings.hpp"
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/scenario/study.hpp"
 
@@ -27,23 +31,24 @@ CLI::App* addStressCommand(CLI::App& app, StressOptions& o) {
       ->delimiter(',');
   c->add_option("--values", o.values,
                 "values of one axis: AXIS=v1,v2,... (flange_stiffness [N/m^1.5], transition "
-                "[m], friction [-]; speed, irregularity, curve_radius: factors on the nominal)")
+                "[m], friction [-]; speed, irregularity, curve_radius: factors on the nominal); at "
+                "most 20 values per axis, 1000 runs in all")
       ->allow_extra_args(false);
-  c->add_option("--integrators", o.integrators,
-                "settings METHOD:VALUE[:paper] (step [s] of rk4/abm, tolerance of dopri5/bdf/ida; "
-                "default rk4:1e-3,abm:1e-3,dopri5:1e-6,bdf:1e-6)")
+  c->add_option(
+       "--integrators", o.integrators,
+       "at most 10 settings METHOD:VALUE[:paper] (step [s] of rk4/abm, tolerance in [1e-14, 1) of "
+       "dopri5/bdf/ida; "
+       "default rk4:1e-3,abm:1e-3,dopri5:1e-6,bdf:1e-6)")
       ->delimiter(',');
   c->add_option("--reference", o.reference, "the reference setting of every hardened case")
       ->capture_default_str();
   c->add_option("--tolerance", o.tolerance,
                 "largest wheelset lateral error [mm] against the reference of an ok run")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->capture_default_str();
   c->add_option("--run-timeout", o.run_timeout,
                 "wall time [s] after which a run is killed and classified as failed badly (a "
                 "hang); 0: no limit")
-      ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->capture_default_str();
   c->add_flag("--quick", o.quick,
               "the hardest value of each axis, rk4:1e-3 and dopri5:1e-6, runs of at most 2 s");
   c->add_option("--expect", o.expect,
@@ -55,27 +60,79 @@ CLI::App* addStressCommand(CLI::App& app, StressOptions& o) {
 
 namespace {
 
+// Bounds of the matrix (docs/stress.md, "Limits"): every value and every setting is a run of
+// its own, and each hardened case also runs its reference.
+constexpr std::size_t kMaxValues = 20;    // values of one axis
+constexpr std::size_t kMaxSettings = 10;  // integrator settings
+constexpr std::size_t kMaxRuns = 1000;    // runs of the whole matrix
+
 std::map<std::string, std::vector<double>> parseValues(const std::vector<std::string>& given) {
   std::map<std::string, std::vector<double>> out;
+  Diagnostics d;
   for (const auto& g : given) {
     const auto eq = g.find('=');
-    if (eq == std::string::npos || eq + 1 == g.size())
-      throw InputError({"--values", 0}, "'" + g + "': expected AXIS=v1,v2,...");
+    if (eq == std::string::npos || eq + 1 == g.size()) {
+      d.add(kOptionLoc, "--values '" + g + "': expected AXIS=v1,v2,...");
+      continue;
+    }
     std::vector<double>& vs = out[g.substr(0, eq)];
     std::istringstream in(g.substr(eq + 1));
     std::string tok;
+    std::size_t count = 0;
     while (std::getline(in, tok, ',')) {
+      // Counted before parsing: a list of 10 000 values is refused without reading them all.
+      if (++count > kMaxValues) {
+        d.add(kOptionLoc, "--values " + g.substr(0, eq) + "=...: more than " +
+                              std::to_string(kMaxValues) +
+                              " values of one axis (each is a run "
+                              "of every setting and a reference)");
+        break;
+      }
       try {
         std::size_t used = 0;
         const double v = std::stod(tok, &used);
-        if (used != tok.size() || !(v > 0)) throw std::invalid_argument(tok);
+        if (used != tok.size() || !(v > 0) || !std::isfinite(v)) throw std::invalid_argument(tok);
         vs.push_back(v);
       } catch (const std::exception&) {
-        throw InputError({"--values", 0}, "'" + g + "': '" + tok + "' is not a positive number");
+        d.add(kOptionLoc, "--values '" + g.substr(0, std::min<std::size_t>(g.size(), 80)) + "': '" +
+                              tok + "' is not a positive finite number");
       }
     }
   }
+  d.throwIfAny();
   return out;
+}
+
+// The options that need no scenario, all at once with their values.
+void checkStressOptions(const StressOptions& o) {
+  Diagnostics d;
+  if (!(std::isfinite(o.tolerance) && o.tolerance > 0.0))
+    badOption(d, "--tolerance", o.tolerance, "must be a finite error > 0 mm");
+  if (!(std::isfinite(o.run_timeout) && o.run_timeout >= 0.0))
+    badOption(d, "--run-timeout", o.run_timeout, "must be a finite time >= 0 s (0: no limit)");
+  if (o.integrators.size() > kMaxSettings)
+    badOption(d, "--integrators", std::to_string(o.integrators.size()) + " settings",
+              "at most " + std::to_string(kMaxSettings) + " settings");
+  checkJobs(d, o.jobs, true);
+  const auto& names = stress::axisNames();
+  const auto known = [&](const std::string& a) {
+    return std::find(names.begin(), names.end(), a) != names.end();
+  };
+  for (const auto& a : o.axes)
+    if (!known(a))
+      d.add(kOptionLoc, "--axes: unknown axis '" + a + "' (axes: " + rb::join(names, ", ") + ")");
+  for (const auto& g : o.values) {
+    const std::string name = g.substr(0, g.find('='));
+    if (g.find('=') != std::string::npos && (!known(name) || name == "nominal"))
+      d.add(kOptionLoc,
+            "--values: unknown axis '" + name + "' (axes: " + rb::join(names, ", ") + ")");
+  }
+  try {
+    (void)parseValues(o.values);
+  } catch (const InputError& e) {
+    d.add(e);
+  }
+  d.throwIfAny();
 }
 
 std::vector<stress::Setting> settings(const StressOptions& o, const scenario::ScenarioSpec& spec) {
@@ -127,14 +184,57 @@ void addCase(Expanded& e, const stress::Hardened& h, const stress::Setting& s,
 }
 
 // Every hardened case must be a valid scenario: a value out of a key's range is bad input.
+// A refusal names the axis value the user asked for (--values, or the default of --axes), not
+// only the scenario key it became; every case is checked, every problem reported.
 void validate(const StressOptions& o, const std::vector<std::string>& common,
               const stress::Plan& plan, const stress::Setting& reference) {
+  Diagnostics d;
   for (const auto& h : plan.cases) {
     std::vector<std::string> ov = common;
     ov.insert(ov.end(), h.overrides.begin(), h.overrides.end());
     ov.insert(ov.end(), reference.overrides.begin(), reference.overrides.end());
-    loadCommandScenario(o, ov);
+    try {
+      loadCommandScenario(o, ov);
+    } catch (const InputError& e) {
+      std::string keys;
+      for (const auto& k : h.overrides) keys += (keys.empty() ? "" : " ") + k;
+      for (const auto& x : e.diagnostics())
+        d.add(kOptionLoc, "axis " + h.axis + " value " + stress::number(h.value) + " (--values " +
+                              h.axis + "=...; " + keys + "): " + x.str());
+    }
   }
+  d.throwIfAny();
+}
+
+// Every setting's work is bounded: a fixed step's count over the run stays under the run's
+// output bound (run.output.max_samples), a tolerance is a fraction in [1e-14, 1).
+void checkSettings(const std::vector<std::string>& given, const std::string& option, double t_end,
+                   double max_samples) {
+  Diagnostics d;
+  for (const auto& g : given) {
+    const auto c1 = g.find(':');
+    if (c1 == std::string::npos) continue;  // parseSetting names it
+    const std::string m = g.substr(0, c1);
+    const auto c2 = g.find(':', c1 + 1);
+    double v = 0.0;
+    try {
+      v = std::stod(g.substr(c1 + 1, c2 == std::string::npos ? std::string::npos : c2 - c1 - 1));
+    } catch (const std::exception&) {
+      continue;
+    }
+    if (!std::isfinite(v) || !(v > 0.0)) {
+      badOption(d, option, g, "the value must be a positive finite number");
+    } else if (m == "rk4" || m == "abm") {
+      if (t_end > 0.0 && t_end / v > max_samples)
+        badOption(d, option, g,
+                  formatNumber(t_end / v) + " steps over the run's " + formatNumber(t_end) +
+                      " s, more than run.output.max_samples = " + formatNumber(max_samples) +
+                      " (raise it with --set run.output.max_samples=N)");
+    } else if (!(v >= 1e-14 && v < 1.0)) {
+      badOption(d, option, g, "a relative tolerance must be in [1e-14, 1)");
+    }
+  }
+  d.throwIfAny();
 }
 
 // `python3 -m railbench stress DIR ...`: classification, stress.csv, the map. Its exit code.
@@ -157,6 +257,7 @@ int classify(const StressOptions& o, const std::string& dir) {
 }  // namespace
 
 int runStress(const StressOptions& o) {
+  checkStressOptions(o);
   std::vector<std::string> common = o.overrides;
   scenario::ScenarioSpec spec = loadCommandScenario(o, common);
   if (!spec.has_vehicle)
@@ -173,6 +274,20 @@ int runStress(const StressOptions& o) {
   const auto runs = settings(o, spec);
   const stress::Setting reference =
       stress::parseSetting(o.reference, spec.has_contact, "--reference", spec.solver.max_step);
+  // The run's length as the cases run it; every setting brings its own integrator, so the check
+  // runs an adaptive one (the scenario's own fixed step must not refuse it).
+  std::vector<std::string> adaptive = common;
+  adaptive.emplace_back("solver.method=dopri5");
+  const double t_end = checkOptionOverrides(o, adaptive, {});
+  checkSettings(o.integrators, "--integrators", t_end, spec.run.max_output_samples);
+  checkSettings({o.reference}, "--reference", t_end, spec.run.max_output_samples);
+  const std::size_t total = plan.cases.size() * (runs.size() + 1);
+  if (total > kMaxRuns)
+    throw InputError(kOptionLoc,
+                     "--axes/--values/--integrators: " + std::to_string(plan.cases.size()) +
+                         " hardened cases x (" + std::to_string(runs.size()) +
+                         " settings + reference) = " + std::to_string(total) + " runs, more than " +
+                         std::to_string(kMaxRuns));
   validate(o, common, plan, reference);
 
   Expanded e;

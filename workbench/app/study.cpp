@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -16,6 +17,7 @@
 #include <thread>
 
 #include "railbench/version.hpp"
+#include "workbench/app/option_checks.hpp"
 #include "workbench/app/study_jobs.hpp"
 #include "workbench/app/study_summary.hpp"
 #include "workbench/contact/table_io.hpp"
@@ -129,6 +131,14 @@ std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string&
 }
 
 int runStudy(const StudyOptions& o) {
+  // A typed --jobs is checked before the study file is read: 0 or a negative number is no default
+  // (it was read as "the study's jobs, else the cores"), and more runs than the cores can take
+  // only queue and multiply the memory in flight.
+  Diagnostics d;
+  if (o.jobs_given) checkJobs(d, o.jobs, false);
+  if (!(std::isfinite(o.run_timeout_s) && o.run_timeout_s >= 0.0))
+    badOption(d, "--run-timeout", o.run_timeout_s, "must be a finite time >= 0 s (0: no limit)");
+  d.throwIfAny();
   const scenario::StudySpec st = scenario::loadStudy(o.file, o.root);
   StudyOptions so = o;
   if (so.out.empty()) so.out = (fs::path("out") / fs::path(o.file).stem()).string();

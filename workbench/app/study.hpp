@@ -52,11 +52,12 @@
 namespace rb::app {
 
 struct StudyOptions {
-  std::string file;     // study file
-  std::string out;      // output folder (default out/<study stem>)
-  std::string root;     // project root
-  std::string program;  // path of the workbench executable that runs the cases
-  int jobs = 0;         // 0: from the study file, else the number of cores
+  std::string file;         // study file
+  std::string out;          // output folder (default out/<study stem>)
+  std::string root;         // project root
+  std::string program;      // path of the workbench executable that runs the cases
+  int jobs = 0;             // 0: from the study file, else the number of cores
+  bool jobs_given = false;  // --jobs was typed: then it must be in 1..maxJobs()
   // Wall time after which a run is killed and reported as an error (a hang); 0 = no limit.
   double run_timeout_s = 0.0;
   std::string shard;       // "K/N": run only the K-th of N shards and write no summary

@@ -1,0 +1,4 @@
+-- The base scenario of the study case beside it.
+track { segments = { tangent { length = 100 } } }
+vehicle(require "vehicles.manchester_wagon1" { speed = 20 })
+run { duration = 0.1 }
