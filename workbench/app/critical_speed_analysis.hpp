@@ -54,7 +54,7 @@ struct KickedVerdict {
   // Amplitude ratio per window over the second half, (a_last / a_mid)^(1 / windows): < 1 decays,
   // 1 sustained, > 1 grows.
   double trend = 0.0;
-  std::string why;  // one line: the numbers behind the verdict
+  std::string why;            // one line: the numbers behind the verdict
   std::string state() const;  // "hunting", "sustained small-amplitude oscillation", "stable", ...
 };
 KickedVerdict judgeKickedRun(const std::vector<Window>& windows, double threshold, double decay);

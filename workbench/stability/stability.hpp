@@ -193,7 +193,7 @@ struct CriticalSpeed {
   bool below_range = false;
   std::vector<Analysis> sweep;       // the sweep, in speed order
   std::vector<Analysis> refinement;  // the refinement steps (of both crossings)
-  std::string why;  // when not found: "none in range" and the damping seen
+  std::string why;                   // when not found: "none in range" and the damping seen
   // The same crossing for the hunting modes alone (wheelset or bogie hunting): where the nonlinear
   // search of `critical-speed` starts. Equal to `speed` when a hunting mode is the first to lose
   // its damping.
