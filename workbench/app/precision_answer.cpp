@@ -288,63 +288,69 @@ Recommendation recommend(const std::string& model, double level,
   return r;
 }
 
-Answer computeAnswer(const Plan& p, const std::string& out, int repeats) {
-  Answer a;
-  a.quantities = parseQuantities(p.quantities, p.bodies, p.contact);
-  a.levels = p.levels;
-  a.limit = p.limit;
-  const fs::path refDir = fs::path(out) / "reference";
-  const fs::path caseDir = fs::path(out) / "cases";
-  auto refFile = [&](const std::string& model, const std::string& role) -> std::string {
-    for (const auto& r : p.references)
-      if (r.model == model && r.role == role) return r.c.id;
-    return "";
-  };
-  auto h5 = [](const fs::path& dir, const std::string& id) { return dir / (id + "_r0.h5"); };
-  for (const auto& m : p.models) {
-    if (m.refined) continue;
-    ReferenceAnswer ra;
-    ra.model = m.name;
-    const std::string ref = refFile(m.name, kRoleReference);
-    const std::string check = refFile(m.name, kRoleCheck);
-    const std::string same = refFile(m.name, kRoleSameTables);
-    const RunFile fr = runFile(refDir, ref, 1);
-    const RunFile fc = runFile(refDir, check, 1);
-    const bool both_ok = !ref.empty() && !check.empty() && fr.ok && fc.ok;
-    for (const auto& q : a.quantities) {
-      ra.bound.push_back(fileError(h5(refDir, check), h5(refDir, ref), q));
-      ra.table.push_back(fileError(h5(refDir, same), h5(refDir, ref), q));
-    }
-    ra.verified = both_ok;
-    if (!both_ok) {
-      // Which one and why (e.g. a wheel lift on the refined tables): the reader must see what
-      // stands between the answer and its verification.
-      std::vector<std::string> why;
-      for (const auto& [role, f] : {std::pair{kRoleReference, &fr}, std::pair{kRoleCheck, &fc}})
-        if (!f->ok)
-          why.push_back(std::string(role) + " " + f->status +
-                        (f->message.empty() ? "" : ": " + f->message.substr(0, 200)));
-      ra.why = "a reference run failed (" + join(why, "; ") + ")";
-    }
-    for (std::size_t k = 0; k < a.quantities.size() && ra.verified; ++k) {
-      const Quantity& q = a.quantities[k];
-      if (!ra.bound[k].have) {
-        ra.verified = false;
-        ra.why = "no " + q.tag + " in the references";
-      } else if (!(ra.bound[k].max <= a.limit)) {
-        ra.verified = false;
-        ra.why = "the references differ by " + fmt(ra.bound[k].max) + " " + q.unit + " in " +
-                 q.tag + " (limit " + formatNumber(a.limit) + ")";
-      }
-    }
-    a.references.push_back(std::move(ra));
+namespace {
+
+// The run id of a model's reference run of `role` ("" when the plan has none).
+std::string referenceId(const Plan& p, const std::string& model, const std::string& role) {
+  for (const auto& r : p.references)
+    if (r.model == model && r.role == role) return r.c.id;
+  return "";
+}
+
+fs::path runH5(const fs::path& dir, const std::string& id) {
+  return dir / (id + "_r0.h5");
+}
+
+// Whether a model's references agree within the limit on every quantity, and why not.
+ReferenceAnswer referenceAnswer(const Plan& p, const std::string& model,
+                                const std::vector<Quantity>& quantities, double limit,
+                                const fs::path& refDir) {
+  ReferenceAnswer ra;
+  ra.model = model;
+  const std::string ref = referenceId(p, model, kRoleReference);
+  const std::string check = referenceId(p, model, kRoleCheck);
+  const std::string same = referenceId(p, model, kRoleSameTables);
+  const RunFile fr = runFile(refDir, ref, 1);
+  const RunFile fc = runFile(refDir, check, 1);
+  const bool both_ok = !ref.empty() && !check.empty() && fr.ok && fc.ok;
+  for (const auto& q : quantities) {
+    ra.bound.push_back(fileError(runH5(refDir, check), runH5(refDir, ref), q));
+    ra.table.push_back(fileError(runH5(refDir, same), runH5(refDir, ref), q));
   }
-  const Quantity& q0 = a.quantities.front();
+  ra.verified = both_ok;
+  if (!both_ok) {
+    // Which one and why (e.g. a wheel lift on the refined tables): the reader must see what
+    // stands between the answer and its verification.
+    std::vector<std::string> why;
+    for (const auto& [role, f] : {std::pair{kRoleReference, &fr}, std::pair{kRoleCheck, &fc}})
+      if (!f->ok)
+        why.push_back(std::string(role) + " " + f->status +
+                      (f->message.empty() ? "" : ": " + f->message.substr(0, 200)));
+    ra.why = "a reference run failed (" + join(why, "; ") + ")";
+  }
+  for (std::size_t k = 0; k < quantities.size() && ra.verified; ++k) {
+    const Quantity& q = quantities[k];
+    if (!ra.bound[k].have) {
+      ra.verified = false;
+      ra.why = "no " + q.tag + " in the references";
+    } else if (!(ra.bound[k].max <= limit)) {
+      ra.verified = false;
+      ra.why = "the references differ by " + fmt(ra.bound[k].max) + " " + q.unit + " in " + q.tag +
+               " (limit " + formatNumber(limit) + ")";
+    }
+  }
+  return ra;
+}
+
+// Every rung of every ladder with its errors against the references of its model.
+std::vector<CaseAnswer> caseAnswers(const Plan& p, const Quantity& q0, const fs::path& refDir,
+                                    const fs::path& caseDir, int repeats) {
+  std::vector<CaseAnswer> out;
   for (const auto& l : p.ladders) {
     const std::string base = baseModel(l.model);
     const bool refined = base != l.model;
-    const std::string ref = refFile(base, kRoleReference);
-    const std::string same = refined ? ref : refFile(base, kRoleSameTables);
+    const std::string ref = referenceId(p, base, kRoleReference);
+    const std::string same = refined ? ref : referenceId(p, base, kRoleSameTables);
     for (const auto& rung : l.rungs) {
       CaseAnswer c;
       c.model = l.model;
@@ -354,21 +360,37 @@ Answer computeAnswer(const Plan& p, const std::string& out, int repeats) {
       c.fixed = l.fixed;
       c.value = rung.value;
       c.cpu = rung.cpu;
-      if (rung.status != "run") {
-        c.status = rung.status;
-      } else {
+      c.status = rung.status;
+      if (rung.status == "run") {
         const RunFile f = runFile(caseDir, c.id, repeats);
         c.status = f.status;
         c.ok = f.ok;
         c.rhs = f.rhs;
         if (f.exists) {
-          c.integration = fileError(h5(caseDir, c.id), h5(refDir, same), q0);
-          c.total = fileError(h5(caseDir, c.id), h5(refDir, ref), q0);
+          c.integration = fileError(runH5(caseDir, c.id), runH5(refDir, same), q0);
+          c.total = fileError(runH5(caseDir, c.id), runH5(refDir, ref), q0);
         }
       }
-      a.cases.push_back(std::move(c));
+      out.push_back(std::move(c));
     }
   }
+  return out;
+}
+
+}  // namespace
+
+Answer computeAnswer(const Plan& p, const std::string& out, int repeats) {
+  Answer a;
+  a.quantities = parseQuantities(p.quantities, p.bodies, p.contact);
+  a.levels = p.levels;
+  a.limit = p.limit;
+  const fs::path refDir = fs::path(out) / "reference";
+  const fs::path caseDir = fs::path(out) / "cases";
+  for (const auto& m : p.models)
+    if (!m.refined)
+      a.references.push_back(referenceAnswer(p, m.name, a.quantities, a.limit, refDir));
+  const Quantity& q0 = a.quantities.front();
+  a.cases = caseAnswers(p, q0, refDir, caseDir, repeats);
   for (const auto& m : p.models) {
     const std::string base = baseModel(m.name);
     const ReferenceAnswer* ref = nullptr;
@@ -401,17 +423,10 @@ std::string recommendationCsv(const Answer& a) {
   return s.str();
 }
 
-void writeAnswerH5(const Answer& a, const std::string& path) {
-  io::ResultFile f(path);
-  std::vector<std::string> tags, units;
-  for (const auto& q : a.quantities) {
-    tags.push_back(q.tag);
-    units.push_back(q.unit);
-  }
-  f.attr("/", "quantities", join(tags, ","));
-  f.attr("/", "units", join(units, ","));
-  f.attr("/", "reference_limit", a.limit);
-  f.dataset("/levels", a.levels, a.quantities.front().unit);
+namespace {
+
+// /reference_bound/<model>: whether the references agree, and their errors per quantity.
+void writeReferenceBounds(io::ResultFile& f, const Answer& a) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (const auto& r : a.references) {
     const std::string g = "/reference_bound/" + r.model;
@@ -425,6 +440,11 @@ void writeAnswerH5(const Answer& a, const std::string& path) {
       f.attr(g, q.tag + "_table_error_max" + u, r.table[k].have ? r.table[k].max : nan);
     }
   }
+}
+
+// /recommendation: one row per model and level.
+void writeRecommendations(io::ResultFile& f, const Answer& a) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::string> model, unit, quantity, setting, integrator, id, note;
   std::vector<double> level, value, cpu, rhs, error, total, reached, verified, limited;
   for (const auto& r : a.recommendations) {
@@ -465,6 +485,23 @@ void writeAnswerH5(const Answer& a, const std::string& path) {
     f.dataset(g + "table_limited", limited, "-");
     f.stringDataset(g + "note", note);
   }
+}
+
+}  // namespace
+
+void writeAnswerH5(const Answer& a, const std::string& path) {
+  io::ResultFile f(path);
+  std::vector<std::string> tags, units;
+  for (const auto& q : a.quantities) {
+    tags.push_back(q.tag);
+    units.push_back(q.unit);
+  }
+  f.attr("/", "quantities", join(tags, ","));
+  f.attr("/", "units", join(units, ","));
+  f.attr("/", "reference_limit", a.limit);
+  f.dataset("/levels", a.levels, a.quantities.front().unit);
+  writeReferenceBounds(f, a);
+  writeRecommendations(f, a);
   f.finalize();
 }
 

@@ -322,6 +322,49 @@ std::vector<double> splitNumbers(const std::string& text, const std::string& opt
 
 namespace {
 
+// One list option's entries: numbers where numbers are asked for (tolerances in range), names
+// among the known ones.
+void checkListItems(const std::string& option, const std::string& text, Diagnostics& d) {
+  try {
+    if (option == "--tolerances") {
+      // A relative tolerance is a fraction: 1 or more accepts any answer; below 1e-14 it is
+      // under the resolution of a double and only costs work.
+      for (double t : splitNumbers(text, option))
+        if (!(t >= kFinestTolerance && t < 1.0))
+          badOption(d, option, formatNumber(t),
+                    "a relative tolerance must be in [" + formatNumber(kFinestTolerance) + ", 1)");
+      return;
+    }
+    if (option == "--steps" || option == "--levels") {
+      (void)splitNumbers(text, option);
+      return;
+    }
+    const std::vector<std::string>* valid =
+        option == "--methods"                                          ? &kMethods
+        : option == "--integrators" || option == "--reference-methods" ? &kIntegrators
+                                                                       : nullptr;
+    for (const auto& v : splitList(text, option))
+      if (valid != nullptr && std::find(valid->begin(), valid->end(), v) == valid->end())
+        d.add(kCommandLine, option + ": unknown '" + v + "' (one of " + join(*valid) + ")");
+  } catch (const InputError& e) {
+    d.add(e);
+  }
+}
+
+// A list typed empty ('') is refused, not read as the default list.
+void checkLists(const PrecisionOptions& o, Diagnostics& d) {
+  const std::vector<std::pair<const char*, const std::string*>> lists = {
+      {"--methods", &o.methods},
+      {"--integrators", &o.integrators},
+      {"--steps", &o.steps},
+      {"--tolerances", &o.tolerances},
+      {"--quantities", &o.quantities},
+      {"--levels", &o.levels},
+      {"--reference-methods", &o.reference_methods}};
+  for (const auto& [option, text] : lists)
+    if (o.given.contains(option) || !text->empty()) checkListItems(option, *text, d);
+}
+
 // The options that need no scenario: every problem at once, each with its value.
 void checkNumbers(const PrecisionOptions& o) {
   Diagnostics d;
@@ -346,42 +389,7 @@ void checkNumbers(const PrecisionOptions& o) {
   if (o.repeats < 1 || o.repeats > 100)
     badOption(d, "--repeats", std::to_string(o.repeats), "must be in 1..100");
   checkJobs(d, o.jobs, true);
-  // A list typed empty ('') is refused, not read as the default list.
-  const std::vector<std::pair<const char*, const std::string*>> lists = {
-      {"--methods", &o.methods},
-      {"--integrators", &o.integrators},
-      {"--steps", &o.steps},
-      {"--tolerances", &o.tolerances},
-      {"--quantities", &o.quantities},
-      {"--levels", &o.levels},
-      {"--reference-methods", &o.reference_methods}};
-  for (const auto& [option, text] : lists) {
-    if (!typed(option) && text->empty()) continue;
-    try {
-      if (std::string(option) == "--tolerances") {
-        // A relative tolerance is a fraction: 1 or more accepts any answer; below 1e-14 it is
-        // under the resolution of a double and only costs work.
-        for (double t : splitNumbers(*text, option))
-          if (!(t >= kFinestTolerance && t < 1.0))
-            badOption(
-                d, option, formatNumber(t),
-                "a relative tolerance must be in [" + formatNumber(kFinestTolerance) + ", 1)");
-      } else if (std::string(option) == "--steps" || std::string(option) == "--levels") {
-        (void)splitNumbers(*text, option);
-      } else {
-        const std::string name(option);
-        const std::vector<std::string>* valid =
-            name == "--methods"                                        ? &kMethods
-            : name == "--integrators" || name == "--reference-methods" ? &kIntegrators
-                                                                       : nullptr;
-        for (const auto& v : splitList(*text, option))
-          if (valid != nullptr && std::find(valid->begin(), valid->end(), v) == valid->end())
-            d.add(kCommandLine, name + ": unknown '" + v + "' (one of " + join(*valid) + ")");
-      }
-    } catch (const InputError& e) {
-      d.add(e);
-    }
-  }
+  checkLists(o, d);
   d.throwIfAny();
 }
 
