@@ -175,7 +175,9 @@ bool addReferences(Plan& p, const PrecisionOptions& o, const Model& m,
   std::vector<std::string> tables = m.overrides;
   tables.erase(std::remove(tables.begin(), tables.end(), "profiles.refined_tables=true"),
                tables.end());
-  const std::vector<std::string> refined = concat(tables, {"profiles.refined_tables=true"});
+  // A guided vehicle has no contact tables to refine (and no profiles{} block to set).
+  const std::vector<std::string> refined =
+      p.contact ? concat(tables, {"profiles.refined_tables=true"}) : tables;
   const double tol = o.reference_tol;
   const std::vector<std::pair<std::string, std::vector<std::string>>> runs = {
       {kRoleReference,
