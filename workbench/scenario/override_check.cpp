@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -159,39 +160,46 @@ const Node* listItem(const Node* list, const std::string& token) {
   return nullptr;
 }
 
+// A named vehicle parameter (vehicle.<groups|elements|bodies|initial>.<name>.<key>): the element
+// or group (its members' kind) or the body decides its unit; nullopt for any other path.
+std::optional<ParameterLabel> vehicleParameterLabel(const Node* vehicle, const std::string& path,
+                                                    const std::vector<std::string>& t) {
+  if (t[0] != "vehicle" || t.size() != 4) return std::nullopt;
+  const std::string& what = t[1];
+  const std::string& name = t[2];
+  const std::string& key = t[3];
+  const Node* elements = vehicle != nullptr ? vehicle->field("elements") : nullptr;
+  if (what == "groups" && vehicle != nullptr && elements != nullptr) {
+    const Node* groups = vehicle->field("groups");
+    const Node* g = groups != nullptr ? groups->field(name) : nullptr;
+    if (g != nullptr) {
+      std::vector<std::string> kinds;
+      for (std::size_t i : groupMembers(*vehicle, *g).elements)
+        kinds.push_back(elements->items[i].kind);
+      return ParameterLabel{path, words(name) + " " + words(key), unitOfKinds(kinds, key)};
+    }
+  }
+  if (what == "elements") {
+    if (const Node* e = listItem(elements, name))
+      return ParameterLabel{path,
+                            words(itemName(*e).empty() ? name : itemName(*e)) + " " + words(key),
+                            unitOfKinds({e->kind}, key)};
+  }
+  if (what == "bodies")
+    return ParameterLabel{path, words(name) + " " + words(key), unitOfKinds({"body"}, key)};
+  if (what == "initial")
+    return ParameterLabel{path, "initial " + words(name) + " " + words(key),
+                          unitOfKinds({"vehicle.initial.<body>"}, key)};
+  return std::nullopt;
+}
+
 }  // namespace
 
 ParameterLabel parameterLabel(const Node& tree, const std::string& path) {
   ParameterLabel out{path, path, ""};
   const std::vector<std::string> t = tokens(path);
   if (t.size() < 2) return out;
-  const Node* vehicle = tree.field("vehicle");
-  // Named vehicle parameters: the element or group (its members' kind) or the body decides.
-  if (t[0] == "vehicle" && t.size() == 4) {
-    const std::string& what = t[1];
-    const std::string& name = t[2];
-    const std::string& key = t[3];
-    const Node* elements = vehicle != nullptr ? vehicle->field("elements") : nullptr;
-    if (what == "groups" && vehicle != nullptr && elements != nullptr) {
-      const Node* groups = vehicle->field("groups");
-      const Node* g = groups != nullptr ? groups->field(name) : nullptr;
-      if (g != nullptr) {
-        std::vector<std::string> kinds;
-        for (std::size_t i : groupMembers(*vehicle, *g).elements)
-          kinds.push_back(elements->items[i].kind);
-        return {path, words(name) + " " + words(key), unitOfKinds(kinds, key)};
-      }
-    }
-    if (what == "elements") {
-      if (const Node* e = listItem(elements, name))
-        return {path, words(itemName(*e).empty() ? name : itemName(*e)) + " " + words(key),
-                unitOfKinds({e->kind}, key)};
-    }
-    if (what == "bodies") return {path, words(name) + " " + words(key), unitOfKinds({"body"}, key)};
-    if (what == "initial")
-      return {path, "initial " + words(name) + " " + words(key),
-              unitOfKinds({"vehicle.initial.<body>"}, key)};
-  }
+  if (auto named = vehicleParameterLabel(tree.field("vehicle"), path, t)) return *named;
   // A schema path: block.key, block.sub.key, block.list[n].key.
   const BlockSpec* b = findBlock(t[0]);
   const Node* node = tree.field(t[0]);
