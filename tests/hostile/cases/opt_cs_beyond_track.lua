@@ -4,4 +4,5 @@
 -- hostile: timeout=20
 -- Runs that leave the track were refused as run.duration by the first run; now as the options.
 track { segments = { tangent { length = 500 } } }
+contact { method = "guided" }
 vehicle(require "vehicles.manchester_wagon1" { speed = 20 })

@@ -4,4 +4,5 @@
 -- hostile: timeout=20
 -- A distance beyond the track: refused up front, naming the option.
 track { segments = { tangent { length = 500 } } }
+contact { method = "guided" }
 vehicle(require "vehicles.manchester_wagon1" { speed = 20 })

@@ -3,4 +3,5 @@
 -- hostile: timeout=20
 -- A linearisation point beyond the track integrated its settling run before failing.
 track { segments = { tangent { length = 500 } } }
+contact { method = "guided" }
 vehicle(require "vehicles.manchester_wagon1" { speed = 20 })

@@ -4,4 +4,5 @@
 -- hostile: timeout=20
 -- The refusal names the option the user typed, not only the scenario key it became.
 track { segments = { tangent { length = 500 } } }
+contact { method = "guided" }
 vehicle(require "vehicles.manchester_wagon1" { speed = 20 })
