@@ -72,8 +72,9 @@ def run_case(case, binary, root, outside, default_timeout):
             k, _, v = expand(spec).partition(":")
             env[k] = v
         args = shlex.split(expand(d["args"][-1] if d["args"] else "check"))
-        # The case file goes after the subcommand unless the command names a .lua file itself.
-        if not any(a.endswith(".lua") for a in args):
+        # The case file goes after the subcommand unless the command names its input itself: a .lua
+        # file, or a .h5 result (from the case's .d folder) for the commands that read results.
+        if not any(a.endswith((".lua", ".h5")) for a in args):
             args.insert(1, case.name)
         timeout = float(d["timeout"][-1]) if d["timeout"] else default_timeout
         want_exit = int(d["exit"][-1]) if d["exit"] else 1

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
@@ -49,6 +50,19 @@ assessment::AssessmentSpec specOfFile(const io::ResultReader& f) {
     s.wear = hasPatchOutputs(f);
   }
   return s;
+}
+
+// Why a file gives assess nothing to do: what the file holds and what assess needs from it, so a
+// modes.h5, a study summary or a run written without contact outputs is told apart from a bug.
+std::string nothingToAssess(const io::ResultReader& f, const std::string& file) {
+  const auto top = f.members("/");
+  std::string held;
+  for (const auto& m : top) held += (held.empty() ? "/" : ", /") + m;
+  return "nothing to assess in '" + file + "': it holds " +
+         (held.empty() ? std::string("no groups") : held) +
+         " but no /contact (the wheel-rail outputs of a vehicle run) and no /assessment; assess "
+         "reads the result of `workbench run` on a vehicle scenario, not a track-only run, a "
+         "modes or a study summary file";
 }
 
 std::optional<double> parseNumber(const std::string& v) {
@@ -129,7 +143,7 @@ int assessFile(const AssessOptions& o) {
     std::vector<Diagnostic> errors;
     for (const auto& s : o.overrides) applyOverride(s, spec, errors);
     if (!errors.empty()) throw InputError(std::move(errors));
-    if (!spec.any()) throw InputError(kCli, "assess: nothing to assess (no group asked)");
+    if (!spec.any()) throw InputError(kCli, "assess: " + nothingToAssess(f, o.file));
     contact_mu = f.number("/contact", "mu").value_or(spec.mu);
     signals = run::signalsFromFile(f, spec, missing);
     const bool patch = std::any_of(missing.begin(), missing.end(), [](const std::string& m) {
