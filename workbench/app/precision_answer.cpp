@@ -100,16 +100,6 @@ std::string fmt(double v) {
   return formatNumber(v, 4);
 }
 
-std::string csvField(const std::string& s) {
-  const bool quote = s.find_first_of(",\"\n") != std::string::npos;
-  std::string out;
-  for (char ch : s) {
-    if (ch == '"') out += '"';
-    out += ch == '\n' ? ' ' : ch;
-  }
-  return quote ? "\"" + out + "\"" : out;
-}
-
 struct RunFile {
   bool exists = false;
   bool ok = false;

@@ -39,16 +39,6 @@ std::string num(double v) {
   return formatNumberExact(v);
 }
 
-std::string csvField(const std::string& s) {
-  const bool quote = s.find_first_of(",\"\n") != std::string::npos;
-  std::string out;
-  for (char ch : s) {
-    if (ch == '"') out += '"';
-    out += ch == '\n' ? ' ' : ch;
-  }
-  return quote ? "\"" + out + "\"" : out;
-}
-
 // An executable named `name` in a folder of $PATH.
 bool onPath(const std::string& name) {
   const char* path = std::getenv("PATH");

@@ -20,16 +20,6 @@ namespace fs = std::filesystem;
 namespace rb::app::study_detail {
 namespace {
 
-std::string csvField(std::string s) {
-  bool quote = s.find_first_of(",\"\n") != std::string::npos;
-  std::string out;
-  for (char ch : s) {
-    if (ch == '"') out += '"';
-    out += ch == '\n' ? ' ' : ch;
-  }
-  return quote ? "\"" + out + "\"" : out;
-}
-
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());

@@ -73,4 +73,14 @@ std::string formatNumberExact(double v) {
   return buf;
 }
 
+std::string csvField(std::string_view s) {
+  const bool quote = s.find_first_of(",\"\n") != std::string_view::npos;
+  std::string out;
+  for (char ch : s) {
+    if (ch == '"') out += '"';
+    out += ch == '\n' ? ' ' : ch;
+  }
+  return quote ? "\"" + out + "\"" : out;
+}
+
 }  // namespace rb

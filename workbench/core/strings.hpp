@@ -18,6 +18,10 @@ std::string closestMatch(std::string_view word, const std::vector<std::string>& 
 // Items separated by `sep`: join({"a", "b"}) == "a, b".
 std::string join(const std::vector<std::string>& items, std::string_view sep = ", ");
 
+// A CSV field: quoted when it holds a comma, a quote or a newline, quotes doubled, newlines
+// written as spaces (one record per line, so line-based readers keep working).
+std::string csvField(std::string_view s);
+
 // A number as message and attribute text, printf "%.*g" with `significant` digits: the shortest
 // form a reader recognises (formatNumber(0.001) == "0.001", formatNumber(2.1e11) == "2.1e+11"),
 // identical to what an std::ostream with its default precision (6) writes.

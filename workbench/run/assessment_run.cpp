@@ -68,7 +68,8 @@ WheelSafety wheelSafety(const WheelSignals& w, const AssessmentSignals& sig,
                         const assessment::AssessmentSpec& spec, double mu) {
   WheelSafety r;
   const double dt = sig.dt;
-  const std::vector<double> s = ownDistance(sig, w.s_offset);
+  r.s = ownDistance(sig, w.s_offset);
+  const std::vector<double>& s = r.s;
   r.y_over_q = a14::derailmentQuotient(w.Y, w.Q, s, dt, spec.yq_limit);
   r.nadal_limit = a14::nadalLimit(spec.flange_angle, mu);
   r.nadal_mu = mu;
@@ -134,10 +135,10 @@ Assessed slidingInSection(const assessment::DistanceSeries& series, double from,
 }
 
 SectionWheel sectionWheel(const WheelSignals& w, const WheelSafety& ws,
-                          const AssessmentSignals& sig, const assessment::AssessmentSpec& spec,
+                          const assessment::AssessmentSpec& spec,
                           const assessment::TrackSection& sec) {
   SectionWheel r;
-  const std::vector<double> s = ownDistance(sig, w.s_offset);
+  const std::vector<double>& s = ws.s;
   const double lo = std::max(sec.from, s.front()), hi = std::min(sec.to, s.back());
   if (hi - lo < a14::kSlidingWindow) return r;  // this wheel did not run through the section
   r.assessed = true;
@@ -173,13 +174,7 @@ SectionWheel sectionWheel(const WheelSignals& w, const WheelSafety& ws,
 // Keeps the worst of one key among the section's wheels (NaN values are not assessed).
 void worst(std::vector<SummaryItem>& items, const std::string& key, const std::string& unit,
            const Assessed& a) {
-  if (std::isnan(a.check.value)) return;
-  for (auto& it : items)
-    if (it.key == key) {
-      if (a.check.value > it.a.check.value || (!a.check.ok() && it.a.check.ok())) it.a = a;
-      return;
-    }
-  items.push_back({key, unit, a});
+  if (!std::isnan(a.check.value)) summarize(items, key, unit, a);
 }
 
 SectionResult assessSection(const AssessmentSignals& sig, const assessment::AssessmentSpec& spec,
@@ -190,7 +185,7 @@ SectionResult assessSection(const AssessmentSignals& sig, const assessment::Asse
   const double lead_hi = std::min(sec.to, sig.distance.back());
   out.covered = std::max(0.0, lead_hi - lead_lo);
   for (std::size_t k = 0; k < sig.wheels.size(); ++k) {
-    out.wheels.push_back(sectionWheel(sig.wheels[k], r.wheel_safety[k], sig, spec, sec));
+    out.wheels.push_back(sectionWheel(sig.wheels[k], r.wheel_safety[k], spec, sec));
     const SectionWheel& w = out.wheels.back();
     if (!w.assessed) continue;
     worst(out.summary, "y_over_q", "-", w.yq);

@@ -65,6 +65,7 @@ struct Assessed {
 };
 
 struct WheelSafety {
+  std::vector<double> s;                       // the wheel's own arc length per sample [m]
   std::vector<double> y_filtered, q_filtered;  // the 20 Hz low-passed Y and Q [N]
   assessment::en14363::SlidingAssessment y_over_q;
   Assessed yq;               // (Y/Q)_2m against yq_limit
