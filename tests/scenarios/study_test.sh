@@ -135,14 +135,14 @@ study { base = "base.lua", matrix = { ["solver.method"] = { "rk4", "abm" } },
   } }
 LUA
 wb study "$TMP/s/badsignal.lua" --out "$TMP/o4b" >/dev/null 2>"$TMP/e"; rc=$?
-[ $rc -eq 1 ] && grep -q "badsignal.lua:1: study.metrics\[2\] (typo): signal '/bodies/ws9/y': no body 'ws9' (did you mean 'ws1'?)" "$TMP/e" \
+[ $rc -eq 1 ] && grep -q "badsignal.lua:4: study.metrics\[2\] (typo): signal '/bodies/ws9/y': no body 'ws9' (did you mean 'ws1'?)" "$TMP/e" \
   && grep -q "study.metrics\[3\] (wheel): signal '/contact/ws1/left/Q': the scenario has no wheel/rail contact model" "$TMP/e" \
   && grep -q "^2 problems found; nothing was run" "$TMP/e" && [ ! -e "$TMP/o4b" ] \
   && ok "metric signals checked before the runs" || bad "metric signals ($rc): $(cat "$TMP/e")"
 
 # 5. A 1e8-case matrix is refused at check time, before anything runs.
 wb study tests/scenario/study/huge.lua --out "$TMP/o5" >/dev/null 2>"$TMP/e"; rc=$?
-[ $rc -eq 1 ] && grep -q "^tests/scenario/study/huge.lua:4: study: 100000000 cases (100 x 100 x 100 x 100 x 1) exceed max_cases = 10000; raise study.max_cases" "$TMP/e" \
+[ $rc -eq 1 ] && grep -q "^tests/scenario/study/huge.lua:6: study: 100000000 cases (100 x 100 x 100 x 100 x 1) exceed max_cases = 10000; raise study.max_cases" "$TMP/e" \
   && [ ! -e "$TMP/o5" ] && ok "huge matrix refused" || bad "huge matrix ($rc): $(cat "$TMP/e")"
 
 # 6. An unusable table-cache folder: a warning, the tables built in memory, never a failure.

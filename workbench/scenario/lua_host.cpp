@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iomanip>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -18,6 +19,7 @@
 #include "workbench/core/files.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/scenario/lua_sandbox.hpp"
+#include "workbench/scenario/source_positions.hpp"
 #include "workbench/track/names.hpp"
 #include "workbench/vehicle/names.hpp"
 
@@ -752,14 +754,35 @@ LuaHost::~LuaHost() {
 
 namespace {
 
+// The text of a file the script ran (the scenario or a module), for the lines of table entries.
+struct SourceText {
+  std::string_view text;
+  std::vector<std::size_t> starts;  // lineStarts(text)
+};
+
+// Where a value is written: a file's text and the offset where the value starts.
+struct SourcePos {
+  const SourceText* source = nullptr;
+  std::size_t offset = 0;
+};
+
+// Tables deeper than this below their constructor keep the enclosing line: each level rescans
+// its part of the text, so the work stays linear in the text for any nesting.
+constexpr int kMaxScannedLevels = 8;
+
 struct Converter {
   lua_State* L;
   LuaHost::Impl* impl;
   Diagnostics& diags;
+  std::map<std::string, SourceText> sources;  // by the file name of SourceLoc
   std::set<const void*> active;
   std::size_t values = 0;
   bool stopped = false;  // a limit that ends the conversion was hit
   bool standin = false;  // a stand-in of a missing module was met (HostOptions)
+
+  void addSource(const std::string& file, std::string_view text) {
+    sources[file] = SourceText{text, lineStarts(text)};
+  }
 
   void fail(const SourceLoc& loc, const std::string& msg) {
     if (diags.size() >= 50) {
@@ -769,10 +792,12 @@ struct Converter {
     diags.add(loc, msg);
   }
 
-  Node convert(int idx, const SourceLoc& parentLoc, const std::string& path, int depth) {
+  Node convert(int idx, const SourceLoc& parentLoc, const std::string& path, int depth,
+               SourcePos pos = {}, int scanned = 0) {
     idx = lua_absindex(L, idx);
     Node n;
     n.loc = parentLoc;
+    if (pos.source != nullptr) n.loc.line = lineOf(pos.source->starts, pos.offset);
     if (stopped) return n;
     if (++values > kMaxValues) {
       fail(parentLoc, path + ": the scenario holds more than " + std::to_string(kMaxValues) +
@@ -808,7 +833,7 @@ struct Converter {
         convertFunction(idx, n, parentLoc, path);
         break;
       case LUA_TTABLE:
-        convertTable(idx, n, parentLoc, path, depth);
+        convertTable(idx, n, path, depth, pos, scanned);
         break;
       default:
         n.type = Node::Type::Nil;
@@ -851,9 +876,26 @@ struct Converter {
         });
   }
 
-  void convertTable(int idx, Node& n, const SourceLoc& parentLoc, const std::string& blockPath,
-                    int depth) {
+  // The entries of the table as written: its constructor call's line (a constructor) or its
+  // own position (a table written as a value); nullopt when the text does not show it.
+  std::optional<TableEntries> writtenEntries(const Node& n, SourcePos& pos, bool constructed,
+                                             int scanned) {
+    if (scanned >= kMaxScannedLevels) return std::nullopt;
+    if (constructed) {
+      const auto it = sources.find(n.loc.file);
+      if (it == sources.end()) return std::nullopt;
+      const auto brace = constructorBrace(it->second.text, n.loc.line, n.kind);
+      if (!brace) return std::nullopt;
+      pos = {&it->second, *brace};
+    }
+    if (pos.source == nullptr) return std::nullopt;
+    return scanTable(pos.source->text, pos.offset);
+  }
+
+  void convertTable(int idx, Node& n, const std::string& blockPath, int depth, SourcePos pos,
+                    int scanned) {
     n.type = Node::Type::Table;
+    const SourceLoc parentLoc = n.loc;
     // Top-level blocks are converted with an empty path and named by their kind below.
     std::string path = blockPath;
     const void* ptr = lua_topointer(L, idx);
@@ -891,11 +933,22 @@ struct Converter {
       lua_pop(L, 3);
       if (path.empty()) path = n.kind;
     }
+    const bool constructed = lua_istable(L, -1);
     lua_pop(L, 2);
+    if (constructed) scanned = 0;
+    const std::optional<TableEntries> written = writtenEntries(n, pos, constructed, scanned);
+    auto at = [&](std::size_t offset) { return SourcePos{pos.source, offset}; };
     lua_Integer len = static_cast<lua_Integer>(lua_rawlen(L, idx));
+    // Positional values are matched by position only when the text lists as many as the table
+    // holds (a list filled in code is not what the constructor shows).
+    const bool itemsWritten =
+        written && written->items.size() == static_cast<std::size_t>(std::max<lua_Integer>(len, 0));
     for (lua_Integer i = 1; i <= len && !stopped; ++i) {
       lua_rawgeti(L, idx, i);
-      n.items.push_back(convert(-1, n.loc, path + "[" + std::to_string(i) + "]", depth + 1));
+      const SourcePos ip =
+          itemsWritten ? at(written->items[static_cast<std::size_t>(i - 1)]) : SourcePos{};
+      n.items.push_back(
+          convert(-1, n.loc, path + "[" + std::to_string(i) + "]", depth + 1, ip, scanned + 1));
       lua_pop(L, 1);
     }
     lua_pushnil(L);
@@ -904,7 +957,12 @@ struct Converter {
         std::size_t klen = 0;
         const char* k = lua_tolstring(L, -2, &klen);
         std::string key(k, std::min(klen, std::size_t{200}));
-        n.fields.emplace_back(key, convert(-1, n.loc, path + "." + key, depth + 1));
+        SourcePos kp;
+        if (written)  // the last one written wins, as in Lua
+          for (const auto& [name, offset] : written->fields)
+            if (name == key) kp = at(offset);
+        n.fields.emplace_back(key,
+                              convert(-1, n.loc, path + "." + key, depth + 1, kp, scanned + 1));
       } else if (!(lua_isinteger(L, -2) && lua_tointeger(L, -2) >= 1 &&
                    lua_tointeger(L, -2) <= len)) {
         fail(n.loc, path + ": keys must be names or list positions 1.." + std::to_string(len) +
@@ -970,7 +1028,9 @@ Node LuaHost::runFile(const std::string& path) {
   lua_settop(L, 0);
 
   Diagnostics diags;
-  Converter conv{L, impl_, diags, {}};
+  Converter conv{L, impl_, diags, {}, {}};
+  conv.addSource(path, text_);
+  for (const auto& [shown, text] : impl_->modules) conv.addSource(shown, text);
   Node root;
   root.type = Node::Type::Table;
   root.loc = {path, 0};
