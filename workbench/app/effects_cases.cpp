@@ -33,7 +33,7 @@ scenario::StudySpec effectsStudy(const std::string& scenarioPath,
     std::vector<std::string> ov = common;
     ov.insert(ov.end(), offs.begin(), offs.end());
     st.cases.push_back(
-        {scenario::studyCaseId(ov, ""), ov, std::move(label), scenarioPath, std::move(role)});
+        {scenario::studyCaseId(ov, ""), ov, std::move(label), scenarioPath, std::move(role), {}, {}});
   };
   add({}, "full scene", "baseline");
   std::vector<std::string> all;

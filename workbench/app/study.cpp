@@ -277,26 +277,62 @@ int runShard(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& pl
   return 0;
 }
 
-// Every signal a metric reads that no case's run would write, before any run starts: a typo in
-// a metric otherwise shows only when the summary is written, after every run. Checked against
-// each case's scenario (a case may change the vehicle or the outputs); a case whose scenario does
-// not load is left to its run, which reports why.
-void checkMetricSignals(const scenario::StudySpec& st, const StudyOptions& o) {
-  Diagnostics d;
-  std::set<std::string> seen;
-  std::map<std::string, bool> loaded;  // base + overrides already checked
+// "case 'a'", "cases 'a', 'b' and 'c'", "cases 'a', 'b', 'c' and 7 more", "every case".
+std::string casesText(const std::vector<std::string>& labels, std::size_t total) {
+  if (labels.size() == total && total > 1) return "every case";
+  if (labels.size() == 1) return "case '" + labels.front() + "'";
+  constexpr std::size_t kShown = 3;
+  std::string out = "cases ";
+  for (std::size_t i = 0; i < labels.size() && i < kShown; ++i)
+    out += (i == 0 ? "'" : i + 1 == labels.size() ? " and '" : ", '") + labels[i] + "'";
+  if (labels.size() > kShown) out += " and " + std::to_string(labels.size() - kShown) + " more";
+  return out;
+}
+
+// One problem of the cases, with the cases that have it.
+struct CaseProblem {
+  SourceLoc loc;
+  std::string message;
+  std::vector<std::string> cases;
+};
+
+// Every case's scenario, loaded with its overrides before any run starts, and every signal a
+// metric reads checked against it: a bad matrix value or case entry (a negative mass, "heavy"
+// for a number, a key that names nothing) would otherwise fail each of its runs, or show only
+// when the summary is written. All problems are reported at once: a problem of an override at
+// the line of the study file where the value is written, any other problem of a case (its base
+// scenario's, or one that only the combination of overrides makes) at the line of the case's
+// entry, naming the scenario's own file:line. A study whose cases do not load runs nothing.
+// What needs a built model (contact tables, the start equilibrium, the step limit) is checked
+// by each run.
+void checkCases(const scenario::StudySpec& st, const StudyOptions& o) {
+  std::vector<CaseProblem> problems;
+  std::map<std::string, std::size_t> index;  // loc + message -> position in problems
+  auto add = [&](const SourceLoc& loc, const std::string& message, const std::string& label) {
+    const std::string key = loc.str() + "\n" + message;
+    auto [it, fresh] = index.emplace(key, problems.size());
+    if (fresh) problems.push_back({loc, message, {}});
+    auto& cases = problems[it->second].cases;
+    if (cases.empty() || cases.back() != label) cases.push_back(label);
+  };
+  std::set<std::string> loaded;  // base + overrides already checked
   for (const auto& c : st.cases) {
     std::string key = c.base;
     for (const auto& ov : c.overrides) key += "\n" + ov;
-    if (loaded.count(key) != 0) continue;
-    loaded[key] = true;
+    if (!loaded.insert(key).second) continue;
     scenario::ScenarioSpec spec;
     try {
       scenario::LoadOptions lo;
       lo.root = o.root;
       lo.overrides = c.overrides;
+      lo.override_locs = c.override_locs;
       spec = scenario::loadScenario(c.base, lo);
-    } catch (const InputError&) {
+    } catch (const InputError& e) {
+      for (const auto& dg : e.diagnostics())
+        if (dg.loc.file == st.file && dg.loc.line > 0)
+          add(dg.loc, dg.message, c.label);
+        else
+          add(c.loc, "in the scenario of the case: " + dg.str(), c.label);
       continue;
     }
     for (const auto& m : st.metrics) {
@@ -305,14 +341,18 @@ void checkMetricSignals(const scenario::StudySpec& st, const StudyOptions& o) {
       for (const auto& [name, path] : m.signals) paths.emplace_back("signals." + name, path);
       for (const auto& [what, path] : paths) {
         const std::string why = run::signalProblem(spec, path);
-        if (why.empty()) continue;
-        const std::string msg = "study.metrics[" + std::to_string(m.index) + "] (" + m.name +
-                                "): " + what + " '" + path + "': " + why;
-        if (!seen.insert(msg).second) continue;
-        d.add(m.loc, msg + (st.cases.size() > 1 ? " (case '" + c.label + "')" : ""));
+        if (!why.empty())
+          add(m.loc,
+              "study.metrics[" + std::to_string(m.index) + "] (" + m.name + "): " + what + " '" +
+                  path + "': " + why,
+              c.label);
       }
     }
   }
+  Diagnostics d;
+  for (const auto& p : problems)
+    d.add(p.loc, p.message + (st.cases.size() > 1 ? " (" + casesText(p.cases, st.cases.size()) + ")"
+                                                   : ""));
   d.throwIfAny();
 }
 
@@ -321,7 +361,7 @@ void checkMetricSignals(const scenario::StudySpec& st, const StudyOptions& o) {
 int runStudySpec(const scenario::StudySpec& st, const StudyOptions& o,
                  const std::vector<std::string>& plotArgs) {
   if (!o.shard.empty()) parseShard(o.shard, o.file);  // a bad shard runs nothing
-  if (!o.summarize) checkMetricSignals(st, o);
+  if (!o.summarize) checkCases(st, o);
   if (o.mpi) {
 #ifdef RB_HAVE_MPI
     return runStudyMpi(st, o, plotArgs);

@@ -13,24 +13,35 @@
 namespace rb::scenario {
 namespace {
 
-const SourceLoc kCommandLine{"<command line>", 0};
+const SourceLoc& kCommandLine = kCommandLineLoc;
 
 bool isIndexToken(const std::string& t) {
   return !t.empty() && t.find_first_not_of("0123456789") == std::string::npos;
 }
 
-// Tokens of a path: names and 1-based list positions, "a.b[2].c" or "a.b.2.c".
-std::vector<std::string> pathTokens(const std::string& path) {
+// Tokens of a path: names and 1-based list positions, "a.b[2].c" or "a.b.2.c". A token left
+// empty ("solver..step", ".a", "a.", "a[]", "a[2]b") is a malformed path, never skipped: reading
+// "solver..step" as "solver.step" would set a key the user did not write.
+std::optional<std::vector<std::string>> pathTokens(const std::string& path) {
   std::vector<std::string> tokens;
   std::string cur;
+  bool inBracket = false;  // between '[' and ']'
+  bool closed = false;     // just after ']': '.', '[' or the end must follow
   for (char c : path) {
-    if (c == '.' || c == '[' || c == ']') {
-      if (!cur.empty()) tokens.push_back(cur);
-      cur.clear();
-    } else {
+    const bool sep = c == '.' || c == '[' || c == ']';
+    if (!sep) {
+      if (closed) return std::nullopt;  // "a[2]b"
       cur += c;
+      continue;
     }
+    if (c == ']' ? !inBracket || cur.empty() : inBracket) return std::nullopt;
+    if (cur.empty() && !closed) return std::nullopt;  // "a..b", ".a", "a.[2]"
+    if (!cur.empty()) tokens.push_back(cur);
+    cur.clear();
+    inBracket = c == '[';
+    closed = c == ']';
   }
+  if (inBracket || (cur.empty() && !closed)) return std::nullopt;  // "a[2", "a."
   if (!cur.empty()) tokens.push_back(cur);
   return tokens;
 }
@@ -46,17 +57,17 @@ std::string didYouMean(const std::string& word, const std::vector<std::string>& 
   return hint.empty() ? "" : " (did you mean '" + hint + "'?)";
 }
 
-Node commandLineTable(const std::string& kind) {
+Node commandLineTable(const std::string& kind, const SourceLoc& loc) {
   Node t;
   t.type = Node::Type::Table;
   t.kind = kind;
-  t.loc = kCommandLine;
+  t.loc = loc;
   return t;
 }
 
 // The top-level block named `name`, made empty when the scenario has none; an unknown block is
 // the returned message.
-Node* topBlock(Node& root, const std::string& name, std::string& problem) {
+Node* topBlock(Node& root, const std::string& name, const SourceLoc& loc, std::string& problem) {
   if (Node* node = root.field(name)) return node;
   const auto& tops = topLevelBlocks();
   bool known = false;
@@ -65,7 +76,7 @@ Node* topBlock(Node& root, const std::string& name, std::string& problem) {
     problem = "unknown block '" + name + "'" + didYouMean(name, tops);
     return nullptr;
   }
-  return &root.setField(name, commandLineTable(name));
+  return &root.setField(name, commandLineTable(name, loc));
 }
 
 // A list of named tables (vehicle.bodies, vehicle.elements): a list whose items carry names.
@@ -107,7 +118,8 @@ Node* namedItem(Node& list, const std::string& listPath, const std::string& name
 
 // Walks tokens[from..] from `node` and sets the last one to `value`; the problem otherwise.
 std::optional<std::string> setPath(Node* node, const std::vector<std::string>& tokens,
-                                   std::size_t from, const std::string& value) {
+                                   std::size_t from, const std::string& value,
+                                   const SourceLoc& loc) {
   for (std::size_t i = from; i < tokens.size(); ++i) {
     const std::string& t = tokens[i];
     const bool last = i + 1 == tokens.size();
@@ -119,7 +131,7 @@ std::optional<std::string> setPath(Node* node, const std::vector<std::string>& t
       if (idx < 1 || idx > node->items.size())
         return "list position " + t + " out of range 1.." + std::to_string(node->items.size());
       if (last) {
-        node->items[idx - 1] = parseOverrideValue(value);
+        node->items[idx - 1] = parseOverrideValue(value, loc);
         return std::nullopt;
       }
       node = &node->items[idx - 1];
@@ -134,11 +146,11 @@ std::optional<std::string> setPath(Node* node, const std::vector<std::string>& t
       }
       node = item;
     } else if (last) {
-      node->setField(t, parseOverrideValue(value));
+      node->setField(t, parseOverrideValue(value, loc));
       return std::nullopt;
     } else {
       Node* next = node->field(t);
-      node = next ? next : &node->setField(t, commandLineTable(""));
+      node = next ? next : &node->setField(t, commandLineTable("", loc));
     }
   }
   return std::nullopt;
@@ -177,7 +189,7 @@ std::optional<std::string> resolveGroup(const Node& vehicle, const std::vector<s
 // vehicle.groups.GROUP.KEY...=value: KEY set in every member element. A member whose kind has no
 // such key is an error naming it (never a silent skip), checked before any member is changed.
 std::optional<std::string> setGroup(Node& vehicle, const std::vector<std::string>& tokens,
-                                    const std::string& value) {
+                                    const std::string& value, const SourceLoc& loc) {
   GroupMembers members;
   if (auto p = resolveGroup(vehicle, tokens, members)) return p;
   Node* elements = vehicle.field("elements");
@@ -191,7 +203,7 @@ std::optional<std::string> setGroup(Node& vehicle, const std::vector<std::string
              didYouMean(key, bs->keyNames()) + "; its keys: " + join(bs->keyNames(), ", ");
   }
   for (const std::size_t i : members.elements)
-    if (auto p = setPath(&elements->items[i], tokens, 3, value))
+    if (auto p = setPath(&elements->items[i], tokens, 3, value, loc))
       return where + ": element '" + itemName(elements->items[i]) + "': " + *p;
   return std::nullopt;
 }
@@ -283,9 +295,9 @@ GroupMembers groupMembers(const Node& vehicle, const Node& group) {
   return out;
 }
 
-Node parseOverrideValue(const std::string& text) {
+Node parseOverrideValue(const std::string& text, const SourceLoc& loc) {
   Node n;
-  n.loc = kCommandLine;
+  n.loc = loc;
   char* end = nullptr;
   double v = std::strtod(text.c_str(), &end);
   if (!text.empty() && end && *end == '\0') {
@@ -304,25 +316,40 @@ Node parseOverrideValue(const std::string& text) {
   return n;
 }
 
-std::optional<std::string> overrideProblem(Node& root, const std::string& assignment) {
+std::optional<std::string> overrideProblem(Node& root, const std::string& assignment,
+                                           const SourceLoc& loc) {
   auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0) return "expected key=value, e.g. solver.step=5e-4";
-  const std::vector<std::string> tokens = pathTokens(assignment.substr(0, eq));
+  const auto parsed = pathTokens(assignment.substr(0, eq));
+  if (!parsed)
+    return "'" + assignment.substr(0, eq) +
+           "' is not a key path: names and list positions joined by '.', e.g. solver.step or "
+           "track.segments[2].radius";
+  const std::vector<std::string>& tokens = *parsed;
   if (tokens.size() < 2) return "the key must name a block and a key, e.g. solver.step";
   for (const auto& t : tokens)
     if (!isIndexToken(t) && !isParameterName(t))
       return "'" + t + "' is neither a key name nor a list position (1, 2, ...)";
   std::string problem;
-  Node* node = topBlock(root, tokens[0], problem);
+  Node* node = topBlock(root, tokens[0], loc, problem);
   if (!node) return problem;
   const std::string value = assignment.substr(eq + 1);
-  if (tokens[0] == "vehicle" && tokens[1] == "groups") return setGroup(*node, tokens, value);
-  return setPath(node, tokens, 1, value);
+  if (tokens[0] == "vehicle" && tokens[1] == "groups") return setGroup(*node, tokens, value, loc);
+  return setPath(node, tokens, 1, value, loc);
 }
 
 void applyOverride(Node& root, const std::string& assignment, Diagnostics& d) {
-  if (auto p = overrideProblem(root, assignment))
+  if (auto p = overrideProblem(root, assignment, kCommandLine))
     d.add(kCommandLine, "--set " + assignment + ": " + *p);
+}
+
+void applyOverride(Node& root, const std::string& assignment, const SourceLoc& loc,
+                   Diagnostics& d) {
+  if (loc.file.empty()) return applyOverride(root, assignment, d);
+  const auto eq = assignment.find('=');
+  if (auto p = overrideProblem(root, assignment, loc))
+    d.add(loc, "\"" + assignment.substr(0, eq) + "\" = " +
+                   (eq == std::string::npos ? "" : assignment.substr(eq + 1)) + ": " + *p);
 }
 
 }  // namespace rb::scenario

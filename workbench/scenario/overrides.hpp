@@ -16,15 +16,24 @@
 
 namespace rb::scenario {
 
+// Where a --set override is written when it comes from the command line.
+inline const SourceLoc kCommandLineLoc{"<command line>", 0};
+
 // The value of an override: a number, true/false, or a string (quotes around it are removed).
-Node parseOverrideValue(const std::string& text);
+// `loc` is where it is written: the validator reports a bad value there.
+Node parseOverrideValue(const std::string& text, const SourceLoc& loc = kCommandLineLoc);
 
 // Applies one "path=value" to `root`; problems are added to `d` at <command line>.
 void applyOverride(Node& root, const std::string& assignment, Diagnostics& d);
+// The same for an override written in a file (a study's matrix value or case entry): the value
+// and every problem with it are located at `loc` (an empty loc.file means the command line).
+void applyOverride(Node& root, const std::string& assignment, const SourceLoc& loc,
+                   Diagnostics& d);
 
 // Applies one "path=value" to `root` and returns what is wrong with it (without the "--set"
-// prefix and location), nullopt when it was applied.
-std::optional<std::string> overrideProblem(Node& root, const std::string& assignment);
+// prefix and location), nullopt when it was applied. The values and tables it adds carry `loc`.
+std::optional<std::string> overrideProblem(Node& root, const std::string& assignment,
+                                           const SourceLoc& loc = kCommandLineLoc);
 
 // True when `name` matches the group pattern `pattern` ('*' stands for any run of characters).
 bool globMatch(const std::string& pattern, const std::string& name);

@@ -48,7 +48,9 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   auto unchecked = [&](const char* kind) {
     return std::find(incomplete.begin(), incomplete.end(), kind) != incomplete.end();
   };
-  for (const auto& o : options.overrides) applyOverride(root, o, d);
+  for (std::size_t i = 0; i < options.overrides.size(); ++i)
+    applyOverride(root, options.overrides[i],
+                  i < options.override_locs.size() ? options.override_locs[i] : SourceLoc{}, d);
 
   if (const Node* t = root.field("track"))
     buildTrack(*t, host, spec.track, spec.track_rails_given, d);

@@ -52,6 +52,9 @@ struct ScenarioSpec {
 struct LoadOptions {
   std::string root;                             // project root (scenarios/, profiles/)
   std::vector<std::string> overrides;           // "a.b[2].c=value"
+  // Where each override is written, when it comes from a file (a study's matrix value or case
+  // entry): its problems are reported there. Empty (or shorter): the command line.
+  std::vector<SourceLoc> override_locs;
   long long instruction_limit = 2'000'000'000;  // Lua VM instructions before "endless loop?"
 };
 

@@ -300,14 +300,25 @@ struct InitialCoordinate {
   const char* key;
   const char* unit;
   const char* what;
+  double max_offset;  // plausibility bound of |offset| [m or rad]
+  double max_rate;    // and of |rate| [m/s or rad/s]
 };
 // The coordinates of vehicle.initial.<body>, in vehicle::Coord order from kY.
+// The bounds (ASSUMPTION, docs/scenarios.md "vehicle.initial"): an initial offset is a small
+// disturbance of the static equilibrium. 0.1 m is beyond any flange clearance (about 7 mm for
+// S1002 on 60E1) and suspension travel; 0.1 rad of roll or yaw beyond anything a vehicle on its
+// track reaches; 2 m/s and 5 rad/s are some ten times the rates of hunting at 80 m/s (about
+// 0.2 m/s and 0.1-0.5 rad/s). A wheelset's pitch is its spin angle (any angle within one turn)
+// and its rate a spin-rate offset (bounded by 50 rad/s, a third of V/r0 at 70 m/s). Beyond these
+// the start is not a disturbance of the equilibrium, and the stiff start fails later with a
+// message about the step instead of about the value.
+constexpr double kPi = 3.141592653589793;
 constexpr InitialCoordinate kInitialCoordinates[] = {
-    {"y", "m", "lateral displacement y"},
-    {"z", "m", "vertical displacement z (up)"},
-    {"roll", "rad", "roll angle phi"},
-    {"pitch", "rad", "pitch angle theta (a wheelset: spin angle)"},
-    {"yaw", "rad", "yaw angle psi"}};
+    {"y", "m", "lateral displacement y", 0.1, 2.0},
+    {"z", "m", "vertical displacement z (up)", 0.1, 2.0},
+    {"roll", "rad", "roll angle phi", 0.1, 5.0},
+    {"pitch", "rad", "pitch angle theta (a wheelset: spin angle)", kPi, 50.0},
+    {"yaw", "rad", "yaw angle psi", 0.1, 5.0}};
 
 void addVehicleBlocks(std::vector<BlockSpec>& s) {
   // Vehicle: bodies in track-frame coordinates and suspension elements (Appendix A).
@@ -353,12 +364,14 @@ void addVehicleBlocks(std::vector<BlockSpec>& s) {
   // Coordinates relative to the body track frame (paper Eq. 2-3) and their rates.
   std::vector<KeySpec> initial;
   for (const bool rate : {false, true})
-    for (const auto& [key, unit, what] : kInitialCoordinates) {
+    for (const auto& [key, unit, what, max_offset, max_rate] : kInitialCoordinates) {
       const std::string k = std::string(key) + (rate ? "_dot" : "");
       const std::string u = std::string(unit) + (rate ? "/s" : "");
+      const double bound = rate ? max_rate : max_offset;
       initial.push_back(num(k, u, 0,
                             rate ? "initial rate of " + std::string(what) + " (added)"
-                                 : "initial " + std::string(what) + " (added)"));
+                                 : "initial " + std::string(what) + " (added)",
+                            -bound, bound));
     }
   s.push_back({std::string(kInitialBlock),
                "Initial offsets of one body (vehicle.initial.BODY), in its track frame, added to "

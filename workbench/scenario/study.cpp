@@ -128,12 +128,20 @@ std::string caseLabel(const std::vector<std::string>& overrides) {
 namespace {
 
 using ErrorFn = std::function<void(const std::string&)>;
-using Axes = std::vector<std::pair<std::string, std::vector<std::string>>>;
+// A matrix axis: the key, its values as override text and where each value is written.
+struct Axis {
+  std::string key;
+  std::vector<std::string> values;
+  std::vector<SourceLoc> locs;
+};
+using Axes = std::vector<Axis>;
 
 // An entry of `cases`: overrides plus the study keys label, base (as written and resolved), role.
 struct Variant {
   std::vector<std::string> overrides;
+  std::vector<SourceLoc> locs;  // where each override is written
   std::string label, base, baseResolved, role;
+  SourceLoc loc;  // the entry's own line
 };
 
 // A base scenario path relative to the study file (else as given); "" when not found.
@@ -183,23 +191,26 @@ Axes readMatrix(const Node& n, const ErrorFn& err) {
       err("matrix[\"" + k + "\"] must be a non-empty list of values");
       continue;
     }
-    std::vector<std::string> vals;
+    Axis axis{k, {}, {}};
     for (const auto& item : v.items) {
       std::string t;
       if (!scalarText(item, t))
         err("matrix[\"" + k + "\"]: values must be numbers, strings or booleans");
-      vals.push_back(t);
+      axis.values.push_back(t);
+      axis.locs.push_back(item.loc);
     }
-    axes.emplace_back(k, vals);
+    axes.push_back(std::move(axis));
   }
   return axes;
 }
 
 // One study key or --set path of an entry of `cases`.
 void readCaseKey(const std::string& where, const std::string& k, const std::string& t,
-                 const std::string& studyPath, Variant& var, const ErrorFn& err) {
+                 const SourceLoc& loc, const std::string& studyPath, Variant& var,
+                 const ErrorFn& err) {
   if (k.find('.') != std::string::npos) {
     var.overrides.push_back(k + "=" + t);
+    var.locs.push_back(loc);
   } else if (k == "label") {
     var.label = t;
   } else if (k == "role") {
@@ -232,10 +243,11 @@ std::vector<Variant> readCases(const Node& n, const std::string& studyPath, cons
         continue;
       }
       Variant var;
+      var.loc = item.loc;
       for (const auto& [k, v] : item.fields) {
         std::string t;
         if (scalarText(v, t))
-          readCaseKey(where, k, t, studyPath, var, err);
+          readCaseKey(where, k, t, v.loc, studyPath, var, err);
         else
           err(where + "[\"" + k + "\"] must be a scalar");
       }
@@ -253,9 +265,9 @@ void checkCaseCount(const Node& n, const Axes& axes, std::size_t variants, long 
   const SourceLoc where = m ? m->loc : n.loc;
   double count = static_cast<double>(variants);
   std::string sizes;
-  for (const auto& [k, vals] : axes) {
-    count *= static_cast<double>(vals.size());
-    sizes += std::to_string(vals.size()) + " x ";
+  for (const auto& axis : axes) {
+    count *= static_cast<double>(axis.values.size());
+    sizes += std::to_string(axis.values.size()) + " x ";
   }
   sizes += std::to_string(variants);
   if (count > static_cast<double>(maxCases)) {
@@ -267,18 +279,25 @@ void checkCaseCount(const Node& n, const Axes& axes, std::size_t variants, long 
   }
 }
 
+// One matrix combination: its overrides and where each value is written.
+struct Combination {
+  std::vector<std::string> overrides;
+  std::vector<SourceLoc> locs;
+};
+
 // Cartesian product of the matrix axes (first key slowest).
-std::vector<std::vector<std::string>> combinations(const Axes& axes) {
-  std::vector<std::vector<std::string>> combos = {{}};
-  for (const auto& [k, vals] : axes) {
-    std::vector<std::vector<std::string>> next;
+std::vector<Combination> combinations(const Axes& axes) {
+  std::vector<Combination> combos = {{}};
+  for (const auto& axis : axes) {
+    std::vector<Combination> next;
     for (const auto& c : combos)
-      for (const auto& v : vals) {
+      for (std::size_t i = 0; i < axis.values.size(); ++i) {
         auto e = c;
-        e.push_back(k + "=" + v);
-        next.push_back(e);
+        e.overrides.push_back(axis.key + "=" + axis.values[i]);
+        e.locs.push_back(axis.locs[i]);
+        next.push_back(std::move(e));
       }
-    combos = next;
+    combos = std::move(next);
   }
   return combos;
 }
@@ -579,15 +598,19 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
   std::set<std::string> ids;
   std::vector<std::string> given;                    // label given in the case, per case
   std::vector<std::vector<std::string>> matrixPart;  // its matrix overrides
+  const Node* matrix = n->field("matrix");
   for (const auto& c : combinations(axes))
     for (const auto& v : variants) {
       StudyCase sc;
-      sc.overrides = c;
+      sc.overrides = c.overrides;
       sc.overrides.insert(sc.overrides.end(), v.overrides.begin(), v.overrides.end());
+      sc.override_locs = c.locs;
+      sc.override_locs.insert(sc.override_locs.end(), v.locs.begin(), v.locs.end());
+      sc.loc = !v.loc.file.empty() ? v.loc : matrix ? matrix->loc : n->loc;
       sc.base = v.base.empty() ? st.base : v.baseResolved;
       sc.role = v.role;
       given.push_back(v.label);
-      matrixPart.push_back(c);
+      matrixPart.push_back(c.overrides);
       // Named by its overrides (and its own base) only, so adding values to a study, or
       // relabelling, keeps old results resumable.
       sc.id = studyCaseId(sc.overrides, v.base);

@@ -30,6 +30,11 @@ struct StudyCase {
   std::string label;                   // readable name (given, or made from the overrides)
   std::string base;                    // resolved base scenario path of this case
   std::string role;                    // "", "reference", "reference_check", "baseline", ...
+  // Where each override is written in the study file (its matrix value or its key in the entry
+  // of `cases`), parallel to `overrides`; loc: the entry of `cases` (else the matrix, else the
+  // study block).
+  std::vector<SourceLoc> override_locs;
+  SourceLoc loc;
 };
 
 // One entry of study.metrics (docs/studies.md, "Metrics"): a number extracted from each case's
