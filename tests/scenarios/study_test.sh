@@ -46,7 +46,8 @@ study { base = "base.lua", matrix = { ["run.duration"] = { 2, 2.2 } },
         cases = { { ["solver.method"] = "rk4", ["solver.step"] = 1e-5 } }, jobs = 2 }
 LUA
 cat >"$TMP/s/allfail.lua" <<'LUA'
-study { base = "base.lua", matrix = { ["solver.step"] = { -1, -2 } }, jobs = 2 }
+study { base = "base.lua", matrix = { ["solver.step"] = { 0.03, 0.07 } },
+        cases = { { ["solver.method"] = "rk4" } }, jobs = 2 }
 LUA
 stray() { ls "$1" | grep -c '\.run-' ; }
 
@@ -119,7 +120,8 @@ wb study "$TMP/s/long.lua" --out "$O" >/dev/null 2>"$TMP/e"; rc=$?
   && ok "killed runner: resumed at once, every case complete ($n had finished)" \
   || bad "kill -9 resume ($rc, $n finished before): $(cat "$TMP/e")"
 
-# 4. Every case fails: the study exits 2.
+# 4. Every case fails (each scenario loads, and each run refuses its step: the output interval is
+# no multiple of it): the study exits 2.
 wb study "$TMP/s/allfail.lua" --out "$TMP/o4" >/dev/null 2>"$TMP/e"; rc=$?
 [ $rc -eq 2 ] && grep -q "no run of the study is ok" "$TMP/e" && ok "all cases failing exits 2" \
   || bad "all-fail study exit $rc: $(cat "$TMP/e")"

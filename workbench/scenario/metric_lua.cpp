@@ -17,6 +17,7 @@ extern "C" {
 
 #include "workbench/core/error.hpp"
 #include "workbench/core/files.hpp"
+#include "workbench/core/strings.hpp"
 #include "workbench/scenario/lua_host.hpp"
 #include "workbench/scenario/lua_sandbox.hpp"
 
@@ -322,6 +323,13 @@ bool LuaMetrics::call(int index,
     why = "study.metrics[" + std::to_string(index) + "].fn is not a function in the study file";
     return false;
   }
+  // Where the function is written, so a failure names it (not only the line that raised).
+  lua_Debug ar;
+  lua_pushvalue(L, -1);
+  std::string fnName = "the function";
+  if (lua_getinfo(L, ">S", &ar) != 0 && ar.source != nullptr && ar.source[0] == '@' &&
+      ar.linedefined > 0)
+    fnName += " (" + std::string(ar.source + 1) + ":" + std::to_string(ar.linedefined) + ")";
   // The table is built inside the protected call, so a refused allocation is an error of the
   // call, not a panic. Stack: handler-less pcall of (builder, fn, signals*).
   lua_pushcfunction(L, &Impl::buildAndCall);
@@ -329,21 +337,21 @@ bool LuaMetrics::call(int index,
   lua_pushlightuserdata(L, const_cast<void*>(static_cast<const void*>(&signals)));
   im.arm();
   if (lua_pcall(L, 2, 1, 0) != LUA_OK) {
-    why = "the function raised: " + im.popError();
+    why = fnName + " raised: " + im.popError();
     lua_settop(L, 0);
     return false;
   }
   if (im.death.dead) {  // the function caught its budget error and returned: still a failure
-    why = "the function raised: " + im.death.message;
+    why = fnName + " raised: " + im.death.message;
     lua_settop(L, 0);
     return false;
   }
   const bool number = lua_type(L, -1) == LUA_TNUMBER;
   out = number ? lua_tonumber(L, -1) : std::nan("");
   if (!number)
-    why = std::string("the function returned a ") + luaL_typename(L, -1) + ", not a number";
+    why = fnName + " returned a " + luaL_typename(L, -1) + ", not a number";
   else if (!std::isfinite(out))
-    why = "the function returned " + std::to_string(out);
+    why = fnName + " returned " + formatNumber(out);
   lua_settop(L, 0);
   return why.empty();
 }

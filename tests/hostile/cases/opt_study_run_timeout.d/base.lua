@@ -1,4 +1,5 @@
 -- The base scenario of the study case beside it.
 track { segments = { tangent { length = 100 } } }
 vehicle(require "vehicles.manchester_wagon1" { speed = 20 })
+contact { method = "guided" }
 run { duration = 0.1 }
