@@ -264,7 +264,7 @@ TEST(Assessment, GuidedVehicleRefusesSafetyAtCheck) {
     rb::app::checkScenario(o);
     FAIL() << "no error";
   } catch (const rb::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("manchester_guided_r500.lua:13: run.assessment: safety "
+    EXPECT_NE(std::string(e.what()).find("manchester_guided_r500.lua:15: run.assessment: safety "
                                          "needs wheel/rail contact"),
               std::string::npos)
         << e.what();

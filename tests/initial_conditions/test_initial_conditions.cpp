@@ -126,7 +126,7 @@ TEST(InitialConditionsSchema, KeysAgreeWithTheVehicleNamesAndAreListed) {
   ASSERT_NE(rb::scenario::block("vehicle").key("initial"), nullptr);
   const std::string help = rb::scenario::referenceText();
   EXPECT_NE(help.find("vehicle.initial.<body> = { ... }"), std::string::npos);
-  EXPECT_NE(help.find("  yaw_dot (number, rad/s) default 0\n"), std::string::npos);
+  EXPECT_NE(help.find("  yaw_dot (number, rad/s) default 0, range [-5, 5]\n"), std::string::npos);
   EXPECT_NE(help.find("  initial (table)"), std::string::npos);
 }
 

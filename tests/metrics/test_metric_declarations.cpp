@@ -98,8 +98,9 @@ TEST(MetricDeclarations, BadOnesAreFileLineErrors) {
   for (const auto& [decl, want] : bad) {
     const std::string e = errorOf("    " + decl + ",");
     EXPECT_NE(e.find(want), std::string::npos) << decl << "\n  gave: " << e;
-    // Every message is located in the study file: "<path>:<line>: study: metrics[...]".
-    EXPECT_NE(e.find("s.lua:2: study: metrics["), std::string::npos) << e;
+    // Every message is located at the metric's own line of the study file (line 6: the
+    // declaration), not at the study{} block's.
+    EXPECT_NE(e.find("s.lua:6: study: metrics["), std::string::npos) << e;
   }
 }
 

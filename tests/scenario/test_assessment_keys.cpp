@@ -49,12 +49,12 @@ TEST(AssessmentKeys, BadKeysAndValuesWithFileLine) {
                                              "}\n");
   const std::string e = errorsOf(p);
   for (const std::string& want :
-       {p + ":2: run.assessment: unknown key 'safty' (did you mean 'safety'?)",
-        p + ":2: run.assessment: comfort must be true or false, got",
-        p + ":2: run.assessment: sample_every", p + ":2: run.assessment: alpha",
-        p + ":2: run.assessment: floor_positions[2] must be a finite number",
-        p + ":2: run.assessment: mu must be > 0",
-        p + ":2: run.assessment: instability_frequency must be > 2 Hz"})
+       {p + ":3: run.assessment: unknown key 'safty' (did you mean 'safety'?)",
+        p + ":3: run.assessment: comfort must be true or false, got",
+        p + ":4: run.assessment: sample_every", p + ":4: run.assessment: alpha",
+        p + ":5: run.assessment: floor_positions[2] must be a finite number",
+        p + ":5: run.assessment: mu must be > 0",
+        p + ":6: run.assessment: instability_frequency must be > 2 Hz"})
     EXPECT_NE(e.find(want), std::string::npos) << "missing: " << want << "\nin:\n" << e;
 }
 

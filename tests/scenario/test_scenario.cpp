@@ -66,8 +66,8 @@ TEST(ScenarioErrors, WrongType) {
 
 TEST(ScenarioErrors, OutOfRange) {
   EXPECT_EQ(errorsOf(kBad + "out_of_range.lua"),
-            kBad + "out_of_range.lua:1: track: step must be > 0 m, got -0.5\n" + kBad +
-                "out_of_range.lua:1: track: rail_inclination must be <= 0.1 rad, got 0.5");
+            kBad + "out_of_range.lua:3: track: step must be > 0 m, got -0.5\n" + kBad +
+                "out_of_range.lua:4: track: rail_inclination must be <= 0.1 rad, got 0.5");
 }
 
 TEST(ScenarioErrors, MissingFile) {
@@ -105,7 +105,7 @@ TEST(ScenarioErrors, DuplicateBlock) {
 TEST(ScenarioErrors, ManyProblemsReportedAtOnce) {
   EXPECT_EQ(
       errorsOf(kBad + "many.lua"),
-      kBad + "many.lua:2: track: unknown key 'stepp' (did you mean 'step'?)\n" + kBad +
+      kBad + "many.lua:7: track: unknown key 'stepp' (did you mean 'step'?)\n" + kBad +
           "many.lua:4: track.segments[1] (tangent): length must be > 0 m, got 0\n" + kBad +
           "many.lua:5: track.segments[2] (curve): unknown key 'raduis' (did you mean 'radius'?)\n" +
           kBad + "many.lua:5: track.segments[2] (curve): missing required key 'radius'\n" + kBad +
@@ -116,7 +116,7 @@ TEST(ScenarioErrors, ManyProblemsReportedAtOnce) {
 
 TEST(ScenarioErrors, UserPsdFunctionMustBeNonNegative) {
   std::string e = errorsOf(kBad + "user_psd_negative.lua");
-  EXPECT_EQ(e.rfind(kBad + "user_psd_negative.lua:3: track.irregularities (psd): alignment: PSD "
+  EXPECT_EQ(e.rfind(kBad + "user_psd_negative.lua:5: track.irregularities (psd): alignment: PSD "
                            "function returned -1e-07 at omega = ",
                     0),
             0u)
@@ -127,11 +127,11 @@ TEST(ScenarioErrors, UserPsdNeedsUserSpectrum) {
   EXPECT_EQ(
       errorsOf(kBad + "user_psd_wrong_spectrum.lua"),
       kBad +
-          "user_psd_wrong_spectrum.lua:3: track.irregularities (psd): spectrum: unknown value "
+          "user_psd_wrong_spectrum.lua:4: track.irregularities (psd): spectrum: unknown value "
           "'ore_b176_lo' (did you mean 'ore_b176_low'?); valid: ore_b176_low, ore_b176_high, "
           "fra_class_1, fra_class_2, fra_class_3, fra_class_4, fra_class_5, fra_class_6, user\n" +
           kBad +
-          "user_psd_wrong_spectrum.lua:3: track.irregularities (psd): vertical gives a user PSD "
+          "user_psd_wrong_spectrum.lua:5: track.irregularities (psd): vertical gives a user PSD "
           "but spectrum is 'ore_b176_lo'; set spectrum = \"user\" or remove it");
 }
 

@@ -128,7 +128,7 @@ TEST(Study, CaseIdsAre64Bit) {
 // otherwise need gigabytes and minutes), naming the sizes and the key that raises the limit.
 TEST(Study, HugeMatrixRefusedWithTheLimit) {
   const std::string what = loadError("huge.lua");
-  EXPECT_NE(what.find(kDir + "huge.lua:4: study: 100000000 cases (100 x 100 x 100 x 100 x 1) "
+  EXPECT_NE(what.find(kDir + "huge.lua:6: study: 100000000 cases (100 x 100 x 100 x 100 x 1) "
                              "exceed max_cases = 10000; raise study.max_cases"),
             std::string::npos)
       << what;

@@ -57,7 +57,7 @@ TEST(TableInterpolationKey, BadValueIsReportedWithFileLine) {
   } catch (const rb::InputError& e) {
     what = e.what();
   }
-  EXPECT_EQ(what, f + ":2: contact: table_interpolation: unknown value 'bilinear' (did you mean "
+  EXPECT_EQ(what, f + ":4: contact: table_interpolation: unknown value 'bilinear' (did you mean "
                       "'linear'?); valid: cubic, linear");
 }
 

@@ -68,8 +68,16 @@ grep -q "^6 problems found; nothing was run.$" "$TMP/e" && ok "problem count" ||
 nok=$(grep -c ",ok," "$TMP/study/summary.csv" 2>/dev/null || true)
 nerr=$(grep -c ",error," "$TMP/study/summary.csv" 2>/dev/null || true)
 [ $rc -eq 0 ] && [ "$nok" = 4 ] && [ "$nerr" = 4 ] && [ -f "$TMP/study/summary.h5" ] \
-  && ok "study runs 8 cases (4 ok, 4 bad options recorded)" || bad "study rc=$rc ok=$nok err=$nerr: $(cat "$TMP/se")"
-grep -q "rtol has no effect with method 'rk4'" "$TMP/study/summary.csv" && ok "study records the reason" || bad "study reason"
+  && ok "study runs 8 cases (4 ok, 4 failing runs recorded)" || bad "study rc=$rc ok=$nok err=$nerr: $(cat "$TMP/se")"
+grep -q "is not a multiple of the" "$TMP/study/summary.csv" && ok "study records the reason" || bad "study reason"
+# A case whose scenario does not load (an option the method does not have) is refused before any
+# run, at the study line where it is written: the study runs nothing and writes nothing.
+sed 's/\["solver.step"\] = 3e-3/["solver.rtol"] = 1e-6/' tests/scenarios/data/study_small.lua >"$TMP/bad_option.lua"
+cp tests/scenarios/data/study_base.lua "$TMP/"
+"$WB" study "$TMP/bad_option.lua" --out "$TMP/study_bad" </dev/null >/dev/null 2>"$TMP/se3"; rc=$?
+[ $rc -eq 1 ] && grep -q "bad_option.lua:7: solver: rtol has no effect with method 'rk4'" "$TMP/se3" \
+  && grep -q "nothing was run" "$TMP/se3" && [ ! -e "$TMP/study_bad" ] \
+  && ok "a case that does not load: refused before any run" || bad "bad-option study rc=$rc: $(cat "$TMP/se3")"
 "$WB" study tests/scenarios/data/study_small.lua --out "$TMP/study" </dev/null >/dev/null 2>"$TMP/se2"
 grep -q "4 already done, running 4" "$TMP/se2" && ok "study resumes" || bad "study resume: $(head -2 "$TMP/se2")"
 

@@ -15,7 +15,8 @@ std::string profileSource(Reader& r, const Node& n, const std::string& key,
   } catch (const InputError& e) {
     // A near miss of the built-in name ("60E1", "S1002") is the likely intent, not a file.
     const std::string hint = closestMatch(v, {builtin});
-    r.error(n, key + ": " + e.diagnostics().front().message +
+    const Node* at = r.value(key);
+    r.error(at != nullptr ? *at : n, key + ": " + e.diagnostics().front().message +
                    (hint.empty() ? "" : " (did you mean the built-in profile '" + hint + "'?)"));
     return builtin;
   }

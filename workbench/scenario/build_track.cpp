@@ -74,7 +74,8 @@ void buildMeasured(const Node& n, const std::string& path, LuaHost& host,
   try {
     out.csv_path = host.resolveDataFile(file, n.loc);
   } catch (const InputError& e) {
-    r.error(n, "file: " + e.diagnostics().front().message);
+    const Node* at = r.value("file");
+    r.error(at != nullptr ? *at : n, "file: " + e.diagnostics().front().message);
   }
 }
 
