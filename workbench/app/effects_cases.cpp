@@ -32,8 +32,13 @@ scenario::StudySpec effectsStudy(const std::string& scenarioPath,
   auto add = [&](std::vector<std::string> offs, std::string label, std::string role) {
     std::vector<std::string> ov = common;
     ov.insert(ov.end(), offs.begin(), offs.end());
-    st.cases.push_back(
-        {scenario::studyCaseId(ov, ""), ov, std::move(label), scenarioPath, std::move(role), {}, {}});
+    st.cases.push_back({scenario::studyCaseId(ov, ""),
+                        ov,
+                        std::move(label),
+                        scenarioPath,
+                        std::move(role),
+                        {},
+                        {}});
   };
   add({}, "full scene", "baseline");
   std::vector<std::string> all;
