@@ -64,6 +64,13 @@ bool number(const std::string& text, double& v) {
   return !text.empty() && end && *end == '\0';
 }
 
+// Bounds that keep the expansion of a study small before it is made: a value or label (every
+// case copies its values and label), the keys of one entry of `cases`, and the text of all cases
+// together (max_cases alone bounds their number, not their size).
+constexpr std::size_t kMaxValueChars = 4096;
+constexpr std::size_t kMaxEntryKeys = 1000;
+constexpr double kMaxStudyTextBytes = 256.0 * 1024 * 1024;
+
 // Study keys inside an entry of `cases` (everything else is a --set path "block.key").
 const std::vector<std::string> kCaseKeys = {"label", "base", "role"};
 const std::vector<std::string> kRoles = {"reference", "reference_check", "reference_same_tables",
@@ -192,13 +199,21 @@ Axes readMatrix(const Node& n, const ErrorFn& err) {
       continue;
     }
     Axis axis{k, {}, {}};
+    std::size_t tooLong = 0;
     for (const auto& item : v.items) {
       std::string t;
       if (!scalarText(item, t))
         err("matrix[\"" + k + "\"]: values must be numbers, strings or booleans");
+      if (t.size() > kMaxValueChars) {
+        ++tooLong;
+        t.resize(kMaxValueChars);
+      }
       axis.values.push_back(t);
       axis.locs.push_back(item.loc);
     }
+    if (tooLong > 0)
+      err("matrix[\"" + k + "\"]: " + std::to_string(tooLong) + " of its values longer than " +
+          std::to_string(kMaxValueChars) + " characters, the most a value may have");
     axes.push_back(std::move(axis));
   }
   return axes;
@@ -244,12 +259,21 @@ std::vector<Variant> readCases(const Node& n, const std::string& studyPath, cons
       }
       Variant var;
       var.loc = item.loc;
+      if (item.fields.size() > kMaxEntryKeys)
+        err(where + ": " + std::to_string(item.fields.size()) + " keys; an entry has at most " +
+            std::to_string(kMaxEntryKeys));
       for (const auto& [k, v] : item.fields) {
         std::string t;
-        if (scalarText(v, t))
-          readCaseKey(where, k, t, v.loc, studyPath, var, err);
-        else
+        if (!scalarText(v, t)) {
           err(where + "[\"" + k + "\"] must be a scalar");
+          continue;
+        }
+        if (t.size() > kMaxValueChars) {
+          err(where + "[\"" + k + "\"]: a value of " + std::to_string(t.size()) +
+              " characters; values (and labels) are at most " + std::to_string(kMaxValueChars));
+          t.resize(kMaxValueChars);
+        }
+        readCaseKey(where, k, t, v.loc, studyPath, var, err);
       }
       variants.push_back(var);
     }
@@ -260,16 +284,38 @@ std::vector<Variant> readCases(const Node& n, const std::string& studyPath, cons
 
 // The number of cases before expanding them: a matrix of a few long axes multiplies to more
 // cases than memory holds (each a list of strings), so it is refused here, with the sizes.
-void checkCaseCount(const Node& n, const Axes& axes, std::size_t variants, long long maxCases) {
+// Their text is bounded too: every case holds its overrides and its label (a label is made of
+// the overrides, or copied), so a long value or many keys times many cases is refused with its
+// estimate before anything is copied.
+void checkCaseCount(const Node& n, const Axes& axes, const std::vector<Variant>& variants,
+                    long long maxCases) {
   const Node* m = n.field("matrix");
   const SourceLoc where = m ? m->loc : n.loc;
-  double count = static_cast<double>(variants);
+  double count = static_cast<double>(variants.size());
+  double caseBytes = 0.0;  // the largest text of one case (overrides, label), estimated
   std::string sizes;
   for (const auto& axis : axes) {
     count *= static_cast<double>(axis.values.size());
     sizes += std::to_string(axis.values.size()) + " x ";
+    std::size_t longest = 0;
+    for (const auto& v : axis.values) longest = std::max(longest, v.size());
+    caseBytes += 2.0 * static_cast<double>(axis.key.size() + longest + 2);
   }
-  sizes += std::to_string(variants);
+  double variantBytes = 0.0;
+  for (const auto& v : variants) {
+    double b = static_cast<double>(v.label.size());
+    for (const auto& o : v.overrides) b += 2.0 * static_cast<double>(o.size() + 1);
+    variantBytes = std::max(variantBytes, b);
+  }
+  caseBytes += variantBytes;
+  sizes += std::to_string(variants.size());
+  if (count <= static_cast<double>(maxCases) && count * caseBytes > kMaxStudyTextBytes)
+    throw InputError(
+        where, "study: " + std::to_string(static_cast<long long>(count)) + " cases of up to " +
+                   formatNumber(caseBytes / 1024.0, 3) + " kB of overrides and label each: about " +
+                   formatNumber(count * caseBytes / (1024.0 * 1024.0), 3) + " MB, more than the " +
+                   formatNumber(kMaxStudyTextBytes / (1024.0 * 1024.0), 3) +
+                   " MB a study may hold; use fewer or shorter values");
   if (count > static_cast<double>(maxCases)) {
     char buf[32];  // a whole number of any size, never in exponent form
     std::snprintf(buf, sizeof buf, "%.0f", count);
@@ -305,18 +351,21 @@ std::vector<Combination> combinations(const Axes& axes) {
 // Labels: overrides shared by every case (e.g. run.distance) are left out of the made ones.
 void labelCases(StudySpec& st, const std::vector<std::string>& given,
                 const std::vector<std::vector<std::string>>& matrixPart) {
-  std::vector<std::string> common;
-  if (st.cases.size() > 1)
-    for (const auto& o : st.cases[0].overrides) {
-      bool all = true;
-      for (const auto& sc : st.cases)
-        all = all && std::find(sc.overrides.begin(), sc.overrides.end(), o) != sc.overrides.end();
-      if (all) common.push_back(o);
+  // Sets, not searches of lists: a case may hold thousands of overrides.
+  std::set<std::string> common;
+  if (st.cases.size() > 1) {
+    common.insert(st.cases[0].overrides.begin(), st.cases[0].overrides.end());
+    for (const auto& sc : st.cases) {
+      if (common.empty()) break;
+      const std::set<std::string> own(sc.overrides.begin(), sc.overrides.end());
+      for (auto it = common.begin(); it != common.end();)
+        it = own.count(*it) != 0 ? std::next(it) : common.erase(it);
     }
+  }
   auto without = [&](const std::vector<std::string>& ov) {
     std::vector<std::string> out;
     for (const auto& o : ov)
-      if (std::find(common.begin(), common.end(), o) == common.end()) out.push_back(o);
+      if (common.count(o) == 0) out.push_back(o);
     return out;
   };
   for (std::size_t i = 0; i < st.cases.size(); ++i) {
@@ -592,7 +641,7 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
   const Axes axes = readMatrix(*n, err);
   const std::vector<Variant> variants = readCases(*n, path, err);
   d.throwIfAny();
-  checkCaseCount(*n, axes, variants.size(), st.max_cases);
+  checkCaseCount(*n, axes, variants, st.max_cases);
 
   // Matrix combinations x explicit variants.
   std::set<std::string> ids;
