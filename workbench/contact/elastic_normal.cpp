@@ -15,8 +15,9 @@ double smoothCurvatureFloor(double x, double m) {
 creep::RelativeCurvatures policyCurvatures(const ElasticPatchGeometry& g,
                                            const ElasticNormalSpec& spec, bool* B_floored) {
   const double A = std::max(g.A, spec.min_curvature);
-  const double B = smoothCurvatureFloor(g.B, spec.min_ratio * A);
-  if (B_floored) *B_floored = B != g.B;
+  const double B0 = spec.span_curvature ? g.B_span : g.B;
+  const double B = smoothCurvatureFloor(B0, spec.min_ratio * A);
+  if (B_floored) *B_floored = B != B0;
   return {A, B};
 }
 
@@ -111,6 +112,45 @@ WheelLoadSolution solveWheelLoad(const ElasticContactSearch& search, const Elast
       if (side == 1) g_lo *= 0.5;
       side = 1;
     }
+  }
+  return sol;
+}
+
+WheelsetLoadSolution solveWheelsetLoad(const ElasticContactSearch& left,
+                                       const ElasticContactSearch& right, const ElasticPose& pose,
+                                       const ElasticNormalSpec& spec, double target_left,
+                                       double target_right, WheelLoad mode, double z_tol) {
+  WheelsetLoadSolution sol;
+  ElasticPose p = pose;
+  // Height difference of the two single-wheel solutions at roll phi (NaN when one failed).
+  auto diff = [&](double phi) {
+    p.phi = phi;
+    sol.left = solveWheelLoad(left, p, spec, target_left, mode);
+    sol.right = solveWheelLoad(right, p, spec, target_right, mode);
+    ++sol.iterations;
+    if (!sol.left.converged || !sol.right.converged) return std::nan("");
+    return sol.left.z - sol.right.z;
+  };
+  // Raising the left wheel by dz at fixed z needs phi ~ dz / (2 Lw): the first secant step.
+  const double span = 2.0 * left.pair().wheel_lw;
+  double phi0 = pose.phi, d0 = diff(phi0);
+  if (!std::isfinite(d0)) return sol;
+  double phi1 = phi0 + d0 / span, d1 = diff(phi1);
+  for (int it = 0; it < 40 && std::isfinite(d1); ++it) {
+    if (std::abs(d1) <= z_tol) {
+      sol.converged = true;
+      sol.phi = phi1;
+      sol.z = 0.5 * (sol.left.z + sol.right.z);
+      return sol;
+    }
+    const double slope = (d1 - d0) / (phi1 - phi0);
+    double next = slope != 0.0 && std::isfinite(slope) ? phi1 - d1 / slope : phi1 + d1 / span;
+    // A contact-point jump makes z(phi) kinked: limit the step to 2 mrad.
+    next = std::clamp(next, phi1 - 2e-3, phi1 + 2e-3);
+    phi0 = phi1;
+    d0 = d1;
+    phi1 = next;
+    d1 = diff(phi1);
   }
   return sol;
 }

@@ -33,6 +33,8 @@ namespace rb::contact {
 struct ElasticNormalSpec {
   creep::Material material{};   // E = 2.1e11 Pa, nu = 0.28
   double min_ratio = 0.1;       // B floored smoothly at min_ratio * A (header comment)
+  bool span_curvature = true;   // use the geometry's B_span (curvature over +-w) instead of the
+                                // pointwise B (header comment)
   double min_curvature = 1e-3;  // [1/m] absolute floor of A (never reached by a wheel)
 };
 
@@ -81,5 +83,20 @@ struct WheelLoadSolution {
 WheelLoadSolution solveWheelLoad(const ElasticContactSearch& search, const ElasticPose& pose,
                                  const ElasticNormalSpec& spec, double target, WheelLoad mode,
                                  double rel_tol = 1e-9);
+
+// Both wheels of a wheelset under their loads: z and the roll phi (y and psi of `pose`) for which
+// each wheel solved alone (solveWheelLoad) needs the same height, i.e. the rigid wheelset carries
+// `target_left` and `target_right` (the Manchester benchmark's own iteration, CONTACT user guide,
+// example mbench_a22). Secant on phi of z_left(phi) - z_right(phi).
+struct WheelsetLoadSolution {
+  bool converged = false;
+  int iterations = 0;
+  double z = 0.0, phi = 0.0;
+  WheelLoadSolution left, right;
+};
+WheelsetLoadSolution solveWheelsetLoad(const ElasticContactSearch& left,
+                                       const ElasticContactSearch& right, const ElasticPose& pose,
+                                       const ElasticNormalSpec& spec, double target_left,
+                                       double target_right, WheelLoad mode, double z_tol = 1e-10);
 
 }  // namespace rb::contact

@@ -190,6 +190,115 @@ int ElasticContactSearch::refine(const ElasticPose& pose, double& s_w, double& s
   return -1;
 }
 
+double ElasticContactSearch::gapAt(const ElasticPose& pose, double s_w, double& s_r,
+                                   double* dgap) const {
+  const LocusPoint w = locus(pose, s_w);
+  const profiles::Profile& rpf = *pair_.rail;
+  const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
+  // Foot point on the rail: (W - R(s_r)) . t_r(s_r) = 0 (Newton, well conditioned while the
+  // distance is far below the rail's radius of curvature).
+  profiles::ProfilePoint r = rpf.at(s_r);
+  for (int it = 0; it < spec_.newton_max_iter; ++it) {
+    const double ry = oy + cb_ * s_r - sb_ * r.h, rz = oz + sb_ * s_r + cb_ * r.h;
+    const double ty = cb_ - sb_ * r.dh, tz = sb_ + cb_ * r.dh;
+    const double dty = -sb_ * r.d2h, dtz = cb_ * r.d2h;
+    const double dy = w.y - ry, dz = w.z - rz;
+    const double f = dy * ty + dz * tz;
+    const double df = -(ty * ty + tz * tz) + dy * dty + dz * dtz;
+    double step = df != 0.0 ? -f / df : 0.0;
+    step = std::clamp(step, -kMaxStep, kMaxStep);
+    s_r = std::clamp(s_r + step, rpf.sMin(), rpf.sMax());
+    r = rpf.at(s_r);
+    if (std::abs(step) <= spec_.newton_tol) break;
+  }
+  const double ry = oy + cb_ * s_r - sb_ * r.h, rz = oz + sb_ * s_r + cb_ * r.h;
+  const double ny = -cb_ * r.dh - sb_, nz = -sb_ * r.dh + cb_;
+  const double nn = std::hypot(ny, nz);
+  if (dgap) *dgap = (w.t_y * ny + w.t_z * nz) / nn;
+  return ((w.y - ry) * ny + (w.z - rz) * nz) / nn;
+}
+
+int ElasticContactSearch::refineBracketed(const ElasticPose& pose, double lo, double hi,
+                                          double& s_w, double& s_r) const {
+  double sr_lo = s_r, sr_hi = s_r, d_lo = 0.0, d_hi = 0.0;
+  (void)gapAt(pose, lo, sr_lo, &d_lo);
+  (void)gapAt(pose, hi, sr_hi, &d_hi);
+  if (!(d_lo < 0.0 && d_hi > 0.0)) return -1;
+  // Illinois regula falsi on d gap / d s_w.
+  int side = 0;
+  for (int it = 1; it <= 4 * spec_.newton_max_iter; ++it) {
+    double s = lo - d_lo * (hi - lo) / (d_hi - d_lo);
+    if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
+    double sr = d_lo < -d_hi ? sr_hi : sr_lo, d = 0.0;
+    (void)gapAt(pose, s, sr, &d);
+    if (hi - lo <= spec_.newton_tol || d == 0.0) {
+      s_w = s;
+      s_r = sr;
+      return it;
+    }
+    if (d < 0.0) {
+      lo = s;
+      d_lo = d;
+      sr_lo = sr;
+      if (side == -1) d_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = s;
+      d_hi = d;
+      sr_hi = sr;
+      if (side == 1) d_lo *= 0.5;
+      side = 1;
+    }
+  }
+  s_w = 0.5 * (lo + hi);
+  (void)gapAt(pose, s_w, s_r);
+  return 4 * spec_.newton_max_iter;
+}
+
+bool ElasticContactSearch::separation(const ElasticPose& pose, double y0, double z0, double ny,
+                                      double nz, double t, double s_w, double s_r,
+                                      double& sep) const {
+  const double ty = nz, tz = -ny;  // a unit tangent (either direction: sep(+-t) is symmetric)
+  const profiles::Profile& rpf = *pair_.rail;
+  const profiles::Profile& wpf = *pair_.wheel;
+  const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
+  // Rail point with (R(s) - R0) . tau = t.
+  double lam_r = 0.0, lam_w = 0.0;
+  bool ok = false;
+  for (int it = 0; it < spec_.newton_max_iter; ++it) {
+    const profiles::ProfilePoint r = rpf.at(s_r);
+    const double ry = oy + cb_ * s_r - sb_ * r.h - y0, rz = oz + sb_ * s_r + cb_ * r.h - z0;
+    const double f = ry * ty + rz * tz - t;
+    const double df = (cb_ - sb_ * r.dh) * ty + (sb_ + cb_ * r.dh) * tz;
+    lam_r = ry * ny + rz * nz;
+    if (std::abs(f) <= spec_.newton_tol) {
+      ok = true;
+      break;
+    }
+    if (df == 0.0) return false;
+    s_r -= std::clamp(f / df, -kMaxStep, kMaxStep);
+    if (!rpf.inside(s_r)) return false;
+  }
+  if (!ok) return false;
+  ok = false;
+  for (int it = 0; it < spec_.newton_max_iter; ++it) {
+    const LocusPoint w = locus(pose, s_w);
+    const double wy = w.y - y0, wz = w.z - z0;
+    const double f = wy * ty + wz * tz - t;
+    const double df = w.t_y * ty + w.t_z * tz;
+    lam_w = wy * ny + wz * nz;
+    if (std::abs(f) <= spec_.newton_tol) {
+      ok = true;
+      break;
+    }
+    if (df == 0.0) return false;
+    s_w -= std::clamp(f / df, -kMaxStep, kMaxStep);
+    if (!wpf.inside(s_w)) return false;
+  }
+  sep = lam_w - lam_r;
+  return ok;
+}
+
 ElasticPatchGeometry ElasticContactSearch::describe(const ElasticPose& pose, double s_w,
                                                     double s_r) const {
   const LocusPoint w = locus(pose, s_w);
@@ -219,6 +328,13 @@ ElasticPatchGeometry ElasticContactSearch::describe(const ElasticPose& pose, dou
   // hertz.hpp: A = (k_wheel,x + k_rail,x) / 2 with a straight rail, B = (k_wheel,y + k_rail,y) / 2.
   g.A = 0.5 * g.k_wheel_rolling;
   g.B = 0.5 * (g.k_wheel_trans + g.k_rail_trans);
+  g.B_span = g.B;
+  const double w2 = spec_.curvature_span;
+  double sp = 0.0, sm = 0.0;
+  if (w2 > 0.0 && separation(pose, g.y, g.z, g.n_y, g.n_z, w2, s_w, s_r, sp) &&
+      separation(pose, g.y, g.z, g.n_y, g.n_z, -w2, s_w, s_r, sm)) {
+    g.B_span = (sp + sm + 2.0 * g.gap_depth) / (2.0 * w2 * w2);
+  }
   return g;
 }
 
@@ -236,24 +352,34 @@ void ElasticContactSearch::refineCandidates(const ElasticPose& pose, ElasticWhee
     double s_w = s_[i], s_r = 0.0;
     (void)sampledGap(t, i, s_r);
     const double s_r0 = s_r;
+    // The minimum lies between the neighbouring samples (the gap proxy and the exact gap differ
+    // little); a refinement that leaves that interval went to another minimum.
+    const double lo = s_[i > 0 ? i - 1 : i], hi = s_[i + 1 < s_.size() ? i + 1 : i];
+    auto inside = [&](double v) { return v >= lo - 1e-12 && v <= hi + 1e-12; };
     int it = refine(pose, s_w, s_r);
+    if (it < 0 || !inside(s_w)) {
+      s_w = s_[i];
+      s_r = s_r0;
+      it = refineBracketed(pose, lo, hi, s_w, s_r);
+    }
     // A failed refinement may restart from the nearest seed patch (seeds never add patches).
     if (it < 0 && seed) {
-      double best = kInf;
       for (int p = 0; p < seed->count; ++p) {
         const ElasticPatchGeometry& sp = seed->patch[static_cast<std::size_t>(p)];
-        const double d = std::abs(sp.s_w - s_[i]);
-        if (d < best && d < 4.0 * spec_.sample_step) {
-          best = d;
-          s_w = sp.s_w;
-          s_r = sp.s_r;
+        if (!inside(sp.s_w)) continue;
+        double sw = sp.s_w, sr = sp.s_r;
+        const int n = refine(pose, sw, sr);
+        if (n >= 0 && inside(sw)) {
+          it = n;
+          s_w = sw;
+          s_r = sr;
+          break;
         }
       }
-      if (best < kInf) it = refine(pose, s_w, s_r);
     }
     out.newton_iterations += std::max(it, 0);
     // A refined point must stay near its sampled minimum (else it belongs to another minimum).
-    if (it >= 0 && std::abs(s_w - s_[i]) <= 2.0 * spec_.sample_step) {
+    if (it >= 0 && inside(s_w)) {
       const ElasticPatchGeometry g = describe(pose, s_w, s_r);
       ws.depth[k] = -g.gap_depth;
       ws.sw[k] = s_w;

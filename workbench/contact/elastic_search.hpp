@@ -39,7 +39,11 @@
 // of that sampled gap below spec.candidate_gap is refined by Newton on (s_w, s_r):
 //   (W(s_w) - R(s_r)) . t_r(s_r) = 0   (the wheel point lies on the rail normal through R)
 //   n_w(s_w) x n_r(s_r) = 0            (the normals are parallel)
-// and each refined minimum with penetration delta_g = -(W - R) . n_r > 0 is a patch.
+// and each refined minimum with penetration delta_g = -(W - R) . n_r > 0 is a patch. Where that
+// Newton fails or leaves the sample interval around its minimum (near-conformal contact: the S1002
+// throat is an R13 arc against the R13 gauge corner of 60E1, the normals stay parallel along it
+// and the 2x2 system is singular), the minimum is found by a safeguarded 1-D search of the exact
+// gap over the two sample intervals around it (refineBracketed).
 // Seeds (a previous result, a table) only add Newton starting points: the set of patches and
 // their values do not depend on them (tested).
 //
@@ -94,9 +98,12 @@ struct ElasticSearchSpec {
   EulerOrder angles = EulerOrder::RollYaw;
   double sample_step = 0.25e-3;   // [m] wheel sampling of the scan
   double candidate_gap = 0.1e-3;  // [m] sampled minima below this gap are refined
-  double min_approach = 1e-10;    // [m] patches with a smaller (prominence-limited) delta dropped
-  double same_point = 1e-6;       // [m] refined minima closer than this on the wheel are one
-  double newton_tol = 1e-13;      // [m] residual tolerance of the refinement
+  // [m] half-width over which B_span is measured (the lateral semi-axes of patches are
+  // 0.35-5 mm); 0: B_span = B.
+  double curvature_span = 1.0e-3;
+  double min_approach = 1e-10;  // [m] patches with a smaller (prominence-limited) delta dropped
+  double same_point = 1e-6;     // [m] refined minima closer than this on the wheel are one
+  double newton_tol = 1e-13;    // [m] residual tolerance of the refinement
   int newton_max_iter = 30;
 };
 
@@ -116,7 +123,12 @@ struct ElasticPatchGeometry {
   double k_wheel_rolling = 0.0;  // [1/m] cos(alpha) / r (Meusnier)
   double k_rail_trans = 0.0;     // [1/m]
   double A = 0.0, B = 0.0;       // [1/m] relative curvatures, rolling and lateral (hertz.hpp)
-  bool refined = true;           // Newton converged (false: the sampled point is used)
+  // [1/m] lateral relative curvature measured over the span +-w of ElasticSearchSpec::
+  // curvature_span: B_span = (sep(w) + sep(-w) - 2 sep(0)) / (2 w^2), sep(t) the normal
+  // separation of the two profiles at tangent offset t (equals B as w -> 0; B where a side
+  // could not be measured).
+  double B_span = 0.0;
+  bool refined = true;  // Newton converged (false: the sampled point is used)
 };
 
 inline constexpr int kMaxElasticPatches = 8;
@@ -171,8 +183,20 @@ class ElasticContactSearch {
   // Geometry of the contact at given (s_w, s_r) (no solve); approach = gap_depth.
   ElasticPatchGeometry describe(const ElasticPose& pose, double s_w, double s_r) const;
 
+  // Normal separation of wheel and rail at tangent offset t from the rail point (y0, z0) with unit
+  // normal (ny, nz) (false when a side cannot be reached).
+  bool separation(const ElasticPose& pose, double y0, double z0, double ny, double nz, double t,
+                  double s_w, double s_r, double& sep) const;
   // Newton refinement from (s_w, s_r); returns iterations (< 0: not converged).
   int refine(const ElasticPose& pose, double& s_w, double& s_r) const;
+  // Signed distance of the locus point of s_w to the rail (its foot point s_r, updated from the
+  // value passed in) and its derivative d gap / d s_w = t_w . n_r (envelope theorem).
+  double gapAt(const ElasticPose& pose, double s_w, double& s_r, double* dgap = nullptr) const;
+  // Safeguarded 1-D minimisation of gapAt over [lo, hi] (a root of d gap / d s_w bracketed by
+  // the ends), for where the 2-D Newton is ill-conditioned (near-conformal contacts, B ~ 0).
+  // Returns iterations, < 0 when the ends do not bracket a minimum.
+  int refineBracketed(const ElasticPose& pose, double lo, double hi, double& s_w,
+                      double& s_r) const;
 
  private:
   struct PoseTrig;
