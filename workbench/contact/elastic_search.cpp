@@ -104,7 +104,10 @@ ElasticContactSearch::ElasticContactSearch(WheelRailPair pair, ElasticSearchSpec
 
 ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const ElasticPose& pose,
                                                              double s_w) const {
-  const PoseTrig t(pose, pair_, sigma_, spec_.angles);
+  return locus(PoseTrig(pose, pair_, sigma_, spec_.angles), s_w);
+}
+
+ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const PoseTrig& t, double s_w) const {
   const profiles::ProfilePoint w = pair_.wheel->at(s_w);
   double st = 0.0, ct = 1.0, wq = 1.0;
   t.theta(w.dh, st, ct, wq);
@@ -151,12 +154,12 @@ double ElasticContactSearch::sampledGap(const PoseTrig& t, std::size_t i, double
   return (v - rp.h) / std::sqrt(1.0 + rp.dh * rp.dh);
 }
 
-int ElasticContactSearch::refine(const ElasticPose& pose, double& s_w, double& s_r) const {
+int ElasticContactSearch::refine(const PoseTrig& t, double& s_w, double& s_r) const {
   const profiles::Profile& wp = *pair_.wheel;
   const profiles::Profile& rpf = *pair_.rail;
   const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
   for (int it = 0; it < spec_.newton_max_iter; ++it) {
-    const LocusPoint w = locus(pose, s_w);
+    const LocusPoint w = locus(t, s_w);
     const profiles::ProfilePoint r = rpf.at(s_r);
     const double ry = oy + cb_ * s_r - sb_ * r.h, rz = oz + sb_ * s_r + cb_ * r.h;
     const double ty = cb_ - sb_ * r.dh, tz = sb_ + cb_ * r.dh;      // rail tangent
@@ -190,9 +193,8 @@ int ElasticContactSearch::refine(const ElasticPose& pose, double& s_w, double& s
   return -1;
 }
 
-double ElasticContactSearch::gapAt(const ElasticPose& pose, double s_w, double& s_r,
-                                   double* dgap) const {
-  const LocusPoint w = locus(pose, s_w);
+double ElasticContactSearch::gapAt(const PoseTrig& t, double s_w, double& s_r, double* dgap) const {
+  const LocusPoint w = locus(t, s_w);
   const profiles::Profile& rpf = *pair_.rail;
   const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
   // Foot point on the rail: (W - R(s_r)) . t_r(s_r) = 0 (Newton, well conditioned while the
@@ -218,11 +220,11 @@ double ElasticContactSearch::gapAt(const ElasticPose& pose, double s_w, double& 
   return ((w.y - ry) * ny + (w.z - rz) * nz) / nn;
 }
 
-int ElasticContactSearch::refineBracketed(const ElasticPose& pose, double lo, double hi,
-                                          double& s_w, double& s_r) const {
+int ElasticContactSearch::refineBracketed(const PoseTrig& t, double lo, double hi, double& s_w,
+                                          double& s_r) const {
   double sr_lo = s_r, sr_hi = s_r, d_lo = 0.0, d_hi = 0.0;
-  (void)gapAt(pose, lo, sr_lo, &d_lo);
-  (void)gapAt(pose, hi, sr_hi, &d_hi);
+  (void)gapAt(t, lo, sr_lo, &d_lo);
+  (void)gapAt(t, hi, sr_hi, &d_hi);
   if (!(d_lo < 0.0 && d_hi > 0.0)) return -1;
   // Illinois regula falsi on d gap / d s_w.
   int side = 0;
@@ -230,7 +232,7 @@ int ElasticContactSearch::refineBracketed(const ElasticPose& pose, double lo, do
     double s = lo - d_lo * (hi - lo) / (d_hi - d_lo);
     if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
     double sr = d_lo < -d_hi ? sr_hi : sr_lo, d = 0.0;
-    (void)gapAt(pose, s, sr, &d);
+    (void)gapAt(t, s, sr, &d);
     if (hi - lo <= spec_.newton_tol || d == 0.0) {
       s_w = s;
       s_r = sr;
@@ -251,24 +253,23 @@ int ElasticContactSearch::refineBracketed(const ElasticPose& pose, double lo, do
     }
   }
   s_w = 0.5 * (lo + hi);
-  (void)gapAt(pose, s_w, s_r);
+  (void)gapAt(t, s_w, s_r);
   return 4 * spec_.newton_max_iter;
 }
 
-bool ElasticContactSearch::separation(const ElasticPose& pose, double y0, double z0, double ny,
-                                      double nz, double t, double s_w, double s_r,
-                                      double& sep) const {
-  const double ty = nz, tz = -ny;  // a unit tangent (either direction: sep(+-t) is symmetric)
+bool ElasticContactSearch::separation(const PoseTrig& t, double y0, double z0, double ny, double nz,
+                                      double off, double s_w, double s_r, double& sep) const {
+  const double ty = nz, tz = -ny;  // a unit tangent (either direction: sep(+-off) is symmetric)
   const profiles::Profile& rpf = *pair_.rail;
   const profiles::Profile& wpf = *pair_.wheel;
   const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
-  // Rail point with (R(s) - R0) . tau = t.
+  // Rail point with (R(s) - R0) . tau = off.
   double lam_r = 0.0, lam_w = 0.0;
   bool ok = false;
   for (int it = 0; it < spec_.newton_max_iter; ++it) {
     const profiles::ProfilePoint r = rpf.at(s_r);
     const double ry = oy + cb_ * s_r - sb_ * r.h - y0, rz = oz + sb_ * s_r + cb_ * r.h - z0;
-    const double f = ry * ty + rz * tz - t;
+    const double f = ry * ty + rz * tz - off;
     const double df = (cb_ - sb_ * r.dh) * ty + (sb_ + cb_ * r.dh) * tz;
     lam_r = ry * ny + rz * nz;
     if (std::abs(f) <= spec_.newton_tol) {
@@ -282,9 +283,9 @@ bool ElasticContactSearch::separation(const ElasticPose& pose, double y0, double
   if (!ok) return false;
   ok = false;
   for (int it = 0; it < spec_.newton_max_iter; ++it) {
-    const LocusPoint w = locus(pose, s_w);
+    const LocusPoint w = locus(t, s_w);
     const double wy = w.y - y0, wz = w.z - z0;
-    const double f = wy * ty + wz * tz - t;
+    const double f = wy * ty + wz * tz - off;
     const double df = w.t_y * ty + w.t_z * tz;
     lam_w = wy * ny + wz * nz;
     if (std::abs(f) <= spec_.newton_tol) {
@@ -299,9 +300,9 @@ bool ElasticContactSearch::separation(const ElasticPose& pose, double y0, double
   return ok;
 }
 
-ElasticPatchGeometry ElasticContactSearch::describe(const ElasticPose& pose, double s_w,
+ElasticPatchGeometry ElasticContactSearch::describe(const PoseTrig& t, double s_w,
                                                     double s_r) const {
-  const LocusPoint w = locus(pose, s_w);
+  const LocusPoint w = locus(t, s_w);
   const profiles::ProfilePoint wp = pair_.wheel->at(s_w);
   const profiles::ProfilePoint r = pair_.rail->at(s_r);
   const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
@@ -331,8 +332,8 @@ ElasticPatchGeometry ElasticContactSearch::describe(const ElasticPose& pose, dou
   g.B_span = g.B;
   const double w2 = spec_.curvature_span;
   double sp = 0.0, sm = 0.0;
-  if (w2 > 0.0 && separation(pose, g.y, g.z, g.n_y, g.n_z, w2, s_w, s_r, sp) &&
-      separation(pose, g.y, g.z, g.n_y, g.n_z, -w2, s_w, s_r, sm)) {
+  if (w2 > 0.0 && separation(t, g.y, g.z, g.n_y, g.n_z, w2, s_w, s_r, sp) &&
+      separation(t, g.y, g.z, g.n_y, g.n_z, -w2, s_w, s_r, sm)) {
     g.B_span = (sp + sm + 2.0 * g.gap_depth) / (2.0 * w2 * w2);
   }
   return g;
@@ -356,11 +357,11 @@ void ElasticContactSearch::refineCandidates(const ElasticPose& pose, ElasticWhee
     // little); a refinement that leaves that interval went to another minimum.
     const double lo = s_[i > 0 ? i - 1 : i], hi = s_[i + 1 < s_.size() ? i + 1 : i];
     auto inside = [&](double v) { return v >= lo - 1e-12 && v <= hi + 1e-12; };
-    int it = refine(pose, s_w, s_r);
+    int it = refine(t, s_w, s_r);
     if (it < 0 || !inside(s_w)) {
       s_w = s_[i];
       s_r = s_r0;
-      it = refineBracketed(pose, lo, hi, s_w, s_r);
+      it = refineBracketed(t, lo, hi, s_w, s_r);
     }
     // A failed refinement may restart from the nearest seed patch (seeds never add patches).
     if (it < 0 && seed) {
@@ -368,7 +369,7 @@ void ElasticContactSearch::refineCandidates(const ElasticPose& pose, ElasticWhee
         const ElasticPatchGeometry& sp = seed->patch[static_cast<std::size_t>(p)];
         if (!inside(sp.s_w)) continue;
         double sw = sp.s_w, sr = sp.s_r;
-        const int n = refine(pose, sw, sr);
+        const int n = refine(t, sw, sr);
         if (n >= 0 && inside(sw)) {
           it = n;
           s_w = sw;
@@ -380,8 +381,8 @@ void ElasticContactSearch::refineCandidates(const ElasticPose& pose, ElasticWhee
     out.newton_iterations += std::max(it, 0);
     // A refined point must stay near its sampled minimum (else it belongs to another minimum).
     if (it >= 0 && inside(s_w)) {
-      const ElasticPatchGeometry g = describe(pose, s_w, s_r);
-      ws.depth[k] = -g.gap_depth;
+      double sr = s_r;
+      ws.depth[k] = gapAt(t, s_w, sr);
       ws.sw[k] = s_w;
       ws.sr[k] = s_r;
       ws.ok[k] = 1;
@@ -406,6 +407,7 @@ void ElasticContactSearch::refineCandidates(const ElasticPose& pose, ElasticWhee
 
 void ElasticContactSearch::collectPatches(const ElasticPose& pose, ElasticWheelGeometry& out,
                                           ElasticSearchWorkspace& ws) const {
+  const PoseTrig t(pose, pair_, sigma_, spec_.angles);
   const std::size_t nc = ws.minima.size();
   // Prominence: the lowest ridge over which minimum k reaches a deeper minimum.
   auto deeper = [&](std::size_t j, std::size_t k) {
@@ -434,7 +436,7 @@ void ElasticContactSearch::collectPatches(const ElasticPose& pose, ElasticWheelG
     const double delta_g = -ws.depth[k];
     const double delta = std::min(delta_g, ridge - ws.depth[k]);
     if (!(delta > spec_.min_approach)) continue;
-    ElasticPatchGeometry g = describe(pose, ws.sw[k], ws.sr[k]);
+    ElasticPatchGeometry g = describe(t, ws.sw[k], ws.sr[k]);
     if (ws.ok[k] == 2) {
       g.refined = false;
       g.gap_depth = delta_g;
@@ -461,9 +463,23 @@ void ElasticContactSearch::search(const ElasticPose& pose, ElasticWheelGeometry&
   out = ElasticWheelGeometry{};
   const PoseTrig t(pose, pair_, sigma_, spec_.angles);
   const std::size_t n = s_.size();
-  ws.gap.resize(n);
+  ws.gap.assign(n, kInf);
   out.min_gap = kInf;
-  for (std::size_t i = 0; i < n; ++i) {
+  // Only the wheel samples above the rail matter: to first order the rail parameter below wheel
+  // sample s is s + offset (offset from y, Lw, Lr and the roll times the radius); the margin
+  // covers the neglected terms (flange height x roll, the yaw's cosine, the rail inclination x
+  // height: together below 2 mm for |phi|, |psi| < 0.05 and beta < 0.05), and every sample in the
+  // range is still checked exactly (sampledGap returns +inf off the rail).
+  constexpr double kMargin = 5e-3;  // [m]
+  const double offset = t.y + sigma_ * pair_.wheel_lw - t.oy - t.r[1][2] * h_.front();
+  const double s_lo = pair_.rail->sMin() - offset - kMargin;
+  const double s_hi = pair_.rail->sMax() - offset + kMargin;
+  const double step = spec_.sample_step, s0 = s_.front();
+  const auto i_lo = static_cast<std::size_t>(
+      std::clamp(std::floor((s_lo - s0) / step), 0.0, static_cast<double>(n - 1)));
+  const auto i_hi = static_cast<std::size_t>(
+      std::clamp(std::ceil((s_hi - s0) / step), 0.0, static_cast<double>(n - 1)));
+  for (std::size_t i = i_lo; i <= i_hi; ++i) {
     double s_r = 0.0;
     ws.gap[i] = sampledGap(t, i, s_r);
     out.min_gap = std::min(out.min_gap, ws.gap[i]);
@@ -487,6 +503,25 @@ ElasticWheelGeometry ElasticContactSearch::search(const ElasticPose& pose,
   ElasticSearchWorkspace ws;
   search(pose, out, ws, seed);
   return out;
+}
+
+int ElasticContactSearch::refine(const ElasticPose& pose, double& s_w, double& s_r) const {
+  return refine(PoseTrig(pose, pair_, sigma_, spec_.angles), s_w, s_r);
+}
+
+double ElasticContactSearch::gapAt(const ElasticPose& pose, double s_w, double& s_r,
+                                   double* dgap) const {
+  return gapAt(PoseTrig(pose, pair_, sigma_, spec_.angles), s_w, s_r, dgap);
+}
+
+int ElasticContactSearch::refineBracketed(const ElasticPose& pose, double lo, double hi,
+                                          double& s_w, double& s_r) const {
+  return refineBracketed(PoseTrig(pose, pair_, sigma_, spec_.angles), lo, hi, s_w, s_r);
+}
+
+ElasticPatchGeometry ElasticContactSearch::describe(const ElasticPose& pose, double s_w,
+                                                    double s_r) const {
+  return describe(PoseTrig(pose, pair_, sigma_, spec_.angles), s_w, s_r);
 }
 
 }  // namespace rb::contact

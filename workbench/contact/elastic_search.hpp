@@ -183,10 +183,6 @@ class ElasticContactSearch {
   // Geometry of the contact at given (s_w, s_r) (no solve); approach = gap_depth.
   ElasticPatchGeometry describe(const ElasticPose& pose, double s_w, double s_r) const;
 
-  // Normal separation of wheel and rail at tangent offset t from the rail point (y0, z0) with unit
-  // normal (ny, nz) (false when a side cannot be reached).
-  bool separation(const ElasticPose& pose, double y0, double z0, double ny, double nz, double t,
-                  double s_w, double s_r, double& sep) const;
   // Newton refinement from (s_w, s_r); returns iterations (< 0: not converged).
   int refine(const ElasticPose& pose, double& s_w, double& s_r) const;
   // Signed distance of the locus point of s_w to the rail (its foot point s_r, updated from the
@@ -200,6 +196,16 @@ class ElasticContactSearch {
 
  private:
   struct PoseTrig;
+  // The same as the public functions, with the pose's rotation computed once per search.
+  LocusPoint locus(const PoseTrig& t, double s_w) const;
+  double gapAt(const PoseTrig& t, double s_w, double& s_r, double* dgap = nullptr) const;
+  int refine(const PoseTrig& t, double& s_w, double& s_r) const;
+  int refineBracketed(const PoseTrig& t, double lo, double hi, double& s_w, double& s_r) const;
+  ElasticPatchGeometry describe(const PoseTrig& t, double s_w, double s_r) const;
+  // Normal separation of wheel and rail at tangent offset t from the rail point (y0, z0) with unit
+  // normal (ny, nz) (false when a side cannot be reached).
+  bool separation(const PoseTrig& t, double y0, double z0, double ny, double nz, double off,
+                  double s_w, double s_r, double& sep) const;
   double sampledGap(const PoseTrig& t, std::size_t i, double& s_r) const;
   void refineCandidates(const ElasticPose& pose, ElasticWheelGeometry& out,
                         ElasticSearchWorkspace& ws, const ElasticWheelGeometry* seed) const;

@@ -1,0 +1,92 @@
+// Timing of the elastic contact search (elastic_search.hpp) and the Hertz normal problem per
+// wheel (elastic_normal.hpp), S1002 on UIC60 1:40 (the Manchester benchmark profiles), for
+// docs/elastic_contact.md ("Cost"). Not a test; run: ./build/tests/contact/bench_elastic
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "workbench/contact/elastic_normal.hpp"
+#include "workbench/contact/elastic_search.hpp"
+#include "workbench/profiles/positioning.hpp"
+#include "workbench/profiles/profile_io.hpp"
+
+namespace {
+
+using namespace rb::contact;
+using Clock = std::chrono::steady_clock;
+
+template <class F>
+double nsPerCall(F f, int n) {
+  f(0);  // warm up
+  const auto t0 = Clock::now();
+  for (int i = 0; i < n; ++i) f(i);
+  return std::chrono::duration<double, std::nano>(Clock::now() - t0).count() / n;
+}
+
+volatile double g_sink = 0.0;
+
+}  // namespace
+
+int main() {
+  const std::string src = RB_SOURCE_DIR;
+  rb::profiles::ProfileReadOptions wo;
+  wo.r0 = 0.46;
+  auto wheel = std::make_shared<const rb::profiles::Profile>(
+      rb::profiles::readSimpackProfile(src + "/profiles/MBench_S1002_v3.prw", wo));
+  auto rail = std::make_shared<const rb::profiles::Profile>(
+      rb::profiles::readSimpackProfile(src + "/profiles/MBench_UIC60_v3.prr"));
+  WheelRailPair p;
+  p.side = Side::Right;
+  p.wheel = std::make_shared<const rb::profiles::Profile>(wheel->mirrored());
+  p.rail = std::make_shared<const rb::profiles::Profile>(rail->mirrored());
+  p.wheel_lw = 0.75;
+  p.rail_lr =
+      0.7175 + std::abs(rb::profiles::gaugePoint(*rail, rb::profiles::Side::Left, 0.0, 0.014).y);
+  p.beta = 0.0;
+  std::printf("elastic contact search, one wheel (S1002 on UIC60 1:40, benchmark profiles)\n");
+  std::printf(
+      "budget: case 3 at 30x real time = 8 wheels x 4000 evaluations per simulated "
+      "second x 30 = 9.6e5 wheel evaluations per second: about 1000 ns per wheel\n");
+  const ElasticNormalSpec nspec;
+  for (double step : {0.25e-3, 0.5e-3, 1.0e-3}) {
+    ElasticSearchSpec spec;
+    spec.sample_step = step;
+    const ElasticContactSearch s(p, spec);
+    std::printf("sample step %.2f mm:\n", step * 1e3);
+    for (double y : {0.0, 3e-3, 4.9e-3, 8e-3}) {
+      ElasticPose pose{-y, 0.46, 0.0, -0.01};
+      const WheelLoadSolution load = solveWheelLoad(s, pose, nspec, 1e4, WheelLoad::Vertical);
+      pose.z = load.z;
+      ElasticSearchWorkspace ws;
+      ElasticWheelGeometry g;
+      ElasticWheelContact c;
+      const int n = 20000;
+      // A small oscillation of y so that the calls are not identical.
+      auto poseAt = [&](int i) {
+        ElasticPose q = pose;
+        q.y += 1e-6 * std::sin(0.01 * i);
+        return q;
+      };
+      const double t_search = nsPerCall(
+          [&](int i) {
+            s.search(poseAt(i), g, ws);
+            g_sink = g_sink + g.patch[0].gap_depth;
+          },
+          n);
+      const double t_full = nsPerCall(
+          [&](int i) {
+            elasticWheelContact(s, poseAt(i), nspec, c, ws);
+            g_sink = g_sink + c.force_z;
+          },
+          n);
+      std::printf(
+          "  y = %4.1f mm (%d patch%s, %zu candidate minima, %d refinement iterations): "
+          "search %6.0f ns, search + Hertz %6.0f ns\n",
+          y * 1e3, c.geometry.count, c.geometry.count == 1 ? "" : "es", ws.minima.size(),
+          c.geometry.newton_iterations, t_search, t_full);
+    }
+  }
+  return 0;
+}
