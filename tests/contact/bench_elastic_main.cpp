@@ -1,6 +1,7 @@
 // Timing of the elastic contact search (elastic_search.hpp) and the Hertz normal problem per
 // wheel (elastic_normal.hpp), S1002 on UIC60 1:40 (the Manchester benchmark profiles), for
 // docs/elastic_contact.md ("Cost"). Not a test; run: ./build/tests/contact/bench_elastic
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -17,12 +18,19 @@ namespace {
 using namespace rb::contact;
 using Clock = std::chrono::steady_clock;
 
+// The fastest of 5 runs of n calls (the machine is shared: the minimum is the cost, the rest is
+// other load).
 template <class F>
 double nsPerCall(F f, int n) {
   f(0);  // warm up
-  const auto t0 = Clock::now();
-  for (int i = 0; i < n; ++i) f(i);
-  return std::chrono::duration<double, std::nano>(Clock::now() - t0).count() / n;
+  double best = 1e300;
+  for (int rep = 0; rep < 5; ++rep) {
+    const auto t0 = Clock::now();
+    for (int i = 0; i < n; ++i) f(i);
+    best = std::min(best,
+                    std::chrono::duration<double, std::nano>(Clock::now() - t0).count() / n);
+  }
+  return best;
 }
 
 volatile double g_sink = 0.0;
@@ -62,7 +70,7 @@ int main() {
       ElasticSearchWorkspace ws;
       ElasticWheelGeometry g;
       ElasticWheelContact c;
-      const int n = 20000;
+      const int n = 4000;
       // A small oscillation of y so that the calls are not identical.
       auto poseAt = [&](int i) {
         ElasticPose q = pose;

@@ -409,32 +409,37 @@ void ElasticContactSearch::collectPatches(const ElasticPose& pose, ElasticWheelG
                                           ElasticSearchWorkspace& ws) const {
   const PoseTrig t(pose, pair_, sigma_, spec_.angles);
   const std::size_t nc = ws.minima.size();
-  // Prominence: the lowest ridge over which minimum k reaches a deeper minimum.
-  auto deeper = [&](std::size_t j, std::size_t k) {
-    return ws.depth[j] < ws.depth[k] || (ws.depth[j] == ws.depth[k] && j < k);
-  };
+  // Shared overlap (header comment): the lowest ridge r to a neighbouring minimum j; the depths
+  // below it, e_k and e_j, are each minimum's own; the common part max(0, -r) is split between
+  // the two in proportion to e_k and e_j, so that nothing jumps when two minima swap depth, merge
+  // at a fold (e_k -> 0) or separate (r -> 0).
   for (std::size_t k = 0; k < nc; ++k) {
     if (!ws.ok[k] || !(ws.depth[k] < 0.0)) continue;
     double ridge = kInf;
+    std::size_t partner = k;
     for (int dir : {-1, 1}) {
-      double run = -kInf;
-      bool found = false;
-      for (auto j = static_cast<std::ptrdiff_t>(k) + dir;
-           j >= 0 && j < static_cast<std::ptrdiff_t>(nc); j += dir) {
-        const auto ju = static_cast<std::size_t>(j);
-        const int a = std::min(ws.minima[k], ws.minima[ju]);
-        const int b = std::max(ws.minima[k], ws.minima[ju]);
-        run = -kInf;
-        for (int i = a; i <= b; ++i) run = std::max(run, ws.gap[static_cast<std::size_t>(i)]);
-        if (ws.ok[ju] && deeper(ju, k)) {
-          found = true;
-          break;
-        }
+      auto j = static_cast<std::ptrdiff_t>(k) + dir;
+      while (j >= 0 && j < static_cast<std::ptrdiff_t>(nc) && !ws.ok[static_cast<std::size_t>(j)]) {
+        j += dir;
       }
-      if (found) ridge = std::min(ridge, run);
+      if (j < 0 || j >= static_cast<std::ptrdiff_t>(nc)) continue;
+      const auto ju = static_cast<std::size_t>(j);
+      const int a = std::min(ws.minima[k], ws.minima[ju]);
+      const int b = std::max(ws.minima[k], ws.minima[ju]);
+      double run = -kInf;
+      for (int i = a; i <= b; ++i) run = std::max(run, ws.gap[static_cast<std::size_t>(i)]);
+      if (run < ridge) {
+        ridge = run;
+        partner = ju;
+      }
     }
     const double delta_g = -ws.depth[k];
-    const double delta = std::min(delta_g, ridge - ws.depth[k]);
+    double delta = delta_g;
+    if (partner != k && ridge < 0.0) {
+      const double e_k = ridge - ws.depth[k], e_j = std::max(ridge - ws.depth[partner], 0.0);
+      const double w = e_k + e_j > 0.0 ? e_k / (e_k + e_j) : 0.5;
+      delta = std::min(delta_g, e_k - w * ridge);
+    }
     if (!(delta > spec_.min_approach)) continue;
     ElasticPatchGeometry g = describe(t, ws.sw[k], ws.sr[k]);
     if (ws.ok[k] == 2) {

@@ -47,14 +47,18 @@
 // Seeds (a previous result, a table) only add Newton starting points: the set of patches and
 // their values do not depend on them (tested).
 //
-// Patch birth and death are continuous. A patch is born with delta = 0. A shallow minimum can
-// also die by merging with its neighbouring gap maximum (a fold) while it still penetrates; to
-// keep the force continuous there, the approach used by the normal problem is limited by the
-// minimum's PROMINENCE: delta = min(delta_g, ridge - gap_min), ridge the highest gap on the
-// lowest path to a deeper minimum (topographic prominence; infinite for the deepest one). Two
-// penetration zones separated by a gap above zero keep their full delta_g; a minimum inside the
-// zone of a deeper one only carries the depth below the ridge between them (the rest of its
-// overlap belongs to the deeper patch), and at a fold that depth goes to zero.
+// Patch birth and death are continuous. A patch is born with delta = 0. But two penetration
+// zones can also merge (the gap ridge between two minima sinks below zero), swap which one is
+// deeper, or a shallow minimum can die by merging with the gap maximum beside it (a fold) while it
+// still penetrates. The approach given to the normal problem shares the overlap between
+// neighbouring minima: with r the lowest ridge (highest sampled gap on the path) to a neighbouring
+// minimum j, e_k = r - gap_k and e_j = r - gap_j the depths of the two below it,
+//   delta_k = min(delta_g, e_k + max(0, -r) e_k / (e_k + e_j)).
+// Zones separated by a gap above zero keep their full delta_g; merged zones split the common part
+// max(0, -r) in proportion to their own depths, so nothing jumps when two minima swap depth, and
+// a minimum dying at a fold (e_k -> 0) takes its force to zero. (With three or more mutually
+// penetrating minima the neighbour with the lowest ridge is used; the share jumps where two
+// ridges are equal: not seen on S1002/UIC60.)
 #include <array>
 #include <memory>
 #include <vector>
