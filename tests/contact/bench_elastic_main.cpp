@@ -27,8 +27,7 @@ double nsPerCall(F f, int n) {
   for (int rep = 0; rep < 5; ++rep) {
     const auto t0 = Clock::now();
     for (int i = 0; i < n; ++i) f(i);
-    best = std::min(best,
-                    std::chrono::duration<double, std::nano>(Clock::now() - t0).count() / n);
+    best = std::min(best, std::chrono::duration<double, std::nano>(Clock::now() - t0).count() / n);
   }
   return best;
 }
@@ -95,6 +94,34 @@ int main() {
           y * 1e3, c.geometry.count, c.geometry.count == 1 ? "" : "es", ws.minima.size(),
           c.geometry.newton_iterations, t_search, t_full);
     }
+  }
+  // Parts, at the flange contact (y = 8 mm) and on the tread (y = 3 mm), default spec.
+  const ElasticContactSearch s(p);
+  for (double y : {3e-3, 8e-3}) {
+    ElasticPose pose{-y, 0.46, 0.0, -0.01};
+    pose.z = solveWheelLoad(s, pose, nspec, 1e4, WheelLoad::Vertical).z;
+    const ElasticWheelGeometry g = s.search(pose);
+    const double sw = g.patch[0].s_w, sr = g.patch[0].s_r;
+    const int n = 20000;
+    ElasticSearchSpec nospan;
+    nospan.curvature_span = 0.0;
+    const ElasticContactSearch s0(p, nospan);
+    const double t_desc =
+        nsPerCall([&](int) { g_sink = g_sink + s.describe(pose, sw, sr).B_span; }, n);
+    const double t_desc0 =
+        nsPerCall([&](int) { g_sink = g_sink + s0.describe(pose, sw, sr).B; }, n);
+    const double t_ref = nsPerCall(
+        [&](int i) {
+          double a = sw + 1e-4 * std::sin(0.01 * i), b = sr;
+          g_sink = g_sink + s.refine(pose, a, b);
+        },
+        n);
+    const double t_hz =
+        nsPerCall([&](int) { g_sink = g_sink + elasticNormal(g.patch[0], nspec).N; }, n);
+    std::printf(
+        "parts at y = %.0f mm: refine from 0.1 mm away %5.0f ns, describe (with B_span) "
+        "%5.0f ns, describe (pointwise B) %5.0f ns, Hertz (shape solve) %5.0f ns\n",
+        y * 1e3, t_ref, t_desc, t_desc0, t_hz);
   }
   return 0;
 }

@@ -396,8 +396,8 @@ void writeTable(const std::vector<Row>& rows) {
   std::fprintf(
       f,
       "| wheel | y [mm] | patches ours/CONTACT | y_w ours / ref [mm] | y_r ours / ref [mm] "
-      "| gamma ours / ref [rad] | x_w ours / ref [mm] | approach ours / ref [um] | N ours "
-      "(Fz) / FN ref [kN] | 2a ours(FN) / ref [mm] | 2b ours(FN) / ref [mm] | p0 "
+      "| gamma ours / ref [rad] | x_w ours / ref [mm] | approach ours / ref [um] | N main "
+      "patch ours (Fz) / FN ref [kN] | 2a ours(FN) / ref [mm] | 2b ours(FN) / ref [mm] | p0 "
       "ours(FN) / ref [MPa] |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Row& w : rows) {
     const RefRow& r = w.ref;
