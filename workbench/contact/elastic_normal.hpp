@@ -5,23 +5,29 @@
 // ellipse, not a hand-tuned penalty), the semi-axes and the maximum pressure. docs/
 // elastic_contact.md.
 //
+// Lateral curvature. By default (ElasticNormalSpec::span_curvature) B is the search's B_span, the
+// relative curvature measured over +-1 mm (ElasticSearchSpec::curvature_span), not the pointwise
+// one: the pointwise B jumps at the profiles' arc/line joints (S1002 throat R13 to its 70 deg
+// flank) and the force with it.
+//
 // Curvature policy. Hertz needs A > 0 and B > 0. A = cos(alpha) / (2 r) is always positive on a
-// wheel. B = (k_wheel,y + k_rail,y) / 2 is not: the S1002 throat (concave, R ~ 13-20 mm) against
-// the 60E1 gauge corner (convex, R13) gives B near zero or negative, a near-conformal contact in
-// which Hertz's half-space assumptions fail and the contact width is set by how far the two
-// profiles stay close, not by B (Hertz gives b -> infinity as B -> 0). We floor B smoothly at
+// wheel. At a gap minimum B >= 0 (the gap's second derivative is 2 B), but a near-conformal
+// contact (the S1002 R13 throat on the UIC60 R13 gauge corner, a hollow tread on the crown) gives
+// B -> 0+, where Hertz's half-space assumptions fail, the contact width is set by how far the two
+// profiles stay close and Hertz gives b -> infinity; B_span can also be negative across a curvature
+// joint. We floor B smoothly at
 //   B_min = min_ratio * A        (default min_ratio = 0.1: b / a stays below about 4.6)
 // with the C1 blend  B_eff = B_min + B^2 / (4 B_min)  for 0 <= B <= 2 B_min,  B_min for B < 0,
-// B for B >= 2 B_min (value and slope continuous, so the force stays C1 in the pose). The ratio
-// 0.1 is a stated choice, not a fit: on the Manchester benchmark the CONTACT patches of the
-// conformal tread/root contacts have lateral extents 1.4-3x their longitudinal ones (b/a), and
-// B/A = 0.1 is the most elongated Hertz ellipse (b/a = 4.6) that still fits within them with
-// margin; a floor as a fraction of A keeps the policy scale-free (tests/contact/
-// test_elastic_search.cpp measures it on the benchmark).
+// B for B >= 2 B_min (value and slope continuous, so the force stays C1 in the pose). A fraction
+// of A keeps the policy scale-free and bounds the ellipse's aspect ratio; 0.1 is a stated choice,
+// not a fit: the widest CONTACT patch of the Manchester benchmark A-2.2 (the conformal tread at
+// y = 0, 15.8 mm by 5 mm) has an aspect ratio of 3.2, below the 4.6 allowed, and no patch of
+// reaches the floor (smallest B/A = 0.35).
 //
-// Smoothness: N = K_H delta^1.5 -> 0 continuously (with dN/ddelta -> 0) as delta -> 0+; the
-// search's prominence-limited delta makes the patch that dies or merges lose its force
-// continuously. Damping (for the dynamic method, not used here): the Hunt-Crossley form
+// Smoothness: N = K_H delta^1.5 -> 0 continuously (with dN/ddelta -> 0) as delta -> 0+, and the
+// search's shared-overlap delta makes a patch that dies, merges or swaps depth with a neighbour
+// change its force continuously. Damping (for the dynamic method, not used here): the
+// Hunt-Crossley form
 //   N = K_H delta^1.5 (1 + c_d d(delta)/dt),  c_d = 3 (1 - e) / (2 v_impact) ~ [s/m],
 // keeps N continuous at contact birth (the viscous part also vanishes with delta), unlike a
 // Kelvin-Voigt c delta-dot term (Hunt & Crossley, J. Appl. Mech. 42 (1975) 440-445).

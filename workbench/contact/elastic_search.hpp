@@ -44,8 +44,8 @@
 // throat is an R13 arc against the R13 gauge corner of 60E1, the normals stay parallel along it
 // and the 2x2 system is singular), the minimum is found by a safeguarded 1-D search of the exact
 // gap over the two sample intervals around it (refineBracketed).
-// Seeds (a previous result, a table) only add Newton starting points: the set of patches and
-// their values do not depend on them (tested).
+// Seeds (a previous result, a table) are tried only where the refinement of a scanned minimum
+// fails: they never add or move a patch, and the result does not depend on them (tested).
 //
 // Patch birth and death are continuous. A patch is born with delta = 0. But two penetration
 // zones can also merge (the gap ridge between two minima sinks below zero), swap which one is
@@ -105,7 +105,7 @@ struct ElasticSearchSpec {
   // [m] half-width over which B_span is measured (the lateral semi-axes of patches are
   // 0.35-5 mm); 0: B_span = B.
   double curvature_span = 1.0e-3;
-  double min_approach = 1e-10;  // [m] patches with a smaller (prominence-limited) delta dropped
+  double min_approach = 1e-10;  // [m] patches with a smaller (shared-overlap) delta dropped
   double same_point = 1e-6;     // [m] refined minima closer than this on the wheel are one
   double newton_tol = 1e-13;    // [m] residual tolerance of the refinement
   int newton_max_iter = 30;
@@ -122,7 +122,7 @@ struct ElasticPatchGeometry {
   double gamma = 0.0;      // [rad] contact angle, positive toward the track centre (geometry.hpp)
   double radius = 0.0;     // [m] rolling radius h_w(s_w)
   double gap_depth = 0.0;  // [m] delta_g = penetration of the undeformed surfaces, > 0
-  double approach = 0.0;   // [m] prominence-limited delta used by the normal problem
+  double approach = 0.0;   // [m] delta used by the normal problem (shared overlap)
   double k_wheel_trans = 0.0;    // [1/m] principal curvatures, convex positive
   double k_wheel_rolling = 0.0;  // [1/m] cos(alpha) / r (Meusnier)
   double k_rail_trans = 0.0;     // [1/m]
