@@ -1,0 +1,532 @@
+#include "workbench/contact/elastic_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "workbench/core/error.hpp"
+
+namespace rb::contact {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kMaxStep = 2e-3;      // [m] Newton step limit on s_w, s_r
+constexpr double kDomainSlack = 1e-3;  // [m] how far a parameter may leave its profile in Newton
+constexpr double kMaxSinTheta = 0.5;   // |sin(theta + eps)| bound of the locus equation
+
+}  // namespace
+
+std::array<WheelRailPair, 2> wheelRailPairs(const ContactGeometryConfig& config) {
+  checkConfig(config);
+  std::array<WheelRailPair, 2> p;
+  p[0].wheel = config.left_wheel;
+  p[0].rail = config.left_rail;
+  p[0].side = Side::Left;
+  p[1].wheel = config.right_wheel;
+  p[1].rail = config.right_rail;
+  p[1].side = Side::Right;
+  for (WheelRailPair& q : p) {
+    q.wheel_lw = config.wheel_lw;
+    q.rail_lr = config.rail_lr;
+    q.beta = config.beta;
+  }
+  return p;
+}
+
+// Pose-dependent constants of one search: the rotation R (wheelset -> track) and the locus
+// equation R00 sin(theta) - R02 cos(theta) = R01 h' written as rho sin(theta + eps) = R01 h'.
+struct ElasticContactSearch::PoseTrig {
+  double y = 0.0, z = 0.0;
+  double r[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  double rho = 1.0, ceps = 1.0, seps = 0.0;
+  double oy = 0.0, oz = 0.0;  // rail profile origin
+  PoseTrig(const ElasticPose& p, const WheelRailPair& pair, double sigma, EulerOrder order) {
+    y = p.y;
+    z = p.z;
+    const double cps = std::cos(p.psi), sps = std::sin(p.psi);
+    const double cph = std::cos(p.phi), sph = std::sin(p.phi);
+    if (order == EulerOrder::RollYaw) {  // Rx(phi) Rz(psi)
+      const double m[3][3] = {
+          {cps, -sps, 0.0}, {cph * sps, cph * cps, -sph}, {sph * sps, sph * cps, cph}};
+      std::copy(&m[0][0], &m[0][0] + 9, &r[0][0]);
+    } else {  // Rz(psi) Rx(phi)
+      const double m[3][3] = {
+          {cps, -sps * cph, sps * sph}, {sps, cps * cph, -cps * sph}, {0.0, sph, cph}};
+      std::copy(&m[0][0], &m[0][0] + 9, &r[0][0]);
+    }
+    const double a = r[0][0], b = -r[0][2];
+    rho = std::hypot(a, b);
+    ceps = a / rho;
+    seps = b / rho;
+    oy = sigma * pair.rail_lr + pair.rail_dy;
+    oz = pair.rail_dz;
+  }
+  // sin(theta), cos(theta) and w = cos(theta + eps) on the wheel circle of slope dh.
+  void theta(double dh, double& st, double& ct, double& w) const {
+    const double q = std::clamp(r[0][1] * dh / rho, -kMaxSinTheta, kMaxSinTheta);
+    w = std::sqrt(1.0 - q * q);
+    st = q * ceps - w * seps;
+    ct = w * ceps + q * seps;
+  }
+  // Track-frame Y, Z of the wheel point (h sin theta, L, -h cos theta) (rows 1, 2 of R X).
+  double py(double h, double L, double st, double ct) const {
+    return y + r[1][0] * h * st + r[1][1] * L - r[1][2] * h * ct;
+  }
+  double pz(double h, double L, double st, double ct) const {
+    return z + r[2][0] * h * st + r[2][1] * L - r[2][2] * h * ct;
+  }
+};
+
+ElasticContactSearch::ElasticContactSearch(WheelRailPair pair, ElasticSearchSpec spec)
+    : pair_(std::move(pair)), spec_(spec) {
+  if (!pair_.wheel || !pair_.rail) {
+    throw InputError(SourceLoc{}, "elastic contact search: a wheel and a rail profile are needed");
+  }
+  if (!(spec_.sample_step > 0.0) || !(spec_.newton_tol > 0.0) || spec_.newton_max_iter < 1) {
+    throw InputError(SourceLoc{}, "elastic contact search: sample_step and newton_tol must be > 0");
+  }
+  sigma_ = pair_.side == Side::Left ? 1.0 : -1.0;
+  cb_ = std::cos(pair_.beta);
+  sb_ = sigma_ * std::sin(pair_.beta);
+  const profiles::Profile& w = *pair_.wheel;
+  const auto n = static_cast<std::size_t>(std::floor((w.sMax() - w.sMin()) / spec_.sample_step));
+  s_.reserve(n + 2);
+  for (std::size_t i = 0; i <= n; ++i)
+    s_.push_back(w.sMin() + static_cast<double>(i) * spec_.sample_step);
+  if (w.sMax() - s_.back() > 1e-12) s_.push_back(w.sMax());
+  for (double s : s_) {
+    const profiles::ProfilePoint p = w.at(s);
+    h_.push_back(p.h);
+    dh_.push_back(p.dh);
+  }
+}
+
+ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const ElasticPose& pose,
+                                                             double s_w) const {
+  return locus(PoseTrig(pose, pair_, sigma_, spec_.angles), s_w);
+}
+
+ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const PoseTrig& t, double s_w) const {
+  const profiles::ProfilePoint w = pair_.wheel->at(s_w);
+  double st = 0.0, ct = 1.0, wq = 1.0;
+  t.theta(w.dh, st, ct, wq);
+  const double L = sigma_ * pair_.wheel_lw + s_w;
+  const auto& r = t.r;
+  LocusPoint p;
+  p.theta = std::atan2(st, ct);
+  p.x_w = w.h * st;
+  p.x = r[0][0] * w.h * st + r[0][1] * L - r[0][2] * w.h * ct;
+  p.y = t.py(w.h, L, st, ct);
+  p.z = t.pz(w.h, L, st, ct);
+  // d theta / ds from the locus equation; D = dX/ds + theta' dX/dtheta (wheelset coordinates).
+  const double dth = r[0][1] * w.d2h / (t.rho * wq);
+  const double d0 = w.dh * st + dth * w.h * ct, d2 = -w.dh * ct + dth * w.h * st;
+  p.t_y = r[1][0] * d0 + r[1][1] + r[1][2] * d2;
+  p.t_z = r[2][0] * d0 + r[2][1] + r[2][2] * d2;
+  // Outward normal m = (sin theta, -h', -cos theta) and dm/ds = (cos theta theta', -h'',
+  // sin theta theta'), rotated to the track frame (rows Y and Z of R).
+  p.ny_raw = r[1][0] * st - r[1][1] * w.dh - r[1][2] * ct;
+  p.nz_raw = r[2][0] * st - r[2][1] * w.dh - r[2][2] * ct;
+  p.dn_y = r[1][0] * ct * dth - r[1][1] * w.d2h + r[1][2] * st * dth;
+  p.dn_z = r[2][0] * ct * dth - r[2][1] * w.d2h + r[2][2] * st * dth;
+  const double nn = std::hypot(p.ny_raw, p.nz_raw);
+  p.n_y = p.ny_raw / nn;
+  p.n_z = p.nz_raw / nn;
+  return p;
+}
+
+// Gap of wheel sample i: distance of its locus point to the rail tangent line at the rail point
+// below it (rail frame vertical); +inf when the sample is not over the rail.
+double ElasticContactSearch::sampledGap(const PoseTrig& t, std::size_t i, double& s_r) const {
+  double st = 0.0, ct = 1.0, wq = 1.0;
+  t.theta(dh_[i], st, ct, wq);
+  const double h = h_[i];
+  const double L = sigma_ * pair_.wheel_lw + s_[i];
+  const double py = t.py(h, L, st, ct) - t.oy;
+  const double pz = t.pz(h, L, st, ct) - t.oz;
+  const double u = cb_ * py + sb_ * pz;
+  const profiles::Profile& r = *pair_.rail;
+  if (u < r.sMin() || u > r.sMax()) return kInf;
+  const double v = -sb_ * py + cb_ * pz;
+  const profiles::ProfilePoint rp = r.at(u);
+  s_r = u;
+  return (v - rp.h) / std::sqrt(1.0 + rp.dh * rp.dh);
+}
+
+int ElasticContactSearch::refine(const PoseTrig& t, double& s_w, double& s_r) const {
+  const profiles::Profile& wp = *pair_.wheel;
+  const profiles::Profile& rpf = *pair_.rail;
+  const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
+  for (int it = 0; it < spec_.newton_max_iter; ++it) {
+    const LocusPoint w = locus(t, s_w);
+    const profiles::ProfilePoint r = rpf.at(s_r);
+    const double ry = oy + cb_ * s_r - sb_ * r.h, rz = oz + sb_ * s_r + cb_ * r.h;
+    const double ty = cb_ - sb_ * r.dh, tz = sb_ + cb_ * r.dh;      // rail tangent
+    const double dty = -sb_ * r.d2h, dtz = cb_ * r.d2h;             // its derivative
+    const double nry = -cb_ * r.dh - sb_, nrz = -sb_ * r.dh + cb_;  // rail normal
+    const double dnry = -cb_ * r.d2h, dnrz = -sb_ * r.d2h;          // its derivative
+    const double dy = w.y - ry, dz = w.z - rz;
+    const double f1 = dy * ty + dz * tz;
+    const double f2 = w.ny_raw * nrz - w.nz_raw * nry;
+    const double j11 = w.t_y * ty + w.t_z * tz;
+    const double j12 = -(ty * ty + tz * tz) + dy * dty + dz * dtz;
+    const double j21 = w.dn_y * nrz - w.dn_z * nry;
+    const double j22 = w.ny_raw * dnrz - w.nz_raw * dnry;
+    const double det = j11 * j22 - j12 * j21;
+    if (!std::isfinite(det) || det == 0.0) return -1;
+    double dsw = -(j22 * f1 - j12 * f2) / det;
+    double dsr = -(-j21 * f1 + j11 * f2) / det;
+    const double big = std::max(std::abs(dsw), std::abs(dsr));
+    if (big > kMaxStep) {
+      dsw *= kMaxStep / big;
+      dsr *= kMaxStep / big;
+    }
+    s_w += dsw;
+    s_r += dsr;
+    if (s_w < wp.sMin() - kDomainSlack || s_w > wp.sMax() + kDomainSlack ||
+        s_r < rpf.sMin() - kDomainSlack || s_r > rpf.sMax() + kDomainSlack) {
+      return -1;
+    }
+    if (std::max(std::abs(dsw), std::abs(dsr)) <= spec_.newton_tol) return it + 1;
+  }
+  return -1;
+}
+
+double ElasticContactSearch::gapAt(const PoseTrig& t, double s_w, double& s_r, double* dgap) const {
+  const LocusPoint w = locus(t, s_w);
+  const profiles::Profile& rpf = *pair_.rail;
+  const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
+  // Foot point on the rail: (W - R(s_r)) . t_r(s_r) = 0 (Newton, well conditioned while the
+  // distance is far below the rail's radius of curvature).
+  profiles::ProfilePoint r = rpf.at(s_r);
+  for (int it = 0; it < spec_.newton_max_iter; ++it) {
+    const double ry = oy + cb_ * s_r - sb_ * r.h, rz = oz + sb_ * s_r + cb_ * r.h;
+    const double ty = cb_ - sb_ * r.dh, tz = sb_ + cb_ * r.dh;
+    const double dty = -sb_ * r.d2h, dtz = cb_ * r.d2h;
+    const double dy = w.y - ry, dz = w.z - rz;
+    const double f = dy * ty + dz * tz;
+    const double df = -(ty * ty + tz * tz) + dy * dty + dz * dtz;
+    double step = df != 0.0 ? -f / df : 0.0;
+    step = std::clamp(step, -kMaxStep, kMaxStep);
+    s_r = std::clamp(s_r + step, rpf.sMin(), rpf.sMax());
+    r = rpf.at(s_r);
+    if (std::abs(step) <= spec_.newton_tol) break;
+  }
+  const double ry = oy + cb_ * s_r - sb_ * r.h, rz = oz + sb_ * s_r + cb_ * r.h;
+  const double ny = -cb_ * r.dh - sb_, nz = -sb_ * r.dh + cb_;
+  const double nn = std::hypot(ny, nz);
+  if (dgap) *dgap = (w.t_y * ny + w.t_z * nz) / nn;
+  return ((w.y - ry) * ny + (w.z - rz) * nz) / nn;
+}
+
+int ElasticContactSearch::refineBracketed(const PoseTrig& t, double lo, double hi, double& s_w,
+                                          double& s_r) const {
+  double sr_lo = s_r, sr_hi = s_r, d_lo = 0.0, d_hi = 0.0;
+  (void)gapAt(t, lo, sr_lo, &d_lo);
+  (void)gapAt(t, hi, sr_hi, &d_hi);
+  if (!(d_lo < 0.0 && d_hi > 0.0)) return -1;
+  // Illinois regula falsi on d gap / d s_w.
+  int side = 0;
+  for (int it = 1; it <= 4 * spec_.newton_max_iter; ++it) {
+    double s = lo - d_lo * (hi - lo) / (d_hi - d_lo);
+    if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
+    double sr = d_lo < -d_hi ? sr_hi : sr_lo, d = 0.0;
+    (void)gapAt(t, s, sr, &d);
+    if (hi - lo <= spec_.newton_tol || d == 0.0) {
+      s_w = s;
+      s_r = sr;
+      return it;
+    }
+    if (d < 0.0) {
+      lo = s;
+      d_lo = d;
+      sr_lo = sr;
+      if (side == -1) d_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = s;
+      d_hi = d;
+      sr_hi = sr;
+      if (side == 1) d_lo *= 0.5;
+      side = 1;
+    }
+  }
+  s_w = 0.5 * (lo + hi);
+  (void)gapAt(t, s_w, s_r);
+  return 4 * spec_.newton_max_iter;
+}
+
+bool ElasticContactSearch::separation(const PoseTrig& t, double y0, double z0, double ny, double nz,
+                                      double off, double s_w, double s_r, double& sep) const {
+  const double ty = nz, tz = -ny;  // a unit tangent (either direction: sep(+-off) is symmetric)
+  const profiles::Profile& rpf = *pair_.rail;
+  const profiles::Profile& wpf = *pair_.wheel;
+  const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
+  // Rail point with (R(s) - R0) . tau = off.
+  double lam_r = 0.0, lam_w = 0.0;
+  bool ok = false;
+  for (int it = 0; it < spec_.newton_max_iter; ++it) {
+    const profiles::ProfilePoint r = rpf.at(s_r);
+    const double ry = oy + cb_ * s_r - sb_ * r.h - y0, rz = oz + sb_ * s_r + cb_ * r.h - z0;
+    const double f = ry * ty + rz * tz - off;
+    const double df = (cb_ - sb_ * r.dh) * ty + (sb_ + cb_ * r.dh) * tz;
+    lam_r = ry * ny + rz * nz;
+    if (std::abs(f) <= spec_.newton_tol) {
+      ok = true;
+      break;
+    }
+    if (df == 0.0) return false;
+    s_r -= std::clamp(f / df, -kMaxStep, kMaxStep);
+    if (!rpf.inside(s_r)) return false;
+  }
+  if (!ok) return false;
+  ok = false;
+  for (int it = 0; it < spec_.newton_max_iter; ++it) {
+    const LocusPoint w = locus(t, s_w);
+    const double wy = w.y - y0, wz = w.z - z0;
+    const double f = wy * ty + wz * tz - off;
+    const double df = w.t_y * ty + w.t_z * tz;
+    lam_w = wy * ny + wz * nz;
+    if (std::abs(f) <= spec_.newton_tol) {
+      ok = true;
+      break;
+    }
+    if (df == 0.0) return false;
+    s_w -= std::clamp(f / df, -kMaxStep, kMaxStep);
+    if (!wpf.inside(s_w)) return false;
+  }
+  sep = lam_w - lam_r;
+  return ok;
+}
+
+ElasticPatchGeometry ElasticContactSearch::describe(const PoseTrig& t, double s_w,
+                                                    double s_r) const {
+  const LocusPoint w = locus(t, s_w);
+  const profiles::ProfilePoint wp = pair_.wheel->at(s_w);
+  const profiles::ProfilePoint r = pair_.rail->at(s_r);
+  const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
+  ElasticPatchGeometry g;
+  g.s_w = s_w;
+  g.s_r = s_r;
+  g.y = oy + cb_ * s_r - sb_ * r.h;
+  g.z = oz + sb_ * s_r + cb_ * r.h;
+  g.x = w.x;
+  g.x_w = w.x_w;
+  g.theta = w.theta;
+  const double ny = -cb_ * r.dh - sb_, nz = -sb_ * r.dh + cb_;
+  const double nn = std::hypot(ny, nz);
+  g.n_y = ny / nn;
+  g.n_z = nz / nn;
+  g.gamma = std::atan2(-sigma_ * g.n_y, g.n_z);
+  g.radius = wp.h;
+  g.gap_depth = -((w.y - g.y) * g.n_y + (w.z - g.z) * g.n_z);
+  g.approach = g.gap_depth;
+  const double qw = 1.0 + wp.dh * wp.dh, qr = 1.0 + r.dh * r.dh;
+  g.k_wheel_trans = -wp.d2h / (qw * std::sqrt(qw));
+  g.k_wheel_rolling = 1.0 / (wp.h * std::sqrt(qw));
+  g.k_rail_trans = -r.d2h / (qr * std::sqrt(qr));
+  // hertz.hpp: A = (k_wheel,x + k_rail,x) / 2 with a straight rail, B = (k_wheel,y + k_rail,y) / 2.
+  g.A = 0.5 * g.k_wheel_rolling;
+  g.B = 0.5 * (g.k_wheel_trans + g.k_rail_trans);
+  g.B_span = g.B;
+  const double w2 = spec_.curvature_span;
+  double sp = 0.0, sm = 0.0;
+  if (w2 > 0.0 && separation(t, g.y, g.z, g.n_y, g.n_z, w2, s_w, s_r, sp) &&
+      separation(t, g.y, g.z, g.n_y, g.n_z, -w2, s_w, s_r, sm)) {
+    g.B_span = (sp + sm + 2.0 * g.gap_depth) / (2.0 * w2 * w2);
+  }
+  return g;
+}
+
+void ElasticContactSearch::refineCandidates(const ElasticPose& pose, ElasticWheelGeometry& out,
+                                            ElasticSearchWorkspace& ws,
+                                            const ElasticWheelGeometry* seed) const {
+  const std::size_t nc = ws.minima.size();
+  ws.depth.assign(nc, kInf);
+  ws.sw.assign(nc, 0.0);
+  ws.sr.assign(nc, 0.0);
+  ws.ok.assign(nc, 0);
+  const PoseTrig t(pose, pair_, sigma_, spec_.angles);
+  for (std::size_t k = 0; k < nc; ++k) {
+    const auto i = static_cast<std::size_t>(ws.minima[k]);
+    double s_w = s_[i], s_r = 0.0;
+    (void)sampledGap(t, i, s_r);
+    const double s_r0 = s_r;
+    // The minimum lies between the neighbouring samples (the gap proxy and the exact gap differ
+    // little); a refinement that leaves that interval went to another minimum.
+    const double lo = s_[i > 0 ? i - 1 : i], hi = s_[i + 1 < s_.size() ? i + 1 : i];
+    auto inside = [&](double v) { return v >= lo - 1e-12 && v <= hi + 1e-12; };
+    int it = refine(t, s_w, s_r);
+    if (it < 0 || !inside(s_w)) {
+      s_w = s_[i];
+      s_r = s_r0;
+      it = refineBracketed(t, lo, hi, s_w, s_r);
+    }
+    // A failed refinement may restart from the nearest seed patch (seeds never add patches).
+    if (it < 0 && seed) {
+      for (int p = 0; p < seed->count; ++p) {
+        const ElasticPatchGeometry& sp = seed->patch[static_cast<std::size_t>(p)];
+        if (!inside(sp.s_w)) continue;
+        double sw = sp.s_w, sr = sp.s_r;
+        const int n = refine(t, sw, sr);
+        if (n >= 0 && inside(sw)) {
+          it = n;
+          s_w = sw;
+          s_r = sr;
+          break;
+        }
+      }
+    }
+    out.newton_iterations += std::max(it, 0);
+    // A refined point must stay near its sampled minimum (else it belongs to another minimum).
+    if (it >= 0 && inside(s_w)) {
+      double sr = s_r;
+      ws.depth[k] = gapAt(t, s_w, sr);
+      ws.sw[k] = s_w;
+      ws.sr[k] = s_r;
+      ws.ok[k] = 1;
+    } else {
+      ws.depth[k] = ws.gap[i];
+      ws.sw[k] = s_[i];
+      ws.sr[k] = s_r0;
+      ws.ok[k] = 2;  // sampled point only
+    }
+  }
+  // Minima refined onto the same wheel point are one: keep the first (deeper sample wins ties).
+  for (std::size_t k = 0; k < nc; ++k) {
+    for (std::size_t j = k + 1; j < nc; ++j) {
+      if (ws.ok[k] && ws.ok[j] && std::abs(ws.sw[k] - ws.sw[j]) < spec_.same_point) {
+        const auto ik = static_cast<std::size_t>(ws.minima[k]);
+        const auto ij = static_cast<std::size_t>(ws.minima[j]);
+        ws.ok[ws.gap[ik] <= ws.gap[ij] ? j : k] = 0;
+      }
+    }
+  }
+}
+
+void ElasticContactSearch::collectPatches(const ElasticPose& pose, ElasticWheelGeometry& out,
+                                          ElasticSearchWorkspace& ws) const {
+  const PoseTrig t(pose, pair_, sigma_, spec_.angles);
+  const std::size_t nc = ws.minima.size();
+  // Shared overlap (header comment): the lowest ridge r to a neighbouring minimum j; the depths
+  // below it, e_k and e_j, are each minimum's own; the common part max(0, -r) is split between
+  // the two in proportion to e_k and e_j, so that nothing jumps when two minima swap depth, merge
+  // at a fold (e_k -> 0) or separate (r -> 0).
+  for (std::size_t k = 0; k < nc; ++k) {
+    if (!ws.ok[k] || !(ws.depth[k] < 0.0)) continue;
+    double ridge = kInf;
+    std::size_t partner = k;
+    for (int dir : {-1, 1}) {
+      auto j = static_cast<std::ptrdiff_t>(k) + dir;
+      while (j >= 0 && j < static_cast<std::ptrdiff_t>(nc) && !ws.ok[static_cast<std::size_t>(j)]) {
+        j += dir;
+      }
+      if (j < 0 || j >= static_cast<std::ptrdiff_t>(nc)) continue;
+      const auto ju = static_cast<std::size_t>(j);
+      const int a = std::min(ws.minima[k], ws.minima[ju]);
+      const int b = std::max(ws.minima[k], ws.minima[ju]);
+      double run = -kInf;
+      for (int i = a; i <= b; ++i) run = std::max(run, ws.gap[static_cast<std::size_t>(i)]);
+      if (run < ridge) {
+        ridge = run;
+        partner = ju;
+      }
+    }
+    const double delta_g = -ws.depth[k];
+    double delta = delta_g;
+    if (partner != k && ridge < 0.0) {
+      const double e_k = ridge - ws.depth[k], e_j = std::max(ridge - ws.depth[partner], 0.0);
+      const double w = e_k + e_j > 0.0 ? e_k / (e_k + e_j) : 0.5;
+      delta = std::min(delta_g, e_k - w * ridge);
+    }
+    if (!(delta > spec_.min_approach)) continue;
+    ElasticPatchGeometry g = describe(t, ws.sw[k], ws.sr[k]);
+    if (ws.ok[k] == 2) {
+      g.refined = false;
+      g.gap_depth = delta_g;
+    }
+    g.approach = delta;
+    if (out.count < kMaxElasticPatches) {
+      out.patch[static_cast<std::size_t>(out.count++)] = g;
+    } else {
+      out.truncated = true;
+      // Replace the shallowest kept patch when this one is deeper.
+      auto* lo =
+          std::min_element(out.patch.begin(), out.patch.end(),
+                           [](const auto& p, const auto& q) { return p.approach < q.approach; });
+      if (lo->approach < g.approach) *lo = g;
+    }
+  }
+  std::sort(out.patch.begin(), out.patch.begin() + out.count,
+            [](const auto& p, const auto& q) { return p.approach > q.approach; });
+}
+
+void ElasticContactSearch::search(const ElasticPose& pose, ElasticWheelGeometry& out,
+                                  ElasticSearchWorkspace& ws,
+                                  const ElasticWheelGeometry* seed) const {
+  out = ElasticWheelGeometry{};
+  const PoseTrig t(pose, pair_, sigma_, spec_.angles);
+  const std::size_t n = s_.size();
+  ws.gap.assign(n, kInf);
+  out.min_gap = kInf;
+  // Only the wheel samples above the rail matter: to first order the rail parameter below wheel
+  // sample s is s + offset (offset from y, Lw, Lr and the roll times the radius); the margin
+  // covers the neglected terms (flange height x roll, the yaw's cosine, the rail inclination x
+  // height: together below 2 mm for |phi|, |psi| < 0.05 and beta < 0.05), and every sample in the
+  // range is still checked exactly (sampledGap returns +inf off the rail).
+  constexpr double kMargin = 5e-3;  // [m]
+  const double offset = t.y + sigma_ * pair_.wheel_lw - t.oy - t.r[1][2] * h_.front();
+  const double s_lo = pair_.rail->sMin() - offset - kMargin;
+  const double s_hi = pair_.rail->sMax() - offset + kMargin;
+  const double step = spec_.sample_step, s0 = s_.front();
+  const auto i_lo = static_cast<std::size_t>(
+      std::clamp(std::floor((s_lo - s0) / step), 0.0, static_cast<double>(n - 1)));
+  const auto i_hi = static_cast<std::size_t>(
+      std::clamp(std::ceil((s_hi - s0) / step), 0.0, static_cast<double>(n - 1)));
+  for (std::size_t i = i_lo; i <= i_hi; ++i) {
+    double s_r = 0.0;
+    ws.gap[i] = sampledGap(t, i, s_r);
+    out.min_gap = std::min(out.min_gap, ws.gap[i]);
+  }
+  ws.minima.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double g = ws.gap[i];
+    if (!(g < spec_.candidate_gap)) continue;
+    const double gl = i > 0 ? ws.gap[i - 1] : kInf;
+    const double gr = i + 1 < n ? ws.gap[i + 1] : kInf;
+    if (g <= gl && g < gr) ws.minima.push_back(static_cast<int>(i));
+  }
+  if (ws.minima.empty()) return;
+  refineCandidates(pose, out, ws, seed);
+  collectPatches(pose, out, ws);
+}
+
+ElasticWheelGeometry ElasticContactSearch::search(const ElasticPose& pose,
+                                                  const ElasticWheelGeometry* seed) const {
+  ElasticWheelGeometry out;
+  ElasticSearchWorkspace ws;
+  search(pose, out, ws, seed);
+  return out;
+}
+
+int ElasticContactSearch::refine(const ElasticPose& pose, double& s_w, double& s_r) const {
+  return refine(PoseTrig(pose, pair_, sigma_, spec_.angles), s_w, s_r);
+}
+
+double ElasticContactSearch::gapAt(const ElasticPose& pose, double s_w, double& s_r,
+                                   double* dgap) const {
+  return gapAt(PoseTrig(pose, pair_, sigma_, spec_.angles), s_w, s_r, dgap);
+}
+
+int ElasticContactSearch::refineBracketed(const ElasticPose& pose, double lo, double hi,
+                                          double& s_w, double& s_r) const {
+  return refineBracketed(PoseTrig(pose, pair_, sigma_, spec_.angles), lo, hi, s_w, s_r);
+}
+
+ElasticPatchGeometry ElasticContactSearch::describe(const ElasticPose& pose, double s_w,
+                                                    double s_r) const {
+  return describe(PoseTrig(pose, pair_, sigma_, spec_.angles), s_w, s_r);
+}
+
+}  // namespace rb::contact
