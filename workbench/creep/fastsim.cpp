@@ -57,14 +57,6 @@ UnitCreepage unitCreepage(const Creepages& s, double c) {
 
 }  // namespace
 
-std::string fastsimGridProblem(const FastsimGrid& g) {
-  if (!kFastsimStripsRange.contains(g.strips))
-    return "FASTSIM strips must be in " + kFastsimStripsRange.text();
-  if (!kFastsimElementsRange.contains(g.elements))
-    return "FASTSIM elements must be in " + kFastsimElementsRange.text();
-  return {};
-}
-
 FastsimFlexibilities fastsimFlexibilities(double G, const ContactPatch& patch) {
   const double a = patch.a, b = patch.b;
   return {8.0 * a / (3.0 * patch.c11 * G), 8.0 * a / (3.0 * patch.c22 * G),

@@ -59,8 +59,6 @@
 // root and a division where the element slips), plus `elements` square roots for the elliptic
 // bound; no allocation (the node weights live on the stack). The measured time per patch is in
 // docs/creep.md.
-#include <string>
-
 #include "workbench/core/range.hpp"
 #include "workbench/creep/creepages.hpp"
 #include "workbench/creep/polach.hpp"
@@ -79,9 +77,6 @@ struct FastsimGrid {
   int elements = 32;  // elements along each strip (rolling direction)
   FastsimBound bound = FastsimBound::Parabolic;
 };
-
-// Empty when the grid is valid, else a description of the problem.
-std::string fastsimGridProblem(const FastsimGrid& g);
 
 struct FastsimFlexibilities {
   double L1 = 0.0;  // [m^3/N] longitudinal

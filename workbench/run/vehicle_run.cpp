@@ -133,8 +133,8 @@ void writeContactConventions(io::ResultFile& f, dynamics::ContactMethod method) 
                      "rails' cross-level angle, both positive toward the track centre; y: "
                      "lateral track-frame position of the contact point, positive to the left"));
   f.attr("/contact", "t_gamma",
-         std::string("T gamma = |fx sx| + |fy sy| + |mz spin| [N] (mz only from the Kalker "
-                     "linear law, 0 with Polach); power = T gamma V [W]"));
+         std::string("T gamma = |fx sx| + |fy sy| + |mz spin| [N] (mz from the laws that give a "
+                     "spin moment, kalker and fastsim; 0 with polach); power = T gamma V [W]"));
   f.attr("/contact", "patches",
          std::string(method == dynamics::ContactMethod::Kec
                          ? "KEC: patch0 = the contact point, or inside a regularised "
