@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "workbench/creep/fastsim.hpp"
 #include "workbench/creep/polach.hpp"
 
 namespace {
@@ -60,6 +61,37 @@ TEST(CreepBench, NanosecondsPerCall) {
       "hertz + kalker + creepages + polach: %.1f ns per call; with a precomputed Hertz "
       "shape: %.1f ns\n",
       t_hertz, shape.iterations, t_kalker, t_polach, t_chain, t_chain_shape);
+  EXPECT_TRUE(std::isfinite(sink));
+}
+
+// FASTSIM per patch (tread patch, 100 kN) against its grid and the creep regime: small creepage
+// (adhesion almost everywhere), the transition and full slip (a square root and a division per
+// element); Polach on the same inputs for comparison. docs/creep.md quotes these.
+TEST(CreepBench, FastsimNanosecondsPerPatch) {
+  const Material mat{};
+  CreepParams cp;
+  cp.G = shearModulus(mat);
+  const ContactPatch patch =
+      makeContactPatch(mat, relativeCurvatures(1.0 / 0.46, -1.0 / 0.32, 0.0, 1.0 / 0.3), 1.0e5);
+  volatile double sink = 0.0;
+  const int n = 20000;
+  for (const double s : {1e-5, 1e-3, 2e-2}) {
+    std::printf("s_x = %.0e, s_y = -s_x / 2, phi = 0.3 1/m: polach %.0f ns;", s,
+                nsPerCall(n, [&](int i) {
+                  const double k = 1.0 + 1e-3 * (i & 63);
+                  sink = sink + polachForce(cp, patch, {k * s, -0.5 * s, 0.3, 20.0}).fx;
+                }));
+    for (const int m : {8, 16, 32}) {
+      FastsimGrid g;
+      g.strips = m;
+      g.elements = 2 * m;
+      std::printf(" fastsim %dx%d %.0f ns;", g.strips, g.elements, nsPerCall(n / m, [&](int i) {
+                    const double k = 1.0 + 1e-3 * (i & 63);
+                    sink = sink + fastsimForce(cp, patch, {k * s, -0.5 * s, 0.3}, g).fx;
+                  }));
+    }
+    std::printf("\n");
+  }
   EXPECT_TRUE(std::isfinite(sink));
 }
 

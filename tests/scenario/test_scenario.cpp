@@ -499,6 +499,7 @@ TEST(ScenarioSchema, ChoicesComeFromTheNameTables) {
   expectTableIsSchemaChoice<rb::dynamics::ContactMethod>("contact", "method",
                                                          {rb::scenario::kGuidedContact});
   expectTableIsSchemaChoice<rb::dynamics::CreepModel>("contact", "creep");
+  expectTableIsSchemaChoice<rb::creep::FastsimBound>("contact.fastsim", "bound");
   expectTableIsSchemaChoice<rb::dynamics::NormalForceCoupling>("contact", "normal_forces");
   expectTableIsSchemaChoice<rb::dynamics::WheelsetSpin>("contact", "wheelset_spin");
   expectTableIsSchemaChoice<rb::vehicle::BodyKind>("body", "kind");
@@ -651,4 +652,28 @@ TEST(ScenarioErrors, MissingModuleDoesNotHideTheOtherErrors) {
   const std::string eg = errorsOf(g);
   EXPECT_EQ(eg.rfind(g + ":1: require \"nope.nothing\": module not found", 0), 0u) << eg;
   EXPECT_NE(eg.find(g + ":3:"), std::string::npos) << eg;
+}
+
+// contact.creep = "fastsim" with its grid (contact.fastsim, creep/fastsim.hpp defaults), and the
+// grid refused out of range, with another creep law, or with an unknown key, at file:line.
+TEST(ScenarioContact, FastsimCreepLawAndGrid) {
+  const std::string f = "scenarios/validation/case1_R500_lut.lua";
+  auto spec = loadScenario(f, opts({"contact.creep=fastsim"}));
+  EXPECT_EQ(spec.contact.creep, rb::dynamics::CreepModel::Fastsim);
+  EXPECT_EQ(spec.contact.fastsim.strips, rb::creep::FastsimGrid{}.strips);
+  EXPECT_EQ(spec.contact.fastsim.elements, rb::creep::FastsimGrid{}.elements);
+  spec = loadScenario(f, opts({"contact.creep=fastsim", "contact.fastsim.strips=8",
+                               "contact.fastsim.elements=64", "contact.fastsim.bound=elliptic"}));
+  EXPECT_EQ(spec.contact.fastsim.strips, 8);
+  EXPECT_EQ(spec.contact.fastsim.elements, 64);
+  EXPECT_EQ(spec.contact.fastsim.bound, rb::creep::FastsimBound::Elliptic);
+  EXPECT_EQ(errorsOf(f, opts({"contact.creep=fastsim", "contact.fastsim.strips=0",
+                              "contact.fastsim.elements=2.5", "contact.fastsim.bound=flat"})),
+            "<command line>: contact.fastsim: strips must be >= 1, got 0\n"
+            "<command line>: contact.fastsim: elements must be a whole number, got 2.5\n"
+            "<command line>: contact.fastsim: bound: unknown value 'flat'; valid: parabolic, "
+            "elliptic");
+  EXPECT_EQ(errorsOf(f, opts({"contact.fastsim.elements=16"})),
+            "<command line>: contact: fastsim applies to creep = \"fastsim\" only (creep = "
+            "\"polach\")");
 }

@@ -380,6 +380,10 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
   check("poisson", c.poisson, kPoissonRange);
   check("mu", c.mu, kMuRange);
   check("min_normal_force", c.min_normal_force, kMinNormalForceRange);
+  if (c.creep == CreepModel::Fastsim) {
+    check("fastsim.strips", c.fastsim.strips, creep::kFastsimStripsRange);
+    check("fastsim.elements", c.fastsim.elements, creep::kFastsimElementsRange);
+  }
   if (c.method == ContactMethod::Lut) {
     check("flange_stiffness", c.flange_stiffness, kFlangeStiffnessRange);
     check("flange_damping", c.flange_damping, kFlangeDampingRange);
@@ -401,6 +405,7 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
   m.creep_params.G = creep::shearModulus(m.material);
   if (const std::string problem = creep::creepParamsProblem(m.creep_params); !problem.empty())
     throw InputError(c.loc, "contact: creep parameters: " + problem);
+  m.fastsim = c.fastsim;
   m.flange_stiffness = c.flange_stiffness;
   m.flange_damping = c.flange_damping < 0.0 ? c.flange_stiffness / 100.0 : c.flange_damping;
 

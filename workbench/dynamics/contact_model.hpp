@@ -98,11 +98,14 @@ struct ContactModel {
   double flangeway[2] = {0.0, 0.0};
   std::vector<std::string> gauge_warnings;
   SourceLoc loc;  // the contact{} block
+  // CreepModel::Fastsim: grid and bound (as ContactSpec). Last, so that the members the other
+  // laws' evaluations read keep their offsets.
+  creep::FastsimGrid fastsim;
 
   // Build statistics of the table in use (time, bytes, warnings, notes).
   const contact::TableBuildStats& tableStats() const;
-  // The names of dynamics/names.hpp (nameOf): "kec" / "lut", "polach" / "kalker" / "none",
-  // "lagged" / "consistent".
+  // The names of dynamics/names.hpp (nameOf): "kec" / "lut", the creep laws of creep_laws.hpp
+  // ("polach", "kalker", "fastsim", "none"), "lagged" / "consistent".
   static const char* methodName(ContactMethod m);
   static const char* creepName(CreepModel c);
   static const char* couplingName(NormalForceCoupling c);

@@ -26,9 +26,11 @@ namespace {
 // is refused as recoverable: an adaptive method retries a smaller step, so an overshooting trial
 // step is not taken for a lift, while a real lift stops the run here. Output evaluations only
 // report it (lift = true).
+// Always inlined, as wheelPointForce (contact_patches.hpp): independent of the number of laws.
 template <ContactMethod kMethod>
-int checkWheelLift(const ContactModels& models, const StageInput& in, const WheelsetWork& ww,
-                   ContactWorkspace& work, bool& lift) {
+[[gnu::always_inline]] inline int checkWheelLift(const ContactModels& models, const StageInput& in,
+                                                 const WheelsetWork& ww, ContactWorkspace& work,
+                                                 bool& lift) {
   constexpr int kConstraintPatches = kMethod == ContactMethod::Kec ? 2 : 1;
   for (int s = 0; s < 2; ++s) {
     double qn = 0.0;
@@ -126,24 +128,19 @@ ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
     ww.body = layout_.wheelset(w);
     ww.height = vehicle.bodies[ww.body].height;
   }
-  using internal::KalkerLaw;
-  using internal::NoCreep;
-  using internal::PolachLaw;
+  // The evaluation compiled for the model's creep law (the registry, creep_laws.hpp) and contact
+  // method; the law's row decides, nothing else names the laws.
   const bool kec = contact.method == ContactMethod::Kec;
-  switch (contact.creep) {
-    case CreepModel::Polach:
-      eval_ = kec ? &ContactVehicleOde::evaluateT<ContactMethod::Kec, PolachLaw>
-                  : &ContactVehicleOde::evaluateT<ContactMethod::Lut, PolachLaw>;
-      break;
-    case CreepModel::Kalker:
-      eval_ = kec ? &ContactVehicleOde::evaluateT<ContactMethod::Kec, KalkerLaw>
-                  : &ContactVehicleOde::evaluateT<ContactMethod::Lut, KalkerLaw>;
-      break;
-    case CreepModel::None:
-      eval_ = kec ? &ContactVehicleOde::evaluateT<ContactMethod::Kec, NoCreep>
-                  : &ContactVehicleOde::evaluateT<ContactMethod::Lut, NoCreep>;
-      break;
-  }
+  const auto choose = [&]<class... Laws>(LawList<Laws...>) {
+    const auto pick = [&]<class Law>() {
+      eval_ = kec ? &ContactVehicleOde::evaluateT<ContactMethod::Kec, Law>
+                  : &ContactVehicleOde::evaluateT<ContactMethod::Lut, Law>;
+      return true;
+    };
+    ((contact.creep == Laws::kModel && pick.template operator()<Laws>()) || ...);
+  };
+  choose(CreepLaws{});
+  RB_CHECK(eval_ != nullptr, "ContactVehicleOde: the creep law is not in the registry");
 }
 
 ContactVehicleOde::~ContactVehicleOde() = default;

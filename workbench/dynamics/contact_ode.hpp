@@ -82,7 +82,7 @@ struct PatchOutput {
   bool on_flange = false;                 // the wheel point lies in the flange window
   double normal = 0.0;                    // [N] normal force (< 0: the constraint pulls, lift)
   double fx = 0.0, fy = 0.0;              // [N] creep forces on the wheel
-  double mz = 0.0;                        // [N m] spin moment (Kalker linear only)
+  double mz = 0.0;                        // [N m] spin moment (kalker, fastsim; 0 with polach)
   double sx = 0.0, sy = 0.0, spin = 0.0;  // creepages [-], [-], [1/m]
   double s_w = 0.0, s_r = 0.0;            // [m] contact point on the wheel and rail profiles
   double gamma = 0.0;                     // [rad] contact angle (positive toward the centre)
@@ -94,7 +94,7 @@ struct PatchOutput {
   double y = 0.0;            // [m] lateral track-frame position of the contact point (left +)
   TrackForces force;         // normal and creep forces of this patch, track frame
   // Wear number T gamma = |fx sx| + |fy sy| + |mz spin| [N] (the spin term only where the law
-  // gives mz: Kalker linear) and the power it dissipates, T gamma V [W].
+  // gives mz: kalker, fastsim) and the power it dissipates, T gamma V [W].
   double t_gamma = 0.0, power = 0.0;
 };
 

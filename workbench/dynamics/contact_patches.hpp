@@ -1,8 +1,8 @@
 #pragma once
 // Stage 5 of a ContactVehicleOde evaluation (contact_stages.hpp): the contact patches of a
 // wheelset, their generalised force directions, creepages and Hertz data, and the generalised
-// directions N of the normal-force multipliers. Compiled per contact method and creep law (no
-// per-patch branch on the law). Internal to workbench/dynamics.
+// directions N of the normal-force multipliers. Compiled per contact method and creep law (the
+// registry creep_laws.hpp; no per-patch branch on the law). Internal to workbench/dynamics.
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -11,38 +11,10 @@
 #include "workbench/creep/hertz.hpp"
 #include "workbench/creep/polach.hpp"
 #include "workbench/dynamics/contact_stages.hpp"
+#include "workbench/dynamics/creep_laws.hpp"
 #include "workbench/vehicle/kinematics.hpp"
 
 namespace rb::dynamics::internal {
-
-// Tangential force laws, chosen once per model (template parameter of the evaluation).
-struct PolachLaw {
-  static constexpr bool kCreep = true;
-  static void apply(const ContactModel& m, const creep::ContactPatch& p, const creep::Creepages& c,
-                    double& fx, double& fy, double& mz) {
-    const creep::CreepForce f = creep::polachForce(m.creep_params, p, c);
-    fx = f.fx;
-    fy = f.fy;
-    mz = 0.0;
-  }
-};
-struct KalkerLaw {
-  static constexpr bool kCreep = true;
-  static void apply(const ContactModel& m, const creep::ContactPatch& p, const creep::Creepages& c,
-                    double& fx, double& fy, double& mz) {
-    const creep::LinearCreepForce f = creep::kalkerLinearForce(m.creep_params.G, p, c);
-    fx = f.fx;
-    fy = f.fy;
-    mz = f.mz;
-  }
-};
-struct NoCreep {
-  static constexpr bool kCreep = false;
-  static void apply(const ContactModel&, const creep::ContactPatch&, const creep::Creepages&,
-                    double& fx, double& fy, double& mz) {
-    fx = fy = mz = 0.0;
-  }
-};
 
 inline constexpr double kSplitWeight = 1e-9;  // KEC weights closer to 0 or 1: no split
 
@@ -85,8 +57,12 @@ inline WheelsetFrame wheelsetFrame(const vehicle::BodyKinematics& kin,
 // Generalised force (y, z, phi, theta, psi) of a force F (track comps) on the wheel material point
 // at au (track comps, relative to the CoM): L_P^T F of the attachment point plus the spin column
 // (axle x au) . F. (J_P = pointJacobian + the spin column, never formed.)
-inline Vec5 wheelPointForce(const WheelsetFrame& f, const Eigen::Vector3d& au,
-                            const Eigen::Vector3d& sp, const Eigen::Vector3d& F) {
+// Always inlined: whether GCC inlines it otherwise depends on how many creep laws the translation
+// unit instantiates, and adding a law must not change the code of the others (creep_laws.hpp).
+[[gnu::always_inline]] inline Vec5 wheelPointForce(const WheelsetFrame& f,
+                                                   const Eigen::Vector3d& au,
+                                                   const Eigen::Vector3d& sp,
+                                                   const Eigen::Vector3d& F) {
   const vehicle::BodyKinematics& k = *f.kin;
   const Eigen::Vector3d rot = k.AG.transpose() * au.cross(F);
   Vec5 g;

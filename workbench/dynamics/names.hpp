@@ -4,6 +4,8 @@
 #include <array>
 
 #include "workbench/core/names.hpp"
+#include "workbench/creep/fastsim.hpp"
+#include "workbench/dynamics/creep_laws.hpp"
 #include "workbench/dynamics/spec.hpp"
 
 namespace rb::dynamics {
@@ -16,11 +18,8 @@ constexpr const auto& nameTable(ContactMethod /*tag*/) {
   return kContactMethodNames;
 }
 
-inline constexpr std::array<NameEntry<CreepModel>, 3> kCreepModelNames = {{
-    {CreepModel::Polach, "polach", "Polach's creep force law (the paper, section 2.5)"},
-    {CreepModel::Kalker, "kalker", "Kalker's linear theory"},
-    {CreepModel::None, "none", "no tangential forces"},
-}};
+// From the registry of creep laws (creep_laws.hpp): one entry per law.
+inline constexpr auto kCreepModelNames = creepLawNames(CreepLaws{});
 constexpr const auto& nameTable(CreepModel /*tag*/) {
   return kCreepModelNames;
 }
@@ -47,3 +46,17 @@ constexpr const auto& nameTable(WheelsetSpin /*tag*/) {
 }
 
 }  // namespace rb::dynamics
+
+namespace rb::creep {
+
+// contact.fastsim.bound (found by argument-dependent lookup in rb::creep).
+inline constexpr std::array<NameEntry<FastsimBound>, 2> kFastsimBoundNames = {{
+    {FastsimBound::Parabolic, "parabolic",
+     "Kalker's (1982) parabolic pressure of the simplified theory (the default)"},
+    {FastsimBound::Elliptic, "elliptic", "Hertz's semi-ellipsoidal pressure"},
+}};
+constexpr const auto& nameTable(FastsimBound /*tag*/) {
+  return kFastsimBoundNames;
+}
+
+}  // namespace rb::creep

@@ -5,6 +5,7 @@
 
 #include "workbench/contact/interpolation.hpp"
 #include "workbench/core/error.hpp"
+#include "workbench/creep/fastsim.hpp"
 
 namespace rb::dynamics {
 
@@ -23,7 +24,8 @@ struct ProfilesSpec {
 };
 
 enum class ContactMethod { Kec, Lut };
-enum class CreepModel { Polach, Kalker, None };
+// The creep laws of the registry (creep_laws.hpp, which names and describes each).
+enum class CreepModel { Polach, Kalker, Fastsim, None };
 enum class NormalForceCoupling { Lagged, Consistent };
 // Free: the wheelset spin theta is a degree of freedom driven by the creep forces (its creep mode
 // is stiff, ~ -2400 1/s at 20 m/s, docs/contact_dynamics.md section 7). Prescribed: the spin rate
@@ -38,6 +40,7 @@ struct ContactSpec {
   double flange_stiffness = 1e10;  // [N/m^1.5] LUT Hertz flange K (paper Table 3; validation 1e10)
   double flange_damping = -1.0;    // [N s/m^2] LUT flange D; < 0: K / 100 as in paper Table 3
   CreepModel creep = CreepModel::Polach;
+  creep::FastsimGrid fastsim;      // creep = fastsim: its grid and traction bound (fastsim.hpp)
   double mu = 0.2364;              // [-] friction coefficient (paper section 5.1)
   double youngs_modulus = 2.1e11;  // [Pa] (paper section 5.3)
   double poisson = 0.28;           // [-]

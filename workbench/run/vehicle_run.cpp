@@ -13,6 +13,7 @@
 #include "workbench/contact/interpolation.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
+#include "workbench/dynamics/names.hpp"
 #include "workbench/integrators/registry.hpp"
 #include "workbench/io/initial_output.hpp"
 #include "workbench/io/track_output.hpp"
@@ -133,8 +134,8 @@ void writeContactConventions(io::ResultFile& f, dynamics::ContactMethod method) 
                      "rails' cross-level angle, both positive toward the track centre; y: "
                      "lateral track-frame position of the contact point, positive to the left"));
   f.attr("/contact", "t_gamma",
-         std::string("T gamma = |fx sx| + |fy sy| + |mz spin| [N] (mz only from the Kalker "
-                     "linear law, 0 with Polach); power = T gamma V [W]"));
+         std::string("T gamma = |fx sx| + |fy sy| + |mz spin| [N] (mz from the laws that give a "
+                     "spin moment, kalker and fastsim; 0 with polach); power = T gamma V [W]"));
   f.attr("/contact", "patches",
          std::string(method == dynamics::ContactMethod::Kec
                          ? "KEC: patch0 = the contact point, or inside a regularised "
@@ -216,6 +217,12 @@ void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
   writeContactConventions(f, cm.method);
   f.attr("/contact", "method", std::string(dynamics::ContactModel::methodName(cm.method)));
   f.attr("/contact", "creep", std::string(dynamics::ContactModel::creepName(cm.creep)));
+  if (cm.creep == dynamics::CreepModel::Fastsim) {
+    // FASTSIM's result depends on its grid (docs/creep.md): recorded with the law.
+    f.attr("/contact", "fastsim_strips", static_cast<std::int64_t>(cm.fastsim.strips));
+    f.attr("/contact", "fastsim_elements", static_cast<std::int64_t>(cm.fastsim.elements));
+    f.attr("/contact", "fastsim_bound", std::string(nameOf(cm.fastsim.bound)));
+  }
   f.attr("/contact", "normal_forces",
          std::string(dynamics::ContactModel::couplingName(cm.coupling)));
   f.attr("/contact", "min_normal_force", cm.min_normal_force);

@@ -22,6 +22,20 @@ bool buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
   c.flange_stiffness = r.number("flange_stiffness");
   c.flange_damping = r.number("flange_damping");
   c.creep = r.choiceOf<dynamics::CreepModel>("creep");
+  if (const Node* f = r.blockValue("fastsim")) {
+    Reader o(*f, block("contact.fastsim"), "contact.fastsim", d);
+    // A value out of its range is reported by number(); it must not reach the int conversion.
+    const auto count = [&o](const char* key, const Range& range, int fallback) {
+      const double x = o.number(key);
+      return range.contains(x) ? static_cast<int>(x) : fallback;
+    };
+    c.fastsim.strips = count("strips", creep::kFastsimStripsRange, c.fastsim.strips);
+    c.fastsim.elements = count("elements", creep::kFastsimElementsRange, c.fastsim.elements);
+    c.fastsim.bound = o.choiceOf<creep::FastsimBound>("bound");
+    if (c.creep != dynamics::CreepModel::Fastsim)
+      r.error(*n.field("fastsim"), "fastsim applies to creep = \"fastsim\" only (creep = \"" +
+                                       std::string(nameOf(c.creep)) + "\")");
+  }
   c.mu = r.number("mu");
   c.youngs_modulus = r.number("youngs_modulus");
   c.poisson = r.number("poisson");

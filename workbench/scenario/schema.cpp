@@ -276,6 +276,9 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
         num("flange_damping", "N s/m^2", -1, "LUT flange damping D; default K/100 as in Table 3",
             dynamics::kFlangeDampingRange),
         enumChoice("creep", dynamics::CreepModel::Polach, "tangential force law (paper: Polach)"),
+        blockKey("fastsim", ValueType::Block, {},
+                 "FASTSIM's grid and traction bound, for creep = \"fastsim\" (docs/creep.md)",
+                 "contact.fastsim"),
         num("mu", "-", 0.2364, "friction coefficient (paper section 5.1)", dynamics::kMuRange),
         num("youngs_modulus", "Pa", 2.1e11, "Young's modulus of wheel and rail",
             dynamics::kYoungsModulusRange),
@@ -291,6 +294,17 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
             "constraint contact cannot lift the wheel, so results past wheel lift are not "
             "physical",
             dynamics::kMinNormalForceRange)}});
+  const creep::FastsimGrid fastsim;  // the defaults live in creep/fastsim.hpp
+  s.push_back(
+      {"contact.fastsim",
+       "FASTSIM discretisation (a plain table inside contact{}, creep = \"fastsim\"): strips "
+       "across the ellipse, elements along each strip (Kalker 1982; accuracy in docs/creep.md).",
+       {integer("strips", fastsim.strips, "strips across the contact ellipse",
+                creep::kFastsimStripsRange.min, creep::kFastsimStripsRange.max),
+        integer("elements", fastsim.elements,
+                "elements along each strip (the transition range converges as 1/elements)",
+                creep::kFastsimElementsRange.min, creep::kFastsimElementsRange.max),
+        enumChoice("bound", fastsim.bound, "normal pressure of the traction bound mu p")}});
 }
 
 // Schema block of the per-body tables of vehicle.initial (read by build_vehicle.cpp).
