@@ -198,3 +198,28 @@ TEST(MetricDeclarations, RetriesInsidePcallCannotEscapeTheBudget) {
   EXPECT_FALSE(fresh.call(2, sig, v, why));
   EXPECT_NE(why.find("exceeded its budget"), std::string::npos) << why;
 }
+
+// A budget of its own (the fuzz harness lowers them so that the guard answers quickly): the
+// instruction budget, and the memory budget, each reported with its value.
+TEST(MetricDeclarations, ABudgetOfItsOwn) {
+  StudyFile f(
+      R"(    { name = "loop", signals = { y = "/y" }, fn = function(s) while true do end end },
+    { name = "big", signals = { y = "/y" }, fn = function(s) return #string.rep("x", 1 << 26) end },)");
+  rb::scenario::MetricBudget budget;
+  budget.instructions = 100'000;
+  budget.seconds = 5;
+  budget.memory = std::size_t{32} << 20;
+  const std::vector<std::pair<std::string, std::vector<double>>> sig = {{"y", {1.0, 2.0}}};
+  double v = 0;
+  std::string why;
+  {
+    rb::scenario::LuaMetrics lua(f.path(), RB_SOURCE_DIR, budget);
+    EXPECT_FALSE(lua.call(1, sig, v, why));
+    EXPECT_NE(why.find("exceeded its budget of 100000 Lua instructions or 5 s"), std::string::npos)
+        << why;
+  }
+  rb::scenario::LuaMetrics lua(f.path(), RB_SOURCE_DIR, budget);
+  why.clear();
+  EXPECT_FALSE(lua.call(2, sig, v, why));
+  EXPECT_NE(why.find("not enough memory (memory budget 32 MiB)"), std::string::npos) << why;
+}
