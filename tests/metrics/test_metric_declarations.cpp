@@ -131,7 +131,8 @@ TEST(MetricDeclarations, LuaFunctionsRunInTheirSandbox) {
     { name = "io", fn = function(s) return io.open("/etc/passwd") end, signals = { y = "/y" } },
     { name = "pat", fn = function(s) return ("aaa"):find("a.") end, signals = { y = "/y" } },
     { name = "slow", signals = { y = "/y" },
-      fn = function(s) return (("a"):rep(5000)):find("a*a*a*a*b") end },)");
+      fn = function(s) return (("a"):rep(5000)):find("a*a*a*a*b") end },
+    { name = "arg", fn = function(s) return ("a"):find() end, signals = { y = "/y" } },)");
   const auto st = rb::scenario::loadStudy(f.path(), RB_SOURCE_DIR);
   rb::scenario::LuaMetrics lua(f.path(), RB_SOURCE_DIR);
   const std::vector<std::pair<std::string, std::vector<double>>> sig = {{"y", {1.0, 2.5, 3.0}}};
@@ -153,6 +154,13 @@ TEST(MetricDeclarations, LuaFunctionsRunInTheirSandbox) {
   EXPECT_EQ(v, 1.0);
   EXPECT_FALSE(lua.call(6, sig, v, why));  // one whose worst case is beyond the bound
   EXPECT_NE(why.find("pattern too costly"), std::string::npos) << why;
+  why.clear();
+  // A missing argument of a guarded pattern function: the library's message with the function's
+  // name and the line (found by tests/fuzz: was "bad argument #1 to '?'" without a line).
+  EXPECT_FALSE(lua.call(7, sig, v, why));
+  EXPECT_NE(why.find("s.lua:13: bad argument #1 to 'find' (string expected, got no value)"),
+            std::string::npos)
+      << why;
   why.clear();
   EXPECT_FALSE(lua.call(9, sig, v, why));
   EXPECT_NE(why.find("not a function"), std::string::npos) << why;

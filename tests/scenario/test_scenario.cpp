@@ -360,6 +360,10 @@ TEST(ScenarioHostile, FinalizersAndCostlyPatternsRefused) {
       t.write("pat.lua",
               "local s = string.rep('a', 5000)\nlocal i = s:find(string.rep('a*', 30) .. 'b')\n");
   EXPECT_NE(errorsOf(pat).find(pat + ":2: string.find: pattern too costly"), std::string::npos);
+  // A missing argument of a guarded pattern function: the library's message, with the function's
+  // name and the script's line (found by tests/fuzz: was "bad argument #2 to '?'").
+  std::string arg = t.write("arg.lua", "local n = 1\nlocal x = string.gsub('a')\n");
+  EXPECT_EQ(errorsOf(arg), arg + ":2: bad argument #2 to 'gsub' (string expected, got no value)");
   std::string ok = t.write("ok.lua",
                            "assert(('  ab  '):gsub('^%s*(.-)%s*$', '%1') == 'ab')\n"
                            "assert(select(2, string.rep('w ', 2000):gsub('%s+', ' ')) == 2000)\n" +

@@ -590,6 +590,10 @@ struct LuaHost::Impl {
     return false;
   }
   static int patternGuarded(lua_State* L) {
+    // The library checks these too, but from inside this wrapper its message would name no
+    // function ("bad argument #2 to '?'") and no line of the script.
+    luaL_checklstring(L, 1, nullptr);
+    luaL_checklstring(L, 2, nullptr);
     if (!patternCheckBody(L)) return lua_error(L);
     const int n = lua_gettop(L);
     lua_pushvalue(L, lua_upvalueindex(1));

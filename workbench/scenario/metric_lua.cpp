@@ -142,6 +142,10 @@ struct LuaMetrics::Impl {
     return work <= kPatternWorkLimit;
   }
   static int patternGuarded(lua_State* L) {
+    // The library checks these too, but from inside this wrapper its message would name no
+    // function ("bad argument #2 to '?'") and no line of the study file.
+    luaL_checklstring(L, 1, nullptr);
+    luaL_checklstring(L, 2, nullptr);
     double work = 0.0;
     if (!patternAffordable(L, work))
       return luaL_error(L, "string.%s: pattern too costly (worst case %f steps, limit %f)",
