@@ -762,8 +762,9 @@ struct Converter {
   Diagnostics& diags;
   std::set<const void*> active;
   std::size_t values = 0;
-  bool stopped = false;  // a limit that ends the conversion was hit
-  bool standin = false;  // a stand-in of a missing module was met (HostOptions)
+  std::size_t stringBytes = 0;  // of the string values converted so far
+  bool stopped = false;         // a limit that ends the conversion was hit
+  bool standin = false;         // a stand-in of a missing module was met (HostOptions)
 
   void fail(const SourceLoc& loc, const std::string& msg) {
     if (diags.size() >= 50) {
@@ -803,6 +804,14 @@ struct Converter {
         if (len > kMaxStringBytes) {
           fail(parentLoc, path + ": string of " + std::to_string(len) + " bytes, longer than " +
                               std::to_string(kMaxStringBytes) + " bytes");
+          break;
+        }
+        stringBytes += len;
+        if (stringBytes > kMaxTreeStringBytes) {
+          fail(parentLoc, path + ": the scenario's strings hold more than " +
+                              std::to_string(kMaxTreeStringBytes) +
+                              " bytes together (one long string used for many values?)");
+          stopped = true;
           break;
         }
         n.string.assign(s, len);
