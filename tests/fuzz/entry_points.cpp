@@ -2,16 +2,22 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <limits>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
+#include "workbench/assessment/signal_metrics.hpp"
 #include "workbench/contact/kec.hpp"
 #include "workbench/contact/lut.hpp"
 #include "workbench/contact/table_io.hpp"
@@ -20,7 +26,10 @@
 #include "workbench/profiles/profile_io.hpp"
 #include "workbench/profiles/rail60e1.hpp"
 #include "workbench/profiles/s1002.hpp"
+#include "workbench/scenario/metric_lua.hpp"
+#include "workbench/scenario/override_check.hpp"
 #include "workbench/scenario/scenario.hpp"
+#include "workbench/scenario/study.hpp"
 #include "workbench/track/irregularities.hpp"
 
 #ifndef RB_SOURCE_DIR
@@ -84,6 +93,158 @@ std::vector<std::string> overridesOf(std::string_view data) {
 // an InputError well within the smoke runs' 10 s per input; one it misses shows as a timeout.
 constexpr long long kFuzzInstructionLimit = 20'000'000;
 
+// The host's wall-clock guard (30 s by default) must end a script well within the smoke runs'
+// 10 s per input: a loop that catches the error of a costly C function (an unknown name's
+// "did you mean" search) runs few Lua instructions per second and is stopped by the clock.
+// The study harnesses take 2 s: a study file may run three times per input (the study, its own
+// base scenario in the check of the overrides, and once more for the parameter labels).
+void limitLuaClock(const char* seconds) {
+  static const bool clock_set = ::setenv("RAILBENCH_LUA_SECONDS", seconds, 0) == 0;
+  (void)clock_set;
+}
+
+std::string sourceFile(const char* rel) {
+  std::ifstream in(fs::path(RB_SOURCE_DIR) / rel, std::ios::binary);
+  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  if (text.empty()) throw std::runtime_error(std::string("cannot read ") + rel);
+  return text;
+}
+
+// The study input as study.lua beside the base scenarios it can name (written once).
+std::string writeStudy(std::string_view data) {
+  static const bool bases = [] {
+    scratch().write("base.lua", sourceFile("scenarios/validation/case1_R300_kec.lua"));
+    scratch().write("wagon.lua", sourceFile("scenarios/vehicle/manchester_guided_r500.lua"));
+    return true;
+  }();
+  (void)bases;
+  return scratch().write("study.lua", data);
+}
+
+// RB_FUZZ_VERBOSE=1: the study harnesses say what each input gave (to check that seeds load).
+void verbose(const char* what, const std::string& text) {
+  static const bool on = std::getenv("RB_FUZZ_VERBOSE") != nullptr;
+  if (on) std::fprintf(stderr, "%s: %s\n", what, text.c_str());
+}
+
+// A study as the workbench loads it, and the metrics' definitions (hashed into /metrics).
+std::optional<scenario::StudySpec> loadStudyInput(std::string_view data, std::string& path) {
+  limitLuaClock("2");
+  path = writeStudy(data);
+  try {
+    scenario::StudySpec st = scenario::loadStudy(path, RB_SOURCE_DIR);
+    std::size_t n = 0;
+    for (const auto& m : st.metrics) n += m.definition().size();
+    volatile std::size_t sink = n;
+    (void)sink;
+    verbose("study", "loaded, " + std::to_string(st.cases.size()) + " cases, " +
+                         std::to_string(st.metrics.size()) + " metrics");
+    return st;
+  } catch (const InputError& e) {
+    verbose("study", e.what());
+    return std::nullopt;
+  }
+}
+
+// Signals (abscissa x, values y) the metrics are evaluated on: ordinary samples over 400 m,
+// non-finite values, no samples, a single sample, repeated abscissae (a halted body).
+struct SyntheticSignal {
+  std::vector<double> x, y;
+};
+
+const std::vector<SyntheticSignal>& syntheticSignals() {
+  static const std::vector<SyntheticSignal> sets = [] {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<SyntheticSignal> out;
+    SyntheticSignal a;
+    for (int i = 0; i <= 40; ++i) {
+      a.x.push_back(10.0 * i);
+      a.y.push_back(1e-3 * std::sin(0.3 * i) + 1e-4 * i);
+    }
+    out.push_back(std::move(a));
+    out.push_back({{0, 1, 2, 3, 4, 5, 6}, {0, nan, inf, -inf, 1e308, -0.0, 5e-324}});
+    out.push_back({{}, {}});
+    out.push_back({{5}, {1.5}});
+    out.push_back({{0, 0, 1, 1, 2}, {1, 2, 3, 4, 5}});
+    return out;
+  }();
+  return sets;
+}
+
+// A metric's value or its reason, as the summary records it: NaN exactly when there is a reason.
+void checkMetricValue(const assessment::metrics::Value& v, const scenario::MetricSpec& m) {
+  if (v.ok() && std::isnan(v.value))
+    throw std::logic_error("metric " + m.name + " (" + m.kind + "): NaN without a reason");
+  if (!v.ok() && !std::isnan(v.value))
+    throw std::logic_error("metric " + m.name + " (" + m.kind + "): a value and a reason");
+}
+
+// The statistics of kinds signal, steady and error on every synthetic signal (error: against
+// every synthetic reference).
+void evaluateStatistics(const scenario::MetricSpec& m) {
+  namespace sm = assessment::metrics;
+  const sm::Window w{m.from, m.to};
+  for (const auto& s : syntheticSignals()) {
+    if (m.kind == "signal") {
+      sm::Stat stat{};
+      if (sm::statFromName(m.stat, stat)) checkMetricValue(sm::statistic(s.x, s.y, w, stat), m);
+    } else if (m.kind == "steady") {
+      checkMetricValue(sm::steady(s.x, s.y, w, m.length, m.tolerance), m);
+    } else if (m.kind == "error") {
+      for (const auto& r : syntheticSignals())
+        checkMetricValue(sm::maxAbsDifference(s.x, s.y, r.x, r.y, w), m);
+    }
+  }
+}
+
+// Budgets of the metric functions per call (the program's: 1e9 instructions, 30 s, 1 GiB), and
+// the time after which the harness makes no further call: each input ends well within the smoke
+// runs' 10 s even with many slow functions.
+scenario::MetricBudget fuzzMetricBudget() {
+  scenario::MetricBudget b;
+  b.instructions = 20'000'000;
+  b.seconds = 1.0;
+  b.memory = std::size_t{256} << 20;
+  return b;
+}
+constexpr std::chrono::seconds kMetricCallsTime{2};
+
+// Every function metric through LuaMetrics, called as the study summary calls it: s.time and
+// s.distance (the abscissa) and each declared signal (the values).
+void evaluateLuaMetrics(const scenario::StudySpec& st, const std::string& path) {
+  std::unique_ptr<scenario::LuaMetrics> lua;
+  try {
+    lua = std::make_unique<scenario::LuaMetrics>(path, RB_SOURCE_DIR, fuzzMetricBudget());
+  } catch (const InputError& e) {
+    verbose("metric functions", e.what());
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  auto call = [&](int index, const std::vector<std::pair<std::string, std::vector<double>>>& in) {
+    if (std::chrono::steady_clock::now() - start > kMetricCallsTime) return;
+    double v = 0.0;
+    std::string why;
+    const bool ok = lua->call(index, in, v, why);
+    verbose(("metric " + std::to_string(index)).c_str(), ok ? std::to_string(v) : why);
+    if (ok != why.empty())
+      throw std::logic_error("LuaMetrics::call: success and reason disagree: '" + why + "'");
+    if (ok && !std::isfinite(v)) throw std::logic_error("LuaMetrics::call: a non-finite value");
+  };
+  for (const auto& m : st.metrics) {
+    if (m.kind != "lua") continue;
+    for (const auto& s : syntheticSignals()) {
+      std::vector<std::pair<std::string, std::vector<double>>> in = {{"time", s.x},
+                                                                     {"distance", s.x}};
+      for (const auto& sig : m.signals) in.emplace_back(sig.first, s.y);
+      call(m.index, in);
+    }
+  }
+  // An index that names no function, and a call without signals.
+  call(static_cast<int>(st.metrics.size()) + 1, {});
+  if (!st.metrics.empty()) call(st.metrics.front().index, {});
+}
+
 void touchProfile(const profiles::Profile& p) {
   volatile double sink = 0.0;
   const double a = p.sMin(), b = p.sMax();
@@ -139,11 +300,7 @@ void touchKec(const contact::KecTable& t) {
 }  // namespace
 
 void scenario(std::string_view data) {
-  // The host's wall-clock guard (30 s by default) must end a script well within the smoke runs'
-  // 10 s per input: a loop that catches the error of a costly C function (an unknown name's
-  // "did you mean" search) runs few Lua instructions per second and is stopped by the clock.
-  static const bool clock_set = [] { return ::setenv("RAILBENCH_LUA_SECONDS", "3", 0) == 0; }();
-  (void)clock_set;
+  limitLuaClock("3");
   const std::string file = scratch().write("fuzz.lua", data);
   scenario::LoadOptions options;
   options.root = RB_SOURCE_DIR;
@@ -153,6 +310,26 @@ void scenario(std::string_view data) {
     (void)scenario::loadScenario(file, options);
   } catch (const InputError&) {
   }
+}
+
+void study(std::string_view data) {
+  std::string path;
+  const auto st = loadStudyInput(data, path);
+  if (!st) return;
+  // What the study command derives before running anything: the figure labels of the swept
+  // parameters (each base scenario run once more).
+  std::size_t n = 0;
+  for (const auto& l : scenario::studyParameterLabels(*st)) n += l.label.size() + l.unit.size();
+  volatile std::size_t sink = n;
+  (void)sink;
+}
+
+void metric(std::string_view data) {
+  std::string path;
+  const auto st = loadStudyInput(data, path);
+  if (!st) return;
+  for (const auto& m : st->metrics) evaluateStatistics(m);
+  evaluateLuaMetrics(*st, path);
 }
 
 void profile(std::string_view data) {
@@ -248,6 +425,8 @@ EntryPoint entryPoint(const std::string& harness) {
   if (harness == "profile") return &profile;
   if (harness == "csv") return &irregularityCsv;
   if (harness == "tables") return &tables;
+  if (harness == "study") return &study;
+  if (harness == "metric") return &metric;
   return nullptr;
 }
 

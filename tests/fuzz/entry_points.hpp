@@ -35,8 +35,21 @@ bool loadTable(std::string_view data);
 // key the harness loads every file against, and what fuzz_make_table_seeds builds.
 const contact::ContactGeometryConfig& seedTableConfig();
 
-// The entry point of a harness by its name ("scenario", "profile", "csv", "tables"); nullptr if
-// there is none.
+// A study file: the input is written as study.lua to the private temporary folder, beside two
+// base scenarios it can name (base.lua: the single wheelset of the paper's case 1,
+// scenarios/validation/case1_R300_kec.lua; wagon.lua: the Manchester wagon with its named groups,
+// scenarios/vehicle/manchester_guided_r500.lua), and loaded with scenario::loadStudy.
+void study(std::string_view data);
+
+// A study file with metrics: loaded as by study(); when it loads, each metric is evaluated on
+// small synthetic signals (ordinary, NaN / inf, empty, a single sample): the statistics of the
+// signal, steady and error kinds, and every function metric (kind "lua") through
+// scenario::LuaMetrics with lowered budgets, so that the metric sandbox is fuzzed too. A metric
+// that fails is reported by its `why`, as the study summary does; no exception but InputError.
+void metric(std::string_view data);
+
+// The entry point of a harness by its name ("scenario", "profile", "csv", "tables", "study",
+// "metric"); nullptr if there is none.
 using EntryPoint = void (*)(std::string_view);
 EntryPoint entryPoint(const std::string& harness);
 

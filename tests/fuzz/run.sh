@@ -2,8 +2,9 @@
 # Builds the libFuzzer harnesses in build-fuzz/ (clang-14, ASan + UBSan) and fuzzes each in turn.
 #   tests/fuzz/run.sh [--seconds N | --total N] [--build DIR] [HARNESS...] [-- libFuzzer options]
 # --seconds N: N seconds per harness (default 60); --total N: N seconds shared by the harnesses.
-# HARNESS: scenario, profile, csv, tables (default: all). Exit status non-zero when a harness
-# finds a crash, leak, timeout or out-of-memory; its input is left in BUILD/tests/fuzz/work/HARNESS/.
+# HARNESS: scenario, profile, csv, tables, study, metric (default: all). Exit status non-zero when
+# a harness finds a crash, leak, timeout or out-of-memory; its input is left in
+# BUILD/tests/fuzz/work/HARNESS/.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 build="$root/build-fuzz"
@@ -15,11 +16,11 @@ while [[ $# -gt 0 ]]; do
     --total) total=$2; shift 2 ;;
     --build) build=$2; shift 2 ;;
     --) shift; extra=("$@"); break ;;
-    -h|--help) sed -n '2,6p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,7p' "$0"; exit 0 ;;
     *) harnesses+=("$1"); shift ;;
   esac
 done
-[[ ${#harnesses[@]} -gt 0 ]] || harnesses=(scenario profile csv tables)
+[[ ${#harnesses[@]} -gt 0 ]] || harnesses=(scenario profile csv tables study metric)
 if [[ $total -gt 0 ]]; then seconds=$(( total / ${#harnesses[@]} )); fi
 
 cc=${CC:-clang-14} cxx=${CXX:-clang++-14}

@@ -61,7 +61,8 @@ TEST(TableSeeds, Load) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Fuzz, Replay, testing::Values("scenario", "profile", "csv", "tables"),
+INSTANTIATE_TEST_SUITE_P(Fuzz, Replay,
+                         testing::Values("scenario", "profile", "csv", "tables", "study", "metric"),
                          [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
 }  // namespace

@@ -132,7 +132,8 @@ TEST(MetricDeclarations, LuaFunctionsRunInTheirSandbox) {
     { name = "io", fn = function(s) return io.open("/etc/passwd") end, signals = { y = "/y" } },
     { name = "pat", fn = function(s) return ("aaa"):find("a.") end, signals = { y = "/y" } },
     { name = "slow", signals = { y = "/y" },
-      fn = function(s) return (("a"):rep(5000)):find("a*a*a*a*b") end },)");
+      fn = function(s) return (("a"):rep(5000)):find("a*a*a*a*b") end },
+    { name = "arg", fn = function(s) return ("a"):find() end, signals = { y = "/y" } },)");
   const auto st = rb::scenario::loadStudy(f.path(), RB_SOURCE_DIR);
   rb::scenario::LuaMetrics lua(f.path(), RB_SOURCE_DIR);
   const std::vector<std::pair<std::string, std::vector<double>>> sig = {{"y", {1.0, 2.5, 3.0}}};
@@ -154,6 +155,13 @@ TEST(MetricDeclarations, LuaFunctionsRunInTheirSandbox) {
   EXPECT_EQ(v, 1.0);
   EXPECT_FALSE(lua.call(6, sig, v, why));  // one whose worst case is beyond the bound
   EXPECT_NE(why.find("pattern too costly"), std::string::npos) << why;
+  why.clear();
+  // A missing argument of a guarded pattern function: the library's message with the function's
+  // name and the line (found by tests/fuzz: was "bad argument #1 to '?'" without a line).
+  EXPECT_FALSE(lua.call(7, sig, v, why));
+  EXPECT_NE(why.find("s.lua:13: bad argument #1 to 'find' (string expected, got no value)"),
+            std::string::npos)
+      << why;
   why.clear();
   EXPECT_FALSE(lua.call(9, sig, v, why));
   EXPECT_NE(why.find("not a function"), std::string::npos) << why;
@@ -198,4 +206,29 @@ TEST(MetricDeclarations, RetriesInsidePcallCannotEscapeTheBudget) {
   why.clear();
   EXPECT_FALSE(fresh.call(2, sig, v, why));
   EXPECT_NE(why.find("exceeded its budget"), std::string::npos) << why;
+}
+
+// A budget of its own (the fuzz harness lowers them so that the guard answers quickly): the
+// instruction budget, and the memory budget, each reported with its value.
+TEST(MetricDeclarations, ABudgetOfItsOwn) {
+  StudyFile f(
+      R"(    { name = "loop", signals = { y = "/y" }, fn = function(s) while true do end end },
+    { name = "big", signals = { y = "/y" }, fn = function(s) return #string.rep("x", 1 << 26) end },)");
+  rb::scenario::MetricBudget budget;
+  budget.instructions = 100'000;
+  budget.seconds = 5;
+  budget.memory = std::size_t{32} << 20;
+  const std::vector<std::pair<std::string, std::vector<double>>> sig = {{"y", {1.0, 2.0}}};
+  double v = 0;
+  std::string why;
+  {
+    rb::scenario::LuaMetrics lua(f.path(), RB_SOURCE_DIR, budget);
+    EXPECT_FALSE(lua.call(1, sig, v, why));
+    EXPECT_NE(why.find("exceeded its budget of 100000 Lua instructions or 5 s"), std::string::npos)
+        << why;
+  }
+  rb::scenario::LuaMetrics lua(f.path(), RB_SOURCE_DIR, budget);
+  why.clear();
+  EXPECT_FALSE(lua.call(2, sig, v, why));
+  EXPECT_NE(why.find("not enough memory (memory budget 32 MiB)"), std::string::npos) << why;
 }

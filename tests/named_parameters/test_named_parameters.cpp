@@ -3,6 +3,7 @@
 // file's line.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -269,6 +270,35 @@ TEST(NamedParameters, StudyTypoAtTheStudyLine) {
   EXPECT_FALSE(contains(what, "vehicle.speed")) << what;
   const auto st = rb::scenario::loadStudy(kDir + "study_good.lua", RB_SOURCE_DIR);
   EXPECT_EQ(st.cases.size(), 4u);
+}
+
+// Every case repeats the study's override keys: the check tries each distinct key once (the
+// first value), and finding them is not quadratic in the number of overrides (found by
+// tests/fuzz: 100 cases of 2000 overrides each took a minute to load). Quadratic, the 200 cases
+// of 10000 keys here would take minutes; linear, well under a second.
+TEST(NamedParameters, StudyOverrideCheckScalesWithManyOverrides) {
+  rb::scenario::StudySpec st;
+  st.file = kDir + "study_good.lua";
+  st.root = RB_SOURCE_DIR;
+  const std::string base = kDir + "wagon.lua";
+  for (int c = 0; c < 200; ++c) {
+    rb::scenario::StudyCase sc;
+    sc.base = base;
+    for (int k = 0; k < 10000; ++k)
+      sc.overrides.push_back("run.k" + std::to_string(k) + "=" + std::to_string(c));
+    st.cases.push_back(sc);
+  }
+  st.cases[7].overrides.push_back("vehicle.bodies.cat.mass=1");
+  const auto start = std::chrono::steady_clock::now();
+  std::string what;
+  try {
+    rb::scenario::checkStudyOverrides(st, "", RB_SOURCE_DIR);
+  } catch (const rb::InputError& e) {
+    what = e.what();
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 20.0);
+  EXPECT_TRUE(contains(what, "\"vehicle.bodies.cat.mass\": vehicle.bodies: no body named 'cat'"))
+      << what;
 }
 
 // `workbench help vehicle SCENARIO.lua`: bodies, elements with kind and keys, groups with members

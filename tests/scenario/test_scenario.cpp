@@ -334,6 +334,17 @@ TEST(ScenarioHostile, ConversionLimitsValuesAndStrings) {
                             "track { segments = { tangent { length = 100 } }, name = "
                             "string.rep('x', 2 << 20) }\n");
   EXPECT_NE(errorsOf(str).find(str + ":1: track.name: string of 2097152 bytes"), std::string::npos);
+  // One string of almost 1 MiB used for 4000 values: within the Lua state's memory (Lua keeps
+  // one copy) but 4 GB as the tree's copies (found by tests/fuzz: out of memory).
+  std::string many = t.write("many.lua",
+                             "local s = string.rep('x', (1 << 20) - 16)\nlocal v = {}\n"
+                             "for i = 1, 4000 do v[i] = s end\n"
+                             "track { segments = { tangent { length = 100 } }, names = v }\n");
+  const std::string e = errorsOf(many);
+  EXPECT_NE(e.find(many + ":4: track.names[65]: the scenario's strings hold more than 67108864 "
+                          "bytes together"),
+            std::string::npos)
+      << e;
 }
 
 TEST(ScenarioHostile, BudgetErrorCannotBeSwallowedByPcall) {
@@ -360,6 +371,10 @@ TEST(ScenarioHostile, FinalizersAndCostlyPatternsRefused) {
       t.write("pat.lua",
               "local s = string.rep('a', 5000)\nlocal i = s:find(string.rep('a*', 30) .. 'b')\n");
   EXPECT_NE(errorsOf(pat).find(pat + ":2: string.find: pattern too costly"), std::string::npos);
+  // A missing argument of a guarded pattern function: the library's message, with the function's
+  // name and the script's line (found by tests/fuzz: was "bad argument #2 to '?'").
+  std::string arg = t.write("arg.lua", "local n = 1\nlocal x = string.gsub('a')\n");
+  EXPECT_EQ(errorsOf(arg), arg + ":2: bad argument #2 to 'gsub' (string expected, got no value)");
   std::string ok = t.write("ok.lua",
                            "assert(('  ab  '):gsub('^%s*(.-)%s*$', '%1') == 'ab')\n"
                            "assert(select(2, string.rep('w ', 2000):gsub('%s+', ' ')) == 2000)\n" +

@@ -592,6 +592,10 @@ struct LuaHost::Impl {
     return false;
   }
   static int patternGuarded(lua_State* L) {
+    // The library checks these too, but from inside this wrapper its message would name no
+    // function ("bad argument #2 to '?'") and no line of the script.
+    luaL_checklstring(L, 1, nullptr);
+    luaL_checklstring(L, 2, nullptr);
     if (!patternCheckBody(L)) return lua_error(L);
     const int n = lua_gettop(L);
     lua_pushvalue(L, lua_upvalueindex(1));
@@ -777,8 +781,9 @@ struct Converter {
   std::map<std::string, SourceText> sources;  // by the file name of SourceLoc
   std::set<const void*> active;
   std::size_t values = 0;
-  bool stopped = false;  // a limit that ends the conversion was hit
-  bool standin = false;  // a stand-in of a missing module was met (HostOptions)
+  std::size_t stringBytes = 0;  // of the string values converted so far
+  bool stopped = false;         // a limit that ends the conversion was hit
+  bool standin = false;         // a stand-in of a missing module was met (HostOptions)
 
   void addSource(const std::string& file, std::string_view text) {
     sources[file] = SourceText{text, lineStarts(text)};
@@ -824,6 +829,14 @@ struct Converter {
         if (len > kMaxStringBytes) {
           fail(parentLoc, path + ": string of " + std::to_string(len) + " bytes, longer than " +
                               std::to_string(kMaxStringBytes) + " bytes");
+          break;
+        }
+        stringBytes += len;
+        if (stringBytes > kMaxTreeStringBytes) {
+          fail(parentLoc, path + ": the scenario's strings hold more than " +
+                              std::to_string(kMaxTreeStringBytes) +
+                              " bytes together (one long string used for many values?)");
+          stopped = true;
           break;
         }
         n.string.assign(s, len);

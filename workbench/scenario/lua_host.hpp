@@ -18,8 +18,10 @@
 // s back-references and %b items, starts = 1 if anchored by '^', else n+1). Plain searches and
 // patterns without special characters are not limited.
 //
-// Conversion to the Node tree is bounded too: nesting depth, number of values and string length
-// (limits below), each a file:line error.
+// Conversion to the Node tree is bounded too: nesting depth, number of values, the length of one
+// string and of all strings together (limits below), each a file:line error. The last bounds the
+// copies: Lua keeps one copy of equal strings, the tree one per value, so a script within its
+// memory budget could reference one long string from every value of the tree.
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -50,6 +52,7 @@ inline constexpr double kDefaultTimeLimit = 30.0;                     // [s]
 inline constexpr int kMaxNesting = 32;                                // table levels below a block
 inline constexpr std::size_t kMaxValues = 500'000;                    // values in the whole tree
 inline constexpr std::size_t kMaxStringBytes = std::size_t{1} << 20;  // one string value
+inline constexpr std::size_t kMaxTreeStringBytes = std::size_t{64} << 20;  // all string values
 inline constexpr std::size_t kMaxScenarioBytes = std::size_t{16} << 20;  // scenario or module file
 inline constexpr std::size_t kMaxModuleName = 200;  // characters of a require name
 inline constexpr int kMaxRequireDepth = 32;         // nested require calls

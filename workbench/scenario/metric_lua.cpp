@@ -47,6 +47,7 @@ bool below(const fs::path& p, const fs::path& root) {
 }  // namespace
 
 struct LuaMetrics::Impl {
+  MetricBudget budget;
   lua_State* L = nullptr;
   std::size_t memory = 0;
   long long instructions = 0;
@@ -64,7 +65,7 @@ struct LuaMetrics::Impl {
       std::free(ptr);
       return nullptr;
     }
-    if (nsize > old && self->memory - old + nsize > kMetricMemoryLimit) return nullptr;
+    if (nsize > old && self->memory - old + nsize > self->budget.memory) return nullptr;
     void* p = std::realloc(ptr, nsize);
     if (p) self->memory = self->memory - old + nsize;
     return p;
@@ -73,7 +74,7 @@ struct LuaMetrics::Impl {
   static void hook(lua_State* L, lua_Debug*) {
     Impl* self = from(L);
     self->instructions += kHookEvery;
-    if (self->death.dead || self->instructions > kMetricInstructionLimit ||
+    if (self->death.dead || self->instructions > self->budget.instructions ||
         std::chrono::steady_clock::now() > self->deadline) {
       if (!self->death.dead) {
         self->death.dead = true;
@@ -82,9 +83,8 @@ struct LuaMetrics::Impl {
         if (lua_getstack(L, 0, &ar) && lua_getinfo(L, "l", &ar)) line = ar.currentline;
         self->death.message = (line > 0 ? "line " + std::to_string(line) + ": " : std::string()) +
                               "metric function exceeded its budget of " +
-                              std::to_string(kMetricInstructionLimit) + " Lua instructions or " +
-                              std::to_string(static_cast<int>(kMetricTimeLimit)) +
-                              " s (endless loop?)";
+                              std::to_string(self->budget.instructions) + " Lua instructions or " +
+                              formatNumber(self->budget.seconds) + " s (endless loop?)";
         // From now on the hook fires on every instruction: a pcall that caught the error gets
         // it again as soon as it returns, so no retry loop can outlast the budget.
         lua_sethook(L, &hook, LUA_MASKCOUNT, 1);
@@ -98,7 +98,7 @@ struct LuaMetrics::Impl {
     instructions = 0;
     deadline = std::chrono::steady_clock::now() +
                std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                   std::chrono::duration<double>(kMetricTimeLimit));
+                   std::chrono::duration<double>(budget.seconds));
   }
 
   // kind{ ... } returns its table; study{ ... } also keeps it (upvalue 1: true for study).
@@ -142,6 +142,10 @@ struct LuaMetrics::Impl {
     return work <= kPatternWorkLimit;
   }
   static int patternGuarded(lua_State* L) {
+    // The library checks these too, but from inside this wrapper its message would name no
+    // function ("bad argument #2 to '?'") and no line of the study file.
+    luaL_checklstring(L, 1, nullptr);
+    luaL_checklstring(L, 2, nullptr);
     double work = 0.0;
     if (!patternAffordable(L, work))
       return luaL_error(L, "string.%s: pattern too costly (worst case %f steps, limit %f)",
@@ -271,15 +275,16 @@ struct LuaMetrics::Impl {
   std::string popError() {
     std::string m = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "error (no message)";
     lua_pop(L, 1);
-    if (m.find("not enough memory") != std::string::npos || memory > kMetricMemoryLimit / 2)
-      m += " (memory budget " + std::to_string(kMetricMemoryLimit >> 20) + " MiB)";
+    if (m.find("not enough memory") != std::string::npos || memory > budget.memory / 2)
+      m += " (memory budget " + std::to_string(budget.memory >> 20) + " MiB)";
     return m;
   }
 };
 
-LuaMetrics::LuaMetrics(const std::string& path, const std::string& root)
+LuaMetrics::LuaMetrics(const std::string& path, const std::string& root, const MetricBudget& budget)
     : impl_(std::make_unique<Impl>()) {
   Impl& im = *impl_;
+  im.budget = budget;
   im.L = lua_newstate(&Impl::alloc, &im);
   if (!im.L) throw InputError({path, 0}, "cannot create the Lua state of the metric functions");
   *static_cast<Impl**>(lua_getextraspace(im.L)) = &im;

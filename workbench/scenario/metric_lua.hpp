@@ -10,6 +10,7 @@
 // (kPatternWorkLimit); `require "a.b"` reads a/b.lua below
 // the study's folder or <root>/scenarios (real path checked) as the scenario host does. Each call
 // has an instruction, wall-clock and memory budget.
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <utility>
@@ -17,10 +18,24 @@
 
 namespace rb::scenario {
 
+inline constexpr long long kMetricInstructionLimit = 1'000'000'000;      // per call
+inline constexpr double kMetricTimeLimit = 30.0;                         // [s] per call
+inline constexpr std::size_t kMetricMemoryLimit = std::size_t{1} << 30;  // bytes
+
+// The budgets of the metric functions' sandbox: per call (and for the run of the study file),
+// the Lua instructions and the wall-clock time; the memory of the whole Lua state. The program
+// uses the defaults; tests and the fuzz harness (tests/fuzz) lower them so that the guard answers
+// quickly.
+struct MetricBudget {
+  long long instructions = kMetricInstructionLimit;
+  double seconds = kMetricTimeLimit;
+  std::size_t memory = kMetricMemoryLimit;
+};
+
 class LuaMetrics {
  public:
   // Runs the study file `path`; throws InputError (file:line) when it does not run.
-  LuaMetrics(const std::string& path, const std::string& root);
+  LuaMetrics(const std::string& path, const std::string& root, const MetricBudget& budget = {});
   ~LuaMetrics();
   LuaMetrics(const LuaMetrics&) = delete;
   LuaMetrics& operator=(const LuaMetrics&) = delete;
@@ -35,9 +50,5 @@ class LuaMetrics {
  private:
   std::unique_ptr<Impl> impl_;
 };
-
-inline constexpr long long kMetricInstructionLimit = 1'000'000'000;      // per call
-inline constexpr double kMetricTimeLimit = 30.0;                         // [s] per call
-inline constexpr std::size_t kMetricMemoryLimit = std::size_t{1} << 30;  // bytes
 
 }  // namespace rb::scenario

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -33,17 +34,16 @@ int keyLine(const std::string& text, const std::string& key) {
 }
 
 // The distinct override assignments of the study per base scenario (first value of each key).
+// A set of the keys seen: every case repeats the study's keys, so a search of a list per override
+// was quadratic (100 cases of 2000 overrides took a minute to load).
 std::map<std::string, std::vector<std::string>> assignmentsByBase(const StudySpec& study) {
   std::map<std::string, std::vector<std::string>> out;
-  std::map<std::string, std::vector<std::string>> keys;
-  for (const auto& c : study.cases)
-    for (const auto& o : c.overrides) {
-      const std::string key = o.substr(0, o.find('='));
-      auto& seen = keys[c.base];
-      if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
-      seen.push_back(key);
-      out[c.base].push_back(o);
-    }
+  std::map<std::string, std::set<std::string>> keys;
+  for (const auto& c : study.cases) {
+    auto& seen = keys[c.base];
+    for (const auto& o : c.overrides)
+      if (seen.insert(o.substr(0, o.find('='))).second) out[c.base].push_back(o);
+  }
   return out;
 }
 
