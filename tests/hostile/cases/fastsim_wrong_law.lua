@@ -1,4 +1,4 @@
--- hostile: expect="fastsim_wrong_law.lua:4: contact: fastsim applies to creep = \"fastsim\" only (creep = \"polach\")"
+-- hostile: expect="fastsim_wrong_law.lua:6: contact: fastsim applies to creep = \"fastsim\" only (creep = \"polach\")"
 -- A FASTSIM grid given to another creep law would be silently unused: refused at its line.
 track { segments = { tangent { length = 100 } } }
 contact {
