@@ -351,8 +351,8 @@ void checkCases(const scenario::StudySpec& st, const StudyOptions& o) {
   }
   Diagnostics d;
   for (const auto& p : problems)
-    d.add(p.loc, p.message + (st.cases.size() > 1 ? " (" + casesText(p.cases, st.cases.size()) + ")"
-                                                   : ""));
+    d.add(p.loc, p.message +
+                     (st.cases.size() > 1 ? " (" + casesText(p.cases, st.cases.size()) + ")" : ""));
   d.throwIfAny();
 }
 
