@@ -16,8 +16,9 @@ std::string profileSource(Reader& r, const Node& n, const std::string& key,
     // A near miss of the built-in name ("60E1", "S1002") is the likely intent, not a file.
     const std::string hint = closestMatch(v, {builtin});
     const Node* at = r.value(key);
-    r.error(at != nullptr ? *at : n, key + ": " + e.diagnostics().front().message +
-                   (hint.empty() ? "" : " (did you mean the built-in profile '" + hint + "'?)"));
+    r.error(at != nullptr ? *at : n,
+            key + ": " + e.diagnostics().front().message +
+                (hint.empty() ? "" : " (did you mean the built-in profile '" + hint + "'?)"));
     return builtin;
   }
 }
