@@ -27,8 +27,7 @@ Node parseOverrideValue(const std::string& text, const SourceLoc& loc = kCommand
 void applyOverride(Node& root, const std::string& assignment, Diagnostics& d);
 // The same for an override written in a file (a study's matrix value or case entry): the value
 // and every problem with it are located at `loc` (an empty loc.file means the command line).
-void applyOverride(Node& root, const std::string& assignment, const SourceLoc& loc,
-                   Diagnostics& d);
+void applyOverride(Node& root, const std::string& assignment, const SourceLoc& loc, Diagnostics& d);
 
 // Applies one "path=value" to `root` and returns what is wrong with it (without the "--set"
 // prefix and location), nullopt when it was applied. The values and tables it adds carry `loc`.

@@ -50,8 +50,8 @@ struct ScenarioSpec {
 };
 
 struct LoadOptions {
-  std::string root;                             // project root (scenarios/, profiles/)
-  std::vector<std::string> overrides;           // "a.b[2].c=value"
+  std::string root;                    // project root (scenarios/, profiles/)
+  std::vector<std::string> overrides;  // "a.b[2].c=value"
   // Where each override is written, when it comes from a file (a study's matrix value or case
   // entry): its problems are reported there. Empty (or shorter): the command line.
   std::vector<SourceLoc> override_locs;
