@@ -288,6 +288,65 @@ TEST(ElasticSearch, ResultDoesNotDependOnSeedOrSampling) {
   }
 }
 
+// The pruned scan (ElasticSearchSpec::prune_scan, the default) skips wheel samples by a rigorous
+// bound but must give the full scan's result bit for bit: poses across both wheels, lateral
+// positions from the flange back to the flange, yaw and roll, from 1 mm clear (min_gap must
+// still be exact) to 0.2 mm deep, also with an inclined, offset rail.
+TEST(ElasticSearch, PrunedScanEqualsTheFullScan) {
+  const Bench& b = bench();
+  int compared = 0, with_patches = 0;
+  for (int variant = 0; variant < 3; ++variant) {
+    for (std::size_t side = 0; side < 2; ++side) {
+      WheelRailPair pair = b.search[side]->pair();
+      if (variant == 2) {
+        pair.beta = 0.025;
+        pair.rail_dy = 0.4e-3;
+        pair.rail_dz = -0.3e-3;
+      }
+      ElasticSearchSpec pruned, full;
+      full.prune_scan = false;
+      if (variant == 1) pruned.sample_step = full.sample_step = 0.1e-3;
+      const ElasticContactSearch sp(pair, pruned), sf(pair, full);
+      ASSERT_TRUE(sp.spec().prune_scan);
+      const double sigma = sp.sigma();
+      for (double y = -4.13e-3; y <= 10.0e-3; y += variant == 0 ? 0.37e-3 : 1.1e-3) {
+        for (double psi : {-0.012, 0.0, 0.007}) {
+          for (double phi : {0.0, 0.004}) {
+            ElasticPose pose{-sigma * y, 0.46, phi, psi};
+            const double m = sf.search(pose).min_gap;
+            if (!std::isfinite(m)) continue;
+            for (double d : {1e-3, 1e-5, -1e-5, -5e-5, -2e-4}) {
+              pose.z = 0.46 - m + d;
+              const ElasticWheelGeometry gp = sp.search(pose), gf = sf.search(pose);
+              ++compared;
+              SCOPED_TRACE(testing::Message()
+                           << "variant " << variant << " side " << side << " y " << y << " psi "
+                           << psi << " phi " << phi << " d " << d);
+              ASSERT_EQ(gp.count, gf.count);
+              EXPECT_EQ(gp.min_gap, gf.min_gap);
+              EXPECT_EQ(gp.truncated, gf.truncated);
+              EXPECT_EQ(gp.newton_iterations, gf.newton_iterations);
+              with_patches += gp.count > 0;
+              for (std::size_t k = 0; k < static_cast<std::size_t>(gp.count); ++k) {
+                EXPECT_EQ(gp.patch[k].s_w, gf.patch[k].s_w);
+                EXPECT_EQ(gp.patch[k].s_r, gf.patch[k].s_r);
+                EXPECT_EQ(gp.patch[k].x, gf.patch[k].x);
+                EXPECT_EQ(gp.patch[k].gap_depth, gf.patch[k].gap_depth);
+                EXPECT_EQ(gp.patch[k].approach, gf.patch[k].approach);
+                EXPECT_EQ(gp.patch[k].B_span, gf.patch[k].B_span);
+                EXPECT_EQ(gp.patch[k].refined, gf.patch[k].refined);
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 1500);
+  EXPECT_GT(with_patches, 1000);
+  std::printf("pruned scan = full scan at %d poses (%d with patches)\n", compared, with_patches);
+}
+
 // ---- Patch birth and death, two-point contact ------------------------------------------------
 
 // The right wheel moved toward its flange at zero yaw, its height solved for 10 kN (each wheel

@@ -1,6 +1,7 @@
 #include "workbench/contact/elastic_search.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -11,9 +12,46 @@ namespace rb::contact {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kMaxStep = 2e-3;      // [m] Newton step limit on s_w, s_r
-constexpr double kDomainSlack = 1e-3;  // [m] how far a parameter may leave its profile in Newton
-constexpr double kMaxSinTheta = 0.5;   // |sin(theta + eps)| bound of the locus equation
+constexpr double kMaxStep = 2e-3;         // [m] Newton step limit on s_w, s_r
+constexpr double kDomainSlack = 1e-3;     // [m] how far a parameter may leave its profile in Newton
+constexpr double kMaxSinTheta = 0.5;      // |sin(theta + eps)| bound of the locus equation
+constexpr std::size_t kPruneStride = 16;  // coarse scan: every 16th sample (4 mm at 0.25 mm)
+constexpr std::size_t kMinBlock = 8;      // shorter blocks are scanned without a bound
+constexpr double kMaxPruneStep = 0.3e-3;  // [m] coarser scans are not pruned
+constexpr double kRailBinPad = 10e-3;     // [m] rail bins beyond the rail ends (extrapolation)
+
+// Upper bounds of |h'|, |h''|, |h'''| of a profile over [lo, hi]: h'' is continuous and piecewise
+// linear between the knots, so its values at the knots inside and at 16 sub-points (all sorted)
+// bound it and their difference quotients are the exact h''' of the knot intervals; h' is bounded
+// by its values there plus max |h''| times half the largest spacing.
+void profileBounds(const profiles::Profile& p, const std::vector<double>& knots, double lo,
+                   double hi, double& d1, double& d2, double& d3) {
+  constexpr int kSub = 16;
+  std::array<double, kSub + 1 + 64> pts{};
+  std::size_t n = 0;
+  auto k = std::upper_bound(knots.begin(), knots.end(), lo);
+  for (int j = 0; j <= kSub; ++j) {
+    const double x = lo + (hi - lo) * j / kSub;
+    while (k != knots.end() && *k < x && n + 1 < pts.size()) pts[n++] = *k++;
+    if (n < pts.size()) pts[n++] = x;
+  }
+  d1 = d2 = d3 = 0.0;
+  double gmax = 0.0, prev_x = 0.0, prev_d2 = 0.0;
+  for (std::size_t j = 0; j < n; ++j) {
+    const profiles::ProfilePoint q = p.at(pts[j]);
+    d1 = std::max(d1, std::abs(q.dh));
+    d2 = std::max(d2, std::abs(q.d2h));
+    if (j > 0 && pts[j] > prev_x) {
+      d3 = std::max(d3, std::abs(q.d2h - prev_d2) / (pts[j] - prev_x));
+      gmax = std::max(gmax, pts[j] - prev_x);
+    }
+    prev_x = pts[j];
+    prev_d2 = q.d2h;
+  }
+  d1 = 1.01 * (d1 + 0.5 * d2 * gmax) + 1e-9;
+  d2 = 1.01 * d2 + 1e-9;
+  d3 = 1.01 * d3 + 1e-9;
+}
 
 }  // namespace
 
@@ -100,6 +138,51 @@ ElasticContactSearch::ElasticContactSearch(WheelRailPair pair, ElasticSearchSpec
     h_.push_back(p.h);
     dh_.push_back(p.dh);
   }
+  // Scan pruning bounds (scanPruned()).
+  const std::vector<double> wk = w.knots();
+  std::vector<double> d1(s_.size(), 0.0), d2(s_.size(), 0.0), d3(s_.size(), 0.0);
+  for (std::size_t i = 0; i + 1 < s_.size(); ++i) {
+    profileBounds(w, wk, s_[i], s_[i + 1], d1[i], d2[i], d3[i]);
+  }
+  wheel_d1_.build(d1);
+  wheel_d2_.build(d2);
+  wheel_d3_.build(d3);
+  for (std::size_t i = 0; i < s_.size(); ++i) {
+    d2h_.push_back(w.at(s_[i]).d2h);
+    wheel_hmax_ = std::max(wheel_hmax_, std::abs(h_[i]));
+  }
+  wheel_hmax_ = 1.01 * wheel_hmax_ + 1e-3;  // (h between samples: |h'| Delta s is far below 1 mm)
+  // Rail bins over the rail and kRailBinPad beyond its ends (at() extrapolates the end cubics).
+  const profiles::Profile& r = *pair_.rail;
+  const std::vector<double> rk = r.knots();
+  rail_bin0_ = r.sMin() - kRailBinPad;
+  const auto nb =
+      static_cast<std::size_t>(std::ceil((r.sMax() - r.sMin() + 2.0 * kRailBinPad) / rail_bin_));
+  std::vector<double> r1(nb, 0.0), r2(nb, 0.0);
+  for (std::size_t b = 0; b < nb; ++b) {
+    const double u0 = rail_bin0_ + static_cast<double>(b) * rail_bin_;
+    double r3 = 0.0;
+    profileBounds(r, rk, u0, u0 + rail_bin_, r1[b], r2[b], r3);
+  }
+  rail_d1_.build(r1);
+  rail_d2_.build(r2);
+  rail_bins_ = nb;
+}
+
+void ElasticContactSearch::RangeMax::build(const std::vector<double>& v) {
+  level.assign(1, v);
+  for (std::size_t w = 1; 2 * w <= v.size(); w *= 2) {
+    const std::vector<double>& p = level.back();
+    std::vector<double> q(v.size() - 2 * w + 1);
+    for (std::size_t i = 0; i < q.size(); ++i) q[i] = std::max(p[i], p[i + w]);
+    level.push_back(std::move(q));
+  }
+}
+
+double ElasticContactSearch::RangeMax::operator()(std::size_t a, std::size_t b) const {
+  const auto l = static_cast<std::size_t>(std::bit_width(b - a) - 1);
+  const std::vector<double>& q = level[l];
+  return std::max(q[a], q[b - (std::size_t{1} << l)]);
 }
 
 ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const ElasticPose& pose,
@@ -151,6 +234,33 @@ double ElasticContactSearch::sampledGap(const PoseTrig& t, std::size_t i, double
   const double v = -sb_ * py + cb_ * pz;
   const profiles::ProfilePoint rp = r.at(u);
   s_r = u;
+  return (v - rp.h) / std::sqrt(1.0 + rp.dh * rp.dh);
+}
+
+double ElasticContactSearch::sampledGap(const PoseTrig& t, std::size_t i, double& s_r, double& e,
+                                        double& de) const {
+  double st = 0.0, ct = 1.0, wq = 1.0;
+  t.theta(dh_[i], st, ct, wq);
+  const double h = h_[i];
+  const double L = sigma_ * pair_.wheel_lw + s_[i];
+  const double py = t.py(h, L, st, ct) - t.oy;
+  const double pz = t.pz(h, L, st, ct) - t.oz;
+  const double u = cb_ * py + sb_ * pz;
+  const profiles::Profile& r = *pair_.rail;
+  if (u < r.sMin() || u > r.sMax()) return kInf;
+  const double v = -sb_ * py + cb_ * pz;
+  const profiles::ProfilePoint rp = r.at(u);
+  s_r = u;
+  // Locus tangent (as locus()), in the rail frame.
+  const auto& m = t.r;
+  const double q = m[0][1] * dh_[i] / t.rho;
+  const double dth = std::abs(q) < kMaxSinTheta ? m[0][1] * d2h_[i] / (t.rho * wq) : 0.0;
+  const double d0 = dh_[i] * st + dth * h * ct, d2 = -dh_[i] * ct + dth * h * st;
+  const double ty = m[1][0] * d0 + m[1][1] + m[1][2] * d2;
+  const double tz = m[2][0] * d0 + m[2][1] + m[2][2] * d2;
+  const double du = cb_ * ty + sb_ * tz, dv = -sb_ * ty + cb_ * tz;
+  e = v - rp.h;
+  de = dv - rp.dh * du;
   return (v - rp.h) / std::sqrt(1.0 + rp.dh * rp.dh);
 }
 
@@ -462,6 +572,121 @@ void ElasticContactSearch::collectPatches(const ElasticPose& pose, ElasticWheelG
             [](const auto& p, const auto& q) { return p.approach > q.approach; });
 }
 
+// What the ends of the block (a, b) prove about the samples inside it:
+//   skip (lb > threshold): every sampled gap inside is above candidate_gap, lb a lower bound;
+//   increasing / decreasing: the gap is strictly monotonic over the block.
+// e = v - h_r(u) (rail frame), g = e / q_r, so g' = (e' - e h_r' h_r'' u' / q_r^2) / q_r and
+// e'' = (v'' - h_r' u'') - h_r'' u'^2 with |v'' - h_r' u''| <= q_r |P''|; |P'| <= |X'| and
+// |P''| <= |X''| (the rotations to the track and rail frames keep lengths), where
+//   |X'|^2 = 1 + h'^2 + (h theta')^2,
+//   |X''| <= |h''| + 2 |h'| |theta'| + h theta'^2 + h |theta''|.
+// From an end at distance d <= D/2 (D the block length), e >= e_end +- e'_end d - M d^2 / 2
+// (concave in d: its minimum is at d = 0 or D/2) and |e' - e'_end| <= M d.
+ElasticContactSearch::ScanBlock ElasticContactSearch::classifyBlock(const PoseTrig& t,
+                                                                    const ScanNode& a,
+                                                                    const ScanNode& b,
+                                                                    double& lb) const {
+  // |kappa| / w with kappa = R01 / rho, w = cos(theta + eps) >= sqrt(1 - kMaxSinTheta^2) where
+  // the locus equation is not clamped: theta' = kappa h'' / w, theta'' = kappa h''' / w +
+  // kappa^2 q h''^2 / w^3.
+  const double kap = std::abs(t.r[0][1]) / t.rho;
+  const double k = kap / std::sqrt(1.0 - kMaxSinTheta * kMaxSinTheta);
+  const auto nbins = static_cast<double>(rail_bins_);
+  const double threshold = spec_.candidate_gap * (1.0 + 1e-9) + 1e-12;
+  // (A block with an end off the rail is scanned in full: only the few at the rail ends.)
+  if (a.g == kInf || b.g == kInf) return ScanBlock::Scan;
+  const double d1 = wheel_d1_(a.i, b.i), d2 = wheel_d2_(a.i, b.i), d3 = wheel_d3_(a.i, b.i);
+  if (!(kap * d1 < kMaxSinTheta)) return ScanBlock::Scan;  // the locus equation may be clamped
+  const double th1 = k * d2, th2 = k * d3 + k * k * d2 * d2;
+  const double speed = std::sqrt(1.0 + d1 * d1 + wheel_hmax_ * wheel_hmax_ * th1 * th1);
+  const double acc = d2 + 2.0 * d1 * th1 + wheel_hmax_ * (th1 * th1 + th2);
+  const double half = 0.5 * (s_[b.i] - s_[a.i]);
+  // Rail bins the paths from either end to the block middle can reach.
+  const double lo = (std::min(a.u, b.u) - speed * half - rail_bin0_) / rail_bin_;
+  const double hi = (std::max(a.u, b.u) + speed * half - rail_bin0_) / rail_bin_;
+  if (!(lo >= 0.0 && hi < nbins)) return ScanBlock::Scan;
+  const auto b_lo = static_cast<std::size_t>(lo), b_hi = static_cast<std::size_t>(hi) + 1;
+  const double r1 = rail_d1_(b_lo, b_hi), r2 = rail_d2_(b_lo, b_hi);
+  const double qmax = std::sqrt(1.0 + r1 * r1);
+  const double M = qmax * acc + r2 * speed * speed;
+  const double curve = 0.5 * M * half * half;
+  const double e_lo =
+      std::min(std::min(a.e, a.e + a.de * half - curve), std::min(b.e, b.e - b.de * half - curve));
+  if (e_lo > 0.0) {
+    lb = e_lo / qmax;
+    if (lb > threshold) return ScanBlock::Skip;
+  }
+  // Monotonic: e' keeps its sign and dominates the term e h_r' h_r'' u' / q_r^2 (|h_r'| /
+  // q_r^2 <= 1/2); the samples then differ by far more than rounding (1e-15 m per sample).
+  const double e_abs = std::max(std::abs(a.e) + std::abs(a.de) * half + curve,
+                                std::abs(b.e) + std::abs(b.de) * half + curve);
+  const double other = 0.5 * e_abs * r2 * speed;
+  const double min_slope = 1e-15 / (2.0 * half / static_cast<double>(b.i - a.i)) + other;
+  if (std::min(a.de, b.de) - M * half > min_slope) return ScanBlock::Increasing;
+  if (std::max(a.de, b.de) + M * half < -min_slope) return ScanBlock::Decreasing;
+  return ScanBlock::Scan;
+}
+
+// The scan of samples i_lo..i_hi, skipping those that cannot be below candidate_gap (header
+// comment "Cost"): exact gaps every kPruneStride samples, then each block between two exact
+// samples is either skipped (the bound below says no sample in it is below candidate_gap) or
+// halved at an exactly evaluated middle sample, down to single intervals. Exact samples get their
+// sampled gap, skipped ones a lower bound of it that is above candidate_gap; out.min_gap is the
+// smallest exact gap.
+void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::size_t i_hi,
+                                      ElasticWheelGeometry& out, ElasticSearchWorkspace& ws) const {
+  auto exact = [&](std::size_t i) {
+    ScanNode n{i, 0.0, 0.0, 0.0, 0.0};
+    n.g = sampledGap(t, i, n.u, n.e, n.de);
+    ws.gap[i] = n.g;
+    out.min_gap = std::min(out.min_gap, n.g);
+    return n;
+  };
+  std::array<std::pair<ScanNode, ScanNode>, 16> stack{};
+  ScanNode na = exact(i_lo);
+  for (std::size_t a = i_lo; a < i_hi;) {
+    const ScanNode nb = exact(std::min(a + kPruneStride, i_hi));
+    std::size_t top = 0;
+    stack[top++] = {na, nb};
+    while (top > 0) {
+      const auto [p, q] = stack[--top];
+      if (q.i <= p.i + 1) continue;
+      if (q.i < p.i + kMinBlock) {  // a bound costs about as much as a sample: scan short blocks
+        for (std::size_t i = p.i + 1; i < q.i; ++i) {
+          double s_r = 0.0;
+          ws.gap[i] = sampledGap(t, i, s_r);
+          out.min_gap = std::min(out.min_gap, ws.gap[i]);
+        }
+        continue;
+      }
+      double lb = 0.0;
+      const ScanBlock kind = classifyBlock(t, p, q, lb);
+      if (kind == ScanBlock::Skip) {
+        for (std::size_t i = p.i + 1; i < q.i; ++i) {
+          ws.gap[i] = lb;
+          ws.bound[i] = 1;
+        }
+        continue;
+      }
+      if ((kind == ScanBlock::Increasing && q.g > p.g) ||
+          (kind == ScanBlock::Decreasing && q.g < p.g)) {
+        // Strictly between the ends like the true samples: not minima, below the larger end
+        // (ridges), above the smaller one (min_gap): the scan's result is unchanged.
+        const double slope = (q.g - p.g) / static_cast<double>(q.i - p.i);
+        for (std::size_t i = p.i + 1; i < q.i; ++i) {
+          ws.gap[i] = p.g + slope * static_cast<double>(i - p.i);
+        }
+        continue;
+      }
+      const ScanNode m = exact((p.i + q.i) / 2);
+      stack[top++] = {m, q};
+      stack[top++] = {p, m};
+    }
+    a = nb.i;
+    na = nb;
+  }
+}
+
 void ElasticContactSearch::search(const ElasticPose& pose, ElasticWheelGeometry& out,
                                   ElasticSearchWorkspace& ws,
                                   const ElasticWheelGeometry* seed) const {
@@ -469,6 +694,7 @@ void ElasticContactSearch::search(const ElasticPose& pose, ElasticWheelGeometry&
   const PoseTrig t(pose, pair_, sigma_, spec_.angles);
   const std::size_t n = s_.size();
   ws.gap.assign(n, kInf);
+  ws.bound.assign(n, 0);
   out.min_gap = kInf;
   // Only the wheel samples above the rail matter: to first order the rail parameter below wheel
   // sample s is s + offset (offset from y, Lw, Lr and the roll times the radius); the margin
@@ -484,10 +710,27 @@ void ElasticContactSearch::search(const ElasticPose& pose, ElasticWheelGeometry&
       std::clamp(std::floor((s_lo - s0) / step), 0.0, static_cast<double>(n - 1)));
   const auto i_hi = static_cast<std::size_t>(
       std::clamp(std::ceil((s_hi - s0) / step), 0.0, static_cast<double>(n - 1)));
-  for (std::size_t i = i_lo; i <= i_hi; ++i) {
-    double s_r = 0.0;
-    ws.gap[i] = sampledGap(t, i, s_r);
-    out.min_gap = std::min(out.min_gap, ws.gap[i]);
+  // (Coarser scans than kMaxPruneStep are faster in full: measured, docs "Cost".)
+  if (spec_.prune_scan && spec_.sample_step <= kMaxPruneStep) {
+    scanPruned(t, i_lo, i_hi, out, ws);
+    if (!(out.min_gap < spec_.candidate_gap)) {
+      // Nothing below candidate_gap: min_gap must still be the smallest sampled gap, so the
+      // skipped samples whose bound is below the smallest exact gap are evaluated.
+      for (std::size_t i = i_lo; i <= i_hi; ++i) {
+        if (ws.bound[i] && ws.gap[i] < out.min_gap) {
+          double s_r = 0.0;
+          ws.gap[i] = sampledGap(t, i, s_r);
+          ws.bound[i] = 0;
+          out.min_gap = std::min(out.min_gap, ws.gap[i]);
+        }
+      }
+    }
+  } else {
+    for (std::size_t i = i_lo; i <= i_hi; ++i) {
+      double s_r = 0.0;
+      ws.gap[i] = sampledGap(t, i, s_r);
+      out.min_gap = std::min(out.min_gap, ws.gap[i]);
+    }
   }
   ws.minima.clear();
   for (std::size_t i = 0; i < n; ++i) {
