@@ -126,6 +126,11 @@ wb study "$TMP/s/allfail.lua" --out "$TMP/o4" >/dev/null 2>"$TMP/e"; rc=$?
 [ $rc -eq 2 ] && grep -q "no run of the study is ok" "$TMP/e" && ok "all cases failing exits 2" \
   || bad "all-fail study exit $rc: $(cat "$TMP/e")"
 
+# 4a. `check` on a study file: every case's scenario loaded, nothing run or written.
+wb check "$TMP/s/six.lua" >"$TMP/o" 2>"$TMP/e"; rc=$?
+[ $rc -eq 0 ] && grep -q "six.lua: ok (a study of 6 cases" "$TMP/o" && [ ! -e out/six ] \
+  && ok "check of a study file" || bad "check study ($rc): $(cat "$TMP/o" "$TMP/e")"
+
 # 4b. A metric on a signal no case writes is refused before any run, every such metric at once,
 # each with its did-you-mean; nothing is written.
 cat >"$TMP/s/badsignal.lua" <<'LUA'

@@ -150,6 +150,19 @@ int workbench(int argc, char** argv) {
     }
     if (*check) {
       co.root = root;
+      if (rb::scenario::isStudyFile(co.scenario, root)) {
+        if (!co.overrides.empty())
+          throw rb::InputError({"<command line>", 0},
+                               "--set applies to scenarios; " + co.scenario +
+                                   " is a study file, whose cases set their own values");
+        rb::app::StudyOptions sco;
+        sco.file = co.scenario;
+        sco.root = root;
+        const std::size_t n = rb::app::checkStudy(sco);
+        std::cout << co.scenario << ": ok (a study of " << n << (n == 1 ? " case" : " cases")
+                  << "; every case's scenario loads)\n";
+        return 0;
+      }
       rb::app::checkScenario(co);
       std::cout << co.scenario << ": ok\n";
       return 0;

@@ -358,6 +358,12 @@ void checkCases(const scenario::StudySpec& st, const StudyOptions& o) {
 
 }  // namespace
 
+std::size_t checkStudy(const StudyOptions& o) {
+  const scenario::StudySpec st = scenario::loadStudy(o.file, o.root);
+  checkCases(st, o);
+  return st.cases.size();
+}
+
 int runStudySpec(const scenario::StudySpec& st, const StudyOptions& o,
                  const std::vector<std::string>& plotArgs) {
   if (!o.shard.empty()) parseShard(o.shard, o.file);  // a bad shard runs nothing

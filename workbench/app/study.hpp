@@ -83,6 +83,11 @@ Shard parseShard(const std::string& text, const std::string& file);
 // 0 (1 on bad input, as every rank).
 int runStudy(const StudyOptions& options);
 
+// `workbench check STUDY.lua`: what `workbench study` checks before its first run (the study
+// file, every case's scenario with its overrides, the metrics' signals), running nothing.
+// Returns the number of cases; throws InputError with every problem.
+std::size_t checkStudy(const StudyOptions& options);
+
 // Runs the cases of an already expanded study `st` (a study file's, or one a command such as
 // `workbench precision` made from a scenario) into the folder options.out (required), with the
 // same content-addressed resume, locks and summaries as runStudy; then runs `python3 -m railbench

@@ -601,6 +601,19 @@ std::string studyCaseId(const std::vector<std::string>& overrides, const std::st
   return buf;
 }
 
+bool isStudyFile(const std::string& path, const std::string& root) {
+  HostOptions ho;
+  ho.root = root;
+  ho.collect_missing_modules = true;
+  LuaHost host(ho);
+  try {
+    const Node top = host.runFile(path);
+    return top.fields.size() == 1 && top.field("study") != nullptr;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
 StudySpec loadStudy(const std::string& path, const std::string& root) {
   HostOptions ho;
   ho.root = root;

@@ -108,6 +108,10 @@ std::string studyCaseId(const std::vector<std::string>& overrides, const std::st
 // Throws InputError (file:line) for a bad study file.
 StudySpec loadStudy(const std::string& path, const std::string& root);
 
+// True when the file's script builds a study{} block and no other top-level block (what
+// `workbench check` checks as a study); false for a scenario, or a file that does not run.
+bool isStudyFile(const std::string& path, const std::string& root);
+
 // A short readable label made from overrides: "KEC rk4 h=0.25ms", "LUT K=1e10 bdf tol=1e-06
 // hmax=1ms", "refined", other keys as "key=value" (solver.max_steps, a work limit, is left out).
 std::string caseLabel(const std::vector<std::string>& overrides);
