@@ -1,5 +1,5 @@
 #pragma once
-// Normal contact problem per patch of the elastic contact method (issue 34): Hertz theory
+// Normal contact problem per patch of the elastic contact method: Hertz theory
 // (creep/hertz.hpp) from the relative curvatures the search found (elastic_search.hpp), the
 // normal force from the approach, N = K_H(A, B) delta^1.5 (K_H the Hertz constant of that
 // ellipse, not a hand-tuned penalty), the semi-axes and the maximum pressure. docs/

@@ -221,36 +221,37 @@ ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const PoseTrig& t, 
 
 // Gap of wheel sample i: distance of its locus point to the rail tangent line at the rail point
 // below it (rail frame vertical); +inf when the sample is not over the rail.
-double ElasticContactSearch::sampledGap(const PoseTrig& t, std::size_t i, double& s_r) const {
-  double st = 0.0, ct = 1.0, wq = 1.0;
-  t.theta(dh_[i], st, ct, wq);
-  const double h = h_[i];
+ElasticContactSearch::SampleOnRail ElasticContactSearch::sampleOnRail(const PoseTrig& t,
+                                                                      std::size_t i) const {
+  SampleOnRail p;
+  t.theta(dh_[i], p.st, p.ct, p.wq);
+  p.h = h_[i];
   const double L = sigma_ * pair_.wheel_lw + s_[i];
-  const double py = t.py(h, L, st, ct) - t.oy;
-  const double pz = t.pz(h, L, st, ct) - t.oz;
-  const double u = cb_ * py + sb_ * pz;
+  const double py = t.py(p.h, L, p.st, p.ct) - t.oy;
+  const double pz = t.pz(p.h, L, p.st, p.ct) - t.oz;
+  p.u = cb_ * py + sb_ * pz;
   const profiles::Profile& r = *pair_.rail;
-  if (u < r.sMin() || u > r.sMax()) return kInf;
-  const double v = -sb_ * py + cb_ * pz;
-  const profiles::ProfilePoint rp = r.at(u);
-  s_r = u;
-  return (v - rp.h) / std::sqrt(1.0 + rp.dh * rp.dh);
+  if (p.u < r.sMin() || p.u > r.sMax()) return p;
+  p.v = -sb_ * py + cb_ * pz;
+  p.rp = r.at(p.u);
+  p.over = true;
+  return p;
+}
+
+double ElasticContactSearch::sampledGap(const PoseTrig& t, std::size_t i, double& s_r) const {
+  const SampleOnRail p = sampleOnRail(t, i);
+  if (!p.over) return kInf;
+  s_r = p.u;
+  return (p.v - p.rp.h) / std::sqrt(1.0 + p.rp.dh * p.rp.dh);
 }
 
 double ElasticContactSearch::sampledGap(const PoseTrig& t, std::size_t i, double& s_r, double& e,
                                         double& de) const {
-  double st = 0.0, ct = 1.0, wq = 1.0;
-  t.theta(dh_[i], st, ct, wq);
-  const double h = h_[i];
-  const double L = sigma_ * pair_.wheel_lw + s_[i];
-  const double py = t.py(h, L, st, ct) - t.oy;
-  const double pz = t.pz(h, L, st, ct) - t.oz;
-  const double u = cb_ * py + sb_ * pz;
-  const profiles::Profile& r = *pair_.rail;
-  if (u < r.sMin() || u > r.sMax()) return kInf;
-  const double v = -sb_ * py + cb_ * pz;
-  const profiles::ProfilePoint rp = r.at(u);
-  s_r = u;
+  const SampleOnRail p = sampleOnRail(t, i);
+  if (!p.over) return kInf;
+  s_r = p.u;
+  const double st = p.st, ct = p.ct, wq = p.wq, h = p.h, v = p.v;
+  const profiles::ProfilePoint& rp = p.rp;
   // Locus tangent (as locus()), in the rail frame.
   const auto& m = t.r;
   const double q = m[0][1] * dh_[i] / t.rho;

@@ -1,6 +1,6 @@
 #pragma once
 // Elastic (multi-point) wheel/rail contact geometry: the online contact search of the "elastic"
-// contact method (issue 34), pure geometry, no dynamics. docs/elastic_contact.md.
+// contact method, pure geometry, no dynamics. docs/elastic_contact.md.
 //
 // One wheel over one rail (architecture.md: "the contact search asks the rails near a wheel"):
 // the wheel is the surface of revolution of its profile h_w(s_w) (profile.hpp) about the axle of
@@ -227,6 +227,16 @@ class ElasticContactSearch {
   // normal (ny, nz) (false when a side cannot be reached).
   bool separation(const PoseTrig& t, double y0, double z0, double ny, double nz, double off,
                   double s_w, double s_r, double& sep) const;
+  // Wheel sample i's locus point in the rail frame (u along the rail profile, v normal to it) and
+  // the rail point below it; over = false when u is beyond the rail profile.
+  struct SampleOnRail {
+    double st = 0.0, ct = 1.0, wq = 1.0;  // sin, cos of the locus angle, and its root term
+    double h = 0.0;                       // wheel radius at the sample
+    double u = 0.0, v = 0.0;
+    profiles::ProfilePoint rp;
+    bool over = false;
+  };
+  SampleOnRail sampleOnRail(const PoseTrig& t, std::size_t i) const;
   double sampledGap(const PoseTrig& t, std::size_t i, double& s_r) const;
   // The same gap (bit for bit), with e = v - h_r(u) (rail-frame vertical gap) and de/ds.
   double sampledGap(const PoseTrig& t, std::size_t i, double& s_r, double& e, double& de) const;

@@ -8,7 +8,7 @@
 // (Kalker 1982, Eq. 6-8), chosen so that the theory reproduces Kalker's linear creep coefficients
 // (kalker.hpp) at vanishing creepage:
 //   L1 = 8 a / (3 C11 G),   L2 = 8 a / (3 C22 G),   L3 = pi a sqrt(a/b) / (4 C23 G)
-// (the same expressions as CONTACT's simpflex, ../shared reference note section 3; checked in
+// (the same expressions as CONTACT's simpflex in src/m_hertz.f90, eve70a/CONTACT; checked in
 // tests/creep/test_fastsim.cpp against the flexibilities printed by CONTACT).
 // Derivation of the three: with the leading edge at x = +a, adhesion everywhere and u = 0 at the
 // leading edge, u_x(x) = -(s_x / L1)(a(y) - x) etc. Integrating over the ellipse,
