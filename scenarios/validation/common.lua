@@ -31,6 +31,11 @@ function M.contact(method)
     -- For studies that switch contact.method by --set: only keys both methods accept; the
     -- defaults are the paper's values (dhat 0.5 mm, dbar 1 mm, LUT K = 1e10 N/m^1.5, D = K/100).
     contact { method = "kec", creep = "polach", mu = 0.2364, normal_forces = "lagged" }
+  elseif method == "elastic" then
+    -- Elastic multi-point contact (docs/elastic_contact.md): online contact search on the
+    -- profiles, Hertz per patch with Hunt-Crossley damping (damping ratio 0.1 at the static load,
+    -- an assumption: the rigid rails stand in for the track), the wheelset free in z and roll.
+    contact { method = "elastic", creep = "polach", mu = 0.2364 }
   elseif method == "kec" then
     -- KEC (paper section 2.4): tread-flange transition lengths 0.5 mm / 1 mm.
     contact { method = "kec", dhat = 0.5e-3, dbar = 1e-3, creep = "polach", mu = 0.2364 }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <numbers>
 
 #include "workbench/profiles/positioning.hpp"
 #include "workbench/profiles/profile_io.hpp"
@@ -351,6 +352,60 @@ void gaugeWarnings(ContactModel& m, const track::TrackModel& track) {
   }
 }
 
+// The wheel's flange height: its largest radius (the flange tip) above the radius at s_w = 0.
+double flangeHeight(const profiles::Profile& wheel) {
+  double top = wheel.at(0.0).h;
+  for (double s = wheel.sMin(); s <= wheel.sMax(); s += 0.1e-3) top = std::max(top, wheel.at(s).h);
+  return top - wheel.at(0.0).h;
+}
+
+// The elastic method's searches, normal policy, Hertz-derived damping and derailment criterion
+// (ElasticContactModel).
+std::shared_ptr<const ElasticContactModel> compileElastic(const ContactSpec& c,
+                                                          const vehicle::VehicleModel& v,
+                                                          const ContactModel& m) {
+  auto e = std::make_shared<ElasticContactModel>();
+  contact::ElasticSearchSpec search;
+  // The wheelset's intermediate frame is Rz(psi) Rx(phi) (vehicle/kinematics.hpp).
+  search.angles = contact::EulerOrder::YawRoll;
+  search.sample_step = c.elastic.sample_step;
+  for (const contact::WheelRailPair& pair : contact::wheelRailPairs(m.geometry))
+    e->search.emplace_back(pair, search);
+  e->normal.material = m.material;
+  e->normal.min_ratio = c.elastic.min_curvature_ratio;
+  e->damping_ratio = c.elastic.damping_ratio;
+
+  // Nominal static wheel load and the centred tread's Hertz contact at it.
+  double mass = 0.0, ws_mass = 0.0;
+  for (const vehicle::Body& b : v.bodies) {
+    if (b.kind == vehicle::BodyKind::Frame) continue;
+    mass += b.mass;
+    if (b.kind == vehicle::BodyKind::Wheelset) ws_mass += b.mass;
+  }
+  const double wheels = 2.0 * static_cast<double>(m.wheelsets.size());
+  e->static_load = mass * v.gravity / wheels;
+  // Sunk by 10 um: at the touching height itself the approach is zero and there is no patch.
+  const contact::ElasticPose centred{0.0, m.centred_z - 1e-5, m.centred_phi, 0.0};
+  const contact::ElasticWheelGeometry g = e->search[0].search(centred);
+  double K = 0.0;
+  if (g.count > 0) {
+    const creep::RelativeCurvatures k = contact::policyCurvatures(g.patch[0], e->normal);
+    K = creep::hertzStiffness(m.material, k);
+  }
+  if (!(K > 0.0) || !(e->static_load > 0.0))
+    throw InputError(c.loc, "contact: elastic: no Hertz tread contact for the centred wheelset");
+  e->tread_stiffness = K;
+  e->static_approach = std::cbrt(std::pow(e->static_load / K, 2.0));
+  const double k_lin = 1.5 * K * std::sqrt(e->static_approach);
+  const double m_w = 0.5 * ws_mass / static_cast<double>(m.wheelsets.size());
+  e->vertical_frequency = std::sqrt(k_lin / m_w) / (2.0 * std::numbers::pi);
+  e->damping = 2.0 * e->damping_ratio * std::sqrt(k_lin * m_w) / e->static_load;
+  e->flange_height = flangeHeight(*m.geometry.left_wheel);
+  e->derailment_lift =
+      c.elastic.derailment_lift < 0.0 ? 0.5 * e->flange_height : c.elastic.derailment_lift;
+  return e;
+}
+
 }  // namespace
 
 ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
@@ -388,6 +443,14 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
     check("flange_stiffness", c.flange_stiffness, kFlangeStiffnessRange);
     check("flange_damping", c.flange_damping, kFlangeDampingRange);
   }
+  if (c.method == ContactMethod::Elastic) {
+    check("elastic.damping_ratio", c.elastic.damping_ratio, kElasticDampingRatioRange);
+    check("elastic.sample_step", c.elastic.sample_step, kElasticSampleStepRange);
+    check("elastic.min_curvature_ratio", c.elastic.min_curvature_ratio,
+          kElasticCurvatureRatioRange);
+    if (!(c.elastic.derailment_lift < 0.0))
+      check("elastic.derailment_lift", c.elastic.derailment_lift, kDerailmentLiftRange);
+  }
   for (const vehicle::Body& b : v.bodies) {
     if (b.kind == vehicle::BodyKind::Wheelset && std::abs(b.height - p.r0) > 0.05)
       d.add(b.loc, "wheelset '" + b.name + "': centre height " + formatNumber(b.height) +
@@ -414,7 +477,7 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
     if (m.method == ContactMethod::Kec) {
       m.kec = cache ? cache->kec(m.geometry)
                     : std::make_shared<const contact::KecTable>(contact::buildKec(m.geometry));
-    } else {
+    } else if (m.method == ContactMethod::Lut) {
       m.lut = cache ? cache->lut(m.geometry)
                     : std::make_shared<const contact::LutTable>(contact::buildLut(m.geometry));
     }
@@ -445,6 +508,7 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
   m.centred_radius[1] = c0.right.radius;
 
   gaugeWarnings(m, track);
+  if (m.method == ContactMethod::Elastic) m.elastic = compileElastic(c, v, m);
 
   // Gauge variation beyond the LUT's xi_g range is extrapolated (and reported by the rhs as a
   // recoverable failure); say so before the run.

@@ -20,6 +20,8 @@
 #include <vector>
 
 #include "workbench/contact/config.hpp"
+#include "workbench/contact/elastic_normal.hpp"
+#include "workbench/contact/elastic_search.hpp"
 #include "workbench/contact/geometry.hpp"
 #include "workbench/contact/kec.hpp"
 #include "workbench/contact/lut.hpp"
@@ -45,6 +47,26 @@ class HertzShapeTable {
  private:
   CubicSplineSet spline_;
   double u_min_ = 0.0;
+};
+
+// The compiled data of the elastic contact method (docs/elastic_contact.md, "Dynamics"): the
+// contact search of each wheel over its rail, the normal problem's policy, the normal damping and
+// the derailment criterion.
+struct ElasticContactModel {
+  std::vector<contact::ElasticContactSearch> search;  // [side]: left, right
+  contact::ElasticNormalSpec normal;
+  // Hunt-Crossley damping N = K_H delta^1.5 (1 + damping delta_dot) [s/m], derived from
+  // ElasticSpec::damping_ratio at the nominal static wheel load of the centred tread contact:
+  // a wheel of mass m_w (half its wheelset) on the linearised Hertz spring k = 1.5 K_H delta0^0.5
+  // has the damping c = 2 zeta sqrt(k m_w) = damping * N0.
+  double damping = 0.0;
+  double damping_ratio = 0.0;
+  double static_load = 0.0;        // [N] nominal wheel load N0 = vehicle weight / wheels
+  double static_approach = 0.0;    // [m] Hertz approach delta0 of the centred tread at N0
+  double tread_stiffness = 0.0;    // [N/m^1.5] K_H of the centred tread contact
+  double vertical_frequency = 0.0; // [Hz] sqrt(k / m_w) / 2 pi of that wheel at N0
+  double flange_height = 0.0;      // [m] wheel radius at the flange tip minus r(s_w = 0)
+  double derailment_lift = 0.0;    // [m] a wheel risen more than this above its rail derails
 };
 
 struct ContactModel {
@@ -101,10 +123,13 @@ struct ContactModel {
   // CreepModel::Fastsim: grid and bound (as ContactSpec). Last, so that the members the other
   // laws' evaluations read keep their offsets.
   creep::FastsimGrid fastsim;
+  // ContactMethod::Elastic: its searches, normal policy, damping and derailment criterion (null
+  // for the constraint methods).
+  std::shared_ptr<const ElasticContactModel> elastic;
 
   // Build statistics of the table in use (time, bytes, warnings, notes).
   const contact::TableBuildStats& tableStats() const;
-  // The names of dynamics/names.hpp (nameOf): "kec" / "lut", the creep laws of creep_laws.hpp
+  // The names of dynamics/names.hpp (nameOf): "kec" / "lut" / "elastic", the creep laws of creep_laws.hpp
   // ("polach", "kalker", "fastsim", "none"), "lagged" / "consistent".
   static const char* methodName(ContactMethod m);
   static const char* creepName(CreepModel c);

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "workbench/dynamics/contact_coupling.hpp"
+#include "workbench/dynamics/contact_elastic.hpp"
 #include "workbench/dynamics/contact_patches.hpp"
 #include "workbench/dynamics/contact_stages.hpp"
 #include "workbench/dynamics/contact_workspace.hpp"
@@ -58,8 +59,10 @@ void contactPositions(const ContactModels& models, const WheelsetWork& ww, int w
   const double lw = models.contact.geometry.wheel_lw;
   for (int s = 0; s < 2; ++s) {
     const double sigma = contact::kSideSign[s];
-    for (PatchOutput& po :
-         work.wheels[2 * static_cast<std::size_t>(w) + static_cast<std::size_t>(s)].patch) {
+    WheelOutput& wo = work.wheels[2 * static_cast<std::size_t>(w) + static_cast<std::size_t>(s)];
+    wo.wheel_lift = internal::wheelLift(models.contact, work.bodies.q[ww.body], ww.height,
+                                        internal::railOffset(ww.irr, s), sigma);
+    for (PatchOutput& po : wo.patch) {
       if (!po.active) continue;
       const Eigen::Vector3d u(0.0, sigma * lw + po.s_w, -po.radius);
       po.y = y + A.row(1).dot(u);
@@ -73,49 +76,65 @@ template <ContactMethod kMethod, class Law>
 int wheelsetStages(const ContactModels& models, const StageInput& in, int w, double* ydot,
                    ContactWorkspace& work, bool& lift, vehicle::StageClock* clock) {
   using vehicle::Stage;
-  WheelsetWork& ww = work.wheelset(w);
-  if (const int rc = internal::contactPatches<kMethod, Law>(models, in, ww, work); rc != 0)
-    return rc;
-  internal::classifyRegimes(ww);
-  if (clock) clock->mark(Stage::ContactPatches);
-  internal::AugmentedSystem system;
-  if (const int rc = internal::augmentedSystem(models, in, ww, work, system); rc != 0) return rc;
-  if (clock) clock->mark(Stage::Augmented);
-  Vec7 x;
-  if (const int rc = internal::coupleNormalAndTangential<Law>(models, in, system, ww, work, x);
-      rc != 0)
-    return rc;
-  if (clock) clock->mark(Stage::Coupling);
-  if (const int rc = internal::checkSolution(models, in, ww, x, work); rc != 0) return rc;
-  internal::writeWheelsetRates(models.layout, w, in.y, x, ydot);
-  if (const int rc = checkWheelLift<kMethod>(models, in, ww, work, lift); rc != 0) return rc;
-  if (in.mode == EvalMode::Output) {
-    internal::wheelsetOutputs(in, w, ww, x, Law::kCreep, kMethod == ContactMethod::Lut, work);
-    contactPositions(models, ww, w, work);
+  if constexpr (kMethod == ContactMethod::Elastic) {
+    (void)lift;  // the elastic method lifts wheels physically (checkDerailment)
+    return internal::elasticWheelsetStages<Law>(models, in, w, ydot, work, clock);
+  } else {
+    WheelsetWork& ww = work.wheelset(w);
+    if (const int rc = internal::contactPatches<kMethod, Law>(models, in, ww, work); rc != 0)
+      return rc;
+    internal::classifyRegimes(ww);
+    if (clock) clock->mark(Stage::ContactPatches);
+    internal::AugmentedSystem system;
+    if (const int rc = internal::augmentedSystem(models, in, ww, work, system); rc != 0) return rc;
+    if (clock) clock->mark(Stage::Augmented);
+    Vec7 x;
+    if (const int rc = internal::coupleNormalAndTangential<Law>(models, in, system, ww, work, x);
+        rc != 0)
+      return rc;
+    if (clock) clock->mark(Stage::Coupling);
+    if (const int rc = internal::checkSolution(models, in, ww, x, work); rc != 0) return rc;
+    internal::writeWheelsetRates(models.layout, w, in.y, x, ydot);
+    if (const int rc = checkWheelLift<kMethod>(models, in, ww, work, lift); rc != 0) return rc;
+    if (in.mode == EvalMode::Output) {
+      internal::wheelsetOutputs(in, w, ww, x, Law::kCreep, kMethod == ContactMethod::Lut, work);
+      contactPositions(models, ww, w, work);
+    }
+    if (clock) clock->mark(Stage::Checks);
+    return 0;
   }
-  if (clock) clock->mark(Stage::Checks);
-  return 0;
 }
 
 }  // namespace
 
-vehicle::VehicleLayout contactLayout(const vehicle::VehicleModel& m, WheelsetSpin spin) {
+vehicle::VehicleLayout contactLayout(const vehicle::VehicleModel& m, WheelsetSpin spin,
+                                     ContactMethod method) {
+  const bool prescribed = spin == WheelsetSpin::Prescribed;
+  if (method == ContactMethod::Elastic)
+    return vehicle::vehicleLayout(m, prescribed ? vehicle::kElasticPrescribedSpinDof
+                                                : vehicle::kElasticFreeSpinDof);
   return vehicle::vehicleLayout(
-      m, spin == WheelsetSpin::Prescribed ? vehicle::kPrescribedSpinDof : vehicle::kFreeSpinDof);
+      m, prescribed ? vehicle::kPrescribedSpinDof : vehicle::kFreeSpinDof);
 }
 
 ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
                                      const ContactModel& contact, const track::TrackModel& track)
-    : VehicleOde(vehicle, contactLayout(vehicle, contact.spin)),
+    : VehicleOde(vehicle, contactLayout(vehicle, contact.spin, contact.method)),
       contact_(&contact),
       work_(std::make_unique<ContactWorkspace>()) {
   RB_CHECK(layout_.n_ws > 0, "ContactVehicleOde: the vehicle has no wheelset");
   using vehicle::Stage;
-  stages_.use({Stage::Coordinates, Stage::Constraints, Stage::VehicleForces, Stage::FreeBodies,
-               Stage::ContactPatches, Stage::Augmented, Stage::Coupling, Stage::Checks,
-               Stage::SeriesRates});
-  RB_CHECK(contact.method == ContactMethod::Kec ? contact.kec != nullptr : contact.lut != nullptr,
-           "ContactVehicleOde: the contact model has no table for its method");
+  if (contact.method == ContactMethod::Elastic)
+    stages_.use({Stage::Coordinates, Stage::Constraints, Stage::VehicleForces, Stage::FreeBodies,
+                 Stage::ContactPatches, Stage::Checks, Stage::SeriesRates});
+  else
+    stages_.use({Stage::Coordinates, Stage::Constraints, Stage::VehicleForces, Stage::FreeBodies,
+                 Stage::ContactPatches, Stage::Augmented, Stage::Coupling, Stage::Checks,
+                 Stage::SeriesRates});
+  RB_CHECK(contact.method == ContactMethod::Kec   ? contact.kec != nullptr
+           : contact.method == ContactMethod::Lut ? contact.lut != nullptr
+                                                  : contact.elastic != nullptr,
+           "ContactVehicleOde: the contact model lacks the data of its method");
   if (track.irregularities()) irr_ = &*track.irregularities();
   ContactWorkspace& work = *work_;
   work.bodies = vehicle::makeWorkspace(vehicle);
@@ -130,11 +149,15 @@ ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
   }
   // The evaluation compiled for the model's creep law (the registry, creep_laws.hpp) and contact
   // method; the law's row decides, nothing else names the laws.
-  const bool kec = contact.method == ContactMethod::Kec;
   const auto choose = [&]<class... Laws>(LawList<Laws...>) {
     const auto pick = [&]<class Law>() {
-      eval_ = kec ? &ContactVehicleOde::evaluateT<ContactMethod::Kec, Law>
-                  : &ContactVehicleOde::evaluateT<ContactMethod::Lut, Law>;
+      switch (contact.method) {
+        case ContactMethod::Kec: eval_ = &ContactVehicleOde::evaluateT<ContactMethod::Kec, Law>; break;
+        case ContactMethod::Lut: eval_ = &ContactVehicleOde::evaluateT<ContactMethod::Lut, Law>; break;
+        case ContactMethod::Elastic:
+          eval_ = &ContactVehicleOde::evaluateT<ContactMethod::Elastic, Law>;
+          break;
+      }
       return true;
     };
     ((contact.creep == Laws::kModel && pick.template operator()<Laws>()) || ...);
@@ -235,19 +258,48 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
     ww.memory.forget();
     ww.kec_warm = false;
   }
+  // Elastic contact: every wheelset starts in its centred height and roll sunk by the Hertz
+  // approach of the nominal wheel load (so that the tread patches exist and the equilibrium
+  // iteration below has a contact stiffness to work with); the iteration solves z and phi with the
+  // car bodies and bogies.
+  std::vector<int> unknowns;
+  for (int i = 0; i < 5 * l.n_free; ++i) unknowns.push_back(i);
+  if (l.wheelsetVertical()) {
+    const ElasticContactModel& e = *contact_->elastic;
+    for (int w = 0; w < l.n_ws; ++w) {
+      const track::IrregularityPoint rail =
+          irr_ != nullptr ? irr_->at(m.bodyS(static_cast<int>(l.wheelset(w)), t0))
+                          : track::IrregularityPoint{};
+      const double height = m.bodies[l.wheelset(w)].height;
+      y[l.wsPosition(w, 3)] =
+          contact_->centred_z - height - e.static_approach + 0.5 * (rail.z_l + rail.z_r);
+      y[l.wsPosition(w, 4)] = contact_->centred_phi + (rail.z_l - rail.z_r) / (2.0 * contact_->geometry.rail_lr);
+      unknowns.push_back(l.wsPosition(w, 3));
+      unknowns.push_back(l.wsPosition(w, 4));
+    }
+  }
   Eigen::VectorXd yd(l.size);
   const auto fail = [&](const std::string& why) {
     throw InputError(m.loc, "vehicle '" + m.name + "': initial state: " + why);
   };
-  const int n = 5 * l.n_free;
+  const int n = static_cast<int>(unknowns.size());
   if (n > 0) {
-    // Static equilibrium of the car bodies and bogies on the wheelsets placed above.
-    const auto residual = [&](const Eigen::VectorXd& state, Eigen::VectorXd& r) {
-      if (evaluate(t0, state.data(), yd.data(), EvalMode::Init) != 0) fail(work.error);
-      r = yd.segment(l.rate(0, 0), n);
+    // Static equilibrium of the car bodies and bogies (and, on elastic contact, of the wheelsets'
+    // height and roll) on the wheelsets placed above: the accelerations of the unknowns vanish.
+    const auto rateOf = [&](int position) { return position + l.positions(); };
+    Eigen::VectorXd full = y;
+    const auto residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+      for (int i = 0; i < n; ++i) full[unknowns[static_cast<std::size_t>(i)]] = x[i];
+      if (evaluate(t0, full.data(), yd.data(), EvalMode::Init) != 0) fail(work.error);
+      r.resize(n);
+      for (int i = 0; i < n; ++i) r[i] = yd[rateOf(unknowns[static_cast<std::size_t>(i)])];
     };
-    const vehicle::EquilibriumResult eq =
-        vehicle::solveStaticEquilibrium(y, n, residual, [this](int i) { return componentName(i); });
+    Eigen::VectorXd x(n);
+    for (int i = 0; i < n; ++i) x[i] = y[unknowns[static_cast<std::size_t>(i)]];
+    const vehicle::EquilibriumResult eq = vehicle::solveStaticEquilibrium(
+        x, n, residual,
+        [&](int i) { return componentName(unknowns[static_cast<std::size_t>(i)]); });
+    for (int i = 0; i < n; ++i) y[unknowns[static_cast<std::size_t>(i)]] = x[i];
     if (eq.status == vehicle::EquilibriumResult::Status::Singular)
       fail(
           "no static equilibrium: a car body or bogie coordinate is not restrained by any "

@@ -57,9 +57,11 @@
 
 namespace rb::dynamics {
 
-// The layout of a vehicle on wheel/rail contact (ws_dof = 3 with a free spin, 2 prescribed).
+// The layout of a vehicle on wheel/rail contact (ws_dof = 3 with a free spin, 2 prescribed; the
+// elastic method adds z and phi: 5 and 4).
 vehicle::VehicleLayout contactLayout(const vehicle::VehicleModel& model,
-                                     WheelsetSpin spin = WheelsetSpin::Free);
+                                     WheelsetSpin spin = WheelsetSpin::Free,
+                                     ContactMethod method = ContactMethod::Kec);
 
 // Wheel/rail forces in the track frame (EN 14363 Y and Q): components of the force of the rail on
 // the wheel in the wheelset's track frame (Eq. 1-2: x along the track, y to the left, z up, turned
@@ -116,6 +118,14 @@ struct WheelOutput {
   TrackForces force;      // the resultant in EN 14363 terms: the sum of the patches' forces
   double y_over_q = 0.0;  // derailment quotient Y/Q (EN 14363) of `force`
   bool lift = false;      // a constraint normal force is negative (wheel lift, not modelled)
+  // Active patches (elastic: every patch of the wheel, patch[0] its strongest tread patch,
+  // patch[1] its strongest flange patch, the totals sum all of them), the rise of its tape circle
+  // above the centred height over its rail (every method), and whether that passed the elastic
+  // method's derailment lift.
+  int patch_count = 0;
+  double wheel_lift = 0.0;  // [m]
+  bool derailed = false;
+  double creep_x = 0.0, creep_y = 0.0;  // [N] creep forces summed over the patches
 };
 
 // Work counters (since construction or resetStats()).
@@ -127,6 +137,9 @@ struct ContactStats {
   int consistent_max_iterations = 0;
   long lift_evaluations = 0;       // evaluations in which some wheel had a negative normal force
   double max_lagged_change = 0.0;  // [N] largest |lambda - lambda_previous| seen (Lagged)
+  long elastic_searches = 0;       // elastic contact: wheel searches
+  long elastic_patches = 0;        // elastic contact: patches found, summed over the searches
+  int elastic_max_patches = 0;     // elastic contact: most patches on one wheel
 };
 
 namespace internal {

@@ -222,11 +222,13 @@ int setIndependentCoordinates(const ContactModels& models, const StageInput& in,
 
 int solveConstraints(const ContactModels& models, const StageInput& in, ContactWorkspace& work) {
   const bool kec = models.contact.method == ContactMethod::Kec;
+  const bool elastic = models.contact.method == ContactMethod::Elastic;
   for (WheelsetWork& ww : work.wheelsets) {
     vehicle::Vector6d& q = work.bodies.q[ww.body];
     vehicle::Vector6d& qd = work.bodies.qd[ww.body];
     if (models.irregularities)
       updateIrregularities(*models.irregularities, q[kS], models.contact.geometry.rail_lr, ww);
+    if (elastic) continue;  // z and phi are states (setIndependentCoordinates)
     DependentCoordinates dep;
     const int rc =
         kec ? kecConstraints(models, in, ww, work, dep) : lutConstraints(models, in, ww, work, dep);
@@ -342,8 +344,6 @@ int refuseWheelLift(const ContactModels& models, const StageInput& in, const Whe
   return 1;
 }
 
-namespace {
-
 // Output of one patch of the wheel on side sigma; adds its force to the wheel's resultant F
 // (track comps). speed: V(t) [m/s], for the dissipated power.
 void patchOutput(const Patch& pp, const Eigen::Vector2d& lambda, bool creep, double sigma,
@@ -367,6 +367,9 @@ void patchOutput(const Patch& pp, const Eigen::Vector2d& lambda, bool creep, dou
   }
   o.normal += po.normal;
   (pp.on_flange ? o.normal_flange : o.normal_tread) += po.normal;
+  o.creep_x += po.fx;
+  o.creep_y += po.fy;
+  ++o.patch_count;
   const Eigen::Vector3d Fp = po.normal * pp.n + po.fx * pp.ex + po.fy * pp.ey;
   F += Fp;
   po.force = {Fp.x(), -sigma * Fp.y(), Fp.z(), Fp.y()};
@@ -379,8 +382,6 @@ void patchOutput(const Patch& pp, const Eigen::Vector2d& lambda, bool creep, dou
   po.power = po.t_gamma * speed;
   if (po.normal < 0.0) o.lift = true;
 }
-
-}  // namespace
 
 void wheelsetOutputs(const StageInput& in, int w, const WheelsetWork& ww, const Vec7& x, bool creep,
                      bool lut, ContactWorkspace& work) {
@@ -406,6 +407,46 @@ void wheelsetOutputs(const StageInput& in, int w, const WheelsetWork& ww, const 
     o.force_z = F.z();
     o.force = {F.x(), -sigma * F.y(), F.z(), F.y()};
     o.y_over_q = std::abs(o.force.Q) > 0.0 ? o.force.Y / o.force.Q : 0.0;
+  }
+}
+
+void elasticWheelsetOutputs(const ContactModels& models, const StageInput& in, int w,
+                            const WheelsetWork& ww, const Vec5& qdd, bool creep,
+                            ContactWorkspace& work) {
+  vehicle::Vector6d& acc = work.qdd[ww.body];
+  acc.setZero();
+  acc(kS) = in.acceleration;
+  acc.segment<5>(1) = qdd;
+  const Eigen::Vector2d none = Eigen::Vector2d::Zero();  // no multipliers: N = q0
+  for (int s = 0; s < 2; ++s) {
+    WheelOutput& o = work.wheels[2 * static_cast<std::size_t>(w) + static_cast<std::size_t>(s)];
+    o = WheelOutput{};
+    const double sigma = contact::kSideSign[s];
+    const ElasticWheelWork& ew = ww.elastic[s];
+    // The strongest tread and flange patches take the two output slots.
+    int best[2] = {-1, -1};
+    for (int k = 0; k < ew.geometry.count; ++k) {
+      const Patch& p = ew.patch[static_cast<std::size_t>(k)];
+      int& b = best[p.on_flange ? 1 : 0];
+      if (b < 0 || p.q0 > ew.patch[static_cast<std::size_t>(b)].q0) b = k;
+    }
+    Eigen::Vector3d F = Eigen::Vector3d::Zero();
+    for (int k = 0; k < ew.geometry.count; ++k) {
+      const Patch& p = ew.patch[static_cast<std::size_t>(k)];
+      PatchOutput extra;
+      PatchOutput& po = k == best[0] ? o.patch[0] : (k == best[1] ? o.patch[1] : extra);
+      patchOutput(p, none, creep, sigma, in.speed, po, o, F);
+      // The search's contact point is relative to the irregular rail's displaced origin.
+      po.y = ew.geometry.patch[static_cast<std::size_t>(k)].y + (s == 0 ? ww.irr.y_l : ww.irr.y_r);
+    }
+    o.regime = ww.regime[s];
+    o.force_y = F.y();
+    o.force_z = F.z();
+    o.force = {F.x(), -sigma * F.y(), F.z(), F.y()};
+    o.y_over_q = std::abs(o.force.Q) > 0.0 ? o.force.Y / o.force.Q : 0.0;
+    o.lift = false;
+    o.wheel_lift = ew.lift;
+    o.derailed = std::abs(ew.lift) > models.contact.elastic->derailment_lift;
   }
 }
 

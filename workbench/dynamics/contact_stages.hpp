@@ -121,6 +121,10 @@ int refuseWheelLift(const ContactModels& models, const StageInput& in, const Whe
 // with a creep law).
 void wheelsetOutputs(const StageInput& in, int w, const WheelsetWork& ww, const Vec7& x, bool creep,
                      bool lut, ContactWorkspace& work);
+// One patch's output on the wheel of side sigma (normal force at the multipliers lambda); adds its
+// normal force to the wheel's totals in o and its force to the resultant F (track comps).
+void patchOutput(const Patch& pp, const Eigen::Vector2d& lambda, bool creep, double sigma,
+                 double speed, PatchOutput& po, WheelOutput& o, Eigen::Vector3d& F);
 
 // 9. Maxwell force rates of the series dampers.
 inline void writeSeriesRates(const vehicle::VehicleLayout& layout, const ContactWorkspace& work,

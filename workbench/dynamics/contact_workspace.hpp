@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "workbench/contact/elastic_search.hpp"
 #include "workbench/contact/kec.hpp"
 #include "workbench/contact/lut.hpp"
 #include "workbench/creep/creepages.hpp"
@@ -109,6 +110,13 @@ struct DescribedPoint {
   contact::ContactPoint point;
 };
 
+// Elastic contact, one wheel: the search's patches (deepest first) and the wheel's lift.
+struct ElasticWheelWork {
+  contact::ElasticWheelGeometry geometry;
+  std::array<Patch, contact::kMaxElasticPatches> patch;
+  double lift = 0.0;  // [m] rise of the wheel's tape circle above its centred height over its rail
+};
+
 // Per wheelset: the constraints, patches and normal forces of the evaluation.
 struct WheelsetWork {
   std::size_t body = 0;
@@ -139,6 +147,7 @@ struct WheelsetWork {
   Eigen::Matrix<double, 5, 2> N = Eigen::Matrix<double, 5, 2>::Zero();
   Eigen::Vector2d lambda = Eigen::Vector2d::Zero();  // the normal-force multipliers solved for
   NormalForceMemory memory;
+  ElasticWheelWork elastic[2];  // elastic contact method: [side]
 };
 
 // Everything an evaluation writes.
@@ -148,6 +157,7 @@ struct ContactWorkspace {
   std::vector<WheelOutput> wheels;      // [2w + side], filled by Output evaluations
   std::vector<vehicle::Vector6d> qdd;   // body accelerations of the last Output evaluation
   std::vector<double> scratch;          // ydot of output and initial-state evaluations
+  contact::ElasticSearchWorkspace search;  // scratch of the elastic contact search
   ContactStats stats;
   std::string error;  // why the last evaluation failed
 

@@ -10,9 +10,12 @@
 
 namespace rb::dynamics {
 
-inline constexpr std::array<NameEntry<ContactMethod>, 2> kContactMethodNames = {{
+inline constexpr std::array<NameEntry<ContactMethod>, 3> kContactMethodNames = {{
     {ContactMethod::Kec, "kec", "knife-edge equivalent contact (paper section 2.4)"},
     {ContactMethod::Lut, "lut", "contact lookup table with Hertz flange contact (Eq. 20)"},
+    {ContactMethod::Elastic, "elastic",
+     "elastic multi-point contact: online search on the profiles, Hertz per patch, the wheelset "
+     "free to lift and climb (docs/elastic_contact.md)"},
 }};
 constexpr const auto& nameTable(ContactMethod /*tag*/) {
   return kContactMethodNames;

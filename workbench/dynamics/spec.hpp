@@ -23,7 +23,10 @@ struct ProfilesSpec {
   SourceLoc loc;
 };
 
-enum class ContactMethod { Kec, Lut };
+// Kec, Lut: constraint contact (the wheelset's height and roll follow from the constraints);
+// Elastic: the wheelset has its full rigid-body freedom on an online multi-point contact search
+// with a Hertz normal force per patch (docs/elastic_contact.md).
+enum class ContactMethod { Kec, Lut, Elastic };
 // The creep laws of the registry (creep_laws.hpp, which names and describes each).
 enum class CreepModel { Polach, Kalker, Fastsim, None };
 enum class NormalForceCoupling { Lagged, Consistent };
@@ -33,8 +36,23 @@ enum class NormalForceCoupling { Lagged, Consistent };
 // state and the spin reaction torque (traction/braking at the wheel) is a constraint reaction.
 enum class WheelsetSpin { Free, Prescribed };
 
+// The elastic contact method's parameters (contact.elastic{}; docs/elastic_contact.md).
+struct ElasticSpec {
+  // Damping of the normal contact (Hunt-Crossley: N = K_H delta^1.5 (1 + c_d delta_dot)), given
+  // as the damping ratio of a wheel's vertical oscillation on its Hertz contact at the static
+  // wheel load; c_d follows from it, the wheel's mass share and the Hertz stiffness (compiled).
+  double damping_ratio = 0.1;
+  double sample_step = 0.25e-3;  // [m] wheel sampling of the contact search's scan
+  // [m] Derailment: a wheel whose tape circle has risen by more than this above its rail (flange
+  // climb, a lifted wheel) stops the run; < 0: half the wheel's flange height.
+  double derailment_lift = -1.0;
+  double min_curvature_ratio = 0.1;  // lateral relative curvature floored smoothly at this * A
+  SourceLoc loc;
+};
+
 struct ContactSpec {
   ContactMethod method = ContactMethod::Kec;
+  ElasticSpec elastic;
   double kec_dhat = 0.5e-3;        // [m] KEC tread-flange transition lengths (paper section 2.4)
   double kec_dbar = 1.0e-3;        // [m]
   double flange_stiffness = 1e10;  // [N/m^1.5] LUT Hertz flange K (paper Table 3; validation 1e10)

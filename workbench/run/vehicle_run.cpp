@@ -76,7 +76,9 @@ constexpr std::pair<const char*, const char*> kWheelQ[] = {{"normal_force", "N"}
                                                            {"X", "N"},
                                                            {"Y", "N"},
                                                            {"Q", "N"},
-                                                           {"y_track", "N"}};
+                                                           {"y_track", "N"},
+                                                           {"contact_count", "-"},
+                                                           {"wheel_lift", "m"}};
 constexpr std::size_t kNq = std::size(kWheelQ);
 
 // Per contact patch (/contact/<wheelset>/<side>/patch0, patch1): what an EN 14363 assessment and
@@ -106,10 +108,12 @@ constexpr std::pair<const char*, const char*> kPatchQ[] = {{"active", "-"},
                                                            {"power", "W"}};
 constexpr std::size_t kNp = std::size(kPatchQ);
 constexpr std::size_t kWheelValues = kNq + 2 * kNp;  // values per wheel and output time
-// What patch 0 and 1 are, [KEC, LUT][patch].
-constexpr const char* kPatchRole[2][2] = {
+// What patch 0 and 1 are, [KEC, LUT, elastic][patch].
+constexpr const char* kPatchRole[3][2] = {
     {"KEC contact point, or point A in the band", "KEC point B (flange-side end of the band)"},
-    {"LUT tread", "LUT flange (Hertz)"}};
+    {"LUT tread", "LUT flange (Hertz)"},
+    {"elastic: the tread patch with the largest normal force",
+     "elastic: the flange patch with the largest normal force"}};
 
 // The conventions of the track-frame forces (dynamics::TrackForces) and of the patches.
 void writeContactConventions(io::ResultFile& f, dynamics::ContactMethod method) {
@@ -136,14 +140,18 @@ void writeContactConventions(io::ResultFile& f, dynamics::ContactMethod method) 
   f.attr("/contact", "t_gamma",
          std::string("T gamma = |fx sx| + |fy sy| + |mz spin| [N] (mz from the laws that give a "
                      "spin moment, kalker and fastsim; 0 with polach); power = T gamma V [W]"));
-  f.attr("/contact", "patches",
-         std::string(method == dynamics::ContactMethod::Kec
-                         ? "KEC: patch0 = the contact point, or inside a regularised "
-                           "tread-flange band point A (field-side end, weight 1 - w); patch1 = "
-                           "point B (flange-side end, weight w), active only inside the band "
-                           "(Eq. 26)"
-                         : "LUT: patch0 = the tread contact (Eq. 17); patch1 = the Hertz flange "
-                           "contact (Eq. 20-21), active while the flange indentation is positive"));
+  const char* patches =
+      method == dynamics::ContactMethod::Kec
+          ? "KEC: patch0 = the contact point, or inside a regularised tread-flange band point A "
+            "(field-side end, weight 1 - w); patch1 = point B (flange-side end, weight w), active "
+            "only inside the band (Eq. 26)"
+      : method == dynamics::ContactMethod::Lut
+          ? "LUT: patch0 = the tread contact (Eq. 17); patch1 = the Hertz flange contact (Eq. "
+            "20-21), active while the flange indentation is positive"
+          : "elastic: every penetrating minimum of the wheel-rail gap is a patch (contact_count "
+            "per wheel); patch0 = the tread patch with the largest normal force, patch1 = the "
+            "flange patch with the largest normal force; the wheel's totals sum every patch";
+  f.attr("/contact", "patches", std::string(patches));
 }
 
 std::string num(double v) {
@@ -202,7 +210,9 @@ void addVehicleChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
 void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputChannel>& outputs) {
   const auto& v = *m.vehicle;
   const auto& cm = *m.contact;
-  const bool kec = cm.method == dynamics::ContactMethod::Kec;
+  const std::size_t role = cm.method == dynamics::ContactMethod::Kec   ? 0
+                           : cm.method == dynamics::ContactMethod::Lut ? 1
+                                                                       : 2;
   for (int w : cm.wheelsets)
     for (const char* side : {"left", "right"}) {
       const std::string base = "/contact/" + v.bodies[w].name + "/" + side + "/";
@@ -210,7 +220,7 @@ void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
       if (!m.spec.run.output_patches) continue;
       for (int p = 0; p < 2; ++p) {
         const std::string patch = base + "patch" + std::to_string(p);
-        f.attr(patch, "role", std::string(kPatchRole[kec ? 0 : 1][p]));
+        f.attr(patch, "role", std::string(kPatchRole[role][p]));
         for (const auto& [q, u] : kPatchQ) outputs.push_back({patch + "/" + q, u});
       }
     }
@@ -236,6 +246,18 @@ void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
   const auto& ts = cm.tableStats();
   f.attr("/contact", "table_build_time_s", ts.build_seconds);
   f.attr("/contact", "table_bytes", static_cast<std::int64_t>(ts.bytes));
+  if (const auto* e = cm.elastic.get()) {
+    // The elastic method's assumptions and derived constants (docs/elastic_contact.md).
+    f.attr("/contact", "elastic_damping_ratio", e->damping_ratio);
+    f.attr("/contact", "elastic_damping_s_per_m", e->damping);
+    f.attr("/contact", "elastic_static_load_N", e->static_load);
+    f.attr("/contact", "elastic_static_approach_m", e->static_approach);
+    f.attr("/contact", "elastic_vertical_frequency_hz", e->vertical_frequency);
+    f.attr("/contact", "elastic_sample_step_m", e->search.front().spec().sample_step);
+    f.attr("/contact", "elastic_min_curvature_ratio", e->normal.min_ratio);
+    f.attr("/contact", "elastic_flange_height_m", e->flange_height);
+    f.attr("/contact", "derailment_lift_m", e->derailment_lift);
+  }
 }
 
 // Per-patch values (kPatchQ order); returns the next output slot.
@@ -283,8 +305,8 @@ double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t,
     const double vals[] = {w.normal,
                            w.normal_tread,
                            w.normal_flange,
-                           w.patch[0].fx + w.patch[1].fx,
-                           w.patch[0].fy + w.patch[1].fy,
+                           w.creep_x,
+                           w.creep_y,
                            p.sx,
                            p.sy,
                            p.spin,
@@ -298,7 +320,9 @@ double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t,
                            w.force.X,
                            w.force.Y,
                            w.force.Q,
-                           w.force.y_track};
+                           w.force.y_track,
+                           static_cast<double>(w.patch_count),
+                           w.wheel_lift};
     static_assert(std::size(vals) == kNq);
     for (const double x : vals) *out++ = x;
     if (patches)

@@ -1,4 +1,5 @@
 #include "workbench/contact/interpolation.hpp"
+#include "workbench/dynamics/limits.hpp"
 #include "workbench/dynamics/names.hpp"
 #include "workbench/scenario/build.hpp"
 #include "workbench/scenario/reader.hpp"
@@ -36,6 +37,22 @@ bool buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
       r.error(*n.field("fastsim"), "fastsim applies to creep = \"fastsim\" only (creep = \"" +
                                        std::string(nameOf(c.creep)) + "\")");
   }
+  if (const Node* e = r.blockValue("elastic")) {
+    Reader o(*e, block("contact.elastic"), "contact.elastic", d);
+    c.elastic.loc = e->loc;
+    c.elastic.damping_ratio = o.number("damping_ratio");
+    c.elastic.sample_step = o.number("sample_step");
+    c.elastic.derailment_lift = o.number("derailment_lift");
+    c.elastic.min_curvature_ratio = o.number("min_curvature_ratio");
+    if (const double lift = c.elastic.derailment_lift;
+        lift >= 0.0 && !dynamics::kDerailmentLiftRange.contains(lift))
+      o.error(*e->field("derailment_lift"),
+              "derailment_lift must be in " + dynamics::kDerailmentLiftRange.text() +
+                  " m, or -1 for half the wheel's flange height");
+    if (c.method != dynamics::ContactMethod::Elastic)
+      r.error(*n.field("elastic"), "elastic applies to method = \"elastic\" only (method = \"" +
+                                       std::string(nameOf(c.method)) + "\")");
+  }
   c.mu = r.number("mu");
   c.youngs_modulus = r.number("youngs_modulus");
   c.poisson = r.number("poisson");
@@ -52,6 +69,16 @@ bool buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
           std::string(k) + " applies to method 'lut' only (KEC treats the flange as a constraint)");
   for (const char* k : {"dhat", "dbar"})
     if (!kec && r.has(k)) r.error(*n.field(k), std::string(k) + " applies to method 'kec' only");
+  // The elastic method has no table, no multipliers and no constraint normal force.
+  if (c.method == dynamics::ContactMethod::Elastic)
+    for (const char* k : {"flange_stiffness", "flange_damping", "normal_forces",
+                          "min_normal_force", "table_interpolation"})
+      if (r.has(k))
+        r.error(*n.field(k),
+                std::string(k) +
+                    " applies to the constraint methods 'kec' and 'lut' only (method = "
+                    "\"elastic\": Hertz normal forces per patch from the approach, no table, "
+                    "derailment by contact.elastic.derailment_lift)");
   return false;
 }
 

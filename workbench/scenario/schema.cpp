@@ -279,6 +279,10 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
         blockKey("fastsim", ValueType::Block, {},
                  "FASTSIM's grid and traction bound, for creep = \"fastsim\" (docs/creep.md)",
                  "contact.fastsim"),
+        blockKey("elastic", ValueType::Block, {},
+                 "the elastic contact method's damping, search step and derailment criterion, for "
+                 "method = \"elastic\" (docs/elastic_contact.md)",
+                 "contact.elastic"),
         num("mu", "-", 0.2364, "friction coefficient (paper section 5.1)", dynamics::kMuRange),
         num("youngs_modulus", "Pa", 2.1e11, "Young's modulus of wheel and rail",
             dynamics::kYoungsModulusRange),
@@ -294,6 +298,29 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
             "constraint contact cannot lift the wheel, so results past wheel lift are not "
             "physical",
             dynamics::kMinNormalForceRange)}});
+  const dynamics::ElasticSpec elastic;  // the defaults live in dynamics/spec.hpp
+  s.push_back(
+      {"contact.elastic",
+       "Elastic contact (a plain table inside contact{}, method = \"elastic\"): the normal "
+       "damping, the contact search's scan step, the curvature floor of the Hertz patches and the "
+       "derailment criterion (docs/elastic_contact.md).",
+       {num("damping_ratio", "-", elastic.damping_ratio,
+            "damping ratio of a wheel's vertical oscillation on its Hertz contact at the static "
+            "load (Hunt-Crossley damping N = K delta^1.5 (1 + c_d delta_dot)); the rigid rails "
+            "stand in for the track, so this is an assumption, stated in the results",
+            dynamics::kElasticDampingRatioRange),
+        num("sample_step", "m", elastic.sample_step,
+            "wheel sampling step of the contact search's scan (patches narrower than about two "
+            "steps can be missed)",
+            dynamics::kElasticSampleStepRange),
+        num("derailment_lift", "m", elastic.derailment_lift,
+            "a wheel whose tape circle rises more than this above its centred height over its "
+            "rail has derailed: the run stops (exit 2); -1 = half the wheel's flange height",
+            Range{-1.0, dynamics::kDerailmentLiftRange.max}),
+        num("min_curvature_ratio", "-", elastic.min_curvature_ratio,
+            "the lateral relative curvature of a patch is floored smoothly at this times its "
+            "rolling curvature (near-conformal contact, docs/elastic_contact.md)",
+            dynamics::kElasticCurvatureRatioRange)}});
   const creep::FastsimGrid fastsim;  // the defaults live in creep/fastsim.hpp
   s.push_back(
       {"contact.fastsim",

@@ -4,7 +4,7 @@ namespace rb::vehicle {
 
 namespace {
 constexpr const char* kCoordName[5] = {"y", "z", "phi", "theta", "psi"};
-constexpr const char* kWsCoordName[3] = {"y", "theta", "psi"};
+constexpr const char* kWsCoordName[5] = {"y", "theta", "psi", "z", "phi"};
 }  // namespace
 
 VehicleLayout vehicleLayout(const VehicleModel& m, int ws_dof) {
@@ -36,7 +36,7 @@ int VehicleLayout::index(int body, Coord c, bool is_rate) const {
   if (w < 0) return -1;
   for (int cc = 0; cc < kWheelsetCoordinates; ++cc)
     if (kWheelsetCoord[cc] == c) return is_rate ? wsRate(w, cc) : wsPosition(w, cc);
-  return -1;  // z, phi: dependent
+  return -1;  // z, phi on constraint contact: dependent
 }
 
 std::string VehicleLayout::componentName(int i, const VehicleModel& m) const {
@@ -48,7 +48,8 @@ std::string VehicleLayout::componentName(int i, const VehicleModel& m) const {
   const char* suffix = is_rate ? "_dot" : "";
   if (j < 5 * n_free) return m.bodies[freeBody(j / 5)].name + "." + kCoordName[j % 5] + suffix;
   const int jw = j - 5 * n_free;
-  const int c = spinFree() ? jw % 3 : (jw % 2 == 0 ? 0 : 2);  // prescribed spin: y, psi
+  int c = 0;
+  while (c + 1 < kWheelsetCoordinates && wsSlot(c) != jw % ws_dof) ++c;
   return m.bodies[wheelset(jw / ws_dof)].name + "." + kWsCoordName[c] + suffix;
 }
 

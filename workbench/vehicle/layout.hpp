@@ -11,9 +11,11 @@
 //   [10 nf + d nw + d w + j]  wheelset rate                                        "ws1.theta_dot"
 //   [10 nf + 2 d nw + e]      Maxwell force of series damper e (Appendix A)         "series[3].f"
 // d = 0: guided wheelsets, which follow the track kinematically (no state); d = 3: wheelsets on
-// wheel/rail contact with a free spin (y, theta, psi); d = 2: with a prescribed spin (y, psi).
-// wsPosition(w, c) / wsRate(w, c) take c = 0 y, 1 theta, 2 psi in every case and return -1 for a
-// coordinate that is not a state.
+// constraint contact (KEC, LUT: z and roll are dependent) with a free spin (y, theta, psi); d = 2:
+// with a prescribed spin (y, psi); d = 5: wheelsets on elastic contact, every coordinate but s a
+// state (y, theta, psi, z, phi); d = 4: elastic with a prescribed spin (y, psi, z, phi).
+// wsPosition(w, c) / wsRate(w, c) take c = 0 y, 1 theta, 2 psi, 3 z, 4 phi in every case and
+// return -1 for a coordinate that is not a state.
 #include <string>
 #include <vector>
 
@@ -26,9 +28,13 @@ namespace rb::vehicle {
 inline constexpr int kGuidedWheelsetDof = 0;    // guided: no wheelset state
 inline constexpr int kPrescribedSpinDof = 2;    // contact, prescribed spin: y, psi
 inline constexpr int kFreeSpinDof = 3;          // contact, free spin: y, theta, psi
-inline constexpr int kFreeBodyDof = 5;          // car bodies and bogies: y, z, phi, theta, psi
-inline constexpr int kWheelsetCoordinates = 3;  // wheelset coordinate c: 0 y, 1 theta, 2 psi
-inline constexpr Coord kWheelsetCoord[3] = {kY, kPitch, kYaw};  // wheelset c -> body coordinate
+inline constexpr int kElasticPrescribedSpinDof = 4;  // elastic, prescribed spin: y, psi, z, phi
+inline constexpr int kElasticFreeSpinDof = 5;        // elastic, free spin: y, theta, psi, z, phi
+inline constexpr int kFreeBodyDof = 5;  // car bodies and bogies: y, z, phi, theta, psi
+// Wheelset coordinate c: 0 y, 1 theta, 2 psi, 3 z, 4 phi (z and phi are states on elastic
+// contact only).
+inline constexpr int kWheelsetCoordinates = 5;
+inline constexpr Coord kWheelsetCoord[5] = {kY, kPitch, kYaw, kZ, kRoll};  // c -> body coordinate
 
 struct VehicleLayout {
   std::vector<int> free_bodies;  // car bodies and bogies, body order
@@ -37,13 +43,20 @@ struct VehicleLayout {
   int n_free = 0, n_ws = 0, n_series = 0, size = 0;
   int ws_dof = kGuidedWheelsetDof;
 
-  bool spinFree() const { return ws_dof == kFreeSpinDof; }
-  // Slot of wheelset coordinate c (0 y, 1 theta, 2 psi) among the wheelset's states; -1 if c is
-  // not a state (the prescribed spin; every coordinate of a guided wheelset).
+  bool spinFree() const { return ws_dof == kFreeSpinDof || ws_dof == kElasticFreeSpinDof; }
+  // Wheelset height and roll are states (elastic contact), not constraint outputs.
+  bool wheelsetVertical() const { return ws_dof >= kElasticPrescribedSpinDof; }
+  // Slot of wheelset coordinate c (0 y, 1 theta, 2 psi, 3 z, 4 phi) among the wheelset's states;
+  // -1 if c is not a state (the prescribed spin; z and phi on constraint contact; every
+  // coordinate of a guided wheelset).
   int wsSlot(int c) const {
-    if (ws_dof == kFreeSpinDof) return c;
-    if (ws_dof == kPrescribedSpinDof) return c == 0 ? 0 : (c == 2 ? 1 : -1);
-    return -1;
+    switch (ws_dof) {
+      case kElasticFreeSpinDof: return c;
+      case kElasticPrescribedSpinDof: return c == 1 ? -1 : (c == 0 ? 0 : c - 1);
+      case kFreeSpinDof: return c < 3 ? c : -1;
+      case kPrescribedSpinDof: return c == 0 ? 0 : (c == 2 ? 1 : -1);
+      default: return -1;
+    }
   }
   int position(int k, int c) const { return 5 * k + c; }  // c = 0..4: y, z, phi, theta, psi
   int wsPosition(int w, int c) const {

@@ -1,0 +1,233 @@
+#pragma once
+// Stages 5-8 of a ContactVehicleOde evaluation with the elastic contact method
+// (docs/elastic_contact.md, "Dynamics"). The wheelset has its full rigid-body freedom: y, z, phi,
+// psi and the spin theta are states, and the contact forces are applied forces, so a wheelset's
+// equations are M qddot = Q - M_qs a + sum over patches (N g_n + f_x g_x + f_y g_y + m_z g_m),
+// without multipliers and without a normal/tangential coupling iteration (the normal force of a
+// patch follows from its approach, not from the accelerations).
+//
+// Per wheel and evaluation:
+//   - the contact search (contact/elastic_search.hpp) of the wheel over its rail, the rail
+//     displaced by its irregularity (y_l, z_l or y_r, z_r: the rails translate, as in the KEC's
+//     constraints, Eq. 22): every penetrating local minimum of the gap is a patch, any number of
+//     them, with the exact longitudinal shift of the contact point of a yawed wheelset;
+//   - the normal force per patch from Hertz at the search's shared-overlap approach delta, with the
+//     curvature policy of contact/elastic_normal.hpp and Hunt-Crossley damping
+//       N = K_H(A, B) delta^1.5 max(0, 1 + c_d delta_dot),
+//     delta_dot = -(v_wheel - v_rail) . n, v_rail the velocity of the irregular rail's surface
+//     under the moving contact (V times its slope along the track); c_d from
+//     ElasticContactModel::damping;
+//   - the wheel material point at the contact is the locus point (x_w, sigma Lw + s_w, -r cos
+//     theta) of the wheelset intermediate frame: the normal force's lever arm includes the
+//     contact point's longitudinal shift (the yaw moment of a yawed wheelset's contact forces);
+//   - creepages and creep forces in the rail's contact frame: x along the track (tangent to the
+//     prismatic rail at every contact), n the rail normal, y = n x x.
+//
+// Wheel lift, flange climb and two-point contact are physics here: a wheel with no penetrating
+// minimum has no patch. Derailment stops the run: a wheel whose tape circle has risen above its
+// centred height over its rail by more than ElasticContactModel::derailment_lift (flange climb,
+// a lifted wheel) is refused as the KEC's wheel lift is (recoverable: an adaptive method retries
+// a smaller step; a real derailment stops the run with its time, distance and wheel).
+// Internal to workbench/dynamics.
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "workbench/contact/elastic_normal.hpp"
+#include "workbench/dynamics/augmented.hpp"
+#include "workbench/dynamics/contact_coupling.hpp"
+#include "workbench/dynamics/contact_patches.hpp"
+
+namespace rb::dynamics::internal {
+
+// The irregular rail of one side at the wheelset: its displacement and slope along the track.
+struct RailOffset {
+  double y = 0.0, z = 0.0;      // [m]
+  double y_s = 0.0, z_s = 0.0;  // [-] d/ds
+};
+inline RailOffset railOffset(const track::IrregularityPoint& r, int side) {
+  return side == 0 ? RailOffset{r.y_l, r.z_l, r.y_l_s, r.z_l_s}
+                   : RailOffset{r.y_r, r.z_r, r.y_r_s, r.z_r_s};
+}
+
+// One patch: kinematics, Hertz normal force with damping, creepages and load-independent creep
+// constants. Returns the normal force.
+template <class Law>
+double setupElasticPatch(Patch& p, const contact::ElasticPatchGeometry& g, double sigma,
+                         const ContactModel& c, const WheelsetFrame& f, double V,
+                         const RailOffset& rail) {
+  const ElasticContactModel& e = *c.elastic;
+  p.active = true;
+  p.on_flange = sigma * g.s_w < sigma * c.flange_boundary[sigma > 0 ? 0 : 1];
+  p.s_w = g.s_w;
+  p.s_r = g.s_r;
+  p.gamma = g.gamma;
+  p.radius = g.radius;
+  p.n = Eigen::Vector3d(0.0, g.n_y, g.n_z);
+  p.ql.setZero();
+  const Eigen::Vector3d u(g.x_w, sigma * c.geometry.wheel_lw + g.s_w,
+                          -g.radius * std::cos(g.theta));
+  const Eigen::Vector3d au = f.kin->attach.A * u;
+  const Eigen::Vector3d sp = f.axle.cross(au);
+  p.gn = wheelPointForce(f, au, sp, p.n);
+  const Eigen::Vector3d v = vehicle::pointVelocity(*f.kin, au) + sp * f.spin_rate;
+  const double delta_dot = -(v.y() - V * rail.y_s) * p.n.y() - (v.z() - V * rail.z_s) * p.n.z();
+  p.k = contact::policyCurvatures(g, e.normal);
+  p.shape = c.hertz_shapes->shape(p.k.A, p.k.B);
+  const double K = creep::hertzStiffness(c.material, p.k, p.shape);
+  const double d = std::max(g.approach, 0.0);
+  const double N = K * d * std::sqrt(d) * std::max(0.0, 1.0 + e.damping * delta_dot);
+  p.q0 = N;
+  if constexpr (Law::kCreep) {
+    p.ex = Eigen::Vector3d::UnitX();
+    p.ey = Eigen::Vector3d(0.0, p.n.z(), -p.n.y());  // n x e_x
+    p.gx = wheelPointForce(f, au, sp, p.ex);
+    p.gy = wheelPointForce(f, au, sp, p.ey);
+    const Eigen::Vector3d bgn = f.BG.transpose() * p.n;
+    p.gm << 0.0, 0.0, bgn(0), bgn(1), bgn(2);
+    p.cr = creep::creepagesFromKinematics(v.x(), v.dot(p.ey), f.omega.dot(p.n), V);
+    p.pc = creep::patchConstants(c.material, p.k, p.shape);
+  }
+  return N;
+}
+
+// Rise of a wheel's tape circle (s_w = 0) above its height in the centred position, over its rail
+// (the irregular rail's vertical displacement removed).
+inline double wheelLift(const ContactModel& c, const vehicle::Vector6d& q, double height,
+                        const RailOffset& rail, double sigma) {
+  const double lw = c.geometry.wheel_lw;
+  const double z = q[vehicle::kZ] + height + sigma * lw * std::sin(q[vehicle::kRoll]) - rail.z;
+  return z - (c.centred_z + sigma * lw * std::sin(c.centred_phi));
+}
+
+// Stage 5 (elastic): the search and every patch of both wheels of wheelset ww, their normal and
+// creep forces, summed into the generalised force Q (y, z, phi, theta, psi).
+template <class Law>
+void elasticPatches(const ContactModels& models, const StageInput& in, WheelsetWork& ww,
+                    ContactWorkspace& work, Vec5& Q) {
+  const ContactModel& c = models.contact;
+  const ElasticContactModel& e = *c.elastic;
+  const vehicle::Vector6d& q = work.bodies.q[ww.body];
+  const WheelsetFrame wf = wheelsetFrame(work.bodies.kin[ww.body], work.bodies.qd[ww.body]);
+  resetPatches(ww);
+  for (int side = 0; side < 2; ++side) {
+    ElasticWheelWork& ew = ww.elastic[side];
+    const double sigma = contact::kSideSign[side];
+    const RailOffset rail = railOffset(ww.irr, side);
+    const contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + ww.height - rail.z,
+                                    q[vehicle::kRoll], q[vehicle::kYaw]};
+    e.search[static_cast<std::size_t>(side)].search(pose, ew.geometry, work.search);
+    ew.lift = wheelLift(c, q, ww.height, rail, sigma);
+    const int n = ew.geometry.count;
+    ++work.stats.elastic_searches;
+    work.stats.elastic_patches += n;
+    work.stats.elastic_max_patches = std::max(work.stats.elastic_max_patches, n);
+    bool tread = false, flange = false;
+    for (int k = 0; k < contact::kMaxElasticPatches; ++k) {
+      Patch& p = ew.patch[static_cast<std::size_t>(k)];
+      if (k >= n) {
+        p.active = false;
+        continue;
+      }
+      const double N = setupElasticPatch<Law>(p, ew.geometry.patch[static_cast<std::size_t>(k)],
+                                              sigma, c, wf, in.speed, rail);
+      Q.noalias() += N * p.gn;
+      if constexpr (Law::kCreep) creepForce<Law>(p, N, c, Q);
+      (p.on_flange ? flange : tread) = true;
+    }
+    ww.regime[side] = flange ? (tread ? 1 : 2) : 0;
+  }
+}
+
+// Stage 8 (elastic): derailment of a wheel of wheelset ww (ElasticWheelWork::lift beyond the
+// criterion). Rhs and Init evaluations refuse the state (recoverable); Output ones only report.
+inline int checkDerailment(const ContactModels& models, const StageInput& in,
+                           const WheelsetWork& ww, ContactWorkspace& work) {
+  const ElasticContactModel& e = *models.contact.elastic;
+  for (int s = 0; s < 2; ++s) {
+    const double lift = ww.elastic[s].lift;
+    if (!(std::abs(lift) > e.derailment_lift) || in.mode == EvalMode::Output) continue;
+    std::ostringstream os;
+    os << "derailment: wheelset '" << models.vehicle.bodies[ww.body].name << "', "
+       << (s == 0 ? "left" : "right") << " wheel " << (lift > 0.0 ? "rose " : "dropped ")
+       << std::abs(lift) * 1e3 << " mm " << (lift > 0.0 ? "above" : "below")
+       << " its centred height over its rail (criterion contact.elastic.derailment_lift = "
+       << e.derailment_lift * 1e3 << " mm) at t = " << in.t
+       << " s, s = " << work.bodies.q[ww.body][vehicle::kS] << " m (lateral position y = "
+       << work.bodies.q[ww.body][vehicle::kY] * 1e3 << " mm)";
+    work.error = os.str();
+    return 1;
+  }
+  return 0;
+}
+
+// Stages 6-7 (elastic): the wheelset's accelerations from M qddot = Q (a 5x5 Cholesky; with a
+// prescribed spin the spin row becomes theta_ddot = a / r_c and its reaction drops out).
+inline int elasticAccelerations(const ContactModels& models, const StageInput& in,
+                                const WheelsetWork& ww, ContactWorkspace& work, const Vec5& Q,
+                                Vec5& qdd) {
+  const vehicle::Matrix6d& mass = work.bodies.mass[ww.body];
+  Eigen::Matrix<double, 5, 5> M = mass.block<5, 5>(1, 1);
+  Vec5 b = Q;
+  if (!models.layout.spinFree()) {
+    const double thdd = in.acceleration / models.contact.centredRadius();
+    b -= M.col(3) * thdd;
+    b(3) = thdd;
+    M.row(3).setZero();
+    M.col(3).setZero();
+    M(3, 3) = 1.0;
+  }
+  Cholesky5 llt;
+  if (!llt.factor(M)) {
+    work.error = "wheelset '" + models.vehicle.bodies[ww.body].name +
+                 "': mass matrix not positive definite at t = " + std::to_string(in.t) + " s";
+    return 1;
+  }
+  qdd = llt.solve(b);
+  if (qdd.allFinite()) return 0;
+  work.error = "wheelset '" + models.vehicle.bodies[ww.body].name +
+               "': non-finite accelerations at t = " + std::to_string(in.t) + " s";
+  return 1;
+}
+
+// The rates of wheelset w's states: positions from the rates, the rates from qdd (y, z, phi,
+// theta, psi).
+inline void writeElasticRates(const vehicle::VehicleLayout& l, int w, const double* y,
+                              const Vec5& qdd, double* ydot) {
+  for (int c = 0; c < vehicle::kWheelsetCoordinates; ++c) {
+    const int ip = l.wsPosition(w, c);
+    if (ip < 0) continue;
+    ydot[ip] = y[l.wsRate(w, c)];
+    ydot[l.wsRate(w, c)] = qdd(vehicle::kWheelsetCoord[c] - 1);
+  }
+}
+
+// Outputs of wheelset w (elastic): per wheel the strongest tread patch as patch[0], the strongest
+// flange patch as patch[1], the totals over every patch.
+void elasticWheelsetOutputs(const ContactModels& models, const StageInput& in, int w,
+                            const WheelsetWork& ww, const Vec5& qdd, bool creep,
+                            ContactWorkspace& work);
+
+// Stages 5-8 of wheelset w with the elastic method.
+template <class Law>
+int elasticWheelsetStages(const ContactModels& models, const StageInput& in, int w, double* ydot,
+                          ContactWorkspace& work, vehicle::StageClock* clock) {
+  using vehicle::Stage;
+  WheelsetWork& ww = work.wheelset(w);
+  const vehicle::Matrix6d& mass = work.bodies.mass[ww.body];
+  Vec5 Q = work.bodies.force[ww.body].segment<5>(1) - mass.block<5, 1>(1, vehicle::kS) *
+                                                          in.acceleration;
+  elasticPatches<Law>(models, in, ww, work, Q);
+  if (clock) clock->mark(Stage::ContactPatches);
+  Vec5 qdd;
+  if (const int rc = elasticAccelerations(models, in, ww, work, Q, qdd); rc != 0) return rc;
+  if (ydot) writeElasticRates(models.layout, w, in.y, qdd, ydot);
+  if (const int rc = checkDerailment(models, in, ww, work); rc != 0) return rc;
+  if (in.mode == EvalMode::Output)
+    elasticWheelsetOutputs(models, in, w, ww, qdd, Law::kCreep, work);
+  if (clock) clock->mark(Stage::Checks);
+  return 0;
+}
+
+}  // namespace rb::dynamics::internal
