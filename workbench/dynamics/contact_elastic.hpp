@@ -117,7 +117,7 @@ void elasticPatches(const ContactModels& models, const StageInput& in, WheelsetW
     const RailOffset rail = railOffset(ww.irr, side);
     const contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + ww.height - rail.z,
                                     q[vehicle::kRoll], q[vehicle::kYaw]};
-    e.search[static_cast<std::size_t>(side)].search(pose, ew.geometry, work.search);
+    e.search[static_cast<std::size_t>(side)].search(pose, ew.geometry, ew.search);
     ew.lift = wheelLift(c, q, ww.height, rail, sigma);
     const int n = ew.geometry.count;
     ++work.stats.elastic_searches;

@@ -112,6 +112,7 @@ struct DescribedPoint {
 
 // Elastic contact, one wheel: the search's patches (deepest first) and the wheel's lift.
 struct ElasticWheelWork {
+  contact::ElasticSearchWorkspace search;  // the search's scratch, per wheel (successive poses)
   contact::ElasticWheelGeometry geometry;
   std::array<Patch, contact::kMaxElasticPatches> patch;
   double lift = 0.0;  // [m] rise of the wheel's tape circle above its centred height over its rail
@@ -157,7 +158,6 @@ struct ContactWorkspace {
   std::vector<WheelOutput> wheels;      // [2w + side], filled by Output evaluations
   std::vector<vehicle::Vector6d> qdd;   // body accelerations of the last Output evaluation
   std::vector<double> scratch;          // ydot of output and initial-state evaluations
-  contact::ElasticSearchWorkspace search;  // scratch of the elastic contact search
   ContactStats stats;
   std::string error;  // why the last evaluation failed
 
