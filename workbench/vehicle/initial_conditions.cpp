@@ -29,7 +29,7 @@ std::string notAStateReason(const VehicleOde& ode, std::size_t body, const Initi
            "guided), "
            "so '" +
            name + "' has no state";
-  if (coord == kZ || coord == kRoll)
+  if ((coord == kZ || coord == kRoll) && !layout.wheelsetVertical())
     return "the height z and roll of wheelset '" + name +
            "' on wheel/rail contact are given by the contact constraints (KEC Eq. 22, LUT Eq. "
            "17-18); its states are y, yaw and, with a free spin, pitch";
