@@ -188,7 +188,12 @@ CLI::App* addPrecisionCommand(CLI::App& app, PrecisionOptions& o) {
       "steps / tolerances, errors, Pareto fronts and the cheapest setting per accuracy level",
       o);
   c->add_option("--methods", o.methods,
-                "contact methods, e.g. kec,lut (default: the scenario's and the other one)");
+                "contact methods, e.g. kec,lut,elastic (default: the scenario's and the other "
+                "constraint method; an elastic scenario: elastic)");
+  c->add_option("--model-reference", o.model_reference,
+                "a contact method whose verified reference the other models' references are "
+                "compared with: their model error beside the integration and table errors "
+                "(e.g. elastic; added to --methods)");
   c->add_option("--integrators", o.integrators,
                 "integrators of the matrix: rk4,abm,dopri5,bdf,ida (default rk4,abm,dopri5,bdf)");
   c->add_option("--steps", o.steps,
@@ -225,7 +230,7 @@ CLI::App* addPrecisionCommand(CLI::App& app, PrecisionOptions& o) {
   c->add_flag("--refine", o.refine, "also run the matrix on the refined contact tables");
   c->add_flag("--callgrind", o.callgrind,
               "count the instructions of the recommended settings under valgrind's callgrind");
-  for (const char* name : {"--methods", "--integrators", "--steps", "--tolerances", "--quantities",
+  for (const char* name : {"--methods", "--model-reference", "--integrators", "--steps", "--tolerances", "--quantities",
                            "--levels", "--repeats", "--distance", "--duration", "--budget",
                            "--reference-methods", "--reference-tol", "--reference-limit", "--jobs"})
     c->get_option(name)->each(markGiven(o, name));

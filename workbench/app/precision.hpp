@@ -21,6 +21,7 @@ struct PrecisionOptions : ScenarioCommandOptions {
   // "the default".
   std::set<std::string> given;
   std::string methods;            // contact methods "kec,lut" ("" = default)
+  std::string model_reference;    // contact method of the model error's reference ("": none)
   std::string integrators;        // "rk4,abm,dopri5,bdf" ("" = default)
   std::string quantities;         // error quantities "y,yaw" ("" = default)
   std::string levels;             // recommendation levels in the first quantity's unit

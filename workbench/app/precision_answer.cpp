@@ -299,7 +299,9 @@ ReferenceAnswer referenceAnswer(const Plan& p, const std::string& model,
   ra.model = model;
   const std::string ref = referenceId(p, model, kRoleReference);
   const std::string check = referenceId(p, model, kRoleCheck);
-  const std::string same = referenceId(p, model, kRoleSameTables);
+  // The elastic method has no tables: its own reference is its same-tables reference.
+  std::string same = referenceId(p, model, kRoleSameTables);
+  if (same.empty()) same = ref;
   const RunFile fr = runFile(refDir, ref, 1);
   const RunFile fc = runFile(refDir, check, 1);
   const bool both_ok = !ref.empty() && !check.empty() && fr.ok && fc.ok;
@@ -340,7 +342,8 @@ std::vector<CaseAnswer> caseAnswers(const Plan& p, const Quantity& q0, const fs:
     const std::string base = baseModel(l.model);
     const bool refined = base != l.model;
     const std::string ref = referenceId(p, base, kRoleReference);
-    const std::string same = refined ? ref : referenceId(p, base, kRoleSameTables);
+    std::string same = refined ? ref : referenceId(p, base, kRoleSameTables);
+    if (same.empty()) same = ref;  // no tables (elastic)
     for (const auto& rung : l.rungs) {
       CaseAnswer c;
       c.model = l.model;
@@ -379,6 +382,18 @@ Answer computeAnswer(const Plan& p, const std::string& out, int repeats) {
   for (const auto& m : p.models)
     if (!m.refined)
       a.references.push_back(referenceAnswer(p, m.name, a.quantities, a.limit, refDir));
+  // Model error: each model's reference against the model reference's (both on their finest
+  // tables, both at the reference tolerance), so integration and table errors are not in it.
+  a.model_reference = p.model_reference;
+  if (!p.model_reference.empty()) {
+    const std::string against = referenceId(p, p.model_reference, kRoleReference);
+    for (auto& r : a.references) {
+      if (r.model == p.model_reference) continue;
+      const std::string own = referenceId(p, r.model, kRoleReference);
+      for (const auto& q : a.quantities)
+        r.model_error.push_back(fileError(runH5(refDir, own), runH5(refDir, against), q));
+    }
+  }
   const Quantity& q0 = a.quantities.front();
   a.cases = caseAnswers(p, q0, refDir, caseDir, repeats);
   for (const auto& m : p.models) {
@@ -428,7 +443,14 @@ void writeReferenceBounds(io::ResultFile& f, const Answer& a) {
       f.attr(g, q.tag + "_max" + u, r.bound[k].have ? r.bound[k].max : nan);
       f.attr(g, q.tag + "_rms" + u, r.bound[k].have ? r.bound[k].rms : nan);
       f.attr(g, q.tag + "_table_error_max" + u, r.table[k].have ? r.table[k].max : nan);
+      if (k < r.model_error.size()) {
+        f.attr(g, q.tag + "_model_error_max" + u,
+               r.model_error[k].have ? r.model_error[k].max : nan);
+        f.attr(g, q.tag + "_model_error_rms" + u,
+               r.model_error[k].have ? r.model_error[k].rms : nan);
+      }
     }
+    if (!r.model_error.empty()) f.attr(g, "model_reference", a.model_reference);
   }
 }
 
@@ -504,8 +526,21 @@ void printAnswer(const Answer& a, std::ostream& out) {
     out << "  " << r.model << ": reference "
         << (r.verified ? std::string("verified") : "UNVERIFIED (" + r.why + ")") << "; bound "
         << (r.bound.front().have ? fmt(r.bound.front().max) : "?") << " " << q.unit
-        << "; table error " << (r.table.front().have ? fmt(r.table.front().max) : "?") << " "
-        << q.unit << "\n";
+        << "; table error "
+        << (r.model == "elastic" ? std::string("none (no tables)")
+                                 : (r.table.front().have ? fmt(r.table.front().max) : "?") + " " +
+                                       q.unit);
+    if (!r.model_error.empty()) {
+      // Every quantity: the model error is the answer's point, not only the first quantity.
+      out << "; model error against " << a.model_reference << ":";
+      for (std::size_t k = 0; k < a.quantities.size() && k < r.model_error.size(); ++k)
+        out << " " << a.quantities[k].tag << " "
+            << (r.model_error[k].have ? fmt(r.model_error[k].max) : "?") << " "
+            << a.quantities[k].unit << " max, "
+            << (r.model_error[k].have ? fmt(r.model_error[k].rms) : "?") << " rms"
+            << (k + 1 < a.quantities.size() ? ";" : "");
+    }
+    out << "\n";
   }
   std::size_t w = 10;
   for (const auto& r : a.recommendations)

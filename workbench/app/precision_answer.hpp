@@ -56,6 +56,9 @@ struct ReferenceAnswer {
   std::string why;           // when not verified
   std::vector<Error> bound;  // per quantity: reference_check against reference
   std::vector<Error> table;  // per quantity: reference_same_tables against reference
+  // per quantity: this model's reference against the model reference's (--model-reference;
+  // empty without one, and for the model reference itself)
+  std::vector<Error> model_error;
 };
 
 struct CaseAnswer {
@@ -81,6 +84,7 @@ struct Recommendation {
 };
 
 struct Answer {
+  std::string model_reference;  // the model the model errors are measured against ("": none)
   std::vector<Quantity> quantities;
   std::vector<double> levels;
   double limit = 0.0;

@@ -11,6 +11,7 @@
 #include "workbench/app/option_checks.hpp"
 #include "workbench/app/precision_answer.hpp"
 #include "workbench/core/error.hpp"
+#include "workbench/dynamics/names.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/scenario/scenario.hpp"
 
@@ -21,7 +22,7 @@ namespace {
 
 const SourceLoc kCommandLine{"<command line>", 0};
 const std::vector<std::string> kIntegrators = {"rk4", "abm", "dopri5", "bdf", "ida"};
-const std::vector<std::string> kMethods = {"kec", "lut"};
+const std::vector<std::string> kMethods = {"kec", "lut", "elastic"};
 
 // The ladders (cheap to expensive). Fixed steps: 2 ms is beyond the explicit stability limit of
 // the free wheelset spin's creep mode at 20 m/s (docs/contact_dynamics.md, "Time integration"),
@@ -84,6 +85,12 @@ std::vector<std::string> solverOverrides(const std::string& integrator, double v
   return s;
 }
 
+// Whether the model has a normal-force coupling to set (the constraint methods; the elastic
+// method's normal forces follow from the approach).
+bool couplingApplies(const Plan& p, const Model& m) {
+  return p.contact && m.method != "elastic";
+}
+
 std::vector<std::string> concat(std::vector<std::string> a, const std::vector<std::string>& b) {
   a.insert(a.end(), b.begin(), b.end());
   return a;
@@ -130,19 +137,27 @@ std::vector<std::string> chosen(const std::string& text, const std::string& opti
 // default tables (and the refined ones with --refine); a guided vehicle has one model.
 void addModels(Plan& p, const PrecisionOptions& o, const scenario::ScenarioSpec& spec) {
   if (!p.contact) {
-    if (!o.methods.empty())
-      throw InputError(kCommandLine,
-                       "--methods: the scenario has no wheel/rail contact (guided vehicle)");
+    if (!o.methods.empty() || !o.model_reference.empty())
+      throw InputError(kCommandLine, std::string(o.methods.empty() ? "--model-reference" : "--methods") +
+                                         ": the scenario has no wheel/rail contact (guided vehicle)");
     p.models.push_back({"guided", "", false, {}});
     return;
   }
-  const std::string own = spec.contact.method == dynamics::ContactMethod::Lut ? "lut" : "kec";
-  std::vector<std::string> methods =
-      chosen(o.methods, "--methods", kMethods,
-             o.quick ? std::vector<std::string>{own}
-                     : std::vector<std::string>{own, own == "kec" ? "lut" : "kec"});
+  const std::string own(nameOf(spec.contact.method));
+  if (!o.model_reference.empty() &&
+      std::find(kMethods.begin(), kMethods.end(), o.model_reference) == kMethods.end())
+    throw InputError(kCommandLine, "--model-reference: unknown '" + o.model_reference +
+                                       "' (one of " + join(kMethods) + ")");
+  // The constraint methods compare with each other by default; an elastic scenario with itself.
+  std::vector<std::string> fallback = {own};
+  if (!o.quick && own != "elastic") fallback.push_back(own == "kec" ? "lut" : "kec");
+  std::vector<std::string> methods = chosen(o.methods, "--methods", kMethods, fallback);
+  // The model reference is a model of the matrix (its references are verified like any other).
+  if (!o.model_reference.empty() &&
+      std::find(methods.begin(), methods.end(), o.model_reference) == methods.end())
+    methods.push_back(o.model_reference);
   for (const auto& m : methods) {
-    std::string upper = m == "kec" ? "KEC" : "LUT";
+    std::string upper = m == "kec" ? "KEC" : (m == "lut" ? "LUT" : "elastic");
     std::vector<std::string> ov = {"contact.method=" + m};
     if (const std::string why = refusal(p, o, ov); !why.empty()) {
       p.notes.push_back(
@@ -150,9 +165,12 @@ void addModels(Plan& p, const PrecisionOptions& o, const scenario::ScenarioSpec&
       continue;
     }
     p.models.push_back({upper, m, false, ov});
-    if (o.refine)
+    if (m == o.model_reference) p.model_reference = upper;
+    if (o.refine && m != "elastic")
       p.models.push_back(
           {upper + " refined", m, true, concat(ov, {"profiles.refined_tables=true"})});
+    else if (o.refine)
+      p.notes.push_back({upper, "", "--refine: the elastic method has no contact tables"});
   }
   if (p.models.empty())
     throw InputError(kCommandLine, "--methods: the scenario accepts none of the contact methods");
@@ -165,16 +183,20 @@ bool addReferences(Plan& p, const PrecisionOptions& o, const Model& m,
   std::vector<std::string> tables = m.overrides;
   tables.erase(std::remove(tables.begin(), tables.end(), "profiles.refined_tables=true"),
                tables.end());
-  // A guided vehicle has no contact tables to refine (and no profiles{} block to set).
+  // A guided vehicle has no contact tables to refine (and no profiles{} block to set), nor has
+  // the elastic method (its reference is its own model; no table error).
+  const bool has_tables = p.contact && m.method != "elastic";
+  const bool coupling = couplingApplies(p, m);
   const std::vector<std::string> refined =
-      p.contact ? concat(tables, {"profiles.refined_tables=true"}) : tables;
+      has_tables ? concat(tables, {"profiles.refined_tables=true"}) : tables;
   const double tol = o.reference_tol;
-  const std::vector<std::pair<std::string, std::vector<std::string>>> runs = {
+  std::vector<std::pair<std::string, std::vector<std::string>>> runs = {
       {kRoleReference,
-       concat(refined, solverOverrides(refMethods[0], tol, tol / 10, p.contact, true))},
-      {kRoleCheck, concat(refined, solverOverrides(refMethods[1], tol, tol / 10, p.contact, true))},
-      {kRoleSameTables,
-       concat(tables, solverOverrides(refMethods[0], tol, tol / 10, p.contact, true))}};
+       concat(refined, solverOverrides(refMethods[0], tol, tol / 10, coupling, true))},
+      {kRoleCheck, concat(refined, solverOverrides(refMethods[1], tol, tol / 10, coupling, true))}};
+  if (has_tables || !p.contact)
+    runs.push_back({kRoleSameTables,
+                    concat(tables, solverOverrides(refMethods[0], tol, tol / 10, coupling, true))});
   for (const auto& [role, ov] : runs) {
     if (const std::string why = refusal(p, o, ov); !why.empty()) {
       p.notes.push_back(
@@ -264,7 +286,8 @@ void addLadders(Plan& p, const PrecisionOptions& o, const Model& m,
     std::sort(values.begin(), values.end(), std::greater<>());
     values.erase(std::unique(values.begin(), values.end()), values.end());
     const auto first =
-        concat(m.overrides, solverOverrides(integ, values.front(), values.front(), p.contact));
+        concat(m.overrides,
+               solverOverrides(integ, values.front(), values.front(), couplingApplies(p, m)));
     if (const std::string why = refusal(p, o, first); !why.empty()) {
       p.notes.push_back({m.name, integ, "left out: the scenario refuses it: " + why});
       continue;
@@ -272,7 +295,8 @@ void addLadders(Plan& p, const PrecisionOptions& o, const Model& m,
     for (double v : values) {
       Rung r;
       r.value = v;
-      r.c = makeCase(p, concat(m.overrides, solverOverrides(integ, v, v, p.contact)), kRoleCase);
+      r.c = makeCase(p, concat(m.overrides, solverOverrides(integ, v, v, couplingApplies(p, m))),
+                     kRoleCase);
       l.rungs.push_back(r);
     }
     p.ladders.push_back(std::move(l));
@@ -492,7 +516,8 @@ std::string planCsv(const Plan& plan) {
     for (const auto& m : plan.models)
       if (m.name == r.model) method = m.method;
     s << "reference," << r.c.id << "," << r.role << "," << csvField(r.model) << "," << method << ","
-      << (refined ? "refined" : "default") << "," << r.integrator << ",tol," << r.value << ","
+      << (method == "elastic" ? "none" : (refined ? "refined" : "default")) << ","
+      << r.integrator << ",tol," << r.value << ","
       << csvField(r.c.label) << ",planned,\n";
   }
   for (const auto& l : plan.ladders) {
@@ -501,7 +526,7 @@ std::string planCsv(const Plan& plan) {
       if (m.name == l.model) method = m.method;
     for (const auto& r : l.rungs)
       s << "cases," << r.c.id << "," << kRoleCase << "," << csvField(l.model) << "," << method
-        << "," << tablesOf(l.model) << "," << l.integrator << "," << (l.fixed ? "step" : "tol")
+        << "," << (method == "elastic" ? "none" : tablesOf(l.model)) << "," << l.integrator << "," << (l.fixed ? "step" : "tol")
         << "," << r.value << "," << csvField(r.c.label) << "," << r.status << ","
         << csvField(r.note) << "\n";
   }

@@ -62,6 +62,7 @@ struct Plan {
   bool contact = false;             // the scenario has wheel/rail contact
   std::vector<std::string> bodies;  // the vehicle's body names (BODY.y quantities)
   std::vector<Model> models;
+  std::string model_reference;  // --model-reference: the name of its model ("" none)
   std::vector<Reference> references;
   std::vector<Ladder> ladders;
   std::vector<Note> notes;
