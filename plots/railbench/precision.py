@@ -143,8 +143,22 @@ def _table_to_h5(g: h5py.Group, rows: List[dict]) -> None:
             g.create_dataset(k, data=np.array([str(v) for v in vals], dtype=h5py.string_dtype()))
 
 
+def _engine_model_errors(path: str) -> Dict[str, dict]:
+    """The model errors the engine wrote (--model-reference), kept when the file is rewritten:
+    they are the engine's answer, this module does not compute them."""
+    out: Dict[str, dict] = {}
+    if not os.path.exists(path):
+        return out
+    with h5py.File(path, "r") as f:
+        for model, g in f.get("reference_bound", {}).items():
+            out[model] = {k: v for k, v in g.attrs.items()
+                          if "_model_error_" in k or k == "model_reference"}
+    return out
+
+
 def write_h5(path: str, rows, ref_rows, rec_rows, qs, levels, limit, refs) -> None:
     tmp = path + ".tmp"
+    model_errors = _engine_model_errors(path)
     with h5py.File(tmp, "w") as f:
         f.attrs["quantities"] = ",".join(q.tag for q in qs)
         f.attrs["units"] = ",".join(q.unit for q in qs)
@@ -161,6 +175,8 @@ def write_h5(path: str, rows, ref_rows, rec_rows, qs, levels, limit, refs) -> No
                 g.attrs[f"{q.tag}_max_{q.unit}"] = b[0] if b else np.nan
                 g.attrs[f"{q.tag}_rms_{q.unit}"] = b[1] if b else np.nan
                 g.attrs[f"{q.tag}_table_error_max_{q.unit}"] = t[0] if t else np.nan
+            for k, v in model_errors.get(model, {}).items():
+                g.attrs[k] = v
         _table_to_h5(f.create_group("cases"), rows)
         _table_to_h5(f.create_group("references"), ref_rows)
         _table_to_h5(f.create_group("recommendation"), rec_rows)

@@ -18,6 +18,7 @@ import sys
 import h5py
 
 SMALL = "scenarios/validation/case1_R300_kec.lua"
+ELASTIC = "scenarios/validation/case1_R500_elastic.lua"
 
 
 def run(wb, scenario, out, *extra):
@@ -124,6 +125,33 @@ def default_suite(wb, out):
         with h5py.File(os.path.join(noplots, "precision.h5"), "r") as f:
             if "recommendation/setting" not in f or "reference_bound" not in f:
                 problems.append("plots off: precision.h5 lacks the engine's answer")
+
+    # The model error against an elastic reference: KEC's verified reference against the
+    # elastic method's, per quantity, printed and in precision.h5 (a single wheelset, 45 m).
+    model = os.path.join(out, "model")
+    code, text = run(wb, ELASTIC, model, "--quick", "--distance", "45", "--methods", "kec",
+                     "--model-reference", "elastic")
+    if code != 0:
+        problems.append(f"--model-reference run exit {code}: {text[-2000:]}")
+    else:
+        if "model error against elastic: y " not in text:
+            problems.append("--model-reference: no model error printed")
+        with h5py.File(os.path.join(model, "precision.h5"), "r") as f:
+            g = f["reference_bound"]
+            if "KEC" not in g or "elastic" not in g:
+                problems.append(f"--model-reference: models {list(g)}")
+            else:
+                e = float(g["KEC"].attrs.get("y_model_error_max_mm", float("nan")))
+                if not (math.isfinite(e) and 0.0 < e < 5.0):
+                    problems.append(f"--model-reference: KEC model error {e} mm")
+                ref = g["KEC"].attrs.get("model_reference", b"")
+                if (ref.decode() if isinstance(ref, bytes) else ref) != "elastic":
+                    problems.append("--model-reference: not recorded")
+                if "y_model_error_max_mm" in g["elastic"].attrs:
+                    problems.append("--model-reference: the reference has a model error")
+    code, text = run(wb, SMALL, os.path.join(out, "bad"), "--quick", "--model-reference", "fem")
+    if code != 1 or "--model-reference" not in text:
+        problems.append(f"--model-reference fem: exit {code}: {text[-500:]}")
 
     # Bad input: exit 1 naming the option, nothing run (a mistyped quantity is refused before
     # the matrix, not after it).
