@@ -81,5 +81,29 @@ TEST(Allocation, PrescribedSpinAndRampAllocateNothing) {
   }
 }
 
+
+// The elastic method (every creep law, free and prescribed spin) with ws1 on its flange (two-point
+// contact) and ws3 lifted: the searches and patches of every evaluation allocate nothing once the
+// first evaluation has sized the search workspaces (each wheel keeps its own).
+TEST(Allocation, ElasticRhsAndOutputsAllocateNothing) {
+  for (const char* creep : {"polach", "fastsim", "none"}) {
+    for (const char* spin : {"free", "prescribed"}) {
+      Compiled c = compileScenario("scenarios/validation/case3_elastic.lua",
+                                   {std::string("contact.creep=") + creep,
+                                    std::string("contact.wheelset_spin=") + spin});
+      dynamics::ContactVehicleOde ode(*c.vehicle, *c.contact, *c.track);
+      Eigen::VectorXd y = ode.initialState(0.0);
+      const auto& l = ode.layout();
+      y[l.wsPosition(0, 0)] = -8.0e-3;
+      y[l.wsPosition(2, 3)] += 0.5e-3;
+      y[l.wsRate(3, 0)] = 0.05;
+      Eigen::VectorXd yd(ode.size());
+      ASSERT_EQ(ode.rhs(5.0, y.data(), yd.data()), 0) << ode.lastError();  // sizes the workspaces
+      EXPECT_EQ(allocationsOf50Evaluations(ode, y, c.vehicle->bodies.size()), 0)
+          << creep << " " << spin;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rbtest

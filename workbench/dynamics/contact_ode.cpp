@@ -146,6 +146,24 @@ ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
     WheelsetWork& ww = work.wheelset(w);
     ww.body = layout_.wheelset(w);
     ww.height = vehicle.bodies[ww.body].height;
+    if (contact.elastic) {
+      // The search's candidate lists hold at most one entry per wheel sample: reserved here, the
+      // evaluations never allocate (their number of candidates changes from one to the next).
+      for (std::size_t side = 0; side < 2; ++side) {
+        const contact::ElasticContactSearch& search = contact.elastic->search[side];
+        const profiles::Profile& wheel = *search.pair().wheel;
+        const auto n = static_cast<std::size_t>(
+            (wheel.sMax() - wheel.sMin()) / search.spec().sample_step + 3.0);
+        contact::ElasticSearchWorkspace& sw = ww.elastic[side].search;
+        sw.gap.reserve(n);
+        sw.bound.reserve(n);
+        sw.minima.reserve(n);
+        sw.depth.reserve(n);
+        sw.sw.reserve(n);
+        sw.sr.reserve(n);
+        sw.ok.reserve(n);
+      }
+    }
   }
   // The evaluation compiled for the model's creep law (the registry, creep_laws.hpp) and contact
   // method; the law's row decides, nothing else names the laws.
