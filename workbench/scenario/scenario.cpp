@@ -67,6 +67,14 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   if (const Node* c = root.field("contact")) {
     spec.guided = buildContact(*c, spec.contact, d);
     spec.has_contact = !spec.guided;
+    // The elastic method searches the profiles themselves: a table grid would be unused.
+    if (const Node* p = root.field("profiles");
+        p && !spec.guided && spec.contact.method == dynamics::ContactMethod::Elastic &&
+        spec.profiles.refined_tables)
+      if (const Node* rt = p->field("refined_tables"))
+        d.add(rt->loc,
+              "profiles.refined_tables has no effect with contact.method = \"elastic\" (the "
+              "contact search works on the profiles, there are no tables)");
   }
   if (const Node* v = root.field("vehicle")) {
     spec.has_vehicle = true;
