@@ -516,7 +516,8 @@ CLI::App* addCriticalSpeedCommand(CLI::App& app, CriticalSpeedOptions& o) {
       ->check(CLI::IsMember({"ramp", "bisection", "both"}));
   c->add_option("--criterion", o.criterion, "amplitude or en14363")
       ->check(CLI::IsMember({"amplitude", "en14363"}));
-  c->add_option("--contact", o.contact, "contact method kec or lut (default: the scenario's)");
+  c->add_option("--contact", o.contact,
+                "contact method kec, lut or elastic (default: the scenario's)");
   c->add_flag("--no-plots", o.no_plots, "no figures");
   c->add_option("--from", o.from,
                 "start speed [m/s], (0, 200] (default: the scene's speed, then x1.2 until "
