@@ -142,7 +142,8 @@ std::vector<stress::Setting> settings(const StressOptions& o, const scenario::Sc
                     : std::vector<std::string>{"rk4:1e-3", "abm:1e-3", "dopri5:1e-6", "bdf:1e-6"};
   std::vector<stress::Setting> out;
   for (const auto& g : given)
-    out.push_back(stress::parseSetting(g, spec.has_contact, "--integrators", spec.solver.max_step));
+    out.push_back(stress::parseSetting(g, stress::hasNormalForceCoupling(spec), "--integrators",
+                                       spec.solver.max_step));
   return out;
 }
 
@@ -273,7 +274,8 @@ int runStress(const StressOptions& o) {
   if (plan.cases.empty()) throw InputError({"--axes", 0}, "no axis applies to " + o.scenario);
   const auto runs = settings(o, spec);
   const stress::Setting reference =
-      stress::parseSetting(o.reference, spec.has_contact, "--reference", spec.solver.max_step);
+      stress::parseSetting(o.reference, stress::hasNormalForceCoupling(spec), "--reference",
+                           spec.solver.max_step);
   // The run's length as the cases run it; every setting brings its own integrator, so the check
   // runs an adaptive one (the scenario's own fixed step must not refuse it).
   std::vector<std::string> adaptive = common;

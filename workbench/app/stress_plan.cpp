@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "workbench/core/error.hpp"
+#include "workbench/dynamics/names.hpp"
 
 namespace rb::app::stress {
 
@@ -52,14 +53,16 @@ std::string lutNote(const ScenarioSpec& s) {
   if (!s.has_contact) return contactNote(s);
   return s.contact.method == dynamics::ContactMethod::Lut
              ? ""
-             : "the contact method is KEC (the Hertz flange stiffness belongs to the LUT)";
+             : "the contact method is " + std::string(nameOf(s.contact.method)) +
+                   " (the Hertz flange stiffness belongs to the LUT)";
 }
 
 std::string kecNote(const ScenarioSpec& s) {
   if (!s.has_contact) return contactNote(s);
   return s.contact.method == dynamics::ContactMethod::Kec
              ? ""
-             : "the contact method is LUT (the transition lengths dhat, dbar belong to the KEC)";
+             : "the contact method is " + std::string(nameOf(s.contact.method)) +
+                   " (the transition lengths dhat, dbar belong to the KEC)";
 }
 
 std::string speedNote(const ScenarioSpec& s) {
@@ -269,6 +272,10 @@ Setting parseSetting(const std::string& text, bool hasContact, const std::string
                           (paper && !implicit ? "lagged" : "consistent"));
   if (paper) s.label += " paper";
   return s;
+}
+
+bool hasNormalForceCoupling(const ScenarioSpec& spec) {
+  return spec.has_contact && spec.contact.method != dynamics::ContactMethod::Elastic;
 }
 
 std::vector<std::string> shortenRun(const ScenarioSpec& spec, double seconds) {

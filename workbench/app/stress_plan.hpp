@@ -50,6 +50,9 @@ Plan planAxes(const scenario::ScenarioSpec& spec, const PlanRequest& request);
 // maximum step of 1 ms (section 5.4), or the scenario's `maxStep` when smaller: without it a
 // step-size controller may step over a short excitation of a track that starts in equilibrium.
 // Throws InputError naming `option`.
+// Whether the scenario's contact method has a normal-force coupling to set (the constraint
+// methods; the elastic method's normal forces follow from the approach).
+bool hasNormalForceCoupling(const scenario::ScenarioSpec& spec);
 Setting parseSetting(const std::string& text, bool hasContact, const std::string& option,
                      double maxStep);
 
