@@ -22,7 +22,13 @@ namespace {
 
 const SourceLoc kCommandLine{"<command line>", 0};
 const std::vector<std::string> kIntegrators = {"rk4", "abm", "dopri5", "bdf", "ida"};
-const std::vector<std::string> kMethods = {"kec", "lut", "elastic"};
+// The contact methods of the registry (dynamics/contact_methods.hpp), by name.
+const std::vector<std::string> kMethods = [] {
+  std::vector<std::string> out;
+  for (const dynamics::ContactMethodInfo& i : dynamics::kContactMethodInfos)
+    out.emplace_back(i.name);
+  return out;
+}();
 
 // The ladders (cheap to expensive). Fixed steps: 2 ms is beyond the explicit stability limit of
 // the free wheelset spin's creep mode at 20 m/s (docs/contact_dynamics.md, "Time integration"),
@@ -85,10 +91,20 @@ std::vector<std::string> solverOverrides(const std::string& integrator, double v
   return s;
 }
 
+// The registry row of a model's contact method (dynamics/contact_methods.hpp).
+const dynamics::ContactMethodInfo& methodNamed(std::string_view name) {
+  for (const dynamics::ContactMethodInfo& i : dynamics::kContactMethodInfos)
+    if (i.name == name) return i;
+  return dynamics::kContactMethodInfos.front();
+}
+const dynamics::ContactMethodInfo& methodOf(const Model& m) {
+  return methodNamed(m.method);
+}
+
 // Whether the model has a normal-force coupling to set (the constraint methods; the elastic
 // method's normal forces follow from the approach).
 bool couplingApplies(const Plan& p, const Model& m) {
-  return p.contact && m.method != "elastic";
+  return p.contact && (m.method.empty() || methodOf(m).coupling);
 }
 
 std::vector<std::string> concat(std::vector<std::string> a, const std::vector<std::string>& b) {
@@ -166,11 +182,11 @@ void addModels(Plan& p, const PrecisionOptions& o, const scenario::ScenarioSpec&
     }
     p.models.push_back({upper, m, false, ov});
     if (m == o.model_reference) p.model_reference = upper;
-    if (o.refine && m != "elastic")
+    if (o.refine && methodNamed(m).table)
       p.models.push_back(
           {upper + " refined", m, true, concat(ov, {"profiles.refined_tables=true"})});
     else if (o.refine)
-      p.notes.push_back({upper, "", "--refine: the elastic method has no contact tables"});
+      p.notes.push_back({upper, "", "--refine: the " + m + " method has no contact tables"});
   }
   if (p.models.empty())
     throw InputError(kCommandLine, "--methods: the scenario accepts none of the contact methods");
@@ -185,7 +201,7 @@ bool addReferences(Plan& p, const PrecisionOptions& o, const Model& m,
                tables.end());
   // A guided vehicle has no contact tables to refine (and no profiles{} block to set), nor has
   // the elastic method (its reference is its own model; no table error).
-  const bool has_tables = p.contact && m.method != "elastic";
+  const bool has_tables = p.contact && methodOf(m).table;
   const bool coupling = couplingApplies(p, m);
   const std::vector<std::string> refined =
       has_tables ? concat(tables, {"profiles.refined_tables=true"}) : tables;
@@ -516,7 +532,7 @@ std::string planCsv(const Plan& plan) {
     for (const auto& m : plan.models)
       if (m.name == r.model) method = m.method;
     s << "reference," << r.c.id << "," << r.role << "," << csvField(r.model) << "," << method << ","
-      << (method == "elastic" ? "none" : (refined ? "refined" : "default")) << ","
+      << (!methodNamed(method).table ? "none" : (refined ? "refined" : "default")) << ","
       << r.integrator << ",tol," << r.value << ","
       << csvField(r.c.label) << ",planned,\n";
   }
@@ -526,7 +542,7 @@ std::string planCsv(const Plan& plan) {
       if (m.name == l.model) method = m.method;
     for (const auto& r : l.rungs)
       s << "cases," << r.c.id << "," << kRoleCase << "," << csvField(l.model) << "," << method
-        << "," << (method == "elastic" ? "none" : tablesOf(l.model)) << "," << l.integrator << "," << (l.fixed ? "step" : "tol")
+        << "," << (!methodNamed(method).table ? "none" : tablesOf(l.model)) << "," << l.integrator << "," << (l.fixed ? "step" : "tol")
         << "," << r.value << "," << csvField(r.c.label) << "," << r.status << ","
         << csvField(r.note) << "\n";
   }

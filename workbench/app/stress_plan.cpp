@@ -275,7 +275,7 @@ Setting parseSetting(const std::string& text, bool hasContact, const std::string
 }
 
 bool hasNormalForceCoupling(const ScenarioSpec& spec) {
-  return spec.has_contact && spec.contact.method != dynamics::ContactMethod::Elastic;
+  return spec.has_contact && dynamics::methodInfo(spec.contact.method).coupling;
 }
 
 std::vector<std::string> shortenRun(const ScenarioSpec& spec, double seconds) {

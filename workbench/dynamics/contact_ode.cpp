@@ -5,6 +5,7 @@
 
 #include "workbench/dynamics/contact_coupling.hpp"
 #include "workbench/dynamics/contact_elastic.hpp"
+#include "workbench/dynamics/contact_methods.hpp"
 #include "workbench/dynamics/contact_patches.hpp"
 #include "workbench/dynamics/contact_stages.hpp"
 #include "workbench/dynamics/contact_workspace.hpp"
@@ -110,11 +111,7 @@ int wheelsetStages(const ContactModels& models, const StageInput& in, int w, dou
 vehicle::VehicleLayout contactLayout(const vehicle::VehicleModel& m, WheelsetSpin spin,
                                      ContactMethod method) {
   const bool prescribed = spin == WheelsetSpin::Prescribed;
-  if (method == ContactMethod::Elastic)
-    return vehicle::vehicleLayout(m, prescribed ? vehicle::kElasticPrescribedSpinDof
-                                                : vehicle::kElasticFreeSpinDof);
-  return vehicle::vehicleLayout(
-      m, prescribed ? vehicle::kPrescribedSpinDof : vehicle::kFreeSpinDof);
+  return vehicle::vehicleLayout(m, methodInfo(method).wheelset_dof[prescribed ? 1 : 0]);
 }
 
 ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
@@ -165,23 +162,22 @@ ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
       }
     }
   }
-  // The evaluation compiled for the model's creep law (the registry, creep_laws.hpp) and contact
-  // method; the law's row decides, nothing else names the laws.
-  const auto choose = [&]<class... Laws>(LawList<Laws...>) {
-    const auto pick = [&]<class Law>() {
-      switch (contact.method) {
-        case ContactMethod::Kec: eval_ = &ContactVehicleOde::evaluateT<ContactMethod::Kec, Law>; break;
-        case ContactMethod::Lut: eval_ = &ContactVehicleOde::evaluateT<ContactMethod::Lut, Law>; break;
-        case ContactMethod::Elastic:
-          eval_ = &ContactVehicleOde::evaluateT<ContactMethod::Elastic, Law>;
-          break;
-      }
-      return true;
+  // The evaluation compiled for the model's contact method and creep law (the registries,
+  // contact_methods.hpp and creep_laws.hpp); their rows decide, nothing else names them.
+  const auto choose = [&]<class... Methods, class... Laws>(MethodList<Methods...>,
+                                                           LawList<Laws...>) {
+    const auto pickLaw = [&]<class Method>() {
+      const auto pick = [&]<class Law>() {
+        eval_ = &ContactVehicleOde::evaluateT<Method::kMethod, Law>;
+        return true;
+      };
+      return ((contact.creep == Laws::kModel && pick.template operator()<Laws>()) || ...);
     };
-    ((contact.creep == Laws::kModel && pick.template operator()<Laws>()) || ...);
+    ((contact.method == Methods::kMethod && pickLaw.template operator()<Methods>()) || ...);
   };
-  choose(CreepLaws{});
-  RB_CHECK(eval_ != nullptr, "ContactVehicleOde: the creep law is not in the registry");
+  choose(ContactMethods{}, CreepLaws{});
+  RB_CHECK(eval_ != nullptr,
+           "ContactVehicleOde: the contact method or creep law is not in its registry");
 }
 
 ContactVehicleOde::~ContactVehicleOde() = default;

@@ -5,18 +5,14 @@
 
 #include "workbench/core/names.hpp"
 #include "workbench/creep/fastsim.hpp"
+#include "workbench/dynamics/contact_methods.hpp"
 #include "workbench/dynamics/creep_laws.hpp"
 #include "workbench/dynamics/spec.hpp"
 
 namespace rb::dynamics {
 
-inline constexpr std::array<NameEntry<ContactMethod>, 3> kContactMethodNames = {{
-    {ContactMethod::Kec, "kec", "knife-edge equivalent contact (paper section 2.4)"},
-    {ContactMethod::Lut, "lut", "contact lookup table with Hertz flange contact (Eq. 20)"},
-    {ContactMethod::Elastic, "elastic",
-     "elastic multi-point contact: online search on the profiles, Hertz per patch, the wheelset "
-     "free to lift and climb (docs/elastic_contact.md)"},
-}};
+// From the registry of contact methods (contact_methods.hpp): one entry per method.
+inline constexpr auto kContactMethodNames = contactMethodNames(ContactMethods{});
 constexpr const auto& nameTable(ContactMethod /*tag*/) {
   return kContactMethodNames;
 }

@@ -16,16 +16,15 @@ void addCount(std::vector<EffectUse>& out, Effect e, std::size_t n) {
 
 // Effects of the wheel/rail contact model (nothing for guided wheelsets).
 void contactEffects(const dynamics::ContactModel& c, std::vector<EffectUse>& out) {
-  const bool kec = c.method == dynamics::ContactMethod::Kec;
-  const bool elastic = c.method == dynamics::ContactMethod::Elastic;
+  const dynamics::ContactMethodInfo& method = dynamics::methodInfo(c.method);
   out.push_back({Effect::WheelRailContact, std::string(nameOf(c.method))});
   if (c.creep != dynamics::CreepModel::None) {
     out.push_back({Effect::CreepLaw, std::string(nameOf(c.creep))});
     // The elastic method's normal forces come from the approach: nothing to couple.
-    if (!elastic)
+    if (method.coupling)
       out.push_back({Effect::NormalForceCoupling, std::string(nameOf(c.coupling))});
   }
-  out.push_back({Effect::FlangeContact, kec ? "kec_band" : (elastic ? "multi_point" : "hertz")});
+  out.push_back({Effect::FlangeContact, std::string(method.flange_contact)});
   out.push_back({Effect::WheelsetSpin, std::string(nameOf(c.spin))});
 }
 

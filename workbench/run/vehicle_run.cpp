@@ -108,13 +108,6 @@ constexpr std::pair<const char*, const char*> kPatchQ[] = {{"active", "-"},
                                                            {"power", "W"}};
 constexpr std::size_t kNp = std::size(kPatchQ);
 constexpr std::size_t kWheelValues = kNq + 2 * kNp;  // values per wheel and output time
-// What patch 0 and 1 are, [KEC, LUT, elastic][patch].
-constexpr const char* kPatchRole[3][2] = {
-    {"KEC contact point, or point A in the band", "KEC point B (flange-side end of the band)"},
-    {"LUT tread", "LUT flange (Hertz)"},
-    {"elastic: the tread patch with the largest normal force",
-     "elastic: the flange patch with the largest normal force"}};
-
 // The conventions of the track-frame forces (dynamics::TrackForces) and of the patches.
 void writeContactConventions(io::ResultFile& f, dynamics::ContactMethod method) {
   f.attr("/contact", "force_frame",
@@ -140,18 +133,8 @@ void writeContactConventions(io::ResultFile& f, dynamics::ContactMethod method) 
   f.attr("/contact", "t_gamma",
          std::string("T gamma = |fx sx| + |fy sy| + |mz spin| [N] (mz from the laws that give a "
                      "spin moment, kalker and fastsim; 0 with polach); power = T gamma V [W]"));
-  const char* patches =
-      method == dynamics::ContactMethod::Kec
-          ? "KEC: patch0 = the contact point, or inside a regularised tread-flange band point A "
-            "(field-side end, weight 1 - w); patch1 = point B (flange-side end, weight w), active "
-            "only inside the band (Eq. 26)"
-      : method == dynamics::ContactMethod::Lut
-          ? "LUT: patch0 = the tread contact (Eq. 17); patch1 = the Hertz flange contact (Eq. "
-            "20-21), active while the flange indentation is positive"
-          : "elastic: every penetrating minimum of the wheel-rail gap is a patch (contact_count "
-            "per wheel); patch0 = the tread patch with the largest normal force, patch1 = the "
-            "flange patch with the largest normal force; the wheel's totals sum every patch";
-  f.attr("/contact", "patches", std::string(patches));
+  // What patch 0 and 1 are: the method's row of the registry (dynamics/contact_methods.hpp).
+  f.attr("/contact", "patches", std::string(dynamics::methodInfo(method).patches));
 }
 
 std::string num(double v) {
@@ -210,9 +193,7 @@ void addVehicleChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
 void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputChannel>& outputs) {
   const auto& v = *m.vehicle;
   const auto& cm = *m.contact;
-  const std::size_t role = cm.method == dynamics::ContactMethod::Kec   ? 0
-                           : cm.method == dynamics::ContactMethod::Lut ? 1
-                                                                       : 2;
+  const dynamics::ContactMethodInfo& info = dynamics::methodInfo(cm.method);
   for (int w : cm.wheelsets)
     for (const char* side : {"left", "right"}) {
       const std::string base = "/contact/" + v.bodies[w].name + "/" + side + "/";
@@ -220,7 +201,7 @@ void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
       if (!m.spec.run.output_patches) continue;
       for (int p = 0; p < 2; ++p) {
         const std::string patch = base + "patch" + std::to_string(p);
-        f.attr(patch, "role", std::string(kPatchRole[role][p]));
+        f.attr(patch, "role", std::string(info.patch_role[static_cast<std::size_t>(p)]));
         for (const auto& [q, u] : kPatchQ) outputs.push_back({patch + "/" + q, u});
       }
     }
