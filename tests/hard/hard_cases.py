@@ -14,7 +14,8 @@ through the real command line and checks every result:
   the case's bounds;
 * combinations marked expect="ok" must finish (the reference of each case: the test can fail);
   combinations marked expect="lift" must stop with the wheel-lift diagnostic (the model leaves
-  its validity there: a constraint contact cannot lift a wheel, so the run may not go on).
+  its validity there: a constraint contact cannot lift a wheel, so the run may not go on);
+  expect="derail" (elastic contact) must stop with the derailment diagnostic (exit 2).
 
 Per combination it records ok/failed, the failure reason, CPU time, evaluations and steps, and
 the git commit of the tree it ran (`commit`: abc1234 or abc1234+dirty, `run_date`) in
@@ -126,6 +127,17 @@ CASES = {
             combo(elastic(adaptive("bdf", 1e-6))),
         ],
         "flange_contact": True,
+    },
+    # A derailment (elastic contact): every integrator must stop with the derailment of the
+    # outer wheel (exit 2, the wheel, time and distance named).
+    "elastic_derailment": {
+        "scenario": "scenarios/hard/elastic_derailment.lua",
+        "combos": [
+            combo(elastic(fixed("abm", 1e-4)), expect="derail"),
+            combo(elastic(adaptive("dopri5", 1e-6)), expect="derail"),
+            combo(elastic(adaptive("bdf", 1e-6)), expect="derail"),
+        ],
+        "bounds": {"yq": 1e9},
     },
     "kec_short_transition": {
         "scenario": "scenarios/hard/kec_short_transition.lua",
@@ -373,6 +385,8 @@ def run_case(args):
             problems.append("expected to finish (reference combination), exit %s" % rc)
         if c["expect"] == "lift" and (rc != 2 or "wheel lift" not in str(row.get("message", ""))):
             problems.append("expected to stop with the wheel-lift diagnostic, exit %s" % rc)
+        if c["expect"] == "derail" and (rc != 2 or "derailment" not in str(row.get("message", ""))):
+            problems.append("expected to stop with the derailment diagnostic, exit %s" % rc)
         row["problems"] = "; ".join(x for x in problems if x)
         # The outcome in the classes of `workbench stress` (docs/stress.md; no reference here,
         # so a finished run is "ok" by its own checks).
