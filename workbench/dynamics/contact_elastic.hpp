@@ -38,6 +38,7 @@
 #include "workbench/dynamics/augmented.hpp"
 #include "workbench/dynamics/contact_coupling.hpp"
 #include "workbench/dynamics/contact_patches.hpp"
+#include "workbench/dynamics/contact_stages.hpp"
 
 namespace rb::dynamics::internal {
 

@@ -3,12 +3,8 @@
 #include <limits>
 #include <sstream>
 
-#include "workbench/dynamics/contact_coupling.hpp"
-#include "workbench/dynamics/contact_elastic.hpp"
+#include "workbench/dynamics/contact_evaluate.hpp"
 #include "workbench/dynamics/contact_methods.hpp"
-#include "workbench/dynamics/contact_patches.hpp"
-#include "workbench/dynamics/contact_stages.hpp"
-#include "workbench/dynamics/contact_workspace.hpp"
 #include "workbench/vehicle/equilibrium.hpp"
 
 namespace rb::dynamics {
@@ -20,93 +16,6 @@ using internal::StageInput;
 using internal::Vec7;
 using internal::WheelsetWork;
 
-namespace {
-
-// Wheel lift: the constraint normal force of a wheel (KEC: both patches, which share the wheel's
-// lambda, Eq. 26; LUT: the tread patch, the Hertz flange force being applied) below the threshold
-// means the constraint pulls the wheel onto the rail, which no wheel/rail pair can do. The state
-// is refused as recoverable: an adaptive method retries a smaller step, so an overshooting trial
-// step is not taken for a lift, while a real lift stops the run here. Output evaluations only
-// report it (lift = true).
-// Always inlined, as wheelPointForce (contact_patches.hpp): independent of the number of laws.
-template <ContactMethod kMethod>
-[[gnu::always_inline]] inline int checkWheelLift(const ContactModels& models, const StageInput& in,
-                                                 const WheelsetWork& ww, ContactWorkspace& work,
-                                                 bool& lift) {
-  constexpr int kConstraintPatches = kMethod == ContactMethod::Kec ? 2 : 1;
-  for (int s = 0; s < 2; ++s) {
-    double qn = 0.0;
-    bool any = false;
-    for (int p = 0; p < kConstraintPatches; ++p) {
-      const internal::Patch& patch = ww.patch[s][p];
-      if (!patch.active) continue;
-      any = true;
-      qn += patch.normalAt(ww.lambda);
-    }
-    if (!any || qn >= models.contact.min_normal_force) continue;
-    lift = true;
-    if (in.mode != EvalMode::Output) return internal::refuseWheelLift(models, in, ww, s, qn, work);
-  }
-  return 0;
-}
-
-// Track-frame lateral position of the contact point of every active patch of wheelset w: the
-// wheel material point u = (0, sigma Lw + s_w, -r) of the wheelset intermediate frame (Eq. 7, 10;
-// as setupPatch places it), turned by the wheelset's roll and yaw, plus its lateral displacement.
-void contactPositions(const ContactModels& models, const WheelsetWork& ww, int w,
-                      ContactWorkspace& work) {
-  const Eigen::Matrix3d& A = work.bodies.kin[ww.body].attach.A;
-  const double y = work.bodies.q[ww.body][vehicle::kY];
-  const double lw = models.contact.geometry.wheel_lw;
-  for (int s = 0; s < 2; ++s) {
-    const double sigma = contact::kSideSign[s];
-    WheelOutput& wo = work.wheels[2 * static_cast<std::size_t>(w) + static_cast<std::size_t>(s)];
-    wo.wheel_lift = internal::wheelLift(models.contact, work.bodies.q[ww.body], ww.height,
-                                        internal::railOffset(ww.irr, s), sigma);
-    for (PatchOutput& po : wo.patch) {
-      if (!po.active) continue;
-      const Eigen::Vector3d u(0.0, sigma * lw + po.s_w, -po.radius);
-      po.y = y + A.row(1).dot(u);
-    }
-  }
-}
-
-// Stages 5-8 (contact_stages.hpp) of wheelset w: patches, augmented system, normal/tangential
-// coupling, checks, rates and outputs. A timed evaluation passes its clock.
-template <ContactMethod kMethod, class Law>
-int wheelsetStages(const ContactModels& models, const StageInput& in, int w, double* ydot,
-                   ContactWorkspace& work, bool& lift, vehicle::StageClock* clock) {
-  using vehicle::Stage;
-  if constexpr (kMethod == ContactMethod::Elastic) {
-    (void)lift;  // the elastic method lifts wheels physically (checkDerailment)
-    return internal::elasticWheelsetStages<Law>(models, in, w, ydot, work, clock);
-  } else {
-    WheelsetWork& ww = work.wheelset(w);
-    if (const int rc = internal::contactPatches<kMethod, Law>(models, in, ww, work); rc != 0)
-      return rc;
-    internal::classifyRegimes(ww);
-    if (clock) clock->mark(Stage::ContactPatches);
-    internal::AugmentedSystem system;
-    if (const int rc = internal::augmentedSystem(models, in, ww, work, system); rc != 0) return rc;
-    if (clock) clock->mark(Stage::Augmented);
-    Vec7 x;
-    if (const int rc = internal::coupleNormalAndTangential<Law>(models, in, system, ww, work, x);
-        rc != 0)
-      return rc;
-    if (clock) clock->mark(Stage::Coupling);
-    if (const int rc = internal::checkSolution(models, in, ww, x, work); rc != 0) return rc;
-    internal::writeWheelsetRates(models.layout, w, in.y, x, ydot);
-    if (const int rc = checkWheelLift<kMethod>(models, in, ww, work, lift); rc != 0) return rc;
-    if (in.mode == EvalMode::Output) {
-      internal::wheelsetOutputs(in, w, ww, x, Law::kCreep, kMethod == ContactMethod::Lut, work);
-      contactPositions(models, ww, w, work);
-    }
-    if (clock) clock->mark(Stage::Checks);
-    return 0;
-  }
-}
-
-}  // namespace
 
 vehicle::VehicleLayout contactLayout(const vehicle::VehicleModel& m, WheelsetSpin spin,
                                      ContactMethod method) {
@@ -164,14 +73,20 @@ ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
   }
   // The evaluation compiled for the model's contact method and creep law (the registries,
   // contact_methods.hpp and creep_laws.hpp); their rows decide, nothing else names them.
+  // The elastic method's evaluations live in contact_ode_elastic.cpp (contact_evaluate.hpp).
   const auto choose = [&]<class... Methods, class... Laws>(MethodList<Methods...>,
                                                            LawList<Laws...>) {
     const auto pickLaw = [&]<class Method>() {
-      const auto pick = [&]<class Law>() {
-        eval_ = &ContactVehicleOde::evaluateT<Method::kMethod, Law>;
+      if constexpr (Method::kMethod == ContactMethod::Elastic) {
+        eval_ = elasticEvaluation(contact.creep);
         return true;
-      };
-      return ((contact.creep == Laws::kModel && pick.template operator()<Laws>()) || ...);
+      } else {
+        const auto pick = [&]<class Law>() {
+          eval_ = &ContactVehicleOde::evaluateT<Method::kMethod, Law>;
+          return true;
+        };
+        return ((contact.creep == Laws::kModel && pick.template operator()<Laws>()) || ...);
+      }
     };
     ((contact.method == Methods::kMethod && pickLaw.template operator()<Methods>()) || ...);
   };
@@ -202,39 +117,6 @@ int ContactVehicleOde::rhs(double t, const double* y, double* ydot) {
 
 int ContactVehicleOde::evaluate(double t, const double* y, double* ydot, EvalMode mode) {
   return (this->*eval_)(t, y, ydot, mode);
-}
-
-// ---- The evaluation ----------------------------------------------------------------------------
-
-template <ContactMethod kMethod, class Law>
-int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, EvalMode mode) {
-  using vehicle::Stage;
-  ContactWorkspace& work = *work_;
-  ++work.stats.evaluations;
-  // Only the integrator's evaluations are timed: outputs belong to the observer's share.
-  vehicle::StageClock* clock = mode == EvalMode::Rhs && stages_.start() ? &stages_ : nullptr;
-  const ContactModels models{*model_, *contact_, layout_, irr_};
-  const StageInput in{t, y, model_->speedAt(t), model_->acceleration, mode};
-  if (const int rc = internal::setIndependentCoordinates(models, in, work); rc != 0) return rc;
-  if (clock) clock->mark(Stage::Coordinates);
-  if (const int rc = internal::solveConstraints(models, in, work); rc != 0) return rc;
-  if (clock) clock->mark(Stage::Constraints);
-  internal::evaluateVehicleForces(models, in, work);
-  if (clock) clock->mark(Stage::VehicleForces);
-  if (const int rc = internal::freeBodyAccelerations(models, in, ydot, work); rc != 0) return rc;
-  if (clock) clock->mark(Stage::FreeBodies);
-  bool lift = false;
-  for (int w = 0; w < layout_.n_ws; ++w)
-    if (const int rc = wheelsetStages<kMethod, Law>(models, in, w, ydot, work, lift, clock);
-        rc != 0)
-      return rc;
-  if (lift) ++work.stats.lift_evaluations;
-  internal::writeSeriesRates(layout_, work, ydot);
-  if (clock) {
-    clock->mark(Stage::SeriesRates);
-    clock->finish();
-  }
-  return 0;
 }
 
 int ContactVehicleOde::setCoordinates(double t, const double* y) {

@@ -195,6 +195,8 @@ class ContactVehicleOde final : public vehicle::VehicleOde {
   template <ContactMethod kMethod, class Law>
   int evaluateT(double t, const double* y, double* ydot, internal::EvalMode mode);
   using EvalFn = int (ContactVehicleOde::*)(double, const double*, double*, internal::EvalMode);
+  // The elastic method's evaluation for a creep law (contact_ode_elastic.cpp).
+  static EvalFn elasticEvaluation(CreepModel creep);
 
   const ContactModel* contact_;
   const track::Irregularities* irr_ = nullptr;
