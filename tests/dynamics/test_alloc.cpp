@@ -81,16 +81,15 @@ TEST(Allocation, PrescribedSpinAndRampAllocateNothing) {
   }
 }
 
-
 // The elastic method (every creep law, free and prescribed spin) with ws1 on its flange (two-point
 // contact) and ws3 lifted: the searches and patches of every evaluation allocate nothing once the
 // first evaluation has sized the search workspaces (each wheel keeps its own).
 TEST(Allocation, ElasticRhsAndOutputsAllocateNothing) {
   for (const char* creep : {"polach", "fastsim", "none"}) {
     for (const char* spin : {"free", "prescribed"}) {
-      Compiled c = compileScenario("scenarios/validation/case3_elastic.lua",
-                                   {std::string("contact.creep=") + creep,
-                                    std::string("contact.wheelset_spin=") + spin});
+      Compiled c = compileScenario(
+          "scenarios/validation/case3_elastic.lua",
+          {std::string("contact.creep=") + creep, std::string("contact.wheelset_spin=") + spin});
       dynamics::ContactVehicleOde ode(*c.vehicle, *c.contact, *c.track);
       Eigen::VectorXd y = ode.initialState(0.0);
       const auto& l = ode.layout();

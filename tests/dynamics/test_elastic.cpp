@@ -144,8 +144,7 @@ struct Climb {
 // the flange's first impact) against Nadal's limit for the largest contact angle it reached.
 Climb climb(double psi) {
   const double speed = 10.0, rate = 80e3;
-  const Compiled c =
-      compileSpecs(tangentTrack(200), loadedWheelset(speed, 100e3), elasticSpec());
+  const Compiled c = compileSpecs(tangentTrack(200), loadedWheelset(speed, 100e3), elasticSpec());
   dynamics::ContactVehicleOde ode(*c.vehicle, *c.contact, *c.track);
   Eigen::VectorXd y0 = ode.initialState(0.0);
   y0[ode.layout().wsPosition(0, 2)] = psi;
@@ -167,11 +166,11 @@ Climb climb(double psi) {
         return true;
       });
   out.nadal = nadal(out.gamma_max, c.spec.contact.mu);
-  std::printf("[ climb    ] angle of attack %.0f mrad: max Y/Q %.3f at t = %.3f s (F = %.1f kN); "
-              "gamma_max %.1f deg, Nadal %.3f (ratio %.3f)\n  %s\n",
-              psi * 1e3, out.max_yq, out.t_max, rate * out.t_max / 1e3,
-              out.gamma_max * 180 / M_PI, out.nadal, out.max_yq / out.nadal,
-              out.result.message.c_str());
+  std::printf(
+      "[ climb    ] angle of attack %.0f mrad: max Y/Q %.3f at t = %.3f s (F = %.1f kN); "
+      "gamma_max %.1f deg, Nadal %.3f (ratio %.3f)\n  %s\n",
+      psi * 1e3, out.max_yq, out.t_max, rate * out.t_max / 1e3, out.gamma_max * 180 / M_PI,
+      out.nadal, out.max_yq / out.nadal, out.result.message.c_str());
   return out;
 }
 
@@ -214,9 +213,8 @@ TEST(Elastic, ALiftedWheelsetFallsAndLands) {
   EXPECT_NEAR(tr.y.back()[ode.layout().wsPosition(0, 3)], z0, 5e-6);
 }
 
-
 struct SteadyCurving {
-  double y = 0.0, yaw = 0.0;          // [mm], [mrad] wheelset
+  double y = 0.0, yaw = 0.0;            // [mm], [mrad] wheelset
   double Q[2] = {0, 0}, Y[2] = {0, 0};  // [kN] left, right wheel
   double cpu = 0.0;
   long evaluations = 0;
@@ -252,9 +250,10 @@ SteadyCurving steadyCase1(const std::string& method) {
   }
   s.cpu = tr.result.stats.cpu_time_s;
   s.evaluations = tr.result.stats.rhs_evals;
-  std::printf("[ steady   ] %-7s y %7.3f mm  yaw %7.3f mrad  Q %6.2f / %6.2f kN  Y %6.2f / %6.2f kN"
-              "  (%.2f s CPU, %ld evaluations)\n",
-              method.c_str(), s.y, s.yaw, s.Q[0], s.Q[1], s.Y[0], s.Y[1], s.cpu, s.evaluations);
+  std::printf(
+      "[ steady   ] %-7s y %7.3f mm  yaw %7.3f mrad  Q %6.2f / %6.2f kN  Y %6.2f / %6.2f kN"
+      "  (%.2f s CPU, %ld evaluations)\n",
+      method.c_str(), s.y, s.yaw, s.Q[0], s.Q[1], s.Y[0], s.Y[1], s.cpu, s.evaluations);
   return s;
 }
 

@@ -198,7 +198,8 @@ CLI::App* addModesCommand(CLI::App& app, ModesOptions& o) {
       app, "modes", "linearised stability: modes, damping versus speed, linear critical speed", o);
   c->add_option("--speeds", o.speeds,
                 "speeds a:b:n [m/s]: 0 < a <= b <= 200, n <= 200 (default: the scenario's speed)");
-  c->add_option("--contact", o.contact, "contact method kec, lut or elastic (default: the scenario's)");
+  c->add_option("--contact", o.contact,
+                "contact method kec, lut or elastic (default: the scenario's)");
   c->add_flag("--no-plots", o.no_plots, "no figures");
   c->add_option("--distance", o.distance,
                 "travelled distance [m] of the linearisation point, on the track (default 0: the "

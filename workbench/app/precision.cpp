@@ -230,9 +230,10 @@ CLI::App* addPrecisionCommand(CLI::App& app, PrecisionOptions& o) {
   c->add_flag("--refine", o.refine, "also run the matrix on the refined contact tables");
   c->add_flag("--callgrind", o.callgrind,
               "count the instructions of the recommended settings under valgrind's callgrind");
-  for (const char* name : {"--methods", "--model-reference", "--integrators", "--steps", "--tolerances", "--quantities",
-                           "--levels", "--repeats", "--distance", "--duration", "--budget",
-                           "--reference-methods", "--reference-tol", "--reference-limit", "--jobs"})
+  for (const char* name :
+       {"--methods", "--model-reference", "--integrators", "--steps", "--tolerances",
+        "--quantities", "--levels", "--repeats", "--distance", "--duration", "--budget",
+        "--reference-methods", "--reference-tol", "--reference-limit", "--jobs"})
     c->get_option(name)->each(markGiven(o, name));
   return c;
 }

@@ -527,9 +527,9 @@ void printAnswer(const Answer& a, std::ostream& out) {
         << (r.verified ? std::string("verified") : "UNVERIFIED (" + r.why + ")") << "; bound "
         << (r.bound.front().have ? fmt(r.bound.front().max) : "?") << " " << q.unit
         << "; table error "
-        << (r.model == "elastic" ? std::string("none (no tables)")
-                                 : (r.table.front().have ? fmt(r.table.front().max) : "?") + " " +
-                                       q.unit);
+        << (r.model == "elastic"
+                ? std::string("none (no tables)")
+                : (r.table.front().have ? fmt(r.table.front().max) : "?") + " " + q.unit);
     if (!r.model_error.empty()) {
       // Every quantity: the model error is the answer's point, not only the first quantity.
       out << "; model error against " << a.model_reference << ":";

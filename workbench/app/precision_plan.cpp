@@ -11,8 +11,8 @@
 #include "workbench/app/option_checks.hpp"
 #include "workbench/app/precision_answer.hpp"
 #include "workbench/core/error.hpp"
-#include "workbench/dynamics/names.hpp"
 #include "workbench/core/strings.hpp"
+#include "workbench/dynamics/names.hpp"
 #include "workbench/scenario/scenario.hpp"
 
 namespace fs = std::filesystem;
@@ -154,8 +154,9 @@ std::vector<std::string> chosen(const std::string& text, const std::string& opti
 void addModels(Plan& p, const PrecisionOptions& o, const scenario::ScenarioSpec& spec) {
   if (!p.contact) {
     if (!o.methods.empty() || !o.model_reference.empty())
-      throw InputError(kCommandLine, std::string(o.methods.empty() ? "--model-reference" : "--methods") +
-                                         ": the scenario has no wheel/rail contact (guided vehicle)");
+      throw InputError(kCommandLine,
+                       std::string(o.methods.empty() ? "--model-reference" : "--methods") +
+                           ": the scenario has no wheel/rail contact (guided vehicle)");
     p.models.push_back({"guided", "", false, {}});
     return;
   }
@@ -301,9 +302,8 @@ void addLadders(Plan& p, const PrecisionOptions& o, const Model& m,
     // Cheap to expensive: large steps and loose tolerances first.
     std::sort(values.begin(), values.end(), std::greater<>());
     values.erase(std::unique(values.begin(), values.end()), values.end());
-    const auto first =
-        concat(m.overrides,
-               solverOverrides(integ, values.front(), values.front(), couplingApplies(p, m)));
+    const auto first = concat(
+        m.overrides, solverOverrides(integ, values.front(), values.front(), couplingApplies(p, m)));
     if (const std::string why = refusal(p, o, first); !why.empty()) {
       p.notes.push_back({m.name, integ, "left out: the scenario refuses it: " + why});
       continue;
@@ -533,8 +533,7 @@ std::string planCsv(const Plan& plan) {
       if (m.name == r.model) method = m.method;
     s << "reference," << r.c.id << "," << r.role << "," << csvField(r.model) << "," << method << ","
       << (!methodNamed(method).table ? "none" : (refined ? "refined" : "default")) << ","
-      << r.integrator << ",tol," << r.value << ","
-      << csvField(r.c.label) << ",planned,\n";
+      << r.integrator << ",tol," << r.value << "," << csvField(r.c.label) << ",planned,\n";
   }
   for (const auto& l : plan.ladders) {
     std::string method;
@@ -542,9 +541,9 @@ std::string planCsv(const Plan& plan) {
       if (m.name == l.model) method = m.method;
     for (const auto& r : l.rungs)
       s << "cases," << r.c.id << "," << kRoleCase << "," << csvField(l.model) << "," << method
-        << "," << (!methodNamed(method).table ? "none" : tablesOf(l.model)) << "," << l.integrator << "," << (l.fixed ? "step" : "tol")
-        << "," << r.value << "," << csvField(r.c.label) << "," << r.status << ","
-        << csvField(r.note) << "\n";
+        << "," << (!methodNamed(method).table ? "none" : tablesOf(l.model)) << "," << l.integrator
+        << "," << (l.fixed ? "step" : "tol") << "," << r.value << "," << csvField(r.c.label) << ","
+        << r.status << "," << csvField(r.note) << "\n";
   }
   for (const auto& n : plan.notes)
     s << ",,note," << csvField(n.model) << ",,," << n.integrator << ",,,,left out,"

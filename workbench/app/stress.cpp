@@ -273,9 +273,8 @@ int runStress(const StressOptions& o) {
   for (const auto& n : plan.notes) std::cout << "stress: " << n << "\n";
   if (plan.cases.empty()) throw InputError({"--axes", 0}, "no axis applies to " + o.scenario);
   const auto runs = settings(o, spec);
-  const stress::Setting reference =
-      stress::parseSetting(o.reference, stress::hasNormalForceCoupling(spec), "--reference",
-                           spec.solver.max_step);
+  const stress::Setting reference = stress::parseSetting(
+      o.reference, stress::hasNormalForceCoupling(spec), "--reference", spec.solver.max_step);
   // The run's length as the cases run it; every setting brings its own integrator, so the check
   // runs an adaptive one (the scenario's own fixed step must not refuse it).
   std::vector<std::string> adaptive = common;

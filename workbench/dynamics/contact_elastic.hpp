@@ -155,8 +155,8 @@ inline int checkDerailment(const ContactModels& models, const StageInput& in,
        << std::abs(lift) * 1e3 << " mm " << (lift > 0.0 ? "above" : "below")
        << " its centred height over its rail (criterion contact.elastic.derailment_lift = "
        << e.derailment_lift * 1e3 << " mm) at t = " << in.t
-       << " s, s = " << work.bodies.q[ww.body][vehicle::kS] << " m (lateral position y = "
-       << work.bodies.q[ww.body][vehicle::kY] * 1e3 << " mm)";
+       << " s, s = " << work.bodies.q[ww.body][vehicle::kS]
+       << " m (lateral position y = " << work.bodies.q[ww.body][vehicle::kY] * 1e3 << " mm)";
     work.error = os.str();
     return 1;
   }
@@ -217,8 +217,8 @@ int elasticWheelsetStages(const ContactModels& models, const StageInput& in, int
   using vehicle::Stage;
   WheelsetWork& ww = work.wheelset(w);
   const vehicle::Matrix6d& mass = work.bodies.mass[ww.body];
-  Vec5 Q = work.bodies.force[ww.body].segment<5>(1) - mass.block<5, 1>(1, vehicle::kS) *
-                                                          in.acceleration;
+  Vec5 Q =
+      work.bodies.force[ww.body].segment<5>(1) - mass.block<5, 1>(1, vehicle::kS) * in.acceleration;
   elasticPatches<Law>(models, in, ww, work, Q);
   if (clock) clock->mark(Stage::ContactPatches);
   Vec5 qdd;

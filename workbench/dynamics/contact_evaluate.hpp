@@ -27,7 +27,6 @@ int elasticWheelsetStages(const ContactModels& models, const StageInput& in, int
 double wheelLiftOf(const ContactModel& c, const WheelsetWork& ww, const vehicle::Vector6d& q,
                    int side);
 
-
 // Wheel lift: the constraint normal force of a wheel (KEC: both patches, which share the wheel's
 // lambda, Eq. 26; LUT: the tread patch, the Hertz flange force being applied) below the threshold
 // means the constraint pulls the wheel onto the rail, which no wheel/rail pair can do. The state
@@ -60,7 +59,7 @@ template <ContactMethod kMethod>
 // wheel material point u = (0, sigma Lw + s_w, -r) of the wheelset intermediate frame (Eq. 7, 10;
 // as setupPatch places it), turned by the wheelset's roll and yaw, plus its lateral displacement.
 inline void contactPositions(const ContactModels& models, const WheelsetWork& ww, int w,
-                      ContactWorkspace& work) {
+                             ContactWorkspace& work) {
   const Eigen::Matrix3d& A = work.bodies.kin[ww.body].attach.A;
   const double y = work.bodies.q[ww.body][vehicle::kY];
   const double lw = models.contact.geometry.wheel_lw;
@@ -80,23 +79,21 @@ inline void contactPositions(const ContactModels& models, const WheelsetWork& ww
 // coupling, checks, rates and outputs. A timed evaluation passes its clock.
 template <ContactMethod kMethod, class Law>
 inline int wheelsetStages(const ContactModels& models, const StageInput& in, int w, double* ydot,
-                   ContactWorkspace& work, bool& lift, vehicle::StageClock* clock) {
+                          ContactWorkspace& work, bool& lift, vehicle::StageClock* clock) {
   using vehicle::Stage;
   if constexpr (kMethod == ContactMethod::Elastic) {
     (void)lift;  // the elastic method lifts wheels physically (checkDerailment)
     return elasticWheelsetStages<Law>(models, in, w, ydot, work, clock);
   } else {
     WheelsetWork& ww = work.wheelset(w);
-    if (const int rc = contactPatches<kMethod, Law>(models, in, ww, work); rc != 0)
-      return rc;
+    if (const int rc = contactPatches<kMethod, Law>(models, in, ww, work); rc != 0) return rc;
     classifyRegimes(ww);
     if (clock) clock->mark(Stage::ContactPatches);
     AugmentedSystem system;
     if (const int rc = augmentedSystem(models, in, ww, work, system); rc != 0) return rc;
     if (clock) clock->mark(Stage::Augmented);
     Vec7 x;
-    if (const int rc = coupleNormalAndTangential<Law>(models, in, system, ww, work, x);
-        rc != 0)
+    if (const int rc = coupleNormalAndTangential<Law>(models, in, system, ww, work, x); rc != 0)
       return rc;
     if (clock) clock->mark(Stage::Coupling);
     if (const int rc = checkSolution(models, in, ww, x, work); rc != 0) return rc;
@@ -138,7 +135,8 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, intern
   if (clock) clock->mark(Stage::FreeBodies);
   bool lift = false;
   for (int w = 0; w < layout_.n_ws; ++w)
-    if (const int rc = internal::wheelsetStages<kMethod, Law>(models, in, w, ydot, work, lift, clock);
+    if (const int rc =
+            internal::wheelsetStages<kMethod, Law>(models, in, w, ydot, work, lift, clock);
         rc != 0)
       return rc;
   if (lift) ++work.stats.lift_evaluations;

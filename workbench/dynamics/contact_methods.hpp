@@ -53,8 +53,7 @@ struct LutMethod {
   static constexpr bool kTable = true;
   static constexpr bool kCoupling = true;
   static constexpr std::string_view kFlangeContact = "hertz";
-  static constexpr std::array<std::string_view, 2> kPatchRole = {"LUT tread",
-                                                                 "LUT flange (Hertz)"};
+  static constexpr std::array<std::string_view, 2> kPatchRole = {"LUT tread", "LUT flange (Hertz)"};
   static constexpr std::string_view kPatches =
       "LUT: patch0 = the tread contact (Eq. 17); patch1 = the Hertz flange contact (Eq. 20-21), "
       "active while the flange indentation is positive";
@@ -101,9 +100,9 @@ struct ContactMethodInfo {
 template <class... Methods>
 constexpr std::array<ContactMethodInfo, sizeof...(Methods)> contactMethodInfos(
     MethodList<Methods...>) {
-  return {{{Methods::kMethod, Methods::kName, Methods::kWheelsetDof, Methods::kTable,
-            Methods::kCoupling, Methods::kFlangeContact, Methods::kPatchRole,
-            Methods::kPatches}...}};
+  return {
+      {{Methods::kMethod, Methods::kName, Methods::kWheelsetDof, Methods::kTable,
+        Methods::kCoupling, Methods::kFlangeContact, Methods::kPatchRole, Methods::kPatches}...}};
 }
 inline constexpr auto kContactMethodInfos = contactMethodInfos(ContactMethods{});
 

@@ -61,12 +61,12 @@ struct ElasticContactModel {
   // has the damping c = 2 zeta sqrt(k m_w) = damping * N0.
   double damping = 0.0;
   double damping_ratio = 0.0;
-  double static_load = 0.0;        // [N] nominal wheel load N0 = vehicle weight / wheels
-  double static_approach = 0.0;    // [m] Hertz approach delta0 of the centred tread at N0
-  double tread_stiffness = 0.0;    // [N/m^1.5] K_H of the centred tread contact
-  double vertical_frequency = 0.0; // [Hz] sqrt(k / m_w) / 2 pi of that wheel at N0
-  double flange_height = 0.0;      // [m] wheel radius at the flange tip minus r(s_w = 0)
-  double derailment_lift = 0.0;    // [m] a wheel risen more than this above its rail derails
+  double static_load = 0.0;         // [N] nominal wheel load N0 = vehicle weight / wheels
+  double static_approach = 0.0;     // [m] Hertz approach delta0 of the centred tread at N0
+  double tread_stiffness = 0.0;     // [N/m^1.5] K_H of the centred tread contact
+  double vertical_frequency = 0.0;  // [Hz] sqrt(k / m_w) / 2 pi of that wheel at N0
+  double flange_height = 0.0;       // [m] wheel radius at the flange tip minus r(s_w = 0)
+  double derailment_lift = 0.0;     // [m] a wheel risen more than this above its rail derails
 };
 
 struct ContactModel {
@@ -129,7 +129,8 @@ struct ContactModel {
 
   // Build statistics of the table in use (time, bytes, warnings, notes).
   const contact::TableBuildStats& tableStats() const;
-  // The names of dynamics/names.hpp (nameOf): "kec" / "lut" / "elastic", the creep laws of creep_laws.hpp
+  // The names of dynamics/names.hpp (nameOf): "kec" / "lut" / "elastic", the creep laws of
+  // creep_laws.hpp
   // ("polach", "kalker", "fastsim", "none"), "lagged" / "consistent".
   static const char* methodName(ContactMethod m);
   static const char* creepName(CreepModel c);

@@ -16,7 +16,6 @@ using internal::StageInput;
 using internal::Vec7;
 using internal::WheelsetWork;
 
-
 vehicle::VehicleLayout contactLayout(const vehicle::VehicleModel& m, WheelsetSpin spin,
                                      ContactMethod method) {
   const bool prescribed = spin == WheelsetSpin::Prescribed;
@@ -169,7 +168,8 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
       const double height = m.bodies[l.wheelset(w)].height;
       y[l.wsPosition(w, 3)] =
           contact_->centred_z - height - e.static_approach + 0.5 * (rail.z_l + rail.z_r);
-      y[l.wsPosition(w, 4)] = contact_->centred_phi + (rail.z_l - rail.z_r) / (2.0 * contact_->geometry.rail_lr);
+      y[l.wsPosition(w, 4)] =
+          contact_->centred_phi + (rail.z_l - rail.z_r) / (2.0 * contact_->geometry.rail_lr);
       unknowns.push_back(l.wsPosition(w, 3));
       unknowns.push_back(l.wsPosition(w, 4));
     }

@@ -18,8 +18,8 @@ double wheelLiftOf(const ContactModel& c, const WheelsetWork& ww, const vehicle:
 ContactVehicleOde::EvalFn ContactVehicleOde::elasticEvaluation(CreepModel creep) {
   EvalFn out = nullptr;
   const auto pick = [&]<class... Laws>(LawList<Laws...>) {
-    ((creep == Laws::kModel && (out = &ContactVehicleOde::evaluateT<ContactMethod::Elastic, Laws>,
-                                true)) ||
+    ((creep == Laws::kModel &&
+      (out = &ContactVehicleOde::evaluateT<ContactMethod::Elastic, Laws>, true)) ||
      ...);
   };
   pick(CreepLaws{});

@@ -23,9 +23,9 @@ inline constexpr Range kPoissonRange{0.0, 0.5};                 // [-]
 inline constexpr Range kMinNormalForceRange{0.0, 1e7};          // [N]
 
 // Elastic contact (ElasticSpec).
-inline constexpr Range kElasticDampingRatioRange{0.0, 2.0};        // [-] zeta
-inline constexpr Range kElasticSampleStepRange{0.02e-3, 2e-3};     // [m] scan step
-inline constexpr Range kDerailmentLiftRange{1e-3, 0.1};            // [m] (< 0: the default)
-inline constexpr Range kElasticCurvatureRatioRange{0.01, 1.0};     // [-] B floor / A
+inline constexpr Range kElasticDampingRatioRange{0.0, 2.0};     // [-] zeta
+inline constexpr Range kElasticSampleStepRange{0.02e-3, 2e-3};  // [m] scan step
+inline constexpr Range kDerailmentLiftRange{1e-3, 0.1};         // [m] (< 0: the default)
+inline constexpr Range kElasticCurvatureRatioRange{0.01, 1.0};  // [-] B floor / A
 
 }  // namespace rb::dynamics

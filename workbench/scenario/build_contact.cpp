@@ -46,9 +46,9 @@ bool buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
     c.elastic.min_curvature_ratio = o.number("min_curvature_ratio");
     if (const double lift = c.elastic.derailment_lift;
         lift >= 0.0 && !dynamics::kDerailmentLiftRange.contains(lift))
-      o.error(*e->field("derailment_lift"),
-              "derailment_lift must be in " + dynamics::kDerailmentLiftRange.text() +
-                  " m, or -1 for half the wheel's flange height");
+      o.error(*e->field("derailment_lift"), "derailment_lift must be in " +
+                                                dynamics::kDerailmentLiftRange.text() +
+                                                " m, or -1 for half the wheel's flange height");
     if (c.method != dynamics::ContactMethod::Elastic)
       r.error(*n.field("elastic"), "elastic applies to method = \"elastic\" only (method = \"" +
                                        std::string(nameOf(c.method)) + "\")");
@@ -71,8 +71,8 @@ bool buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
     if (!kec && r.has(k)) r.error(*n.field(k), std::string(k) + " applies to method 'kec' only");
   // The elastic method has no table, no multipliers and no constraint normal force.
   if (c.method == dynamics::ContactMethod::Elastic)
-    for (const char* k : {"flange_stiffness", "flange_damping", "normal_forces",
-                          "min_normal_force", "table_interpolation"})
+    for (const char* k : {"flange_stiffness", "flange_damping", "normal_forces", "min_normal_force",
+                          "table_interpolation"})
       if (r.has(k))
         r.error(*n.field(k),
                 std::string(k) +

@@ -25,12 +25,12 @@
 namespace rb::vehicle {
 
 // Independent coordinates per wheelset (VehicleLayout::ws_dof).
-inline constexpr int kGuidedWheelsetDof = 0;    // guided: no wheelset state
-inline constexpr int kPrescribedSpinDof = 2;    // contact, prescribed spin: y, psi
-inline constexpr int kFreeSpinDof = 3;          // contact, free spin: y, theta, psi
+inline constexpr int kGuidedWheelsetDof = 0;         // guided: no wheelset state
+inline constexpr int kPrescribedSpinDof = 2;         // contact, prescribed spin: y, psi
+inline constexpr int kFreeSpinDof = 3;               // contact, free spin: y, theta, psi
 inline constexpr int kElasticPrescribedSpinDof = 4;  // elastic, prescribed spin: y, psi, z, phi
 inline constexpr int kElasticFreeSpinDof = 5;        // elastic, free spin: y, theta, psi, z, phi
-inline constexpr int kFreeBodyDof = 5;  // car bodies and bogies: y, z, phi, theta, psi
+inline constexpr int kFreeBodyDof = 5;               // car bodies and bogies: y, z, phi, theta, psi
 // Wheelset coordinate c: 0 y, 1 theta, 2 psi, 3 z, 4 phi (z and phi are states on elastic
 // contact only).
 inline constexpr int kWheelsetCoordinates = 5;
@@ -51,11 +51,16 @@ struct VehicleLayout {
   // coordinate of a guided wheelset).
   int wsSlot(int c) const {
     switch (ws_dof) {
-      case kElasticFreeSpinDof: return c;
-      case kElasticPrescribedSpinDof: return c == 1 ? -1 : (c == 0 ? 0 : c - 1);
-      case kFreeSpinDof: return c < 3 ? c : -1;
-      case kPrescribedSpinDof: return c == 0 ? 0 : (c == 2 ? 1 : -1);
-      default: return -1;
+      case kElasticFreeSpinDof:
+        return c;
+      case kElasticPrescribedSpinDof:
+        return c == 1 ? -1 : (c == 0 ? 0 : c - 1);
+      case kFreeSpinDof:
+        return c < 3 ? c : -1;
+      case kPrescribedSpinDof:
+        return c == 0 ? 0 : (c == 2 ? 1 : -1);
+      default:
+        return -1;
     }
   }
   int position(int k, int c) const { return 5 * k + c; }  // c = 0..4: y, z, phi, theta, psi
