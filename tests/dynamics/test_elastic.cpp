@@ -87,9 +87,9 @@ TEST(Elastic, CompiledConstantsFollowFromHertz) {
   const dynamics::ElasticContactModel& e = *c.contact->elastic;
   EXPECT_NEAR(e.flange_height, 0.028, 0.2e-3);
   EXPECT_DOUBLE_EQ(e.derailment_lift, 0.5 * e.flange_height);
-  // The nominal wheel load is the vehicle's weight (masses) over its wheels: here the wheelset's
-  // own; the frame's preload is not a mass.
-  const double N0 = 1813 * 9.81 / 2.0;
+  // The nominal wheel load: the vehicle's weight and the frame's preloaded vertical elements
+  // (100 kN) over the wheels.
+  const double N0 = (1813 * 9.81 + 100e3) / 2.0;
   EXPECT_NEAR(e.static_load, N0, 1e-9 * N0);
   EXPECT_NEAR(e.tread_stiffness * std::pow(e.static_approach, 1.5), N0, 1e-9 * N0);
   const double k = 1.5 * e.tread_stiffness * std::sqrt(e.static_approach);

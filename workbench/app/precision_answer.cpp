@@ -517,31 +517,40 @@ void writeAnswerH5(const Answer& a, const std::string& path) {
   f.finalize();
 }
 
+namespace {
+
+// One model's reference line of the printed answer: its state, bound, table error and, with a
+// model reference, its model error in every quantity.
+void printReference(const Answer& a, const ReferenceAnswer& r, std::ostream& out) {
+  const Quantity& q = a.quantities.front();
+  out << "  " << r.model << ": reference "
+      << (r.verified ? std::string("verified") : "UNVERIFIED (" + r.why + ")") << "; bound "
+      << (r.bound.front().have ? fmt(r.bound.front().max) : "?") << " " << q.unit
+      << "; table error "
+      << (r.model == "elastic"
+              ? std::string("none (no tables)")
+              : (r.table.front().have ? fmt(r.table.front().max) : "?") + " " + q.unit);
+  if (!r.model_error.empty()) {
+    // Every quantity: the model error is the answer's point, not only the first quantity.
+    out << "; model error against " << a.model_reference << ":";
+    for (std::size_t k = 0; k < a.quantities.size() && k < r.model_error.size(); ++k)
+      out << " " << a.quantities[k].tag << " "
+          << (r.model_error[k].have ? fmt(r.model_error[k].max) : "?") << " "
+          << a.quantities[k].unit << " max, "
+          << (r.model_error[k].have ? fmt(r.model_error[k].rms) : "?") << " rms"
+          << (k + 1 < a.quantities.size() ? ";" : "");
+  }
+  out << "\n";
+}
+
+}  // namespace
+
 void printAnswer(const Answer& a, std::ostream& out) {
   const Quantity& q = a.quantities.front();
   out << "\nRecommendation (computed by the engine): the cheapest setting whose integration error "
          "(max |"
       << q.tag << "| against the reference on the same tables) reaches each level\n";
-  for (const auto& r : a.references) {
-    out << "  " << r.model << ": reference "
-        << (r.verified ? std::string("verified") : "UNVERIFIED (" + r.why + ")") << "; bound "
-        << (r.bound.front().have ? fmt(r.bound.front().max) : "?") << " " << q.unit
-        << "; table error "
-        << (r.model == "elastic"
-                ? std::string("none (no tables)")
-                : (r.table.front().have ? fmt(r.table.front().max) : "?") + " " + q.unit);
-    if (!r.model_error.empty()) {
-      // Every quantity: the model error is the answer's point, not only the first quantity.
-      out << "; model error against " << a.model_reference << ":";
-      for (std::size_t k = 0; k < a.quantities.size() && k < r.model_error.size(); ++k)
-        out << " " << a.quantities[k].tag << " "
-            << (r.model_error[k].have ? fmt(r.model_error[k].max) : "?") << " "
-            << a.quantities[k].unit << " max, "
-            << (r.model_error[k].have ? fmt(r.model_error[k].rms) : "?") << " rms"
-            << (k + 1 < a.quantities.size() ? ";" : "");
-    }
-    out << "\n";
-  }
+  for (const auto& r : a.references) printReference(a, r, out);
   std::size_t w = 10;
   for (const auto& r : a.recommendations)
     if (r.best >= 0) w = std::max(w, a.cases[static_cast<std::size_t>(r.best)].label.size());

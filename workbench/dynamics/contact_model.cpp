@@ -382,8 +382,22 @@ std::shared_ptr<const ElasticContactModel> compileElastic(const ContactSpec& c,
     mass += b.mass;
     if (b.kind == vehicle::BodyKind::Wheelset) ws_mass += b.mass;
   }
+  // Kinematic frames carry no weight but may press on the vehicle through preloaded vertical
+  // elements (a directional element's force f acts as +f e_z on its body1 and -f e_z on its
+  // body2, vehicle/dynamics.cpp): their preloads add to the wheel loads.
+  double frame_load = 0.0;
+  const auto framePreload = [&](const vehicle::ElementGeometry& g, double preload) {
+    if (g.axis != 2) return;
+    const bool f1 = v.bodies[static_cast<std::size_t>(g.body1)].kind == vehicle::BodyKind::Frame;
+    const bool f2 = v.bodies[static_cast<std::size_t>(g.body2)].kind == vehicle::BodyKind::Frame;
+    if (f1 && !f2) frame_load += preload;
+    if (f2 && !f1) frame_load -= preload;
+  };
+  for (const auto& el : v.spring_dampers) framePreload(el.g, el.preload);
+  for (const auto& el : v.series_dampers) framePreload(el.g, el.preload);
+  for (const auto& el : v.shear_springs) framePreload(el.g, el.preload);
   const double wheels = 2.0 * static_cast<double>(m.wheelsets.size());
-  e->static_load = mass * v.gravity / wheels;
+  e->static_load = (mass * v.gravity + frame_load) / wheels;
   // Sunk by 10 um: at the touching height itself the approach is zero and there is no patch.
   const contact::ElasticPose centred{0.0, m.centred_z - 1e-5, m.centred_phi, 0.0};
   const contact::ElasticWheelGeometry g = e->search[0].search(centred);

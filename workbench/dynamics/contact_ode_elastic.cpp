@@ -17,12 +17,14 @@ double wheelLiftOf(const ContactModel& c, const WheelsetWork& ww, const vehicle:
 
 ContactVehicleOde::EvalFn ContactVehicleOde::elasticEvaluation(CreepModel creep) {
   EvalFn out = nullptr;
-  const auto pick = [&]<class... Laws>(LawList<Laws...>) {
-    ((creep == Laws::kModel &&
-      (out = &ContactVehicleOde::evaluateT<ContactMethod::Elastic, Laws>, true)) ||
-     ...);
+  const auto choose = [&]<class... Laws>(LawList<Laws...>) {
+    const auto pick = [&]<class Law>() {
+      out = &ContactVehicleOde::evaluateT<ContactMethod::Elastic, Law>;
+      return true;
+    };
+    return ((creep == Laws::kModel && pick.template operator()<Laws>()) || ...);
   };
-  pick(CreepLaws{});
+  if (!choose(CreepLaws{})) return nullptr;
   return out;
 }
 
