@@ -56,6 +56,13 @@ end
 for _, m in ipairs(METHODS) do
   add("trial_r300 | " .. m, "../three_way/r300_cant100.lua", { ["contact.method"] = m })
 end
+-- The constraint methods' scatter on the trial with an adaptive integrator (dopri5, rtol = atol =
+-- 1e-6, no largest step): a property of the model, not of the ABM step, if it stays.
+for _, m in ipairs({ "kec", "lut" }) do
+  add("trial_r300 | " .. m .. " dopri5 1e-6", "../three_way/r300_cant100.lua",
+      { ["contact.method"] = m, ["solver.method"] = "dopri5", ["solver.rtol"] = 1e-6,
+        ["solver.atol"] = 1e-6 })
+end
 
 study {
   base = "../validation/case3_kec.lua",
