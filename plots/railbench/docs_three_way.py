@@ -27,7 +27,9 @@ def _m(r: dict) -> str:
 
 
 def _s(r: dict) -> str:
-    return SCENARIOS.get(r["scenario"], r["scenario"])
+    scen = r["scenario"]
+    base, _, extra = scen.partition(" ")
+    return SCENARIOS.get(scen) or (SCENARIOS.get(base, base) + (f", {extra}" if extra else ""))
 
 
 def _f(r: dict, k: str, spec: str) -> str:

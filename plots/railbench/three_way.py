@@ -69,7 +69,9 @@ def split_label(label: str) -> Tuple[str, str]:
 
 
 def scenario_kind(scen: str) -> str:
-    return "case1" if scen.startswith("case1") else scen
+    if scen.startswith("case1"):
+        return "case1"
+    return scen.split(" ")[0]  # "case3 dopri5 1e-6": the window of case3
 
 
 def leading_wheelset(f: h5py.File) -> str:

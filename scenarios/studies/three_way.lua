@@ -41,6 +41,12 @@ for _, c in ipairs({ 2, 3 }) do
     add(("case%d | %s"):format(c, m), ("../validation/case%d_%s.lua"):format(c, m))
   end
 end
+-- Case 3 with an adaptive integrator (dopri5, rtol = atol = 1e-6, no largest step): whether the
+-- elastic contact's stiffness costs steps (the evaluation counts of the three methods).
+for _, m in ipairs(METHODS) do
+  add("case3 dopri5 1e-6 | " .. m, ("../validation/case3_%s.lua"):format(m),
+      { ["solver.method"] = "dopri5", ["solver.rtol"] = 1e-6, ["solver.atol"] = 1e-6 })
+end
 -- Hard case: the stiff flange (R = 200 m, 15 m/s, ORE B176 high). The LUT with the paper's
 -- Hertz flange K = 7.075e13 (hard/lut_stiff_flange.lua) and with the validation K = 1e10.
 add("stiff_flange | kec", "../hard/elastic_stiff_flange.lua", with(ABM, { ["contact.method"] = "kec" }))
