@@ -63,6 +63,13 @@ def steady_block(d: str) -> str:
                    "angle [rad]"], body))
 
 
+def _no_contact(r: dict) -> str:
+    n = int(num(r.get("no_contact_samples"), 0) or 0)
+    if n == 0:
+        return "0"
+    return f"{n} (first at t = {num(r.get('no_contact_first_t')):.2f} s)"
+
+
 def extremes_block(d: str) -> str:
     rows = read_csv(os.path.join(d, "three_way_extremes.csv"))
     if not rows:
@@ -75,16 +82,17 @@ def extremes_block(d: str) -> str:
         body.append([_s(r), _m(r), status, _f(r, "t_reached", "{:.3f}"),
                      _f(r, "y_max_mm", "{:.2f}"), _f(r, "Y_max_kN", "{:.1f}"),
                      _f(r, "Q_max_kN", "{:.1f}"), _f(r, "YQ_max", "{:.2f}"),
-                     _f(r, "flange_N_max_kN", "{:.1f}"), _pct(r, "no_contact"),
+                     _f(r, "flange_N_max_kN", "{:.1f}"), _no_contact(r), _f(r, "Q_min_any_kN", "{:.1f}"),
                      _pct(r, "two_point")])
     return ("Whole runs (a stopped run: up to its stop). Leading wheelset and its outer wheel; "
             "\"flange N\" the largest normal force on that wheel's flange patches (LUT: the Hertz "
             "flange force; KEC: the flange-side band end; elastic: its patches classed as flange), "
-            "\"no contact\": share of output samples in which some wheel of the vehicle has no "
-            "patch at all (elastic only; a constraint keeps every wheel on its rail).\n\n"
+            "\"no contact\": output samples in which some wheel of the vehicle has no patch at "
+            "all (elastic only; a constraint keeps every wheel on its rail); \"min Q\": the "
+            "smallest wheel load of any wheel of the vehicle.\n\n"
             + table(["scenario", "method", "status", "t reached [s]", "max abs y [mm]",
                      "max Y [kN]", "max Q [kN]", "max Y/Q", "max flange N [kN]",
-                     "no contact", "two-point"], body))
+                     "no contact [samples]", "min Q any wheel [kN]", "two-point"], body))
 
 
 def dynamic_block(d: str) -> str:
@@ -133,8 +141,10 @@ def cost_block(d: str) -> str:
         durs = sorted({i.get("duration", "") for i in ins.values()} - {""})
         note = (" Instructions per evaluation: callgrind over the first "
                 f"{', '.join(durs) or 'few'} s of the run (`plots/rbplot effects-instructions`, "
-                "the integration only, result-file flushes excluded); for the validation cases "
-                "and the trial that is tangent track, single-point contact.")
+                "the integration only, result-file flushes excluded): case 3 on its tangent "
+                "(single-point tread contact), the trial on its tangent and the start of its "
+                "transition, the sharp curve through its transition with the leading wheelset "
+                "on its flange from about 0.5 s.")
     else:
         note = " Instructions per evaluation not measured in this run (column empty)."
     return ("One run per case on a shared 2-core machine (CPU times scatter by 10-40 %). "

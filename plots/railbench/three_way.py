@@ -147,7 +147,12 @@ def extremes_row(f: h5py.File) -> dict:
                 Y_max_kN=float(np.max(w["Y"][:])) / 1e3, Q_max_kN=float(np.max(Q)) / 1e3,
                 YQ_max=float(np.nanmax(yq)) if np.any(np.isfinite(yq)) else float("nan"),
                 flange_N_max_kN=float(np.max(nf)) / 1e3,
-                no_contact=float(np.mean(lost)) if lost is not None else float("nan"),
+                no_contact_samples=int(np.sum(lost)) if lost is not None else 0,
+                no_contact_first_t=float(f["/time"][:][np.argmax(lost)])
+                if lost is not None and np.any(lost) else float("nan"),
+                Q_min_any_kN=min(float(np.min(f["/contact"][n][sd]["Q"][:]))
+                                 for n in f["/contact"] for sd in ("left", "right")
+                                 if sd in f["/contact"][n]) / 1e3,
                 two_point=float(np.mean(w["regime"][:] == 1)))
 
 
