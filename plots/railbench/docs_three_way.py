@@ -56,8 +56,8 @@ def steady_block(d: str) -> str:
             "wheelset) and its outer (right) wheel. Y toward the track centre, Q upward on the "
             "wheel (EN 14363, per wheel the sum over its patches); \"two-point\": share of output "
             "samples with a tread and a flange patch (regime 1); \"flange N\": the flange patches' "
-            "share of the normal force; \"patches\": mean number of patches (KEC: its two band "
-            "ends are always counted); \"angle\": contact angle of the strongest patch.\n\n" +
+            "share of the normal force; \"patches\": mean number of patches (KEC: 2 inside its "
+            "tread-flange band, both band ends, 1 outside); \"angle\": contact angle of the strongest patch.\n\n" +
             table(["scenario", "method", "window", "ws y [mm]", "ws yaw [mrad]", "Y [kN]",
                    "Q [kN]", "Y/Q", "std Y [kN]", "two-point", "flange N", "patches",
                    "angle [rad]"], body))
@@ -173,7 +173,7 @@ def trial_block(d: str) -> str:
     return ("The outer (right) wheel of the leading wheelset over s = 110..400 m (the whole wagon "
             "in the full-cant curve), at the run's 2 ms output and at every 5th sample (the "
             "trial's 10 ms). \"two-point\": regime 1 (a tread and a flange patch); \"2+ "
-            "patches\": `contact_count` >= 2 (the KEC counts its two band ends always); "
+            "patches\": `contact_count` >= 2 (the KEC counts both ends of its band inside it); "
             "\"switches\": changes of the regime per second, and the mean number of output "
             "samples between them; \"> 15 Hz\" std: the standard deviation of the wheelset's y "
             "and of Y above 15 Hz; \"peak\": the largest peak of the spectrum (Welch, 1 s "
