@@ -17,6 +17,7 @@ SCENARIOS = {
     "case1 R=700": "case 1, R = 700 m", "case1 R=900": "case 1, R = 900 m",
     "case2": "case 2 (R = 500 m, smooth)", "case3": "case 3 (R = 500 m, ORE B176 low)",
     "sharp_curve": "sharp curve (R = 150 m, 16 m/s)",
+    "wheel_climb": "wheel climb (R = 100 m, 5 m/s, mu = 0.5)",
     "stiff_flange": "stiff flange (R = 200 m, 15 m/s, ORE B176 high)",
     "trial_r300": "trial (R = 300 m, 100 mm cant, ORE B176 high, 20.9 m/s)",
 }
@@ -76,7 +77,8 @@ def extremes_block(d: str) -> str:
         return missing(f"{d}/three_way_extremes.csv (./wb studies --only three_way)")
     body = []
     for r in rows:
-        if r["scenario"] not in ("stiff_flange", "sharp_curve", "trial_r300", "case3"):
+        if r["scenario"] not in ("stiff_flange", "sharp_curve", "wheel_climb", "trial_r300",
+                                 "case3"):
             continue
         status = r["status"] + (f": {r['message'][:70]}" if r["status"] != "ok" else "")
         body.append([_s(r), _m(r), status, _f(r, "t_reached", "{:.3f}"),

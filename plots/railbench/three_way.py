@@ -53,6 +53,7 @@ WINDOWS = {
     "case3": ("s", 300.0, 450.0),
     "sharp_curve": ("t", 3.0, 4.0),      # the last second: leading wheelset 16-32 m into the curve
     "stiff_flange": ("t", 0.5, 1.0),     # curve entry before the first impact (t ~ 1.0 s)
+    "wheel_climb": ("t", 5.0, 6.0),      # the last second: leading wheelset on its flange
     "trial_r300": ("s", 110.0, 400.0),   # the whole wagon in the full 100 mm cant curve
 }
 TRIAL = "trial_r300"

@@ -58,6 +58,11 @@ add("stiff_flange | elastic", "../hard/elastic_stiff_flange.lua", ABM)
 for _, m in ipairs(METHODS) do
   add("sharp_curve | " .. m, "../hard/sharp_curve.lua", with(ABM, { ["contact.method"] = m }))
 end
+-- Hard case: wheel climb (R = 100 m, 5 m/s, dry rail mu = 0.5): the leading outer wheel's Y/Q near
+-- the Nadal limit of the 70 degree flank (0.95).
+for _, m in ipairs(METHODS) do
+  add("wheel_climb | " .. m, "../hard/wheel_climb.lua", with(ABM, { ["contact.method"] = m }))
+end
 -- The trial's scenario (R = 300 m, 100 mm cant, ORE B176 high, 20.9 m/s).
 for _, m in ipairs(METHODS) do
   add("trial_r300 | " .. m, "../three_way/r300_cant100.lua", { ["contact.method"] = m })
