@@ -31,7 +31,7 @@ file and writes, beside them,
                             share of the Q variance above 15 Hz
     three_way_constants.csv the elastic method's constants per scenario (/contact elastic_*
                             attributes) and the tread's Hertz constant N0 / delta0^1.5
-    study_trial.png, study_case3.png   figures
+    study_trial.png, study_case3.png, study_climb.png   figures
 
 `plots/rbplot docs` turns them into the generated blocks of docs/three_way.md.
 """
@@ -365,6 +365,42 @@ def case3_figure(files: Dict[str, str], path: str) -> None:
     plt.close(fig)
 
 
+def climb_figure(files: Dict[str, str], path: str) -> None:
+    """Wheel climb: Y and Q of the leading outer wheel and Y/Q against Nadal's limit over the
+    last 2 s."""
+    from .style import RUN_COLORS, RUN_STYLES, A4_WIDTH_IN, DPI
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(3, 1, figsize=(A4_WIDTH_IN, 7.0), sharex=True)
+    for k, m in enumerate(METHODS):
+        if m not in files:
+            continue
+        with h5py.File(files[m], "r") as f:
+            ws = leading_wheelset(f)
+            t = f["/time"][:]
+            sel = t >= t[-1] - 2.0
+            w = f["/contact"][ws]["right"]
+            style = dict(color=RUN_COLORS[k], lw=1.0 if m == "elastic" else 0.8,
+                         ls="-" if m == "elastic" else RUN_STYLES[k], label=m.upper())
+            Y, Q = w["Y"][:][sel] / 1e3, w["Q"][:][sel] / 1e3
+            ax[0].plot(t[sel], Y, **style)
+            ax[1].plot(t[sel], Q, **style)
+            ax[2].plot(t[sel], Y / np.where(Q > 1, Q, np.nan), **style)
+    mu, gamma = 0.5, np.radians(70.0)
+    nadal = (np.tan(gamma) - mu) / (1 + mu * np.tan(gamma))
+    ax[2].axhline(nadal, color="k", lw=0.8, ls=":", label=f"Nadal {nadal:.2f} (70 deg, mu 0.5)")
+    ax[0].set_ylabel("Y [kN]")
+    ax[1].set_ylabel("Q [kN]")
+    ax[2].set_ylabel("Y/Q")
+    ax[2].set_xlabel("t [s]")
+    ax[0].set_title("Wheel climb (R = 100 m, 5 m/s, mu = 0.5): leading outer wheel", fontsize=9)
+    for a in ax:
+        a.grid(alpha=0.3)
+        a.legend(fontsize=7, loc="upper right")
+    fig.tight_layout()
+    fig.savefig(path, dpi=DPI)
+    plt.close(fig)
+
+
 def main(argv=None) -> int:
     from .common import parser
     ap = parser("three-way", __doc__.split("\n\n")[0])
@@ -423,6 +459,8 @@ def main(argv=None) -> int:
         trial_figure(series, os.path.join(d, "study_trial.png"))
     if "case3" in by_scen:
         case3_figure(by_scen["case3"], os.path.join(d, "study_case3.png"))
+    if "wheel_climb" in by_scen:
+        climb_figure(by_scen["wheel_climb"], os.path.join(d, "study_climb.png"))
     print(f"railbench three-way: {d}/three_way_*.csv")
     return 0
 
