@@ -1,6 +1,6 @@
 -- The three-way comparison of issue 34 item 7 (docs/three_way.md): the paper's cases 1-3, the
--- hard cases with the stiff flange and the sharp curve, and the trial's R = 300 m / 100 mm cant
--- scenario, each with the constraint methods KEC and LUT and with elastic multi-point contact.
+-- hard cases with the stiff flange, the sharp curve and the wheel climb, and the trial's
+-- R = 300 m / 100 mm cant scenario, each with the constraint methods KEC and LUT and with elastic multi-point contact.
 -- Every method of a scenario runs with the same integrator and step, so the evaluation counts are
 -- equal and the CPU times compare the cost of one evaluation:
 --   * validation cases: their own solver (ABM 0.2 ms for case 1 at 10 m/s, 0.25 ms for cases 2
