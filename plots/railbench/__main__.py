@@ -7,6 +7,7 @@
     docs OUT_DIR [--build DIR] [...]         the generated blocks of docs/ (docs.py)
     provenance record FILE.json [--root DIR] the source tree of a set of runs (provenance.py)
     validation-tables OUT_DIR                the CSVs of docs/validation.md (validation.py)
+    three-way OUT_DIR                        the CSVs and figures of docs/three_way.md (three_way.py)
     effects-instructions OUT/effects [...]   callgrind instructions per evaluation (effects.py)
     precision DIR [...]                      `workbench precision`: errors, Pareto front (precision.py)
     stress DIR [...]                         `workbench stress`: the stability map (stress.py)
@@ -29,6 +30,7 @@ COMMANDS = {
     "docs": "docs",
     "provenance": "provenance",
     "validation-tables": "validation",
+    "three-way": "three_way",
     "effects-instructions": "effects",
     "precision": "precision",
     "stress": "stress",

@@ -46,6 +46,7 @@ from .docs_stability import FOLDERS as STABILITY, stability_blocks
 from .docs_stress import stress_hard_block
 from .docs_sweeps import SWEEP, THROUGHPUT, sweep_blocks
 from .docs_three_asks import EFFECTS, PRECISION, STRESS, STRESS_KEC, three_asks_blocks
+from .docs_three_way import FOLDER as THREE_WAY, three_way_blocks
 from .docs_tables import tables_block
 from .docs_validation import hard_block, hard_detail_block, hard_rows, validation_blocks
 
@@ -70,6 +71,9 @@ BLOCK_SOURCES = {
     "stability_wagon": ("stability_kec", "stability_lut"), "stability_modes":
     ("stability_kec", "stability_lut"), "stability_method": STABILITY,
     "stability_verification": "build", SWEEP: SWEEP, THROUGHPUT: THROUGHPUT,
+    **{b: THREE_WAY for b in ("three_way_steady", "three_way_extremes", "three_way_dynamic",
+                              "three_way_cost", "three_way_trial",
+                              "three_way_constants")},
 }
 
 
@@ -159,7 +163,7 @@ def coupling_block(build: str) -> Optional[str]:
 
 STUDIES = ("efficiency_case3", "flange_stiffness", "refinement", "work_precision", "effects",
            "speed", "paper_settings_flange", "paper_settings", "validation", "tables", PRECISION,
-           STRESS_KEC, STRESS, EFFECTS, SWEEP, ROUTE) + STABILITY
+           STRESS_KEC, STRESS, EFFECTS, SWEEP, ROUTE, THREE_WAY) + STABILITY
 
 
 def copy_figures(outdir: str, docs: str, pages) -> List[str]:
@@ -220,6 +224,7 @@ def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
     blocks["contact_geometry.md"] = {"tables_summary": tables_block(outdir)}
     blocks["stress.md"] = {"stress_hard": stress_hard_block(build)}
     blocks["three_asks.md"] = three_asks_blocks(outdir)
+    blocks["three_way.md"] = three_way_blocks(outdir)
     blocks["stability.md"] = stability_blocks(outdir, build)
     for md, items in sweep_blocks(outdir).items():
         blocks[md].update(items)

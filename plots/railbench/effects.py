@@ -17,7 +17,8 @@ Also used on the speed study (`./wb studies --only speed`: OUT/speed, --duration
 --workbench/--root of an earlier build and --tag naming it, for a before/after comparison.
 
 Writes OUT/effects/study_effects_instructions.csv: case, label, method, instructions, rhs_evals,
-instructions_per_eval, relative_to_baseline (the case of role "baseline" with the same method).
+instructions_per_eval, relative_to_baseline (the case of role "baseline" with the same method),
+note, build, duration (the simulated seconds measured).
 """
 import csv
 import os
@@ -110,7 +111,7 @@ def main(argv=None) -> int:
                 rows.append(dict(case=c["case"], label=c["label"], role=c["role"],
                                  method=method_of(c), instructions="", rhs_evals="",
                                  instructions_per_eval="", relative_to_baseline="",
-                                 note="failed", build=a.tag))
+                                 note="failed", build=a.tag, duration=f"{a.duration:g}"))
                 continue
             with h5py.File(out, "r") as h:
                 evals = int(h["stats"].attrs["rhs_evals"])
@@ -118,7 +119,8 @@ def main(argv=None) -> int:
             rows.append(dict(case=c["case"], label=c["label"], role=c["role"],
                              method=method_of(c), instructions=total, rhs_evals=evals,
                              instructions_per_eval=f"{total / evals:.1f}",
-                             relative_to_baseline="", note="", build=a.tag))
+                             relative_to_baseline="", note="", build=a.tag,
+                             duration=f"{a.duration:g}"))
             print(f"{c['label']:40s} {total / evals:10.1f} instructions / evaluation", flush=True)
     base = {r["method"]: float(r["instructions_per_eval"]) for r in rows
             if r["role"] == "baseline" and r["instructions_per_eval"]}

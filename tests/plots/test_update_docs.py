@@ -414,3 +414,42 @@ def test_validation_tables():
     check("failed" in blocks["validation_cost"] and "81.5x" in blocks["validation_cost"],
           "validation cost block: real-time factor and failed case")
 
+
+
+def test_three_way_blocks():
+    """docs/three_way.md: its blocks from synthetic three_way_*.csv, a "Not generated" line when
+    they are missing, and the trial analysis' helpers (label split, Welch peak, high-pass std)."""
+    import numpy as np
+    from railbench import three_way as tw
+    from railbench.docs_three_way import three_way_blocks
+    out = os.path.join(TMP, "three_way_out")
+    blocks = three_way_blocks(out)
+    check(all(b.startswith(NOT_GENERATED) for b in blocks.values()),
+          "three-way: missing CSVs give Not generated lines")
+    d = os.path.join(out, "three_way")
+    write_csv(os.path.join(d, "three_way_steady.csv"), [dict(
+        scenario="case2", method="elastic", window="s = 300..450 m", y_mm="-6.1467",
+        yaw_mrad="-4.5337", Y_kN="19.915", Y_std_kN="0.0026", Q_kN="67.18", Q_std_kN="0.01",
+        YQ="0.2965", two_point="0", flange_any="0", flange_N_share="0", patches="1",
+        angle_rad="0.4538")])
+    write_csv(os.path.join(d, "three_way_cost.csv"), [dict(
+        scenario="case3", method="kec", cpu_s="3.27", rhs_evals="205479", steps="97844",
+        us_per_eval="15.9", real_time="7.48", contact_share="0.167", t_reached="24.461")])
+    write_csv(os.path.join(d, "study_three_way_instructions.csv"), [dict(
+        case="c", label="case3 | kec", role="", method="kec", instructions="1",
+        rhs_evals="1", instructions_per_eval="96043.8", relative_to_baseline="", note="",
+        build="", duration="2")])
+    blocks = three_way_blocks(out)
+    check("| case 2 (R = 500 m, smooth) | elastic | s = 300..450 m | -6.15 | -4.53 | 19.9 |"
+          in blocks["three_way_steady"], "three-way: the steady row")
+    check("96.0 k" in blocks["three_way_cost"] and "first 2 s" in blocks["three_way_cost"],
+          "three-way: instructions per evaluation and the measured duration")
+    check(tw.split_label("trial_r300 | kec dopri5 1e-6") == ("trial_r300", "kec dopri5 1e-6"),
+          "three-way: label split")
+    dt = 0.002
+    t = np.arange(0, 8, dt)
+    x = 3 + np.sin(2 * np.pi * 31 * t) + 0.5 * np.sin(2 * np.pi * 2 * t)
+    F, P = tw._spectrum(x, dt)
+    check(abs(F[F > 15][np.argmax(P[F > 15])] - 31) <= 1.0, "three-way: Welch peak at 31 Hz")
+    check(abs(tw._highpass_std(x, dt) - np.sqrt(0.5)) < 0.02,
+          "three-way: the std above 15 Hz of a unit sine is 1/sqrt(2)")
