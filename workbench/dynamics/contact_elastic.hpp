@@ -59,12 +59,7 @@ double setupElasticPatch(Patch& p, const contact::ElasticPatchGeometry& g, doubl
                          const ContactModel& c, const WheelsetFrame& f, double V,
                          const RailOffset& rail) {
   const ElasticContactModel& e = *c.elastic;
-  p.active = true;
-  p.on_flange = sigma * g.s_w < sigma * c.flange_boundary[sigma > 0 ? 0 : 1];
-  p.s_w = g.s_w;
-  p.s_r = g.s_r;
-  p.gamma = g.gamma;
-  p.radius = g.radius;
+  placePatch(p, g.s_w, g.s_r, g.gamma, g.radius, sigma, c);
   p.n = Eigen::Vector3d(0.0, g.n_y, g.n_z);
   p.ql.setZero();
   const Eigen::Vector3d u(g.x_w, sigma * c.geometry.wheel_lw + g.s_w,

@@ -84,16 +84,23 @@ inline void updatePatchConstants(Patch& p, const PatchGeometry& g, const Contact
   p.k_key[2] = g.k_r_trans;
 }
 
+// Where a patch is: active, on the flange side of the profile's tread/flange split or not, its
+// profile parameters, contact angle and rolling radius (every contact method).
+[[gnu::always_inline]] inline void placePatch(Patch& p, double s_w, double s_r, double gamma,
+                                              double radius, double sigma, const ContactModel& c) {
+  p.active = true;
+  p.on_flange = sigma * s_w < sigma * c.flange_boundary[sigma > 0 ? 0 : 1];
+  p.s_w = s_w;
+  p.s_r = s_r;
+  p.gamma = gamma;
+  p.radius = radius;
+}
+
 // Kinematics of a patch: generalised directions, creepages, Hertz shape.
 template <class Law>
 void setupPatch(Patch& p, const PatchGeometry& g, double sigma, const ContactModel& c,
                 const WheelsetFrame& f, double V) {
-  p.active = true;
-  p.on_flange = sigma * g.s_w < sigma * c.flange_boundary[sigma > 0 ? 0 : 1];
-  p.s_w = g.s_w;
-  p.s_r = g.s_r;
-  p.gamma = g.gamma;
-  p.radius = g.radius;
+  placePatch(p, g.s_w, g.s_r, g.gamma, g.radius, sigma, c);
   // The planar contact (section 2.2) neglects the yaw for the contact location: the contact
   // picture (normal and contact frame) is the planar one, carried along by the wheelset yaw psi.
   // Rotated with the yaw the normal stays normal to the wheel surface (perpendicular to the
