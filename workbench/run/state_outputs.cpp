@@ -1,8 +1,8 @@
 #include "workbench/run/state_outputs.hpp"
 
 #include <algorithm>
-#include <cstring>
-#include <limits>
+#include <bit>
+#include <cstdint>
 
 #include "workbench/core/error.hpp"
 
@@ -17,11 +17,12 @@ StateOutputs::StateOutputs(vehicle::VehicleOde& ode, dynamics::ContactVehicleOde
 
 void StateOutputs::at(double t, const double* y) {
   // The same bits, not merely close values: anything else is another state.
-  const std::size_t bytes = y_.size() * sizeof(double);
-  if (valid_ && std::memcmp(&t, &t_, sizeof t) == 0 && std::memcmp(y, y_.data(), bytes) == 0)
-    return;
+  const auto same = [](double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  };
+  if (valid_ && same(t, t_) && std::equal(y_.begin(), y_.end(), y, same)) return;
   t_ = t;
-  std::memcpy(y_.data(), y, bytes);
+  std::copy(y, y + y_.size(), y_.begin());
   valid_ = true;
   acc_ = wheels_done_ = Done::No;
 }
