@@ -56,8 +56,9 @@ end
 -- exponentially) ABM is stable at 1 ms (its accuracy over case 3: docs/performance.md, speed
 -- table); the validation cases keep the explicit ABM's stable 0.25 ms. The paper's explicit 1 ms:
 -- --set solver.stiff=explicit --set solver.step=1e-3 --set solver.accept_unstable_step=true.
-function M.abm(speed)
-  solver { method = "abm", step = speed <= 10 and 2e-4 or 2.5e-4 }
+-- step: another step for a scene built on a validation case (scenarios/default/).
+function M.abm(speed, step)
+  solver { method = "abm", step = step or (speed <= 10 and 2e-4 or 2.5e-4) }
 end
 
 -- Case 1: single wheelset at V = 10 m/s on a 30 m tangent, 50 m transition and 40 m left curve
@@ -81,8 +82,9 @@ end
 -- left curve of R = 500 m (Fig. 18-22, Table 6), case 3 with the ORE B176 low irregularities of
 -- scenarios/tracks/manchester_r500_irregular.lua (seed 42). The study bases (method "study") ask
 -- for no assessment: a study measures the cost of the model, not of the assessment's sampling.
--- anti_roll_bar = false: the wagon with the paper's Table 4 elements alone (variants/).
-function M.wagon(method, irregular, anti_roll_bar)
+-- anti_roll_bar = false: the wagon with the paper's Table 4 elements alone (variants/); step: the
+-- ABM step instead of the validation cases' 0.25 ms (M.abm).
+function M.wagon(method, irregular, anti_roll_bar, step)
   local irr = nil
   if irregular then
     -- fade_in = 0: the paper's irregularities start at s = 0 without a ramp (the default 20 m
@@ -94,7 +96,7 @@ function M.wagon(method, irregular, anti_roll_bar)
   M.profiles()
   M.contact(method)
   vehicle (require "vehicles.manchester_wagon1" { speed = 20, anti_roll_bar = anti_roll_bar })
-  M.abm(20)
+  M.abm(20, step)
   -- The assessment (docs/assessment.md): EN 14363 running safety and stability, EN 12299 and
   -- Sperling comfort over the bogie centres and mid-car, T gamma wear.
   local assessment = nil

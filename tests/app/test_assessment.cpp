@@ -2,10 +2,10 @@
 // nothing and writes nothing; a short case 2 run writes every group of the layout with finite
 // values, limits and ok flags, its values are those of the written series (2 m sliding means:
 // the larger of |F1|, |F2|; dQ/Q, stability, T gamma: the maximum) and its summary is the largest
-// over wheels, bogies and floor points; the
-// static tangent gives no wheel unloading and no track shift force; a guided vehicle refuses
-// safety at check; `workbench assess` reproduces a run's /assessment, applies new parameters and
-// leaves a file it cannot assess untouched.
+// over wheels, bogies and floor points; samples at output times share the outputs' model
+// evaluations; the static tangent gives no wheel unloading and no track shift force; a guided
+// vehicle refuses safety at check; `workbench assess` reproduces a run's /assessment, applies new
+// parameters and leaves a file it cannot assess untouched.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -106,6 +106,32 @@ TEST(Assessment, NothingAskedWritesNothingAndCostsNothing) {
     EXPECT_EQ(h5test::dataset(a, ds), h5test::dataset(b, ds)) << ds;
   H5Fclose(a);
   H5Fclose(b);
+}
+
+TEST(Assessment, SamplesAtOutputTimesShareTheOutputsEvaluations) {
+  // Outputs with body accelerations and element values, and the assessment sampled at the output
+  // times: per output time one evaluation for the wheels (which also gives the element values and
+  // the assessment's wheel signals) and one for the accelerations (also the assessment's bogie
+  // and floor points), so one evaluation more per output time than the wheels and elements alone.
+  const std::string scen = "tests/app/data/wheel_forces/all_outputs.lua";
+  hid_t plain = run(scen, "plain.h5",
+                    {"run.output.body_accelerations=false", "run.assessment.safety=false",
+                     "run.assessment.stability=false", "run.assessment.comfort=false",
+                     "run.assessment.wear=false"});
+  ASSERT_GE(plain, 0);
+  hid_t shared = run(scen, "shared.h5", {});
+  ASSERT_GE(shared, 0);
+  const std::size_t outputs = h5test::dataset(shared, "/time").size();
+  EXPECT_FALSE(h5test::exists(plain, "/assessment"));
+  EXPECT_GT(attr(shared, "/stats", "assessment_samples"), 0.0);
+  EXPECT_EQ(attr(shared, "/stats", "rhs_evals"), attr(plain, "/stats", "rhs_evals"));
+  EXPECT_EQ(attr(shared, "/stats", "model_evaluations"),
+            attr(plain, "/stats", "model_evaluations") + static_cast<double>(outputs));
+  for (const char* ds : {"/bodies/ws1/y", "/contact/ws1/left/Q", "/contact/ws2/right/patch0/fy",
+                         "/elements/sec_z_bogie1_l/force", "/elements/sec_bend_bogie1_l/force"})
+    EXPECT_EQ(h5test::dataset(plain, ds), h5test::dataset(shared, ds)) << ds;
+  H5Fclose(plain);
+  H5Fclose(shared);
 }
 
 TEST(Assessment, NoKeyEqualsNothingAsked) {

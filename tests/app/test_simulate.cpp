@@ -1,6 +1,7 @@
 // simulate(): output series, /stats, and failure as a result with partial output kept.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -123,4 +124,37 @@ TEST(Simulate, OutputIntervalMustFitFixedStep) {
   rb::io::ResultFile f(tmpFile("grid.h5"));
   EXPECT_THROW(rb::run::simulate(r, f), rb::InputError);
   f.finalize();
+}
+
+TEST(Simulate, ProgressLineIsOneLineRewrittenInPlace) {
+  // Shown from the start and at every output time here (the app shows it after 2 s of a run, at
+  // most every 0.25 s, and only when stderr is a terminal).
+  const std::string path = tmpFile("progress.h5");
+  auto stderrOf = [&](bool progress, double after) {
+    Oscillator sys;
+    rb::run::SimulationRequest r = request(sys, "abm");
+    r.progress = progress;
+    r.progress_after = after;
+    r.progress_every = 0.0;
+    rb::io::ResultFile f(path);
+    testing::internal::CaptureStderr();
+    const auto res = rb::run::simulate(r, f);
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_TRUE(res.ok) << res.message;
+    f.finalize();
+    return err;
+  };
+  const std::string line = stderrOf(true, 0.0);
+  EXPECT_EQ(std::count(line.begin(), line.end(), '\r'), 200);  // one per output time after t0
+  EXPECT_EQ(std::count(line.begin(), line.end(), '\n'), 1);    // ended once, after the run
+  ASSERT_FALSE(line.empty());
+  EXPECT_EQ(line.back(), '\n');
+  const std::string last = line.substr(line.rfind('\r'));
+  EXPECT_NE(last.find("t =    2.000 s"), std::string::npos) << last;
+  EXPECT_NE(last.find("s =     40.0 m"), std::string::npos) << last;  // distance 20 t
+  EXPECT_NE(last.find("x real time"), std::string::npos) << last;
+  EXPECT_NE(last.find(" evaluations"), std::string::npos) << last;
+  // Not asked, or a run shorter than the delay: nothing at all.
+  EXPECT_EQ(stderrOf(false, 0.0), "");
+  EXPECT_EQ(stderrOf(true, 1e9), "");
 }

@@ -1,6 +1,5 @@
 #include "workbench/app/critical_speed.hpp"
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -506,45 +505,6 @@ bool complete(const CriticalSpeedOptions& o, const Search& s) {
 }
 
 }  // namespace
-
-CLI::App* addCriticalSpeedCommand(CLI::App& app, CriticalSpeedOptions& o) {
-  auto* c = addScenarioCommand(app, "critical-speed",
-                               "nonlinear critical speed: ramp-down or bisection, bifurcation "
-                               "diagram",
-                               o);
-  c->add_option("--method", o.method, "ramp, bisection or both")
-      ->check(CLI::IsMember({"ramp", "bisection", "both"}));
-  c->add_option("--criterion", o.criterion, "amplitude or en14363")
-      ->check(CLI::IsMember({"amplitude", "en14363"}));
-  c->add_option("--contact", o.contact,
-                "contact method kec, lut or elastic (default: the scenario's)");
-  c->add_flag("--no-plots", o.no_plots, "no figures");
-  c->add_option("--from", o.from,
-                "start speed [m/s], (0, 200] (default: the scene's speed, then x1.2 until "
-                "hunting)")
-      ->each([&o](const std::string&) { o.from_given = true; });
-  c->add_option("--to", o.to,
-                "end speed of the ramp and low end of the bracket [m/s], (0, 200] "
-                "(default: half the start speed)")
-      ->each([&o](const std::string&) { o.to_given = true; });
-  c->add_option("--max-speed", o.max_speed, "highest probe without --from [m/s], (0, 200] (150)");
-  c->add_option("--kick", o.kick,
-                "lateral offset of the first wheelset at t = 0 [m], 0 < |kick| <= 0.02 (0.005)");
-  c->add_option("--deceleration", o.deceleration,
-                "deceleration of the ramp [m/s^2], [0.05, 20] (0.5)");
-  c->add_option("--duration", o.duration, "duration of a constant-speed run [s], <= 600 (10)");
-  c->add_option("--window", o.window, "amplitude window [s], >= 0.05 (1)");
-  c->add_option("--transient", o.transient, "time after the kick left out [s] (1)");
-  c->add_option("--threshold", o.threshold,
-                "limit-cycle amplitude threshold [m], [1e-7, 0.02] (1e-4; 1e-3 with "
-                "irregularities)");
-  c->add_option("--decay", o.decay, "decay factor last/middle window of a stable run (0.8)");
-  c->add_option("--tolerance", o.tolerance,
-                "bracket width of the bisection [m/s], at least 1e-4 x the highest speed "
-                "(--from, else --max-speed) (0.5)");
-  c->add_flag("--irregular", o.irregular, "keep the scenario's track irregularities");
-  return c;
-}
 
 double thresholdOf(const CriticalSpeedOptions& o, bool irregular_track) {
   if (o.threshold) return *o.threshold;

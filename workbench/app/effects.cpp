@@ -1,6 +1,5 @@
 #include "workbench/app/effects.hpp"
 
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -112,32 +111,6 @@ void writeSceneEffects(const fs::path& dir, const scenario::ScenarioSpec& spec) 
 }
 
 }  // namespace
-
-CLI::App* addEffectsCommand(CLI::App& app, EffectsOptions& o) {
-  auto* c = addScenarioCommand(
-      app, "effects",
-      "each optional effect of the scene switched off in turn: what it costs (instructions per "
-      "evaluation) and what it changes in the answer",
-      o);
-  c->add_option("--repeats", o.repeats,
-                "runs per case (1..100), CPU time per evaluation is their median")
-      ->capture_default_str();
-  c->add_option("--duration", o.duration,
-                "simulated time of every case [s] > 0, on the track (default: the scene's)");
-  c->add_option("--distance", o.distance,
-                "distance of every case [m] > 0, on the track (default: the scene's)");
-  c->add_option("--cost-duration", o.cost_duration,
-                "simulated time of each case's callgrind run [s], on the track")
-      ->capture_default_str();
-  for (const char* name : {"--repeats", "--duration", "--distance", "--cost-duration"})
-    c->get_option(name)->each([&o, name](const std::string&) { o.given.insert(name); });
-  c->add_flag("--no-callgrind", o.no_callgrind, "skip the instruction counts (valgrind)");
-  c->add_flag("--quick", o.quick, "a smoke test: 0.2 s, one repeat, no callgrind");
-  c->add_option("--quantities", o.quantities,
-                "change in answer over every wheelset: y, yaw, Q, Fy (comma separated)")
-      ->capture_default_str();
-  return c;
-}
 
 int runEffects(const EffectsOptions& options) {
   checkOptions(options);

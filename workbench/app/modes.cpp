@@ -1,6 +1,5 @@
 #include "workbench/app/modes.hpp"
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -192,23 +191,6 @@ io::ModesSummary summaryOf(const stability::CriticalSpeed& c, const stability::A
 }
 
 }  // namespace
-
-CLI::App* addModesCommand(CLI::App& app, ModesOptions& o) {
-  auto* c = addScenarioCommand(
-      app, "modes", "linearised stability: modes, damping versus speed, linear critical speed", o);
-  c->add_option("--speeds", o.speeds,
-                "speeds a:b:n [m/s]: 0 < a <= b <= 200, n <= 200 (default: the scenario's speed)");
-  c->add_option("--contact", o.contact,
-                "contact method kec, lut or elastic (default: the scenario's)");
-  c->add_flag("--no-plots", o.no_plots, "no figures");
-  c->add_option("--distance", o.distance,
-                "travelled distance [m] of the linearisation point, on the track (default 0: the "
-                "start; in a constant-radius curve the steady state is the curving equilibrium)");
-  c->add_option("--fd-scale", o.fd_scale,
-                "factor on the finite-difference steps of the Jacobian (default 1: 1e-8 m/rad, "
-                "1e-7 m/s, 0.01 N)");
-  return c;
-}
 
 namespace {
 

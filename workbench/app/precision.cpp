@@ -1,6 +1,5 @@
 #include "workbench/app/precision.hpp"
 
-#include <CLI/CLI.hpp>
 #include <functional>
 
 #include <algorithm>
@@ -171,72 +170,6 @@ std::vector<std::string> plotArgs(const Plan& p, const PrecisionOptions& o, cons
 }
 
 }  // namespace
-
-namespace {
-
-// Records that `option` was typed (PrecisionOptions::given).
-std::function<void(const std::string&)> markGiven(PrecisionOptions& o, const std::string& option) {
-  return [&o, option](const std::string&) { o.given.insert(option); };
-}
-
-}  // namespace
-
-CLI::App* addPrecisionCommand(CLI::App& app, PrecisionOptions& o) {
-  auto* c = addScenarioCommand(
-      app, "precision",
-      "what accuracy costs in time: a verified reference, contact methods x integrators x "
-      "steps / tolerances, errors, Pareto fronts and the cheapest setting per accuracy level",
-      o);
-  c->add_option("--methods", o.methods,
-                "contact methods, e.g. kec,lut,elastic (default: the scenario's and the other "
-                "constraint method; an elastic scenario: elastic)");
-  c->add_option("--model-reference", o.model_reference,
-                "a contact method whose verified reference the other models' references are "
-                "compared with: their model error beside the integration and table errors "
-                "(e.g. elastic; added to --methods)");
-  c->add_option("--integrators", o.integrators,
-                "integrators of the matrix: rk4,abm,dopri5,bdf,ida (default rk4,abm,dopri5,bdf)");
-  c->add_option("--steps", o.steps,
-                "fixed-step ladder [s], each dividing the output interval and at most "
-                "run.output.max_samples steps per run (default 2e-3,1e-3,5e-4,2.5e-4,1.25e-4)");
-  c->add_option("--tolerances", o.tolerances,
-                "tolerance ladder, rtol = atol, each in [1e-14, 1) (default 1e-3,1e-4,...,1e-8)");
-  c->add_option("--quantities", o.quantities,
-                "error quantities: y, yaw (every wheelset; guided: every body), Q, Fy, Y, YQ "
-                "(every wheel; Y/Q of EN 14363), BODY.y|z|roll|pitch|yaw (default y,yaw)");
-  c->add_option("--levels", o.levels,
-                "accuracy levels of the recommendation, in the first quantity's display unit "
-                "(default 1,0.1,0.01 mm)");
-  c->add_option("--repeats", o.repeats,
-                "runs per setting (1..100); the cost is their median CPU time")
-      ->capture_default_str();
-  c->add_option("--distance", o.distance,
-                "run distance [m] > 0, on the track (shortens the scenario's run)");
-  c->add_option("--duration", o.duration,
-                "run duration [s] > 0, on the track (shortens the scenario's run)");
-  c->add_option("--budget", o.budget,
-                "wall-time target [s]: later rungs of a ladder whose estimated cost does not fit "
-                "are skipped (docs/precision.md)");
-  c->add_option("--reference-methods", o.reference_methods,
-                "the two integrators of the verified reference (default bdf,dopri5)");
-  c->add_option("--reference-tol", o.reference_tol, "the references' rtol (atol = rtol / 10)")
-      ->capture_default_str();
-  c->add_option("--reference-limit", o.reference_limit,
-                "largest difference of the two references that verifies them, display units "
-                "(default: the smallest level / 10)");
-  c->add_flag("--quick", o.quick,
-              "a tiny matrix (the scenario's method; abm and dopri5, two settings each; 1 "
-              "repeat) for tests");
-  c->add_flag("--refine", o.refine, "also run the matrix on the refined contact tables");
-  c->add_flag("--callgrind", o.callgrind,
-              "count the instructions of the recommended settings under valgrind's callgrind");
-  for (const char* name :
-       {"--methods", "--model-reference", "--integrators", "--steps", "--tolerances",
-        "--quantities", "--levels", "--repeats", "--distance", "--duration", "--budget",
-        "--reference-methods", "--reference-tol", "--reference-limit", "--jobs"})
-    c->get_option(name)->each(markGiven(o, name));
-  return c;
-}
 
 int runPrecision(const PrecisionOptions& given) {
   const auto start = std::chrono::steady_clock::now();

@@ -1,6 +1,8 @@
 #pragma once
 // What the commands that run variants of one scenario (precision, stress, effects) have in common:
 // the scenario, the overrides applied to every variant, the output folder and the runs at once.
+// The command lines of effects, critical-speed, modes, precision and stress (declared in their
+// own headers) are defined with addScenarioCommand, in scenario_command.cpp.
 #include <string>
 #include <vector>
 

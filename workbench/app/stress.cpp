@@ -1,6 +1,5 @@
 #include "workbench/app/stress.hpp"
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -20,43 +19,6 @@
 namespace rb::app {
 
 namespace fs = std::filesystem;
-
-CLI::App* addStressCommand(CLI::App& app, StressOptions& o) {
-  auto* c = addScenarioCommand(
-      app, "stress",
-      "hardened variants of a scenario against their own reference: the stability map", o);
-  c->add_option("--axes", o.axes,
-                "axes to harden along (default all that apply): nominal, flange_stiffness, "
-                "transition, speed, irregularity, friction, curve_radius")
-      ->delimiter(',');
-  c->add_option("--values", o.values,
-                "values of one axis: AXIS=v1,v2,... (flange_stiffness [N/m^1.5], transition "
-                "[m], friction [-]; speed, irregularity, curve_radius: factors on the nominal); at "
-                "most 20 values per axis, 1000 runs in all")
-      ->allow_extra_args(false);
-  c->add_option(
-       "--integrators", o.integrators,
-       "at most 10 settings METHOD:VALUE[:paper] (step [s] of rk4/abm, tolerance in [1e-14, 1) of "
-       "dopri5/bdf/ida; "
-       "default rk4:1e-3,abm:1e-3,dopri5:1e-6,bdf:1e-6)")
-      ->delimiter(',');
-  c->add_option("--reference", o.reference, "the reference setting of every hardened case")
-      ->capture_default_str();
-  c->add_option("--tolerance", o.tolerance,
-                "largest wheelset lateral error [mm] against the reference of an ok run")
-      ->capture_default_str();
-  c->add_option("--run-timeout", o.run_timeout,
-                "wall time [s] after which a run is killed and classified as failed badly (a "
-                "hang); 0: no limit")
-      ->capture_default_str();
-  c->add_flag("--quick", o.quick,
-              "the hardest value of each axis, rk4:1e-3 and dopri5:1e-6, runs of at most 2 s");
-  c->add_option("--expect", o.expect,
-                "expectation file: AXIS, VALUE, INTEGRATOR, OUTCOME[|OUTCOME] per line; exit 5 "
-                "and the mismatches when an outcome differs")
-      ->check(CLI::ExistingFile);
-  return c;
-}
 
 namespace {
 

@@ -140,7 +140,7 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
   bool printed = false;
   auto progress = [&](double t, const integ::Stats& s) {
     double now = wallNow();
-    if (!r.progress || now - start < 2.0 || now - lastPrint < 0.25) return;
+    if (!r.progress || now - start < r.progress_after || now - lastPrint < r.progress_every) return;
     lastPrint = now;
     printed = true;
     double rtf = (t - r.t0) / std::max(now - start, 1e-9);

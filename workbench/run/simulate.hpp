@@ -46,6 +46,9 @@ struct SimulationRequest {
   // optional (vehicle runs).
   std::function<double(double, const Eigen::VectorXd&)> distance;
   bool progress = false;  // progress line on stderr (the app enables it for terminals)
+  // The line appears only on runs longer than progress_after [s] of wall time (a short run prints
+  // its summary alone) and is rewritten at most every progress_every [s].
+  double progress_after = 2.0, progress_every = 0.25;
   // Optional: called with each sample after the finiteness check; a non-empty return is a
   // failure message that stops the run (a model leaving its validity, seen in its outputs).
   std::function<std::string(double t, const double* values)> check;

@@ -7,6 +7,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "workbench/core/eigen_decomposition.hpp"
+
 namespace rb::run {
 namespace {
 
@@ -109,8 +111,8 @@ StepLimit fixedStepLimit(integ::OdeSystem& ode, double t0, const Eigen::VectorXd
     out.why_not = "non-finite Jacobian";
     return out;
   }
-  Eigen::EigenSolver<Eigen::MatrixXd> eig(jac, true);
-  if (eig.info() != Eigen::Success) {
+  const EigenDecomposition eig = eigenDecomposition(jac, true);
+  if (!eig.ok) {
     out.why_not = "eigenvalues did not converge";
     return out;
   }
@@ -121,12 +123,11 @@ StepLimit fixedStepLimit(integ::OdeSystem& ode, double t0, const Eigen::VectorXd
   // region's smallest exit radius cannot lower it (and a conjugate gives the same limit).
   std::vector<int> order(static_cast<std::size_t>(n));
   for (int k = 0; k < n; ++k) order[static_cast<std::size_t>(k)] = k;
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return std::abs(eig.eigenvalues()(a)) > std::abs(eig.eigenvalues()(b));
-  });
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return std::abs(eig.values(a)) > std::abs(eig.values(b)); });
   const double rmin = smallestExitRadius(method);
   for (const int k : order) {
-    const std::complex<double> lam = eig.eigenvalues()(k);
+    const std::complex<double> lam = eig.values(k);
     if (lam.real() < 0.0) out.stiffest = std::max(out.stiffest, std::abs(lam));
     if (lam.imag() < 0.0 || out.h_max * std::abs(lam) < rmin) continue;
     const double h = stableStep(method, lam);
@@ -138,7 +139,7 @@ StepLimit fixedStepLimit(integ::OdeSystem& ode, double t0, const Eigen::VectorXd
   }
   if (limiting >= 0) {
     Eigen::Index i = 0;
-    eig.eigenvectors().col(limiting).cwiseAbs().maxCoeff(&i);
+    eig.vectors.col(limiting).cwiseAbs().maxCoeff(&i);
     out.mode = ode.componentName(static_cast<int>(i));
   }
   return out;

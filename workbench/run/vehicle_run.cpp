@@ -20,6 +20,7 @@
 #include "workbench/io/track_store.hpp"
 #include "workbench/run/assessment_run.hpp"
 #include "workbench/run/simulate.hpp"
+#include "workbench/run/state_outputs.hpp"
 #include "workbench/track/samples.hpp"
 #include "workbench/vehicle/guided.hpp"
 #include "workbench/vehicle/initial_conditions.hpp"
@@ -31,16 +32,16 @@ namespace {
 using vehicle::ElementValue;
 using vehicle::Vector6d;
 
-// Absolute centre-of-mass accelerations a = Lv qddot + gamma_v of every body at (t, y), in the
-// body track-frame components [m/s^2] (NaN when the evaluation fails).
-void absoluteAccelerations(vehicle::VehicleOde& ode, double t, const double* y,
-                           std::vector<Vector6d>& qdd, std::vector<Eigen::Vector3d>& a) {
-  if (ode.bodyAccelerations(t, y, qdd) != 0) {
+// Absolute centre-of-mass accelerations a = Lv qddot + gamma_v of every body at the state, in
+// the body track-frame components [m/s^2] (NaN when the evaluation fails).
+void absoluteAccelerations(StateOutputs& state, std::vector<Eigen::Vector3d>& a) {
+  if (!state.accelerations()) {
     for (auto& v : a) v.setConstant(std::numeric_limits<double>::quiet_NaN());
     return;
   }
-  const auto& ws = ode.workspace();
-  for (std::size_t b = 0; b < a.size(); ++b) a[b] = ws.kin[b].Lv * qdd[b] + ws.kin[b].gamma_v;
+  const auto& kin = state.workspace().kin;
+  const auto& qdd = state.qdd();
+  for (std::size_t b = 0; b < a.size(); ++b) a[b] = kin[b].Lv * qdd[b] + kin[b].gamma_v;
 }
 
 std::string kindName(vehicle::BodyKind k) {
@@ -331,6 +332,17 @@ void writeContactStats(const Model& m, const dynamics::ContactStats& cs,
                            " where the creep law is calibrated (docs/contact_dynamics.md)");
 }
 
+// The values of the output elements at the state (deflection, force of each) into out.
+void sampleElements(StateOutputs& state, std::span<const vehicle::ElementId> ids,
+                    std::vector<ElementValue>& values, double*& out) {
+  if (ids.empty()) return;
+  state.elements(ids, values);
+  for (const auto& e : values) {
+    *out++ = e.d;
+    *out++ = e.force;
+  }
+}
+
 // A point fixed on a body at x offset r_x from its centre of mass (at its height).
 struct BodyPoint {
   int body = 0;
@@ -568,8 +580,7 @@ AssessmentSetup setupAssessment(const Model& m, dynamics::ContactVehicleOde* con
 }
 
 // a_P = a_cm + alpha x r + omega x (omega x r) of the point r = (r_x, 0, 0) of a body, in the
-// body's track-frame components (rigid-body kinematics; kin holds the state of the last
-// bodyAccelerations call).
+// body's track-frame components (rigid-body kinematics at the state of qdd).
 Eigen::Vector3d pointAcceleration(const vehicle::BodyKinematics& k, const Vector6d& qdd,
                                   double r_x) {
   const Eigen::Vector3d a_cm = k.Lv * qdd + k.gamma_v;
@@ -579,10 +590,10 @@ Eigen::Vector3d pointAcceleration(const vehicle::BodyKinematics& k, const Vector
   return a_cm + k.body.A * rel;
 }
 
-void sampleBodies(AssessmentSetup& as, vehicle::VehicleOde& ode, double t, const double* y,
-                  std::vector<Vector6d>& qdd) {
-  const bool ok = ode.bodyAccelerations(t, y, qdd) == 0;
-  const auto& kin = ode.workspace().kin;
+void sampleBodies(AssessmentSetup& as, StateOutputs& state) {
+  const bool ok = state.accelerations();
+  const auto& kin = state.workspace().kin;
+  const auto& qdd = state.qdd();
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t k = 0; k < as.bogie_points.size(); ++k) {
     const auto& p = as.bogie_points[k];
@@ -601,9 +612,9 @@ void sampleBodies(AssessmentSetup& as, vehicle::VehicleOde& ode, double t, const
   }
 }
 
-void sampleContact(AssessmentSetup& as, dynamics::ContactVehicleOde& contact, double t,
-                   const double* y, std::vector<dynamics::WheelOutput>& wo) {
-  const bool ok = contact.wheelOutputs(t, y, wo) == 0;
+void sampleContact(AssessmentSetup& as, StateOutputs& state) {
+  const bool ok = state.wheels();
+  const auto& wo = state.wheelOutputs();
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t k = 0; k < as.signals.wheels.size(); ++k) {
     auto& w = as.signals.wheels[k];
@@ -621,14 +632,12 @@ void sampleContact(AssessmentSetup& as, dynamics::ContactVehicleOde& contact, do
 
 // Not inlined: its cost stays a named function (tests/stages: what a scene without assessment
 // pays for it).
-[[gnu::noinline]] void sampleAssessment(AssessmentSetup& as, vehicle::VehicleOde& ode,
-                                        dynamics::ContactVehicleOde* contact, double t,
-                                        const double* y, double s, std::vector<Vector6d>& qdd,
-                                        std::vector<dynamics::WheelOutput>& wo) {
+[[gnu::noinline]] void sampleAssessment(AssessmentSetup& as, StateOutputs& state, bool contact,
+                                        double t, double s) {
   as.signals.time.push_back(t);
   as.signals.distance.push_back(s);
-  if (contact != nullptr && !as.signals.wheels.empty()) sampleContact(as, *contact, t, y, wo);
-  if (!as.bogie_points.empty() || !as.floor_points.empty()) sampleBodies(as, ode, t, y, qdd);
+  if (contact && !as.signals.wheels.empty()) sampleContact(as, state);
+  if (!as.bogie_points.empty() || !as.floor_points.empty()) sampleBodies(as, state);
 }
 
 bool allFinite(const AssessmentSignals& s) {
@@ -791,36 +800,38 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   if (contact) addContactChannels(m, f, r.outputs);
 
   const bool acc = m.spec.run.body_accelerations;
-  std::vector<Vector6d> q(nb), qdd(nb);
+  std::vector<Vector6d> q(nb);
   std::vector<Eigen::Vector3d> a(nb);
   std::vector<ElementValue> values(m.output_elements.size());
-  std::vector<dynamics::WheelOutput> wo(contact ? 2 * m.contact->wheelsets.size() : 0);
+  // The output series and the assessment's samples share the model's outputs of a state they
+  // both observe.
+  StateOutputs state(*ode, contact);
   CreepageMaximum creepage;
   const bool patches = m.spec.run.output_patches;
   const std::size_t wheelValues = patches ? kWheelValues : kNq;
   r.sample = [&](double t, const Eigen::VectorXd& y, double* out) {
     *out++ = v.speedAt(t);
+    state.at(t, y.data());
     ode->bodyCoordinates(t, y.data(), q);
-    if (acc) absoluteAccelerations(*ode, t, y.data(), qdd, a);
+    if (acc) absoluteAccelerations(state, a);
     for (std::size_t b = 0; b < nb; ++b) {
       for (int k = 0; k < 6; ++k) *out++ = q[b][k];
       if (acc)
         for (int k = 0; k < 3; ++k) *out++ = a[b][k];
     }
-    if (!values.empty()) {
-      ode->elementOutputs(t, y.data(), m.output_elements, values);
-      for (const auto& e : values) {
-        *out++ = e.d;
-        *out++ = e.force;
-      }
+    if (!contact) {
+      sampleElements(state, m.output_elements, values, out);
+      return;
     }
-    if (!contact) return;
-    if (contact->wheelOutputs(t, y.data(), wo) != 0) {
-      for (std::size_t k = 0; k < wo.size() * wheelValues; ++k)
+    // The wheel outputs first: their evaluation also gives the element values.
+    const bool wheels = state.wheels();
+    sampleElements(state, m.output_elements, values, out);
+    if (!wheels) {
+      for (std::size_t k = 0; k < state.wheelOutputs().size() * wheelValues; ++k)
         *out++ = std::numeric_limits<double>::quiet_NaN();
       return;
     }
-    sampleWheels(wo, t, out, creepage, patches);
+    sampleWheels(state.wheelOutputs(), t, out, creepage, patches);
   };
   f.attr("/", "solver", m.solver.method);
   f.attr("/", "contact_method",
@@ -835,12 +846,11 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   // The assessment samples its own signals at its own interval (nothing when not asked).
   AssessmentSetup as = setupAssessment(m, contact, out.assessment_notes);
   ExtraSampling extra;
-  std::vector<Vector6d> aqdd(nb);
-  std::vector<dynamics::WheelOutput> awo(wo.size());
   if (as.spec.any()) {
     extra.every = as.signals.dt;
     extra.sample = [&](double t, const Eigen::VectorXd& y) {
-      sampleAssessment(as, *ode, contact, t, y.data(), lead + v.travel(t), aqdd, awo);
+      state.at(t, y.data());
+      sampleAssessment(as, state, contact != nullptr, t, lead + v.travel(t));
     };
     r.extra = &extra;
   }

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <optional>
 
+#include "workbench/core/eigen_decomposition.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/contact_model.hpp"
@@ -197,11 +198,11 @@ struct Eig {
 };
 
 Eig eigen(const Eigen::MatrixXd& J, bool vectors) {
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(J, vectors);
-  if (es.info() != Eigen::Success) throw Failure("the eigenvalue solver did not converge");
+  EigenDecomposition es = eigenDecomposition(J, vectors);
+  if (!es.ok) throw Failure("the eigenvalue solver did not converge");
   Eig e;
-  e.values = es.eigenvalues();
-  if (vectors) e.vectors = es.eigenvectors();
+  e.values = std::move(es.values);
+  if (vectors) e.vectors = std::move(es.vectors);
   return e;
 }
 

@@ -5,6 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "workbench/core/eigen_decomposition.hpp"
+
 namespace rb::vehicle {
 
 Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const Eigen::VectorXd& y,
@@ -55,7 +57,7 @@ Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const 
 
 std::vector<Mode> guidedModes(GuidedVehicleOde& ode, double t, const Eigen::VectorXd& y) {
   const Eigen::MatrixXd J = finiteDifferenceJacobian(ode, t, y);
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(J, true);
+  const EigenDecomposition es = eigenDecomposition(J, true);
   const VehicleLayout& l = ode.layout();
   const int n = 5 * l.n_free;
   // Diagonal mass weights of the free coordinates at y.
@@ -67,8 +69,8 @@ std::vector<Mode> guidedModes(GuidedVehicleOde& ode, double t, const Eigen::Vect
     for (int c = 0; c < 5; ++c) w[5 * k + c] = ode.workspace().mass[b](1 + c, 1 + c);
   }
   std::vector<Mode> out;
-  for (int i = 0; i < es.eigenvalues().size(); ++i) {
-    const std::complex<double> lam = es.eigenvalues()[i];
+  for (int i = 0; i < es.values.size(); ++i) {
+    const std::complex<double> lam = es.values[i];
     // Oscillatory: Im > 0, and not a pair split off a double real root by round-off of the
     // finite-difference Jacobian (such a pair has Im / |lambda| of order sqrt(eps_J) ~ 1e-5 and a
     // damping ratio of 1 to 6 digits; a physical mode with zeta < 0.9999995 passes).
@@ -78,7 +80,7 @@ std::vector<Mode> guidedModes(GuidedVehicleOde& ode, double t, const Eigen::Vect
     m.frequency_hz = lam.imag() / (2.0 * std::numbers::pi);
     m.undamped_hz = std::abs(lam) / (2.0 * std::numbers::pi);
     m.damping_ratio = -lam.real() / std::abs(lam);
-    m.shape = es.eigenvectors().col(i);
+    m.shape = es.vectors.col(i);
     m.participation.resize(n);
     for (int c = 0; c < n; ++c) m.participation[c] = std::norm(m.shape[c]) * w[c];
     const double sum = m.participation.sum();
