@@ -110,9 +110,9 @@ TEST(Assessment, NothingAskedWritesNothingAndCostsNothing) {
 
 TEST(Assessment, SamplesAtOutputTimesShareTheOutputsEvaluations) {
   // Outputs with body accelerations and element values, and the assessment sampled at the output
-  // times: per output time one evaluation for the wheels (which also gives the element values and
-  // the assessment's wheel signals) and one for the accelerations (also the assessment's bogie
-  // and floor points), so one evaluation more per output time than the wheels and elements alone.
+  // times: per output time one evaluation gives the wheels, the element values, the accelerations
+  // and the assessment's wheel, bogie and floor signals (ContactVehicleOde::outputs), so as many
+  // evaluations as the wheels and elements alone.
   const std::string scen = "tests/app/data/wheel_forces/all_outputs.lua";
   hid_t plain = run(scen, "plain.h5",
                     {"run.output.body_accelerations=false", "run.assessment.safety=false",
@@ -126,7 +126,8 @@ TEST(Assessment, SamplesAtOutputTimesShareTheOutputsEvaluations) {
   EXPECT_GT(attr(shared, "/stats", "assessment_samples"), 0.0);
   EXPECT_EQ(attr(shared, "/stats", "rhs_evals"), attr(plain, "/stats", "rhs_evals"));
   EXPECT_EQ(attr(shared, "/stats", "model_evaluations"),
-            attr(plain, "/stats", "model_evaluations") + static_cast<double>(outputs));
+            attr(plain, "/stats", "model_evaluations"));
+  EXPECT_GT(outputs, 0U);
   for (const char* ds : {"/bodies/ws1/y", "/contact/ws1/left/Q", "/contact/ws2/right/patch0/fy",
                          "/elements/sec_z_bogie1_l/force", "/elements/sec_bend_bogie1_l/force"})
     EXPECT_EQ(h5test::dataset(plain, ds), h5test::dataset(shared, ds)) << ds;

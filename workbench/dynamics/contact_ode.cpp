@@ -240,6 +240,16 @@ int ContactVehicleOde::wheelOutputs(double t, const double* y, std::span<WheelOu
   return 0;
 }
 
+int ContactVehicleOde::outputs(double t, const double* y, std::span<WheelOutput> wheels,
+                               std::span<vehicle::Vector6d> qdd) {
+  const int rc = evaluate(t, y, work_->scratch.data(), EvalMode::Output);
+  if (rc != 0) return rc;
+  for (std::size_t i = 0; i < wheels.size() && i < work_->wheels.size(); ++i)
+    wheels[i] = work_->wheels[i];
+  for (std::size_t b = 0; b < qdd.size() && b < work_->qdd.size(); ++b) qdd[b] = work_->qdd[b];
+  return 0;
+}
+
 int ContactVehicleOde::elementOutputs(double t, const double* y,
                                       std::span<const vehicle::ElementId> ids,
                                       std::span<vehicle::ElementValue> out) {

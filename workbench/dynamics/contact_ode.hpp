@@ -175,6 +175,9 @@ class ContactVehicleOde final : public vehicle::VehicleOde {
   // Accelerations (sddot = a, y, z, roll, pitch, yaw) of every body, qdd.size() == bodies; for
   // wheelsets z and roll are the constraint accelerations (G qddot = gamma).
   int bodyAccelerations(double t, const double* y, std::span<vehicle::Vector6d> qdd) override;
+  // wheelOutputs and bodyAccelerations from one evaluation (the same values as the two calls).
+  int outputs(double t, const double* y, std::span<WheelOutput> wheels,
+              std::span<vehicle::Vector6d> qdd);
   // Element values of a full evaluation at (t, y); NaN force and deflection when it fails.
   int elementOutputs(double t, const double* y, std::span<const vehicle::ElementId> ids,
                      std::span<vehicle::ElementValue> out) override;

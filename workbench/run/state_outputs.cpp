@@ -27,8 +27,17 @@ void StateOutputs::at(double t, const double* y) {
   acc_ = wheels_done_ = Done::No;
 }
 
+// On wheel/rail contact one Output evaluation gives the wheel outputs and the accelerations
+// together (ContactVehicleOde::outputs): both are taken from it.
+void StateOutputs::contactOutputs() {
+  ++evaluations_;
+  const Done d = contact_->outputs(t_, y_.data(), wheels_, qdd_) == 0 ? Done::Ok : Done::Failed;
+  acc_ = wheels_done_ = d;
+}
+
 bool StateOutputs::accelerations() {
   RB_CHECK(valid_, "StateOutputs: no state");
+  if (acc_ == Done::No && contact_ != nullptr) contactOutputs();
   if (acc_ == Done::No) {
     ++evaluations_;
     acc_ = ode_.bodyAccelerations(t_, y_.data(), qdd_) == 0 ? Done::Ok : Done::Failed;
@@ -39,10 +48,7 @@ bool StateOutputs::accelerations() {
 bool StateOutputs::wheels() {
   RB_CHECK(valid_, "StateOutputs: no state");
   if (contact_ == nullptr) return false;
-  if (wheels_done_ == Done::No) {
-    ++evaluations_;
-    wheels_done_ = contact_->wheelOutputs(t_, y_.data(), wheels_) == 0 ? Done::Ok : Done::Failed;
-  }
+  if (wheels_done_ == Done::No) contactOutputs();
   return wheels_done_ == Done::Ok;
 }
 

@@ -1,9 +1,10 @@
 #pragma once
 // The model's outputs at one observed state (t, y), shared by everything that samples it: the
 // output series and the assessment's signals observe the same step ends, and each would otherwise
-// ask the model for its own evaluation of the same state. Here each kind of output is evaluated at
-// most once per state: wheel and patch outputs one model evaluation, body accelerations one, and
-// the element values come with either (or cost one of their own when neither was asked).
+// ask the model for its own evaluation of the same state. Here each state costs at most one model
+// evaluation on wheel/rail contact (wheel and patch outputs and body accelerations come from the
+// same one, ContactVehicleOde::outputs) and one per kind for a guided vehicle; the element values
+// come with either (or cost one of their own when neither was asked).
 //
 // Why sharing changes no result: an output evaluation leaves what the integration depends on
 // unchanged (the normal-force memory is kept), and evaluating the same state again gives the same
@@ -49,6 +50,7 @@ class StateOutputs {
 
  private:
   enum class Done : unsigned char { No, Ok, Failed };
+  void contactOutputs();
 
   vehicle::VehicleOde& ode_;
   dynamics::ContactVehicleOde* contact_;
