@@ -1,6 +1,7 @@
 #include "workbench/contact/elastic_search.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -20,12 +21,17 @@ constexpr std::size_t kMinBlock = 8;      // shorter blocks are scanned without 
 constexpr double kMaxPruneStep = 0.3e-3;  // [m] coarser scans are not pruned
 constexpr double kRailBinPad = 10e-3;     // [m] rail bins beyond the rail ends (extrapolation)
 
-// Upper bounds of |h'|, |h''|, |h'''| of a profile over [lo, hi]: h'' is continuous and piecewise
-// linear between the knots, so its values at the knots inside and at 16 sub-points (all sorted)
-// bound it and their difference quotients are the exact h''' of the knot intervals; h' is bounded
-// by its values there plus max |h''| times half the largest spacing.
-void profileBounds(const profiles::Profile& p, const std::vector<double>& knots, double lo,
-                   double hi, double& d1, double& d2, double& d3) {
+// Bounds of a profile over [lo, hi]: upper bounds of |h'|, |h''|, |h'''| and of h'' and -h''
+// (signed). h'' is continuous and piecewise linear between the knots, so its values at the knots
+// inside and at 16 sub-points (all sorted) bound it and their difference quotients are the exact
+// h''' of the knot intervals; h' is bounded by its values there plus max |h''| times half the
+// largest spacing.
+struct ProfileBound {
+  double d1 = 0.0, d2 = 0.0, d3 = 0.0;
+  double d2_hi = 0.0, d2_neg = 0.0;  // h'' <= d2_hi, -h'' <= d2_neg
+};
+ProfileBound profileBounds(const profiles::Profile& p, const std::vector<double>& knots, double lo,
+                           double hi) {
   constexpr int kSub = 16;
   std::array<double, kSub + 1 + 64> pts{};
   std::size_t n = 0;
@@ -35,22 +41,29 @@ void profileBounds(const profiles::Profile& p, const std::vector<double>& knots,
     while (k != knots.end() && *k < x && n + 1 < pts.size()) pts[n++] = *k++;
     if (n < pts.size()) pts[n++] = x;
   }
-  d1 = d2 = d3 = 0.0;
+  ProfileBound b;
   double gmax = 0.0, prev_x = 0.0, prev_d2 = 0.0;
+  double d2_hi = -kInf, d2_lo = kInf;
   for (std::size_t j = 0; j < n; ++j) {
     const profiles::ProfilePoint q = p.at(pts[j]);
-    d1 = std::max(d1, std::abs(q.dh));
-    d2 = std::max(d2, std::abs(q.d2h));
+    b.d1 = std::max(b.d1, std::abs(q.dh));
+    b.d2 = std::max(b.d2, std::abs(q.d2h));
+    d2_hi = std::max(d2_hi, q.d2h);
+    d2_lo = std::min(d2_lo, q.d2h);
     if (j > 0 && pts[j] > prev_x) {
-      d3 = std::max(d3, std::abs(q.d2h - prev_d2) / (pts[j] - prev_x));
+      b.d3 = std::max(b.d3, std::abs(q.d2h - prev_d2) / (pts[j] - prev_x));
       gmax = std::max(gmax, pts[j] - prev_x);
     }
     prev_x = pts[j];
     prev_d2 = q.d2h;
   }
-  d1 = 1.01 * (d1 + 0.5 * d2 * gmax) + 1e-9;
-  d2 = 1.01 * d2 + 1e-9;
-  d3 = 1.01 * d3 + 1e-9;
+  b.d1 = 1.01 * (b.d1 + 0.5 * b.d2 * gmax) + 1e-9;
+  // (The signed bounds get 1 % of max |h''| as margin, like the magnitude bound.)
+  b.d2_hi = d2_hi + 0.01 * b.d2 + 1e-9;
+  b.d2_neg = -d2_lo + 0.01 * b.d2 + 1e-9;
+  b.d2 = 1.01 * b.d2 + 1e-9;
+  b.d3 = 1.01 * b.d3 + 1e-9;
+  return b;
 }
 
 }  // namespace
@@ -124,6 +137,8 @@ ElasticContactSearch::ElasticContactSearch(WheelRailPair pair, ElasticSearchSpec
   if (!(spec_.sample_step > 0.0) || !(spec_.newton_tol > 0.0) || spec_.newton_max_iter < 1) {
     throw InputError(SourceLoc{}, "elastic contact search: sample_step and newton_tol must be > 0");
   }
+  static std::atomic<std::uint64_t> models{0};
+  id_ = ++models;
   sigma_ = pair_.side == Side::Left ? 1.0 : -1.0;
   cb_ = std::cos(pair_.beta);
   sb_ = sigma_ * std::sin(pair_.beta);
@@ -141,12 +156,20 @@ ElasticContactSearch::ElasticContactSearch(WheelRailPair pair, ElasticSearchSpec
   // Scan pruning bounds (scanPruned()).
   const std::vector<double> wk = w.knots();
   std::vector<double> d1(s_.size(), 0.0), d2(s_.size(), 0.0), d3(s_.size(), 0.0);
+  std::vector<double> d2_hi(s_.size(), 0.0), d2_neg(s_.size(), 0.0);
   for (std::size_t i = 0; i + 1 < s_.size(); ++i) {
-    profileBounds(w, wk, s_[i], s_[i + 1], d1[i], d2[i], d3[i]);
+    const ProfileBound b = profileBounds(w, wk, s_[i], s_[i + 1]);
+    d1[i] = b.d1;
+    d2[i] = b.d2;
+    d3[i] = b.d3;
+    d2_hi[i] = b.d2_hi;
+    d2_neg[i] = b.d2_neg;
   }
   wheel_d1_.build(d1);
   wheel_d2_.build(d2);
   wheel_d3_.build(d3);
+  wheel_d2_hi_.build(d2_hi);
+  wheel_d2_neg_.build(d2_neg);
   for (std::size_t i = 0; i < s_.size(); ++i) {
     d2h_.push_back(w.at(s_[i]).d2h);
     wheel_hmax_ = std::max(wheel_hmax_, std::abs(h_[i]));
@@ -158,14 +181,19 @@ ElasticContactSearch::ElasticContactSearch(WheelRailPair pair, ElasticSearchSpec
   rail_bin0_ = r.sMin() - kRailBinPad;
   const auto nb =
       static_cast<std::size_t>(std::ceil((r.sMax() - r.sMin() + 2.0 * kRailBinPad) / rail_bin_));
-  std::vector<double> r1(nb, 0.0), r2(nb, 0.0);
+  std::vector<double> r1(nb, 0.0), r2(nb, 0.0), r2_hi(nb, 0.0), r2_neg(nb, 0.0);
   for (std::size_t b = 0; b < nb; ++b) {
     const double u0 = rail_bin0_ + static_cast<double>(b) * rail_bin_;
-    double r3 = 0.0;
-    profileBounds(r, rk, u0, u0 + rail_bin_, r1[b], r2[b], r3);
+    const ProfileBound pb = profileBounds(r, rk, u0, u0 + rail_bin_);
+    r1[b] = pb.d1;
+    r2[b] = pb.d2;
+    r2_hi[b] = pb.d2_hi;
+    r2_neg[b] = pb.d2_neg;
   }
   rail_d1_.build(r1);
   rail_d2_.build(r2);
+  rail_d2_hi_.build(r2_hi);
+  rail_d2_neg_.build(r2_neg);
   rail_bins_ = nb;
 }
 
@@ -450,7 +478,7 @@ ElasticPatchGeometry ElasticContactSearch::describe(const PoseTrig& t, double s_
   return g;
 }
 
-void ElasticContactSearch::refineCandidates(const ElasticPose& pose, ElasticWheelGeometry& out,
+void ElasticContactSearch::refineCandidates(const PoseTrig& t, ElasticWheelGeometry& out,
                                             ElasticSearchWorkspace& ws,
                                             const ElasticWheelGeometry* seed) const {
   const std::size_t nc = ws.minima.size();
@@ -458,7 +486,6 @@ void ElasticContactSearch::refineCandidates(const ElasticPose& pose, ElasticWhee
   ws.sw.assign(nc, 0.0);
   ws.sr.assign(nc, 0.0);
   ws.ok.assign(nc, 0);
-  const PoseTrig t(pose, pair_, sigma_, spec_.angles);
   for (std::size_t k = 0; k < nc; ++k) {
     const auto i = static_cast<std::size_t>(ws.minima[k]);
     double s_w = s_[i], s_r = 0.0;
@@ -516,9 +543,8 @@ void ElasticContactSearch::refineCandidates(const ElasticPose& pose, ElasticWhee
   }
 }
 
-void ElasticContactSearch::collectPatches(const ElasticPose& pose, ElasticWheelGeometry& out,
+void ElasticContactSearch::collectPatches(const PoseTrig& t, ElasticWheelGeometry& out,
                                           ElasticSearchWorkspace& ws) const {
-  const PoseTrig t(pose, pair_, sigma_, spec_.angles);
   const std::size_t nc = ws.minima.size();
   // Shared overlap (header comment): the lowest ridge r to a neighbouring minimum j; the depths
   // below it, e_k and e_j, are each minimum's own; the common part max(0, -r) is split between
@@ -610,21 +636,66 @@ ElasticContactSearch::ScanBlock ElasticContactSearch::classifyBlock(const PoseTr
   const double r1 = rail_d1_(b_lo, b_hi), r2 = rail_d2_(b_lo, b_hi);
   const double qmax = std::sqrt(1.0 + r1 * r1);
   const double M = qmax * acc + r2 * speed * speed;
-  const double curve = 0.5 * M * half * half;
+  // The signed bound e_min <= e'' <= e_max (no wider than +-M). With U, V the rows of the
+  // rotation to the rail frame (u = U . X, v = V . X + const) and X = (h st, L, -h ct):
+  //   e'' = -(V2 - h_r' U2) ct h'' - h_r'' u'^2 + (V2 - h_r' U2) z_r + (V0 - h_r' U0) x''
+  // where z'' = -h'' ct + z_r; the first two terms are the two profiles' curvatures with their
+  // signs (they cancel on a conformal tread), bounded from the signed ranges of h'' and h_r''
+  // and of (V2 - h_r' U2) ct > 0 and u'^2, the rest in magnitude (|st| <= |q| + |sin eps|).
+  double e_min = -M, e_max = M;
+  {
+    const auto& r = t.r;
+    const double u0 = cb_ * r[1][0] + sb_ * r[2][0], u1 = cb_ * r[1][1] + sb_ * r[2][1];
+    const double u2 = cb_ * r[1][2] + sb_ * r[2][2];
+    const double v0 = -sb_ * r[1][0] + cb_ * r[2][0], v2 = -sb_ * r[1][2] + cb_ * r[2][2];
+    const double hm = wheel_hmax_;
+    const double sm = std::min(1.0, kap * d1 + std::abs(t.seps));
+    const double g_hi = v2 + r1 * std::abs(u2);
+    const double g_lo = (v2 - r1 * std::abs(u2)) * std::sqrt(1.0 - sm * sm);
+    if (g_lo > 0.0) {
+      const double w_hi = wheel_d2_hi_(a.i, b.i), w_lo = -wheel_d2_neg_(a.i, b.i);
+      const double rr_hi = rail_d2_hi_(b_lo, b_hi), rr_lo = -rail_d2_neg_(b_lo, b_hi);
+      const double t1_lo = -std::max(g_lo * w_hi, g_hi * w_hi);
+      const double t1_hi = -std::min(g_lo * w_lo, g_hi * w_lo);
+      const double du = std::abs(u0) * (d1 * sm + hm * th1) + std::abs(u2) * (d1 + hm * th1 * sm);
+      const double p_lo = std::pow(std::max(0.0, std::abs(u1) - du), 2);
+      const double p_hi = std::pow(std::abs(u1) + du, 2);
+      const double t3_lo = -std::max(rr_hi * p_lo, rr_hi * p_hi);
+      const double t3_hi = -std::min(rr_lo * p_lo, rr_lo * p_hi);
+      const double z_r = 2.0 * d1 * th1 * sm + hm * th2 * sm + hm * th1 * th1;
+      const double x2 = d2 * sm + 2.0 * d1 * th1 + hm * th2 + hm * th1 * th1 * sm;
+      // (With 0.1 % of the main terms and 1e-9 / m for the rounding of this bound.)
+      const double rest =
+          g_hi * z_r + (std::abs(v0) + r1 * std::abs(u0)) * x2 +
+          1e-3 * (std::abs(t1_lo) + std::abs(t1_hi) + std::abs(t3_lo) + std::abs(t3_hi)) + 1e-9;
+      e_min = std::max(e_min, t1_lo + t3_lo - rest);
+      e_max = std::min(e_max, t1_hi + t3_hi + rest);
+    }
+  }
+  // From an end, e >= e_end +- e'_end d + min(e_min, 0) d^2 / 2: concave in d, its minimum at
+  // d = 0 or D/2.
+  const double c_lo = 0.5 * std::min(e_min, 0.0) * half * half;
   const double e_lo =
-      std::min(std::min(a.e, a.e + a.de * half - curve), std::min(b.e, b.e - b.de * half - curve));
+      std::min(std::min(a.e, a.e + a.de * half + c_lo), std::min(b.e, b.e - b.de * half + c_lo));
   if (e_lo > 0.0) {
     lb = e_lo / qmax;
     if (lb > threshold) return ScanBlock::Skip;
   }
   // Monotonic: e' keeps its sign and dominates the term e h_r' h_r'' u' / q_r^2 (|h_r'| /
-  // q_r^2 <= 1/2); the samples then differ by far more than rounding (1e-15 m per sample).
-  const double e_abs = std::max(std::abs(a.e) + std::abs(a.de) * half + curve,
-                                std::abs(b.e) + std::abs(b.de) * half + curve);
-  const double other = 0.5 * e_abs * r2 * speed;
+  // q_r^2 <= min(|h_r'|, 1/2)); the samples then differ by far more than rounding (1e-15 m per
+  // sample).
+  const double c_abs = 0.5 * std::max(-e_min, e_max) * half * half;
+  const double e_abs = std::max(std::abs(a.e) + std::abs(a.de) * half + c_abs,
+                                std::abs(b.e) + std::abs(b.de) * half + c_abs);
+  const double other = std::min(0.5, r1) * e_abs * r2 * speed;
   const double min_slope = 1e-15 / (2.0 * half / static_cast<double>(b.i - a.i)) + other;
-  if (std::min(a.de, b.de) - M * half > min_slope) return ScanBlock::Increasing;
-  if (std::max(a.de, b.de) + M * half < -min_slope) return ScanBlock::Decreasing;
+  // e' over the block from either end: e'_a + [e_min, e_max] d, e'_b - [e_min, e_max] d.
+  const double de_lo =
+      std::min(a.de + std::min(e_min, 0.0) * half, b.de - std::max(e_max, 0.0) * half);
+  const double de_hi =
+      std::max(a.de + std::max(e_max, 0.0) * half, b.de - std::min(e_min, 0.0) * half);
+  if (de_lo > min_slope) return ScanBlock::Increasing;
+  if (de_hi < -min_slope) return ScanBlock::Decreasing;
   return ScanBlock::Scan;
 }
 
@@ -691,6 +762,25 @@ void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::
 void ElasticContactSearch::search(const ElasticPose& pose, ElasticWheelGeometry& out,
                                   ElasticSearchWorkspace& ws,
                                   const ElasticWheelGeometry* seed) const {
+  auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
+  const ElasticPose& q = ws.last_pose;
+  if (!seed && ws.last_model == id_ && bits(pose.y) == bits(q.y) && bits(pose.z) == bits(q.z) &&
+      bits(pose.phi) == bits(q.phi) && bits(pose.psi) == bits(q.psi)) {
+    out = ws.last_out;
+    return;
+  }
+  ws.last_model = 0;
+  searchFull(pose, out, ws, seed);
+  if (!seed) {
+    ws.last_model = id_;
+    ws.last_pose = pose;
+    ws.last_out = out;
+  }
+}
+
+void ElasticContactSearch::searchFull(const ElasticPose& pose, ElasticWheelGeometry& out,
+                                      ElasticSearchWorkspace& ws,
+                                      const ElasticWheelGeometry* seed) const {
   out = ElasticWheelGeometry{};
   const PoseTrig t(pose, pair_, sigma_, spec_.angles);
   const std::size_t n = s_.size();
@@ -733,8 +823,9 @@ void ElasticContactSearch::search(const ElasticPose& pose, ElasticWheelGeometry&
       out.min_gap = std::min(out.min_gap, ws.gap[i]);
     }
   }
+  // (Samples outside i_lo..i_hi are +inf: never minima.)
   ws.minima.clear();
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = i_lo; i <= i_hi; ++i) {
     const double g = ws.gap[i];
     if (!(g < spec_.candidate_gap)) continue;
     const double gl = i > 0 ? ws.gap[i - 1] : kInf;
@@ -742,8 +833,8 @@ void ElasticContactSearch::search(const ElasticPose& pose, ElasticWheelGeometry&
     if (g <= gl && g < gr) ws.minima.push_back(static_cast<int>(i));
   }
   if (ws.minima.empty()) return;
-  refineCandidates(pose, out, ws, seed);
-  collectPatches(pose, out, ws);
+  refineCandidates(t, out, ws, seed);
+  collectPatches(t, out, ws);
 }
 
 ElasticWheelGeometry ElasticContactSearch::search(const ElasticPose& pose,

@@ -70,6 +70,7 @@
 // (rail). The result is bit-identical to the full scan (tested at 3900 poses); only the workspace's
 // gap array holds bounds/interpolations at skipped samples.
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -170,6 +171,12 @@ struct ElasticSearchWorkspace {
   std::vector<double> depth;  // refined gap at each candidate
   std::vector<double> sw, sr;
   std::vector<unsigned char> ok;
+  // The last search made with this workspace: the same search model (ElasticContactSearch::id())
+  // at the same pose, bit for bit, without a seed, has the same result, returned without
+  // searching (a dynamic model evaluates the same state more than once, e.g. for its Jacobian).
+  std::uint64_t last_model = 0;  // 0: none
+  ElasticPose last_pose;
+  ElasticWheelGeometry last_out;
 };
 
 // The search model of one wheel-rail pair (precomputed wheel samples).
@@ -179,6 +186,9 @@ class ElasticContactSearch {
 
   const WheelRailPair& pair() const { return pair_; }
   const ElasticSearchSpec& spec() const { return spec_; }
+  // Identity of this search model (its pair and spec) for ElasticSearchWorkspace: unique per
+  // constructed model, shared by its copies.
+  std::uint64_t id() const { return id_; }
   double sigma() const { return sigma_; }
 
   // Every penetrating local minimum of the wheel-rail gap at this pose (see header comment).
@@ -252,13 +262,16 @@ class ElasticContactSearch {
                           double& lb) const;
   void scanPruned(const PoseTrig& t, std::size_t i_lo, std::size_t i_hi, ElasticWheelGeometry& out,
                   ElasticSearchWorkspace& ws) const;
-  void refineCandidates(const ElasticPose& pose, ElasticWheelGeometry& out,
-                        ElasticSearchWorkspace& ws, const ElasticWheelGeometry* seed) const;
-  void collectPatches(const ElasticPose& pose, ElasticWheelGeometry& out,
+  void searchFull(const ElasticPose& pose, ElasticWheelGeometry& out, ElasticSearchWorkspace& ws,
+                  const ElasticWheelGeometry* seed) const;
+  void refineCandidates(const PoseTrig& t, ElasticWheelGeometry& out, ElasticSearchWorkspace& ws,
+                        const ElasticWheelGeometry* seed) const;
+  void collectPatches(const PoseTrig& t, ElasticWheelGeometry& out,
                       ElasticSearchWorkspace& ws) const;
 
   WheelRailPair pair_;
   ElasticSearchSpec spec_;
+  std::uint64_t id_ = 0;
   double sigma_ = 1.0;
   double cb_ = 1.0, sb_ = 0.0;      // cos(beta), sigma sin(beta)
   std::vector<double> s_, h_, dh_;  // wheel samples
@@ -272,6 +285,9 @@ class ElasticContactSearch {
     double operator()(std::size_t a, std::size_t b) const;  // max over [a, b), a < b
   };
   RangeMax wheel_d1_, wheel_d2_, wheel_d3_, rail_d1_, rail_d2_;
+  // Signed bounds of h'' (maxima of h'' and of -h''), wheel and rail: the gap's curvature is the
+  // DIFFERENCE of the two profiles' curvatures (classifyBlock()).
+  RangeMax wheel_d2_hi_, wheel_d2_neg_, rail_d2_hi_, rail_d2_neg_;
   double wheel_hmax_ = 0.0, rail_bin0_ = 0.0, rail_bin_ = 0.25e-3;
   std::size_t rail_bins_ = 0;
 };
