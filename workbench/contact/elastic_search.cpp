@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <utility>
 
 #include "workbench/core/error.hpp"
@@ -174,7 +175,11 @@ ElasticContactSearch::ElasticContactSearch(WheelRailPair pair, ElasticSearchSpec
     d2h_.push_back(w.at(s_[i]).d2h);
     wheel_hmax_ = std::max(wheel_hmax_, std::abs(h_[i]));
   }
-  wheel_hmax_ = 1.01 * wheel_hmax_ + 1e-3;  // (h between samples: |h'| Delta s is far below 1 mm)
+  wheel_hmax_ = 1.01 * wheel_hmax_ + 1e-3;
+  double l_max = 0.0;
+  for (double s : s_) l_max = std::max(l_max, std::abs(sigma_ * pair_.wheel_lw + s));
+  wheel_xmax_ =
+      std::hypot(wheel_hmax_, l_max) + 1e-3;  // (h between samples: |h'| Delta s is far below 1 mm)
   // Rail bins over the rail and kRailBinPad beyond its ends (at() extrapolates the end cubics).
   const profiles::Profile& r = *pair_.rail;
   const std::vector<double> rk = r.knots();
@@ -612,7 +617,7 @@ void ElasticContactSearch::collectPatches(const PoseTrig& t, ElasticWheelGeometr
 ElasticContactSearch::ScanBlock ElasticContactSearch::classifyBlock(const PoseTrig& t,
                                                                     const ScanNode& a,
                                                                     const ScanNode& b,
-                                                                    double& lb) const {
+                                                                    BlockInfo& info) const {
   // |kappa| / w with kappa = R01 / rho, w = cos(theta + eps) >= sqrt(1 - kMaxSinTheta^2) where
   // the locus equation is not clamped: theta' = kappa h'' / w, theta'' = kappa h''' / w +
   // kappa^2 q h''^2 / w^3.
@@ -633,6 +638,8 @@ ElasticContactSearch::ScanBlock ElasticContactSearch::classifyBlock(const PoseTr
   const double hi = (std::max(a.u, b.u) + speed * half - rail_bin0_) / rail_bin_;
   if (!(lo >= 0.0 && hi < nbins)) return ScanBlock::Scan;
   const auto b_lo = static_cast<std::size_t>(lo), b_hi = static_cast<std::size_t>(hi) + 1;
+  info.u_lo = std::min(a.u, b.u) - speed * half;
+  info.u_hi = std::max(a.u, b.u) + speed * half;
   const double r1 = rail_d1_(b_lo, b_hi), r2 = rail_d2_(b_lo, b_hi);
   const double qmax = std::sqrt(1.0 + r1 * r1);
   const double M = qmax * acc + r2 * speed * speed;
@@ -677,16 +684,17 @@ ElasticContactSearch::ScanBlock ElasticContactSearch::classifyBlock(const PoseTr
   const double c_lo = 0.5 * std::min(e_min, 0.0) * half * half;
   const double e_lo =
       std::min(std::min(a.e, a.e + a.de * half + c_lo), std::min(b.e, b.e - b.de * half + c_lo));
+  const double c_abs = 0.5 * std::max(-e_min, e_max) * half * half;
+  const double e_abs = std::max(std::abs(a.e) + std::abs(a.de) * half + c_abs,
+                                std::abs(b.e) + std::abs(b.de) * half + c_abs);
+  info.g_abs = e_abs;  // |g| <= |e|
   if (e_lo > 0.0) {
-    lb = e_lo / qmax;
-    if (lb > threshold) return ScanBlock::Skip;
+    info.lb = e_lo / qmax;
+    if (info.lb > threshold) return ScanBlock::Skip;
   }
   // Monotonic: e' keeps its sign and dominates the term e h_r' h_r'' u' / q_r^2 (|h_r'| /
   // q_r^2 <= min(|h_r'|, 1/2)); the samples then differ by far more than rounding (1e-15 m per
   // sample).
-  const double c_abs = 0.5 * std::max(-e_min, e_max) * half * half;
-  const double e_abs = std::max(std::abs(a.e) + std::abs(a.de) * half + c_abs,
-                                std::abs(b.e) + std::abs(b.de) * half + c_abs);
   const double other = std::min(0.5, r1) * e_abs * r2 * speed;
   const double min_slope = 1e-15 / (2.0 * half / static_cast<double>(b.i - a.i)) + other;
   // e' over the block from either end: e'_a + [e_min, e_max] d, e'_b - [e_min, e_max] d.
@@ -705,19 +713,97 @@ ElasticContactSearch::ScanBlock ElasticContactSearch::classifyBlock(const PoseTr
 // halved at an exactly evaluated middle sample, down to single intervals. Exact samples get their
 // sampled gap, skipped ones a lower bound of it that is above candidate_gap; out.min_gap is the
 // smallest exact gap.
+// Bound of the movement of any wheel sample's locus point (track Y-Z) from the pose of a
+// certificate to the pose t, for samples with |h'| <= d1: the translation, the change of the
+// rotation rows Y and Z times |X| <= x_max, and h times the change of the locus angle theta =
+// asin(clamp(kappa h')) - eps (asin is 1/sqrt(1 - 0.5^2)-Lipschitz where |q| <= 0.5; an arc is
+// at most pi/2 times its chord for eps).
+double ElasticContactSearch::poseShift(const PoseTrig& t, const ElasticScanCert& c,
+                                       double d1) const {
+  double dr2 = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    dr2 += std::pow(t.r[1][i] - c.ref[2 + i], 2) + std::pow(t.r[2][i] - c.ref[5 + i], 2);
+  }
+  const double dkap = std::abs(t.r[0][1] / t.rho - c.ref[8]);
+  const double deps = 0.5 * std::numbers::pi * std::hypot(t.ceps - c.ref[9], t.seps - c.ref[10]);
+  const double dth = dkap * d1 / std::sqrt(1.0 - kMaxSinTheta * kMaxSinTheta) + deps;
+  return std::hypot(t.y - c.ref[0], t.z - c.ref[1]) + std::sqrt(dr2) * wheel_xmax_ +
+         wheel_hmax_ * dth;
+}
+
+// The scan of samples i_lo..i_hi, skipping those that cannot be below candidate_gap (header
+// comment "Cost"): exact gaps every kPruneStride samples, then each block between two exact
+// samples is either skipped (the bound below says no sample in it is below candidate_gap) or
+// halved at an exactly evaluated middle sample, down to single intervals. Exact samples get their
+// sampled gap, skipped ones a lower bound of it that is above candidate_gap; out.min_gap is the
+// smallest exact gap.
+// Blocks of kPruneStride samples (aligned on multiples of it) found above candidate_gap keep a
+// certificate in the workspace (lower bound, |gap| and rail parameter range, pose): at a later
+// pose the gap of each sample has moved by at most (1 + max |h_r'|) dP + |g| max |h_r''| dP
+// (e = v - h_r(u) moves by at most dP + |h_r'| dP, g = e / q_r with |q_r' / q_r| <= |h_r''| per
+// unit of u, and (u, v) by at most dP, poseShift()), so while the bound stays above
+// candidate_gap the block is skipped without evaluating any sample.
 void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::size_t i_hi,
                                       ElasticWheelGeometry& out, ElasticSearchWorkspace& ws) const {
+  const double threshold = spec_.candidate_gap * (1.0 + 1e-9) + 1e-12;
+  const profiles::Profile& rail = *pair_.rail;
+  // What the scan of one block proved about all its samples (for its certificate).
+  struct Track {
+    bool ok = true;
+    double lb = kInf, g_abs = 0.0, u_lo = kInf, u_hi = -kInf;
+    void sample(double g, double u) {
+      ok = ok && g < kInf;
+      lb = std::min(lb, g);
+      g_abs = std::max(g_abs, std::abs(g));
+      u_lo = std::min(u_lo, u);
+      u_hi = std::max(u_hi, u);
+    }
+  } track;
   auto exact = [&](std::size_t i) {
     ScanNode n{i, 0.0, 0.0, 0.0, 0.0};
     n.g = sampledGap(t, i, n.u, n.e, n.de);
     ws.gap[i] = n.g;
+    ws.bound[i] = 0;
     out.min_gap = std::min(out.min_gap, n.g);
+    track.sample(n.g, n.u);
     return n;
   };
+  // A certificate still valid at this pose: lb the bound of the block's samples.
+  auto certified = [&](const ElasticScanCert& c, std::size_t a, std::size_t b, double& lb) {
+    const double dp = poseShift(t, c, wheel_d1_(a, b));
+    const double u_lo = c.u_lo - dp - 1e-12, u_hi = c.u_hi + dp + 1e-12;
+    if (!(u_lo > rail.sMin() && u_hi < rail.sMax())) return false;  // may leave the rail
+    const double lo = (u_lo - rail_bin0_) / rail_bin_, hi = (u_hi - rail_bin0_) / rail_bin_;
+    if (!(lo >= 0.0 && hi < static_cast<double>(rail_bins_))) return false;
+    const auto b_lo = static_cast<std::size_t>(lo), b_hi = static_cast<std::size_t>(hi) + 1;
+    const double r1 = rail_d1_(b_lo, b_hi), r2 = rail_d2_(b_lo, b_hi);
+    lb = c.lb - (1.01 * ((1.0 + r1) * dp + c.g_abs * r2 * dp) + 1e-12);
+    return lb > threshold;
+  };
   std::array<std::pair<ScanNode, ScanNode>, 16> stack{};
-  ScanNode na = exact(i_lo);
+  ScanNode na{};
+  bool have_a = false;
   for (std::size_t a = i_lo; a < i_hi;) {
-    const ScanNode nb = exact(std::min(a + kPruneStride, i_hi));
+    const std::size_t b = std::min((a / kPruneStride + 1) * kPruneStride, i_hi);
+    ElasticScanCert* cert =
+        a % kPruneStride == 0 && b == a + kPruneStride ? &ws.cert[a / kPruneStride] : nullptr;
+    double lb = 0.0;
+    if (cert && cert->model == id_ && certified(*cert, a, b, lb)) {
+      for (std::size_t i = have_a ? a + 1 : a; i <= b; ++i) {
+        ws.gap[i] = lb;
+        ws.bound[i] = 1;
+      }
+      have_a = false;
+      a = b;
+      continue;
+    }
+    track = Track{};
+    if (have_a) {
+      track.sample(na.g, na.u);
+    } else {
+      na = exact(a);
+    }
+    const ScanNode nb = exact(b);
     std::size_t top = 0;
     stack[top++] = {na, nb};
     while (top > 0) {
@@ -728,16 +814,20 @@ void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::
           double s_r = 0.0;
           ws.gap[i] = sampledGap(t, i, s_r);
           out.min_gap = std::min(out.min_gap, ws.gap[i]);
+          track.sample(ws.gap[i], s_r);
         }
         continue;
       }
-      double lb = 0.0;
-      const ScanBlock kind = classifyBlock(t, p, q, lb);
+      BlockInfo info;
+      const ScanBlock kind = classifyBlock(t, p, q, info);
       if (kind == ScanBlock::Skip) {
         for (std::size_t i = p.i + 1; i < q.i; ++i) {
-          ws.gap[i] = lb;
+          ws.gap[i] = info.lb;
           ws.bound[i] = 1;
         }
+        track.sample(info.lb, info.u_lo);
+        track.sample(info.lb, info.u_hi);
+        track.g_abs = std::max(track.g_abs, info.g_abs);
         continue;
       }
       if ((kind == ScanBlock::Increasing && q.g > p.g) ||
@@ -748,14 +838,29 @@ void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::
         for (std::size_t i = p.i + 1; i < q.i; ++i) {
           ws.gap[i] = p.g + slope * static_cast<double>(i - p.i);
         }
+        track.u_lo = std::min(track.u_lo, info.u_lo);
+        track.u_hi = std::max(track.u_hi, info.u_hi);
         continue;
       }
       const ScanNode m = exact((p.i + q.i) / 2);
       stack[top++] = {m, q};
       stack[top++] = {p, m};
     }
-    a = nb.i;
+    if (cert) {
+      cert->model = 0;
+      if (track.ok && track.lb > threshold) {
+        cert->model = id_;
+        cert->lb = track.lb;
+        cert->g_abs = track.g_abs;
+        cert->u_lo = track.u_lo;
+        cert->u_hi = track.u_hi;
+        cert->ref = {t.y,       t.z,       t.r[1][0],         t.r[1][1], t.r[1][2], t.r[2][0],
+                     t.r[2][1], t.r[2][2], t.r[0][1] / t.rho, t.ceps,    t.seps};
+      }
+    }
+    a = b;
     na = nb;
+    have_a = true;
   }
 }
 
@@ -786,6 +891,8 @@ void ElasticContactSearch::searchFull(const ElasticPose& pose, ElasticWheelGeome
   const std::size_t n = s_.size();
   ws.gap.assign(n, kInf);
   ws.bound.assign(n, 0);
+  // (Certificates are kept from one search to the next; each names its search model.)
+  if (ws.cert.size() < n / kPruneStride + 1) ws.cert.resize(n / kPruneStride + 1);
   out.min_gap = kInf;
   // Only the wheel samples above the rail matter: to first order the rail parameter below wheel
   // sample s is s + offset (offset from y, Lw, Lr and the roll times the radius); the margin

@@ -161,7 +161,18 @@ struct ElasticWheelGeometry {
   int newton_iterations = 0;
 };
 
-// Scratch memory of a search (one per thread); sized on first use, then allocation-free.
+// What the pruned scan proved about one block of wheel samples at a reference pose: every
+// sample's gap was at least lb, at most g_abs in magnitude, with its rail parameter in
+// [u_lo, u_hi] (ElasticContactSearch::scanPruned).
+struct ElasticScanCert {
+  std::uint64_t model = 0;  // ElasticContactSearch::id(); 0: none
+  double lb = 0.0, g_abs = 0.0, u_lo = 0.0, u_hi = 0.0;
+  // The reference pose: y, z, rows Y and Z of the rotation, R01 / rho, cos(eps), sin(eps).
+  std::array<double, 11> ref{};
+};
+
+// Scratch memory of a search (one per thread, or per wheel); sized on first use, then
+// allocation-free.
 struct ElasticSearchWorkspace {
   std::vector<double> gap;  // sampled gap per wheel sample (+inf when not over the rail; with
                             // ElasticSearchSpec::prune_scan, a lower bound above candidate_gap
@@ -175,6 +186,8 @@ struct ElasticSearchWorkspace {
   // at the same pose, bit for bit, without a seed, has the same result, returned without
   // searching (a dynamic model evaluates the same state more than once, e.g. for its Jacobian).
   std::uint64_t last_model = 0;  // 0: none
+  // Blocks of samples certified above candidate_gap, kept between searches (scanPruned()).
+  std::vector<ElasticScanCert> cert;
   ElasticPose last_pose;
   ElasticWheelGeometry last_out;
 };
@@ -258,8 +271,14 @@ class ElasticContactSearch {
   // What the exact ends of a block of samples prove about the samples inside it (Scan: nothing;
   // Skip: all above candidate_gap, lb a lower bound; Increasing/Decreasing: strictly monotonic).
   enum class ScanBlock { Scan, Skip, Increasing, Decreasing };
+  // Skip: lb; Skip and monotonic: the range of the rail parameter in the block, and (Skip) a
+  // bound of |gap| there.
+  struct BlockInfo {
+    double lb = 0.0, u_lo = 0.0, u_hi = 0.0, g_abs = 0.0;
+  };
   ScanBlock classifyBlock(const PoseTrig& t, const ScanNode& a, const ScanNode& b,
-                          double& lb) const;
+                          BlockInfo& info) const;
+  double poseShift(const PoseTrig& t, const ElasticScanCert& c, double d1) const;
   void scanPruned(const PoseTrig& t, std::size_t i_lo, std::size_t i_hi, ElasticWheelGeometry& out,
                   ElasticSearchWorkspace& ws) const;
   void searchFull(const ElasticPose& pose, ElasticWheelGeometry& out, ElasticSearchWorkspace& ws,
@@ -288,6 +307,7 @@ class ElasticContactSearch {
   // Signed bounds of h'' (maxima of h'' and of -h''), wheel and rail: the gap's curvature is the
   // DIFFERENCE of the two profiles' curvatures (classifyBlock()).
   RangeMax wheel_d2_hi_, wheel_d2_neg_, rail_d2_hi_, rail_d2_neg_;
+  double wheel_xmax_ = 0.0;  // bound of |X| = sqrt(h^2 + L^2) over the wheel
   double wheel_hmax_ = 0.0, rail_bin0_ = 0.0, rail_bin_ = 0.25e-3;
   std::size_t rail_bins_ = 0;
 };
