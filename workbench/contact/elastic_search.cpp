@@ -223,16 +223,19 @@ ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const ElasticPose& 
   return locus(PoseTrig(pose, pair_, sigma_, spec_.angles), s_w);
 }
 
-ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const PoseTrig& t, double s_w) const {
+ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const PoseTrig& t, double s_w,
+                                                             bool full) const {
   const profiles::ProfilePoint w = pair_.wheel->at(s_w);
   double st = 0.0, ct = 1.0, wq = 1.0;
   t.theta(w.dh, st, ct, wq);
   const double L = sigma_ * pair_.wheel_lw + s_w;
   const auto& r = t.r;
   LocusPoint p;
-  p.theta = std::atan2(st, ct);
-  p.x_w = w.h * st;
-  p.x = r[0][0] * w.h * st + r[0][1] * L - r[0][2] * w.h * ct;
+  if (full) {
+    p.theta = std::atan2(st, ct);
+    p.x_w = w.h * st;
+    p.x = r[0][0] * w.h * st + r[0][1] * L - r[0][2] * w.h * ct;
+  }
   p.y = t.py(w.h, L, st, ct);
   p.z = t.pz(w.h, L, st, ct);
   // d theta / ds from the locus equation; D = dX/ds + theta' dX/dtheta (wheelset coordinates).
@@ -246,9 +249,11 @@ ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const PoseTrig& t, 
   p.nz_raw = r[2][0] * st - r[2][1] * w.dh - r[2][2] * ct;
   p.dn_y = r[1][0] * ct * dth - r[1][1] * w.d2h + r[1][2] * st * dth;
   p.dn_z = r[2][0] * ct * dth - r[2][1] * w.d2h + r[2][2] * st * dth;
-  const double nn = std::hypot(p.ny_raw, p.nz_raw);
-  p.n_y = p.ny_raw / nn;
-  p.n_z = p.nz_raw / nn;
+  if (full) {
+    const double nn = std::hypot(p.ny_raw, p.nz_raw);
+    p.n_y = p.ny_raw / nn;
+    p.n_z = p.nz_raw / nn;
+  }
   return p;
 }
 
@@ -303,7 +308,7 @@ int ElasticContactSearch::refine(const PoseTrig& t, double& s_w, double& s_r) co
   const profiles::Profile& rpf = *pair_.rail;
   const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
   for (int it = 0; it < spec_.newton_max_iter; ++it) {
-    const LocusPoint w = locus(t, s_w);
+    const LocusPoint w = locus(t, s_w, false);
     const profiles::ProfilePoint r = rpf.at(s_r);
     const double ry = oy + cb_ * s_r - sb_ * r.h, rz = oz + sb_ * s_r + cb_ * r.h;
     const double ty = cb_ - sb_ * r.dh, tz = sb_ + cb_ * r.dh;      // rail tangent
@@ -338,7 +343,7 @@ int ElasticContactSearch::refine(const PoseTrig& t, double& s_w, double& s_r) co
 }
 
 double ElasticContactSearch::gapAt(const PoseTrig& t, double s_w, double& s_r, double* dgap) const {
-  const LocusPoint w = locus(t, s_w);
+  const LocusPoint w = locus(t, s_w, false);
   const profiles::Profile& rpf = *pair_.rail;
   const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
   // Foot point on the rail: (W - R(s_r)) . t_r(s_r) = 0 (Newton, well conditioned while the
@@ -427,7 +432,7 @@ bool ElasticContactSearch::separation(const PoseTrig& t, double y0, double z0, d
   if (!ok) return false;
   ok = false;
   for (int it = 0; it < spec_.newton_max_iter; ++it) {
-    const LocusPoint w = locus(t, s_w);
+    const LocusPoint w = locus(t, s_w, false);
     const double wy = w.y - y0, wz = w.z - z0;
     const double f = wy * ty + wz * tz - off;
     const double df = w.t_y * ty + w.t_z * tz;
@@ -665,8 +670,8 @@ ElasticContactSearch::ScanBlock ElasticContactSearch::classifyBlock(const PoseTr
       const double t1_lo = -std::max(g_lo * w_hi, g_hi * w_hi);
       const double t1_hi = -std::min(g_lo * w_lo, g_hi * w_lo);
       const double du = std::abs(u0) * (d1 * sm + hm * th1) + std::abs(u2) * (d1 + hm * th1 * sm);
-      const double p_lo = std::pow(std::max(0.0, std::abs(u1) - du), 2);
-      const double p_hi = std::pow(std::abs(u1) + du, 2);
+      const double u_min = std::max(0.0, std::abs(u1) - du), u_max = std::abs(u1) + du;
+      const double p_lo = u_min * u_min, p_hi = u_max * u_max;
       const double t3_lo = -std::max(rr_hi * p_lo, rr_hi * p_hi);
       const double t3_hi = -std::min(rr_lo * p_lo, rr_lo * p_hi);
       const double z_r = 2.0 * d1 * th1 * sm + hm * th2 * sm + hm * th1 * th1;
@@ -722,7 +727,8 @@ double ElasticContactSearch::poseShift(const PoseTrig& t, const ElasticScanCert&
                                        double d1) const {
   double dr2 = 0.0;
   for (int i = 0; i < 3; ++i) {
-    dr2 += std::pow(t.r[1][i] - c.ref[2 + i], 2) + std::pow(t.r[2][i] - c.ref[5 + i], 2);
+    const double d_y = t.r[1][i] - c.ref[2 + i], d_z = t.r[2][i] - c.ref[5 + i];
+    dr2 += d_y * d_y + d_z * d_z;
   }
   const double dkap = std::abs(t.r[0][1] / t.rho - c.ref[8]);
   const double deps = 0.5 * std::numbers::pi * std::hypot(t.ceps - c.ref[9], t.seps - c.ref[10]);

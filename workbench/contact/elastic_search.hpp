@@ -241,7 +241,9 @@ class ElasticContactSearch {
  private:
   struct PoseTrig;
   // The same as the public functions, with the pose's rotation computed once per search.
-  LocusPoint locus(const PoseTrig& t, double s_w) const;
+  // full = false: only the track-frame position, its tangent and the unnormalised normal with
+  // its derivative (what the Newton solves use: no atan2 and no hypot per iteration).
+  LocusPoint locus(const PoseTrig& t, double s_w, bool full = true) const;
   double gapAt(const PoseTrig& t, double s_w, double& s_r, double* dgap = nullptr) const;
   int refine(const PoseTrig& t, double& s_w, double& s_r) const;
   int refineBracketed(const PoseTrig& t, double lo, double hi, double& s_w, double& s_r) const;
