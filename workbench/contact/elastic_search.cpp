@@ -719,12 +719,12 @@ ElasticContactSearch::ScanBlock ElasticContactSearch::classifyBlock(const PoseTr
 // sampled gap, skipped ones a lower bound of it that is above candidate_gap; out.min_gap is the
 // smallest exact gap.
 // Bound of the movement of any wheel sample's locus point (track Y-Z) from the pose of a
-// certificate to the pose t, for samples with |h'| <= d1: the translation, the change of the
+// certificate to the pose t, fixed + per_slope |h'|: the translation, the change of the
 // rotation rows Y and Z times |X| <= x_max, and h times the change of the locus angle theta =
 // asin(clamp(kappa h')) - eps (asin is 1/sqrt(1 - 0.5^2)-Lipschitz where |q| <= 0.5; an arc is
 // at most pi/2 times its chord for eps).
-double ElasticContactSearch::poseShift(const PoseTrig& t, const ElasticScanCert& c,
-                                       double d1) const {
+void ElasticContactSearch::poseShift(const PoseTrig& t, const ElasticScanCert& c, double& fixed,
+                                     double& per_slope) const {
   double dr2 = 0.0;
   for (int i = 0; i < 3; ++i) {
     const double d_y = t.r[1][i] - c.ref[2 + i], d_z = t.r[2][i] - c.ref[5 + i];
@@ -732,9 +732,9 @@ double ElasticContactSearch::poseShift(const PoseTrig& t, const ElasticScanCert&
   }
   const double dkap = std::abs(t.r[0][1] / t.rho - c.ref[8]);
   const double deps = 0.5 * std::numbers::pi * std::hypot(t.ceps - c.ref[9], t.seps - c.ref[10]);
-  const double dth = dkap * d1 / std::sqrt(1.0 - kMaxSinTheta * kMaxSinTheta) + deps;
-  return std::hypot(t.y - c.ref[0], t.z - c.ref[1]) + std::sqrt(dr2) * wheel_xmax_ +
-         wheel_hmax_ * dth;
+  fixed = std::hypot(t.y - c.ref[0], t.z - c.ref[1]) + std::sqrt(dr2) * wheel_xmax_ +
+          wheel_hmax_ * deps;
+  per_slope = wheel_hmax_ * dkap / std::sqrt(1.0 - kMaxSinTheta * kMaxSinTheta);
 }
 
 // The scan of samples i_lo..i_hi, skipping those that cannot be below candidate_gap (header
@@ -775,8 +775,15 @@ void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::
     return n;
   };
   // A certificate still valid at this pose: lb the bound of the block's samples.
+  // (Certificates made by one search share its pose: the pose part once per reference.)
+  std::uint64_t shift_ref = 0;
+  double shift_fixed = 0.0, shift_slope = 0.0;
   auto certified = [&](const ElasticScanCert& c, std::size_t a, std::size_t b, double& lb) {
-    const double dp = poseShift(t, c, wheel_d1_(a, b));
+    if (c.ref_id != shift_ref) {
+      poseShift(t, c, shift_fixed, shift_slope);
+      shift_ref = c.ref_id;
+    }
+    const double dp = shift_fixed + shift_slope * wheel_d1_(a, b);
     const double u_lo = c.u_lo - dp - 1e-12, u_hi = c.u_hi + dp + 1e-12;
     if (!(u_lo > rail.sMin() && u_hi < rail.sMax())) return false;  // may leave the rail
     const double lo = (u_lo - rail_bin0_) / rail_bin_, hi = (u_hi - rail_bin0_) / rail_bin_;
@@ -856,6 +863,7 @@ void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::
       cert->model = 0;
       if (track.ok && track.lb > threshold) {
         cert->model = id_;
+        cert->ref_id = ws.searches;
         cert->lb = track.lb;
         cert->g_abs = track.g_abs;
         cert->u_lo = track.u_lo;
@@ -897,6 +905,7 @@ void ElasticContactSearch::searchFull(const ElasticPose& pose, ElasticWheelGeome
   const std::size_t n = s_.size();
   ws.gap.assign(n, kInf);
   ws.bound.assign(n, 0);
+  ++ws.searches;
   // (Certificates are kept from one search to the next; each names its search model.)
   if (ws.cert.size() < n / kPruneStride + 1) ws.cert.resize(n / kPruneStride + 1);
   out.min_gap = kInf;
@@ -938,11 +947,13 @@ void ElasticContactSearch::searchFull(const ElasticPose& pose, ElasticWheelGeome
   }
   // (Samples outside i_lo..i_hi are +inf: never minima.)
   ws.minima.clear();
+  const double candidate = spec_.candidate_gap;
+  const double* gap = ws.gap.data();
   for (std::size_t i = i_lo; i <= i_hi; ++i) {
-    const double g = ws.gap[i];
-    if (!(g < spec_.candidate_gap)) continue;
-    const double gl = i > 0 ? ws.gap[i - 1] : kInf;
-    const double gr = i + 1 < n ? ws.gap[i + 1] : kInf;
+    const double g = gap[i];
+    if (!(g < candidate)) continue;
+    const double gl = i > 0 ? gap[i - 1] : kInf;
+    const double gr = i + 1 < n ? gap[i + 1] : kInf;
     if (g <= gl && g < gr) ws.minima.push_back(static_cast<int>(i));
   }
   if (ws.minima.empty()) return;

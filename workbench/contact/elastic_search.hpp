@@ -165,7 +165,8 @@ struct ElasticWheelGeometry {
 // sample's gap was at least lb, at most g_abs in magnitude, with its rail parameter in
 // [u_lo, u_hi] (ElasticContactSearch::scanPruned).
 struct ElasticScanCert {
-  std::uint64_t model = 0;  // ElasticContactSearch::id(); 0: none
+  std::uint64_t model = 0;   // ElasticContactSearch::id(); 0: none
+  std::uint64_t ref_id = 0;  // the search (ElasticSearchWorkspace::searches) that made it
   double lb = 0.0, g_abs = 0.0, u_lo = 0.0, u_hi = 0.0;
   // The reference pose: y, z, rows Y and Z of the rotation, R01 / rho, cos(eps), sin(eps).
   std::array<double, 11> ref{};
@@ -188,6 +189,7 @@ struct ElasticSearchWorkspace {
   std::uint64_t last_model = 0;  // 0: none
   // Blocks of samples certified above candidate_gap, kept between searches (scanPruned()).
   std::vector<ElasticScanCert> cert;
+  std::uint64_t searches = 0;  // searches made with this workspace
   ElasticPose last_pose;
   ElasticWheelGeometry last_out;
 };
@@ -280,7 +282,8 @@ class ElasticContactSearch {
   };
   ScanBlock classifyBlock(const PoseTrig& t, const ScanNode& a, const ScanNode& b,
                           BlockInfo& info) const;
-  double poseShift(const PoseTrig& t, const ElasticScanCert& c, double d1) const;
+  void poseShift(const PoseTrig& t, const ElasticScanCert& c, double& fixed,
+                 double& per_slope) const;
   void scanPruned(const PoseTrig& t, std::size_t i_lo, std::size_t i_hi, ElasticWheelGeometry& out,
                   ElasticSearchWorkspace& ws) const;
   void searchFull(const ElasticPose& pose, ElasticWheelGeometry& out, ElasticSearchWorkspace& ws,
