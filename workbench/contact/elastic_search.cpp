@@ -175,11 +175,10 @@ ElasticContactSearch::ElasticContactSearch(WheelRailPair pair, ElasticSearchSpec
     d2h_.push_back(w.at(s_[i]).d2h);
     wheel_hmax_ = std::max(wheel_hmax_, std::abs(h_[i]));
   }
-  wheel_hmax_ = 1.01 * wheel_hmax_ + 1e-3;
+  wheel_hmax_ = 1.01 * wheel_hmax_ + 1e-3;  // (h between samples: |h'| Delta s is far below 1 mm)
   double l_max = 0.0;
   for (double s : s_) l_max = std::max(l_max, std::abs(sigma_ * pair_.wheel_lw + s));
-  wheel_xmax_ =
-      std::hypot(wheel_hmax_, l_max) + 1e-3;  // (h between samples: |h'| Delta s is far below 1 mm)
+  wheel_xmax_ = std::hypot(wheel_hmax_, l_max) + 1e-3;  // |X| = sqrt(h^2 + L^2) at any sample
   // Rail bins over the rail and kRailBinPad beyond its ends (at() extrapolates the end cubics).
   const profiles::Profile& r = *pair_.rail;
   const std::vector<double> rk = r.knots();
