@@ -4,9 +4,14 @@
 // (tests/data/contact_benchmark/). docs/elastic_contact.md.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -345,6 +350,138 @@ TEST(ElasticSearch, PrunedScanEqualsTheFullScan) {
   EXPECT_GT(compared, 1500);
   EXPECT_GT(with_patches, 1000);
   std::printf("pruned scan = full scan at %d poses (%d with patches)\n", compared, with_patches);
+}
+
+// Bit-for-bit equality of two search results (every field of every patch, min_gap, truncated,
+// the iteration count); the first difference is reported.
+::testing::AssertionResult sameBits(const ElasticWheelGeometry& a, const ElasticWheelGeometry& b) {
+  auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
+  if (a.count != b.count || a.truncated != b.truncated || bits(a.min_gap) != bits(b.min_gap) ||
+      a.newton_iterations != b.newton_iterations) {
+    return ::testing::AssertionFailure()
+           << "count " << a.count << " / " << b.count << ", min_gap " << a.min_gap << " / "
+           << b.min_gap << ", iterations " << a.newton_iterations << " / " << b.newton_iterations;
+  }
+  for (std::size_t k = 0; k < static_cast<std::size_t>(a.count); ++k) {
+    const ElasticPatchGeometry &p = a.patch[k], &q = b.patch[k];
+    const std::array<std::pair<double, double>, 19> f{{{p.s_w, q.s_w},
+                                                       {p.s_r, q.s_r},
+                                                       {p.x, q.x},
+                                                       {p.y, q.y},
+                                                       {p.z, q.z},
+                                                       {p.x_w, q.x_w},
+                                                       {p.theta, q.theta},
+                                                       {p.n_y, q.n_y},
+                                                       {p.n_z, q.n_z},
+                                                       {p.gamma, q.gamma},
+                                                       {p.radius, q.radius},
+                                                       {p.gap_depth, q.gap_depth},
+                                                       {p.approach, q.approach},
+                                                       {p.k_wheel_trans, q.k_wheel_trans},
+                                                       {p.k_wheel_rolling, q.k_wheel_rolling},
+                                                       {p.k_rail_trans, q.k_rail_trans},
+                                                       {p.A, q.A},
+                                                       {p.B, q.B},
+                                                       {p.B_span, q.B_span}}};
+    for (std::size_t j = 0; j < f.size(); ++j) {
+      if (bits(f[j].first) != bits(f[j].second)) {
+        return ::testing::AssertionFailure()
+               << "patch " << k << " field " << j << ": " << f[j].first << " / " << f[j].second;
+      }
+    }
+    if (p.refined != q.refined) return ::testing::AssertionFailure() << "patch " << k << " refined";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+// A workspace kept from one search to the next, as the dynamic method keeps one per wheel, must
+// not change any result: a random walk of poses (steps from 1e-15 m to 10 um, exact repeats,
+// occasional jumps to a new lateral position, yaw, roll and depth: tread, two-point and flange
+// contact, lift-off; now and then a seed, or the other wheel's search in the same workspace),
+// every result bit for bit equal to a fresh workspace's full scan at the same pose. On the
+// benchmark profiles (rail upright) and on S1002/60E1 at 1:40 (the dynamics' set-up).
+TEST(ElasticSearch, SearchesInSequenceEqualFreshFullScans) {
+  const auto incl = wheelRailPairs(rbtest::s1002On60E1());
+  const std::array<std::array<WheelRailPair, 2>, 2> sets{
+      {{bench().search[0]->pair(), bench().search[1]->pair()}, {incl[0], incl[1]}}};
+  std::mt19937_64 rng(20261204);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  int compared = 0, repeats = 0, lifted = 0, two_point = 0, flange = 0, seeded = 0, shared = 0;
+  for (const auto& pairs : sets) {
+    ElasticSearchSpec full;
+    full.prune_scan = false;
+    const std::array<ElasticContactSearch, 2> sp{ElasticContactSearch(pairs[0]),
+                                                 ElasticContactSearch(pairs[1])};
+    const std::array<ElasticContactSearch, 2> sf{ElasticContactSearch(pairs[0], full),
+                                                 ElasticContactSearch(pairs[1], full)};
+    for (std::size_t side = 0; side < 2; ++side) {
+      const double sigma = sp[side].sigma();
+      ElasticSearchWorkspace ws;
+      ElasticWheelGeometry g, prev;
+      ElasticPose pose;
+      double z_touch = 0.46;
+      for (int step = 0; step < 2500; ++step) {
+        const double r = uni(rng);
+        if (step % 150 == 0 || r < 0.01) {
+          // A jump: lateral position from the flange back to the flange, yaw, roll, depth from
+          // 1 mm clear to 0.25 mm deep.
+          pose.y = sigma * (-4e-3 + 14e-3 * uni(rng));
+          pose.psi = 0.024 * (uni(rng) - 0.5);
+          pose.phi = 0.01 * (uni(rng) - 0.5);
+          // The height of first touch (min_gap is the normal gap: a few steps down to it).
+          pose.z = 0.46;
+          for (int it = 0; it < 6; ++it) {
+            const double m = sf[side].search(pose).min_gap;
+            if (std::isfinite(m)) pose.z -= m;
+          }
+          z_touch = pose.z;
+          pose.z = z_touch + (uni(rng) < 0.1 ? 1e-3 : 2e-5 - 2.7e-4 * uni(rng));
+        } else if (r < 0.1) {
+          ++repeats;  // the same pose again
+        } else {
+          // A step of 10^-15 to 10^-5 m (rad for the angles) in each coordinate.
+          auto d = [&] { return (uni(rng) - 0.5) * std::pow(10.0, -15.0 + 10.0 * uni(rng)); };
+          pose.y += d();
+          pose.z = std::clamp(pose.z + d(), z_touch - 3e-4, z_touch + 1.2e-3);
+          pose.phi += 0.1 * d();
+          pose.psi += 0.1 * d();
+        }
+        const ElasticWheelGeometry* seed = nullptr;
+        if (uni(rng) < 0.03) {
+          seed = &prev;
+          ++seeded;
+        }
+        if (uni(rng) < 0.02) {  // the other wheel's model in this workspace
+          ElasticWheelGeometry other;
+          sp[1 - side].search(pose, other, ws);
+          ++shared;
+        }
+        sp[side].search(pose, g, ws, seed);
+        const ElasticWheelGeometry ref = sf[side].search(pose, seed);
+        ++compared;
+        ASSERT_TRUE(sameBits(g, ref))
+            << "set " << (&pairs - sets.data()) << " side " << side << " step " << step << " pose "
+            << pose.y << " " << pose.z << " " << pose.phi << " " << pose.psi;
+        lifted += g.count == 0;
+        two_point += g.count >= 2;
+        for (int k = 0; k < g.count; ++k) {
+          flange += std::abs(g.patch[static_cast<std::size_t>(k)].gamma) > 0.5;
+        }
+        prev = g;
+      }
+    }
+  }
+  std::printf(
+      "%d searches in sequence = fresh full scans (%d repeated poses, %d lifted, %d two-point, "
+      "%d flange patches, %d seeded, %d with the other wheel's search in between)\n",
+      compared, repeats, lifted, two_point, flange, seeded, shared);
+  EXPECT_GT(compared, 9500);
+  EXPECT_GT(repeats, 600);
+  EXPECT_GT(lifted, 600);
+  EXPECT_GT(two_point, 600);
+  EXPECT_GT(flange, 1000);  // patches with a contact angle above 0.5 rad
+  EXPECT_GT(seeded, 150);
+  EXPECT_GT(shared, 100);
 }
 
 // ---- Patch birth and death, two-point contact ------------------------------------------------

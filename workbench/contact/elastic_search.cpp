@@ -1,9 +1,11 @@
 #include "workbench/contact/elastic_search.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <utility>
 
 #include "workbench/core/error.hpp"
@@ -20,12 +22,17 @@ constexpr std::size_t kMinBlock = 8;      // shorter blocks are scanned without 
 constexpr double kMaxPruneStep = 0.3e-3;  // [m] coarser scans are not pruned
 constexpr double kRailBinPad = 10e-3;     // [m] rail bins beyond the rail ends (extrapolation)
 
-// Upper bounds of |h'|, |h''|, |h'''| of a profile over [lo, hi]: h'' is continuous and piecewise
-// linear between the knots, so its values at the knots inside and at 16 sub-points (all sorted)
-// bound it and their difference quotients are the exact h''' of the knot intervals; h' is bounded
-// by its values there plus max |h''| times half the largest spacing.
-void profileBounds(const profiles::Profile& p, const std::vector<double>& knots, double lo,
-                   double hi, double& d1, double& d2, double& d3) {
+// Bounds of a profile over [lo, hi]: upper bounds of |h'|, |h''|, |h'''| and of h'' and -h''
+// (signed). h'' is continuous and piecewise linear between the knots, so its values at the knots
+// inside and at 16 sub-points (all sorted) bound it and their difference quotients are the exact
+// h''' of the knot intervals; h' is bounded by its values there plus max |h''| times half the
+// largest spacing.
+struct ProfileBound {
+  double d1 = 0.0, d2 = 0.0, d3 = 0.0;
+  double d2_hi = 0.0, d2_neg = 0.0;  // h'' <= d2_hi, -h'' <= d2_neg
+};
+ProfileBound profileBounds(const profiles::Profile& p, const std::vector<double>& knots, double lo,
+                           double hi) {
   constexpr int kSub = 16;
   std::array<double, kSub + 1 + 64> pts{};
   std::size_t n = 0;
@@ -35,22 +42,29 @@ void profileBounds(const profiles::Profile& p, const std::vector<double>& knots,
     while (k != knots.end() && *k < x && n + 1 < pts.size()) pts[n++] = *k++;
     if (n < pts.size()) pts[n++] = x;
   }
-  d1 = d2 = d3 = 0.0;
+  ProfileBound b;
   double gmax = 0.0, prev_x = 0.0, prev_d2 = 0.0;
+  double d2_hi = -kInf, d2_lo = kInf;
   for (std::size_t j = 0; j < n; ++j) {
     const profiles::ProfilePoint q = p.at(pts[j]);
-    d1 = std::max(d1, std::abs(q.dh));
-    d2 = std::max(d2, std::abs(q.d2h));
+    b.d1 = std::max(b.d1, std::abs(q.dh));
+    b.d2 = std::max(b.d2, std::abs(q.d2h));
+    d2_hi = std::max(d2_hi, q.d2h);
+    d2_lo = std::min(d2_lo, q.d2h);
     if (j > 0 && pts[j] > prev_x) {
-      d3 = std::max(d3, std::abs(q.d2h - prev_d2) / (pts[j] - prev_x));
+      b.d3 = std::max(b.d3, std::abs(q.d2h - prev_d2) / (pts[j] - prev_x));
       gmax = std::max(gmax, pts[j] - prev_x);
     }
     prev_x = pts[j];
     prev_d2 = q.d2h;
   }
-  d1 = 1.01 * (d1 + 0.5 * d2 * gmax) + 1e-9;
-  d2 = 1.01 * d2 + 1e-9;
-  d3 = 1.01 * d3 + 1e-9;
+  b.d1 = 1.01 * (b.d1 + 0.5 * b.d2 * gmax) + 1e-9;
+  // (The signed bounds get 1 % of max |h''| as margin, like the magnitude bound.)
+  b.d2_hi = d2_hi + 0.01 * b.d2 + 1e-9;
+  b.d2_neg = -d2_lo + 0.01 * b.d2 + 1e-9;
+  b.d2 = 1.01 * b.d2 + 1e-9;
+  b.d3 = 1.01 * b.d3 + 1e-9;
+  return b;
 }
 
 }  // namespace
@@ -124,6 +138,8 @@ ElasticContactSearch::ElasticContactSearch(WheelRailPair pair, ElasticSearchSpec
   if (!(spec_.sample_step > 0.0) || !(spec_.newton_tol > 0.0) || spec_.newton_max_iter < 1) {
     throw InputError(SourceLoc{}, "elastic contact search: sample_step and newton_tol must be > 0");
   }
+  static std::atomic<std::uint64_t> models{0};
+  id_ = ++models;
   sigma_ = pair_.side == Side::Left ? 1.0 : -1.0;
   cb_ = std::cos(pair_.beta);
   sb_ = sigma_ * std::sin(pair_.beta);
@@ -141,31 +157,47 @@ ElasticContactSearch::ElasticContactSearch(WheelRailPair pair, ElasticSearchSpec
   // Scan pruning bounds (scanPruned()).
   const std::vector<double> wk = w.knots();
   std::vector<double> d1(s_.size(), 0.0), d2(s_.size(), 0.0), d3(s_.size(), 0.0);
+  std::vector<double> d2_hi(s_.size(), 0.0), d2_neg(s_.size(), 0.0);
   for (std::size_t i = 0; i + 1 < s_.size(); ++i) {
-    profileBounds(w, wk, s_[i], s_[i + 1], d1[i], d2[i], d3[i]);
+    const ProfileBound b = profileBounds(w, wk, s_[i], s_[i + 1]);
+    d1[i] = b.d1;
+    d2[i] = b.d2;
+    d3[i] = b.d3;
+    d2_hi[i] = b.d2_hi;
+    d2_neg[i] = b.d2_neg;
   }
   wheel_d1_.build(d1);
   wheel_d2_.build(d2);
   wheel_d3_.build(d3);
+  wheel_d2_hi_.build(d2_hi);
+  wheel_d2_neg_.build(d2_neg);
   for (std::size_t i = 0; i < s_.size(); ++i) {
     d2h_.push_back(w.at(s_[i]).d2h);
     wheel_hmax_ = std::max(wheel_hmax_, std::abs(h_[i]));
   }
   wheel_hmax_ = 1.01 * wheel_hmax_ + 1e-3;  // (h between samples: |h'| Delta s is far below 1 mm)
+  double l_max = 0.0;
+  for (double s : s_) l_max = std::max(l_max, std::abs(sigma_ * pair_.wheel_lw + s));
+  wheel_xmax_ = std::hypot(wheel_hmax_, l_max) + 1e-3;  // |X| = sqrt(h^2 + L^2) at any sample
   // Rail bins over the rail and kRailBinPad beyond its ends (at() extrapolates the end cubics).
   const profiles::Profile& r = *pair_.rail;
   const std::vector<double> rk = r.knots();
   rail_bin0_ = r.sMin() - kRailBinPad;
   const auto nb =
       static_cast<std::size_t>(std::ceil((r.sMax() - r.sMin() + 2.0 * kRailBinPad) / rail_bin_));
-  std::vector<double> r1(nb, 0.0), r2(nb, 0.0);
+  std::vector<double> r1(nb, 0.0), r2(nb, 0.0), r2_hi(nb, 0.0), r2_neg(nb, 0.0);
   for (std::size_t b = 0; b < nb; ++b) {
     const double u0 = rail_bin0_ + static_cast<double>(b) * rail_bin_;
-    double r3 = 0.0;
-    profileBounds(r, rk, u0, u0 + rail_bin_, r1[b], r2[b], r3);
+    const ProfileBound pb = profileBounds(r, rk, u0, u0 + rail_bin_);
+    r1[b] = pb.d1;
+    r2[b] = pb.d2;
+    r2_hi[b] = pb.d2_hi;
+    r2_neg[b] = pb.d2_neg;
   }
   rail_d1_.build(r1);
   rail_d2_.build(r2);
+  rail_d2_hi_.build(r2_hi);
+  rail_d2_neg_.build(r2_neg);
   rail_bins_ = nb;
 }
 
@@ -190,16 +222,19 @@ ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const ElasticPose& 
   return locus(PoseTrig(pose, pair_, sigma_, spec_.angles), s_w);
 }
 
-ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const PoseTrig& t, double s_w) const {
+ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const PoseTrig& t, double s_w,
+                                                             bool full) const {
   const profiles::ProfilePoint w = pair_.wheel->at(s_w);
   double st = 0.0, ct = 1.0, wq = 1.0;
   t.theta(w.dh, st, ct, wq);
   const double L = sigma_ * pair_.wheel_lw + s_w;
   const auto& r = t.r;
   LocusPoint p;
-  p.theta = std::atan2(st, ct);
-  p.x_w = w.h * st;
-  p.x = r[0][0] * w.h * st + r[0][1] * L - r[0][2] * w.h * ct;
+  if (full) {
+    p.theta = std::atan2(st, ct);
+    p.x_w = w.h * st;
+    p.x = r[0][0] * w.h * st + r[0][1] * L - r[0][2] * w.h * ct;
+  }
   p.y = t.py(w.h, L, st, ct);
   p.z = t.pz(w.h, L, st, ct);
   // d theta / ds from the locus equation; D = dX/ds + theta' dX/dtheta (wheelset coordinates).
@@ -213,9 +248,11 @@ ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const PoseTrig& t, 
   p.nz_raw = r[2][0] * st - r[2][1] * w.dh - r[2][2] * ct;
   p.dn_y = r[1][0] * ct * dth - r[1][1] * w.d2h + r[1][2] * st * dth;
   p.dn_z = r[2][0] * ct * dth - r[2][1] * w.d2h + r[2][2] * st * dth;
-  const double nn = std::hypot(p.ny_raw, p.nz_raw);
-  p.n_y = p.ny_raw / nn;
-  p.n_z = p.nz_raw / nn;
+  if (full) {
+    const double nn = std::hypot(p.ny_raw, p.nz_raw);
+    p.n_y = p.ny_raw / nn;
+    p.n_z = p.nz_raw / nn;
+  }
   return p;
 }
 
@@ -270,7 +307,7 @@ int ElasticContactSearch::refine(const PoseTrig& t, double& s_w, double& s_r) co
   const profiles::Profile& rpf = *pair_.rail;
   const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
   for (int it = 0; it < spec_.newton_max_iter; ++it) {
-    const LocusPoint w = locus(t, s_w);
+    const LocusPoint w = locus(t, s_w, false);
     const profiles::ProfilePoint r = rpf.at(s_r);
     const double ry = oy + cb_ * s_r - sb_ * r.h, rz = oz + sb_ * s_r + cb_ * r.h;
     const double ty = cb_ - sb_ * r.dh, tz = sb_ + cb_ * r.dh;      // rail tangent
@@ -305,7 +342,7 @@ int ElasticContactSearch::refine(const PoseTrig& t, double& s_w, double& s_r) co
 }
 
 double ElasticContactSearch::gapAt(const PoseTrig& t, double s_w, double& s_r, double* dgap) const {
-  const LocusPoint w = locus(t, s_w);
+  const LocusPoint w = locus(t, s_w, false);
   const profiles::Profile& rpf = *pair_.rail;
   const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
   // Foot point on the rail: (W - R(s_r)) . t_r(s_r) = 0 (Newton, well conditioned while the
@@ -394,7 +431,7 @@ bool ElasticContactSearch::separation(const PoseTrig& t, double y0, double z0, d
   if (!ok) return false;
   ok = false;
   for (int it = 0; it < spec_.newton_max_iter; ++it) {
-    const LocusPoint w = locus(t, s_w);
+    const LocusPoint w = locus(t, s_w, false);
     const double wy = w.y - y0, wz = w.z - z0;
     const double f = wy * ty + wz * tz - off;
     const double df = w.t_y * ty + w.t_z * tz;
@@ -450,7 +487,7 @@ ElasticPatchGeometry ElasticContactSearch::describe(const PoseTrig& t, double s_
   return g;
 }
 
-void ElasticContactSearch::refineCandidates(const ElasticPose& pose, ElasticWheelGeometry& out,
+void ElasticContactSearch::refineCandidates(const PoseTrig& t, ElasticWheelGeometry& out,
                                             ElasticSearchWorkspace& ws,
                                             const ElasticWheelGeometry* seed) const {
   const std::size_t nc = ws.minima.size();
@@ -458,7 +495,6 @@ void ElasticContactSearch::refineCandidates(const ElasticPose& pose, ElasticWhee
   ws.sw.assign(nc, 0.0);
   ws.sr.assign(nc, 0.0);
   ws.ok.assign(nc, 0);
-  const PoseTrig t(pose, pair_, sigma_, spec_.angles);
   for (std::size_t k = 0; k < nc; ++k) {
     const auto i = static_cast<std::size_t>(ws.minima[k]);
     double s_w = s_[i], s_r = 0.0;
@@ -516,9 +552,8 @@ void ElasticContactSearch::refineCandidates(const ElasticPose& pose, ElasticWhee
   }
 }
 
-void ElasticContactSearch::collectPatches(const ElasticPose& pose, ElasticWheelGeometry& out,
+void ElasticContactSearch::collectPatches(const PoseTrig& t, ElasticWheelGeometry& out,
                                           ElasticSearchWorkspace& ws) const {
-  const PoseTrig t(pose, pair_, sigma_, spec_.angles);
   const std::size_t nc = ws.minima.size();
   // Shared overlap (header comment): the lowest ridge r to a neighbouring minimum j; the depths
   // below it, e_k and e_j, are each minimum's own; the common part max(0, -r) is split between
@@ -586,7 +621,7 @@ void ElasticContactSearch::collectPatches(const ElasticPose& pose, ElasticWheelG
 ElasticContactSearch::ScanBlock ElasticContactSearch::classifyBlock(const PoseTrig& t,
                                                                     const ScanNode& a,
                                                                     const ScanNode& b,
-                                                                    double& lb) const {
+                                                                    BlockInfo& info) const {
   // |kappa| / w with kappa = R01 / rho, w = cos(theta + eps) >= sqrt(1 - kMaxSinTheta^2) where
   // the locus equation is not clamped: theta' = kappa h'' / w, theta'' = kappa h''' / w +
   // kappa^2 q h''^2 / w^3.
@@ -607,24 +642,72 @@ ElasticContactSearch::ScanBlock ElasticContactSearch::classifyBlock(const PoseTr
   const double hi = (std::max(a.u, b.u) + speed * half - rail_bin0_) / rail_bin_;
   if (!(lo >= 0.0 && hi < nbins)) return ScanBlock::Scan;
   const auto b_lo = static_cast<std::size_t>(lo), b_hi = static_cast<std::size_t>(hi) + 1;
+  info.u_lo = std::min(a.u, b.u) - speed * half;
+  info.u_hi = std::max(a.u, b.u) + speed * half;
   const double r1 = rail_d1_(b_lo, b_hi), r2 = rail_d2_(b_lo, b_hi);
   const double qmax = std::sqrt(1.0 + r1 * r1);
   const double M = qmax * acc + r2 * speed * speed;
-  const double curve = 0.5 * M * half * half;
+  // The signed bound e_min <= e'' <= e_max (no wider than +-M). With U, V the rows of the
+  // rotation to the rail frame (u = U . X, v = V . X + const) and X = (h st, L, -h ct):
+  //   e'' = -(V2 - h_r' U2) ct h'' - h_r'' u'^2 + (V2 - h_r' U2) z_r + (V0 - h_r' U0) x''
+  // where z'' = -h'' ct + z_r; the first two terms are the two profiles' curvatures with their
+  // signs (they cancel on a conformal tread), bounded from the signed ranges of h'' and h_r''
+  // and of (V2 - h_r' U2) ct > 0 and u'^2, the rest in magnitude (|st| <= |q| + |sin eps|).
+  double e_min = -M, e_max = M;
+  {
+    const auto& r = t.r;
+    const double u0 = cb_ * r[1][0] + sb_ * r[2][0], u1 = cb_ * r[1][1] + sb_ * r[2][1];
+    const double u2 = cb_ * r[1][2] + sb_ * r[2][2];
+    const double v0 = -sb_ * r[1][0] + cb_ * r[2][0], v2 = -sb_ * r[1][2] + cb_ * r[2][2];
+    const double hm = wheel_hmax_;
+    const double sm = std::min(1.0, kap * d1 + std::abs(t.seps));
+    const double g_hi = v2 + r1 * std::abs(u2);
+    const double g_lo = (v2 - r1 * std::abs(u2)) * std::sqrt(1.0 - sm * sm);
+    if (g_lo > 0.0) {
+      const double w_hi = wheel_d2_hi_(a.i, b.i), w_lo = -wheel_d2_neg_(a.i, b.i);
+      const double rr_hi = rail_d2_hi_(b_lo, b_hi), rr_lo = -rail_d2_neg_(b_lo, b_hi);
+      const double t1_lo = -std::max(g_lo * w_hi, g_hi * w_hi);
+      const double t1_hi = -std::min(g_lo * w_lo, g_hi * w_lo);
+      const double du = std::abs(u0) * (d1 * sm + hm * th1) + std::abs(u2) * (d1 + hm * th1 * sm);
+      const double u_min = std::max(0.0, std::abs(u1) - du), u_max = std::abs(u1) + du;
+      const double p_lo = u_min * u_min, p_hi = u_max * u_max;
+      const double t3_lo = -std::max(rr_hi * p_lo, rr_hi * p_hi);
+      const double t3_hi = -std::min(rr_lo * p_lo, rr_lo * p_hi);
+      const double z_r = 2.0 * d1 * th1 * sm + hm * th2 * sm + hm * th1 * th1;
+      const double x2 = d2 * sm + 2.0 * d1 * th1 + hm * th2 + hm * th1 * th1 * sm;
+      // (With 0.1 % of the main terms and 1e-9 / m for the rounding of this bound.)
+      const double rest =
+          g_hi * z_r + (std::abs(v0) + r1 * std::abs(u0)) * x2 +
+          1e-3 * (std::abs(t1_lo) + std::abs(t1_hi) + std::abs(t3_lo) + std::abs(t3_hi)) + 1e-9;
+      e_min = std::max(e_min, t1_lo + t3_lo - rest);
+      e_max = std::min(e_max, t1_hi + t3_hi + rest);
+    }
+  }
+  // From an end, e >= e_end +- e'_end d + min(e_min, 0) d^2 / 2: concave in d, its minimum at
+  // d = 0 or D/2.
+  const double c_lo = 0.5 * std::min(e_min, 0.0) * half * half;
   const double e_lo =
-      std::min(std::min(a.e, a.e + a.de * half - curve), std::min(b.e, b.e - b.de * half - curve));
+      std::min(std::min(a.e, a.e + a.de * half + c_lo), std::min(b.e, b.e - b.de * half + c_lo));
+  const double c_abs = 0.5 * std::max(-e_min, e_max) * half * half;
+  const double e_abs = std::max(std::abs(a.e) + std::abs(a.de) * half + c_abs,
+                                std::abs(b.e) + std::abs(b.de) * half + c_abs);
+  info.g_abs = e_abs;  // |g| <= |e|
   if (e_lo > 0.0) {
-    lb = e_lo / qmax;
-    if (lb > threshold) return ScanBlock::Skip;
+    info.lb = e_lo / qmax;
+    if (info.lb > threshold) return ScanBlock::Skip;
   }
   // Monotonic: e' keeps its sign and dominates the term e h_r' h_r'' u' / q_r^2 (|h_r'| /
-  // q_r^2 <= 1/2); the samples then differ by far more than rounding (1e-15 m per sample).
-  const double e_abs = std::max(std::abs(a.e) + std::abs(a.de) * half + curve,
-                                std::abs(b.e) + std::abs(b.de) * half + curve);
-  const double other = 0.5 * e_abs * r2 * speed;
+  // q_r^2 <= min(|h_r'|, 1/2)); the samples then differ by far more than rounding (1e-15 m per
+  // sample).
+  const double other = std::min(0.5, r1) * e_abs * r2 * speed;
   const double min_slope = 1e-15 / (2.0 * half / static_cast<double>(b.i - a.i)) + other;
-  if (std::min(a.de, b.de) - M * half > min_slope) return ScanBlock::Increasing;
-  if (std::max(a.de, b.de) + M * half < -min_slope) return ScanBlock::Decreasing;
+  // e' over the block from either end: e'_a + [e_min, e_max] d, e'_b - [e_min, e_max] d.
+  const double de_lo =
+      std::min(a.de + std::min(e_min, 0.0) * half, b.de - std::max(e_max, 0.0) * half);
+  const double de_hi =
+      std::max(a.de + std::max(e_max, 0.0) * half, b.de - std::min(e_min, 0.0) * half);
+  if (de_lo > min_slope) return ScanBlock::Increasing;
+  if (de_hi < -min_slope) return ScanBlock::Decreasing;
   return ScanBlock::Scan;
 }
 
@@ -634,19 +717,105 @@ ElasticContactSearch::ScanBlock ElasticContactSearch::classifyBlock(const PoseTr
 // halved at an exactly evaluated middle sample, down to single intervals. Exact samples get their
 // sampled gap, skipped ones a lower bound of it that is above candidate_gap; out.min_gap is the
 // smallest exact gap.
+// Bound of the movement of any wheel sample's locus point (track Y-Z) from the pose of a
+// certificate to the pose t, fixed + per_slope |h'|: the translation, the change of the
+// rotation rows Y and Z times |X| <= x_max, and h times the change of the locus angle theta =
+// asin(clamp(kappa h')) - eps (asin is 1/sqrt(1 - 0.5^2)-Lipschitz where |q| <= 0.5; an arc is
+// at most pi/2 times its chord for eps).
+void ElasticContactSearch::poseShift(const PoseTrig& t, const ElasticScanCert& c, double& fixed,
+                                     double& per_slope) const {
+  double dr2 = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double d_y = t.r[1][i] - c.ref[2 + i], d_z = t.r[2][i] - c.ref[5 + i];
+    dr2 += d_y * d_y + d_z * d_z;
+  }
+  const double dkap = std::abs(t.r[0][1] / t.rho - c.ref[8]);
+  const double deps = 0.5 * std::numbers::pi * std::hypot(t.ceps - c.ref[9], t.seps - c.ref[10]);
+  fixed = std::hypot(t.y - c.ref[0], t.z - c.ref[1]) + std::sqrt(dr2) * wheel_xmax_ +
+          wheel_hmax_ * deps;
+  per_slope = wheel_hmax_ * dkap / std::sqrt(1.0 - kMaxSinTheta * kMaxSinTheta);
+}
+
+// The scan of samples i_lo..i_hi, skipping those that cannot be below candidate_gap (header
+// comment "Cost"): exact gaps every kPruneStride samples, then each block between two exact
+// samples is either skipped (the bound below says no sample in it is below candidate_gap) or
+// halved at an exactly evaluated middle sample, down to single intervals. Exact samples get their
+// sampled gap, skipped ones a lower bound of it that is above candidate_gap; out.min_gap is the
+// smallest exact gap.
+// Blocks of kPruneStride samples (aligned on multiples of it) found above candidate_gap keep a
+// certificate in the workspace (lower bound, |gap| and rail parameter range, pose): at a later
+// pose the gap of each sample has moved by at most (1 + max |h_r'|) dP + |g| max |h_r''| dP
+// (e = v - h_r(u) moves by at most dP + |h_r'| dP, g = e / q_r with |q_r' / q_r| <= |h_r''| per
+// unit of u, and (u, v) by at most dP, poseShift()), so while the bound stays above
+// candidate_gap the block is skipped without evaluating any sample.
 void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::size_t i_hi,
                                       ElasticWheelGeometry& out, ElasticSearchWorkspace& ws) const {
+  const double threshold = spec_.candidate_gap * (1.0 + 1e-9) + 1e-12;
+  const profiles::Profile& rail = *pair_.rail;
+  // What the scan of one block proved about all its samples (for its certificate).
+  struct Track {
+    bool ok = true;
+    double lb = kInf, g_abs = 0.0, u_lo = kInf, u_hi = -kInf;
+    void sample(double g, double u) {
+      ok = ok && g < kInf;
+      lb = std::min(lb, g);
+      g_abs = std::max(g_abs, std::abs(g));
+      u_lo = std::min(u_lo, u);
+      u_hi = std::max(u_hi, u);
+    }
+  } track;
   auto exact = [&](std::size_t i) {
     ScanNode n{i, 0.0, 0.0, 0.0, 0.0};
     n.g = sampledGap(t, i, n.u, n.e, n.de);
     ws.gap[i] = n.g;
+    ws.bound[i] = 0;
     out.min_gap = std::min(out.min_gap, n.g);
+    track.sample(n.g, n.u);
     return n;
   };
+  // A certificate still valid at this pose: lb the bound of the block's samples.
+  // (Certificates made by one search share its pose: the pose part once per reference.)
+  std::uint64_t shift_ref = 0;
+  double shift_fixed = 0.0, shift_slope = 0.0;
+  auto certified = [&](const ElasticScanCert& c, std::size_t a, std::size_t b, double& lb) {
+    if (c.ref_id != shift_ref) {
+      poseShift(t, c, shift_fixed, shift_slope);
+      shift_ref = c.ref_id;
+    }
+    const double dp = shift_fixed + shift_slope * wheel_d1_(a, b);
+    const double u_lo = c.u_lo - dp - 1e-12, u_hi = c.u_hi + dp + 1e-12;
+    if (!(u_lo > rail.sMin() && u_hi < rail.sMax())) return false;  // may leave the rail
+    const double lo = (u_lo - rail_bin0_) / rail_bin_, hi = (u_hi - rail_bin0_) / rail_bin_;
+    if (!(lo >= 0.0 && hi < static_cast<double>(rail_bins_))) return false;
+    const auto b_lo = static_cast<std::size_t>(lo), b_hi = static_cast<std::size_t>(hi) + 1;
+    const double r1 = rail_d1_(b_lo, b_hi), r2 = rail_d2_(b_lo, b_hi);
+    lb = c.lb - (1.01 * ((1.0 + r1) * dp + c.g_abs * r2 * dp) + 1e-12);
+    return lb > threshold;
+  };
   std::array<std::pair<ScanNode, ScanNode>, 16> stack{};
-  ScanNode na = exact(i_lo);
+  ScanNode na{};
+  bool have_a = false;
   for (std::size_t a = i_lo; a < i_hi;) {
-    const ScanNode nb = exact(std::min(a + kPruneStride, i_hi));
+    const std::size_t b = std::min((a / kPruneStride + 1) * kPruneStride, i_hi);
+    ElasticScanCert* cert =
+        a % kPruneStride == 0 && b == a + kPruneStride ? &ws.cert[a / kPruneStride] : nullptr;
+    double lb = 0.0;
+    if (cert && cert->model == id_ && certified(*cert, a, b, lb)) {
+      for (std::size_t i = have_a ? a + 1 : a; i <= b; ++i) {
+        ws.gap[i] = lb;
+        ws.bound[i] = 1;
+      }
+      have_a = false;
+      a = b;
+      continue;
+    }
+    track = Track{};
+    if (have_a) {
+      track.sample(na.g, na.u);
+    } else {
+      na = exact(a);
+    }
+    const ScanNode nb = exact(b);
     std::size_t top = 0;
     stack[top++] = {na, nb};
     while (top > 0) {
@@ -657,16 +826,20 @@ void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::
           double s_r = 0.0;
           ws.gap[i] = sampledGap(t, i, s_r);
           out.min_gap = std::min(out.min_gap, ws.gap[i]);
+          track.sample(ws.gap[i], s_r);
         }
         continue;
       }
-      double lb = 0.0;
-      const ScanBlock kind = classifyBlock(t, p, q, lb);
+      BlockInfo info;
+      const ScanBlock kind = classifyBlock(t, p, q, info);
       if (kind == ScanBlock::Skip) {
         for (std::size_t i = p.i + 1; i < q.i; ++i) {
-          ws.gap[i] = lb;
+          ws.gap[i] = info.lb;
           ws.bound[i] = 1;
         }
+        track.sample(info.lb, info.u_lo);
+        track.sample(info.lb, info.u_hi);
+        track.g_abs = std::max(track.g_abs, info.g_abs);
         continue;
       }
       if ((kind == ScanBlock::Increasing && q.g > p.g) ||
@@ -677,25 +850,63 @@ void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::
         for (std::size_t i = p.i + 1; i < q.i; ++i) {
           ws.gap[i] = p.g + slope * static_cast<double>(i - p.i);
         }
+        track.u_lo = std::min(track.u_lo, info.u_lo);
+        track.u_hi = std::max(track.u_hi, info.u_hi);
         continue;
       }
       const ScanNode m = exact((p.i + q.i) / 2);
       stack[top++] = {m, q};
       stack[top++] = {p, m};
     }
-    a = nb.i;
+    if (cert) {
+      cert->model = 0;
+      if (track.ok && track.lb > threshold) {
+        cert->model = id_;
+        cert->ref_id = ws.searches;
+        cert->lb = track.lb;
+        cert->g_abs = track.g_abs;
+        cert->u_lo = track.u_lo;
+        cert->u_hi = track.u_hi;
+        cert->ref = {t.y,       t.z,       t.r[1][0],         t.r[1][1], t.r[1][2], t.r[2][0],
+                     t.r[2][1], t.r[2][2], t.r[0][1] / t.rho, t.ceps,    t.seps};
+      }
+    }
+    a = b;
     na = nb;
+    have_a = true;
   }
 }
 
 void ElasticContactSearch::search(const ElasticPose& pose, ElasticWheelGeometry& out,
                                   ElasticSearchWorkspace& ws,
                                   const ElasticWheelGeometry* seed) const {
+  auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
+  const ElasticPose& q = ws.last_pose;
+  if (!seed && ws.last_model == id_ && bits(pose.y) == bits(q.y) && bits(pose.z) == bits(q.z) &&
+      bits(pose.phi) == bits(q.phi) && bits(pose.psi) == bits(q.psi)) {
+    out = ws.last_out;
+    return;
+  }
+  ws.last_model = 0;
+  searchFull(pose, out, ws, seed);
+  if (!seed) {
+    ws.last_model = id_;
+    ws.last_pose = pose;
+    ws.last_out = out;
+  }
+}
+
+void ElasticContactSearch::searchFull(const ElasticPose& pose, ElasticWheelGeometry& out,
+                                      ElasticSearchWorkspace& ws,
+                                      const ElasticWheelGeometry* seed) const {
   out = ElasticWheelGeometry{};
   const PoseTrig t(pose, pair_, sigma_, spec_.angles);
   const std::size_t n = s_.size();
   ws.gap.assign(n, kInf);
   ws.bound.assign(n, 0);
+  ++ws.searches;
+  // (Certificates are kept from one search to the next; each names its search model.)
+  if (ws.cert.size() < n / kPruneStride + 1) ws.cert.resize(n / kPruneStride + 1);
   out.min_gap = kInf;
   // Only the wheel samples above the rail matter: to first order the rail parameter below wheel
   // sample s is s + offset (offset from y, Lw, Lr and the roll times the radius); the margin
@@ -733,17 +944,20 @@ void ElasticContactSearch::search(const ElasticPose& pose, ElasticWheelGeometry&
       out.min_gap = std::min(out.min_gap, ws.gap[i]);
     }
   }
+  // (Samples outside i_lo..i_hi are +inf: never minima.)
   ws.minima.clear();
-  for (std::size_t i = 0; i < n; ++i) {
-    const double g = ws.gap[i];
-    if (!(g < spec_.candidate_gap)) continue;
-    const double gl = i > 0 ? ws.gap[i - 1] : kInf;
-    const double gr = i + 1 < n ? ws.gap[i + 1] : kInf;
+  const double candidate = spec_.candidate_gap;
+  const double* gap = ws.gap.data();
+  for (std::size_t i = i_lo; i <= i_hi; ++i) {
+    const double g = gap[i];
+    if (!(g < candidate)) continue;
+    const double gl = i > 0 ? gap[i - 1] : kInf;
+    const double gr = i + 1 < n ? gap[i + 1] : kInf;
     if (g <= gl && g < gr) ws.minima.push_back(static_cast<int>(i));
   }
   if (ws.minima.empty()) return;
-  refineCandidates(pose, out, ws, seed);
-  collectPatches(pose, out, ws);
+  refineCandidates(t, out, ws, seed);
+  collectPatches(t, out, ws);
 }
 
 ElasticWheelGeometry ElasticContactSearch::search(const ElasticPose& pose,

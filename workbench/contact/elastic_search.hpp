@@ -67,9 +67,18 @@
 // gap strictly monotonic there (so no sample in it can be a candidate minimum, a ridge or min_gap):
 // with e = v - h_r(u) the rail-frame vertical gap, its value and slope at both ends and a bound of
 // |e''| from the profiles' precomputed range maxima of |h'|, |h''|, |h'''| (wheel) and |h'|, |h''|
-// (rail). The result is bit-identical to the full scan (tested at 3900 poses); only the workspace's
-// gap array holds bounds/interpolations at skipped samples.
+// (rail), and a signed bound of e'' from the signed ranges of h'' and h_r'' (the gap's curvature
+// is the difference of the two profiles' curvatures, which nearly cancel on a conformal tread).
+// The result is bit-identical to the full scan (tested at 3900 poses); only the workspace's gap
+// array holds bounds/interpolations at skipped samples.
+// Successive poses (the dynamic method keeps one workspace per wheel): blocks of 16 samples proved
+// above candidate_gap keep a certificate in the workspace; at a later pose the movement of every
+// locus point is bounded from the pose change, hence the change of every sample's gap, and the
+// block is skipped without a sample while its bound stays above candidate_gap. The same model at
+// the same pose (bit for bit, no seed) returns the workspace's last result. Neither can change a
+// result (tested against fresh full scans along a random walk of 10000 poses).
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -160,7 +169,19 @@ struct ElasticWheelGeometry {
   int newton_iterations = 0;
 };
 
-// Scratch memory of a search (one per thread); sized on first use, then allocation-free.
+// What the pruned scan proved about one block of wheel samples at a reference pose: every
+// sample's gap was at least lb, at most g_abs in magnitude, with its rail parameter in
+// [u_lo, u_hi] (ElasticContactSearch::scanPruned).
+struct ElasticScanCert {
+  std::uint64_t model = 0;   // ElasticContactSearch::id(); 0: none
+  std::uint64_t ref_id = 0;  // the search (ElasticSearchWorkspace::searches) that made it
+  double lb = 0.0, g_abs = 0.0, u_lo = 0.0, u_hi = 0.0;
+  // The reference pose: y, z, rows Y and Z of the rotation, R01 / rho, cos(eps), sin(eps).
+  std::array<double, 11> ref{};
+};
+
+// Scratch memory of a search (one per thread, or per wheel); sized on first use, then
+// allocation-free.
 struct ElasticSearchWorkspace {
   std::vector<double> gap;  // sampled gap per wheel sample (+inf when not over the rail; with
                             // ElasticSearchSpec::prune_scan, a lower bound above candidate_gap
@@ -170,6 +191,15 @@ struct ElasticSearchWorkspace {
   std::vector<double> depth;  // refined gap at each candidate
   std::vector<double> sw, sr;
   std::vector<unsigned char> ok;
+  // Blocks of samples certified above candidate_gap, kept between searches (scanPruned()).
+  std::vector<ElasticScanCert> cert;
+  std::uint64_t searches = 0;  // searches made with this workspace
+  // The last search made with this workspace: the same search model (ElasticContactSearch::id())
+  // at the same pose, bit for bit, without a seed, has the same result, returned without
+  // searching (14 % of the calls of the case-2 elastic run repeat their wheel's last pose).
+  std::uint64_t last_model = 0;  // 0: none
+  ElasticPose last_pose;
+  ElasticWheelGeometry last_out;
 };
 
 // The search model of one wheel-rail pair (precomputed wheel samples).
@@ -179,6 +209,9 @@ class ElasticContactSearch {
 
   const WheelRailPair& pair() const { return pair_; }
   const ElasticSearchSpec& spec() const { return spec_; }
+  // Identity of this search model (its pair and spec) for ElasticSearchWorkspace: unique per
+  // constructed model, shared by its copies.
+  std::uint64_t id() const { return id_; }
   double sigma() const { return sigma_; }
 
   // Every penetrating local minimum of the wheel-rail gap at this pose (see header comment).
@@ -218,7 +251,9 @@ class ElasticContactSearch {
  private:
   struct PoseTrig;
   // The same as the public functions, with the pose's rotation computed once per search.
-  LocusPoint locus(const PoseTrig& t, double s_w) const;
+  // full = false: only the track-frame position, its tangent and the unnormalised normal with
+  // its derivative (what the Newton solves use: no atan2 and no hypot per iteration).
+  LocusPoint locus(const PoseTrig& t, double s_w, bool full = true) const;
   double gapAt(const PoseTrig& t, double s_w, double& s_r, double* dgap = nullptr) const;
   int refine(const PoseTrig& t, double& s_w, double& s_r) const;
   int refineBracketed(const PoseTrig& t, double lo, double hi, double& s_w, double& s_r) const;
@@ -248,17 +283,27 @@ class ElasticContactSearch {
   // What the exact ends of a block of samples prove about the samples inside it (Scan: nothing;
   // Skip: all above candidate_gap, lb a lower bound; Increasing/Decreasing: strictly monotonic).
   enum class ScanBlock { Scan, Skip, Increasing, Decreasing };
+  // Skip: lb; Skip and monotonic: the range of the rail parameter in the block, and (Skip) a
+  // bound of |gap| there.
+  struct BlockInfo {
+    double lb = 0.0, u_lo = 0.0, u_hi = 0.0, g_abs = 0.0;
+  };
   ScanBlock classifyBlock(const PoseTrig& t, const ScanNode& a, const ScanNode& b,
-                          double& lb) const;
+                          BlockInfo& info) const;
+  void poseShift(const PoseTrig& t, const ElasticScanCert& c, double& fixed,
+                 double& per_slope) const;
   void scanPruned(const PoseTrig& t, std::size_t i_lo, std::size_t i_hi, ElasticWheelGeometry& out,
                   ElasticSearchWorkspace& ws) const;
-  void refineCandidates(const ElasticPose& pose, ElasticWheelGeometry& out,
-                        ElasticSearchWorkspace& ws, const ElasticWheelGeometry* seed) const;
-  void collectPatches(const ElasticPose& pose, ElasticWheelGeometry& out,
+  void searchFull(const ElasticPose& pose, ElasticWheelGeometry& out, ElasticSearchWorkspace& ws,
+                  const ElasticWheelGeometry* seed) const;
+  void refineCandidates(const PoseTrig& t, ElasticWheelGeometry& out, ElasticSearchWorkspace& ws,
+                        const ElasticWheelGeometry* seed) const;
+  void collectPatches(const PoseTrig& t, ElasticWheelGeometry& out,
                       ElasticSearchWorkspace& ws) const;
 
   WheelRailPair pair_;
   ElasticSearchSpec spec_;
+  std::uint64_t id_ = 0;
   double sigma_ = 1.0;
   double cb_ = 1.0, sb_ = 0.0;      // cos(beta), sigma sin(beta)
   std::vector<double> s_, h_, dh_;  // wheel samples
@@ -272,6 +317,10 @@ class ElasticContactSearch {
     double operator()(std::size_t a, std::size_t b) const;  // max over [a, b), a < b
   };
   RangeMax wheel_d1_, wheel_d2_, wheel_d3_, rail_d1_, rail_d2_;
+  // Signed bounds of h'' (maxima of h'' and of -h''), wheel and rail: the gap's curvature is the
+  // DIFFERENCE of the two profiles' curvatures (classifyBlock()).
+  RangeMax wheel_d2_hi_, wheel_d2_neg_, rail_d2_hi_, rail_d2_neg_;
+  double wheel_xmax_ = 0.0;  // bound of |X| = sqrt(h^2 + L^2) over the wheel
   double wheel_hmax_ = 0.0, rail_bin0_ = 0.0, rail_bin_ = 0.25e-3;
   std::size_t rail_bins_ = 0;
 };
