@@ -42,10 +42,6 @@ const std::vector<double> kLevels = {1.0, 0.1, 0.01};  // [mm] of the first quan
 // The finest relative tolerance of a ladder or the references: about 50 ulp of a double.
 constexpr double kFinestTolerance = 1e-14;
 
-std::string num(double v) {
-  return formatNumberExact(v);
-}
-
 // An executable named `name` in a folder of $PATH.
 bool onPath(const std::string& name) {
   const char* path = std::getenv("PATH");
@@ -79,12 +75,12 @@ std::vector<std::string> solverOverrides(const std::string& integrator, double v
   if (isFixed(integrator)) {
     // Steps beyond the stability limit run anyway, so that they show as failed or inaccurate
     // settings in the figure instead of being refused by `check`.
-    s.push_back("solver.step=" + num(value));
+    s.push_back("solver.step=" + formatNumberExact(value));
     s.push_back("solver.accept_unstable_step=true");
     return s;
   }
-  s.push_back("solver.rtol=" + num(value));
-  s.push_back("solver.atol=" + num(atol));
+  s.push_back("solver.rtol=" + formatNumberExact(value));
+  s.push_back("solver.atol=" + formatNumberExact(atol));
   s.push_back("solver.max_steps=100000");
   if (contact && (reference || isImplicit(integrator)))
     s.push_back("contact.normal_forces=consistent");
@@ -260,9 +256,10 @@ std::vector<double> fixedSteps(Plan& p, const PrecisionOptions& o, const scenari
       const double fit = onGridStep(h, every, duration);
       throw InputError(
           kCommandLine,
-          "--steps: " + num(h) +
-              " s does not divide the output interval run.output.every = " + num(every) + " s" +
-              (duration > 0.0 ? " and the duration " + num(duration) + " s" : "") +
+          "--steps: " + formatNumberExact(h) +
+              " s does not divide the output interval run.output.every = " +
+              formatNumberExact(every) + " s" +
+              (duration > 0.0 ? " and the duration " + formatNumberExact(duration) + " s" : "") +
               " (a fixed-step run must reach every output time on its step grid)" +
               (fit > 0.0 ? "; the largest step below it that does is " + formatNumber(fit) + " s"
                          : "") +
@@ -274,16 +271,18 @@ std::vector<double> fixedSteps(Plan& p, const PrecisionOptions& o, const scenari
   for (double h : o.quick ? kQuickSteps : kSteps) {
     const double fit = onGridStep(h, every, duration);
     if (fit <= 0.0) {
-      p.adaptations.push_back("fixed steps: no step near " + num(h) +
-                              " s divides the output interval " + num(every) + " s" +
-                              (duration > 0.0 ? " and the duration " + num(duration) + " s" : "") +
-                              ": left out");
+      p.adaptations.push_back(
+          "fixed steps: no step near " + formatNumberExact(h) + " s divides the output interval " +
+          formatNumberExact(every) + " s" +
+          (duration > 0.0 ? " and the duration " + formatNumberExact(duration) + " s" : "") +
+          ": left out");
       continue;
     }
     if (!isMultiple(fit, h) || !isMultiple(h, fit))
       p.adaptations.push_back(
-          "fixed steps: " + num(h) + " s does not divide the output interval run.output.every = " +
-          num(every) + " s" + (duration > 0.0 ? " and the duration " + num(duration) + " s" : "") +
+          "fixed steps: " + formatNumberExact(h) +
+          " s does not divide the output interval run.output.every = " + formatNumberExact(every) +
+          " s" + (duration > 0.0 ? " and the duration " + formatNumberExact(duration) + " s" : "") +
           ": the ladder uses " + formatNumber(fit) + " s instead");
     if (std::find(steps.begin(), steps.end(), fit) == steps.end()) steps.push_back(fit);
   }
@@ -454,9 +453,11 @@ Plan makePlan(const PrecisionOptions& o) {
     throw InputError(kCommandLine, "--callgrind: valgrind is not on the PATH");
   std::vector<OptionOverride> lengths;
   if (o.distance > 0.0)
-    lengths.push_back({"--distance", num(o.distance), "run.distance=" + num(o.distance)});
+    lengths.push_back({"--distance", formatNumberExact(o.distance),
+                       "run.distance=" + formatNumberExact(o.distance)});
   if (o.duration > 0.0)
-    lengths.push_back({"--duration", num(o.duration), "run.duration=" + num(o.duration)});
+    lengths.push_back({"--duration", formatNumberExact(o.duration),
+                       "run.duration=" + formatNumberExact(o.duration)});
   for (const auto& l : lengths) p.base.push_back(l.key_value);
 
   scenario::LoadOptions lo;

@@ -140,9 +140,9 @@ void addCase(Expanded& e, const stress::Hardened& h, const stress::Setting& s,
   c.label = h.axis + "=" + h.valueLabel + " " + s.label;
   c.base = e.study.base;
   c.role = role;
-  e.table << c.id << "," << h.axis << "," << stress::number(h.value) << ","
+  e.table << c.id << "," << h.axis << "," << formatNumber(h.value, 12) << ","
           << csvField(h.valueLabel) << "," << csvField(s.label) << "," << role << ","
-          << stress::number(h.tEnd) << "," << csvField(join(ov)) << "\n";
+          << formatNumber(h.tEnd, 12) << "," << csvField(join(ov)) << "\n";
   e.study.cases.push_back(std::move(c));
 }
 
@@ -162,7 +162,7 @@ void validate(const StressOptions& o, const std::vector<std::string>& common,
       std::string keys;
       for (const auto& k : h.overrides) keys += (keys.empty() ? "" : " ") + k;
       for (const auto& x : e.diagnostics())
-        d.add(kOptionLoc, "axis " + h.axis + " value " + stress::number(h.value) + " (--values " +
+        d.add(kOptionLoc, "axis " + h.axis + " value " + formatNumber(h.value, 12) + " (--values " +
                               h.axis + "=...; " + keys + "): " + x.str());
     }
   }
@@ -202,7 +202,7 @@ void checkSettings(const std::vector<std::string>& given, const std::string& opt
 
 // `python3 -m railbench stress DIR ...`: classification, stress.csv, the map. Its exit code.
 int classify(const StressOptions& o, const std::string& dir) {
-  std::vector<std::string> args = {"stress", dir, "--tolerance", stress::number(o.tolerance)};
+  std::vector<std::string> args = {"stress", dir, "--tolerance", formatNumber(o.tolerance, 12)};
   if (!o.expect.empty()) args.insert(args.end(), {"--expect", o.expect});
   if (const char* e = std::getenv("RAILBENCH_STUDY_PLOTS"); e && std::string(e) == "0")
     args.emplace_back("--no-figure");

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "workbench/core/error.hpp"
+#include "workbench/core/strings.hpp"
 #include "workbench/dynamics/names.hpp"
 
 namespace rb::app::stress {
@@ -91,9 +92,9 @@ std::string curveNote(const ScenarioSpec& s) {
 }
 
 std::vector<std::string> speedOverrides(const ScenarioSpec& s, double f) {
-  std::vector<std::string> o = {"vehicle.speed=" + number(s.vehicle.speed * f)};
+  std::vector<std::string> o = {"vehicle.speed=" + formatNumber(s.vehicle.speed * f, 12)};
   // A run given by duration keeps its length of track: faster, shorter in time.
-  if (s.run.duration > 0) o.push_back("run.duration=" + number(s.run.duration / f));
+  if (s.run.duration > 0) o.push_back("run.duration=" + formatNumber(s.run.duration / f, 12));
   return o;
 }
 
@@ -102,7 +103,7 @@ std::vector<std::string> radiusOverrides(const ScenarioSpec& s, double f) {
   for (std::size_t i = 0; i < s.track.segments.size(); ++i)
     if (hasRadius(s.track.segments[i]))
       o.push_back("track.segments[" + std::to_string(i + 1) +
-                  "].radius=" + number(s.track.segments[i].radius * f));
+                  "].radius=" + formatNumber(s.track.segments[i].radius * f, 12));
   return o;
 }
 
@@ -117,15 +118,17 @@ const std::vector<Axis>& axes() {
        {1e11, 1e12, kHertzK},
        lutNote,
        [](const ScenarioSpec&, double k) {
-         return std::vector<std::string>{"contact.flange_stiffness=" + number(k),
-                                         "contact.flange_damping=" + number(k * kDampingOverK)};
+         return std::vector<std::string>{
+             "contact.flange_stiffness=" + formatNumber(k, 12),
+             "contact.flange_damping=" + formatNumber(k * kDampingOverK, 12)};
        },
        compactNumber},
       {"transition",
        {0.5e-3, 0.25e-3, 0.1e-3},
        kecNote,
        [](const ScenarioSpec&, double d) {
-         return std::vector<std::string>{"contact.dhat=" + number(d), "contact.dbar=" + number(d)};
+         return std::vector<std::string>{"contact.dhat=" + formatNumber(d, 12),
+                                         "contact.dbar=" + formatNumber(d, 12)};
        },
        [](double d) { return compactNumber(d * 1e3) + " mm"; }},
       {"speed", {1.25, 1.5, 2.0}, speedNote, speedOverrides, factorLabel},
@@ -134,14 +137,14 @@ const std::vector<Axis>& axes() {
        irregularityNote,
        [](const ScenarioSpec& s, double f) {
          return std::vector<std::string>{"track.irregularities.scale=" +
-                                         number(s.track.irregularities.scale * f)};
+                                         formatNumber(s.track.irregularities.scale * f, 12)};
        },
        factorLabel},
       {"friction",
        {0.1, 0.4, 0.6},
        contactNote,
        [](const ScenarioSpec&, double mu) {
-         return std::vector<std::string>{"contact.mu=" + number(mu)};
+         return std::vector<std::string>{"contact.mu=" + formatNumber(mu, 12)};
        },
        compactNumber},
       {"curve_radius", {0.75, 0.5}, curveNote, radiusOverrides, factorLabel},
@@ -162,13 +165,6 @@ std::string axisList() {
 }
 
 }  // namespace
-
-std::string number(double v) {
-  std::ostringstream s;
-  s.precision(12);
-  s << v;
-  return s.str();
-}
 
 const std::vector<std::string>& axisNames() {
   static const std::vector<std::string> names = [] {
@@ -254,17 +250,18 @@ Setting parseSetting(const std::string& text, bool hasContact, const std::string
   s.overrides.push_back("solver.method=" + m);
   if (isFixedStep(m)) {
     s.label = m + " " + compactNumber(v * 1e3) + " ms";
-    s.overrides.push_back("solver.step=" + number(v));
+    s.overrides.push_back("solver.step=" + formatNumber(v, 12));
     if (paper) {
       s.overrides.push_back("solver.stiff=explicit");
       s.overrides.push_back("solver.accept_unstable_step=true");
     }
   } else {
     s.label = m + " " + compactNumber(v);
-    s.overrides.push_back("solver.rtol=" + number(v));
-    s.overrides.push_back("solver.atol=" + number(v));
-    s.overrides.push_back("solver.max_step=" +
-                          number(maxStep > 0 && maxStep < kPaperMaxStep ? maxStep : kPaperMaxStep));
+    s.overrides.push_back("solver.rtol=" + formatNumber(v, 12));
+    s.overrides.push_back("solver.atol=" + formatNumber(v, 12));
+    s.overrides.push_back(
+        "solver.max_step=" +
+        formatNumber(maxStep > 0 && maxStep < kPaperMaxStep ? maxStep : kPaperMaxStep, 12));
   }
   const bool implicit = m == "bdf" || m == "ida";
   if (hasContact && (paper || implicit))
@@ -281,13 +278,14 @@ bool hasNormalForceCoupling(const ScenarioSpec& spec) {
 std::vector<std::string> shortenRun(const ScenarioSpec& spec, double seconds) {
   const double v = spec.has_vehicle ? spec.vehicle.speed : 0.0;
   if (spec.run.duration > 0)
-    return spec.run.duration > seconds ? std::vector<std::string>{"run.duration=" + number(seconds)}
-                                       : std::vector<std::string>{};
+    return spec.run.duration > seconds
+               ? std::vector<std::string>{"run.duration=" + formatNumber(seconds, 12)}
+               : std::vector<std::string>{};
   if (spec.run.distance > 0)
     return v > 0 && spec.run.distance > v * seconds
-               ? std::vector<std::string>{"run.distance=" + number(v * seconds)}
+               ? std::vector<std::string>{"run.distance=" + formatNumber(v * seconds, 12)}
                : std::vector<std::string>{};
-  return {"run.duration=" + number(seconds)};
+  return {"run.duration=" + formatNumber(seconds, 12)};
 }
 
 }  // namespace rb::app::stress

@@ -63,7 +63,4 @@ std::vector<std::string> shortenRun(const scenario::ScenarioSpec& spec, double s
 // The end time [s] of a run of `spec` when it is given by duration, else 0.
 double endTime(const scenario::ScenarioSpec& spec);
 
-// A number as an override value: full precision, shortest form ("0.0001", "7.075e+13").
-std::string number(double v);
-
 }  // namespace rb::app::stress

@@ -11,10 +11,6 @@ namespace {
 const std::vector<std::string> kStatNames = {"max", "min", "max_abs",           "mean",
                                              "rms", "std", "half_peak_to_peak", "final"};
 
-std::string num(double v) {
-  return formatNumber(v, 6);
-}
-
 // Mean of y[first, last).
 double meanOf(const std::vector<double>& y, std::size_t first, std::size_t last) {
   double sum = 0.0;
@@ -64,7 +60,8 @@ double statOver(const std::vector<double>& y, std::size_t first, std::size_t las
 std::string nonFinite(const std::vector<double>& x, const std::vector<double>& y, std::size_t first,
                       std::size_t last) {
   for (std::size_t k = first; k < last; ++k)
-    if (!std::isfinite(y[k])) return "the signal is " + num(y[k]) + " at " + num(x[k]);
+    if (!std::isfinite(y[k]))
+      return "the signal is " + formatNumber(y[k]) + " at " + formatNumber(x[k]);
   return {};
 }
 
@@ -96,11 +93,13 @@ bool windowRange(const std::vector<double>& x, std::size_t ny, const Window& w, 
   // output sample happened to fall.
   const double slack = x.size() > 1 ? std::fabs(x[x.size() - 1] - x[x.size() - 2]) : 0.0;
   if (std::isfinite(w.to) && w.to > x.back() + slack) {
-    why = "the window ends at " + num(w.to) + " but the signal at " + num(x.back());
+    why =
+        "the window ends at " + formatNumber(w.to) + " but the signal at " + formatNumber(x.back());
     return false;
   }
   if (std::isfinite(w.from) && w.from < x.front() - slack) {
-    why = "the window starts at " + num(w.from) + " but the signal at " + num(x.front());
+    why = "the window starts at " + formatNumber(w.from) + " but the signal at " +
+          formatNumber(x.front());
     return false;
   }
   first = 0;
@@ -108,7 +107,7 @@ bool windowRange(const std::vector<double>& x, std::size_t ny, const Window& w, 
   last = first;
   while (last < x.size() && x[last] <= w.to) ++last;
   if (last == first) {
-    why = "no sample in the window [" + num(w.from) + ", " + num(w.to) + "]";
+    why = "no sample in the window [" + formatNumber(w.from) + ", " + formatNumber(w.to) + "]";
     return false;
   }
   return true;
@@ -136,7 +135,7 @@ Value steady(const std::vector<double>& x, const std::vector<double>& y, const W
   const double start = x[last - 1] - part;
   std::size_t p = first;
   while (p < last && x[p] < start) ++p;
-  if (last - p < 2) return Value::fail("fewer than 2 samples in the last " + num(part));
+  if (last - p < 2) return Value::fail("fewer than 2 samples in the last " + formatNumber(part));
   Value v;
   v.value = meanOf(y, p, last);
   const std::size_t mid = p + (last - p) / 2;
@@ -145,8 +144,9 @@ Value steady(const std::vector<double>& x, const std::vector<double>& y, const W
   const double tol =
       tolerance >= 0.0 ? tolerance : kSteadyRelTol * statOver(y, p, last, Stat::MaxAbs);
   if (drift > tol || half > tol)
-    v.note = "not steady over the last " + num(part) + " (drift " + num(drift) +
-             ", half peak-to-peak " + num(half) + " > tolerance " + num(tol) + ")";
+    v.note = "not steady over the last " + formatNumber(part) + " (drift " + formatNumber(drift) +
+             ", half peak-to-peak " + formatNumber(half) + " > tolerance " + formatNumber(tol) +
+             ")";
   return v;
 }
 
@@ -188,9 +188,9 @@ Value maxAbsDifference(const std::vector<double>& x, const std::vector<double>& 
       continue;
     ++used;
     if (!interpolate(x, y, xr[k], yi))
-      return Value::fail("the reference's sample at " + num(xr[k]) +
-                         " is outside the case's range [" + num(x.front()) + ", " + num(x.back()) +
-                         "]");
+      return Value::fail("the reference's sample at " + formatNumber(xr[k]) +
+                         " is outside the case's range [" + formatNumber(x.front()) + ", " +
+                         formatNumber(x.back()) + "]");
     v.value = std::max(v.value, std::fabs(yi - yr[k]));
   }
   if (used == 0) return Value::fail("no reference sample inside the case's range");

@@ -355,13 +355,6 @@ void assessWear(const AssessmentSignals& sig, AssessmentResult& r) {
   }
 }
 
-std::string fmt(double v) {
-  std::ostringstream os;
-  os.precision(4);
-  os << v;
-  return os.str();
-}
-
 // The attributes every quantity's group carries (ASSESSMENT_LAYOUT).
 void writeAssessed(io::ResultFile& f, const std::string& g, const Assessed& a) {
   f.attr(g, "unit", a.unit);
@@ -638,8 +631,9 @@ AssessmentResult assess(const AssessmentSignals& sig, const assessment::Assessme
                   "weightings remove the static part)"),
       std::string("bogie-frame lateral acceleration at the frame point above each axle, "
                   "centre-of-mass height"),
-      "Nadal's limit with flange angle " + fmt(spec.flange_angle) + " rad and mu " + fmt(mu),
-      "sum Y limit alpha (10 kN + 2 Q0 / 3) with alpha " + fmt(r.spec.alpha) +
+      "Nadal's limit with flange angle " + formatNumber(spec.flange_angle, 4) + " rad and mu " +
+          formatNumber(mu, 4),
+      "sum Y limit alpha (10 kN + 2 Q0 / 3) with alpha " + formatNumber(r.spec.alpha, 4) +
           " and Q0 the mean static wheel load of the wheelset"};
   if (sig.time.size() < 2) {
     r.notes.push_back("assessment: fewer than 2 samples; nothing assessed");
@@ -662,16 +656,17 @@ AssessmentResult assess(const AssessmentSignals& sig, const assessment::Assessme
 
 std::vector<std::string> summaryLines(const AssessmentResult& r) {
   std::vector<std::string> out;
-  out.emplace_back("assessment (" + fmt(1.0 / r.sample_every) + " Hz samples):");
+  out.emplace_back("assessment (" + formatNumber(1.0 / r.sample_every, 4) + " Hz samples):");
   for (const auto& it : r.summary) {
     std::ostringstream os;
     os << "  " << it.key;
     os << std::string(it.key.size() < 14 ? 14 - it.key.size() : 1, ' ');
-    os << fmt(it.a.check.value) << " " << it.unit;
+    os << formatNumber(it.a.check.value, 4) << " " << it.unit;
     if (std::isfinite(it.a.check.limit))
-      os << "  limit " << fmt(it.a.check.limit) << "  " << (it.a.check.ok() ? "ok" : "EXCEEDED");
+      os << "  limit " << formatNumber(it.a.check.limit, 4) << "  "
+         << (it.a.check.ok() ? "ok" : "EXCEEDED");
     os << "  (" << it.a.where;
-    if (std::isfinite(it.a.at_s)) os << " at s = " << fmt(it.a.at_s) << " m";
+    if (std::isfinite(it.a.at_s)) os << " at s = " << formatNumber(it.a.at_s, 4) << " m";
     os << ")";
     out.push_back(os.str());
   }
@@ -699,7 +694,7 @@ std::vector<std::string> sectionLines(const AssessmentResult& r) {
     const auto& sec = sr.section;
     std::string kind = std::string(nameOf(sec.kind));
     if (sec.zone != assessment::TestZone::None) kind += ", " + std::string(nameOf(sec.zone));
-    const std::string range = fmt(sec.from) + "-" + fmt(sec.to);
+    const std::string range = formatNumber(sec.from, 4) + "-" + formatNumber(sec.to, 4);
     std::string line;
     std::snprintf(buf, sizeof buf, "  %-14s %-22s %-15s %7.1f", sec.name.c_str(), kind.c_str(),
                   range.c_str(), sr.covered);
@@ -730,8 +725,9 @@ std::vector<std::string> exceededWarnings(const AssessmentResult& r) {
   std::vector<std::string> out;
   for (const auto& it : r.summary)
     if (!it.a.check.ok())
-      out.push_back("assessment: " + it.key + " = " + fmt(it.a.check.value) + " " + it.unit +
-                    " exceeds its limit " + fmt(it.a.check.limit) + " (" + it.a.where + ")");
+      out.push_back("assessment: " + it.key + " = " + formatNumber(it.a.check.value, 4) + " " +
+                    it.unit + " exceeds its limit " + formatNumber(it.a.check.limit, 4) + " (" +
+                    it.a.where + ")");
   return out;
 }
 
