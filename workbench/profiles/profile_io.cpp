@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <string_view>
@@ -11,6 +10,7 @@
 
 #include "workbench/core/error.hpp"
 #include "workbench/core/files.hpp"
+#include "workbench/core/strings.hpp"
 #include "workbench/profiles/sampling.hpp"
 #include "workbench/profiles/smoothing_spline.hpp"
 
@@ -36,12 +36,6 @@ bool gridFits(double a, double b, double ds) {
 
 constexpr double kMinWheelRadius = 0.2;  // [m]
 constexpr double kMaxWheelRadius = 0.7;  // [m]
-
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 std::string_view trim(std::string_view s) {
   const auto b = s.find_first_not_of(" \t\r\n");
@@ -156,12 +150,13 @@ bool parsePoint(std::string_view text, const SourceLoc& loc, FileDiagnostics& di
     return false;
   }
   if (!(v[2] > 0.0)) {
-    diags.add(loc, "point weight must be positive, got " + num(v[2]));
+    diags.add(loc, "point weight must be positive, got " + formatNumber(v[2]));
     return false;
   }
   if (v[2] < kMinWeight || v[2] > kMaxWeight) {
-    diags.add(loc, "point weight " + num(v[2]) + " is outside " + num(kMinWeight) + " .. " +
-                       num(kMaxWeight) + " (weights are relative: scale them)");
+    diags.add(loc, "point weight " + formatNumber(v[2]) + " is outside " +
+                       formatNumber(kMinWeight) + " .. " + formatNumber(kMaxWeight) +
+                       " (weights are relative: scale them)");
     return false;
   }
   y = v[0];
@@ -315,7 +310,7 @@ class SimpackReader {
       double v = 0.0;
       number(key, value, loc, v);
       if (v != 0.0) {
-        diags.add(loc, std::string(key) + " = " + num(v) +
+        diags.add(loc, std::string(key) + " = " + formatNumber(v) +
                            " is not supported (only 0); transform the points with "
                            "ProfileReadOptions instead");
       }
@@ -419,7 +414,7 @@ void checkCoordinates(const ProfilePoints& p, const ProfileReadOptions& opt) {
   for (std::size_t i = 0; i < n; ++i) {
     for (const double v : {p.y[i], p.z[i]}) {
       if (std::abs(v) > 1.0) {
-        throw InputError(at(i), "coordinate " + num(v) +
+        throw InputError(at(i), "coordinate " + formatNumber(v) +
                                     " m is implausible for a profile (> 1 m): the data seem "
                                     "to be in millimetres (" +
                                     p.unitsHint + ")");
@@ -435,8 +430,8 @@ void checkCoordinates(const ProfilePoints& p, const ProfileReadOptions& opt) {
     for (std::size_t i = 0; i < n; ++i) {
       const double r = opt.r0 + p.z[i];
       if (r < kMinWheelRadius || r > kMaxWheelRadius) {
-        throw InputError(at(i), "wheel radius " + num(r) + " m (r0 " + num(opt.r0) + " + z " +
-                                    num(p.z[i]) +
+        throw InputError(at(i), "wheel radius " + formatNumber(r) + " m (r0 " +
+                                    formatNumber(opt.r0) + " + z " + formatNumber(p.z[i]) +
                                     ") is outside 0.2 .. 0.7 m: check r0 and the "
                                     "units");
       }
@@ -452,8 +447,9 @@ std::vector<std::size_t> ascendingOrder(const ProfilePoints& p) {
   const double dir = p.y[1] > p.y[0] ? 1.0 : -1.0;
   for (std::size_t i = 1; i < n; ++i) {
     if (!(dir * (p.y[i] - p.y[i - 1]) > 0.0)) {
-      throw InputError(at(i), "profile y values must be strictly monotone: y = " + num(p.y[i]) +
-                                  " m follows y = " + num(p.y[i - 1]) + " m");
+      throw InputError(at(i),
+                       "profile y values must be strictly monotone: y = " + formatNumber(p.y[i]) +
+                           " m follows y = " + formatNumber(p.y[i - 1]) + " m");
     }
   }
   std::vector<std::size_t> order(n);
@@ -491,7 +487,7 @@ Profile profileFromPoints(const ProfilePoints& p, const ProfileReadOptions& opt,
   if (bestLen < kMinPoints) {
     throw InputError(SourceLoc{p.file, p.endLine},
                      "only " + std::to_string(bestLen) +
-                         " consecutive points with |dz/dy| <= " + num(opt.maxSlope) +
+                         " consecutive points with |dz/dy| <= " + formatNumber(opt.maxSlope) +
                          "; at least " + std::to_string(kMinPoints) + " are needed");
   }
   std::vector<double> s, h, w;
@@ -515,21 +511,22 @@ Profile profileFromPoints(const ProfilePoints& p, const ProfileReadOptions& opt,
   for (std::size_t k = 1; k < s.size(); ++k) {
     if (!(s[k] > s[k - 1])) {
       throw InputError(SourceLoc{p.file, lines[k]},
-                       "after the rotation by " + num(opt.rotate) +
+                       "after the rotation by " + formatNumber(opt.rotate) +
                            " rad the points are no longer ordered along y (lower maxSlope)");
     }
     if (!(s[k] - s[k - 1] >= kMinPointSpacing)) {
       throw InputError(SourceLoc{p.file, lines[k]},
-                       "y = " + num(s[k]) + " m is closer than 1 nm to the previous point (y = " +
-                           num(s[k - 1]) + " m): merge or drop duplicate points");
+                       "y = " + formatNumber(s[k]) +
+                           " m is closer than 1 nm to the previous point (y = " +
+                           formatNumber(s[k - 1]) + " m): merge or drop duplicate points");
     }
   }
   const double s0 = s.front(), s1 = s.back();
   if (!gridFits(s0, s1, opt.ds)) {
     throw InputError(SourceLoc{p.file, p.endLine},
-                     "the kept points span only " + num(1e3 * (s1 - s0)) +
+                     "the kept points span only " + formatNumber(1e3 * (s1 - s0)) +
                          " mm along y; the profile grid needs at least 4 steps of " +
-                         num(1e3 * opt.ds) + " mm inside them");
+                         formatNumber(1e3 * opt.ds) + " mm inside them");
   }
   const double lambda = SmoothingSpline::lambdaForLength(s, w, opt.smoothingLength);
   const SmoothingSpline fit(std::move(s), h, std::move(w), lambda, SplineEnd::NotAKnot);

@@ -2,19 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "workbench/core/error.hpp"
+#include "workbench/core/strings.hpp"
 
 namespace rb::suspension {
-
-namespace {
-std::string num(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
-}  // namespace
 
 std::vector<std::string> BumpstopLaw::check(const std::vector<double>& d,
                                             const std::vector<double>& f) {
@@ -36,24 +28,26 @@ std::vector<std::string> BumpstopLaw::check(const std::vector<double>& d,
     out.push_back("table values must be finite numbers");
     return out;
   }
-  if (d[0] < 0.0) out.push_back("table: d must be >= 0 m (d[1] = " + num(d[0]) + ")");
+  if (d[0] < 0.0) out.push_back("table: d must be >= 0 m (d[1] = " + formatNumber(d[0]) + ")");
   if (f[0] != 0.0)
     out.push_back(
         "table: the first force must be 0 N so the force is continuous at the clearance (F[1] = " +
-        num(f[0]) + ")");
+        formatNumber(f[0]) + ")");
   bool any_positive = false;
   for (std::size_t k = 0; k < d.size(); ++k) {
     if (f[k] < 0.0)
-      out.push_back("table: F must be >= 0 N (F[" + std::to_string(k + 1) + "] = " + num(f[k]) +
-                    ")");
+      out.push_back("table: F must be >= 0 N (F[" + std::to_string(k + 1) +
+                    "] = " + formatNumber(f[k]) + ")");
     any_positive = any_positive || f[k] > 0.0;
     if (k == 0) continue;
     if (!(d[k] > d[k - 1]))
-      out.push_back("table: d must be strictly increasing (d[" + std::to_string(k) + "] = " +
-                    num(d[k - 1]) + ", d[" + std::to_string(k + 1) + "] = " + num(d[k]) + ")");
+      out.push_back("table: d must be strictly increasing (d[" + std::to_string(k) +
+                    "] = " + formatNumber(d[k - 1]) + ", d[" + std::to_string(k + 1) +
+                    "] = " + formatNumber(d[k]) + ")");
     if (f[k] < f[k - 1])
-      out.push_back("table: F must not decrease (F[" + std::to_string(k) + "] = " + num(f[k - 1]) +
-                    ", F[" + std::to_string(k + 1) + "] = " + num(f[k]) + ")");
+      out.push_back("table: F must not decrease (F[" + std::to_string(k) +
+                    "] = " + formatNumber(f[k - 1]) + ", F[" + std::to_string(k + 1) +
+                    "] = " + formatNumber(f[k]) + ")");
   }
   if (!any_positive && d.size() >= 2)
     out.push_back("table: every force is 0, the bumpstop does nothing");

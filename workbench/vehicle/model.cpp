@@ -3,17 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <sstream>
+
+#include "workbench/core/strings.hpp"
 
 namespace rb::vehicle {
 
 namespace {
-
-std::string num(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
 
 std::string_view bodyKindName(BodyKind k) {
   switch (k) {
@@ -78,7 +73,7 @@ namespace {
 void validateElementLaw(const ElementSpec& e, const std::string& what, Diagnostics& diags) {
   const auto nonneg = [&](double v, const char* key, const char* unit) {
     if (!(std::isfinite(v) && v >= 0.0))
-      diags.add(e.loc, what + ": " + key + " must be >= 0 " + unit + ", got " + num(v));
+      diags.add(e.loc, what + ": " + key + " must be >= 0 " + unit + ", got " + formatNumber(v));
   };
   const bool axial = e.direction == Direction::Axial;
   switch (e.kind) {
@@ -89,10 +84,10 @@ void validateElementLaw(const ElementSpec& e, const std::string& what, Diagnosti
     case ElementKind::SeriesSpringDamper:
       nonneg(e.stiffness, "stiffness", "N/m");
       if (!(std::isfinite(e.damping) && e.damping > 0.0))
-        diags.add(e.loc, what + ": damping must be > 0 N s/m, got " + num(e.damping));
+        diags.add(e.loc, what + ": damping must be > 0 N s/m, got " + formatNumber(e.damping));
       if (!(std::isfinite(e.series_stiffness) && e.series_stiffness > 0.0))
-        diags.add(e.loc,
-                  what + ": series_stiffness must be > 0 N/m, got " + num(e.series_stiffness));
+        diags.add(e.loc, what + ": series_stiffness must be > 0 N/m, got " +
+                             formatNumber(e.series_stiffness));
       break;
     case ElementKind::ShearSpring:
       nonneg(e.stiffness, "stiffness", "N/m");
@@ -140,7 +135,7 @@ void validateElement(const VehicleSpec& spec, const ElementSpec& e,
                            e.kind == ElementKind::SeriesSpringDamper ||
                            e.kind == ElementKind::Bumpstop;
   if (!(std::isfinite(e.length0) && e.length0 >= 0.0))
-    diags.add(e.loc, what + ": length0 must be >= 0 m, got " + num(e.length0));
+    diags.add(e.loc, what + ": length0 must be >= 0 m, got " + formatNumber(e.length0));
   else if (e.length0 != 0.0 && (!axial || !uses_length))
     diags.add(e.loc, what +
                          ": length0 applies to axial elements only (directional elements are "
@@ -153,7 +148,7 @@ void validateElement(const VehicleSpec& spec, const ElementSpec& e,
       diags.add(e.loc, what +
                            ": an axial element needs distinct attachment points (their nominal "
                            "distance is " +
-                           num(dn.norm()) + " m); use direction x, y or z");
+                           formatNumber(dn.norm()) + " m); use direction x, y or z");
   }
 }
 
@@ -172,11 +167,11 @@ void validateBodies(const VehicleSpec& spec, std::map<std::string, int>& bodies,
       body_list += (body_list.empty() ? "" : ", ") + b.name;
     if (b.kind != BodyKind::Frame) {
       if (!(std::isfinite(b.mass) && b.mass > 0.0))
-        diags.add(b.loc, what + ": mass must be > 0 kg, got " + num(b.mass));
+        diags.add(b.loc, what + ": mass must be > 0 kg, got " + formatNumber(b.mass));
       if (!(b.inertia.allFinite() && b.inertia.minCoeff() > 0.0))
         diags.add(b.loc, what + ": inertia must be > 0 kg m^2 in every axis, got {" +
-                             num(b.inertia[0]) + ", " + num(b.inertia[1]) + ", " +
-                             num(b.inertia[2]) + "}");
+                             formatNumber(b.inertia[0]) + ", " + formatNumber(b.inertia[1]) + ", " +
+                             formatNumber(b.inertia[2]) + "}");
     }
     if (!std::isfinite(b.x) || !std::isfinite(b.height))
       diags.add(b.loc, what + ": x and height must be finite");
@@ -201,11 +196,13 @@ void validateVehicle(const VehicleSpec& spec, Diagnostics& diags) {
   const std::string vname = "vehicle '" + spec.name + "'";
   if (spec.bodies.empty()) diags.add(spec.loc, vname + ": no bodies");
   if (!(std::isfinite(spec.speed) && spec.speed >= 0.0))
-    diags.add(spec.loc, vname + ": speed must be >= 0 m/s, got " + num(spec.speed));
+    diags.add(spec.loc, vname + ": speed must be >= 0 m/s, got " + formatNumber(spec.speed));
   if (!std::isfinite(spec.acceleration))
-    diags.add(spec.loc, vname + ": acceleration must be finite, got " + num(spec.acceleration));
+    diags.add(spec.loc,
+              vname + ": acceleration must be finite, got " + formatNumber(spec.acceleration));
   if (!(std::isfinite(spec.wheel_radius) && spec.wheel_radius > 0.0))
-    diags.add(spec.loc, vname + ": wheel_radius must be > 0 m, got " + num(spec.wheel_radius));
+    diags.add(spec.loc,
+              vname + ": wheel_radius must be > 0 m, got " + formatNumber(spec.wheel_radius));
   if (!std::isfinite(spec.start)) diags.add(spec.loc, vname + ": start must be finite");
 
   std::map<std::string, int> bodies;
