@@ -752,18 +752,7 @@ void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::
                                       ElasticWheelGeometry& out, ElasticSearchWorkspace& ws) const {
   const double threshold = spec_.candidate_gap * (1.0 + 1e-9) + 1e-12;
   const profiles::Profile& rail = *pair_.rail;
-  // What the scan of one block proved about all its samples (for its certificate).
-  struct Track {
-    bool ok = true;
-    double lb = kInf, g_abs = 0.0, u_lo = kInf, u_hi = -kInf;
-    void sample(double g, double u) {
-      ok = ok && g < kInf;
-      lb = std::min(lb, g);
-      g_abs = std::max(g_abs, std::abs(g));
-      u_lo = std::min(u_lo, u);
-      u_hi = std::max(u_hi, u);
-    }
-  } track;
+  ScanTrack track;
   auto exact = [&](std::size_t i) {
     ScanNode n{i, 0.0, 0.0, 0.0, 0.0};
     n.g = sampledGap(t, i, n.u, n.e, n.de);
@@ -792,7 +781,6 @@ void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::
     lb = c.lb - (1.01 * ((1.0 + r1) * dp + c.g_abs * r2 * dp) + 1e-12);
     return lb > threshold;
   };
-  std::array<std::pair<ScanNode, ScanNode>, 16> stack{};
   ScanNode na{};
   bool have_a = false;
   for (std::size_t a = i_lo; a < i_hi;) {
@@ -809,55 +797,14 @@ void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::
       a = b;
       continue;
     }
-    track = Track{};
+    track = ScanTrack{};
     if (have_a) {
       track.sample(na.g, na.u);
     } else {
       na = exact(a);
     }
     const ScanNode nb = exact(b);
-    std::size_t top = 0;
-    stack[top++] = {na, nb};
-    while (top > 0) {
-      const auto [p, q] = stack[--top];
-      if (q.i <= p.i + 1) continue;
-      if (q.i < p.i + kMinBlock) {  // a bound costs about as much as a sample: scan short blocks
-        for (std::size_t i = p.i + 1; i < q.i; ++i) {
-          double s_r = 0.0;
-          ws.gap[i] = sampledGap(t, i, s_r);
-          out.min_gap = std::min(out.min_gap, ws.gap[i]);
-          track.sample(ws.gap[i], s_r);
-        }
-        continue;
-      }
-      BlockInfo info;
-      const ScanBlock kind = classifyBlock(t, p, q, info);
-      if (kind == ScanBlock::Skip) {
-        for (std::size_t i = p.i + 1; i < q.i; ++i) {
-          ws.gap[i] = info.lb;
-          ws.bound[i] = 1;
-        }
-        track.sample(info.lb, info.u_lo);
-        track.sample(info.lb, info.u_hi);
-        track.g_abs = std::max(track.g_abs, info.g_abs);
-        continue;
-      }
-      if ((kind == ScanBlock::Increasing && q.g > p.g) ||
-          (kind == ScanBlock::Decreasing && q.g < p.g)) {
-        // Strictly between the ends like the true samples: not minima, below the larger end
-        // (ridges), above the smaller one (min_gap): the scan's result is unchanged.
-        const double slope = (q.g - p.g) / static_cast<double>(q.i - p.i);
-        for (std::size_t i = p.i + 1; i < q.i; ++i) {
-          ws.gap[i] = p.g + slope * static_cast<double>(i - p.i);
-        }
-        track.u_lo = std::min(track.u_lo, info.u_lo);
-        track.u_hi = std::max(track.u_hi, info.u_hi);
-        continue;
-      }
-      const ScanNode m = exact((p.i + q.i) / 2);
-      stack[top++] = {m, q};
-      stack[top++] = {p, m};
-    }
+    scanBlock(t, na, nb, exact, track, out, ws);
     if (cert) {
       cert->model = 0;
       if (track.ok && track.lb > threshold) {
@@ -985,6 +932,57 @@ int ElasticContactSearch::refineBracketed(const ElasticPose& pose, double lo, do
 ElasticPatchGeometry ElasticContactSearch::describe(const ElasticPose& pose, double s_w,
                                                     double s_r) const {
   return describe(PoseTrig(pose, pair_, sigma_, spec_.angles), s_w, s_r);
+}
+
+// One block of the pruned scan between the exact samples na and nb (scanPruned): halved at
+// exact middle samples until every part is skipped, filled as monotonic, or short enough to scan.
+template <class Exact>
+void ElasticContactSearch::scanBlock(const PoseTrig& t, const ScanNode& na, const ScanNode& nb,
+                                     Exact& exact, ScanTrack& track, ElasticWheelGeometry& out,
+                                     ElasticSearchWorkspace& ws) const {
+  std::array<std::pair<ScanNode, ScanNode>, 16> stack{};
+  std::size_t top = 0;
+  stack[top++] = {na, nb};
+  while (top > 0) {
+    const auto [p, q] = stack[--top];
+    if (q.i <= p.i + 1) continue;
+    if (q.i < p.i + kMinBlock) {  // a bound costs about as much as a sample: scan short blocks
+      for (std::size_t i = p.i + 1; i < q.i; ++i) {
+        double s_r = 0.0;
+        ws.gap[i] = sampledGap(t, i, s_r);
+        out.min_gap = std::min(out.min_gap, ws.gap[i]);
+        track.sample(ws.gap[i], s_r);
+      }
+      continue;
+    }
+    BlockInfo info;
+    const ScanBlock kind = classifyBlock(t, p, q, info);
+    if (kind == ScanBlock::Skip) {
+      for (std::size_t i = p.i + 1; i < q.i; ++i) {
+        ws.gap[i] = info.lb;
+        ws.bound[i] = 1;
+      }
+      track.sample(info.lb, info.u_lo);
+      track.sample(info.lb, info.u_hi);
+      track.g_abs = std::max(track.g_abs, info.g_abs);
+      continue;
+    }
+    if ((kind == ScanBlock::Increasing && q.g > p.g) ||
+        (kind == ScanBlock::Decreasing && q.g < p.g)) {
+      // Strictly between the ends like the true samples: not minima, below the larger end
+      // (ridges), above the smaller one (min_gap): the scan's result is unchanged.
+      const double slope = (q.g - p.g) / static_cast<double>(q.i - p.i);
+      for (std::size_t i = p.i + 1; i < q.i; ++i) {
+        ws.gap[i] = p.g + slope * static_cast<double>(i - p.i);
+      }
+      track.u_lo = std::min(track.u_lo, info.u_lo);
+      track.u_hi = std::max(track.u_hi, info.u_hi);
+      continue;
+    }
+    const ScanNode m = exact((p.i + q.i) / 2);
+    stack[top++] = {m, q};
+    stack[top++] = {p, m};
+  }
 }
 
 }  // namespace rb::contact

@@ -77,8 +77,11 @@
 // block is skipped without a sample while its bound stays above candidate_gap. The same model at
 // the same pose (bit for bit, no seed) returns the workspace's last result. Neither can change a
 // result (tested against fresh full scans along a random walk of 10000 poses).
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -292,6 +295,22 @@ class ElasticContactSearch {
                           BlockInfo& info) const;
   void poseShift(const PoseTrig& t, const ElasticScanCert& c, double& fixed,
                  double& per_slope) const;
+  // What the scan of one block proved about all its samples (for its certificate).
+  struct ScanTrack {
+    bool ok = true;
+    double lb = kScanInf, g_abs = 0.0, u_lo = kScanInf, u_hi = -kScanInf;
+    void sample(double g, double u) {
+      ok = ok && g < kScanInf;
+      lb = std::min(lb, g);
+      g_abs = std::max(g_abs, std::abs(g));
+      u_lo = std::min(u_lo, u);
+      u_hi = std::max(u_hi, u);
+    }
+  };
+  static constexpr double kScanInf = std::numeric_limits<double>::infinity();
+  template <class Exact>
+  void scanBlock(const PoseTrig& t, const ScanNode& na, const ScanNode& nb, Exact& exact,
+                 ScanTrack& track, ElasticWheelGeometry& out, ElasticSearchWorkspace& ws) const;
   void scanPruned(const PoseTrig& t, std::size_t i_lo, std::size_t i_hi, ElasticWheelGeometry& out,
                   ElasticSearchWorkspace& ws) const;
   void searchFull(const ElasticPose& pose, ElasticWheelGeometry& out, ElasticSearchWorkspace& ws,
