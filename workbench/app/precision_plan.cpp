@@ -88,10 +88,10 @@ std::vector<std::string> solverOverrides(const std::string& integrator, double v
 }
 
 // The registry row of a model's contact method (dynamics/contact_methods.hpp).
+// A guided model (no method) reads as the first row (it has "tables" in the plan, as before).
 const dynamics::ContactMethodInfo& methodNamed(std::string_view name) {
-  for (const dynamics::ContactMethodInfo& i : dynamics::kContactMethodInfos)
-    if (i.name == name) return i;
-  return dynamics::kContactMethodInfos.front();
+  const dynamics::ContactMethodInfo* i = dynamics::methodInfoNamed(name);
+  return i ? *i : dynamics::kContactMethodInfos.front();
 }
 const dynamics::ContactMethodInfo& methodOf(const Model& m) {
   return methodNamed(m.method);

@@ -50,6 +50,21 @@ class Cholesky5 {
   double inv_diag_[5] = {0, 0, 0, 0, 0};
 };
 
+// Prescribed spin (theta_ddot = thdd given): row and column 3 (the spin) of the wheelset's mass
+// matrix M become the identity, and the right-hand side b of M qddot = b loses the coupling
+// M_{q,theta} thdd (m3 = the original column 3 of M) and gets thdd as its spin row. The spin row's
+// own reaction (spin torque) drops out.
+inline void pinSpinMass(Eigen::Matrix<double, 5, 5>& M) {
+  M.row(3).setZero();
+  M.col(3).setZero();
+  M(3, 3) = 1.0;
+}
+inline void pinSpinRhs(const Eigen::Matrix<double, 5, 1>& m3, double thdd,
+                       Eigen::Matrix<double, 5, 1>& b) {
+  b -= m3 * thdd;
+  b(3) = thdd;
+}
+
 // The wheelset's augmented system [M -N; G 0] [qddot; lambda] = [r_q; r_lambda] (Eq. 16, 24) by
 // its Schur complement: M is the symmetric positive definite 5x5 mass matrix, so with
 // X = M^-1 N and S = G X, lambda = S^-1 (r_lambda - G M^-1 r_q) and qddot = M^-1 r_q + X lambda.
@@ -70,9 +85,7 @@ class AugmentedSolver {
     Eigen::Matrix<double, 5, 2> Nf = N;
     if (pin) {
       m3_ = M.col(3);
-      Mf.row(3).setZero();
-      Mf.col(3).setZero();
-      Mf(3, 3) = 1.0;
+      pinSpinMass(Mf);
       Nf.row(3).setZero();
     }
     if (!llt_.factor(Mf)) return false;
@@ -83,10 +96,7 @@ class AugmentedSolver {
   }
   Eigen::Matrix<double, 7, 1> solve(const Eigen::Matrix<double, 7, 1>& r) const {
     Eigen::Matrix<double, 5, 1> b = r.head<5>();
-    if (pin_) {
-      b -= m3_ * thdd_;
-      b(3) = thdd_;
-    }
+    if (pin_) pinSpinRhs(m3_, thdd_, b);
     const Eigen::Matrix<double, 5, 1> u = llt_.solve(b);
     const Eigen::Vector2d lam = Sinv_ * (r.tail<2>() - G_ * u);
     Eigen::Matrix<double, 7, 1> x;

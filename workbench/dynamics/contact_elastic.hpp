@@ -167,12 +167,8 @@ inline int elasticAccelerations(const ContactModels& models, const StageInput& i
   Eigen::Matrix<double, 5, 5> M = mass.block<5, 5>(1, 1);
   Vec5 b = Q;
   if (!models.layout.spinFree()) {
-    const double thdd = in.acceleration / models.contact.centredRadius();
-    b -= M.col(3) * thdd;
-    b(3) = thdd;
-    M.row(3).setZero();
-    M.col(3).setZero();
-    M(3, 3) = 1.0;
+    pinSpinRhs(M.col(3), in.acceleration / models.contact.centredRadius(), b);
+    pinSpinMass(M);
   }
   Cholesky5 llt;
   if (!llt.factor(M)) {

@@ -113,6 +113,13 @@ constexpr const ContactMethodInfo& methodInfo(ContactMethod m) {
   return kContactMethodInfos.front();
 }
 
+// The row of the method named `name` ("kec", "lut", "elastic"); null for an unknown name.
+constexpr const ContactMethodInfo* methodInfoNamed(std::string_view name) {
+  for (const ContactMethodInfo& i : kContactMethodInfos)
+    if (i.name == name) return &i;
+  return nullptr;
+}
+
 template <class... Methods>
 constexpr std::array<NameEntry<ContactMethod>, sizeof...(Methods)> contactMethodNames(
     MethodList<Methods...>) {

@@ -135,13 +135,23 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
   const double spin = m.speedAt(t0) / contact_->centredRadius();
   if (l.spinFree())
     for (int w = 0; w < l.n_ws; ++w) y[l.wsRate(w, 1)] = spin;
-  // Each wheelset starts centred between its two rails, parallel to them and following them: on
-  // an irregular track the rails' mid-line is displaced by the alignment xi_a (Eq. 18:
-  // ybar = y - xi_a), and a wheelset at y = 0 would start up to several millimetres off centre,
-  // against a flange.
-  if (irr_ != nullptr)
-    for (int w = 0; w < l.n_ws; ++w) {
-      const track::IrregularityPoint rail = irr_->at(m.bodyS(static_cast<int>(l.wheelset(w)), t0));
+  for (WheelsetWork& ww : work.wheelsets) {
+    ww.memory.forget();
+    ww.kec_warm = false;
+  }
+  // The static equilibrium below solves the car bodies and bogies and, on elastic contact, the
+  // wheelsets' height and roll.
+  std::vector<int> unknowns;
+  for (int i = 0; i < 5 * l.n_free; ++i) unknowns.push_back(i);
+  for (int w = 0; w < l.n_ws; ++w) {
+    const track::IrregularityPoint rail =
+        irr_ != nullptr ? irr_->at(m.bodyS(static_cast<int>(l.wheelset(w)), t0))
+                        : track::IrregularityPoint{};
+    // Each wheelset starts centred between its two rails, parallel to them and following them:
+    // on an irregular track the rails' mid-line is displaced by the alignment xi_a (Eq. 18:
+    // ybar = y - xi_a), and a wheelset at y = 0 would start up to several millimetres off centre,
+    // against a flange.
+    if (irr_ != nullptr) {
       const double a_s = 0.5 * (rail.y_l_s + rail.y_r_s);
       y[l.wsPosition(w, 0)] = 0.5 * (rail.y_l + rail.y_r);
       y[l.wsRate(w, 0)] = m.speedAt(t0) * a_s;
@@ -149,25 +159,13 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
       y[l.wsRate(w, 2)] =
           m.speedAt(t0) * rail.xi_ss[static_cast<std::size_t>(track::Channel::Alignment)];
     }
-  for (WheelsetWork& ww : work.wheelsets) {
-    ww.memory.forget();
-    ww.kec_warm = false;
-  }
-  // Elastic contact: every wheelset starts in its centred height and roll sunk by the Hertz
-  // approach of the nominal wheel load (so that the tread patches exist and the equilibrium
-  // iteration below has a contact stiffness to work with); the iteration solves z and phi with the
-  // car bodies and bogies.
-  std::vector<int> unknowns;
-  for (int i = 0; i < 5 * l.n_free; ++i) unknowns.push_back(i);
-  if (l.wheelsetVertical()) {
-    const ElasticContactModel& e = *contact_->elastic;
-    for (int w = 0; w < l.n_ws; ++w) {
-      const track::IrregularityPoint rail =
-          irr_ != nullptr ? irr_->at(m.bodyS(static_cast<int>(l.wheelset(w)), t0))
-                          : track::IrregularityPoint{};
+    // Elastic contact: the centred height and roll over the rails, sunk by the Hertz approach of
+    // the nominal wheel load (so that the tread patches exist and the equilibrium iteration has a
+    // contact stiffness to work with).
+    if (l.wheelsetVertical()) {
       const double height = m.bodies[l.wheelset(w)].height;
-      y[l.wsPosition(w, 3)] =
-          contact_->centred_z - height - e.static_approach + 0.5 * (rail.z_l + rail.z_r);
+      y[l.wsPosition(w, 3)] = contact_->centred_z - height - contact_->elastic->static_approach +
+                              0.5 * (rail.z_l + rail.z_r);
       y[l.wsPosition(w, 4)] =
           contact_->centred_phi + (rail.z_l - rail.z_r) / (2.0 * contact_->geometry.rail_lr);
       unknowns.push_back(l.wsPosition(w, 3));
