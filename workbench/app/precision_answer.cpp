@@ -137,7 +137,8 @@ RunFile runFile(const fs::path& dir, const std::string& id, int repeats) {
 }
 
 Error fileError(const fs::path& run, const fs::path& ref, const Quantity& q) {
-  if (!fs::exists(run) || !fs::exists(ref)) return {};
+  std::error_code ec;
+  if (!fs::exists(run, ec) || !fs::exists(ref, ec)) return {};
   const io::ResultReader a(run.string());
   const io::ResultReader b(ref.string());
   if (!a.ok() || !b.ok()) return {};

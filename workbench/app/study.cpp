@@ -58,7 +58,8 @@ int runRbplot(const StudyOptions& o, const std::vector<std::string>& args) {
   const char* env = std::getenv("RAILBENCH_PYTHON");
   std::string python = env && *env ? env : "/usr/bin/python3";
   const fs::path plots = fs::path(o.root) / "plots";
-  if (!fs::exists(python) || !fs::exists(plots / "railbench" / "__main__.py")) return -1;
+  std::error_code ec;
+  if (!fs::exists(python, ec) || !fs::exists(plots / "railbench" / "__main__.py", ec)) return -1;
   std::vector<std::string> all = {python, "-m", "railbench"};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<std::string> envs = plotsEnvironment(plots);

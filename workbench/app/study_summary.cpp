@@ -278,7 +278,7 @@ MetricLabel metricLabel(const scenario::MetricSpec& m, const std::vector<Job>& a
   out.label = m.name;
   auto firstWith = [&](const std::string& object, const std::string& attr) {
     for (const auto& j : all) {
-      if (!fs::exists(j.h5)) continue;
+      if (std::error_code ec; !fs::exists(j.h5, ec)) continue;
       const io::ResultReader r(j.h5);
       if (auto t = r.text(object, attr)) return *t;
     }
@@ -292,7 +292,7 @@ MetricLabel metricLabel(const scenario::MetricSpec& m, const std::vector<Job>& a
     out.unit = firstWith("/assessment/summary", m.quantity + "_unit");
     std::vector<double> limits;
     for (const auto& j : all) {
-      if (!fs::exists(j.h5)) continue;
+      if (std::error_code ec; !fs::exists(j.h5, ec)) continue;
       const io::ResultReader r(j.h5);
       if (auto v = r.number("/assessment/summary", m.quantity + "_limit")) limits.push_back(*v);
     }

@@ -153,9 +153,12 @@ struct Variant {
 
 // A base scenario path relative to the study file (else as given); "" when not found.
 std::string resolveBase(const std::string& studyPath, const std::string& name) {
+  // The error_code forms: a name the system refuses (too long, a loop, no permission) is "not
+  // found" here, and the caller reports it with the study's file:line.
+  std::error_code ec;
   fs::path p = fs::path(studyPath).parent_path() / name;
-  if (!fs::is_regular_file(p)) p = fs::path(name);
-  return fs::is_regular_file(p) ? p.lexically_normal().string() : std::string();
+  if (!fs::is_regular_file(p, ec)) p = fs::path(name);
+  return fs::is_regular_file(p, ec) ? p.lexically_normal().string() : std::string();
 }
 
 // Unknown keys of study{} and blocks that belong in the base scenario.
