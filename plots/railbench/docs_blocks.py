@@ -396,10 +396,34 @@ def _max_dy_mm(ref: Optional[dict], path: str) -> Optional[float]:
     return worst * 1e3
 
 
-def speed_block(outdir: str) -> str:
-    rows = read_csv(os.path.join(outdir, "speed", "study_cost.csv"))
+def _observer_share(path: str) -> Optional[float]:
+    """Share of a run's CPU spent on its outputs and assessment: the integration's observer (output
+    evaluations, assessment samples, writing; timed by the wall clock, its descheduled part taken
+    out in the integration's CPU / wall proportion as in the run's own cost summary) plus the
+    assessment computed after the run, over the integration's CPU plus that assessment."""
+    try:
+        import h5py
+        with h5py.File(path, "r") as f:
+            a = f["stats"].attrs
+            cpu, wall = float(a["cpu_time_s"]), float(a["wall_time_s"])
+            callbacks = float(a.get("callback_wall_time_s", 0.0))
+            after = float(a.get("assessment_cpu_s", 0.0))
+    except (OSError, KeyError, ValueError):
+        return None
+    if not (cpu > 0 and wall > 0):
+        return None
+    observer = callbacks * min(1.0, cpu / wall)
+    return (observer + after) / (cpu + after)
+
+
+def speed_block(outdir: str, study: str = "speed") -> str:
+    """The speed table of a study folder: CPU, x real time, evaluations, instructions per
+    evaluation and the accuracy against the study's reference case; the "default_scene" study
+    (the shipped scenes as a user runs them) also shows what its outputs and assessment cost."""
+    rows = read_csv(os.path.join(outdir, study, "study_cost.csv"))
     if not rows:
-        return missing("out/studies/speed/study_cost.csv")
+        return missing(f"out/studies/{study}/study_cost.csv")
+    shares = study != "speed"
     # Accuracy of the cases of the reference's model (same overrides but the solver's: contact
     # method, spin, coupling) against the reference case.
     ref_row = next((r for r in rows if r.get("role") == "reference" and r["status"] == "ok"),
@@ -408,12 +432,12 @@ def speed_block(outdir: str) -> str:
     # A case's model: its overrides other than the solver's (summary_cases.csv).
     model_of = {c["case"]: frozenset(o for o in c["overrides"].split()
                                      if not o.startswith("solver."))
-                for c in read_csv(os.path.join(outdir, "speed", "summary_cases.csv"))}
+                for c in read_csv(os.path.join(outdir, study, "summary_cases.csv"))}
     # Callgrind instructions per evaluation (`plots/rbplot effects-instructions`), of this build
     # and, when measured, of an earlier one (its --tag names it).
-    now = _instructions_by_label(os.path.join(outdir, "speed", "study_speed_instructions.csv"))
-    before = _instructions_by_label(os.path.join(outdir, "speed",
-                                                 "study_speed_instructions_before.csv"))
+    now = _instructions_by_label(os.path.join(outdir, study, f"study_{study}_instructions.csv"))
+    before = _instructions_by_label(os.path.join(outdir, study,
+                                                 f"study_{study}_instructions_before.csv"))
     tag = next((r.get("build") for r in before.values() if r.get("build")), "earlier build")
     body = []
     for r in rows:
@@ -433,22 +457,29 @@ def speed_block(outdir: str) -> str:
                       model_of.get(r.get("case")) is not None and
                       model_of.get(r.get("case")) == model_of.get(ref_row.get("case")))
         dy = fmt(_max_dy_mm(ref, r.get("file", "")) if same_model and ok else None, "{:.3f}")
+        share = _observer_share(r.get("file", "")) if shares and ok else None
         body.append([r["label"], r["status"], f"{cpu:.3f} s ({r['cpu_min_s']}-{r['cpu_max_s']})",
                      fmt(factor, "{:.1f}x"), r["rhs_evals"], r["rhs_evals_jac"] or "0",
                      r["steps"], fmt(num(r["us_per_eval"]), "{:.2f}"), instr[0], instr[1],
-                     dy, target, met])
+                     dy, fmt(share * 100 if share is not None else None, "{:.0f} %"), target,
+                     met])
     head = ["case", "status", "CPU median (min-max)", "x real time", "rhs evals",
             "Jacobian evals", "steps", "µs / eval", "instructions / eval",
-            f"instructions / eval ({tag})", "max \\|dy\\| vs reference [mm]", "target", ""]
-    if not before:  # no earlier build measured: no column for it
-        head = head[:9] + head[10:]
-        body = [row[:9] + row[10:] for row in body]
-    note = ("Instructions per rhs evaluation: callgrind over the first 3 s of each case, "
-            "integration only (integrator and output callbacks included; "
-            "`plots/rbplot effects-instructions`)" +
-            (f", also of the build `{tag}`." if before else ".") +
-            " max |dy|: the largest difference of any wheelset's lateral displacement from the "
-            "reference case over the whole run, for the cases of the reference's model.\n\n")
+            f"instructions / eval ({tag})", "max \\|dy\\| vs reference [mm]",
+            "outputs + assessment [% of CPU]", "target", ""]
+    keep = [i for i in range(len(head))  # columns without data left out
+            if (now or i != 8) and (before or i != 9) and (shares or i != 11)]
+    head = [head[i] for i in keep]
+    body = [[row[i] for i in keep] for row in body]
+    note = (("Instructions per rhs evaluation: callgrind over the first 3 s of each case, "
+             "integration only (integrator and output callbacks included; "
+             "`plots/rbplot effects-instructions`)" +
+             (f", also of the build `{tag}`. " if before else ". ") if now else "") +
+            "max |dy|: the largest difference of any wheelset's lateral displacement from the "
+            "reference case over the whole run, for the cases of the reference's model." +
+            (" Outputs + assessment: the integration's output callbacks (output evaluations, "
+             "assessment samples, writing) plus the assessment computed after the run, as a "
+             "share of the run's CPU (from each case's /stats)." if shares else "") + "\n\n")
     return note + table(head, body)
 
 
@@ -689,3 +720,33 @@ def route_sections_block(outdir: str) -> str:
         out += f"\n\n![Assessment of the route](figures/{ROUTE_FIGURE})"
     return out
 
+
+
+# ---- ./wb run on a built tree ------------------------------------------------------------------
+
+def default_run_block(outdir: str) -> str:
+    """Wall time of `./wb run` (the default scene) on a built tree, with and without its figures
+    (`./wb studies --only default_run`: 3 repeats each)."""
+    rows = read_csv(os.path.join(outdir, "default_run", "default_run.csv"))
+    if not rows:
+        return missing("out/studies/default_run/default_run.csv")
+    labels = {"figures": "`./wb run` (build check, simulation, result file, figures)",
+              "no_figures": "`./wb run --no-plots` (build check, simulation, result file)"}
+    targets = {"figures": 8.0}
+    body = []
+    for what, label in labels.items():
+        mine = [r for r in rows if r["what"] == what]
+        walls = sorted(num(r["wall_s"], 0.0) for r in mine)
+        if not walls:
+            continue
+        failed = sum(1 for r in mine if r["rc"] != "0")
+        median = walls[len(walls) // 2]
+        target = targets.get(what)
+        verdict = "" if target is None else ("met" if median <= target and not failed
+                                             else "NOT met")
+        body.append([label, str(len(walls)) + (f" ({failed} failed)" if failed else ""),
+                     f"{median:.2f} s ({walls[0]:.2f}-{walls[-1]:.2f})",
+                     fmt(target, "<= {:.0f} s"), verdict])
+    return ("Wall time of the default scene as a user starts it, on a built tree (median and "
+            "min-max of the repeats):\n\n" +
+            table(["command", "repeats", "wall median (min-max)", "target", ""], body))

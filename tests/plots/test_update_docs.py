@@ -63,8 +63,8 @@ def test_blocks_replaced_between_markers():
                 "flange_accuracy", "refinement", "paper_tables9_10", "paper_table11",
                 "paper_table17", "paper_table18", "work_precision", "hard_cases",
                 "primary_yaw"]
-    blocks_p = ["speed", "bench", "effects", "paper_settings", "paper_settings_flange",
-                "study_throughput"]
+    blocks_p = ["speed", "default_scene", "default_run", "bench", "effects", "paper_settings",
+                "paper_settings_flange", "study_throughput"]
     blocks_v = ["validation_case1", "validation_case2", "validation_case3", "validation_cost"]
     blocks_h = ["hard_cases_detail"]
     for md, names in (("studies.md", blocks_s), ("performance.md", blocks_p),
@@ -96,6 +96,10 @@ def test_blocks_replaced_between_markers():
         cost("KEC | ABM 1 ms", "kec", "abm", "0.4", 48928, step="0.001"),
         cost("LUT K=7.075e13 | ABM 1 ms", "lut", "abm", "0", 2000, K="7.075e13", step="0.001",
              status="failed")])
+    os.makedirs(os.path.join(out, "default_run"), exist_ok=True)
+    with open(os.path.join(out, "default_run", "default_run.csv"), "w") as f:
+        f.write("what,repeat,wall_s,rc\nfigures,1,9.5,0\nfigures,2,7.5,0\nfigures,3,7.9,0\n"
+                "no_figures,1,2.0,0\nno_figures,2,2.2,1\n")
     rc = update_docs([out, "--build", os.path.join(TMP, "nobuild"), "--docs", docs])
     check(rc == 0, "update_docs returns 0")
     s = open(os.path.join(docs, "studies.md")).read()
@@ -110,6 +114,12 @@ def test_blocks_replaced_between_markers():
     check("0.8x" in speed and "NOT met" in speed, "target 2 at 0.8x real time is not met")
     check("| 41,234 | 80,900 |" in speed and "instructions / eval (abc1234)" in speed,
           "instructions per evaluation of this build and of the earlier one, named by its tag")
+    run = p.split("generated: default_run")[1].split("end: default_run")[0]
+    check("| 3 | 7.90 s (7.50-9.50) | <= 8 s | met |" in run,
+          "./wb run: the median of the repeats against the 8 s target")
+    check("| 2 (1 failed) | 2.20 s (2.00-2.20) |" in run, "./wb run: a failed repeat is counted")
+    check("Not generated" in p.split("generated: default_scene")[1].split("end: default_scene")[0],
+          "the default scene's missing study gives a 'Not generated' line")
     ps = p.split("generated: paper_settings ")[1].split("end: paper_settings ")[0]
     check("| bdf 1e-06, no cap | 2.00 s / 40000 (12x) | 3.00 s / 50000 (8x) | 1.50 | 1.25 |" in ps,
           "paper settings: KEC and LUT of one setting paired, with the LUT/KEC ratios")
