@@ -333,6 +333,9 @@ def fig_irregularity_psd(result: Result, nperseg: Optional[int] = None):
             ax.set_ylabel("G(Ω) [m²/(rad/m)]")
             ax.grid(True, which="major", lw=0.4)
             ax.grid(True, which="minor", lw=0.25, alpha=0.35)
+            # The y range spans up to 9 decades: a line per decade reads as well as the 8 minor
+            # lines between, which cost 0.6 s of the figure's 1.9 s.
+            ax.yaxis.set_minor_locator(NullLocator())
             sec = ax.secondary_xaxis("top", functions=(_om2lam, _om2lam))
             sec.set_xlabel("λ [m]", fontsize=7, labelpad=1)
             sec.tick_params(labelsize=6.5, direction="in")
