@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "workbench/dynamics/contact_model.hpp"
@@ -142,8 +143,16 @@ int runScenario(const RunOptions& options) {
                        "--out: cannot create the folder of '" + out + "': " + ec.message());
   }
 
-  io::ResultFile f(
-      out, options.compact ? io::ResultFile::Storage::Compact : io::ResultFile::Storage::Plain);
+  // A name the system refuses (too long, no permission) is found here, before anything ran:
+  // bad input (exit 1), like a folder that cannot be made.
+  std::optional<io::ResultFile> opened;
+  try {
+    opened.emplace(
+        out, options.compact ? io::ResultFile::Storage::Compact : io::ResultFile::Storage::Plain);
+  } catch (const io::WriteError& e) {
+    throw InputError(SourceLoc{"<command line>", 0}, std::string("--out: ") + e.what());
+  }
+  io::ResultFile& f = *opened;
   const std::string stored = run::writeProvenance(c, f, isoNow(), options.track_store);
   if (options.compact) f.attr("/", "compact", std::string(kCompactOmits));
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include "railbench/version.hpp"
 #include "workbench/contact/derived.hpp"
@@ -101,12 +102,25 @@ int buildTables(const RunOptions& o) {
 
   std::string out =
       o.out.empty() ? "out/" + fs::path(o.scenario).stem().string() + "_tables.h5" : o.out;
-  if (fs::path(out).has_parent_path()) fs::create_directories(fs::path(out).parent_path());
+  // The place to write is checked before the tables are built: a folder that cannot be made or a
+  // name the system refuses is bad input (exit 1) and nothing was computed.
+  const SourceLoc cli{"<command line>", 0};
+  if (fs::path(out).has_parent_path()) {
+    std::error_code ec;
+    fs::create_directories(fs::path(out).parent_path(), ec);
+    if (ec)
+      throw InputError(cli, "--out: cannot create the folder of '" + out + "': " + ec.message());
+  }
+  std::optional<io::ResultFile> opened;
+  try {
+    opened.emplace(out);
+  } catch (const io::WriteError& e) {
+    throw InputError(cli, std::string("--out: ") + e.what());
+  }
+  io::ResultFile& f = *opened;
 
   contact::LutTable lut = contact::buildLut(cfg);
   contact::KecTable kec = contact::buildKec(cfg);
-
-  io::ResultFile f(out);
   f.attr("/", "version", std::string(kVersion));
   f.attr("/", "scenario_file", spec.file);
   f.attr("/", "scenario_text", spec.text);
