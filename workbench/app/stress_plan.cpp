@@ -256,6 +256,7 @@ Setting parseSetting(const std::string& text, bool hasContact, const std::string
       s.overrides.push_back("solver.accept_unstable_step=true");
     }
   } else {
+    s.adaptive = true;
     s.label = m + " " + compactNumber(v);
     s.overrides.push_back("solver.rtol=" + formatNumber(v, 12));
     s.overrides.push_back("solver.atol=" + formatNumber(v, 12));

@@ -14,6 +14,7 @@ namespace rb::app::stress {
 struct Setting {
   std::string label;
   std::vector<std::string> overrides;
+  bool adaptive = false;  // dopri5, BDF or IDA (a tolerance); else a fixed step
 };
 
 // One hardened case: the scenario with `overrides` (axis "nominal": the scenario as given).
