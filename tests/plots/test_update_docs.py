@@ -100,6 +100,8 @@ def test_blocks_replaced_between_markers():
     with open(os.path.join(out, "default_run", "default_run.csv"), "w") as f:
         f.write("what,repeat,wall_s,rc\nfigures,1,9.5,0\nfigures,2,7.5,0\nfigures,3,7.9,0\n"
                 "no_figures,1,2.0,0\nno_figures,2,2.2,1\n")
+    with open(os.path.join(out, "default_run", "cold_run.csv"), "w") as f:
+        f.write("what,repeat,wall_s,rc\ncold_no_figures,1,250.5,0\n")
     rc = update_docs([out, "--build", os.path.join(TMP, "nobuild"), "--docs", docs])
     check(rc == 0, "update_docs returns 0")
     s = open(os.path.join(docs, "studies.md")).read()
@@ -118,6 +120,8 @@ def test_blocks_replaced_between_markers():
     check("| 3 | 7.90 s (7.50-9.50) | <= 8 s | met |" in run,
           "./wb run: the median of the repeats against the 8 s target")
     check("| 2 (1 failed) | 2.20 s (2.00-2.20) |" in run, "./wb run: a failed repeat is counted")
+    check("| 1 | 250.50 s (250.50-250.50) | <= 240 s | NOT met |" in run,
+          "the fresh clone's first run against its 4 minute target")
     check("Not generated" in p.split("generated: default_scene")[1].split("end: default_scene")[0],
           "the default scene's missing study gives a 'Not generated' line")
     ps = p.split("generated: paper_settings ")[1].split("end: paper_settings ")[0]
