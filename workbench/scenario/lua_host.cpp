@@ -679,42 +679,9 @@ LuaHost::LuaHost(HostOptions options) : impl_(new Impl), options_(std::move(opti
   *static_cast<Impl**>(lua_getextraspace(L)) = impl_;
   lua_atpanic(L, &Impl::panic);
 
-  // Only safe libraries: base, string, table, math, utf8.
-  luaL_requiref(L, LUA_GNAME, luaopen_base, 1);
-  luaL_requiref(L, LUA_STRLIBNAME, luaopen_string, 1);
-  luaL_requiref(L, LUA_TABLIBNAME, luaopen_table, 1);
-  luaL_requiref(L, LUA_MATHLIBNAME, luaopen_math, 1);
-  luaL_requiref(L, LUA_UTF8LIBNAME, luaopen_utf8, 1);
-  lua_pop(L, 5);
-  for (const char* banned : {"dofile", "loadfile", "load"}) {
-    lua_pushnil(L);
-    lua_setglobal(L, banned);
-  }
-  lua_getglobal(L, "setmetatable");
-  lua_pushcclosure(L, &Impl::setmetatableGuarded, 1);
-  lua_setglobal(L, "setmetatable");
-  guardMessageHandlers(L, &impl_->death);
-  // The string table is also the __index of every string, so s:find(...) takes these too.
-  lua_getglobal(L, "string");
-  struct PatternFn {
-    const char* name;
-    bool anchorable;
-    bool plainArg;
-  };
-  for (const PatternFn& f : {PatternFn{"find", true, true}, PatternFn{"match", true, false},
-                             PatternFn{"gmatch", false, false}, PatternFn{"gsub", true, false}}) {
-    lua_getfield(L, -1, f.name);
-    lua_pushstring(L, f.name);
-    lua_pushboolean(L, f.anchorable);
-    lua_pushboolean(L, f.plainArg);
-    lua_pushcclosure(L, &Impl::patternGuarded, 4);
-    lua_setfield(L, -2, f.name);
-  }
-  lua_pop(L, 1);
-  lua_pushcfunction(L, &Impl::print);
-  lua_setglobal(L, "print");
-  lua_pushcfunction(L, &Impl::require);
-  lua_setglobal(L, "require");
+  // collectgarbage stays: the allocator's budget bounds the memory whatever the collector does.
+  openSandbox(L, {&Impl::patternGuarded, &Impl::setmetatableGuarded, &Impl::print, &Impl::require},
+              &impl_->death, {});
   lua_newtable(L);
   lua_setfield(L, LUA_REGISTRYINDEX, kMetaKey);
   lua_newtable(L);

@@ -5,9 +5,7 @@
 #include <cctype>
 #include <cmath>
 
-extern "C" {
-#include <lua.h>
-}
+#include <lua.hpp>
 
 namespace rb::scenario {
 namespace {
@@ -50,6 +48,49 @@ int xpcallGuarded(lua_State* L) {
 }
 
 }  // namespace
+
+void openSandbox(lua_State* L, const SandboxFunctions& f, const SandboxDeath* death,
+                 std::initializer_list<const char*> banned) {
+  const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},
+                           {LUA_STRLIBNAME, luaopen_string},
+                           {LUA_TABLIBNAME, luaopen_table},
+                           {LUA_MATHLIBNAME, luaopen_math},
+                           {LUA_UTF8LIBNAME, luaopen_utf8}};
+  for (const auto& l : libs) {
+    luaL_requiref(L, l.name, l.func, 1);
+    lua_pop(L, 1);
+  }
+  for (const auto& names :
+       {std::initializer_list<const char*>{"dofile", "loadfile", "load"}, banned})
+    for (const char* g : names) {
+      lua_pushnil(L);
+      lua_setglobal(L, g);
+    }
+  lua_getglobal(L, "setmetatable");
+  lua_pushcclosure(L, f.setmetatable_guard, 1);
+  lua_setglobal(L, "setmetatable");
+  lua_getglobal(L, "string");
+  struct PatternFn {
+    const char* name;
+    bool anchorable;  // a leading '^' anchors the pattern
+    bool plainArg;    // argument 4 asks for a plain search (find)
+  };
+  for (const PatternFn& p : {PatternFn{"find", true, true}, PatternFn{"match", true, false},
+                             PatternFn{"gmatch", false, false}, PatternFn{"gsub", true, false}}) {
+    lua_getfield(L, -1, p.name);
+    lua_pushstring(L, p.name);
+    lua_pushboolean(L, p.anchorable);
+    lua_pushboolean(L, p.plainArg);
+    lua_pushcclosure(L, f.pattern_guard, 4);
+    lua_setfield(L, -2, p.name);
+  }
+  lua_pop(L, 1);
+  lua_pushcfunction(L, f.print);
+  lua_setglobal(L, "print");
+  lua_pushcfunction(L, f.require);
+  lua_setglobal(L, "require");
+  guardMessageHandlers(L, death);
+}
 
 void guardMessageHandlers(lua_State* L, const SandboxDeath* death) {
   lua_pushlightuserdata(L, const_cast<SandboxDeath*>(death));

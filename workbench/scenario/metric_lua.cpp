@@ -7,7 +7,6 @@
 #include <fstream>
 #include <sstream>
 #include <string_view>
-#include <tuple>
 
 extern "C" {
 #include <lauxlib.h>
@@ -226,39 +225,8 @@ struct LuaMetrics::Impl {
   }
 
   void openSandbox() {
-    const luaL_Reg libs[] = {{LUA_GNAME, luaopen_base},
-                             {LUA_STRLIBNAME, luaopen_string},
-                             {LUA_TABLIBNAME, luaopen_table},
-                             {LUA_MATHLIBNAME, luaopen_math},
-                             {LUA_UTF8LIBNAME, luaopen_utf8}};
-    for (const auto& l : libs) {
-      luaL_requiref(L, l.name, l.func, 1);
-      lua_pop(L, 1);
-    }
-    for (const char* g : {"dofile", "loadfile", "load", "collectgarbage", "require"}) {
-      lua_pushnil(L);
-      lua_setglobal(L, g);
-    }
-    // The string table is also the __index of every string, so s:find(...) takes these too.
-    lua_getglobal(L, "string");
-    for (const auto& [f, anchorable, plainArg] :
-         {std::tuple{"find", true, true}, std::tuple{"match", true, false},
-          std::tuple{"gmatch", false, false}, std::tuple{"gsub", true, false}}) {
-      lua_getfield(L, -1, f);
-      lua_pushstring(L, f);
-      lua_pushboolean(L, anchorable);
-      lua_pushboolean(L, plainArg);
-      lua_pushcclosure(L, &patternGuarded, 4);
-      lua_setfield(L, -2, f);
-    }
-    lua_pop(L, 1);
-    lua_getglobal(L, "setmetatable");
-    lua_pushcclosure(L, &setmetatableGuarded, 1);
-    lua_setglobal(L, "setmetatable");
-    lua_pushcfunction(L, &noPrint);
-    lua_setglobal(L, "print");
-    lua_pushcfunction(L, &require);
-    lua_setglobal(L, "require");
+    scenario::openSandbox(L, {&patternGuarded, &setmetatableGuarded, &noPrint, &require}, &death,
+                          {"collectgarbage"});
     lua_newtable(L);
     lua_setfield(L, LUA_REGISTRYINDEX, kLoadedKey);
     for (const auto* names : {&topLevelBlocks(), &nestedConstructors()})
@@ -267,7 +235,6 @@ struct LuaMetrics::Impl {
         lua_pushcclosure(L, &construct, 1);
         lua_setglobal(L, k.c_str());
       }
-    guardMessageHandlers(L, &death);
     lua_sethook(L, &hook, LUA_MASKCOUNT, kHookEvery);
   }
 
