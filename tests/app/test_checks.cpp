@@ -111,3 +111,24 @@ TEST(Checks, RailFileDrawnInclinedIsNotInclinedAgain) {
                 "upright");
   EXPECT_EQ(compileError(options(f, {"profiles.inclination=0"})), "<no error>");
 }
+
+// Irregularities that begin at s = 0 without a fade-in, the wagon's reference point at s = 0: the
+// rear bogie's wheelsets (ws3, ws4) start on the perfect track before s = 0 and meet a step in the
+// rails there. Printed for every method; recorded as a warning of the run where wheels can leave
+// the rail (elastic). The default fade-in (20 m) ramps from zero: no step, no warning.
+TEST(Checks, IrregularityStepUnderRearWheelsetsIsAWarning) {
+  TempDir t("irrstep");
+  const std::string step = "psd { spectrum = 'ore_b176_low', seed = 42, fade_in = 0 }";
+  const std::string kec = t.write("kec.lua", wagon(step));
+  const rb::run::Model m = rb::run::compile(options(kec));
+  EXPECT_TRUE(anyContains(m.warnings, kec + ":2: warning: track.irregularities begin at s = 0 "
+                                            "without a fade-in and ws3, ws4 start before s = 0"));
+  EXPECT_FALSE(anyContains(m.run_warnings, "without a fade-in"));
+  const rb::run::Model me = rb::run::compile(options(kec, {"contact.method=elastic"}));
+  EXPECT_TRUE(anyContains(me.run_warnings, "wheels may lose contact over it and land hard"));
+  const std::string ramp =
+      t.write("ramp.lua", wagon("psd { spectrum = 'ore_b176_low', seed = 42 }"));
+  const rb::run::Model mr = rb::run::compile(options(ramp, {"contact.method=elastic"}));
+  EXPECT_FALSE(anyContains(mr.warnings, "without a fade-in"));
+  EXPECT_FALSE(anyContains(mr.run_warnings, "without a fade-in"));
+}
