@@ -122,7 +122,7 @@ def _num(s) -> Optional[float]:
 def recommendation_rows(outdir: str) -> List[dict]:
     """The recommendation as the engine computed it (`workbench precision` writes
     precision_recommendation.csv before any figure: the rule lives in
-    workbench/app/precision_answer.cpp). This module only draws and tabulates it."""
+    workbench/precision/answer.cpp). This module only draws and tabulates it."""
     path = os.path.join(outdir, "precision_recommendation.csv")
     if not os.path.exists(path):
         raise FileNotFoundError(f"{path} not found: the recommendation is computed by "

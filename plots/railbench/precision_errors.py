@@ -2,7 +2,7 @@
 reference on the quantities the user names, the verification bound of the reference, the error
 split (table / integration) and Pareto fronts for the figures. Pure functions of result files and
 rows, so that tests can check them on files of known content. The recommendation rule is the
-engine's (workbench/app/precision_answer.cpp); the error rule is the same here and there."""
+engine's (workbench/precision/answer.cpp); the error rule is the same here and there."""
 from __future__ import annotations
 
 import math
@@ -116,7 +116,7 @@ def errors(path: str, ref_path: str, quantities: Sequence[Quantity]
             for key, rv in r.items():
                 if key not in s:
                     continue
-                # One rule with the engine (workbench/app/precision_answer.cpp): a non-finite
+                # One rule with the engine (workbench/precision/answer.cpp): a non-finite
                 # value of the run (diverged) makes its error infinite.
                 if not np.all(np.isfinite(s[key][:len(t)])):
                     mx = math.inf

@@ -8,8 +8,8 @@
 #include <random>
 #include <string>
 
-#include "workbench/app/study.hpp"
 #include "workbench/scenario/scenario.hpp"
+#include "workbench/study/runner.hpp"
 
 namespace fs = std::filesystem;
 
@@ -47,7 +47,7 @@ std::string hashOf(const std::string& base, const std::vector<std::string>& over
   rb::scenario::LoadOptions o;
   o.root = RB_SOURCE_DIR;
   o.overrides = overrides;
-  return rb::app::caseInputHash(rb::scenario::loadScenario(base, o), build);
+  return rb::study::caseInputHash(rb::scenario::loadScenario(base, o), build);
 }
 
 }  // namespace
@@ -87,8 +87,8 @@ TEST(StudyHash, ChangesWithEveryInputAndOnlyWithThem) {
 TEST(StudyHash, BuildIdIsTheProgramContent) {
   TempDir d;
   const std::string a = d.write("a", "program one"), b = d.write("b", "program two");
-  EXPECT_EQ(rb::app::buildId(a), rb::app::buildId(a));
-  EXPECT_NE(rb::app::buildId(a), rb::app::buildId(b));
-  EXPECT_EQ(rb::app::buildId(a).substr(0, 6), "build:");
-  EXPECT_EQ(rb::app::buildId(a + ".missing"), "build:unknown");
+  EXPECT_EQ(rb::study::buildId(a), rb::study::buildId(a));
+  EXPECT_NE(rb::study::buildId(a), rb::study::buildId(b));
+  EXPECT_EQ(rb::study::buildId(a).substr(0, 6), "build:");
+  EXPECT_EQ(rb::study::buildId(a + ".missing"), "build:unknown");
 }

@@ -11,7 +11,7 @@
 
 #include "tests/app/h5read.hpp"
 #include "tests/app/scenario_run.hpp"
-#include "workbench/app/effects_cases.hpp"
+#include "workbench/effects/cases.hpp"
 #include "workbench/run/compile.hpp"
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/scenario/schema.hpp"
@@ -186,7 +186,7 @@ TEST(Effects, ASwitchTheSceneCannotUseIsAnError) {
 
 TEST(Effects, CasesOfTheCommandFollowTheScene) {
   const auto spec = load(kCase3);
-  const auto st = rb::app::effectsStudy(kCase3, spec, {"run.duration=1"}, 2);
+  const auto st = rb::effects::effectsStudy(kCase3, spec, {"run.duration=1"}, 2);
   std::vector<std::string> labels;
   for (const auto& c : st.cases) labels.push_back(c.label);
   const std::vector<std::string> want = {
@@ -198,12 +198,12 @@ TEST(Effects, CasesOfTheCommandFollowTheScene) {
   for (const auto& c : st.cases) EXPECT_EQ(c.overrides.front(), "run.duration=1");
   // Flange contact is reported, never measured.
   bool flange = false;
-  for (const auto& se : rb::app::sceneEffects(spec))
+  for (const auto& se : rb::effects::sceneEffects(spec))
     flange = flange || (se.effect == Effect::FlangeContact && se.state == "always on");
   EXPECT_TRUE(flange);
   // An effect the scene switched off itself is not measured again.
   const auto own = load(kCase3, {"run.effects.bump_stops=false"});
-  EXPECT_EQ(rb::app::effectsStudy(kCase3, own, {}, 1).cases.size(), 6U);
+  EXPECT_EQ(rb::effects::effectsStudy(kCase3, own, {}, 1).cases.size(), 6U);
 }
 
 }  // namespace

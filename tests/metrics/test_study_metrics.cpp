@@ -14,10 +14,10 @@
 #include <sstream>
 
 #include "tests/app/h5read.hpp"
-#include "workbench/app/study.hpp"
-#include "workbench/app/study_metrics.hpp"
 #include "workbench/io/metrics_output.hpp"
 #include "workbench/stability/stability.hpp"
+#include "workbench/study/metrics.hpp"
+#include "workbench/study/runner.hpp"
 
 namespace fs = std::filesystem;
 
@@ -115,13 +115,13 @@ TEST(StudyMetrics, SummaryColumnsMatchAnIndependentComputation) {
          "            { label = \"finer\", [\"solver.step\"] = 2e-4 } },\n"
       << kMetrics << "}\n";
   setenv("RAILBENCH_STUDY_PLOTS", "0", 1);
-  rb::app::StudyOptions o;
+  rb::study::StudyOptions o;
   o.file = study;
   o.out = (dir / "out").string();
   o.root = RB_SOURCE_DIR;
   o.program = std::string(RB_BINARY_DIR) + "/workbench/app/workbench";
   o.jobs = 2;
-  ASSERT_EQ(rb::app::runStudy(o), 0);
+  ASSERT_EQ(rb::study::runStudy(o), 0);
 
   const auto runs = readCsv(dir / "out" / "summary.csv");
   const auto cases = readCsv(dir / "out" / "summary_cases.csv");
@@ -166,21 +166,21 @@ TEST(StudyMetrics, SummaryColumnsMatchAnIndependentComputation) {
     if (sc.id == runs[0].at("case")) c = &sc;
   ASSERT_NE(c, nullptr);
   std::string why;
-  ASSERT_TRUE(rb::app::study_detail::storeCaseMetrics(st, *c, h5, why)) << why;
+  ASSERT_TRUE(rb::study::detail::storeCaseMetrics(st, *c, h5, why)) << why;
   auto stored = rb::io::readMetrics(h5);
   ASSERT_TRUE(stored);
-  EXPECT_EQ(stored->hash, rb::app::study_detail::metricsHash(st));
+  EXPECT_EQ(stored->hash, rb::study::detail::metricsHash(st));
   ASSERT_EQ(stored->values.size(), 5u);
   EXPECT_EQ(stored->values[0].value, num(runs[0].at("metric_y_max")));
   EXPECT_NE(stored->values[2].why.find("summary"), std::string::npos);  // error: at summary time
   stored->values[0].value = 42.0;
   rb::io::writeMetrics(h5, *stored);
-  rb::app::study_detail::MetricContext ctx(st);
-  EXPECT_EQ(rb::app::study_detail::summaryMetrics(ctx, *c, h5, h5)[0].value, 42.0);
-  EXPECT_EQ(rb::app::study_detail::summaryMetrics(ctx, *c, h5, h5)[2].value, 0.0);
+  rb::study::detail::MetricContext ctx(st);
+  EXPECT_EQ(rb::study::detail::summaryMetrics(ctx, *c, h5, h5)[0].value, 42.0);
+  EXPECT_EQ(rb::study::detail::summaryMetrics(ctx, *c, h5, h5)[2].value, 0.0);
   stored->hash = "other";
   rb::io::writeMetrics(h5, *stored);
-  EXPECT_EQ(rb::app::study_detail::summaryMetrics(ctx, *c, h5, h5)[0].value,
+  EXPECT_EQ(rb::study::detail::summaryMetrics(ctx, *c, h5, h5)[0].value,
             num(runs[0].at("metric_y_max")));
   fs::remove_all(dir);
 }
@@ -200,12 +200,12 @@ TEST(StudyMetrics, LinearCriticalSpeedOfTheCaseScenario) {
                           "              { name = \"none\", kind = \"linear_critical_speed\", "
                           "speeds = { 20, 30, 2 } } } }\n";
   setenv("RAILBENCH_STUDY_PLOTS", "0", 1);
-  rb::app::StudyOptions o;
+  rb::study::StudyOptions o;
   o.file = study;
   o.out = (dir / "out").string();
   o.root = RB_SOURCE_DIR;
   o.program = std::string(RB_BINARY_DIR) + "/workbench/app/workbench";
-  ASSERT_EQ(rb::app::runStudy(o), 0);
+  ASSERT_EQ(rb::study::runStudy(o), 0);
   const auto cases = readCsv(dir / "out" / "summary_cases.csv");
   ASSERT_EQ(cases.size(), 1u);
   rb::scenario::LoadOptions lo;

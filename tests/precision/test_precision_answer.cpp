@@ -1,4 +1,4 @@
-// The answer of `workbench precision` computed in the engine (workbench/app/precision_answer.hpp):
+// The answer of `workbench precision` computed in the engine (workbench/precision/answer.hpp):
 // the error rule on result files of known content (a diverged run is infinitely wrong), the
 // recommendation rule with its notes (a level below the table error cannot be reached with those
 // tables, a level below the reference bound cannot be verified), and the plan's checks before any
@@ -12,14 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "workbench/app/precision_answer.hpp"
-#include "workbench/app/precision_plan.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/io/result_file.hpp"
 #include "workbench/io/result_reader.hpp"
+#include "workbench/precision/answer.hpp"
+#include "workbench/precision/plan.hpp"
 
 namespace fs = std::filesystem;
-namespace pr = rb::app::precision;
+namespace pr = rb::precision;
 
 namespace {
 
@@ -145,7 +145,7 @@ TEST(PrecisionAnswer, UnverifiedOrUnresolvableLevelIsSaid) {
 }
 
 TEST(PrecisionAnswer, QuantitiesAreCheckedBeforeAnyRun) {
-  rb::app::PrecisionOptions o;
+  rb::precision::PrecisionOptions o;
   o.scenario = kSmall;
   o.root = kRoot;
   o.quick = true;
@@ -165,9 +165,9 @@ TEST(PrecisionAnswer, QuantitiesAreCheckedBeforeAnyRun) {
 }
 
 TEST(PrecisionAnswer, EveryOptionIsNamedBeforeAnyRun) {
-  auto refused = [](const std::function<void(rb::app::PrecisionOptions&)>& set,
+  auto refused = [](const std::function<void(rb::precision::PrecisionOptions&)>& set,
                     const std::string& option) {
-    rb::app::PrecisionOptions o;
+    rb::precision::PrecisionOptions o;
     o.scenario = kSmall;
     o.root = kRoot;
     o.quick = true;
@@ -190,7 +190,7 @@ TEST(PrecisionAnswer, EveryOptionIsNamedBeforeAnyRun) {
 TEST(PrecisionAnswer, FixedStepsFitTheOutputInterval) {
   // 5 ms output interval: the default 2 ms step cannot reach every output time; the ladder moves
   // it to 5/3 ms and says so, every setting still runs.
-  rb::app::PrecisionOptions o;
+  rb::precision::PrecisionOptions o;
   o.scenario = kSmall;
   o.root = kRoot;
   o.overrides = {"run.output.every=0.005"};

@@ -9,7 +9,6 @@
 #include <sstream>
 
 #include "workbench/app/critical_speed_runs.hpp"
-#include "workbench/app/option_checks.hpp"
 #include "workbench/app/stability_scene.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
@@ -17,6 +16,7 @@
 #include "workbench/io/critical_speed_file.hpp"
 #include "workbench/io/result_file.hpp"
 #include "workbench/stability/stability.hpp"
+#include "workbench/study/option_checks.hpp"
 
 namespace fs = std::filesystem;
 
@@ -446,24 +446,25 @@ void search(const CriticalSpeedOptions& o, const StabilityScene& scene, Search& 
 // beyond its end at the start speed is refused as the option, before any run (a later run at a
 // higher probe speed that does not fit is a finding of the search).
 void checkTrackReach(const CriticalSpeedOptions& o, const StabilityScene& scene) {
-  const double reach = trackReach(scene.spec);
+  const double reach = study::trackReach(scene.spec);
   const double v0 = o.from_given ? o.from : defaultStartSpeed(scene);
   Diagnostics d;
   if (v0 * o.duration > reach)
-    badOption(d, "--duration", o.duration,
-              "a constant-speed run at " + formatNumber(v0) + " m/s covers " +
-                  formatNumber(v0 * o.duration) + " m, beyond the end of the track (at most " +
-                  formatNumber(reach / v0) + " s at that speed)");
+    study::badOption(d, "--duration", o.duration,
+                     "a constant-speed run at " + formatNumber(v0) + " m/s covers " +
+                         formatNumber(v0 * o.duration) +
+                         " m, beyond the end of the track (at most " + formatNumber(reach / v0) +
+                         " s at that speed)");
   if (o.from_given && o.method != "bisection") {
     const double end = o.to_given ? o.to : 0.5 * o.from;
     const double ramp = (o.from * o.from - end * end) / (2.0 * o.deceleration);
     if (ramp > reach)
-      badOption(d, "--deceleration", o.deceleration,
-                "the ramp from " + formatNumber(o.from) + " to " + formatNumber(end) +
-                    " m/s covers " + formatNumber(ramp) +
-                    " m, beyond the end of the track (at "
-                    "most " +
-                    formatNumber(reach) + " m)");
+      study::badOption(d, "--deceleration", o.deceleration,
+                       "the ramp from " + formatNumber(o.from) + " to " + formatNumber(end) +
+                           " m/s covers " + formatNumber(ramp) +
+                           " m, beyond the end of the track (at "
+                           "most " +
+                           formatNumber(reach) + " m)");
   }
   d.throwIfAny();
 }
@@ -545,21 +546,21 @@ void checkCriticalSpeedOptions(const CriticalSpeedOptions& o) {
   Diagnostics d;
   // A speed option given as 0 is no default: 0 m/s (or less) never hunts.
   auto speed = [&](const std::string& option, double v) {
-    if (!(std::isfinite(v) && v > 0.0 && v <= kMaxOptionSpeed))
-      badOption(d, option, v,
-                "must be a speed in (0, " + formatNumber(kMaxOptionSpeed) +
-                    "] m/s (the range of vehicle.speed)");
+    if (!(std::isfinite(v) && v > 0.0 && v <= study::kMaxOptionSpeed))
+      study::badOption(d, option, v,
+                       "must be a speed in (0, " + formatNumber(study::kMaxOptionSpeed) +
+                           "] m/s (the range of vehicle.speed)");
   };
   auto positive = [&](const std::string& option, double v, double lo, double hi,
                       const std::string& unit) {
     if (!(std::isfinite(v) && v >= lo && v <= hi))
-      badOption(d, option, v,
-                "must be in [" + formatNumber(lo) + ", " + formatNumber(hi) + "] " + unit);
+      study::badOption(d, option, v,
+                       "must be in [" + formatNumber(lo) + ", " + formatNumber(hi) + "] " + unit);
   };
   if (o.from_given) speed("--from", o.from);
   if (o.to_given) speed("--to", o.to);
   if (o.from_given && o.to_given && o.from > 0.0 && o.to >= o.from)
-    badOption(d, "--to", o.to, "must be below --from (" + formatNumber(o.from) + " m/s)");
+    study::badOption(d, "--to", o.to, "must be below --from (" + formatNumber(o.from) + " m/s)");
   speed("--max-speed", o.max_speed);
   positive("--deceleration", o.deceleration, kMinDeceleration, kMaxDeceleration, "m/s^2");
   positive("--window", o.window, kMinWindow, kMaxDuration / 3.0, "s");
@@ -568,30 +569,32 @@ void checkCriticalSpeedOptions(const CriticalSpeedOptions& o) {
   // one probe forever, so it is bounded relative to the highest speed of the search.
   const double top = o.from_given ? o.from : o.max_speed;
   const double finest = kToleranceFraction * (std::isfinite(top) && top > 0.0 ? top : 1.0);
-  positive("--tolerance", o.tolerance, finest, kMaxOptionSpeed, "m/s");
+  positive("--tolerance", o.tolerance, finest, study::kMaxOptionSpeed, "m/s");
   if (!(std::isfinite(o.kick) && o.kick != 0.0 && std::abs(o.kick) <= 0.02))
-    badOption(d, "--kick", o.kick,
-              "must be a lateral offset with 0 < |kick| <= 0.02 m (the first run then checks it "
-              "against the flangeway)");
+    study::badOption(
+        d, "--kick", o.kick,
+        "must be a lateral offset with 0 < |kick| <= 0.02 m (the first run then checks it "
+        "against the flangeway)");
   if (!(std::isfinite(o.transient) && o.transient >= 0.0 && o.transient <= kMaxDuration))
-    badOption(d, "--transient", o.transient,
-              "must be in [0, " + formatNumber(kMaxDuration) + "] s");
+    study::badOption(d, "--transient", o.transient,
+                     "must be in [0, " + formatNumber(kMaxDuration) + "] s");
   if (!(std::isfinite(o.decay) && o.decay > 0.0 && o.decay <= 1.0))
-    badOption(d, "--decay", o.decay, "must be in (0, 1]");
+    study::badOption(d, "--decay", o.decay, "must be in (0, 1]");
   if (!(std::isfinite(o.duration) && o.duration > 0.0 && o.duration <= kMaxDuration))
-    badOption(d, "--duration", o.duration,
-              "must be in (0, " + formatNumber(kMaxDuration) + "] s (one constant-speed run)");
+    study::badOption(
+        d, "--duration", o.duration,
+        "must be in (0, " + formatNumber(kMaxDuration) + "] s (one constant-speed run)");
   else if (o.duration < o.transient + 3.0 * o.window)
-    badOption(d, "--duration", o.duration,
-              "must hold the transient and at least 3 windows (--transient + 3 --window = " +
-                  formatNumber(o.transient + 3.0 * o.window) + " s)");
-  checkJobs(d, o.jobs, true);
+    study::badOption(d, "--duration", o.duration,
+                     "must hold the transient and at least 3 windows (--transient + 3 --window = " +
+                         formatNumber(o.transient + 3.0 * o.window) + " s)");
+  study::checkJobs(d, o.jobs, true);
   d.throwIfAny();
 }
 
 int runCriticalSpeed(const CriticalSpeedOptions& o) {
   checkCriticalSpeedOptions(o);
-  const StudyOptions so = commandStudyOptions(o, "critical_speed");
+  const study::StudyOptions so = commandStudyOptions(o, "critical_speed");
   const StabilityScene scene =
       loadStabilityScene(o.scenario, o.contact, o.overrides, o.root, so.out);
   if (!scene.spec.has_vehicle) refuse(o.scenario, "has no vehicle");
@@ -649,7 +652,7 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
   std::cout << "wrote " << h5 << "\n";
   // The figure also shows what an incomplete search found; it never decides the exit code
   // beyond 4 (only the figure failed).
-  const int plots = o.no_plots ? 0 : runPlots(so, {"critical-speed", so.out});
+  const int plots = o.no_plots ? 0 : study::runPlots(so, {"critical-speed", so.out});
   // Any finding (a failed run among them: it may have decided a bisection step) makes the
   // answer incomplete: exit 2, as the file's status says.
   return complete(o, s) && s.findings.empty() ? plots : 2;

@@ -15,17 +15,17 @@
 #include "railbench/version.hpp"
 #include "workbench/app/assess.hpp"
 #include "workbench/app/critical_speed.hpp"
-#include "workbench/app/effects.hpp"
 #include "workbench/app/modes.hpp"
-#include "workbench/app/precision.hpp"
 #include "workbench/app/run.hpp"
-#include "workbench/app/stress.hpp"
-#include "workbench/app/study.hpp"
 #include "workbench/app/tables.hpp"
 #include "workbench/core/error.hpp"
+#include "workbench/effects/effects.hpp"
 #include "workbench/io/result_file.hpp"
+#include "workbench/precision/precision.hpp"
 #include "workbench/scenario/override_check.hpp"
 #include "workbench/scenario/schema.hpp"
+#include "workbench/stress/stress.hpp"
+#include "workbench/study/runner.hpp"
 
 namespace fs = std::filesystem;
 
@@ -77,7 +77,7 @@ int workbench(int argc, char** argv) {
       ->allow_extra_args(false);
   tables->add_option("--out", to.out, "result file (default out/<scenario>_tables.h5)");
 
-  rb::app::StudyOptions so;
+  rb::study::StudyOptions so;
   auto* study = app.add_subcommand("study", "run a study: a matrix of cases over a base scenario");
   study->add_option("file", so.file, "study file (.lua)")->required();
   study->add_option("--out", so.out, "output folder (default out/<study>)");
@@ -97,11 +97,11 @@ int workbench(int argc, char** argv) {
   summarize->excludes(mpi);
 
   // The users' three asks on any scenario (docs/three_asks.md).
-  rb::app::PrecisionOptions po;
+  rb::precision::PrecisionOptions po;
   auto* precision = rb::app::addPrecisionCommand(app, po);
-  rb::app::StressOptions sto;
+  rb::stress::StressOptions sto;
   auto* stress = rb::app::addStressCommand(app, sto);
-  rb::app::EffectsOptions eo;
+  rb::effects::EffectsOptions eo;
   auto* effects = rb::app::addEffectsCommand(app, eo);
 
   // Stability (docs/stability.md).
@@ -155,10 +155,10 @@ int workbench(int argc, char** argv) {
           throw rb::InputError({"<command line>", 0},
                                "--set applies to scenarios; " + co.scenario +
                                    " is a study file, whose cases set their own values");
-        rb::app::StudyOptions sco;
+        rb::study::StudyOptions sco;
         sco.file = co.scenario;
         sco.root = root;
-        const std::size_t n = rb::app::checkStudy(sco);
+        const std::size_t n = rb::study::checkStudy(sco);
         std::cout << co.scenario << ": ok (a study of " << n << (n == 1 ? " case" : " cases")
                   << "; every case's scenario loads)\n";
         return 0;
@@ -175,23 +175,23 @@ int workbench(int argc, char** argv) {
     if (*study) {
       so.root = root;
       so.program = fs::read_symlink("/proc/self/exe").string();
-      return rb::app::runStudy(so);
+      return rb::study::runStudy(so);
     }
     const std::string program = fs::read_symlink("/proc/self/exe").string();
     if (*precision) {
       po.root = root;
       po.program = program;
-      return rb::app::runPrecision(po);
+      return rb::precision::runPrecision(po);
     }
     if (*stress) {
       sto.root = root;
       sto.program = program;
-      return rb::app::runStress(sto);
+      return rb::stress::runStress(sto);
     }
     if (*effects) {
       eo.root = root;
       eo.program = program;
-      return rb::app::runEffects(eo);
+      return rb::effects::runEffects(eo);
     }
     if (*modes) {
       mo.root = root;

@@ -8,12 +8,12 @@
 #include <limits>
 #include <sstream>
 
-#include "workbench/app/option_checks.hpp"
 #include "workbench/app/stability_scene.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/io/modes_file.hpp"
 #include "workbench/stability/stability.hpp"
+#include "workbench/study/option_checks.hpp"
 
 namespace fs = std::filesystem;
 
@@ -52,8 +52,8 @@ std::vector<double> parseSpeeds(const std::string& text) {
   const double nd = speedNumber(parts[2]);
   if (!(a > 0.0)) badSpeeds("a must be > 0 m/s, got " + parts[0]);
   if (!(b >= a)) badSpeeds("b must be >= a, got " + parts[1]);
-  if (b > kMaxOptionSpeed)
-    badSpeeds("b must be at most " + formatNumber(kMaxOptionSpeed) +
+  if (b > study::kMaxOptionSpeed)
+    badSpeeds("b must be at most " + formatNumber(study::kMaxOptionSpeed) +
               " m/s (the range of vehicle.speed), got " + parts[1]);
   if (nd != std::floor(nd) || nd < 1.0) badSpeeds("n must be an integer >= 1, got " + parts[2]);
   if (nd > kMaxSpeeds)
@@ -198,10 +198,10 @@ namespace {
 void checkModesOptions(const ModesOptions& o) {
   Diagnostics d;
   if (!(o.fd_scale > 0.0) || !std::isfinite(o.fd_scale) || o.fd_scale > 1e3)
-    badOption(d, "--fd-scale", o.fd_scale, "must be in (0, 1000]");
+    study::badOption(d, "--fd-scale", o.fd_scale, "must be in (0, 1000]");
   if (!(o.distance >= 0.0) || !std::isfinite(o.distance))
-    badOption(d, "--distance", o.distance, "must be a finite distance >= 0 m");
-  checkJobs(d, o.jobs, true);
+    study::badOption(d, "--distance", o.distance, "must be a finite distance >= 0 m");
+  study::checkJobs(d, o.jobs, true);
   if (!o.speeds.empty()) {
     try {
       (void)parseSpeeds(o.speeds);
@@ -216,10 +216,10 @@ void checkModesOptions(const ModesOptions& o) {
 // (and the settling run of a curve integrates up to it before failing).
 void checkDistance(const ModesOptions& o, const scenario::ScenarioSpec& spec) {
   if (o.distance <= 0.0) return;
-  const double most = trackReach(spec);
+  const double most = study::trackReach(spec);
   if (o.distance > most) {
     Diagnostics d;
-    badOption(
+    study::badOption(
         d, "--distance", o.distance,
         "puts the leading body beyond the end of the track (at most " + formatNumber(most) + " m)");
     d.throwIfAny();
@@ -232,7 +232,7 @@ int runModes(const ModesOptions& o) {
   checkModesOptions(o);
   std::vector<double> speeds;
   if (!o.speeds.empty()) speeds = parseSpeeds(o.speeds);
-  const StudyOptions so = commandStudyOptions(o, "modes");
+  const study::StudyOptions so = commandStudyOptions(o, "modes");
   const StabilityScene scene =
       loadStabilityScene(o.scenario, o.contact, o.overrides, o.root, so.out);
   if (speeds.empty()) speeds.push_back(scene.spec.vehicle.speed);
@@ -295,7 +295,7 @@ int runModes(const ModesOptions& o) {
     return 2;
   }
   if (o.no_plots) return 0;
-  return runPlots(so, {"modes", so.out});
+  return study::runPlots(so, {"modes", so.out});
 }
 
 }  // namespace rb::app

@@ -5,10 +5,10 @@
 #include <functional>
 
 #include "workbench/app/critical_speed.hpp"
-#include "workbench/app/effects.hpp"
 #include "workbench/app/modes.hpp"
-#include "workbench/app/precision.hpp"
-#include "workbench/app/stress.hpp"
+#include "workbench/effects/effects.hpp"
+#include "workbench/precision/precision.hpp"
+#include "workbench/stress/stress.hpp"
 
 namespace rb::app {
 
@@ -27,7 +27,7 @@ CLI::App* addScenarioCommand(CLI::App& app, const std::string& name, const std::
 // The command lines of the commands on a scenario, here together: CLI11 is header-only and costs
 // about 8 s of compile time in every translation unit that declares options with it.
 
-CLI::App* addEffectsCommand(CLI::App& app, EffectsOptions& o) {
+CLI::App* addEffectsCommand(CLI::App& app, effects::EffectsOptions& o) {
   auto* c = addScenarioCommand(
       app, "effects",
       "each optional effect of the scene switched off in turn: what it costs (instructions per "
@@ -112,13 +112,14 @@ CLI::App* addModesCommand(CLI::App& app, ModesOptions& o) {
 namespace {
 
 // Records that `option` was typed (PrecisionOptions::given).
-std::function<void(const std::string&)> markGiven(PrecisionOptions& o, const std::string& option) {
+std::function<void(const std::string&)> markGiven(precision::PrecisionOptions& o,
+                                                  const std::string& option) {
   return [&o, option](const std::string&) { o.given.insert(option); };
 }
 
 }  // namespace
 
-CLI::App* addPrecisionCommand(CLI::App& app, PrecisionOptions& o) {
+CLI::App* addPrecisionCommand(CLI::App& app, precision::PrecisionOptions& o) {
   auto* c = addScenarioCommand(
       app, "precision",
       "what accuracy costs in time: a verified reference, contact methods x integrators x "
@@ -175,7 +176,7 @@ CLI::App* addPrecisionCommand(CLI::App& app, PrecisionOptions& o) {
   return c;
 }
 
-CLI::App* addStressCommand(CLI::App& app, StressOptions& o) {
+CLI::App* addStressCommand(CLI::App& app, stress::StressOptions& o) {
   auto* c = addScenarioCommand(
       app, "stress",
       "hardened variants of a scenario against their own reference: the stability map", o);
@@ -210,27 +211,6 @@ CLI::App* addStressCommand(CLI::App& app, StressOptions& o) {
                 "and the mismatches when an outcome differs")
       ->check(CLI::ExistingFile);
   return c;
-}
-
-scenario::ScenarioSpec loadCommandScenario(const ScenarioCommandOptions& o,
-                                           const std::vector<std::string>& overrides) {
-  scenario::LoadOptions lo;
-  lo.root = o.root;
-  lo.overrides = overrides;
-  return scenario::loadScenario(o.scenario, lo);
-}
-
-StudyOptions commandStudyOptions(const ScenarioCommandOptions& o, const std::string& command) {
-  StudyOptions so;
-  so.file = o.scenario;
-  so.root = o.root;
-  so.program = o.program;
-  so.jobs = o.jobs;
-  so.out = o.out.empty() ? (std::filesystem::path("out") /
-                            (std::filesystem::path(o.scenario).stem().string() + "_" + command))
-                               .string()
-                         : o.out;
-  return so;
 }
 
 }  // namespace rb::app

@@ -1,13 +1,13 @@
 #pragma once
-// What the commands that run variants of one scenario (precision, stress, effects) have in common:
-// the scenario, the overrides applied to every variant, the output folder and the runs at once.
-// The command lines of effects, critical-speed, modes, precision and stress (declared in their
-// own headers) are defined with addScenarioCommand, in scenario_command.cpp.
+// The command lines of the analyses that run variants of one scenario (effects, critical-speed,
+// modes, precision, stress; their options in their own headers): the scenario and the common
+// options (study/command.hpp) declared once, in scenario_command.cpp.
 #include <string>
-#include <vector>
 
-#include "workbench/app/study.hpp"
-#include "workbench/scenario/scenario.hpp"
+#include "workbench/effects/effects.hpp"
+#include "workbench/precision/precision.hpp"
+#include "workbench/stress/stress.hpp"
+#include "workbench/study/command.hpp"
 
 namespace CLI {
 class App;
@@ -15,26 +15,19 @@ class App;
 
 namespace rb::app {
 
-struct ScenarioCommandOptions {
-  std::string scenario;                // the user's scenario (.lua)
-  std::vector<std::string> overrides;  // --set block.key=value, applied to every case
-  std::string out;                     // output folder (default out/<scenario stem>_<command>)
-  std::string root;                    // project root
-  std::string program;                 // the workbench executable that runs the cases
-  int jobs = 0;                        // cases at once, 0 = number of cores
-};
+using study::ScenarioCommandOptions;
 
 // Declares the subcommand `name` on `app` with the scenario and the common options.
 CLI::App* addScenarioCommand(CLI::App& app, const std::string& name, const std::string& description,
                              ScenarioCommandOptions& options);
 
-// The user's scenario loaded with `overrides` (instead of the options' own): what a case of the
-// command runs. Throws InputError (file:line) when the scenario refuses them.
-scenario::ScenarioSpec loadCommandScenario(const ScenarioCommandOptions& options,
-                                           const std::vector<std::string>& overrides);
+// Declares the subcommand and its options on `app` (filled into `options` when parsed).
+CLI::App* addPrecisionCommand(CLI::App& app, precision::PrecisionOptions& options);
 
-// The study options of the command's runs: its program, root and jobs, `file` the scenario, `out`
-// the output folder (given, or out/<scenario stem>_<command>).
-StudyOptions commandStudyOptions(const ScenarioCommandOptions& options, const std::string& command);
+// Declares the subcommand and its options on `app` (filled into `options` when parsed).
+CLI::App* addStressCommand(CLI::App& app, stress::StressOptions& options);
+
+// Declares the subcommand and its options on `app` (filled into `options` when parsed).
+CLI::App* addEffectsCommand(CLI::App& app, effects::EffectsOptions& options);
 
 }  // namespace rb::app

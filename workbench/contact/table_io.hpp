@@ -57,7 +57,7 @@ namespace rb::contact {
 // {config,geometry,lut_build,kec_build}.cpp, the profile splines and readers
 // they use, the grids' defaults are inputs and need no bump). Cached tables of any other version
 // are then rebuilt, never reused. It is also part of a study case's input hash
-// (workbench/app/study.cpp).
+// (workbench/study/runner.cpp).
 inline constexpr std::uint64_t kTableAlgorithmVersion = 1;
 // Layout of the cache file (see above); bumped when the layout changes.
 inline constexpr std::uint64_t kTableFormatVersion = 2;

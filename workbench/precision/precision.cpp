@@ -1,4 +1,4 @@
-#include "workbench/app/precision.hpp"
+#include "workbench/precision/precision.hpp"
 
 #include <functional>
 
@@ -11,16 +11,16 @@
 #include <sstream>
 #include <thread>
 
-#include "workbench/app/precision_answer.hpp"
-#include "workbench/app/precision_plan.hpp"
-#include "workbench/app/study.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/io/read_stats.hpp"
+#include "workbench/precision/answer.hpp"
+#include "workbench/precision/plan.hpp"
+#include "workbench/study/runner.hpp"
 
 namespace fs = std::filesystem;
 
-namespace rb::app {
+namespace rb::precision {
 namespace {
 
 using precision::Ladder;
@@ -35,9 +35,9 @@ int runStage(const Plan& p, const PrecisionOptions& o, const fs::path& dir,
   st.cases = cases;
   st.repeats = repeats;
   st.loc = {o.scenario, 0};
-  StudyOptions so = commandStudyOptions(o, "precision");
+  study::StudyOptions so = commandStudyOptions(o, "precision");
   so.out = dir.string();
-  return runStudySpec(st, so, {});
+  return study::runStudySpec(st, so, {});
 }
 
 // Median CPU time [s] of the repeats of a case (of the part it ran, for a failed run); 0 when no
@@ -202,9 +202,9 @@ int runPrecision(const PrecisionOptions& given) {
       std::cerr << "precision: WARNING: the reference of " << r.model << " is UNVERIFIED: " << r.why
                 << "; its errors are not trustworthy below that difference\n";
 
-  StudyOptions so;
+  study::StudyOptions so;
   so.root = o.root;
-  const int plots = runPlots(so, plotArgs(p, o, out));
+  const int plots = study::runPlots(so, plotArgs(p, o, out));
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "precision: results in " << out.string() << " (" << formatNumber(wall, 3)
@@ -216,4 +216,4 @@ int runPrecision(const PrecisionOptions& given) {
   return plots;
 }
 
-}  // namespace rb::app
+}  // namespace rb::precision

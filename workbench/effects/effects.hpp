@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "workbench/app/scenario_command.hpp"
+#include "workbench/study/command.hpp"
 
-namespace rb::app {
+namespace rb::effects {
 
-struct EffectsOptions : ScenarioCommandOptions {
+struct EffectsOptions : study::ScenarioCommandOptions {
   std::set<std::string> given;       // the options typed (a typed 0 is refused, not a default)
   int repeats = 3;                   // runs per case: CPU time per evaluation is their median
   double duration = 0.0;             // [s] simulated time of every case (0: the scene's)
@@ -23,11 +23,8 @@ struct EffectsOptions : ScenarioCommandOptions {
   std::string quantities = "y,yaw";  // change in answer: y, yaw, Q, Fy (comma separated)
 };
 
-// Declares the subcommand and its options on `app` (filled into `options` when parsed).
-CLI::App* addEffectsCommand(CLI::App& app, EffectsOptions& options);
-
 // Runs the command; returns the process exit code (0 ok, 1 bad input, 2 no case ran, 4 figures
 // failed). Throws InputError for a bad scenario or option.
 int runEffects(const EffectsOptions& options);
 
-}  // namespace rb::app
+}  // namespace rb::effects

@@ -1,18 +1,18 @@
 #pragma once
 // `workbench stress SCENARIO.lua`: one of the users' three asks run on any scenario
 // (docs/stress.md): does the scenario stay numerically stable when it is made harder? The
-// scenario is hardened along named axes (stress_plan.hpp); every hardened case runs with a set of
+// scenario is hardened along named axes (plan.hpp); every hardened case runs with a set of
 // integrator settings and with its own tight-tolerance reference, each run in its own process
 // (runStudySpec); plots/rbplot stress classifies every run (ok, inaccurate, failed cleanly, failed
 // badly), writes stress.csv and the stability map and checks an expectation file.
 #include <string>
 #include <vector>
 
-#include "workbench/app/scenario_command.hpp"
+#include "workbench/study/command.hpp"
 
-namespace rb::app {
+namespace rb::stress {
 
-struct StressOptions : ScenarioCommandOptions {
+struct StressOptions : study::ScenarioCommandOptions {
   std::vector<std::string> axes;         // --axes: empty = every axis that applies
   std::vector<std::string> values;       // --values AXIS=v1,v2,...
   std::vector<std::string> integrators;  // --integrators METHOD:VALUE[:paper],...
@@ -24,12 +24,9 @@ struct StressOptions : ScenarioCommandOptions {
   std::string expect;                    // expectation file (docs/stress.md)
 };
 
-// Declares the subcommand and its options on `app` (filled into `options` when parsed).
-CLI::App* addStressCommand(CLI::App& app, StressOptions& options);
-
 // Runs the command; returns the process exit code (0 the map was made, 1 bad input, 2 no case
 // could run, 4 the figure failed, 5 an outcome differs from the expectation file). Throws
 // InputError for a bad scenario or option.
 int runStress(const StressOptions& options);
 
-}  // namespace rb::app
+}  // namespace rb::stress

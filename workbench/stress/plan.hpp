@@ -8,7 +8,7 @@
 
 #include "workbench/scenario/scenario.hpp"
 
-namespace rb::app::stress {
+namespace rb::stress {
 
 // One integrator setting: "rk4 1 ms", "bdf 1e-9"; its --set overrides.
 struct Setting {
@@ -64,4 +64,4 @@ std::vector<std::string> shortenRun(const scenario::ScenarioSpec& spec, double s
 // The end time [s] of a run of `spec` when it is given by duration, else 0.
 double endTime(const scenario::ScenarioSpec& spec);
 
-}  // namespace rb::app::stress
+}  // namespace rb::stress

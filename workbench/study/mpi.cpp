@@ -1,4 +1,4 @@
-#include "workbench/app/study_mpi.hpp"
+#include "workbench/study/mpi.hpp"
 
 #include <mpi.h>
 #include <sys/prctl.h>
@@ -12,10 +12,10 @@
 #include <string>
 #include <thread>
 
-#include "workbench/app/study_jobs.hpp"
+#include "workbench/study/jobs.hpp"
 
-namespace rb::app {
-using namespace study_detail;
+namespace rb::study {
+using namespace detail;
 namespace {
 
 constexpr int kAsk = 1;  // a rank asks rank 0 for a run
@@ -119,7 +119,7 @@ int lead(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& plan,
 int runStudyMpi(const scenario::StudySpec& st, const StudyOptions& o,
                 const std::vector<std::string>& plotArgs) {
   // A rank dies with the process that launched it (mpirun, orted, srun's step daemon), and its
-  // runs with it (study_jobs.cpp), so a killed farm leaves no run writing into the folder.
+  // runs with it (jobs.cpp), so a killed farm leaves no run writing into the folder.
   const pid_t launcher = getppid();
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (getppid() != launcher) return 1;
@@ -147,4 +147,4 @@ int runStudyMpi(const scenario::StudySpec& st, const StudyOptions& o,
   return 0;
 }
 
-}  // namespace rb::app
+}  // namespace rb::study

@@ -27,7 +27,7 @@
 //   --summarize             runs nothing: the summaries and figures of what is on disk; a run with
 //                           no result of the current inputs has status "missing", one locked by
 //                           a runner at work "skipped".
-//   --mpi                   an MPI task farm (app/study_mpi.hpp): rank 0 hands out the runs one at
+//   --mpi                   an MPI task farm (study/mpi.hpp): rank 0 hands out the runs one at
 //                           a time to the ranks that ask, runs runs itself while idle and writes
 //                           the summaries once every run is done.
 // A run that left no result records why in .locks/<id>_r<k>.noresult (the input hash, then the
@@ -49,7 +49,7 @@
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/scenario/study.hpp"
 
-namespace rb::app {
+namespace rb::study {
 
 struct StudyOptions {
   std::string file;         // study file
@@ -62,7 +62,7 @@ struct StudyOptions {
   double run_timeout_s = 0.0;
   std::string shard;       // "K/N": run only the K-th of N shards and write no summary
   bool summarize = false;  // run nothing: summaries and figures of what is on disk
-  bool mpi = false;        // MPI task farm (app/study_mpi.hpp)
+  bool mpi = false;        // MPI task farm (study/mpi.hpp)
 };
 
 // A shard "K/N" (1 <= K <= N) of the runs of a study.
@@ -116,4 +116,4 @@ std::string buildId(const std::string& program);
 std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string& build_id,
                           const std::string& output = "full");
 
-}  // namespace rb::app
+}  // namespace rb::study

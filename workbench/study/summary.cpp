@@ -1,4 +1,4 @@
-#include "workbench/app/study_summary.hpp"
+#include "workbench/study/summary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,17 +7,17 @@
 #include <map>
 #include <sstream>
 
-#include "workbench/app/study_metrics.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/io/read_stats.hpp"
 #include "workbench/io/result_file.hpp"
 #include "workbench/io/result_reader.hpp"
 #include "workbench/scenario/override_check.hpp"
+#include "workbench/study/metrics.hpp"
 #include "workbench/vehicle/stage_clock.hpp"
 
 namespace fs = std::filesystem;
 
-namespace rb::app::study_detail {
+namespace rb::study::detail {
 namespace {
 
 double median(std::vector<double> v) {
@@ -354,4 +354,4 @@ SummaryCounts writeSummaries(const scenario::StudySpec& st, const std::vector<Jo
   return {sm.runsOk, sm.runsKnown, sm.runsElsewhere};
 }
 
-}  // namespace rb::app::study_detail
+}  // namespace rb::study::detail

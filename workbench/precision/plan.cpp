@@ -1,4 +1,4 @@
-#include "workbench/app/precision_plan.hpp"
+#include "workbench/precision/plan.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,16 +8,16 @@
 
 #include <unistd.h>
 
-#include "workbench/app/option_checks.hpp"
-#include "workbench/app/precision_answer.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/names.hpp"
+#include "workbench/precision/answer.hpp"
 #include "workbench/scenario/scenario.hpp"
+#include "workbench/study/option_checks.hpp"
 
 namespace fs = std::filesystem;
 
-namespace rb::app::precision {
+namespace rb::precision {
 namespace {
 
 const SourceLoc kCommandLine{"<command line>", 0};
@@ -362,8 +362,9 @@ void checkListItems(const std::string& option, const std::string& text, Diagnost
       // under the resolution of a double and only costs work.
       for (double t : splitNumbers(text, option))
         if (!(t >= kFinestTolerance && t < 1.0))
-          badOption(d, option, formatNumber(t),
-                    "a relative tolerance must be in [" + formatNumber(kFinestTolerance) + ", 1)");
+          study::badOption(
+              d, option, formatNumber(t),
+              "a relative tolerance must be in [" + formatNumber(kFinestTolerance) + ", 1)");
       return;
     }
     if (option == "--steps" || option == "--levels") {
@@ -402,24 +403,24 @@ void checkNumbers(const PrecisionOptions& o) {
   auto typed = [&](const char* option) { return o.given.contains(option); };
   // A length typed as 0 is no default: it would run the scenario's whole length unasked.
   if (typed("--distance") || o.distance != 0.0)
-    if (const auto why = notPositive(o.distance, 1e12); !why.empty())
-      badOption(d, "--distance", o.distance, why + " m");
+    if (const auto why = study::notPositive(o.distance, 1e12); !why.empty())
+      study::badOption(d, "--distance", o.distance, why + " m");
   if (typed("--duration") || o.duration != 0.0)
-    if (const auto why = notPositive(o.duration, 1e9); !why.empty())
-      badOption(d, "--duration", o.duration, why + " s");
+    if (const auto why = study::notPositive(o.duration, 1e9); !why.empty())
+      study::badOption(d, "--duration", o.duration, why + " s");
   if (o.distance > 0.0 && o.duration > 0.0)
     d.add(kCommandLine, "--distance and --duration: give one of them");
   if (!(std::isfinite(o.budget) && o.budget >= 0.0))
-    badOption(d, "--budget", o.budget, "must be a finite time >= 0 s (0: none)");
+    study::badOption(d, "--budget", o.budget, "must be a finite time >= 0 s (0: none)");
   if (!(std::isfinite(o.reference_limit) && o.reference_limit >= 0.0))
-    badOption(d, "--reference-limit", o.reference_limit,
-              "must be a finite number >= 0 (0: the smallest level / 10)");
+    study::badOption(d, "--reference-limit", o.reference_limit,
+                     "must be a finite number >= 0 (0: the smallest level / 10)");
   if (!(o.reference_tol >= kFinestTolerance && o.reference_tol < 1e-2))
-    badOption(d, "--reference-tol", o.reference_tol,
-              "must be in [" + formatNumber(kFinestTolerance) + ", 1e-2)");
+    study::badOption(d, "--reference-tol", o.reference_tol,
+                     "must be in [" + formatNumber(kFinestTolerance) + ", 1e-2)");
   if (o.repeats < 1 || o.repeats > 100)
-    badOption(d, "--repeats", std::to_string(o.repeats), "must be in 1..100");
-  checkJobs(d, o.jobs, true);
+    study::badOption(d, "--repeats", std::to_string(o.repeats), "must be in 1..100");
+  study::checkJobs(d, o.jobs, true);
   checkLists(o, d);
   d.throwIfAny();
 }
@@ -432,11 +433,11 @@ void checkStepCount(const PrecisionOptions& o, double t_end, double max_samples)
   for (double h : splitNumbers(o.steps, "--steps")) {
     const double n = t_end / h;
     if (n > max_samples)
-      badOption(d, "--steps", formatNumber(h),
-                formatNumber(n) + " steps over the run's " + formatNumber(t_end) +
-                    " s, more than run.output.max_samples = " + formatNumber(max_samples) +
-                    " (the bound of a run's work; raise it with --set "
-                    "run.output.max_samples=N, or shorten the run with --duration)");
+      study::badOption(d, "--steps", formatNumber(h),
+                       formatNumber(n) + " steps over the run's " + formatNumber(t_end) +
+                           " s, more than run.output.max_samples = " + formatNumber(max_samples) +
+                           " (the bound of a run's work; raise it with --set "
+                           "run.output.max_samples=N, or shorten the run with --duration)");
   }
   d.throwIfAny();
 }
@@ -451,7 +452,7 @@ Plan makePlan(const PrecisionOptions& o) {
   // --callgrind runs valgrind after the whole matrix: its absence must show before the matrix.
   if (o.callgrind && !onPath("valgrind"))
     throw InputError(kCommandLine, "--callgrind: valgrind is not on the PATH");
-  std::vector<OptionOverride> lengths;
+  std::vector<study::OptionOverride> lengths;
   if (o.distance > 0.0)
     lengths.push_back({"--distance", formatNumberExact(o.distance),
                        "run.distance=" + formatNumberExact(o.distance)});
@@ -553,4 +554,4 @@ std::string planCsv(const Plan& plan) {
   return s.str();
 }
 
-}  // namespace rb::app::precision
+}  // namespace rb::precision

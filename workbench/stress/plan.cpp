@@ -1,4 +1,4 @@
-#include "workbench/app/stress_plan.hpp"
+#include "workbench/stress/plan.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/names.hpp"
 
-namespace rb::app::stress {
+namespace rb::stress {
 
 namespace {
 
@@ -289,4 +289,4 @@ std::vector<std::string> shortenRun(const ScenarioSpec& spec, double seconds) {
   return {"run.duration=" + formatNumber(seconds, 12)};
 }
 
-}  // namespace rb::app::stress
+}  // namespace rb::stress

@@ -1,14 +1,14 @@
 #pragma once
-// The summaries of a study folder (app/study.hpp): summary.csv (one row per run), summary_cases.csv
-// (one row per case) and summary.h5, from the result files on disk, so that a local run, shards
-// merged by --summarize and the MPI farm write the same summaries.
+// The summaries of a study folder (study/runner.hpp): summary.csv (one row per run),
+// summary_cases.csv (one row per case) and summary.h5, from the result files on disk, so that a
+// local run, shards merged by --summarize and the MPI farm write the same summaries.
 #include <cstddef>
 #include <filesystem>
 #include <vector>
 
-#include "workbench/app/study_jobs.hpp"
+#include "workbench/study/jobs.hpp"
 
-namespace rb::app::study_detail {
+namespace rb::study::detail {
 
 struct SummaryCounts {
   std::size_t runsOk = 0, runsKnown = 0, runsElsewhere = 0;
@@ -19,4 +19,4 @@ struct SummaryCounts {
 SummaryCounts writeSummaries(const scenario::StudySpec& st, const std::vector<Job>& all,
                              const std::filesystem::path& dir);
 
-}  // namespace rb::app::study_detail
+}  // namespace rb::study::detail

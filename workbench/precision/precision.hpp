@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "workbench/app/scenario_command.hpp"
+#include "workbench/study/command.hpp"
 
-namespace rb::app {
+namespace rb::precision {
 
-struct PrecisionOptions : ScenarioCommandOptions {
+struct PrecisionOptions : study::ScenarioCommandOptions {
   // The options typed on the command line: a typed empty list or 0 is refused, never read as
   // "the default".
   std::set<std::string> given;
@@ -39,11 +39,8 @@ struct PrecisionOptions : ScenarioCommandOptions {
   bool callgrind = false;         // instructions of the recommended settings
 };
 
-// Declares the subcommand and its options on `app` (filled into `options` when parsed).
-CLI::App* addPrecisionCommand(CLI::App& app, PrecisionOptions& options);
-
 // Runs the command; returns the process exit code (0 ok, 1 bad input, 2 no case ran, 4 figures
 // failed). Throws InputError for a bad scenario or option.
 int runPrecision(const PrecisionOptions& options);
 
-}  // namespace rb::app
+}  // namespace rb::precision

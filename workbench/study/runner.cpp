@@ -1,4 +1,4 @@
-#include "workbench/app/study.hpp"
+#include "workbench/study/runner.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -17,23 +17,23 @@
 #include <thread>
 
 #include "railbench/version.hpp"
-#include "workbench/app/option_checks.hpp"
-#include "workbench/app/study_jobs.hpp"
-#include "workbench/app/study_summary.hpp"
 #include "workbench/contact/table_io.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/files.hpp"
 #include "workbench/io/read_stats.hpp"
 #include "workbench/run/vehicle_run.hpp"
+#include "workbench/study/jobs.hpp"
+#include "workbench/study/option_checks.hpp"
+#include "workbench/study/summary.hpp"
 #include "workbench/track/spec.hpp"
 #ifdef RB_HAVE_MPI
-#include "workbench/app/study_mpi.hpp"
+#include "workbench/study/mpi.hpp"
 #endif
 
 namespace fs = std::filesystem;
 
-namespace rb::app {
-using namespace study_detail;
+namespace rb::study {
+using namespace detail;
 namespace {
 
 // that `python3 -m railbench` finds the package (built before fork: the child only execs).
@@ -162,7 +162,7 @@ Shard parseShard(const std::string& text, const std::string& file) {
   return sh;
 }
 
-namespace study_detail {
+namespace detail {
 
 void makePlan(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& plan) {
   plan.dir = o.out;
@@ -213,7 +213,7 @@ int summarizeStudy(const scenario::StudySpec& st, const StudyOptions& o, StudyPl
   return plots;
 }
 
-}  // namespace study_detail
+}  // namespace detail
 
 namespace {
 
@@ -389,4 +389,4 @@ int runStudySpec(const scenario::StudySpec& st, const StudyOptions& o,
   return summarizeStudy(st, o, plan, plotArgs, skipped);
 }
 
-}  // namespace rb::app
+}  // namespace rb::study

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "workbench/app/scenario_command.hpp"
 #include "workbench/core/error.hpp"
+#include "workbench/study/command.hpp"
 
-namespace rb::app {
+namespace rb::study {
 
 inline const SourceLoc kOptionLoc{"<command line>", 0};
 
@@ -54,4 +54,4 @@ struct OptionOverride {
 double checkOptionOverrides(const ScenarioCommandOptions& o, const std::vector<std::string>& base,
                             const std::vector<OptionOverride>& options);
 
-}  // namespace rb::app
+}  // namespace rb::study

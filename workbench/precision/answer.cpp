@@ -1,4 +1,4 @@
-#include "workbench/app/precision_answer.hpp"
+#include "workbench/precision/answer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +17,7 @@
 
 namespace fs = std::filesystem;
 
-namespace rb::app::precision {
+namespace rb::precision {
 namespace {
 
 const SourceLoc kCommandLine{"<command line>", 0};
@@ -570,4 +570,4 @@ void printAnswer(const Answer& a, std::ostream& out) {
   }
 }
 
-}  // namespace rb::app::precision
+}  // namespace rb::precision

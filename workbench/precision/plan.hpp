@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "workbench/app/precision.hpp"
+#include "workbench/precision/precision.hpp"
 #include "workbench/scenario/study.hpp"
 
-namespace rb::app::precision {
+namespace rb::precision {
 
 // The roles of the cases in precision_plan.csv (read by plots/railbench/precision.py).
 inline constexpr const char* kRoleReference = "reference";               // refined tables, method A
@@ -88,4 +88,4 @@ Plan makePlan(const PrecisionOptions& o);
 // folder, id, role, model, integrator, setting, status and note.
 std::string planCsv(const Plan& plan);
 
-}  // namespace rb::app::precision
+}  // namespace rb::precision

@@ -1,17 +1,17 @@
-#include "workbench/app/study_metrics.hpp"
+#include "workbench/study/metrics.hpp"
 
 #include <cmath>
 #include <exception>
 #include <sstream>
 
-#include "workbench/app/study_jobs.hpp"
 #include "workbench/assessment/signal_metrics.hpp"
 #include "workbench/io/result_reader.hpp"
 #include "workbench/scenario/metric_lua.hpp"
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/stability/stability.hpp"
+#include "workbench/study/jobs.hpp"
 
-namespace rb::app::study_detail {
+namespace rb::study::detail {
 namespace {
 
 namespace sm = assessment::metrics;
@@ -256,4 +256,4 @@ std::vector<io::MetricRecord> summaryMetrics(MetricContext& ctx, const scenario:
   return out;
 }
 
-}  // namespace rb::app::study_detail
+}  // namespace rb::study::detail

@@ -1,4 +1,4 @@
-#include "workbench/app/effects.hpp"
+#include "workbench/effects/effects.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -6,15 +6,15 @@
 #include <iostream>
 #include <sstream>
 
-#include "workbench/app/effects_cases.hpp"
-#include "workbench/app/option_checks.hpp"
-#include "workbench/app/study.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
+#include "workbench/effects/cases.hpp"
+#include "workbench/study/option_checks.hpp"
+#include "workbench/study/runner.hpp"
 
 namespace fs = std::filesystem;
 
-namespace rb::app {
+namespace rb::effects {
 namespace {
 
 const SourceLoc kCli{"<command line>", 0};
@@ -36,23 +36,23 @@ void checkOptions(const EffectsOptions& o) {
   Diagnostics d;
   const auto typed = [&](const char* option) { return o.given.contains(option); };
   if (typed("--duration") || o.duration != 0.0)
-    if (const auto why = notPositive(o.duration, 1e9); !why.empty())
-      badOption(d, "--duration", o.duration, why + " s");
+    if (const auto why = study::notPositive(o.duration, 1e9); !why.empty())
+      study::badOption(d, "--duration", o.duration, why + " s");
   if (typed("--distance") || o.distance != 0.0)
-    if (const auto why = notPositive(o.distance, 1e12); !why.empty())
-      badOption(d, "--distance", o.distance, why + " m");
+    if (const auto why = study::notPositive(o.distance, 1e12); !why.empty())
+      study::badOption(d, "--distance", o.distance, why + " m");
   if (o.duration > 0 && o.distance > 0) d.add(kCli, "give either --duration or --distance");
-  if (const auto why = notPositive(o.cost_duration, 1e9); !why.empty())
-    badOption(d, "--cost-duration", o.cost_duration, why + " s");
+  if (const auto why = study::notPositive(o.cost_duration, 1e9); !why.empty())
+    study::badOption(d, "--cost-duration", o.cost_duration, why + " s");
   if (o.repeats < 1 || o.repeats > 100)
-    badOption(d, "--repeats", std::to_string(o.repeats), "must be in 1..100");
+    study::badOption(d, "--repeats", std::to_string(o.repeats), "must be in 1..100");
   else if (o.quick && typed("--repeats") && o.repeats != 1)
-    badOption(d, "--repeats", std::to_string(o.repeats),
-              "--quick runs one repeat per case; give one of them");
+    study::badOption(d, "--repeats", std::to_string(o.repeats),
+                     "--quick runs one repeat per case; give one of them");
   if (o.quick && typed("--cost-duration"))
-    badOption(d, "--cost-duration", o.cost_duration,
-              "--quick runs no callgrind, so there is no cost run; give one of them");
-  checkJobs(d, o.jobs, true);
+    study::badOption(d, "--cost-duration", o.cost_duration,
+                     "--quick runs no callgrind, so there is no cost run; give one of them");
+  study::checkJobs(d, o.jobs, true);
   const auto quantities = commaList(o.quantities);
   if (quantities.empty())
     d.add(kCli, "--quantities: no quantity (one of: " + join(kQuantities, ", ") + ")");
@@ -126,7 +126,7 @@ int runEffects(const EffectsOptions& options) {
                      "the scenario has no vehicle{} block: nothing is simulated, "
                      "no effect to measure");
   std::vector<std::string> common = o.overrides;
-  std::vector<OptionOverride> lengths;
+  std::vector<study::OptionOverride> lengths;
   if (auto len = lengthOverride(scene, o.duration, o.distance); !len.empty()) {
     common.push_back(len);
     // What the user typed (--quick's 0.2 s included, as --quick).
@@ -146,14 +146,14 @@ int runEffects(const EffectsOptions& options) {
                                {{"--cost-duration", formatNumber(o.cost_duration),
                                  lengthOverride(spec, o.cost_duration, 0)}});
 
-  const StudyOptions so = commandStudyOptions(o, "effects");
+  const study::StudyOptions so = commandStudyOptions(o, "effects");
   std::error_code ec;
   fs::create_directories(so.out, ec);
   if (ec) throw InputError(kCli, "--out: cannot create " + so.out + ": " + ec.message());
   writeSceneEffects(so.out, spec);
 
   const scenario::StudySpec st = effectsStudy(o.scenario, spec, common, o.repeats);
-  const int study = runStudySpec(st, so, {});
+  const int study = study::runStudySpec(st, so, {});
   if (study == 2) return 2;
   std::vector<std::string> args = {"effects",      so.out,
                                    "--workbench",  o.program,
@@ -161,8 +161,8 @@ int runEffects(const EffectsOptions& options) {
                                    "--quantities", o.quantities,
                                    "--cost-set",   lengthOverride(spec, o.cost_duration, 0)};
   if (o.no_callgrind) args.emplace_back("--no-callgrind");
-  const int plots = runPlots(so, args);
+  const int plots = study::runPlots(so, args);
   return plots != 0 ? plots : study;
 }
 
-}  // namespace rb::app
+}  // namespace rb::effects

@@ -9,7 +9,7 @@
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/scenario/study.hpp"
 
-namespace rb::app {
+namespace rb::effects {
 
 // An effect of the scene as the command reports it.
 struct SceneEffect {
@@ -30,4 +30,4 @@ scenario::StudySpec effectsStudy(const std::string& scenarioPath,
                                  const scenario::ScenarioSpec& spec,
                                  const std::vector<std::string>& common, int repeats);
 
-}  // namespace rb::app
+}  // namespace rb::effects

@@ -1,4 +1,4 @@
-#include "workbench/app/option_checks.hpp"
+#include "workbench/study/option_checks.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "workbench/run/compile.hpp"
 #include "workbench/track/track.hpp"
 
-namespace rb::app {
+namespace rb::study {
 
 int maxJobs() {
   return kJobsPerCore * static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -70,4 +70,4 @@ double checkOptionOverrides(const ScenarioCommandOptions& o, const std::vector<s
   }
 }
 
-}  // namespace rb::app
+}  // namespace rb::study

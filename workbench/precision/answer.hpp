@@ -15,13 +15,13 @@
 #include <string>
 #include <vector>
 
-#include "workbench/app/precision_plan.hpp"
+#include "workbench/precision/plan.hpp"
 
 namespace rb::io {
 class ResultReader;
 }
 
-namespace rb::app::precision {
+namespace rb::precision {
 
 // An error quantity (--quantities): y, yaw of every wheelset (a guided vehicle: every other body),
 // Q, Fy, Y, YQ of every wheel, BODY.y|z|roll|pitch|yaw of one body.
@@ -115,4 +115,4 @@ void writeAnswerH5(const Answer& answer, const std::string& path);
 // The printed answer: per model the reference state, bound and table error, then the table.
 void printAnswer(const Answer& answer, std::ostream& out);
 
-}  // namespace rb::app::precision
+}  // namespace rb::precision

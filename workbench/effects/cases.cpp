@@ -1,6 +1,6 @@
-#include "workbench/app/effects_cases.hpp"
+#include "workbench/effects/cases.hpp"
 
-namespace rb::app {
+namespace rb::effects {
 
 using scenario::Effect;
 
@@ -51,4 +51,4 @@ scenario::StudySpec effectsStudy(const std::string& scenarioPath,
   return st;
 }
 
-}  // namespace rb::app
+}  // namespace rb::effects

@@ -1,6 +1,6 @@
 #pragma once
 // `mpirun -np N workbench study STUDY.lua --mpi` (or `srun ... --mpi`): the runs of a study as an
-// MPI task farm. Every rank loads the study and lists the same runs (app/study_jobs.hpp); rank 0
+// MPI task farm. Every rank loads the study and lists the same runs (study/jobs.hpp); rank 0
 // hands them out one at a time to the ranks that ask, in the order of the study, so a rank that
 // drew a cheap case asks again at once (case costs differ by two orders of magnitude: a static
 // split would leave ranks idle behind the dearest shard). Each rank runs its run through the
@@ -15,18 +15,18 @@
 // runs. RAILBENCH_MPI_RANK0_RUNS=0 makes rank 0 a pure dispatcher (with more than one rank).
 //
 // Once every run is done rank 0 leaves MPI and writes the summaries and figures exactly as a
-// local run (app/study.hpp); the other ranks return 0. Every rank dies with its launcher
+// local run (study/runner.hpp); the other ranks return 0. Every rank dies with its launcher
 // (PR_SET_PDEATHSIG), and every run with its rank, so killing mpirun leaves no run behind; a
 // relaunch runs only what was not finished.
 #include <string>
 #include <vector>
 
-#include "workbench/app/study.hpp"
+#include "workbench/study/runner.hpp"
 
-namespace rb::app {
+namespace rb::study {
 
 // Runs the study `st` as one rank of the farm; returns as runStudy on rank 0, 0 on the others.
 int runStudyMpi(const scenario::StudySpec& st, const StudyOptions& o,
                 const std::vector<std::string>& plotArgs);
 
-}  // namespace rb::app
+}  // namespace rb::study

@@ -1,4 +1,4 @@
-#include "workbench/app/study_jobs.hpp"
+#include "workbench/study/jobs.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -17,17 +17,17 @@
 #include <stdexcept>
 #include <thread>
 
-#include "workbench/app/study_metrics.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/files.hpp"
 #include "workbench/io/read_stats.hpp"
 #include "workbench/io/result_reader.hpp"
 #include "workbench/io/root_text.hpp"
 #include "workbench/io/track_store.hpp"
+#include "workbench/study/metrics.hpp"
 
 namespace fs = std::filesystem;
 
-namespace rb::app::study_detail {
+namespace rb::study::detail {
 
 bool isDone(const std::string& h5, const std::string& hash) {
   if (hash.empty() || !isRegularFile(h5)) return false;
@@ -433,4 +433,4 @@ void outcomesFromDisk(std::vector<Job>& all) {
   }
 }
 
-}  // namespace rb::app::study_detail
+}  // namespace rb::study::detail

@@ -1,4 +1,4 @@
-#include "workbench/app/stress.hpp"
+#include "workbench/stress/stress.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,15 +8,15 @@
 #include <iostream>
 #include <sstream>
 
-#include "workbench/app/option_checks.hpp"
-#include "workbench/app/stress_plan.hpp"
-#include "workbench/app/study.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/scenario/study.hpp"
+#include "workbench/stress/plan.hpp"
+#include "workbench/study/option_checks.hpp"
+#include "workbench/study/runner.hpp"
 
-namespace rb::app {
+namespace rb::stress {
 
 namespace fs = std::filesystem;
 
@@ -34,7 +34,7 @@ std::map<std::string, std::vector<double>> parseValues(const std::vector<std::st
   for (const auto& g : given) {
     const auto eq = g.find('=');
     if (eq == std::string::npos || eq + 1 == g.size()) {
-      d.add(kOptionLoc, "--values '" + g + "': expected AXIS=v1,v2,...");
+      d.add(study::kOptionLoc, "--values '" + g + "': expected AXIS=v1,v2,...");
       continue;
     }
     std::vector<double>& vs = out[g.substr(0, eq)];
@@ -44,10 +44,10 @@ std::map<std::string, std::vector<double>> parseValues(const std::vector<std::st
     while (std::getline(in, tok, ',')) {
       // Counted before parsing: a list of 10 000 values is refused without reading them all.
       if (++count > kMaxValues) {
-        d.add(kOptionLoc, "--values " + g.substr(0, eq) + "=...: more than " +
-                              std::to_string(kMaxValues) +
-                              " values of one axis (each is a run "
-                              "of every setting and a reference)");
+        d.add(study::kOptionLoc, "--values " + g.substr(0, eq) + "=...: more than " +
+                                     std::to_string(kMaxValues) +
+                                     " values of one axis (each is a run "
+                                     "of every setting and a reference)");
         break;
       }
       try {
@@ -56,8 +56,8 @@ std::map<std::string, std::vector<double>> parseValues(const std::vector<std::st
         if (used != tok.size() || !(v > 0) || !std::isfinite(v)) throw std::invalid_argument(tok);
         vs.push_back(v);
       } catch (const std::exception&) {
-        d.add(kOptionLoc, "--values '" + g.substr(0, std::min<std::size_t>(g.size(), 80)) + "': '" +
-                              tok + "' is not a positive finite number");
+        d.add(study::kOptionLoc, "--values '" + g.substr(0, std::min<std::size_t>(g.size(), 80)) +
+                                     "': '" + tok + "' is not a positive finite number");
       }
     }
   }
@@ -69,24 +69,26 @@ std::map<std::string, std::vector<double>> parseValues(const std::vector<std::st
 void checkStressOptions(const StressOptions& o) {
   Diagnostics d;
   if (!(std::isfinite(o.tolerance) && o.tolerance > 0.0))
-    badOption(d, "--tolerance", o.tolerance, "must be a finite error > 0 mm");
+    study::badOption(d, "--tolerance", o.tolerance, "must be a finite error > 0 mm");
   if (!(std::isfinite(o.run_timeout) && o.run_timeout >= 0.0))
-    badOption(d, "--run-timeout", o.run_timeout, "must be a finite time >= 0 s (0: no limit)");
+    study::badOption(d, "--run-timeout", o.run_timeout,
+                     "must be a finite time >= 0 s (0: no limit)");
   if (o.integrators.size() > kMaxSettings)
-    badOption(d, "--integrators", std::to_string(o.integrators.size()) + " settings",
-              "at most " + std::to_string(kMaxSettings) + " settings");
-  checkJobs(d, o.jobs, true);
+    study::badOption(d, "--integrators", std::to_string(o.integrators.size()) + " settings",
+                     "at most " + std::to_string(kMaxSettings) + " settings");
+  study::checkJobs(d, o.jobs, true);
   const auto& names = stress::axisNames();
   const auto known = [&](const std::string& a) {
     return std::find(names.begin(), names.end(), a) != names.end();
   };
   for (const auto& a : o.axes)
     if (!known(a))
-      d.add(kOptionLoc, "--axes: unknown axis '" + a + "' (axes: " + rb::join(names, ", ") + ")");
+      d.add(study::kOptionLoc,
+            "--axes: unknown axis '" + a + "' (axes: " + rb::join(names, ", ") + ")");
   for (const auto& g : o.values) {
     const std::string name = g.substr(0, g.find('='));
     if (g.find('=') != std::string::npos && (!known(name) || name == "nominal"))
-      d.add(kOptionLoc,
+      d.add(study::kOptionLoc,
             "--values: unknown axis '" + name + "' (axes: " + rb::join(names, ", ") + ")");
   }
   try {
@@ -162,8 +164,8 @@ void validate(const StressOptions& o, const std::vector<std::string>& common,
       std::string keys;
       for (const auto& k : h.overrides) keys += (keys.empty() ? "" : " ") + k;
       for (const auto& x : e.diagnostics())
-        d.add(kOptionLoc, "axis " + h.axis + " value " + formatNumber(h.value, 12) + " (--values " +
-                              h.axis + "=...; " + keys + "): " + x.str());
+        d.add(study::kOptionLoc, "axis " + h.axis + " value " + formatNumber(h.value, 12) +
+                                     " (--values " + h.axis + "=...; " + keys + "): " + x.str());
     }
   }
   d.throwIfAny();
@@ -186,15 +188,15 @@ void checkSettings(const std::vector<std::string>& given, const std::string& opt
       continue;
     }
     if (!std::isfinite(v) || !(v > 0.0)) {
-      badOption(d, option, g, "the value must be a positive finite number");
+      study::badOption(d, option, g, "the value must be a positive finite number");
     } else if (m == "rk4" || m == "abm") {
       if (t_end > 0.0 && t_end / v > max_samples)
-        badOption(d, option, g,
-                  formatNumber(t_end / v) + " steps over the run's " + formatNumber(t_end) +
-                      " s, more than run.output.max_samples = " + formatNumber(max_samples) +
-                      " (raise it with --set run.output.max_samples=N)");
+        study::badOption(d, option, g,
+                         formatNumber(t_end / v) + " steps over the run's " + formatNumber(t_end) +
+                             " s, more than run.output.max_samples = " + formatNumber(max_samples) +
+                             " (raise it with --set run.output.max_samples=N)");
     } else if (!(v >= 1e-14 && v < 1.0)) {
-      badOption(d, option, g, "a relative tolerance must be in [1e-14, 1)");
+      study::badOption(d, option, g, "a relative tolerance must be in [1e-14, 1)");
     }
   }
   d.throwIfAny();
@@ -206,9 +208,9 @@ int classify(const StressOptions& o, const std::string& dir) {
   if (!o.expect.empty()) args.insert(args.end(), {"--expect", o.expect});
   if (const char* e = std::getenv("RAILBENCH_STUDY_PLOTS"); e && std::string(e) == "0")
     args.emplace_back("--no-figure");
-  StudyOptions so;
+  study::StudyOptions so;
   so.root = o.root;
-  const int code = runRbplot(so, args);
+  const int code = study::runRbplot(so, args);
   if (code < 0) {
     std::cerr << "stress: cannot classify the runs: python3 or " << o.root
               << "/plots/railbench not found\n";
@@ -250,7 +252,7 @@ int runStress(const StressOptions& o) {
   checkSettings({o.reference}, "--reference", t_end, spec.run.max_output_samples);
   const std::size_t total = plan.cases.size() * (runs.size() + 1);
   if (total > kMaxRuns)
-    throw InputError(kOptionLoc,
+    throw InputError(study::kOptionLoc,
                      "--axes/--values/--integrators: " + std::to_string(plan.cases.size()) +
                          " hardened cases x (" + std::to_string(runs.size()) +
                          " settings + reference) = " + std::to_string(total) + " runs, more than " +
@@ -266,7 +268,7 @@ int runStress(const StressOptions& o) {
     for (const auto& s : runs) addCase(e, h, s, common, "");
   }
 
-  StudyOptions so = commandStudyOptions(o, "stress");
+  study::StudyOptions so = commandStudyOptions(o, "stress");
   so.file = e.study.file;
   so.run_timeout_s = o.run_timeout;
   std::error_code ec;
@@ -280,9 +282,9 @@ int runStress(const StressOptions& o) {
             << runs.size() << " settings + reference " << reference.label << ") into " << so.out
             << "\n";
   // A failed run is a result here: runStudySpec's "no run ok" (2) does not end the command.
-  const int rc = runStudySpec(e.study, so, {});
+  const int rc = study::runStudySpec(e.study, so, {});
   if (rc == 1) return 1;
   return classify(o, so.out);
 }
 
-}  // namespace rb::app
+}  // namespace rb::stress

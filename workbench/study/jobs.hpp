@@ -1,5 +1,5 @@
 #pragma once
-// The runs of a study (app/study.hpp): listing them with their file names and input hashes, the
+// The runs of a study (study/runner.hpp): listing them with their file names and input hashes, the
 // per-run locks, and running them as `workbench run` processes. Shared by the local runner, the
 // shards and the MPI task farm, so every way of running a study resumes and locks the same way.
 #include <sys/types.h>
@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "workbench/app/study.hpp"
 #include "workbench/scenario/study.hpp"
+#include "workbench/study/runner.hpp"
 
-namespace rb::app::study_detail {
+namespace rb::study::detail {
 
 // FNV-1a 64 over length-prefixed fields: no two different field lists give the same byte stream.
 class Hasher {
@@ -129,14 +129,14 @@ struct StudyPlan {
   int jobs = 1;  // runs at once on this runner
 };
 
-// (app/study.cpp) Lists the runs of `st` in the folder o.out (created with its .locks). Throws
+// (study/runner.cpp) Lists the runs of `st` in the folder o.out (created with its .locks). Throws
 // InputError when the folder cannot be created.
 void makePlan(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& plan);
 
-// (app/study.cpp) Writes the summaries of `plan` (under the folder's summary lock) and draws the
-// figures (plotArgs; none when empty); returns the study's exit code (app/study.hpp). `skipped`:
+// (study/runner.cpp) Writes the summaries of `plan` (under the folder's summary lock) and draws the
+// figures (plotArgs; none when empty); returns the study's exit code (study/runner.hpp). `skipped`:
 // how many runs this runner found held by another runner.
 int summarizeStudy(const scenario::StudySpec& st, const StudyOptions& o, StudyPlan& plan,
                    const std::vector<std::string>& plotArgs, std::size_t skipped);
 
-}  // namespace rb::app::study_detail
+}  // namespace rb::study::detail

@@ -14,7 +14,7 @@ namespace rb::scenario {
 class LuaMetrics;
 }
 
-namespace rb::app::study_detail {
+namespace rb::study::detail {
 
 // Hex hash of the metric definitions (and, with a function metric, of the study file's text,
 // where the function is written).
@@ -52,4 +52,4 @@ bool storeCaseMetrics(const scenario::StudySpec& st, const scenario::StudyCase& 
 std::vector<io::MetricRecord> summaryMetrics(MetricContext& ctx, const scenario::StudyCase& c,
                                              const std::string& h5, const std::string& referenceH5);
 
-}  // namespace rb::app::study_detail
+}  // namespace rb::study::detail
