@@ -861,8 +861,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   out.costs = stageCosts(ode->stageClock(), out.result.stats);
   writeRunStats(f, out.effects, out.costs);
   writeWarnings(f, out.warnings);
-  f.flush();
-  return out;
+  return out;  // the caller's finalize() writes what is buffered
 }
 
 std::string writeProvenance(const Model& c, io::ResultFile& f, const std::string& created,
