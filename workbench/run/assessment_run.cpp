@@ -71,32 +71,34 @@ WheelSafety wheelSafety(const WheelSignals& w, const AssessmentSignals& sig,
   const double dt = sig.dt;
   r.s = ownDistance(sig, w.s_offset);
   const std::vector<double>& s = r.s;
-  r.y_over_q = a14::derailmentQuotient(w.Y, w.Q, s, dt, spec.yq_limit);
+  // Y and Q filtered once for every quantity of the wheel.
+  a14::FilteredWheelForces f = a14::filterWheelForces(w.Y, w.Q, dt);
+  r.y_over_q = a14::derailmentQuotient(f, s, spec.yq_limit);
   r.nadal_limit = a14::nadalLimit(spec.flange_angle, mu);
   r.nadal_mu = mu;
   r.yq = assessed(r.y_over_q.check, "-", std::string(kEn14363) + ": (Y/Q)_2m, 2 m sliding mean",
                   wheelName(w), positionOfMaxAbs(r.y_over_q.series));
-  r.y_filtered = a14::lowPassForce(w.Y, dt);
-  r.q_filtered = a14::lowPassForce(w.Q, dt);
-  const std::vector<double>& qf = r.q_filtered;
+  const std::vector<double>& qf = f.Q;
   r.dq_series.resize(qf.size());
   std::size_t kmax = 0;
   for (std::size_t k = 0; k < qf.size(); ++k) {
     r.dq_series[k] = (w.q0 - qf[k]) / w.q0;
     if (r.dq_series[k] > r.dq_series[kmax]) kmax = k;
   }
-  r.dq = assessed(a14::wheelUnloading(w.Q, dt, w.q0), "-",
-                  std::string(kEn14363) + ": wheel unloading dQ/Q0", wheelName(w),
-                  qf.empty() ? std::numeric_limits<double>::quiet_NaN() : s[kmax]);
+  r.dq =
+      assessed(a14::wheelUnloading(f, w.q0), "-", std::string(kEn14363) + ": wheel unloading dQ/Q0",
+               wheelName(w), qf.empty() ? std::numeric_limits<double>::quiet_NaN() : s[kmax]);
   r.y_qst =
-      assessed(a14::quasiStaticGuidingForce(w.Y, dt), "N",
+      assessed(a14::quasiStaticGuidingForce(f), "N",
                std::string(kEn14363) + ": quasi-static guiding force Y_qst (50 %)", wheelName(w));
   r.q_qst =
-      assessed(a14::quasiStaticWheelForce(w.Q, dt), "N",
+      assessed(a14::quasiStaticWheelForce(f), "N",
                std::string(kEn14363) + ": quasi-static wheel force Q_qst (50 %)", wheelName(w));
-  r.q_max = assessed(a14::maximumWheelForce(w.Q, dt, w.q0), "N",
+  r.q_max = assessed(a14::maximumWheelForce(f, w.q0), "N",
                      std::string(kEn14363) + ": maximum wheel force Q (99.85 %), 90 kN + Q0",
                      wheelName(w));
+  r.y_filtered = std::move(f.Y);
+  r.q_filtered = std::move(f.Q);
   return r;
 }
 
