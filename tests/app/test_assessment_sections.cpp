@@ -7,8 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -342,8 +344,8 @@ TEST(ComfortBlocks, FewerThanTheStandardAsksForAreSaid) {
   p.name = "centre";
   for (const double t : s.time) {
     p.ax.push_back(0.0);
-    p.ay.push_back(0.3 * std::sin(2.0 * M_PI * 1.0 * t));
-    p.az.push_back(0.2 * std::sin(2.0 * M_PI * 3.0 * t));
+    p.ay.push_back(0.3 * std::sin(2.0 * std::numbers::pi * 1.0 * t));
+    p.az.push_back(0.2 * std::sin(2.0 * std::numbers::pi * 3.0 * t));
   }
   s.floor.push_back(std::move(p));
   rb::assessment::AssessmentSpec spec;
@@ -362,4 +364,43 @@ TEST(ComfortBlocks, FewerThanTheStandardAsksForAreSaid) {
   for (const auto& line : rb::run::summaryLines(r))
     printed = printed || line.find("indicative") != std::string::npos;
   EXPECT_TRUE(printed);
+}
+
+// The instability frequency of several bogie signals in one pass over the frequencies: the same
+// frequency, bit for bit, as the DFT of each series by std::complex.
+TEST(SpectrumPeak, SharedPassEqualsOneComplexDftPerSeries) {
+  constexpr double dt = 2.5e-3, f_low = 3.0, f_high = 9.0, df = 0.05;
+  std::vector<std::vector<double>> xs(3, std::vector<double>(4000));
+  for (std::size_t i = 0; i < xs.size(); ++i)
+    for (std::size_t k = 0; k < xs[i].size(); ++k) {
+      const double t = static_cast<double>(k) * dt;
+      xs[i][k] = std::sin(2.0 * std::numbers::pi * (4.1 + 1.3 * static_cast<double>(i)) * t) +
+                 0.3 * std::sin(2.0 * std::numbers::pi * 7.7 * t + static_cast<double>(i)) + 0.1;
+    }
+  const auto reference = [&](const std::vector<double>& x) {
+    double mean = 0.0;
+    for (const double v : x) mean += v;
+    mean /= static_cast<double>(x.size());
+    double best = -1.0, f_best = f_low;
+    for (double f = f_low; f <= f_high + 1e-9; f += df) {
+      const std::complex<double> step = std::polar(1.0, -2.0 * std::numbers::pi * f * dt);
+      std::complex<double> rot(1.0, 0.0), sum(0.0, 0.0);
+      for (const double v : x) {
+        sum += (v - mean) * rot;
+        rot *= step;
+      }
+      if (std::norm(sum) > best) {
+        best = std::norm(sum);
+        f_best = f;
+      }
+    }
+    return f_best;
+  };
+  const std::vector<double> peaks =
+      rb::run::spectrumPeaks({&xs[0], &xs[1], &xs[2]}, dt, f_low, f_high, df);
+  ASSERT_EQ(peaks.size(), xs.size());
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    EXPECT_EQ(peaks[i], reference(xs[i])) << "series " << i;
+    EXPECT_EQ(rb::run::spectrumPeak(xs[i], dt, f_low, f_high, df), peaks[i]) << "series " << i;
+  }
 }

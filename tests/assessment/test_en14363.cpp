@@ -130,3 +130,24 @@ TEST(Stability, FiresOnGrowingNotOnDecaying) {
 }
 
 }  // namespace
+
+// A wheel's forces filtered once give every quantity exactly as the raw series do.
+TEST(FilteredWheelForces, SameValuesAsTheRawSeries) {
+  const double dt = 2.5e-3;
+  std::vector<double> Y(2000), Q(2000), s(2000);
+  for (std::size_t i = 0; i < Y.size(); ++i) {
+    const double t = static_cast<double>(i) * dt;
+    Y[i] = 12e3 * std::sin(2.0 * std::numbers::pi * 1.7 * t) + 3e3 * std::sin(90.0 * t);
+    Q[i] = 60e3 + 9e3 * std::sin(2.0 * std::numbers::pi * 2.3 * t) + 2e3 * std::sin(170.0 * t);
+    s[i] = 20.0 * t;
+  }
+  const FilteredWheelForces f = filterWheelForces(Y, Q, dt);
+  const SlidingAssessment a = derailmentQuotient(Y, Q, s, dt), b = derailmentQuotient(f, s);
+  EXPECT_EQ(a.check.value, b.check.value);
+  EXPECT_EQ(a.series.value, b.series.value);
+  EXPECT_EQ(wheelUnloading(Q, dt, 62e3).value, wheelUnloading(f, 62e3).value);
+  EXPECT_EQ(quasiStaticGuidingForce(Y, dt).value, quasiStaticGuidingForce(f).value);
+  EXPECT_EQ(quasiStaticWheelForce(Q, dt).value, quasiStaticWheelForce(f).value);
+  EXPECT_EQ(maximumWheelForce(Q, dt, 62e3).value, maximumWheelForce(f, 62e3).value);
+  EXPECT_EQ(maximumWheelForce(Q, dt, 62e3).limit, maximumWheelForce(f, 62e3).limit);
+}

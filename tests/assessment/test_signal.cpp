@@ -2,7 +2,9 @@
 // windows, percentiles, block and trailing rms, and the Butterworth filters' corner gains.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
@@ -66,6 +68,28 @@ TEST(Percentile, LinearInterpolationDefinition7) {
   EXPECT_NEAR(percentile(x, 99.85), 4.994, 1e-12);  // h = 3.994
   EXPECT_NEAR(percentile(x, 0.15), 1.006, 1e-12);   // h = 0.006
   EXPECT_DOUBLE_EQ(maxAbs(std::vector<double>{-7.0, 2.0}), 7.0);
+}
+
+// The percentile selects its two order statistics instead of sorting: the same values, bit for
+// bit, as interpolating in the sorted series (ties and repeated values included).
+TEST(Percentile, SelectionEqualsTheSortedSeries) {
+  std::vector<double> x(997);
+  std::uint64_t state = 12345;
+  for (double& v : x) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    v = static_cast<double>(state >> 40) * 1e-3 - 8000.0;
+  }
+  for (std::size_t i = 0; i < x.size(); i += 7) x[i] = x[(i * 13) % x.size()];  // repeats
+  std::vector<double> sorted = x;
+  std::sort(sorted.begin(), sorted.end());
+  for (const double p : {0.0, 0.15, 1.0, 50.0, 95.0, 99.85, 100.0}) {
+    const double h = static_cast<double>(sorted.size() - 1) * p / 100.0;
+    const auto i = static_cast<std::size_t>(std::floor(h));
+    const double expected = i + 1 >= sorted.size() ? sorted.back()
+                                                   : sorted[i] + (h - static_cast<double>(i)) *
+                                                                     (sorted[i + 1] - sorted[i]);
+    EXPECT_EQ(percentile(x, p), expected) << "p = " << p;
+  }
 }
 
 TEST(BlockRms, SineBlocksAndTrailing) {

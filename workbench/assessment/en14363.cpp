@@ -46,13 +46,22 @@ double nadalLimit(double flange_angle, double mu) {
   return (t - mu) / (1.0 + mu * t);
 }
 
+FilteredWheelForces filterWheelForces(std::span<const double> Y, std::span<const double> Q,
+                                      double dt) {
+  RB_CHECK(Y.size() == Q.size(), "Y and Q differ in number of samples");
+  return {lowPassForce(Y, dt), lowPassForce(Q, dt)};
+}
+
+SlidingAssessment derailmentQuotient(const FilteredWheelForces& f, std::span<const double> s,
+                                     double limit) {
+  std::vector<double> ratio = f.Y;
+  for (std::size_t i = 0; i < ratio.size(); ++i) ratio[i] /= std::max(f.Q[i], kLiftedWheelForce);
+  return assessSliding(ratio, s, limit);
+}
+
 SlidingAssessment derailmentQuotient(std::span<const double> Y, std::span<const double> Q,
                                      std::span<const double> s, double dt, double limit) {
-  RB_CHECK(Y.size() == Q.size(), "Y and Q differ in number of samples");
-  std::vector<double> ratio = lowPassForce(Y, dt);
-  const std::vector<double> q = lowPassForce(Q, dt);
-  for (std::size_t i = 0; i < ratio.size(); ++i) ratio[i] /= std::max(q[i], kLiftedWheelForce);
-  return assessSliding(ratio, s, limit);
+  return derailmentQuotient(filterWheelForces(Y, Q, dt), s, limit);
 }
 
 double trackShiftLimit(double static_wheel_force, double alpha) {
@@ -69,12 +78,15 @@ SlidingAssessment trackShiftForce(std::span<const double> Y_left, std::span<cons
   return assessSliding(sum, s, trackShiftLimit(static_wheel_force, alpha));
 }
 
+Check wheelUnloading(const FilteredWheelForces& f, double static_wheel_force, double limit) {
+  RB_CHECK(static_wheel_force > 0.0 && !f.Q.empty(), "wheel unloading needs Q0 > 0 and samples");
+  const double q_min = *std::min_element(f.Q.begin(), f.Q.end());
+  return check((static_wheel_force - q_min) / static_wheel_force, limit);
+}
+
 Check wheelUnloading(std::span<const double> Q, double dt, double static_wheel_force,
                      double limit) {
-  RB_CHECK(static_wheel_force > 0.0 && !Q.empty(), "wheel unloading needs Q0 > 0 and samples");
-  const std::vector<double> q = lowPassForce(Q, dt);
-  const double q_min = *std::min_element(q.begin(), q.end());
-  return check((static_wheel_force - q_min) / static_wheel_force, limit);
+  return wheelUnloading(FilteredWheelForces{{}, lowPassForce(Q, dt)}, static_wheel_force, limit);
 }
 
 SectionValues sectionValues(std::span<const double> x, double dt) {
@@ -93,6 +105,18 @@ Check quasiStaticWheelForce(std::span<const double> Q, double dt, double limit) 
 
 Check maximumWheelForce(std::span<const double> Q, double dt, double static_wheel_force) {
   return check(sectionValues(Q, dt).upper, 90e3 + static_wheel_force);
+}
+
+Check quasiStaticGuidingForce(const FilteredWheelForces& f, double limit) {
+  return check(std::fabs(percentile(f.Y, kMedianPercentile)), limit);
+}
+
+Check quasiStaticWheelForce(const FilteredWheelForces& f, double limit) {
+  return check(percentile(f.Q, kMedianPercentile), limit);
+}
+
+Check maximumWheelForce(const FilteredWheelForces& f, double static_wheel_force) {
+  return check(percentile(f.Q, kUpperPercentile), 90e3 + static_wheel_force);
 }
 
 double bogieAccelerationLimit(double bogie_mass) {

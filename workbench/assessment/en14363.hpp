@@ -112,6 +112,22 @@ Check quasiStaticWheelForce(std::span<const double> Q, double dt,
 // Maximum vertical wheel force (99.85 % of the filtered Q) against Q_lim = 90 kN + Q0 [N].
 Check maximumWheelForce(std::span<const double> Q, double dt, double static_wheel_force);
 
+// A wheel's Y and Q low-pass filtered once (lowPassForce) for every quantity above that reads
+// them: the overloads taking it give the values of those taking the raw series and dt.
+struct FilteredWheelForces {
+  std::vector<double> Y, Q;  // [N]
+};
+FilteredWheelForces filterWheelForces(std::span<const double> Y, std::span<const double> Q,
+                                      double dt);
+SlidingAssessment derailmentQuotient(const FilteredWheelForces& f, std::span<const double> s,
+                                     double limit = kDerailmentQuotientLimit);
+Check wheelUnloading(const FilteredWheelForces& f, double static_wheel_force,
+                     double limit = kWheelUnloadingLimit);
+Check quasiStaticGuidingForce(const FilteredWheelForces& f,
+                              double limit = kQuasiStaticGuidingLimit);
+Check quasiStaticWheelForce(const FilteredWheelForces& f, double limit = kQuasiStaticWheelLimit);
+Check maximumWheelForce(const FilteredWheelForces& f, double static_wheel_force);
+
 // Limit of the sliding rms of the bogie-frame lateral acceleration, (12 - m+ / 5) / 2 [m/s^2]
 // with the bogie mass m+ in t (given here in kg).
 double bogieAccelerationLimit(double bogie_mass);

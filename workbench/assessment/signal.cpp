@@ -201,11 +201,15 @@ double percentile(std::span<const double> x, double p) {
   RB_CHECK(!x.empty(), "percentile of an empty series");
   RB_CHECK(p >= 0.0 && p <= 100.0, "percentile must lie in [0, 100]");
   std::vector<double> v(x.begin(), x.end());
-  std::sort(v.begin(), v.end());
   const double h = static_cast<double>(v.size() - 1) * p / 100.0;
   const auto i = static_cast<std::size_t>(std::floor(h));
-  if (i + 1 >= v.size()) return v.back();
-  return v[i] + (h - static_cast<double>(i)) * (v[i + 1] - v[i]);
+  // Only the order statistics x_(i) and x_(i+1) enter: a selection (O(n)) gives the very values
+  // a full sort (O(n log n)) would put there.
+  const auto at = v.begin() + static_cast<std::ptrdiff_t>(i);
+  std::nth_element(v.begin(), at, v.end());
+  if (i + 1 >= v.size()) return *at;
+  const double next = *std::min_element(at + 1, v.end());
+  return *at + (h - static_cast<double>(i)) * (next - *at);
 }
 
 double maxAbs(std::span<const double> x) {

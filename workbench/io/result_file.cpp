@@ -163,6 +163,8 @@ void ResultFile::remove(const std::string& path) {
   if (file_ < 0) fail("file already closed", path);
   const hid_t f = static_cast<hid_t>(file_);
   if (H5Lexists(f, path.c_str(), H5P_DEFAULT) <= 0) return;
+  // A group under the removed path must be looked up (or created) anew.
+  closeGroups();
   if (H5Ldelete(f, path.c_str(), H5P_DEFAULT) < 0) fail("cannot remove", path);
 }
 
@@ -170,9 +172,15 @@ ResultFile::~ResultFile() {
   if (!finalized_) discard();
 }
 
+void ResultFile::closeGroups() noexcept {
+  for (const auto& [path, g] : groups_) H5Gclose(static_cast<hid_t>(g));
+  groups_.clear();
+}
+
 void ResultFile::closeAll() noexcept {
   for (auto& s : series_) H5Dclose(static_cast<hid_t>(s->dataset_));
   series_.clear();
+  closeGroups();
   if (file_ >= 0) H5Fclose(static_cast<hid_t>(file_));
   file_ = -1;
 }
@@ -185,40 +193,52 @@ void ResultFile::discard() noexcept {
 
 std::int64_t ResultFile::group(const std::string& path) {
   if (file_ < 0) fail("file already closed", path);
-  const hid_t f = static_cast<hid_t>(file_);
-  if (path.empty() || path == "/") {
-    const hid_t g = H5Gopen2(f, "/", H5P_DEFAULT);
+  const std::string key = path.empty() ? "/" : path;
+  if (const auto it = groups_.find(key); it != groups_.end()) return it->second;
+  hid_t g = -1;
+  if (key == "/") {
+    g = H5Gopen2(static_cast<hid_t>(file_), "/", H5P_DEFAULT);
     if (g < 0) fail("cannot open group", path);
-    return g;
+  } else {
+    // The parent first (created when missing), then the group in it: each level is looked up
+    // once, and each new group gets dense attribute storage.
+    std::string leaf;
+    const hid_t parent = static_cast<hid_t>(parentGroup(key, leaf));
+    if (H5Lexists(parent, leaf.c_str(), H5P_DEFAULT) > 0) {
+      g = H5Gopen2(parent, leaf.c_str(), H5P_DEFAULT);
+      if (g < 0) fail("cannot open group", path);
+    } else {
+      Handle gcpl(H5Pcreate(H5P_GROUP_CREATE), H5Pclose);
+      if (!gcpl.ok() || H5Pset_attr_phase_change(gcpl.get(), 0, 0) < 0)
+        fail("cannot create group", path);
+      g = H5Gcreate2(parent, leaf.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT);
+      if (g < 0) fail("cannot create group", path);
+    }
   }
-  const htri_t exists = H5Lexists(f, path.c_str(), H5P_DEFAULT);
-  if (exists > 0) {
-    const hid_t g = H5Gopen2(f, path.c_str(), H5P_DEFAULT);
-    if (g < 0) fail("cannot open group", path);
-    return g;
-  }
-  // Intermediate groups are created one level at a time so each gets dense attribute storage.
-  const auto slash = path.find_last_of('/');
-  if (slash != 0 && slash != std::string::npos)
-    H5Gclose(static_cast<hid_t>(group(path.substr(0, slash))));
-  Handle gcpl(H5Pcreate(H5P_GROUP_CREATE), H5Pclose);
-  if (!gcpl.ok() || H5Pset_attr_phase_change(gcpl.get(), 0, 0) < 0)
-    fail("cannot create group", path);
-  const hid_t g = H5Gcreate2(f, path.c_str(), H5P_DEFAULT, gcpl.get(), H5P_DEFAULT);
-  if (g < 0) fail("cannot create group", path);
+  groups_.emplace(key, g);
   return g;
 }
 
+std::int64_t ResultFile::parentGroup(const std::string& path, std::string& leaf) {
+  const auto slash = path.find_last_of('/');
+  if (slash == std::string::npos) {
+    leaf = path;
+    return group("/");
+  }
+  leaf = path.substr(slash + 1);
+  return group(slash == 0 ? std::string("/") : path.substr(0, slash));
+}
+
 void ResultFile::attr(const std::string& grp, const std::string& name, const std::string& value) {
-  Handle g(static_cast<hid_t>(group(grp)), H5Gclose);
+  const hid_t g = static_cast<hid_t>(group(grp));
   Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
   Handle space(H5Screate(H5S_SCALAR), H5Sclose);
   if (!type.ok() || !space.ok() || H5Tset_size(type.get(), value.empty() ? 1 : value.size()) < 0 ||
       H5Tset_strpad(type.get(), H5T_STR_NULLPAD) < 0 || H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
     fail("cannot write attribute", name);
-  if (H5Aexists(g.get(), name.c_str()) > 0 && H5Adelete(g.get(), name.c_str()) < 0)
+  if (H5Aexists(g, name.c_str()) > 0 && H5Adelete(g, name.c_str()) < 0)
     fail("cannot replace attribute", name);
-  Handle a(H5Acreate2(g.get(), name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+  Handle a(H5Acreate2(g, name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
            H5Aclose);
   const char* data = value.empty() ? "" : value.c_str();
   if (!a.ok() || H5Awrite(a.get(), type.get(), data) < 0) fail("cannot write attribute", name);
@@ -246,14 +266,12 @@ bool writeUnits(hid_t obj, const std::string& units) {
 }  // namespace
 
 void ResultFile::attr(const std::string& grp, const std::string& name, double value) {
-  Handle g(static_cast<hid_t>(group(grp)), H5Gclose);
-  if (!writeScalarAttr(g.get(), name, H5T_NATIVE_DOUBLE, value))
+  if (!writeScalarAttr(static_cast<hid_t>(group(grp)), name, H5T_NATIVE_DOUBLE, value))
     fail("cannot write attribute", name);
 }
 
 void ResultFile::attr(const std::string& grp, const std::string& name, std::int64_t value) {
-  Handle g(static_cast<hid_t>(group(grp)), H5Gclose);
-  if (!writeScalarAttr(g.get(), name, H5T_NATIVE_INT64, value))
+  if (!writeScalarAttr(static_cast<hid_t>(group(grp)), name, H5T_NATIVE_INT64, value))
     fail("cannot write attribute", name);
 }
 
@@ -268,14 +286,13 @@ void ResultFile::dataset2d(const std::string& path, std::size_t rows, std::size_
   const int rank = cols == 0 ? 1 : 2;
   if (data.size() != rows * (cols == 0 ? 1 : cols))
     throw std::logic_error("result file: data of the wrong size for '" + path + "'");
-  const auto slash = path.find_last_of('/');
-  if (slash != 0 && slash != std::string::npos)
-    H5Gclose(static_cast<hid_t>(group(path.substr(0, slash))));
+  std::string leaf;
+  const hid_t parent = static_cast<hid_t>(parentGroup(path, leaf));
   hsize_t dims[2] = {rows, cols};
   Handle space(H5Screate_simple(rank, dims, nullptr), H5Sclose);
   if (!space.ok()) fail("cannot create dataset", path);
-  Handle d(H5Dcreate2(static_cast<hid_t>(file_), path.c_str(), H5T_NATIVE_DOUBLE, space.get(),
-                      H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+  Handle d(H5Dcreate2(parent, leaf.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT,
+                      H5P_DEFAULT, H5P_DEFAULT),
            H5Dclose);
   if (!d.ok()) fail("cannot create dataset", path);
   if (!data.empty() &&
@@ -285,9 +302,8 @@ void ResultFile::dataset2d(const std::string& path, std::size_t rows, std::size_
 }
 
 void ResultFile::stringDataset(const std::string& path, const std::vector<std::string>& values) {
-  const auto slash = path.find_last_of('/');
-  if (slash != 0 && slash != std::string::npos)
-    H5Gclose(static_cast<hid_t>(group(path.substr(0, slash))));
+  std::string leaf;
+  const hid_t parent = static_cast<hid_t>(parentGroup(path, leaf));
   std::size_t width = 1;
   for (const auto& v : values) width = std::max(width, v.size());
   std::string packed(width * values.size(), '\0');
@@ -299,8 +315,8 @@ void ResultFile::stringDataset(const std::string& path, const std::vector<std::s
   if (!type.ok() || !space.ok() || H5Tset_size(type.get(), width) < 0 ||
       H5Tset_strpad(type.get(), H5T_STR_NULLPAD) < 0 || H5Tset_cset(type.get(), H5T_CSET_UTF8) < 0)
     fail("cannot create dataset", path);
-  Handle d(H5Dcreate2(static_cast<hid_t>(file_), path.c_str(), type.get(), space.get(), H5P_DEFAULT,
-                      H5P_DEFAULT, H5P_DEFAULT),
+  Handle d(H5Dcreate2(parent, leaf.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT,
+                      H5P_DEFAULT),
            H5Dclose);
   if (!d.ok()) fail("cannot create dataset", path);
   if (!values.empty() &&
@@ -309,9 +325,8 @@ void ResultFile::stringDataset(const std::string& path, const std::vector<std::s
 }
 
 Series& ResultFile::series(const std::string& path, const std::string& units) {
-  const auto slash = path.find_last_of('/');
-  if (slash != 0 && slash != std::string::npos)
-    H5Gclose(static_cast<hid_t>(group(path.substr(0, slash))));
+  std::string leaf;
+  const hid_t parent = static_cast<hid_t>(parentGroup(path, leaf));
   hsize_t zero = 0, unlimited = H5S_UNLIMITED, chunk = kChunk;
   Handle space(H5Screate_simple(1, &zero, &unlimited), H5Sclose);
   Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
@@ -320,8 +335,8 @@ Series& ResultFile::series(const std::string& path, const std::string& units) {
   if (storage_ == Storage::Compact && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0 &&
       (H5Pset_shuffle(dcpl.get()) < 0 || H5Pset_deflate(dcpl.get(), kCompactDeflate) < 0))
     fail("cannot set the compression of dataset", path);
-  const hid_t d = H5Dcreate2(static_cast<hid_t>(file_), path.c_str(), H5T_NATIVE_DOUBLE,
-                             space.get(), H5P_DEFAULT, dcpl.get(), H5P_DEFAULT);
+  const hid_t d = H5Dcreate2(parent, leaf.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT,
+                             dcpl.get(), H5P_DEFAULT);
   if (d < 0) fail("cannot create dataset", path);
   series_.push_back(std::unique_ptr<Series>(new Series(d)));
   if (!writeUnits(d, units)) fail("cannot write units of", path);
@@ -353,7 +368,10 @@ void ResultFile::flush() {
 
 void ResultFile::finalize() {
   if (finalized_) return;
-  flush();
+  if (file_ < 0) fail("file already closed", tmp_);
+  // The buffered series data only: closing the file below flushes everything (and fails when
+  // that fails), so a flush of the file's metadata here would write it twice.
+  for (auto& s : series_) flushSeries(*s);
   for (auto& s : series_) {
     if (H5Dclose(static_cast<hid_t>(s->dataset_)) < 0) {
       s->dataset_ = -1;
@@ -361,6 +379,7 @@ void ResultFile::finalize() {
     }
   }
   series_.clear();
+  closeGroups();
   const herr_t rc = H5Fclose(static_cast<hid_t>(file_));
   file_ = -1;
   if (rc < 0) fail("cannot close", tmp_);

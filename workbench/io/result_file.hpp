@@ -12,6 +12,8 @@
 // the temporary is deleted. Time series are appendable and flushed in chunks so a run that fails
 // keeps everything written so far (its caller finalizes it with /stats/status = "failed").
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -96,7 +98,12 @@ class ResultFile {
   bool finalized() const { return finalized_; }
 
  private:
-  std::int64_t group(const std::string& path);  // opens or creates; caller closes
+  // Opens or creates the group (with its missing parents); the handle stays open in groups_
+  // until the file is closed, so the caller does not close it.
+  std::int64_t group(const std::string& path);
+  // The group holding `path` ("/a/b/c" -> "/a/b", "/c" -> "/") and the name in it ("c").
+  std::int64_t parentGroup(const std::string& path, std::string& leaf);
+  void closeGroups() noexcept;
   void flushSeries(Series& s);
   void closeAll() noexcept;
   [[noreturn]] void fail(const std::string& what, const std::string& name);
@@ -106,6 +113,9 @@ class ResultFile {
   bool finalized_ = false;
   Storage storage_ = Storage::Plain;
   std::vector<std::unique_ptr<Series>> series_;
+  // The groups opened so far, by path: a result has hundreds of datasets in a few dozen groups,
+  // and looking a group up again walks the path through the file's group structure each time.
+  std::map<std::string, std::int64_t, std::less<>> groups_;
 };
 
 }  // namespace rb::io

@@ -10,6 +10,7 @@
 
 #include "workbench/assessment/signal.hpp"
 #include "workbench/assessment/sperling.hpp"
+#include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
 
 namespace rb::run {
@@ -70,32 +71,34 @@ WheelSafety wheelSafety(const WheelSignals& w, const AssessmentSignals& sig,
   const double dt = sig.dt;
   r.s = ownDistance(sig, w.s_offset);
   const std::vector<double>& s = r.s;
-  r.y_over_q = a14::derailmentQuotient(w.Y, w.Q, s, dt, spec.yq_limit);
+  // Y and Q filtered once for every quantity of the wheel.
+  a14::FilteredWheelForces f = a14::filterWheelForces(w.Y, w.Q, dt);
+  r.y_over_q = a14::derailmentQuotient(f, s, spec.yq_limit);
   r.nadal_limit = a14::nadalLimit(spec.flange_angle, mu);
   r.nadal_mu = mu;
   r.yq = assessed(r.y_over_q.check, "-", std::string(kEn14363) + ": (Y/Q)_2m, 2 m sliding mean",
                   wheelName(w), positionOfMaxAbs(r.y_over_q.series));
-  r.y_filtered = a14::lowPassForce(w.Y, dt);
-  r.q_filtered = a14::lowPassForce(w.Q, dt);
-  const std::vector<double>& qf = r.q_filtered;
+  const std::vector<double>& qf = f.Q;
   r.dq_series.resize(qf.size());
   std::size_t kmax = 0;
   for (std::size_t k = 0; k < qf.size(); ++k) {
     r.dq_series[k] = (w.q0 - qf[k]) / w.q0;
     if (r.dq_series[k] > r.dq_series[kmax]) kmax = k;
   }
-  r.dq = assessed(a14::wheelUnloading(w.Q, dt, w.q0), "-",
-                  std::string(kEn14363) + ": wheel unloading dQ/Q0", wheelName(w),
-                  qf.empty() ? std::numeric_limits<double>::quiet_NaN() : s[kmax]);
+  r.dq =
+      assessed(a14::wheelUnloading(f, w.q0), "-", std::string(kEn14363) + ": wheel unloading dQ/Q0",
+               wheelName(w), qf.empty() ? std::numeric_limits<double>::quiet_NaN() : s[kmax]);
   r.y_qst =
-      assessed(a14::quasiStaticGuidingForce(w.Y, dt), "N",
+      assessed(a14::quasiStaticGuidingForce(f), "N",
                std::string(kEn14363) + ": quasi-static guiding force Y_qst (50 %)", wheelName(w));
   r.q_qst =
-      assessed(a14::quasiStaticWheelForce(w.Q, dt), "N",
+      assessed(a14::quasiStaticWheelForce(f), "N",
                std::string(kEn14363) + ": quasi-static wheel force Q_qst (50 %)", wheelName(w));
-  r.q_max = assessed(a14::maximumWheelForce(w.Q, dt, w.q0), "N",
+  r.q_max = assessed(a14::maximumWheelForce(f, w.q0), "N",
                      std::string(kEn14363) + ": maximum wheel force Q (99.85 %), 90 kN + Q0",
                      wheelName(w));
+  r.y_filtered = std::move(f.Y);
+  r.q_filtered = std::move(f.Q);
   return r;
 }
 
@@ -267,12 +270,15 @@ void assessSafety(const AssessmentSignals& sig, const assessment::AssessmentSpec
       [&](const SummaryItem& a, const SummaryItem& b) { return rank(a.key) < rank(b.key); });
 }
 
-// f0 of one bogie: the scenario's, or the spectrum peak of its (first) frame signal.
-double instabilityFrequency(const BogiePointSignals& b, double dt,
-                            const assessment::AssessmentSpec& spec) {
-  if (spec.instability_frequency > 0.0) return spec.instability_frequency;
-  const double nyquist = 0.5 / dt;
-  return spectrumPeak(b.ay, dt, kF0Low, std::min(kF0High, 0.8 * nyquist), kF0Step);
+// f0 of every bogie point: the scenario's, or the spectrum peak of its frame signal.
+std::vector<double> instabilityFrequencies(const AssessmentSignals& sig,
+                                           const assessment::AssessmentSpec& spec) {
+  if (spec.instability_frequency > 0.0)
+    return std::vector<double>(sig.bogies.size(), spec.instability_frequency);
+  std::vector<const std::vector<double>*> signals;
+  for (const auto& b : sig.bogies) signals.push_back(&b.ay);
+  const double nyquist = 0.5 / sig.dt;
+  return spectrumPeaks(signals, sig.dt, kF0Low, std::min(kF0High, 0.8 * nyquist), kF0Step);
 }
 
 void assessStability(const AssessmentSignals& sig, const assessment::AssessmentSpec& spec,
@@ -284,12 +290,14 @@ void assessStability(const AssessmentSignals& sig, const assessment::AssessmentS
     r.spec.stability = false;
     return;
   }
-  for (const auto& b : sig.bogies) {
+  const std::vector<double> f0 = instabilityFrequencies(sig, spec);
+  for (std::size_t k = 0; k < sig.bogies.size(); ++k) {
+    const BogiePointSignals& b = sig.bogies[k];
     StabilityResult s;
     s.bogie = b.bogie;
     s.wheelset = b.wheelset;
     s.bogie_mass = b.bogie_mass;
-    s.f0 = instabilityFrequency(b, sig.dt, spec);
+    s.f0 = f0[k];
     s.st = a14::stability(b.ay, ownDistance(sig, b.s_offset), sig.dt, s.f0, b.bogie_mass);
     s.a = assessed(s.st.check, "m/s^2",
                    std::string(kEn14363) +
@@ -582,21 +590,51 @@ void writeAssessment(io::ResultFile& f, const AssessmentSignals& sig, const Asse
 
 double spectrumPeak(const std::vector<double>& x, double dt, double f_low, double f_high,
                     double df) {
-  double mean = 0.0;
-  for (const double v : x) mean += v;
-  mean /= static_cast<double>(std::max<std::size_t>(x.size(), 1));
-  double best = -1.0, f_best = f_low;
+  return spectrumPeaks({&x}, dt, f_low, f_high, df).front();
+}
+
+std::vector<double> spectrumPeaks(const std::vector<const std::vector<double>*>& xs, double dt,
+                                  double f_low, double f_high, double df) {
+  const std::size_t m = xs.size();
+  const std::size_t n = m == 0 ? 0 : xs.front()->size();
+  // The series with their means removed, once (not at every frequency), interleaved sample by
+  // sample: centred[k m + i] is sample k of series i.
+  std::vector<double> centred(n * m);
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::vector<double>& x = *xs[i];
+    RB_CHECK(x.size() == n, "spectrum series differ in length");
+    double mean = 0.0;
+    for (const double v : x) mean += v;
+    mean /= static_cast<double>(std::max<std::size_t>(n, 1));
+    for (std::size_t k = 0; k < n; ++k) centred[k * m + i] = x[k] - mean;
+  }
+  std::vector<double> best(m, -1.0), f_best(m, f_low), re(m), im(m);
   for (double f = f_low; f <= f_high + 1e-9; f += df) {
-    // One DFT bin by the recurrence of exp(-j w k dt) (no trigonometry per sample).
+    // One DFT bin by the recurrence rot_k = exp(-j w k dt) (no trigonometry per sample), shared
+    // by the series (they have one sampling interval). Written out in real arithmetic: the very
+    // operations of std::complex's products and sums of finite values (the signals are checked
+    // finite), without its branch for infinite operands.
     const std::complex<double> step = std::polar(1.0, -2.0 * std::numbers::pi * f * dt);
-    std::complex<double> rot(1.0, 0.0), sum(0.0, 0.0);
-    for (const double v : x) {
-      sum += (v - mean) * rot;
-      rot *= step;
+    const double c = step.real(), d = step.imag();
+    double a = 1.0, b = 0.0;  // rot
+    std::fill(re.begin(), re.end(), 0.0);
+    std::fill(im.begin(), im.end(), 0.0);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double* v = &centred[k * m];
+      for (std::size_t i = 0; i < m; ++i) {
+        re[i] += v[i] * a;
+        im[i] += v[i] * b;
+      }
+      const double a_next = a * c - b * d;
+      b = a * d + b * c;
+      a = a_next;
     }
-    if (std::norm(sum) > best) {
-      best = std::norm(sum);
-      f_best = f;
+    for (std::size_t i = 0; i < m; ++i) {
+      const double power = re[i] * re[i] + im[i] * im[i];
+      if (power > best[i]) {
+        best[i] = power;
+        f_best[i] = f;
+      }
     }
   }
   return f_best;

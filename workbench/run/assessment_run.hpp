@@ -171,5 +171,9 @@ AssessmentSignals signalsFromFile(const io::ResultReader& file,
 // the instability frequency f0 of the stability criterion when the scenario gives none.
 double spectrumPeak(const std::vector<double>& x, double dt, double f_low, double f_high,
                     double df);
+// spectrumPeak of each of several series of one sampling interval, in one pass over the
+// frequencies: the same values as one call per series.
+std::vector<double> spectrumPeaks(const std::vector<const std::vector<double>*>& xs, double dt,
+                                  double f_low, double f_high, double df);
 
 }  // namespace rb::run

@@ -1,5 +1,6 @@
 #include "workbench/run/simulate.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -10,21 +11,31 @@
 namespace rb::run {
 namespace {
 
-constexpr std::size_t kFlushSamples = io::kSeriesChunk;  // output times between flushes
-constexpr double kFlushSeconds = 10.0;                   // [s] wall time between flushes at most
+// Output data buffered in memory before it is written (at most, unless one chunk of every series
+// is more): every flush writes each series and the file's metadata, so its cost grows with the
+// number of flushes times the number of series, not with the data.
+constexpr std::size_t kFlushBytes = std::size_t{32} << 20;
+constexpr double kFlushSeconds = 10.0;  // [s] wall time between flushes at most
 
 double wallNow() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// Keeps results on disk as the run goes, by data volume (every kFlushSamples output times:
-// whole HDF5 chunks, so no chunk is rewritten, and the same work in every run of a scene, which
-// keeps callgrind counts reproducible) and at least every kFlushSeconds of wall time.
+// Keeps results on disk as the run goes, by data volume (about kFlushBytes of buffered output, in
+// whole HDF5 chunks of every series, so no chunk is rewritten, and the same work in every run of
+// a scene, which keeps callgrind counts reproducible) and at least every kFlushSeconds of wall
+// time.
 struct Flusher {
+  explicit Flusher(std::size_t series) {
+    const std::size_t chunkRow =
+        io::kSeriesChunk * sizeof(double) * std::max<std::size_t>(series, 1);
+    every = io::kSeriesChunk * std::max<std::size_t>(1, kFlushBytes / chunkRow);
+  }
+  std::size_t every = io::kSeriesChunk;  // output times between flushes by volume
   double last = wallNow();
   std::size_t unflushed = 0;  // output times appended since the last flush
   void appended(io::ResultFile& f) {
-    if (++unflushed < kFlushSamples && wallNow() - last <= kFlushSeconds) return;
+    if (++unflushed < every && wallNow() - last <= kFlushSeconds) return;
     f.flush();
     last = wallNow();
     unflushed = 0;
@@ -101,7 +112,7 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
   for (const auto& o : r.outputs) series.push_back(&f.series(o.path, o.units));
   RB_CHECK(r.outputs.empty() || r.sample, "output channels need a sampler");
   std::vector<double> values(r.outputs.size());
-  Flusher flusher;
+  Flusher flusher(series.size() + 1);  // with /time
   double start = wallNow();
   double lastDistance = 0.0;
 
@@ -130,9 +141,6 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
     t_written = t;
     for (std::size_t i = 0; i < series.size(); ++i) series[i]->append(values[i]);
     if (r.distance) lastDistance = r.distance(t, y);
-    // Keep results on disk as the run goes, by data volume (every kFlushSamples output times:
-    // whole HDF5 chunks, so no chunk is rewritten, and the same work in every run of a scene,
-    // which keeps callgrind counts reproducible) and at least every kFlushSeconds of wall time.
     flusher.appended(f);
     return true;
   };

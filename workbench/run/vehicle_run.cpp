@@ -562,6 +562,21 @@ StaticWheelLoads staticWheelLoads(const Model& m) {
 
 namespace {
 
+// Room for every sample of a run to t_end (its count bounded by run.output.max_samples, see
+// checkSampling), so sampling appends without growing (copying) the signals.
+void reserveSamples(AssessmentSignals& sig, double t_end) {
+  const auto n = static_cast<std::size_t>(std::ceil(t_end / sig.dt - 1e-9)) + 1;
+  const auto reserve = [n](std::vector<double>& v) { v.reserve(n); };
+  reserve(sig.time);
+  reserve(sig.distance);
+  for (auto& w : sig.wheels)
+    for (auto* v : {&w.Y, &w.Q, &w.y_track, &w.t_gamma[0], &w.t_gamma[1], &w.power[0], &w.power[1]})
+      reserve(*v);
+  for (auto& b : sig.bogies) reserve(b.ay);
+  for (auto& p : sig.floor)
+    for (auto* v : {&p.ax, &p.ay, &p.az}) reserve(*v);
+}
+
 AssessmentSetup setupAssessment(const Model& m, dynamics::ContactVehicleOde* contact,
                                 std::vector<std::string>& notes) {
   AssessmentSetup as;
@@ -576,6 +591,7 @@ AssessmentSetup setupAssessment(const Model& m, dynamics::ContactVehicleOde* con
   if (as.spec.safety) as.signals.sections = assessmentSections(m);
   if (as.spec.stability) addBogiePoints(m, as);
   if (as.spec.comfort) addFloorPoints(*m.vehicle, as);
+  reserveSamples(as.signals, m.t_end);
   return as;
 }
 
@@ -861,8 +877,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   out.costs = stageCosts(ode->stageClock(), out.result.stats);
   writeRunStats(f, out.effects, out.costs);
   writeWarnings(f, out.warnings);
-  f.flush();
-  return out;
+  return out;  // the caller's finalize() writes what is buffered
 }
 
 std::string writeProvenance(const Model& c, io::ResultFile& f, const std::string& created,
