@@ -363,3 +363,29 @@ TEST(Polach, PatchConstantsGiveTheSamePatchBitForBit) {
 }
 
 }  // namespace
+
+// K_M of a patch made from its PatchConstants (a/b = m/n, once per patch) against Polach's
+// K_M = 1 + 6.3 (1 - exp(-a/b)) from the patch's own semi-axes: equal to round-off, and the forces
+// with it equal to those of a hand-made patch (km = 0: K_M from a and b) to round-off.
+TEST(Polach, SpinFactorFromPatchConstants) {
+  const CreepParams cp = params();
+  for (const RelativeCurvatures k : {RelativeCurvatures{1.09, 3.3}, RelativeCurvatures{4.0, 0.6},
+                                     RelativeCurvatures{2.0, 2.0}}) {
+    const PatchConstants pc = patchConstants(kSteel, k, hertzShape(k.A, k.B));
+    for (double N : {3.7e4, 1.0e5}) {
+      const ContactPatch p = makeContactPatch(pc, N);
+      const double km = 1.0 + 6.3 * (1.0 - std::exp(-p.a / p.b));
+      EXPECT_EQ(p.km, pc.km);
+      EXPECT_NEAR(p.km, km, 4e-16 * km);
+      EXPECT_EQ(polachSpinFactor(p.a / p.b), km);
+      ContactPatch hand = p;
+      hand.km = 0.0;
+      for (const Creepages s :
+           {Creepages{1e-3, -2e-3, 0.5, 20.0}, Creepages{0.0, 1e-4, -2.0, 20.0}}) {
+        const CreepForce f = polachForce(cp, p, s), g = polachForce(cp, hand, s);
+        EXPECT_NEAR(f.fx, g.fx, 1e-12 * N);
+        EXPECT_NEAR(f.fy, g.fy, 1e-12 * N);
+      }
+    }
+  }
+}

@@ -63,6 +63,7 @@ PatchConstants patchConstants(const Material& mat, const RelativeCurvatures& k,
   pc.m = shape.m;
   pc.n = shape.n;
   pc.rolling_major = shape.rolling_major;
+  pc.km = polachSpinFactor(pc.rolling_major ? pc.m / pc.n : pc.n / pc.m);
   return pc;
 }
 
@@ -80,7 +81,12 @@ ContactPatch makeContactPatch(const PatchConstants& pc, double N) {
   patch.c22 = pc.c.c22;
   patch.c23 = pc.c.c23;
   patch.c33 = pc.c.c33;
+  patch.km = pc.km;
   return patch;
+}
+
+double polachSpinFactor(double a_over_b) {
+  return 1.0 + 6.3 * (1.0 - std::exp(-a_over_b));
 }
 
 double frictionCoefficient(const CreepParams& p, double slip_velocity) {
@@ -119,7 +125,7 @@ CreepForce polachForce(const CreepParams& p, const ContactPatch& patch, const Cr
 
   // Spin part.
   if (s.phi != 0.0) {
-    const double km = 1.0 + 6.3 * (1.0 - std::exp(-a / b));
+    const double km = patch.km > 0.0 ? patch.km : polachSpinFactor(a / b);
     const double eps_s =
         (8.0 / 3.0) * p.G * b * std::sqrt(a * b) * patch.c23 * std::fabs(syc) / (qmu * km);
     // eps_s / (1 + eps_s^2)^2, written to stay finite for any eps_s >= 0.

@@ -11,7 +11,7 @@
 //   C    = sqrt((c11 s_x / s)^2 + (c22 s_y / s)^2)                           (Kalker, kalker.hpp)
 //   eps  = pi G a b C s_C / (4 Q mu)                    (= (2/3) C_P pi a^2 b s_C / (Q mu))
 //   F    = (2 Q mu / pi) (k_A eps / (1 + (k_A eps)^2) + atan(k_S eps))     (1999: k_A = k_S = 1)
-//   K_M  = 1 + 6.3 (1 - exp(-a/b))
+//   K_M  = 1 + 6.3 (1 - exp(-a/b))                       (load-independent: a/b = m/n, hertz.hpp)
 //   eps_s = (8/3) G b sqrt(a b) c23 |s_yC| / (Q mu K_M)
 //   F_yS = (9/16) a Q mu K_M [eps_s (-d^3/3 + d^2/2 - 1/6) + (1 - d^2)^(3/2)/3] phi / s_C,
 //          d = (eps_s^2 - 1)/(eps_s^2 + 1)
@@ -83,7 +83,14 @@ struct ContactPatch {
   double c22 = 0.0;
   double c23 = 0.0;
   double c33 = 0.0;  // UNVERIFIED (kalker.hpp); only kalkerLinearForce() uses it
+  // Polach's spin factor K_M = polachSpinFactor(a / b) of the ellipse's shape, when the patch was
+  // made from its PatchConstants (makeContactPatch); 0: polachForce computes it from a and b.
+  double km = 0.0;
 };
+
+// Polach's (1999) spin factor K_M = 1 + 6.3 (1 - exp(-a/b)) for the semi-axis ratio a/b: a
+// function of the ellipse's shape alone, not of its load.
+double polachSpinFactor(double a_over_b);
 
 // Hertz ellipse (hertz.hpp) and Kalker coefficients (kalker.hpp) for normal force N. N <= 0 gives
 // a patch with Q = a = b = 0 (zero creep forces) and the coefficients of the load-independent
@@ -102,6 +109,10 @@ struct PatchConstants {
   double m = 1.0, n = 1.0;
   bool rolling_major = true;
   KalkerCoefficients c;
+  // polachSpinFactor(a/b) with a/b = m/n (rolling major) or n/m: Polach's exponential once per
+  // patch instead of once per force evaluation. The semi-axes' own ratio (m c0)/(n c0) can differ
+  // from m/n in the last bit, so K_M may differ from the one of a hand-made patch by an ulp.
+  double km = 1.0;
 };
 PatchConstants patchConstants(const Material& mat, const RelativeCurvatures& k,
                               const HertzShape& shape);
