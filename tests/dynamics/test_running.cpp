@@ -291,3 +291,72 @@ TEST(Running, LaggedAndConsistentNormalForces) {
 
 }  // namespace
 }  // namespace rbtest
+
+namespace rbtest {
+namespace {
+
+// The observer's evaluation of a step end served as the integrator's next right-hand side
+// (ContactVehicleOde::shareOutputEvaluations): the same trajectory and the same outputs bit for
+// bit as separate evaluations, one model evaluation fewer per observed state, and a state the
+// integrator does not evaluate next is evaluated afresh.
+TEST(Running, SharedOutputEvaluationChangesNoBit) {
+  for (const auto coupling :
+       {dynamics::NormalForceCoupling::Consistent, dynamics::NormalForceCoupling::Lagged}) {
+    dynamics::ContactSpec cs;
+    cs.method = dynamics::ContactMethod::Kec;
+    cs.normal_forces = coupling;
+    const Compiled c = compileSpecs(curveTrack(300, 5, 10, 20), loadedWheelset(10.0, 1e5), cs);
+    auto observed = [&](bool share) {
+      dynamics::ContactVehicleOde ode(*c.vehicle, *c.contact, *c.track);
+      ode.shareOutputEvaluations(share);
+      Eigen::VectorXd y0 = ode.initialState(0.0);
+      y0[ode.layout().wsPosition(0, 0)] = 1e-3;
+      auto integrator = integ::makeIntegrator(solverSpec("abm", 5e-4));
+      std::vector<double> times;
+      for (int k = 1; k <= 400; ++k) times.push_back(k * 2.5e-3);
+      std::vector<double> out;
+      std::vector<dynamics::WheelOutput> wheels(2);
+      std::vector<vehicle::Vector6d> qdd(c.vehicle->bodies.size());
+      const long before = ode.stats().evaluations;
+      const integ::RunResult r = integ::integrate(
+          ode, *integrator, 0.0, y0, times, [&](double t, const Eigen::VectorXd& y) {
+            EXPECT_EQ(ode.outputs(t, y.data(), wheels, qdd), 0);
+            for (const auto& w : wheels) out.push_back(w.patch[0].normal);
+            for (const auto& w : wheels) out.push_back(w.patch[0].fy);
+            out.push_back(qdd[0][vehicle::kY]);
+            for (int i = 0; i < y.size(); ++i) out.push_back(y[i]);
+            return true;
+          });
+      EXPECT_TRUE(r.ok) << r.message;
+      return std::make_tuple(out, ode.stats().evaluations - before, ode.stats().shared_evaluations,
+                             r.stats.rhs_evals);
+    };
+    const auto [plain, plain_evals, plain_shared, plain_rhs] = observed(false);
+    const auto [shared, shared_evals, shared_count, shared_rhs] = observed(true);
+    EXPECT_EQ(plain, shared);  // every output and state, bit for bit
+    EXPECT_EQ(plain_rhs, shared_rhs);
+    EXPECT_EQ(plain_shared, 0);
+    EXPECT_EQ(shared_count, 400);  // the 401 observed states but the last (no step follows it)
+    EXPECT_EQ(plain_evals - shared_evals, 400);
+  }
+
+  // A state the integrator does not evaluate next: rhs evaluates it afresh.
+  dynamics::ContactSpec cs;
+  const Compiled c = compileSpecs(curveTrack(300, 5, 10, 20), loadedWheelset(10.0, 1e5), cs);
+  dynamics::ContactVehicleOde ode(*c.vehicle, *c.contact, *c.track);
+  ode.shareOutputEvaluations(true);
+  const Eigen::VectorXd y0 = ode.initialState(0.0);
+  std::vector<dynamics::WheelOutput> wheels(2);
+  std::vector<vehicle::Vector6d> qdd(c.vehicle->bodies.size());
+  ASSERT_EQ(ode.outputs(0.0, y0.data(), wheels, qdd), 0);
+  Eigen::VectorXd other = y0;
+  other[ode.layout().wsPosition(0, 0)] += 1e-4;
+  Eigen::VectorXd ydot(y0.size());
+  const long before = ode.stats().evaluations;
+  ASSERT_EQ(ode.rhs(1e-3, other.data(), ydot.data()), 0);
+  EXPECT_EQ(ode.stats().evaluations - before, 1);
+  EXPECT_EQ(ode.stats().shared_evaluations, 0);
+}
+
+}  // namespace
+}  // namespace rbtest

@@ -99,7 +99,7 @@ inline int wheelsetStages(const ContactModels& models, const StageInput& in, int
     if (const int rc = checkSolution(models, in, ww, x, work); rc != 0) return rc;
     writeWheelsetRates(models.layout, w, in.y, x, ydot);
     if (const int rc = checkWheelLift<kMethod>(models, in, ww, work, lift); rc != 0) return rc;
-    if (in.mode == EvalMode::Output) {
+    if (fillsOutputs(in.mode)) {
       wheelsetOutputs(in, w, ww, x, Law::kCreep, kMethod == ContactMethod::Lut, work);
       contactPositions(models, ww, w, work);
     }

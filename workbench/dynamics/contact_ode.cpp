@@ -1,5 +1,8 @@
 #include "workbench/dynamics/contact_ode.hpp"
 
+#include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <limits>
 #include <sstream>
 
@@ -44,6 +47,8 @@ ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
   ContactWorkspace& work = *work_;
   work.bodies = vehicle::makeWorkspace(vehicle);
   work.scratch.assign(static_cast<std::size_t>(layout_.size), 0.0);
+  work.next_y.assign(static_cast<std::size_t>(layout_.size), 0.0);
+  work.next_ydot.assign(static_cast<std::size_t>(layout_.size), 0.0);
   work.wheelsets.resize(static_cast<std::size_t>(layout_.n_ws));
   work.wheels.resize(2 * static_cast<std::size_t>(layout_.n_ws));
   work.qdd.assign(vehicle.bodies.size(), vehicle::Vector6d::Zero());
@@ -110,12 +115,38 @@ void ContactVehicleOde::resetStats() {
   work_->stats = {};
 }
 
+namespace {
+
+// The same bits, not merely close values: anything else is another state.
+bool sameState(double t, const double* y, double t_kept, const std::vector<double>& y_kept) {
+  const auto same = [](double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+  };
+  return same(t, t_kept) && std::equal(y_kept.begin(), y_kept.end(), y, same);
+}
+
+}  // namespace
+
 int ContactVehicleOde::rhs(double t, const double* y, double* ydot) {
-  return (this->*eval_)(t, y, ydot, EvalMode::Rhs);
+  internal::ContactWorkspace& work = *work_;
+  if (work.next_valid && sameState(t, y, work.next_t, work.next_y)) {
+    // Evaluated already, as this very call, by the observer of the state (outputs()).
+    work.next_valid = false;
+    ++work.stats.shared_evaluations;
+    std::copy(work.next_ydot.begin(), work.next_ydot.end(), ydot);
+    return 0;
+  }
+  return evaluate(t, y, ydot, EvalMode::Rhs);
 }
 
 int ContactVehicleOde::evaluate(double t, const double* y, double* ydot, EvalMode mode) {
+  work_->next_valid = false;  // any evaluation moves the memory the kept rhs was made with
   return (this->*eval_)(t, y, ydot, mode);
+}
+
+void ContactVehicleOde::shareOutputEvaluations(bool on) {
+  share_outputs_ = on;
+  work_->next_valid = false;
 }
 
 int ContactVehicleOde::setCoordinates(double t, const double* y) {
@@ -240,11 +271,28 @@ int ContactVehicleOde::wheelOutputs(double t, const double* y, std::span<WheelOu
 
 int ContactVehicleOde::outputs(double t, const double* y, std::span<WheelOutput> wheels,
                                std::span<vehicle::Vector6d> qdd) {
-  const int rc = evaluate(t, y, work_->scratch.data(), EvalMode::Output);
+  internal::ContactWorkspace& work = *work_;
+  int rc = 1;
+  if (share_outputs_ && !(work.next_valid && sameState(t, y, work.next_t, work.next_y))) {
+    // The integrator's next right-hand side, at this state, made now and kept for it (rhs()).
+    rc = evaluate(t, y, work.next_ydot.data(), EvalMode::RhsOutput);
+    if (rc == 0) {
+      work.next_valid = true;
+      work.next_t = t;
+      std::copy(y, y + work.next_y.size(), work.next_y.begin());
+    }
+  }
+  // A state whose rhs fails (a lifted wheel, a derailment) gets its outputs as before, and the
+  // integrator's own call reports the failure; a state evaluated already keeps its rhs.
+  if (rc != 0) {
+    const bool kept = work.next_valid;
+    rc = (this->*eval_)(t, y, work.scratch.data(), EvalMode::Output);
+    work.next_valid = kept;
+  }
   if (rc != 0) return rc;
-  for (std::size_t i = 0; i < wheels.size() && i < work_->wheels.size(); ++i)
-    wheels[i] = work_->wheels[i];
-  for (std::size_t b = 0; b < qdd.size() && b < work_->qdd.size(); ++b) qdd[b] = work_->qdd[b];
+  for (std::size_t i = 0; i < wheels.size() && i < work.wheels.size(); ++i)
+    wheels[i] = work.wheels[i];
+  for (std::size_t b = 0; b < qdd.size() && b < work.qdd.size(); ++b) qdd[b] = work.qdd[b];
   return 0;
 }
 

@@ -131,6 +131,7 @@ struct WheelOutput {
 // Work counters (since construction or resetStats()).
 struct ContactStats {
   long evaluations = 0;            // model evaluations (rhs and outputs)
+  long shared_evaluations = 0;     // rhs calls served by the observer's evaluation (outputs())
   long kec_iterations = 0;         // Newton iterations of solveKec, summed
   long consistent_solves = 0;      // wheelset solves with NormalForceCoupling::Consistent
   long consistent_iterations = 0;  // fixed-point iterations, summed over those solves
@@ -176,8 +177,17 @@ class ContactVehicleOde final : public vehicle::VehicleOde {
   // wheelsets z and roll are the constraint accelerations (G qddot = gamma).
   int bodyAccelerations(double t, const double* y, std::span<vehicle::Vector6d> qdd) override;
   // wheelOutputs and bodyAccelerations from one evaluation (the same values as the two calls).
+  // With shareOutputEvaluations on, that evaluation is also the integrator's next right-hand side
+  // at (t, y) (see there).
   int outputs(double t, const double* y, std::span<WheelOutput> wheels,
               std::span<vehicle::Vector6d> qdd);
+  // For a fixed-step integrator observed at its step ends: its next rhs call is at the observed
+  // state (RK4's and ABM's first evaluation of a step), so outputs() evaluates that rhs there and
+  // then, for the observer, and rhs() returns it (the same bits: the same memory, the same
+  // warm-started solves) instead of evaluating the state a second time. A state the integrator
+  // does not evaluate next must not be observed this way: its rhs would move the normal-force
+  // memory where the integration never was. Off by default.
+  void shareOutputEvaluations(bool on);
   // Element values of a full evaluation at (t, y); NaN force and deflection when it fails.
   int elementOutputs(double t, const double* y, std::span<const vehicle::ElementId> ids,
                      std::span<vehicle::ElementValue> out) override;
@@ -205,6 +215,7 @@ class ContactVehicleOde final : public vehicle::VehicleOde {
   const track::Irregularities* irr_ = nullptr;
   std::unique_ptr<internal::ContactWorkspace> work_;
   EvalFn eval_ = nullptr;
+  bool share_outputs_ = false;
 };
 
 }  // namespace rb::dynamics

@@ -255,7 +255,7 @@ int freeBodyAccelerations(const ContactModels& models, const StageInput& in, dou
       return 1;
     }
     const Vec5 pdd = llt.solve(work.bodies.force[b].segment<5>(1) - mass.block<5, 1>(1, kS) * acc);
-    if (in.mode == EvalMode::Output) {
+    if (fillsOutputs(in.mode)) {
       work.qdd[b].setZero();
       work.qdd[b](kS) = acc;
       work.qdd[b].segment<5>(1) = pdd;

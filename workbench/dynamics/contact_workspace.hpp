@@ -28,8 +28,15 @@ using Vec7 = Eigen::Matrix<double, 7, 1>;
 
 // Rhs: a right-hand side for the integrator. Output: outputs at an accepted state (they do not
 // change what the integration sees). Init: the initial state (consistent normal forces even with
-// the Lagged coupling).
-enum class EvalMode { Rhs, Output, Init };
+// the Lagged coupling). RhsOutput: the integrator's next right-hand side, evaluated early for the
+// observer of the state it starts from: an Rhs evaluation in every respect (normal-force memory,
+// wheel-lift refusal, derailment) that also fills the outputs (ContactVehicleOde::outputs).
+enum class EvalMode { Rhs, Output, Init, RhsOutput };
+
+// Whether an evaluation in `mode` fills the wheel outputs and body accelerations.
+constexpr bool fillsOutputs(EvalMode mode) {
+  return mode == EvalMode::Output || mode == EvalMode::RhsOutput;
+}
 
 // What the stages read: the models (const for the whole run).
 struct ContactModels {
@@ -158,6 +165,11 @@ struct ContactWorkspace {
   std::vector<WheelOutput> wheels;      // [2w + side], filled by Output evaluations
   std::vector<vehicle::Vector6d> qdd;   // body accelerations of the last Output evaluation
   std::vector<double> scratch;          // ydot of output and initial-state evaluations
+  // The right-hand side of a RhsOutput evaluation at (next_t, next_y), kept for the integrator's
+  // next call (ContactVehicleOde::rhs) when it is at the same state, bit for bit.
+  bool next_valid = false;
+  double next_t = 0.0;
+  std::vector<double> next_y, next_ydot;
   ContactStats stats;
   std::string error;  // why the last evaluation failed
 
