@@ -408,11 +408,17 @@ def _observer_share(path: str) -> Optional[float]:
             cpu, wall = float(a["cpu_time_s"]), float(a["wall_time_s"])
             callbacks = float(a.get("callback_wall_time_s", 0.0))
             after = float(a.get("assessment_cpu_s", 0.0))
+            shared = float(a.get("shared_evaluations", 0.0))
+            evals = float(a.get("rhs_evals", 0.0)) + float(a.get("rhs_evals_jac", 0.0))
     except (OSError, KeyError, ValueError):
         return None
     if not (cpu > 0 and wall > 0):
         return None
     observer = callbacks * min(1.0, cpu / wall)
+    # The observer's evaluations that are the integrator's next right-hand sides
+    # (/stats/shared_evaluations) are integration, at the cost of the integrator's own ones.
+    if shared > 0 and evals > shared:
+        observer = max(0.0, observer - shared * (cpu - observer) / (evals - shared))
     return (observer + after) / (cpu + after)
 
 
@@ -478,8 +484,10 @@ def speed_block(outdir: str, study: str = "speed") -> str:
             "max |dy|: the largest difference of any wheelset's lateral displacement from the "
             "reference case over the whole run, for the cases of the reference's model." +
             (" Outputs + assessment: the integration's output callbacks (output evaluations, "
-             "assessment samples, writing) plus the assessment computed after the run, as a "
-             "share of the run's CPU (from each case's /stats)." if shares else "") + "\n\n")
+             "assessment samples, writing; less the evaluations that are the integrator's next "
+             "right-hand sides, `/stats/shared_evaluations`, at the integrator's cost per "
+             "evaluation) plus the assessment computed after the run, as a share of the run's "
+             "CPU (from each case's /stats)." if shares else "") + "\n\n")
     return note + table(head, body)
 
 
