@@ -216,8 +216,7 @@ int elasticWheelsetStages(const ContactModels& models, const StageInput& in, int
   if (const int rc = elasticAccelerations(models, in, ww, work, Q, qdd); rc != 0) return rc;
   if (ydot) writeElasticRates(models.layout, w, in.y, qdd, ydot);
   if (const int rc = checkDerailment(models, in, ww, work); rc != 0) return rc;
-  if (fillsOutputs(in.mode))
-    elasticWheelsetOutputs(models, in, w, ww, qdd, Law::kCreep, work);
+  if (fillsOutputs(in.mode)) elasticWheelsetOutputs(models, in, w, ww, qdd, Law::kCreep, work);
   if (clock) clock->mark(Stage::Checks);
   return 0;
 }
