@@ -1,11 +1,10 @@
 #include "workbench/dynamics/contact_ode.hpp"
 
 #include <algorithm>
-#include <bit>
-#include <cstdint>
 #include <limits>
 #include <sstream>
 
+#include "workbench/core/bits.hpp"
 #include "workbench/dynamics/contact_evaluate.hpp"
 #include "workbench/dynamics/contact_methods.hpp"
 #include "workbench/vehicle/equilibrium.hpp"
@@ -114,18 +113,6 @@ const ContactStats& ContactVehicleOde::stats() const {
 void ContactVehicleOde::resetStats() {
   work_->stats = {};
 }
-
-namespace {
-
-// The same bits, not merely close values: anything else is another state.
-bool sameState(double t, const double* y, double t_kept, const std::vector<double>& y_kept) {
-  const auto same = [](double a, double b) {
-    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-  };
-  return same(t, t_kept) && std::equal(y_kept.begin(), y_kept.end(), y, same);
-}
-
-}  // namespace
 
 int ContactVehicleOde::rhs(double t, const double* y, double* ydot) {
   internal::ContactWorkspace& work = *work_;
@@ -283,12 +270,9 @@ int ContactVehicleOde::outputs(double t, const double* y, std::span<WheelOutput>
     }
   }
   // A state whose rhs fails (a lifted wheel, a derailment) gets its outputs as before, and the
-  // integrator's own call reports the failure; a state evaluated already keeps its rhs.
-  if (rc != 0) {
-    const bool kept = work.next_valid;
-    rc = (this->*eval_)(t, y, work.scratch.data(), EvalMode::Output);
-    work.next_valid = kept;
-  }
+  // integrator's own call reports the failure. Not through evaluate(): a right-hand side kept for
+  // this very state stays kept (an Output evaluation leaves the memory as it is).
+  if (rc != 0) rc = (this->*eval_)(t, y, work.scratch.data(), EvalMode::Output);
   if (rc != 0) return rc;
   for (std::size_t i = 0; i < wheels.size() && i < work.wheels.size(); ++i)
     wheels[i] = work.wheels[i];

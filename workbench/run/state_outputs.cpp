@@ -1,9 +1,8 @@
 #include "workbench/run/state_outputs.hpp"
 
 #include <algorithm>
-#include <bit>
-#include <cstdint>
 
+#include "workbench/core/bits.hpp"
 #include "workbench/core/error.hpp"
 
 namespace rb::run {
@@ -16,11 +15,7 @@ StateOutputs::StateOutputs(vehicle::VehicleOde& ode, dynamics::ContactVehicleOde
       wheels_(contact ? 2 * contact->contact().wheelsets.size() : 0) {}
 
 void StateOutputs::at(double t, const double* y) {
-  // The same bits, not merely close values: anything else is another state.
-  const auto same = [](double a, double b) {
-    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-  };
-  if (valid_ && same(t, t_) && std::equal(y_.begin(), y_.end(), y, same)) return;
+  if (valid_ && sameState(t, y, t_, y_)) return;
   t_ = t;
   std::copy(y, y + y_.size(), y_.begin());
   valid_ = true;
