@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <optional>
+#include <memory>
 #include <sstream>
 
 #include "workbench/dynamics/contact_model.hpp"
@@ -124,6 +124,22 @@ void checkScenario(const RunOptions& options) {
   for (const auto& w : m.warnings) std::cerr << w << "\n";
 }
 
+std::unique_ptr<io::ResultFile> openResultFile(const std::string& out, bool compact) {
+  const SourceLoc cli{"<command line>", 0};
+  if (fs::path(out).has_parent_path()) {
+    std::error_code ec;
+    fs::create_directories(fs::path(out).parent_path(), ec);
+    if (ec)
+      throw InputError(cli, "--out: cannot create the folder of '" + out + "': " + ec.message());
+  }
+  try {
+    return std::make_unique<io::ResultFile>(
+        out, compact ? io::ResultFile::Storage::Compact : io::ResultFile::Storage::Plain);
+  } catch (const io::WriteError& e) {
+    throw InputError(cli, std::string("--out: ") + e.what());
+  }
+}
+
 int runScenario(const RunOptions& options) {
   // Everything that can be checked is checked before the result file exists: a run that does
   // not start never touches an earlier result.
@@ -135,23 +151,7 @@ int runScenario(const RunOptions& options) {
   const std::string out = defaultOut(options);
   checkOutputPath(out, c);
   checkTrackStore(options.track_store);
-  if (fs::path(out).has_parent_path()) {
-    std::error_code ec;
-    fs::create_directories(fs::path(out).parent_path(), ec);
-    if (ec)
-      throw InputError(SourceLoc{"<command line>", 0},
-                       "--out: cannot create the folder of '" + out + "': " + ec.message());
-  }
-
-  // A name the system refuses (too long, no permission) is found here, before anything ran:
-  // bad input (exit 1), like a folder that cannot be made.
-  std::optional<io::ResultFile> opened;
-  try {
-    opened.emplace(
-        out, options.compact ? io::ResultFile::Storage::Compact : io::ResultFile::Storage::Plain);
-  } catch (const io::WriteError& e) {
-    throw InputError(SourceLoc{"<command line>", 0}, std::string("--out: ") + e.what());
-  }
+  const std::unique_ptr<io::ResultFile> opened = openResultFile(out, options.compact);
   io::ResultFile& f = *opened;
   const std::string stored = run::writeProvenance(c, f, isoNow(), options.track_store);
   if (options.compact) f.attr("/", "compact", std::string(kCompactOmits));

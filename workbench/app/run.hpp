@@ -1,8 +1,13 @@
 #pragma once
 // What `workbench run` and `workbench check` do, separated from argument parsing so that tests
 // can drive them.
+#include <memory>
 #include <string>
 #include <vector>
+
+namespace rb::io {
+class ResultFile;
+}
 
 namespace rb::app {
 
@@ -33,5 +38,11 @@ inline constexpr const char* kCompactOmits =
 void checkScenario(const RunOptions& options);
 // Runs the scenario and writes the result. Returns the process exit code (0 ok, 2 run failed).
 int runScenario(const RunOptions& options);
+
+// The result file `out` opened for writing (compact: Storage::Compact), its folder created first:
+// a folder that cannot be made or a name the system refuses (too long, no permission) is bad
+// input (InputError naming --out), found before anything runs, so an earlier result stays as it
+// was.
+std::unique_ptr<io::ResultFile> openResultFile(const std::string& out, bool compact = false);
 
 }  // namespace rb::app

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <optional>
+#include <memory>
 
 #include "railbench/version.hpp"
 #include "workbench/contact/derived.hpp"
@@ -102,21 +102,9 @@ int buildTables(const RunOptions& o) {
 
   std::string out =
       o.out.empty() ? "out/" + fs::path(o.scenario).stem().string() + "_tables.h5" : o.out;
-  // The place to write is checked before the tables are built: a folder that cannot be made or a
-  // name the system refuses is bad input (exit 1) and nothing was computed.
-  const SourceLoc cli{"<command line>", 0};
-  if (fs::path(out).has_parent_path()) {
-    std::error_code ec;
-    fs::create_directories(fs::path(out).parent_path(), ec);
-    if (ec)
-      throw InputError(cli, "--out: cannot create the folder of '" + out + "': " + ec.message());
-  }
-  std::optional<io::ResultFile> opened;
-  try {
-    opened.emplace(out);
-  } catch (const io::WriteError& e) {
-    throw InputError(cli, std::string("--out: ") + e.what());
-  }
+  // The place to write is checked before the tables are built: nothing is computed for a result
+  // that cannot be written.
+  const std::unique_ptr<io::ResultFile> opened = openResultFile(out);
   io::ResultFile& f = *opened;
 
   contact::LutTable lut = contact::buildLut(cfg);
