@@ -40,7 +40,7 @@ from typing import Dict, List, Optional
 
 from . import provenance
 from .common import parser
-from .docs_blocks import ROUTE, route_sections_block, assessment_cases_block, accuracy_block, bench_block, bench_integrators_block, effects_block, efficiency_block, fmt, missing, num, read_csv, paper_settings_block, refinement_block, replace_block, speed_block, default_run_block, table, work_precision_block
+from .docs_blocks import ROUTE, route_sections_block, assessment_cases_block, accuracy_block, bench_block, bench_integrators_block, effects_block, efficiency_block, fmt, missing, num, read_csv, paper_settings_block, refinement_block, replace_block, speed_block, default_run_block, march_block, table, work_precision_block
 from .docs_paper import PAPER_TABLES, flange_paper_block, paper_table_blocks, tables_9_10_block
 from .docs_stability import FOLDERS as STABILITY, stability_blocks
 from .docs_stress import stress_hard_block
@@ -61,7 +61,7 @@ BLOCK_SOURCES = {
     "paper_tables9_10": "refinement",
     **{f"paper_table{spec.no}": spec.study for spec in PAPER_TABLES}, "work_precision": "work_precision", "hard_cases": "hard",
     "hard_cases_detail": "hard", "effects": "effects", "speed": "speed", "default_scene": "default_scene",
-    "default_run": "default_run", "bench": "bench",
+    "default_run": "default_run", "march": "march", "bench": "bench",
     "paper_settings": "paper_settings", "paper_settings_flange": "paper_settings_flange",
     "bench_integrators": "bench_integrators",
     "validation_case1": "validation", "validation_case2": "validation",
@@ -216,6 +216,7 @@ def generate(outdir: str, build: str) -> Dict[str, Dict[str, str]]:
     blocks["performance.md"]["speed"] = speed_block(outdir)
     blocks["performance.md"]["default_scene"] = speed_block(outdir, "default_scene")
     blocks["performance.md"]["default_run"] = default_run_block(outdir)
+    blocks["performance.md"]["march"] = march_block(outdir)
     blocks["performance.md"]["bench"] = bench_block(outdir)
     for study in ("paper_settings", "paper_settings_flange"):
         blocks["performance.md"][study] = paper_settings_block(outdir, study)

@@ -743,7 +743,9 @@ def default_run_block(outdir: str) -> str:
     labels = {"figures": "`./wb run` (build check, simulation, result file, figures)",
               "no_figures": "`./wb run --no-plots` (build check, simulation, result file)",
               "cold_no_figures": "fresh clone, packages installed, no compiler cache: "
-                                 "`./wb run --no-plots` (configure, build the program, run)"}
+                                 "`./wb run --no-plots` (configure, build the program, run)",
+              "cold_no_pch": "the same without precompiled headers (configured with "
+                             "`-DRB_PCH=OFF` first)"}
     targets = {"figures": 8.0, "cold_no_figures": 240.0}
     body = []
     for what, label in labels.items():
@@ -756,9 +758,58 @@ def default_run_block(outdir: str) -> str:
         target = targets.get(what)
         verdict = "" if target is None else ("met" if median <= target and not failed
                                              else "NOT met")
+        cpus = sorted(num(r.get("cpu_s"), float("nan")) for r in mine if r.get("cpu_s"))
         body.append([label, str(len(walls)) + (f" ({failed} failed)" if failed else ""),
                      f"{median:.2f} s ({walls[0]:.2f}-{walls[-1]:.2f})",
+                     f"{cpus[len(cpus) // 2]:.0f} s" if cpus else "–",
                      fmt(target, "<= {:.0f} s"), verdict])
     return ("Wall time of the default scene as a user starts it (median and min-max of the "
-            "repeats):\n\n" +
-            table(["command", "repeats", "wall median (min-max)", "target", ""], body))
+            "repeats; CPU: user and system time of every process of the fresh clone's run, "
+            "the compiler's mostly):\n\n" +
+            table(["command", "repeats", "wall median (min-max)", "CPU", "target", ""], body))
+
+
+# ---- the instruction set -----------------------------------------------------------------------
+
+def march_block(outdir: str) -> str:
+    """The default scene from the portable build and from a build for this machine's instruction
+    set (`./wb studies --only march`, bench/march.py): CPU, instructions, and how far the two
+    results drift apart."""
+    rows = read_csv(os.path.join(outdir, "march", "march.csv"))
+    if not rows:
+        return missing("out/studies/march/march.csv")
+    body = []
+    medians = {}
+    for build in ("portable", "native"):
+        mine = [r for r in rows if r["build"] == build and r["repeat"] != "callgrind"]
+        if not mine:
+            continue
+        cpus = sorted(num(r["cpu_s"], float("nan")) for r in mine)
+        failed = [r for r in mine if r["status"] != "ok"]
+        cg = [r for r in rows if r["build"] == build and r["repeat"] == "callgrind"]
+        instr = num(cg[0]["instructions"]) if cg else None
+        median = cpus[len(cpus) // 2]
+        medians[build] = (median, instr)
+        t_end = num(mine[0]["t_end_s"], float("nan"))
+        march = mine[0]["march"] or "compiler default (x86-64)"
+        body.append([build, f"`{march}`",
+                     f"{median:.3f} s ({cpus[0]:.3f}-{cpus[-1]:.3f})" +
+                     (f" ({len(failed)} failed)" if failed else ""),
+                     f"{t_end / median:.1f}x", mine[0]["evaluations"],
+                     fmt(instr / 1e9 if instr else None, "{:.2f} G"),
+                     fmt(num(mine[0].get("max_dy_mm")), "{:.2g}")])
+    out = ("The default scene (`scenarios/default/case3_kec_fast.lua`, every output and the "
+           "assessment) from the portable build and from a build for this machine "
+           f"({rows[0].get('cpu_model', 'unknown')}); CPU of the integration, median and min-max "
+           "of 5 runs one at a time; instructions of the whole program (start to written file, "
+           "contact tables cached) from one callgrind run; max |dy|: the largest difference of any "
+           "wheelset's lateral displacement from the portable build's result over the run.\n\n" +
+           table(["build", "-march", "CPU median (min-max)", "x real time", "evaluations",
+                  "instructions", "max |dy| vs portable [mm]"], body))
+    if "portable" in medians and "native" in medians:
+        (cp, ip), (cn, inn) = medians["portable"], medians["native"]
+        out += f"\n\nNative against portable: CPU x {cn / cp:.2f}"
+        if ip and inn:
+            out += f", instructions x {inn / ip:.2f}"
+        out += "."
+    return out

@@ -63,7 +63,7 @@ def test_blocks_replaced_between_markers():
                 "flange_accuracy", "refinement", "paper_tables9_10", "paper_table11",
                 "paper_table17", "paper_table18", "work_precision", "hard_cases",
                 "primary_yaw"]
-    blocks_p = ["speed", "default_scene", "default_run", "bench", "effects", "paper_settings",
+    blocks_p = ["speed", "default_scene", "default_run", "march", "bench", "effects", "paper_settings",
                 "paper_settings_flange", "study_throughput"]
     blocks_v = ["validation_case1", "validation_case2", "validation_case3", "validation_cost"]
     blocks_h = ["hard_cases_detail"]
@@ -101,7 +101,20 @@ def test_blocks_replaced_between_markers():
         f.write("what,repeat,wall_s,rc\nfigures,1,9.5,0\nfigures,2,7.5,0\nfigures,3,7.9,0\n"
                 "no_figures,1,2.0,0\nno_figures,2,2.2,1\n")
     with open(os.path.join(out, "default_run", "cold_run.csv"), "w") as f:
-        f.write("what,repeat,wall_s,rc\ncold_no_figures,1,250.5,0\n")
+        f.write("what,repeat,wall_s,rc,cpu_s\ncold_no_figures,1,250.5,0,410.0\n"
+                "cold_no_pch,1,330.0,0,560.0\n")
+    os.makedirs(os.path.join(out, "march"), exist_ok=True)
+    with open(os.path.join(out, "march", "march.csv"), "w") as f:
+        f.write("build,march,repeat,cpu_s,t_end_s,x_real_time,evaluations,instructions,"
+                "max_dy_mm,status,cpu_model\n"
+                "portable,,1,0.7,24.5,35,41195,,,ok,CPU X\n"
+                "portable,,2,0.6,24.5,40.8,41195,,,ok,CPU X\n"
+                "portable,,3,0.65,24.5,37.7,41195,,,ok,CPU X\n"
+                "portable,,callgrind,,,,,5000000000,,ok,CPU X\n"
+                "native,native,1,0.5,24.5,49,41226,,1e-6,ok,CPU X\n"
+                "native,native,2,0.55,24.5,44.5,41226,,1e-6,ok,CPU X\n"
+                "native,native,3,0.6,24.5,40.8,41226,,1e-6,ok,CPU X\n"
+                "native,native,callgrind,,,,,4000000000,1e-6,ok,CPU X\n")
     rc = update_docs([out, "--build", os.path.join(TMP, "nobuild"), "--docs", docs])
     check(rc == 0, "update_docs returns 0")
     s = open(os.path.join(docs, "studies.md")).read()
@@ -117,11 +130,19 @@ def test_blocks_replaced_between_markers():
     check("| 41,234 | 80,900 |" in speed and "instructions / eval (abc1234)" in speed,
           "instructions per evaluation of this build and of the earlier one, named by its tag")
     run = p.split("generated: default_run")[1].split("end: default_run")[0]
-    check("| 3 | 7.90 s (7.50-9.50) | <= 8 s | met |" in run,
+    check("| 3 | 7.90 s (7.50-9.50) | – | <= 8 s | met |" in run,
           "./wb run: the median of the repeats against the 8 s target")
     check("| 2 (1 failed) | 2.20 s (2.00-2.20) |" in run, "./wb run: a failed repeat is counted")
-    check("| 1 | 250.50 s (250.50-250.50) | <= 240 s | NOT met |" in run,
+    check("| 1 | 250.50 s (250.50-250.50) | 410 s | <= 240 s | NOT met |" in run,
           "the fresh clone's first run against its 4 minute target")
+    check("`-DRB_PCH=OFF` first) | 1 | 330.00 s (330.00-330.00) | 560 s |" in run,
+          "the fresh clone without precompiled headers, with its CPU")
+    march = p.split("generated: march")[1].split("end: march")[0]
+    check("| portable | `compiler default (x86-64)` | 0.650 s (0.600-0.700) | 37.7x | 41195 | "
+          "5.00 G | – |" in march, "march: the portable build's median CPU and instructions")
+    check("| native | `native` | 0.550 s (0.500-0.600) | 44.5x | 41226 | 4.00 G | 1e-06 |"
+          in march, "march: the native build with its drift from the portable result")
+    check("CPU x 0.85, instructions x 0.80" in march, "march: the ratios native / portable")
     check("Not generated" in p.split("generated: default_scene")[1].split("end: default_scene")[0],
           "the default scene's missing study gives a 'Not generated' line")
     ps = p.split("generated: paper_settings ")[1].split("end: paper_settings ")[0]

@@ -1,5 +1,6 @@
 // Track irregularities (paper Fig. 3): PSDs, synthesis statistics, reproducibility, rail relations.
 #include <gtest/gtest.h>
+#include <algorithm>
 
 #include <cmath>
 #include <complex>
@@ -411,6 +412,44 @@ TEST(Samples, ArraysConsistent) {
   EXPECT_GT(s.psd_cross_level.back(), 0.0);
   EXPECT_NEAR(s.psd_vertical[57],
               spectrumPsd(Spectrum::OreB176Low, Channel::Vertical, s.psd_omega[57]), 1e-20);
+}
+
+// A run writes the stretch its vehicle covers: the samples inside it and one beyond on either
+// side, the same values as the whole track's; segments and the target PSD whole.
+TEST(Samples, StretchIsTheWholeTracksSamplesInside) {
+  TrackSpec t = rbtest::paperCase2(0.1);
+  t.irregularities = psdSpec("ore_b176_low");
+  const TrackModel m = compileTrack(t);
+  const TrackSamples all = sampleTrack(m);
+  const TrackSamples part = sampleTrack(m, 120.25, 140.0);
+  ASSERT_FALSE(part.s.empty());
+  EXPECT_LT(part.s.front(), 120.25);
+  EXPECT_GE(part.s[1], 120.25);
+  EXPECT_GT(part.s.back(), 140.0);
+  EXPECT_LE(part.s[part.s.size() - 2], 140.0);
+  const auto k0 = static_cast<std::size_t>(std::find(all.s.begin(), all.s.end(), part.s.front()) -
+                                           all.s.begin());
+  ASSERT_LT(k0 + part.s.size(), all.s.size());
+  for (std::size_t k = 0; k < part.s.size(); ++k) {
+    EXPECT_EQ(part.s[k], all.s[k0 + k]);
+    EXPECT_EQ(part.y[k], all.y[k0 + k]);
+    EXPECT_EQ(part.cant[k], all.cant[k0 + k]);
+  }
+  ASSERT_FALSE(part.irr_s.empty());
+  EXPECT_LT(part.irr_s.front(), 120.25);
+  EXPECT_GT(part.irr_s.back(), 140.0);
+  EXPECT_GE(part.irr_s[1], 120.25);
+  EXPECT_LE(part.irr_s[part.irr_s.size() - 2], 140.0);
+  const auto i0 = static_cast<std::size_t>(
+      std::find(all.irr_s.begin(), all.irr_s.end(), part.irr_s.front()) - all.irr_s.begin());
+  for (std::size_t i = 0; i < part.irr_s.size(); ++i) {
+    EXPECT_EQ(part.vertical[i], all.vertical[i0 + i]);
+    EXPECT_EQ(part.left_y[i], all.left_y[i0 + i]);
+  }
+  EXPECT_EQ(part.seg_start, all.seg_start);
+  EXPECT_EQ(part.psd_omega.size(), all.psd_omega.size());
+  // A stretch beyond the track: the last sample only.
+  EXPECT_EQ(sampleTrack(m, 600.0, 700.0).s.size(), 1u);
 }
 
 }  // namespace

@@ -101,7 +101,7 @@ class Fnv128 {
 
 TrackContent trackContent(const track::TrackSpec& spec, const track::TrackSamples& t) {
   Builder f;
-  f.attr("/track", "length", t.s.empty() ? 0.0 : t.s.back());
+  f.attr("/track", "length", t.length);
   f.attr("/track", "step", spec.step);
   f.attr("/track", "cant_base", spec.cant_base);
   f.attr("/track", "gauge", spec.gauge);

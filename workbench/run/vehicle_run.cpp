@@ -914,7 +914,17 @@ std::string writeProvenance(const Model& c, io::ResultFile& f, const std::string
   }
   f.attr("/", "effects", join(effects, "\n"));
   f.attr("/", "seeds", seeds);
-  const io::TrackContent track = io::trackContent(c.spec.track, track::sampleTrack(*c.track));
+  // A result file holds the stretch the vehicle covers, from its rearmost body at the start to
+  // its leading body at the end; a track store holds the whole track, which the cases of a study
+  // share whatever stretch each covers (and a model without a vehicle writes it whole too).
+  double s_from = -std::numeric_limits<double>::infinity();
+  double s_to = std::numeric_limits<double>::infinity();
+  if (track_store.empty() && c.vehicle && c.t_end > 0.0) {
+    s_from = c.vehicle->start + c.trailingX();
+    s_to = c.vehicle->start + c.leadingX() + c.vehicle->travel(c.t_end);
+  }
+  const io::TrackContent track =
+      io::trackContent(c.spec.track, track::sampleTrack(*c.track, s_from, s_to));
   std::string note;
   if (track_store.empty()) {
     io::writeTrackContent(f, track);

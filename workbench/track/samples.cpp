@@ -1,14 +1,35 @@
 #include "workbench/track/samples.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace rb::track {
 
-TrackSamples sampleTrack(const TrackModel& model) {
+namespace {
+
+// The index range [first, last) of the sorted samples `s` inside [s_from, s_to], widened by one
+// sample on either side where there is one.
+std::pair<std::size_t, std::size_t> stretch(const std::vector<double>& s, double s_from,
+                                            double s_to) {
+  auto lo = static_cast<std::size_t>(std::lower_bound(s.begin(), s.end(), s_from) - s.begin());
+  auto hi = static_cast<std::size_t>(std::upper_bound(s.begin(), s.end(), s_to) - s.begin());
+  if (lo > 0) --lo;
+  if (hi < s.size()) ++hi;
+  return {lo, std::max(lo, hi)};
+}
+
+}  // namespace
+
+TrackSamples sampleTrack(const TrackModel& model, double s_from, double s_to) {
   TrackSamples out;
   const TrackGeometry& g = model.geometry();
-  for (const double s : g.knots().knots()) {
+  out.length = g.length();
+  const std::vector<double>& knots = g.knots().knots();
+  const auto [k0, k1] = stretch(knots, s_from, s_to);
+  for (std::size_t k = k0; k < k1; ++k) {
+    const double s = knots[k];
     const TrackFrame f = g.at(s);
     out.s.push_back(s);
     out.x.push_back(f.R.x());
@@ -29,7 +50,10 @@ TrackSamples sampleTrack(const TrackModel& model) {
     out.seg_cant.push_back(sg.cant);
   }
   if (const auto& irr = model.irregularities()) {
-    for (const double s : irr->samples().s) {
+    const std::vector<double>& irr_s = irr->samples().s;
+    const auto [i0, i1] = stretch(irr_s, s_from, s_to);
+    for (std::size_t i = i0; i < i1; ++i) {
+      const double s = irr_s[i];
       const IrregularityPoint p = irr->at(s);
       out.irr_s.push_back(s);
       out.alignment.push_back(p.xi[static_cast<std::size_t>(Channel::Alignment)]);

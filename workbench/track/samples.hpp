@@ -1,6 +1,7 @@
 #pragma once
 // Plain arrays describing a compiled track, for the output file (/track) and plots. SI units;
 // angles in rad; sign conventions of geometry.hpp (positive curvature and signed cant = left).
+#include <limits>
 #include <vector>
 
 #include "workbench/track/track.hpp"
@@ -8,6 +9,8 @@
 namespace rb::track {
 
 struct TrackSamples {
+  double length = 0.0;  // [m] of the whole track, also when the samples cover a stretch of it
+
   // Centreline at the preprocessor knots (spline values, i.e. what the simulation uses).
   std::vector<double> s, x, y, z;                  // [m]
   std::vector<double> heading, slope, cant_angle;  // [rad] psi, theta, phi
@@ -35,6 +38,12 @@ struct TrackSamples {
 
 inline constexpr int kPsdSamplePoints = 200;
 
-TrackSamples sampleTrack(const TrackModel& model);
+// The whole track, or the stretch [s_from, s_to] of it (a run writes the stretch its vehicle
+// covers): the centreline knots and irregularity samples inside it and the nearest one outside
+// on either side, so interpolating the written samples covers the stretch. Segments and the
+// target PSD are written whole.
+TrackSamples sampleTrack(const TrackModel& model,
+                         double s_from = -std::numeric_limits<double>::infinity(),
+                         double s_to = std::numeric_limits<double>::infinity());
 
 }  // namespace rb::track
