@@ -169,6 +169,9 @@ def fig_rolling_radius(t: Tables):
             for a in axs:
                 a.axvline(ty * 1e3, color="#d00000", lw=0.8, ls=(0, (4, 2)), zorder=1)
         if tps:
+            # The title above the two-line labels of the top axis (the report style does not move
+            # titles by itself).
+            a1.set_title(a1.get_title(loc="left"), loc="left", pad=26)
             top = a1.secondary_xaxis("top")
             top.set_xticks([ty * 1e3 for ty, _ in tps])
             top.set_xticklabels([f"two-point ({'left' if s > 0 else 'right'} wheel)\n"
