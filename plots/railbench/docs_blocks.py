@@ -805,7 +805,7 @@ def march_block(outdir: str) -> str:
            "contact tables cached) from one callgrind run; max |dy|: the largest difference of any "
            "wheelset's lateral displacement from the portable build's result over the run.\n\n" +
            table(["build", "-march", "CPU median (min-max)", "x real time", "evaluations",
-                  "instructions", "max |dy| vs portable [mm]"], body))
+                  "instructions", "max \\|dy\\| vs portable [mm]"], body))
     if "portable" in medians and "native" in medians:
         (cp, ip), (cn, inn) = medians["portable"], medians["native"]
         out += f"\n\nNative against portable: CPU x {cn / cp:.2f}"
