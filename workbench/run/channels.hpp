@@ -12,6 +12,7 @@
 
 #include "workbench/core/names.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
+#include "workbench/io/schema.hpp"
 
 namespace rb::run {
 
@@ -27,7 +28,7 @@ constexpr const auto& nameTable(ContactRegime /*tag*/) {
   return kContactRegimeNames;
 }
 
-// The /schema/enums attribute of the regime's codes.
+// The /schema/enums attribute of the regime's codes (io::codesOf<ContactRegime>()).
 inline constexpr std::string_view kRegimeEnum = "contact_regime";
 
 // One quantity of an output struct In: dataset name, SI unit ("-" dimensionless), what it is,

@@ -202,6 +202,16 @@ void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
   }
 }
 
+// /schema/series: /time and every output channel, before the run so that the partial file of a
+// failed run has it too.
+void writeSeriesSchema(const std::vector<OutputChannel>& outputs, bool contact, io::ResultFile& f) {
+  std::vector<io::SchemaEntry> rows = {{"/time", "s", "output time", ""}};
+  for (const auto& o : outputs) rows.push_back({o.path, o.units, o.meaning, o.codes});
+  std::vector<std::pair<std::string, std::string>> enums;
+  if (contact) enums.emplace_back(kRegimeEnum, io::codesOf<ContactRegime>());
+  io::writeSchema(f, "series", rows, enums);
+}
+
 // Per-patch values (kPatchChannels order); returns the next output slot.
 double* samplePatch(const dynamics::PatchOutput& p, double* out) {
   for (const auto& c : kPatchChannels) *out++ = p.active ? c.get(p) : 0.0;
@@ -731,6 +741,8 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   addVehicleChannels(m, f, r.outputs);
   if (contact) addContactChannels(m, f, r.outputs);
 
+  writeSeriesSchema(r.outputs, contact != nullptr, f);
+
   const bool acc = m.spec.run.body_accelerations;
   std::vector<Vector6d> q(nb);
   std::vector<Eigen::Vector3d> a(nb);
@@ -827,6 +839,8 @@ std::string writeProvenance(const Model& c, io::ResultFile& f, const std::string
   f.attr("/", "effects", join(effects, "\n"));
   f.attr("/", "seeds", seeds);
   const io::TrackContent track = io::trackContent(c.spec.track, track::sampleTrack(*c.track));
+  // With a track store the rows describe the /track datasets of the store file.
+  io::writeSchema(f, "track", io::trackSchema(track), io::trackEnums());
   std::string note;
   if (track_store.empty()) {
     io::writeTrackContent(f, track);
