@@ -9,8 +9,58 @@ from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
-from .style import CHANNELS, KINEMATIC_KINDS
+from .style import KINEMATIC_KINDS
 from .h5 import ResultFileError, open_h5, _attrs, _read_ds, _str
+
+
+@dataclass
+class Schema:
+    """The layout the file states in /schema (architecture.md, "Output layout"): per dataset its
+    unit, meaning and the name of its codes; per code-valued quantity its code -> name table.
+    Empty for files written before /schema existed."""
+    units: Dict[str, str] = field(default_factory=dict)       # dataset path -> unit
+    meaning: Dict[str, str] = field(default_factory=dict)     # dataset path -> what it is
+    codes: Dict[str, str] = field(default_factory=dict)       # dataset path -> enum name
+    enums: Dict[str, Dict[int, str]] = field(default_factory=dict)  # enum name -> {code: name}
+
+    def names(self, enum: str) -> Dict[int, str]:
+        return self.enums.get(enum, {})
+
+    def children(self, group: str) -> List[str]:
+        """Names of the datasets directly under `group`, in the order the schema lists them."""
+        pre = group.rstrip("/") + "/"
+        return [p[len(pre):] for p in self.units if p.startswith(pre) and "/" not in p[len(pre):]]
+
+
+def parse_codes(text) -> Dict[int, str]:
+    """"0=tangent,1=transition" -> {0: "tangent", 1: "transition"} (an enum attribute)."""
+    out = {}
+    for item in _str(text).split(","):
+        code, sep, name = item.partition("=")
+        if sep and code.strip().lstrip("-").isdigit():
+            out[int(code)] = name.strip()
+    return out
+
+
+def _read_schema(f) -> Schema:
+    import h5py
+    sc = Schema()
+    g = f.get("schema")
+    if not isinstance(g, h5py.Group):
+        return sc
+    for part, t in g.items():
+        if part == "enums" or not isinstance(t, h5py.Group) or "path" not in t:
+            continue
+        cols = {k: [_str(x) for x in t[k][()]] if k in t else [] for k in
+                ("path", "unit", "meaning", "codes")}
+        for i, p in enumerate(cols["path"]):
+            sc.units[p] = cols["unit"][i] if i < len(cols["unit"]) else ""
+            sc.meaning[p] = cols["meaning"][i] if i < len(cols["meaning"]) else ""
+            if i < len(cols["codes"]) and cols["codes"][i]:
+                sc.codes[p] = cols["codes"][i]
+    if isinstance(g.get("enums"), h5py.Group):
+        sc.enums = {k: parse_codes(v) for k, v in g["enums"].attrs.items()}
+    return sc
 
 
 @dataclass
@@ -18,6 +68,16 @@ class Track:
     attrs: Dict[str, object]
     centreline: Dict[str, np.ndarray]  # s x y z heading slope cant_angle curvature cant
     segments: Dict[str, np.ndarray]    # start length kind radius side cant
+    kinds: Dict[int, str] = field(default_factory=dict)  # segment kind code -> name (the file's)
+    sides: Dict[int, str] = field(default_factory=dict)  # segment side code -> name (the file's)
+
+    def kind_name(self, code) -> str:
+        k = int(round(code))
+        return self.kinds.get(k, f"kind {k}")
+
+    def side_name(self, code) -> str:
+        k = int(round(code))
+        return self.sides.get(k, "left" if k > 0 else "right")
 
     @property
     def n_segments(self) -> int:
@@ -37,6 +97,7 @@ class Irregularities:
     attrs: Dict[str, object]
     data: Dict[str, np.ndarray]                 # s, alignment, vertical, gauge, cross_level, ...
     target: Optional[Dict[str, np.ndarray]]     # omega + channels, or None (e.g. csv source)
+    channels: Tuple[str, ...] = ()              # the irregularity channels, in the file's order
 
     @property
     def step(self) -> float:
@@ -130,6 +191,7 @@ class Result:
     elements: Dict[str, Dict[str, np.ndarray]] = field(default_factory=dict)  # /elements
     element_units: Dict[str, Dict[str, str]] = field(default_factory=dict)    # their units
     stats: Optional[Dict[str, object]] = None               # /stats attributes
+    schema: Schema = field(default_factory=Schema)          # /schema (empty in older files)
 
     @property
     def stem(self) -> str:
@@ -183,21 +245,11 @@ class Result:
                     if isinstance(v, h5py.Dataset)}
 
 
-_CENTRELINE = {"s": "m", "x": "m", "y": "m", "z": "m", "heading": "rad", "slope": "rad",
-               "cant_angle": "rad", "curvature": "1/m", "cant": "m"}
-_SEGMENTS = {"start": "m", "length": "m", "kind": "-", "radius": "m", "side": "-", "cant": "m"}
-_IRR = {"s": "m", "alignment": "m", "vertical": "m", "gauge": "m", "cross_level": "m"}
-_IRR_OPTIONAL = {"left_y": "m", "left_z": "m", "right_y": "m", "right_z": "m", "delta": "rad"}
-
-# Vehicle groups.  Only these names are unit-checked; other 1-D numeric datasets (rates such as
-# y_dot, later additions) are read as they are and ignored by the figures.
-_BODY_DS = {"s": "m", "x": "m", "y": "m", "z": "m", "roll": "rad", "pitch": "rad", "yaw": "rad",
-            "ax": "m/s^2", "ay": "m/s^2", "az": "m/s^2"}
-# Per wheel, /contact/<wheelset>/<left|right>/ (workbench/app/run.cpp, runContact).
-_CONTACT_DS = {"normal_force": "N", "normal_tread": "N", "normal_flange": "N",
-               "creep_force_x": "N", "creep_force_y": "N", "creepage_x": "-", "creepage_y": "-",
-               "spin": "1/m", "wheel_s": "m", "rail_s": "m", "contact_angle": "rad",
-               "flange_indentation": "m", "flange_force": "N", "regime": "-", "y_over_q": "-"}
+# The datasets the figures need; their units are the file's /schema (unchecked without one).
+_CENTRELINE = ("s", "x", "y", "z", "heading", "slope", "cant_angle", "curvature", "cant")
+_SEGMENTS = ("start", "length", "kind", "radius", "side", "cant")
+_IRR = ("s", "alignment", "vertical", "gauge", "cross_level")
+_IRR_OPTIONAL = ("left_y", "left_z", "right_y", "right_z", "delta")
 
 
 def _guess_kind(name: str) -> str:
@@ -220,14 +272,15 @@ def _names_attr(v) -> List[str]:
     return [x.strip() for x in items if x.strip()]
 
 
-def _read_series(group, where: str, units: Dict[str, str]) -> Dict[str, np.ndarray]:
-    """All 1-D numeric datasets directly under `group` (others are skipped silently)."""
+def _read_series(group, where: str, schema: Schema) -> Dict[str, np.ndarray]:
+    """All 1-D numeric datasets directly under `group` (others are skipped silently), their
+    units checked against the file's /schema."""
     import h5py
     out = {}
     for k, d in group.items():
         if not isinstance(d, h5py.Dataset) or d.dtype.kind not in "fiub" or d.ndim > 1:
             continue
-        out[k] = _read_ds(group, k, where, units.get(k))
+        out[k] = _read_ds(group, k, where, schema.units.get(f"{where}/{k}"))
     return out
 
 
@@ -237,7 +290,7 @@ def _load_dynamics(f, res: Result) -> None:
     ragged: List[str] = []
     n_t = None
     if "time" in f and isinstance(f["time"], h5py.Dataset):
-        res.time = _read_ds(f, "time", "", "s")
+        res.time = _read_ds(f, "time", "", res.schema.units.get("/time"))
         n_t = res.time.size
 
     def note_len(where, arrays):
@@ -256,7 +309,7 @@ def _load_dynamics(f, res: Result) -> None:
         for n in order:
             bg = g[n]
             kind = _str(bg.attrs["kind"]).strip().lower() if "kind" in bg.attrs else _guess_kind(n)
-            data = _read_series(bg, f"/bodies/{n}", _BODY_DS)
+            data = _read_series(bg, f"/bodies/{n}", res.schema)
             note_len(f"/bodies/{n}", data)
             res.bodies[n] = Body(name=n, kind=kind, data=data)
         if res.bodies and not any("s" in b.data for b in res.bodies.values()):
@@ -274,9 +327,9 @@ def _load_dynamics(f, res: Result) -> None:
             sides = {}
             for side in ("left", "right"):
                 if side in wg and isinstance(wg[side], h5py.Group):
-                    sides[side] = _read_series(wg[side], f"/contact/{w}/{side}", _CONTACT_DS)
+                    sides[side] = _read_series(wg[side], f"/contact/{w}/{side}", res.schema)
                     note_len(f"/contact/{w}/{side}", sides[side])
-            data = _read_series(wg, f"/contact/{w}", {})
+            data = _read_series(wg, f"/contact/{w}", res.schema)
             note_len(f"/contact/{w}", data)
             cws[w] = WheelsetContact(name=w, sides=sides, data=data)
         res.contact = Contact(attrs=_attrs(g), wheelsets=cws)
@@ -284,7 +337,7 @@ def _load_dynamics(f, res: Result) -> None:
     if "elements" in f and isinstance(f["elements"], h5py.Group):
         for k, v in f["elements"].items():
             if isinstance(v, h5py.Group):
-                res.elements[k] = _read_series(v, f"/elements/{k}", {})
+                res.elements[k] = _read_series(v, f"/elements/{k}", res.schema)
                 res.element_units[k] = {d: _str(v[d].attrs["units"]).strip()
                                         for d in res.elements[k] if "units" in v[d].attrs}
                 note_len(f"/elements/{k}", res.elements[k])
@@ -337,8 +390,9 @@ def _read_track(path: str, g, res: Result) -> None:
     for sub in ("centreline", "segments"):
         if sub not in g:
             raise ResultFileError(f"{path}: missing group /track/{sub}")
-    cl = {k: _read_ds(g["centreline"], k, "/track/centreline", u)
-          for k, u in _CENTRELINE.items()}
+    units = res.schema.units
+    cl = {k: _read_ds(g["centreline"], k, "/track/centreline", units.get(f"/track/centreline/{k}"))
+          for k in _CENTRELINE}
     n = cl["s"].size
     if n < 2:
         raise ResultFileError(f"{path}: /track/centreline/s has {n} sample(s)")
@@ -346,31 +400,40 @@ def _read_track(path: str, g, res: Result) -> None:
     if bad:
         raise ResultFileError(f"{path}: /track/centreline datasets differ in length "
                               f"({', '.join(bad)} vs s={n})")
-    sg = {k: _read_ds(g["segments"], k, "/track/segments", u) for k, u in _SEGMENTS.items()}
+    sg = {k: _read_ds(g["segments"], k, "/track/segments", units.get(f"/track/segments/{k}"))
+          for k in _SEGMENTS}
     m = sg["start"].size
     if any(v.size != m for v in sg.values()):
         raise ResultFileError(f"{path}: /track/segments datasets differ in length")
-    res.track = Track(attrs=_attrs(g), centreline=cl, segments=sg)
+    # The codes of kind and side: /schema/enums, else the segments' own `codes` attribute.
+    kinds = res.schema.names(res.schema.codes.get("/track/segments/kind", "segment_kind"))
+    if not kinds and "codes" in g["segments"].attrs:
+        kinds = parse_codes(g["segments"].attrs["codes"])
+    sides = res.schema.names(res.schema.codes.get("/track/segments/side", "segment_side"))
+    res.track = Track(attrs=_attrs(g), centreline=cl, segments=sg, kinds=kinds, sides=sides)
 
     if "irregularities" in g:
         ig = g["irregularities"]
-        data = {k: _read_ds(ig, k, "/track/irregularities", u) for k, u in _IRR.items()}
-        for k, u in _IRR_OPTIONAL.items():
+        where = "/track/irregularities"
+        data = {k: _read_ds(ig, k, where, units.get(f"{where}/{k}")) for k in _IRR}
+        for k in _IRR_OPTIONAL:
             if k in ig:
-                data[k] = _read_ds(ig, k, "/track/irregularities", u)
+                data[k] = _read_ds(ig, k, where, units.get(f"{where}/{k}"))
+        named = res.schema.names("irregularity_channel")
+        # The channels: /schema/enums, else (older files) the required datasets after s.
+        channels = tuple(named[k] for k in sorted(named)) or _IRR[1:]
         ni = data["s"].size
         if any(data[k].size != ni for k in _IRR):
             raise ResultFileError(f"{path}: /track/irregularities datasets differ in length")
         target = None
         if "target_psd" in ig:
-            tg = ig["target_psd"]
-            target = {"omega": _read_ds(tg, "omega", "/track/irregularities/target_psd",
-                                        "rad/m")}
-            for c in CHANNELS:
+            tg, tw = ig["target_psd"], where + "/target_psd"
+            target = {"omega": _read_ds(tg, "omega", tw, units.get(f"{tw}/omega"))}
+            for c in channels:
                 if c in tg:
-                    target[c] = _read_ds(tg, c, "/track/irregularities/target_psd",
-                                         "m^2/(rad/m)")
-        res.irregularities = Irregularities(attrs=_attrs(ig), data=data, target=target)
+                    target[c] = _read_ds(tg, c, tw, units.get(f"{tw}/{c}"))
+        res.irregularities = Irregularities(attrs=_attrs(ig), data=data, target=target,
+                                            channels=channels)
 
 
 def load_result(path: str) -> Result:
@@ -382,7 +445,8 @@ def load_result(path: str) -> Result:
     f = open_h5(path, ResultFileError, "result file", hint)
     try:
         with f:
-            res = Result(path=path, attrs=_attrs(f), groups=sorted(f.keys()))
+            res = Result(path=path, attrs=_attrs(f), groups=sorted(f.keys()),
+                         schema=_read_schema(f))
             if "track" not in f:
                 raise ResultFileError(f"{path}: no /track group (not a railbench result file?)")
             g = f["track"]

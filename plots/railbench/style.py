@@ -15,12 +15,12 @@ import matplotlib.pyplot as plt  # noqa: E402  (after the backend choice)
 DPI = 150
 A4_WIDTH_IN = 6.5  # usable text width of an A4 page with ~2.3 cm margins
 
-SEGMENT_NAMES = {0: "tangent", 1: "transition", 2: "curve"}
+# By segment kind name (the result's /schema/enums/segment_kind gives the name of each code).
 # Paper Fig. 17: white tangent, grey transition, blue curve.
-SEGMENT_FILL = {0: "#ffffff", 1: "#d9d9d9", 2: "#d6e6f5"}
-SEGMENT_LINE = {0: "#222222", 1: "#8c8c8c", 2: "#1f5fa8"}
+SEGMENT_FILL = {"tangent": "#ffffff", "transition": "#d9d9d9", "curve": "#d6e6f5"}
+SEGMENT_LINE = {"tangent": "#222222", "transition": "#8c8c8c", "curve": "#1f5fa8"}
 
-CHANNELS = ("alignment", "vertical", "gauge", "cross_level")
+# By irregularity channel (the result's channels: Irregularities.channels).
 CHANNEL_TITLES = {
     "alignment": "Alignment",
     "vertical": "Vertical profile",

@@ -45,6 +45,8 @@ from typing import Dict, List, Optional, Tuple
 import h5py
 import numpy as np
 
+from .result import parse_codes
+
 METHODS = ("kec", "lut", "elastic")
 # Steady windows: (signal, lo, hi): "s" the leading wheelset's arc length [m], "t" time [s].
 WINDOWS = {
@@ -90,6 +92,17 @@ def _mean(x):
     return float(np.mean(x)) if len(x) else float("nan")
 
 
+def regime_code(f: h5py.File, name: str) -> int:
+    """The code of the contact regime `name` in the file (/schema/enums/contact_regime)."""
+    g = f.get("schema/enums")
+    codes = parse_codes(g.attrs["contact_regime"]) if g is not None and \
+        "contact_regime" in g.attrs else {}
+    for code, n in codes.items():
+        if n == name:
+            return code
+    raise ValueError(f"{f.filename}: no contact regime '{name}' in /schema/enums")
+
+
 def steady_row(f: h5py.File, scen: str) -> Optional[dict]:
     ws = leading_wheelset(f)
     sel = window(f, ws, scen)
@@ -120,7 +133,8 @@ def steady_row(f: h5py.File, scen: str) -> Optional[dict]:
         y_mm=_mean(b["y"][:][sel]) * 1e3, yaw_mrad=_mean(b["yaw"][:][sel]) * 1e3,
         Y_kN=_mean(Y) / 1e3, Y_std_kN=float(np.std(Y)) / 1e3, Q_kN=_mean(Q) / 1e3,
         Q_std_kN=float(np.std(Q)) / 1e3, YQ=_mean(Y / np.where(Q > 1, Q, np.nan)),
-        two_point=_mean(reg == 1), flange_any=_mean(reg >= 1),
+        two_point=_mean(reg == regime_code(f, "two_point")),
+        flange_any=_mean(reg != regime_code(f, "tread")),
         flange_N_share=float(np.sum(Nf) / np.sum(N)) if np.sum(N) > 0 else float("nan"),
         patches=_mean(cnt), angle_rad=float(np.nanmean(ang)))
 
@@ -154,7 +168,7 @@ def extremes_row(f: h5py.File) -> dict:
                 Q_min_any_kN=min(float(np.min(f["/contact"][n][sd]["Q"][:]))
                                  for n in f["/contact"] for sd in ("left", "right")
                                  if sd in f["/contact"][n]) / 1e3,
-                two_point=float(np.mean(w["regime"][:] == 1)))
+                two_point=float(np.mean(w["regime"][:] == regime_code(f, "two_point"))))
 
 
 def dynamic_rows(files: Dict[str, str], scen: str) -> List[dict]:

@@ -8,7 +8,7 @@ from matplotlib.patches import Patch
 from matplotlib.ticker import NullLocator
 import numpy as np
 
-from .style import A4_WIDTH_IN, CHANNELS, CHANNEL_COLORS, CHANNEL_TITLES, SEGMENT_FILL, SEGMENT_LINE, SEGMENT_NAMES, plt, report_style
+from .style import A4_WIDTH_IN, CHANNEL_COLORS, CHANNEL_TITLES, SEGMENT_FILL, SEGMENT_LINE, plt, report_style
 from .result import Result, Track
 from .psd import default_nperseg, fractional_octave_average, interp_loglog, welch_psd, welch_segment_starts
 
@@ -18,9 +18,9 @@ from .psd import default_nperseg, fractional_octave_average, interp_loglog, welc
 def _shade_segments(ax, track: Track, alpha: float = 1.0):
     st, ln, kd = track.segments["start"], track.segments["length"], track.segments["kind"]
     for a, l, k in zip(st, ln, kd):
-        k = int(round(k))
-        if k != 0:  # tangent stays white
-            ax.axvspan(a, a + l, color=SEGMENT_FILL.get(k, "#eeeeee"), alpha=alpha, lw=0,
+        name = track.kind_name(k)
+        if name != "tangent":  # tangent stays white
+            ax.axvspan(a, a + l, color=SEGMENT_FILL.get(name, "#eeeeee"), alpha=alpha, lw=0,
                        zorder=0)
     for b in track.segment_bounds():
         ax.axvline(b, color="#9a9a9a", lw=0.5, zorder=0.5)
@@ -28,22 +28,21 @@ def _shade_segments(ax, track: Track, alpha: float = 1.0):
 
 def _segment_legend_handles(track: Track):
     kinds = sorted({int(round(k)) for k in track.segments["kind"]})
-    return [Patch(facecolor=SEGMENT_FILL.get(k, "#eee"), edgecolor="#9a9a9a", lw=0.5,
-                  label=SEGMENT_NAMES.get(k, f"kind {k}")) for k in kinds]
+    return [Patch(facecolor=SEGMENT_FILL.get(track.kind_name(k), "#eee"), edgecolor="#9a9a9a",
+                  lw=0.5, label=track.kind_name(k)) for k in kinds]
 
 
 def _segment_label(track: Track, i: int) -> str:
     sg = track.segments
-    k = int(round(sg["kind"][i]))
-    name = SEGMENT_NAMES.get(k, f"kind {k}")
+    name = track.kind_name(sg["kind"][i])
     txt = f"{name}, {sg['length'][i]:g} m"
     r = sg["radius"][i]
-    side = "left" if sg["side"][i] > 0 else "right"
-    if k == 2 and r > 0:
+    side = track.side_name(sg["side"][i])
+    if name == "curve" and r > 0:
         txt += f"\nR = {r:g} m {side}"
-    elif k == 1:
+    elif name == "transition":
         txt += f"\nto R = {r:g} m {side}" if r > 0 else "\nto straight"
-    if k in (1, 2) and sg["cant"][i] != 0:
+    if name in ("transition", "curve") and sg["cant"][i] != 0:
         txt += f", cant {sg['cant'][i] * 1e3:g} mm"
     return txt
 
@@ -80,7 +79,7 @@ def fig_track_plan(result: Result):
         ax.plot(x, y, color="#bbbbbb", lw=0.8, zorder=1)
         for i in range(nseg):
             a, b = bounds[i], bounds[i + 1]
-            k = int(round(tr.segments["kind"][i]))
+            k = tr.kind_name(tr.segments["kind"][i])
             sel = (s > a) & (s < b)
             xa, ya, _ = _interp_pose(tr, np.array([a, b]))
             xs = np.concatenate([[xa[0]], x[sel], [xa[1]]])
@@ -91,8 +90,7 @@ def fig_track_plan(result: Result):
                 handles.append(Line2D([], [], color=col, lw=2.0,
                                       label=f"{i + 1}: " + _segment_label(tr, i).replace("\n", ", ")))
             elif k not in seen:
-                handles.append(Line2D([], [], color=col, lw=2.0,
-                                      label=SEGMENT_NAMES.get(k, f"kind {k}")))
+                handles.append(Line2D([], [], color=col, lw=2.0, label=k))
                 seen.add(k)
         # Outside of the curve = opposite to the net turning direction.
         turn = np.unwrap(cl["heading"])[-1] - np.unwrap(cl["heading"])[0]
@@ -136,7 +134,7 @@ def fig_track_plan(result: Result):
                 ax.text(px + out * nx * tick * 0.75, py + out * ny * tick * 0.75, str(i + 1),
                         ha="center", va="center", fontsize=7, zorder=5,
                         bbox=dict(boxstyle="circle,pad=0.2", fc="white",
-                                  ec=SEGMENT_LINE.get(int(round(tr.segments["kind"][i])), "k"),
+                                  ec=SEGMENT_LINE.get(tr.kind_name(tr.segments["kind"][i]), "k"),
                                   lw=0.8))
         ax.plot(x[0], y[0], "o", ms=4.5, color="k", zorder=4)
         handles.append(Line2D([], [], ls="none", marker="o", ms=4.5, color="k",
@@ -218,7 +216,7 @@ def fig_irregularities(result: Result):
     with report_style():
         fig, axes = plt.subplots(4, 1, figsize=(A4_WIDTH_IN, 7.2), sharex=True,
                                  layout="constrained")
-        for ax, c in zip(axes, CHANNELS):
+        for ax, c in zip(axes, ir.channels):
             v = ir.data[c] * 1e3
             ax.plot(s, v, color=CHANNEL_COLORS[c], lw=0.7)
             ax.axhline(0, color="k", lw=0.4)
@@ -269,7 +267,7 @@ def fig_irregularity_psd(result: Result, nperseg: Optional[int] = None):
     with report_style():
         fig, axes = plt.subplots(2, 2, figsize=(A4_WIDTH_IN, 5.8), layout="constrained")
         any_target = False
-        for ax, c in zip(axes.flat, CHANNELS):
+        for ax, c in zip(axes.flat, ir.channels):
             x = ir.data[c]
             om, g = welch_psd(x, ds, nperseg=m)
             om, g = om[1:], g[1:]

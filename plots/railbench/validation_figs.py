@@ -135,11 +135,13 @@ def vehicle_module(path: Optional[str]) -> str:
 
 
 def _curve_radius(result: Result) -> Optional[float]:
-    """Radius of the circular curve of the run's track (/track/segments, kind 2)."""
-    sg = result.track.segments if result.track is not None else None
-    if sg is None:
+    """Radius of the circular curve of the run's track (/track/segments, kind "curve")."""
+    tr = result.track
+    if tr is None:
         return None
-    r = [float(rr) for k, rr in zip(sg["kind"], sg["radius"]) if int(round(k)) == 2 and rr > 0]
+    sg = tr.segments
+    r = [float(rr) for k, rr in zip(sg["kind"], sg["radius"])
+         if tr.kind_name(k) == "curve" and rr > 0]
     return r[0] if r else None
 
 

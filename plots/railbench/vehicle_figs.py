@@ -122,7 +122,6 @@ _CREEP_ROWS = (
     ContactRow("creep_force_x", 1e-3, "long. creep\nforce Fx [kN]", 1.0, creep=True),
     ContactRow("creep_force_y", 1e-3, "lat. creep\nforce Fy [kN]", 1.0, creep=True),
 )
-REGIME_NAMES = ("tread", "two-point", "flange")
 # Drawn a little apart so that both wheels stay visible where their regimes are equal.
 _REGIME_OFFSET = {"left": -0.06, "right": 0.06}
 
@@ -245,8 +244,12 @@ def _contact_figure(result: Result, rows: Sequence[ContactRow], title: str,
                             ha="center", va="center", fontsize=7, color="#555555")
                 if row is _ROW_REGIME:
                     ax.set_ylim(-0.4, 2.4)
-                    ax.set_yticks(range(len(REGIME_NAMES)))
-                    ax.set_yticklabels(REGIME_NAMES, fontsize=6.5)
+                    # The regime's codes as the file names them (/schema/enums/contact_regime).
+                    names = result.schema.names("contact_regime")
+                    if names:
+                        ax.set_yticks(sorted(names))
+                        ax.set_yticklabels([names[k].replace("_", "-") for k in sorted(names)],
+                                           fontsize=6.5)
                 if row is _ROW_YQ and nadal is not None:
                     ax.axhline(nadal[0], color="k", lw=0.9, ls=(0, (6, 2, 1.2, 2)), zorder=2.5)
                 if q == 0:

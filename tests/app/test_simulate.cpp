@@ -44,7 +44,7 @@ rb::run::SimulationRequest request(Oscillator& sys, const std::string& method) {
   r.y0 = Eigen::Vector2d(1.0, 0.0);
   r.t_end = 2.0;
   r.output_every = 0.01;
-  r.outputs = {{"/bodies/mass/x", "m"}, {"/bodies/mass/v", "m/s"}};
+  r.outputs = {{"/bodies/mass/x", "m", "position", ""}, {"/bodies/mass/v", "m/s", "velocity", ""}};
   r.sample = [](double, const Eigen::VectorXd& y, double* v) {
     v[0] = y[0];
     v[1] = y[1];

@@ -30,7 +30,7 @@ from railbench.psd import (default_nperseg, interp_loglog, octave_band_ratios, w
                            welch_segment_starts)
 from railbench.result import load_result
 from railbench.run import FIGURES, build_figure, panel_points, stats_summary, steady_state
-from railbench.style import A4_WIDTH_IN, CHANNELS, DPI, plt
+from railbench.style import A4_WIDTH_IN, DPI, plt
 from railbench.track_figs import fig_irregularities, fig_irregularity_psd
 from railbench.vehicle_figs import fig_contact_forces, nadal_from_file
 
@@ -223,7 +223,9 @@ def test_b_welch_recovers_target_per_octave_on_engine_output():
     ir = res("irr").irregularities
     lo, hi = ir.band()
     bad, rows = [], []
-    for c in CHANNELS:
+    check(ir.channels == ("alignment", "vertical", "gauge", "cross_level"),
+          f"channels from /schema/enums: {ir.channels}")
+    for c in ir.channels:
         om, g = welch_psd(ir.data[c], ir.step, wavelength_max=hi)
         bands = octave_band_ratios(om, g, ir.target["omega"], ir.target[c], lo, hi)
         check(len(bands) == 4, f"{c}: expected 4 full octaves in 3-70 m, got {len(bands)}")
@@ -581,3 +583,31 @@ def test_e_compare_runs_partial_and_no_common_bodies():
     code, so, se = run(_f("kec"), _f("lut"), "--labels", "only-one")
     check(code == 1 and "--labels" in se, f"labels mismatch: exit {code}, {se!r}")
 
+
+
+def test_schema_describes_every_series_and_names_the_codes():
+    """/schema (docs/architecture.md, "Output layout"): every dataset under /time, /vehicle,
+    /bodies, /elements and /contact of a contact and a guided run has a row whose unit is the
+    dataset's `units`; the reader takes the regime's and the segment kinds' names from
+    /schema/enums, which are the writer's tables (0 tread, 1 two-point, 2 flange only)."""
+    import h5py
+    from railbench.h5 import _str
+    groups = ("time", "vehicle", "bodies", "elements", "contact")
+    for name in ("kec", "guided"):
+        r = res(name)
+        with h5py.File(r.path, "r") as f:
+            paths = []
+            f.visititems(lambda k, o: paths.append("/" + k) if isinstance(o, h5py.Dataset)
+                         and k.split("/")[0] in groups else None)
+            check(len(paths) > 10, f"{name}: only {len(paths)} series")
+            for p in paths:
+                check(p in r.schema.units, f"{name}: {p} has no /schema row")
+                check(r.schema.units[p] == _str(f[p].attrs["units"]).strip(),
+                      f"{name}: {p}: /schema unit {r.schema.units[p]!r}")
+    kec = res("kec")
+    check(kec.schema.names("contact_regime") == {0: "tread", 1: "two_point", 2: "flange"},
+          f"regime codes {kec.schema.names('contact_regime')}")
+    check(kec.schema.codes.get("/contact/ws1/left/regime") == "contact_regime",
+          "the regime dataset does not name its codes")
+    check([kec.track.kind_name(k) for k in (0, 1, 2)] == ["tangent", "transition", "curve"],
+          f"segment kinds {kec.track.kinds}")

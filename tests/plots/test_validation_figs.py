@@ -46,6 +46,7 @@ def _track(f, tangent, transition, curve, radius):
                         length=[tangent, transition, curve], kind=[0, 1, 2],
                         radius=[0, radius, radius], side=[0, 1, 1], cant=[0, 0, 0]).items():
         sg[name] = np.asarray(v, dtype=float)
+    sg.attrs["codes"] = "0=tangent,1=transition,2=curve"  # as the writer (io/track_output.cpp)
 
 
 def write_run(path, method, bodies, speed, track, y0, status="ok"):
@@ -122,7 +123,7 @@ def test_fig17_columns_from_the_tracks():
                   np.allclose(ln.get_ydata(), want),
                   f"{ax.get_gid()} {m}: the wheelset's {key} in mm / mrad against its s")
         # Shading from the file's segments: grey transition 30..80 m, blue curve 80..120 m.
-        check(_spans(ax) == [(30.0, 80.0, SEGMENT_FILL[1]), (80.0, 120.0, SEGMENT_FILL[2])],
+        check(_spans(ax) == [(30.0, 80.0, SEGMENT_FILL["transition"]), (80.0, 120.0, SEGMENT_FILL["curve"])],
               f"{ax.get_gid()}: segment shading {_spans(ax)}")
         check("[mm]" in ax.get_ylabel() or "[mrad]" in ax.get_ylabel() or not ax.get_ylabel(),
               "units in the row labels")

@@ -258,8 +258,8 @@ TEST(TrackStore, HashSeesEveryBitNameAndOrder) {
   using C = rb::io::TrackContent;
   C c;
   c.items.emplace_back(C::Attr{"/track", "length", 500.0});
-  c.items.emplace_back(C::Dataset{"/track/centreline/s", "m", {0.0, 0.5, 1.0}});
-  c.items.emplace_back(C::Dataset{"/track/centreline/x", "m", {0.0, 0.5, 1.0}});
+  c.items.emplace_back(C::Dataset{"/track/centreline/s", "m", {0.0, 0.5, 1.0}, "arc length", ""});
+  c.items.emplace_back(C::Dataset{"/track/centreline/x", "m", {0.0, 0.5, 1.0}, "x", ""});
   const std::string h = rb::io::trackHash(c);
   EXPECT_EQ(h.size(), 32u);
   EXPECT_EQ(rb::io::trackHash(c), h);

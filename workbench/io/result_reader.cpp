@@ -54,6 +54,33 @@ std::optional<std::vector<double>> ResultReader::dataset(const std::string& path
   return out;
 }
 
+std::optional<std::vector<std::string>> ResultReader::strings(const std::string& path) const {
+  if (!has(path)) return std::nullopt;
+  const hid_t d = H5Dopen2(static_cast<hid_t>(file_), path.c_str(), H5P_DEFAULT);
+  if (d < 0) return std::nullopt;
+  std::optional<std::vector<std::string>> out;
+  const hid_t t = H5Dget_type(d);
+  const hid_t s = H5Dget_space(d);
+  hsize_t n = 0;
+  if (t >= 0 && s >= 0 && H5Tget_class(t) == H5T_STRING && !H5Tis_variable_str(t) &&
+      H5Sget_simple_extent_ndims(s) == 1 && H5Sget_simple_extent_dims(s, &n, nullptr) == 1) {
+    const std::size_t width = H5Tget_size(t);
+    std::string packed(width * n, '\0');
+    if (n == 0 || H5Dread(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, packed.data()) >= 0) {
+      std::vector<std::string> v;
+      for (std::size_t i = 0; i < n; ++i) {
+        std::string x = packed.substr(i * width, width);
+        v.push_back(x.substr(0, x.find('\0')));
+      }
+      out = std::move(v);
+    }
+  }
+  if (s >= 0) H5Sclose(s);
+  if (t >= 0) H5Tclose(t);
+  H5Dclose(d);
+  return out;
+}
+
 std::optional<double> ResultReader::number(const std::string& object,
                                            const std::string& name) const {
   if (!has(object)) return std::nullopt;

@@ -22,6 +22,8 @@ class ResultReader {
   bool has(const std::string& path) const;
   // A 1-D float64 dataset; nullopt when absent or not 1-D.
   std::optional<std::vector<double>> dataset(const std::string& path) const;
+  // A 1-D dataset of fixed-length strings (the /schema tables); nullopt when absent or not one.
+  std::optional<std::vector<std::string>> strings(const std::string& path) const;
   // A numeric attribute of a group or dataset; nullopt when absent.
   std::optional<double> number(const std::string& object, const std::string& name) const;
   // A string attribute; nullopt when absent.

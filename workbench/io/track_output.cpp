@@ -18,8 +18,9 @@ class Builder {
             std::variant<std::string, double, std::int64_t> value) {
     c.items.emplace_back(TrackContent::Attr{group, name, std::move(value)});
   }
-  void dataset(const std::string& path, const std::vector<double>& data, const std::string& units) {
-    c.items.emplace_back(TrackContent::Dataset{path, units, data});
+  void dataset(const std::string& path, const std::vector<double>& data, const std::string& units,
+               const std::string& meaning, const std::string& codes = {}) {
+    c.items.emplace_back(TrackContent::Dataset{path, units, data, meaning, codes});
   }
   TrackContent c;
 };
@@ -45,26 +46,36 @@ void addIrregularities(Builder& f, const track::TrackSpec& spec, const track::Tr
     f.attr(r, "beyond", std::string(nameOf(irr.beyond)));
     f.attr(r, "fade_in", irr.fade_in);
   }
-  f.dataset(r + "/s", t.irr_s, "m");
-  f.dataset(r + "/alignment", t.alignment, "m");
-  f.dataset(r + "/vertical", t.vertical, "m");
-  f.dataset(r + "/gauge", t.gauge, "m");
-  f.dataset(r + "/cross_level", t.cross_level, "m");
-  f.dataset(r + "/left_y", t.left_y, "m");
-  f.dataset(r + "/left_z", t.left_z, "m");
-  f.dataset(r + "/right_y", t.right_y, "m");
-  f.dataset(r + "/right_z", t.right_z, "m");
-  f.dataset(r + "/delta", t.delta, "rad");
+  f.dataset(r + "/s", t.irr_s, "m", "arc length of the irregularity samples");
+  f.dataset(r + "/alignment", t.alignment, "m",
+            "alignment: lateral displacement of the centreline");
+  f.dataset(r + "/vertical", t.vertical, "m",
+            "vertical profile: vertical displacement of the centreline");
+  f.dataset(r + "/gauge", t.gauge, "m",
+            "gauge variation: deviation of the gauge from its nominal value");
+  f.dataset(r + "/cross_level", t.cross_level, "m",
+            "cross level: height difference z_l - z_r of the rails");
+  f.dataset(r + "/left_y", t.left_y, "m", "lateral displacement of the left rail");
+  f.dataset(r + "/left_z", t.left_z, "m", "vertical displacement of the left rail");
+  f.dataset(r + "/right_y", t.right_y, "m", "lateral displacement of the right rail");
+  f.dataset(r + "/right_z", t.right_z, "m", "vertical displacement of the right rail");
+  f.dataset(r + "/delta", t.delta, "rad", "cross-level angle of the rails");
   if (t.psd_omega.empty()) return;
   const std::string p = r + "/target_psd/";
-  f.dataset(p + "omega", t.psd_omega, "rad/m");
-  f.dataset(p + "alignment", t.psd_alignment, "m^2/(rad/m)");
-  f.dataset(p + "vertical", t.psd_vertical, "m^2/(rad/m)");
-  f.dataset(p + "gauge", t.psd_gauge, "m^2/(rad/m)");
-  f.dataset(p + "cross_level", t.psd_cross_level, "m^2/(rad/m)");
+  f.dataset(p + "omega", t.psd_omega, "rad/m", "spatial angular frequency Omega of the target PSD");
+  f.dataset(p + "alignment", t.psd_alignment, "m^2/(rad/m)",
+            "target PSD of the alignment, one-sided");
+  f.dataset(p + "vertical", t.psd_vertical, "m^2/(rad/m)",
+            "target PSD of the vertical profile, one-sided");
+  f.dataset(p + "gauge", t.psd_gauge, "m^2/(rad/m)",
+            "target PSD of the gauge variation, one-sided");
+  f.dataset(p + "cross_level", t.psd_cross_level, "m^2/(rad/m)",
+            "target PSD of the cross level, one-sided");
   f.attr(r + "/target_psd", "convention",
          std::string("one-sided G(Omega), variance = integral over Omega > 0"));
 }
+
+constexpr std::string_view kSegmentKindEnum = "segment_kind", kSegmentSideEnum = "segment_side";
 
 __extension__ using U128 = unsigned __int128;
 
@@ -108,23 +119,27 @@ TrackContent trackContent(const track::TrackSpec& spec, const track::TrackSample
   f.attr("/track", "rail_lr", spec.rail_lr);
   f.attr("/track", "rail_inclination", spec.rail_inclination);
   const std::string c = "/track/centreline/";
-  f.dataset(c + "s", t.s, "m");
-  f.dataset(c + "x", t.x, "m");
-  f.dataset(c + "y", t.y, "m");
-  f.dataset(c + "z", t.z, "m");
-  f.dataset(c + "heading", t.heading, "rad");
-  f.dataset(c + "slope", t.slope, "rad");
-  f.dataset(c + "cant_angle", t.cant_angle, "rad");
-  f.dataset(c + "curvature", t.curvature, "1/m");
-  f.dataset(c + "cant", t.cant, "m");
+  f.dataset(c + "s", t.s, "m", "arc length of the centreline samples");
+  f.dataset(c + "x", t.x, "m", "centreline position x (global frame)");
+  f.dataset(c + "y", t.y, "m", "centreline position y (global frame)");
+  f.dataset(c + "z", t.z, "m", "centreline position z (global frame)");
+  f.dataset(c + "heading", t.heading, "rad", "heading of the centreline");
+  f.dataset(c + "slope", t.slope, "rad", "slope of the centreline");
+  f.dataset(c + "cant_angle", t.cant_angle, "rad", "design cant angle");
+  f.dataset(c + "curvature", t.curvature, "1/m",
+            "curvature of the centreline, positive to the left");
+  f.dataset(c + "cant", t.cant, "m", "design cant (height of the outer rail over the cant base)");
   const std::string g = "/track/segments/";
-  f.dataset(g + "start", t.seg_start, "m");
-  f.dataset(g + "length", t.seg_length, "m");
-  f.dataset(g + "kind", toDouble(t.seg_kind), "-");
-  f.attr("/track/segments", "codes", std::string("0=tangent,1=transition,2=curve"));
-  f.dataset(g + "radius", t.seg_radius, "m");
-  f.dataset(g + "side", toDouble(t.seg_side), "-");
-  f.dataset(g + "cant", t.seg_cant, "m");
+  f.dataset(g + "start", t.seg_start, "m", "arc length where the segment starts");
+  f.dataset(g + "length", t.seg_length, "m", "length of the segment");
+  f.dataset(g + "kind", toDouble(t.seg_kind), "-", "segment kind (codes in /schema/enums)",
+            std::string(kSegmentKindEnum));
+  f.attr("/track/segments", "codes", codesOf<track::SegmentKind>());
+  f.dataset(g + "radius", t.seg_radius, "m",
+            "radius of the segment's curve (end radius of a transition)");
+  f.dataset(g + "side", toDouble(t.seg_side), "-",
+            "side of the curvature centre (codes in /schema/enums)", std::string(kSegmentSideEnum));
+  f.dataset(g + "cant", t.seg_cant, "m", "cant of the segment (end cant of a transition)");
   if (!t.irr_s.empty()) addIrregularities(f, spec, t);
   return std::move(f.c);
 }
@@ -144,6 +159,25 @@ std::vector<TrackContent::Attr> trackGroupAttrs(const TrackContent& c) {
     if (const auto* a = std::get_if<TrackContent::Attr>(&item); a && a->group == "/track")
       out.push_back(*a);
   return out;
+}
+
+std::vector<SchemaEntry> trackSchema(const TrackContent& c) {
+  std::vector<SchemaEntry> out;
+  for (const auto& item : c.items)
+    if (const auto* d = std::get_if<TrackContent::Dataset>(&item))
+      out.push_back({d->path, d->units, d->meaning, d->codes});
+  return out;
+}
+
+std::vector<std::pair<std::string, std::string>> trackEnums() {
+  // The side as track/samples.cpp stores it: +1 left, -1 right.
+  const std::string side = "1=" + std::string(nameOf(track::Side::Left)) +
+                           ",-1=" + std::string(nameOf(track::Side::Right));
+  // The irregularity channels name datasets, not codes: their table gives a reader their names
+  // and order (paper Fig. 3).
+  return {{std::string(kSegmentKindEnum), codesOf<track::SegmentKind>()},
+          {std::string(kSegmentSideEnum), side},
+          {"irregularity_channel", codesOf<track::Channel>()}};
 }
 
 std::string trackHash(const TrackContent& c) {

@@ -16,8 +16,10 @@ namespace rb::run {
 
 // One output time series: dataset `path` [units].
 struct OutputChannel {
-  std::string path;   // "/bodies/ws1/y"
-  std::string units;  // "m"
+  std::string path;     // "/bodies/ws1/y"
+  std::string units;    // "m"
+  std::string meaning;  // what it is, for the result's /schema
+  std::string codes;    // the /schema/enums entry of a code-valued channel, else empty
 };
 // Fills one value per channel at an output time (state y at time t). Called only at output
 // times, so what it computes costs nothing between outputs.

@@ -19,6 +19,7 @@
 #include "workbench/io/track_output.hpp"
 #include "workbench/io/track_store.hpp"
 #include "workbench/run/assessment_run.hpp"
+#include "workbench/run/channels.hpp"
 #include "workbench/run/simulate.hpp"
 #include "workbench/run/state_outputs.hpp"
 #include "workbench/track/samples.hpp"
@@ -58,56 +59,8 @@ std::string kindName(vehicle::BodyKind k) {
   return "?";
 }
 
-// Per wheel: the quantities a user expects of a contact run.
-constexpr std::pair<const char*, const char*> kWheelQ[] = {{"normal_force", "N"},
-                                                           {"normal_tread", "N"},
-                                                           {"normal_flange", "N"},
-                                                           {"creep_force_x", "N"},
-                                                           {"creep_force_y", "N"},
-                                                           {"creepage_x", "-"},
-                                                           {"creepage_y", "-"},
-                                                           {"spin", "1/m"},
-                                                           {"wheel_s", "m"},
-                                                           {"rail_s", "m"},
-                                                           {"contact_angle", "rad"},
-                                                           {"flange_indentation", "m"},
-                                                           {"flange_force", "N"},
-                                                           {"regime", "-"},
-                                                           {"y_over_q", "-"},
-                                                           {"X", "N"},
-                                                           {"Y", "N"},
-                                                           {"Q", "N"},
-                                                           {"y_track", "N"},
-                                                           {"contact_count", "-"},
-                                                           {"wheel_lift", "m"}};
-constexpr std::size_t kNq = std::size(kWheelQ);
-
-// Per contact patch (/contact/<wheelset>/<side>/patch0, patch1): what an EN 14363 assessment and
-// a wear (T gamma) analysis read. An inactive patch writes zeros (active = 0).
-constexpr std::pair<const char*, const char*> kPatchQ[] = {{"active", "-"},
-                                                           {"on_flange", "-"},
-                                                           {"normal_force", "N"},
-                                                           {"creep_force_x", "N"},
-                                                           {"creep_force_y", "N"},
-                                                           {"spin_moment", "N m"},
-                                                           {"creepage_x", "-"},
-                                                           {"creepage_y", "-"},
-                                                           {"spin", "1/m"},
-                                                           {"wheel_s", "m"},
-                                                           {"rail_s", "m"},
-                                                           {"y", "m"},
-                                                           {"contact_angle", "rad"},
-                                                           {"contact_angle_track", "rad"},
-                                                           {"rolling_radius", "m"},
-                                                           {"semi_axis_a", "m"},
-                                                           {"semi_axis_b", "m"},
-                                                           {"X", "N"},
-                                                           {"Y", "N"},
-                                                           {"Q", "N"},
-                                                           {"y_track", "N"},
-                                                           {"t_gamma", "N"},
-                                                           {"power", "W"}};
-constexpr std::size_t kNp = std::size(kPatchQ);
+constexpr std::size_t kNq = kWheelChannelCount;
+constexpr std::size_t kNp = kPatchChannelCount;
 constexpr std::size_t kWheelValues = kNq + 2 * kNp;  // values per wheel and output time
 // The conventions of the track-frame forces (dynamics::TrackForces) and of the patches.
 void writeContactConventions(io::ResultFile& f, dynamics::ContactMethod method) {
@@ -159,23 +112,26 @@ struct CreepageMaximum {
   }
 };
 
+// The channels of one group (`base` ends with '/'), in the order of the rows.
+template <class In, std::size_t N>
+void addChannels(const std::string& base, const ChannelRow<In> (&rows)[N],
+                 std::vector<OutputChannel>& outputs) {
+  for (const auto& c : rows)
+    outputs.push_back({base + std::string(c.name), std::string(c.unit), std::string(c.meaning),
+                       std::string(c.codes)});
+}
+
 // Channels of the bodies and suspension elements, in the order sampleVehicle fills them, and the
 // /bodies attributes.
 void addVehicleChannels(const Model& m, io::ResultFile& f, std::vector<OutputChannel>& outputs) {
   const auto& v = *m.vehicle;
   const bool acc = m.spec.run.body_accelerations;
-  static const char* units[6] = {"m", "m", "m", "rad", "rad", "rad"};
   std::string names;
   for (const auto& b : v.bodies) {
     names += (names.empty() ? "" : "\n") + b.name;
     f.attr("/bodies/" + b.name, "kind", kindName(b.kind));
-    for (int k = 0; k < 6; ++k)
-      outputs.push_back(
-          {"/bodies/" + b.name + "/" + vehicle::kCoordNames[static_cast<std::size_t>(k)],
-           units[k]});
-    if (acc)
-      for (const char* a : {"ax", "ay", "az"})
-        outputs.push_back({"/bodies/" + b.name + "/" + a, "m/s^2"});
+    addChannels("/bodies/" + b.name + "/", kBodyCoordChannels, outputs);
+    if (acc) addChannels("/bodies/" + b.name + "/", kBodyAccelerationChannels, outputs);
   }
   f.attr("/bodies", "names", names);
   if (acc)
@@ -185,8 +141,12 @@ void addVehicleChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
   for (auto id : m.output_elements) {
     const std::string base = "/elements/" + v.elementName(id) + "/";
     const bool bending = id.kind == vehicle::ElementKind::BendingSpring;
-    outputs.push_back({base + "deflection", bending ? "rad" : "m"});
-    outputs.push_back({base + "force", bending ? "N m" : "N"});
+    outputs.push_back(
+        {base + "deflection", bending ? "rad" : "m",
+         "deflection of the element (" + std::string(vehicle::elementKindName(id.kind)) + ")", ""});
+    outputs.push_back(
+        {base + "force", bending ? "N m" : "N",
+         "force of the element (" + std::string(vehicle::elementKindName(id.kind)) + ")", ""});
   }
 }
 
@@ -198,12 +158,12 @@ void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
   for (int w : cm.wheelsets)
     for (const char* side : {"left", "right"}) {
       const std::string base = "/contact/" + v.bodies[w].name + "/" + side + "/";
-      for (const auto& [q, u] : kWheelQ) outputs.push_back({base + q, u});
+      addChannels(base, kWheelChannels, outputs);
       if (!m.spec.run.output_patches) continue;
       for (int p = 0; p < 2; ++p) {
         const std::string patch = base + "patch" + std::to_string(p);
         f.attr(patch, "role", std::string(info.patch_role[static_cast<std::size_t>(p)]));
-        for (const auto& [q, u] : kPatchQ) outputs.push_back({patch + "/" + q, u});
+        addChannels(patch + "/", kPatchChannels, outputs);
       }
     }
   writeContactConventions(f, cm.method);
@@ -242,41 +202,23 @@ void addContactChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
   }
 }
 
-// Per-patch values (kPatchQ order); returns the next output slot.
+// /schema/series: /time and every output channel, before the run so that the partial file of a
+// failed run has it too.
+void writeSeriesSchema(const std::vector<OutputChannel>& outputs, bool contact, io::ResultFile& f) {
+  std::vector<io::SchemaEntry> rows = {{"/time", "s", "output time", ""}};
+  for (const auto& o : outputs) rows.push_back({o.path, o.units, o.meaning, o.codes});
+  std::vector<std::pair<std::string, std::string>> enums;
+  if (contact) enums.emplace_back(kRegimeEnum, io::codesOf<ContactRegime>());
+  io::writeSchema(f, "series", rows, enums);
+}
+
+// Per-patch values (kPatchChannels order); returns the next output slot.
 double* samplePatch(const dynamics::PatchOutput& p, double* out) {
-  if (!p.active) {
-    for (std::size_t k = 0; k < kNp; ++k) *out++ = 0.0;
-    return out;
-  }
-  const double vals[] = {1.0,
-                         p.on_flange ? 1.0 : 0.0,
-                         p.normal,
-                         p.fx,
-                         p.fy,
-                         p.mz,
-                         p.sx,
-                         p.sy,
-                         p.spin,
-                         p.s_w,
-                         p.s_r,
-                         p.y,
-                         p.gamma,
-                         p.gamma_track,
-                         p.radius,
-                         p.a,
-                         p.b,
-                         p.force.X,
-                         p.force.Y,
-                         p.force.Q,
-                         p.force.y_track,
-                         p.t_gamma,
-                         p.power};
-  static_assert(std::size(vals) == kNp);
-  for (const double x : vals) *out++ = x;
+  for (const auto& c : kPatchChannels) *out++ = p.active ? c.get(p) : 0.0;
   return out;
 }
 
-// Per-wheel values (kWheelQ order, then its patches); returns the next output slot.
+// Per-wheel values (kWheelChannels order, then its patches); returns the next output slot.
 double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t, double* out,
                      CreepageMaximum& creepage, bool patches) {
   for (const auto& w : wheels) {
@@ -284,29 +226,8 @@ double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t,
     const auto& p = std::abs(w.patch[1].normal) > std::abs(w.patch[0].normal) && w.patch[1].active
                         ? w.patch[1]
                         : w.patch[0];
-    const double vals[] = {w.normal,
-                           w.normal_tread,
-                           w.normal_flange,
-                           w.creep_x,
-                           w.creep_y,
-                           p.sx,
-                           p.sy,
-                           p.spin,
-                           p.s_w,
-                           p.s_r,
-                           p.gamma,
-                           w.flange_indentation,
-                           w.flange_force,
-                           static_cast<double>(w.regime),
-                           w.y_over_q,
-                           w.force.X,
-                           w.force.Y,
-                           w.force.Q,
-                           w.force.y_track,
-                           static_cast<double>(w.patch_count),
-                           w.wheel_lift};
-    static_assert(std::size(vals) == kNq);
-    for (const double x : vals) *out++ = x;
+    const WheelSample sample{w, p};
+    for (const auto& c : kWheelChannels) *out++ = c.get(sample);
     if (patches)
       for (const auto& patch : w.patch) out = samplePatch(patch, out);
     creepage.update(w, t);
@@ -816,9 +737,11 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   r.distance = [lead, &v](double t, const Eigen::VectorXd&) { return lead + v.travel(t); };
 
   // Channels, in the order the sampler fills them.
-  r.outputs.push_back({"/vehicle/speed", "m/s"});
+  r.outputs.push_back({"/vehicle/speed", "m/s", "speed of the vehicle along the track", ""});
   addVehicleChannels(m, f, r.outputs);
   if (contact) addContactChannels(m, f, r.outputs);
+
+  writeSeriesSchema(r.outputs, contact != nullptr, f);
 
   const bool acc = m.spec.run.body_accelerations;
   std::vector<Vector6d> q(nb);
@@ -836,9 +759,10 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     ode->bodyCoordinates(t, y.data(), q);
     if (acc) absoluteAccelerations(state, a);
     for (std::size_t b = 0; b < nb; ++b) {
-      for (int k = 0; k < 6; ++k) *out++ = q[b][k];
+      const BodySample body{q[b], a[b]};
+      for (const auto& c : kBodyCoordChannels) *out++ = c.get(body);
       if (acc)
-        for (int k = 0; k < 3; ++k) *out++ = a[b][k];
+        for (const auto& c : kBodyAccelerationChannels) *out++ = c.get(body);
     }
     if (!contact) {
       sampleElements(state, m.output_elements, values, out);
@@ -925,6 +849,8 @@ std::string writeProvenance(const Model& c, io::ResultFile& f, const std::string
   }
   const io::TrackContent track =
       io::trackContent(c.spec.track, track::sampleTrack(*c.track, s_from, s_to));
+  // With a track store the rows describe the /track datasets of the store file.
+  io::writeSchema(f, "track", io::trackSchema(track), io::trackEnums());
   std::string note;
   if (track_store.empty()) {
     io::writeTrackContent(f, track);
@@ -974,10 +900,11 @@ std::string bodySignalProblem(const scenario::ScenarioSpec& spec,
   std::vector<std::string> bodies;
   for (const auto& b : spec.vehicle.bodies) bodies.push_back(b.name);
   if (!among(p[1], bodies)) return notAmong("body", p[1], bodies);
-  std::vector<std::string> q(vehicle::kCoordNames.begin(), vehicle::kCoordNames.end());
+  std::vector<std::string> q;
+  for (const auto& c : kBodyCoordChannels) q.emplace_back(c.name);
   const bool acc = spec.run.body_accelerations;
   if (acc)
-    for (const char* a : {"ax", "ay", "az"}) q.emplace_back(a);
+    for (const auto& c : kBodyAccelerationChannels) q.emplace_back(c.name);
   if (among(p[2], q)) return {};
   const bool asks_acc = p[2] == "ax" || p[2] == "ay" || p[2] == "az";
   return notAmong("body signal", p[2], q) +
@@ -1008,12 +935,12 @@ std::string contactSignalProblem(const scenario::ScenarioSpec& spec,
   if (p[2] != "left" && p[2] != "right") return notAmong("side", p[2], {"left", "right"});
   std::vector<std::string> q;
   if (p.size() == 4) {
-    for (const auto& [name, unit] : kWheelQ) q.emplace_back(name);
+    for (const auto& c : kWheelChannels) q.emplace_back(c.name);
     return among(p[3], q) ? std::string() : notAmong("wheel signal", p[3], q);
   }
   if (p.size() != 5 || (p[3] != "patch0" && p[3] != "patch1"))
     return "a patch's signal is /contact/<wheelset>/<side>/patch0|patch1/<quantity>";
-  for (const auto& [name, unit] : kPatchQ) q.emplace_back(name);
+  for (const auto& c : kPatchChannels) q.emplace_back(c.name);
   return among(p[4], q) ? std::string() : notAmong("patch signal", p[4], q);
 }
 

@@ -1,0 +1,179 @@
+#pragma once
+// The output channels of a vehicle run, each quantity declared once as a row {name, unit,
+// meaning, getter}: the writer's channel set-up (dataset path and units), the sampled value (the
+// getter applied to the model's output struct) and the result file's /schema (architecture.md,
+// "Output layout") all iterate over the same rows, so a name can never be paired with another
+// quantity's value.
+//
+// A code-valued channel (a number that stands for a name) names its enum; the enum's codes are
+// written from its name table (core/names.hpp) into /schema/enums.
+#include <array>
+#include <string_view>
+
+#include "workbench/core/names.hpp"
+#include "workbench/dynamics/contact_ode.hpp"
+#include "workbench/io/schema.hpp"
+
+namespace rb::run {
+
+// Contact regime of a wheel: the value of dynamics::WheelOutput::regime, from the patches in
+// contact (classifyRegimes in dynamics/contact_patches.hpp, and the elastic method's search).
+enum class ContactRegime { Tread = 0, TwoPoint = 1, Flange = 2 };
+inline constexpr std::array<NameEntry<ContactRegime>, 3> kContactRegimeNames = {{
+    {ContactRegime::Tread, "tread", "tread contact only"},
+    {ContactRegime::TwoPoint, "two_point", "a tread and a flange patch"},
+    {ContactRegime::Flange, "flange", "flange contact only"},
+}};
+constexpr const auto& nameTable(ContactRegime /*tag*/) {
+  return kContactRegimeNames;
+}
+
+// The /schema/enums attribute of the regime's codes (io::codesOf<ContactRegime>()).
+inline constexpr std::string_view kRegimeEnum = "contact_regime";
+
+// One quantity of an output struct In: dataset name, SI unit ("-" dimensionless), what it is,
+// and how its value is read. `codes` names the enum of a code-valued channel (/schema/enums).
+template <class In>
+struct ChannelRow {
+  std::string_view name, unit, meaning;
+  double (*get)(const In&);
+  std::string_view codes = {};
+};
+
+// A wheel at an output time with its dominant patch (the larger normal force of an active
+// patch), which gives the wheel's creepages and contact position.
+struct WheelSample {
+  const dynamics::WheelOutput& w;
+  const dynamics::PatchOutput& p;
+};
+
+// Per wheel, /contact/<wheelset>/<left|right>/<name>: the quantities a user expects of a contact
+// run.
+inline constexpr ChannelRow<WheelSample> kWheelChannels[] = {
+    {"normal_force", "N", "normal force, sum over the wheel's patches",
+     [](const WheelSample& s) { return s.w.normal; }},
+    {"normal_tread", "N", "normal force of the patches on the tread",
+     [](const WheelSample& s) { return s.w.normal_tread; }},
+    {"normal_flange", "N", "normal force of the patches on the flange",
+     [](const WheelSample& s) { return s.w.normal_flange; }},
+    {"creep_force_x", "N", "longitudinal creep force, sum over the patches",
+     [](const WheelSample& s) { return s.w.creep_x; }},
+    {"creep_force_y", "N", "lateral creep force, sum over the patches",
+     [](const WheelSample& s) { return s.w.creep_y; }},
+    {"creepage_x", "-", "longitudinal creepage of the dominant patch",
+     [](const WheelSample& s) { return s.p.sx; }},
+    {"creepage_y", "-", "lateral creepage of the dominant patch",
+     [](const WheelSample& s) { return s.p.sy; }},
+    {"spin", "1/m", "spin creepage of the dominant patch",
+     [](const WheelSample& s) { return s.p.spin; }},
+    {"wheel_s", "m", "contact point on the wheel profile (dominant patch)",
+     [](const WheelSample& s) { return s.p.s_w; }},
+    {"rail_s", "m", "contact point on the rail profile (dominant patch)",
+     [](const WheelSample& s) { return s.p.s_r; }},
+    {"contact_angle", "rad", "contact angle of the dominant patch, positive toward the centre",
+     [](const WheelSample& s) { return s.p.gamma; }},
+    {"flange_indentation", "m", "LUT flange indentation delta (Eq. 21), > 0 penetration",
+     [](const WheelSample& s) { return s.w.flange_indentation; }},
+    {"flange_force", "N", "LUT Hertz flange force (Eq. 20)",
+     [](const WheelSample& s) { return s.w.flange_force; }},
+    {"regime", "-", "contact regime (codes in /schema/enums)",
+     [](const WheelSample& s) { return static_cast<double>(s.w.regime); }, kRegimeEnum},
+    {"y_over_q", "-", "derailment quotient Y/Q (EN 14363)",
+     [](const WheelSample& s) { return s.w.y_over_q; }},
+    {"X", "N", "longitudinal force of the rail on the wheel, track frame (EN 14363)",
+     [](const WheelSample& s) { return s.w.force.X; }},
+    {"Y", "N", "lateral force of the rail on the wheel, positive toward the track centre",
+     [](const WheelSample& s) { return s.w.force.Y; }},
+    {"Q", "N", "wheel load, perpendicular to the track plane, positive upward",
+     [](const WheelSample& s) { return s.w.force.Q; }},
+    {"y_track", "N", "lateral force of the rail on the wheel, positive to the left",
+     [](const WheelSample& s) { return s.w.force.y_track; }},
+    {"contact_count", "-", "number of active patches",
+     [](const WheelSample& s) { return static_cast<double>(s.w.patch_count); }},
+    {"wheel_lift", "m", "rise of the tape circle above its centred height over the rail",
+     [](const WheelSample& s) { return s.w.wheel_lift; }},
+};
+
+// Per contact patch, /contact/<wheelset>/<side>/patch0|patch1/<name>: what an EN 14363 assessment
+// and a wear (T gamma) analysis read. An inactive patch writes zeros (active = 0).
+inline constexpr ChannelRow<dynamics::PatchOutput> kPatchChannels[] = {
+    {"active", "-", "1 when the patch is in contact, else 0 (and every value of it 0)",
+     [](const dynamics::PatchOutput& p) { return p.active ? 1.0 : 0.0; }},
+    {"on_flange", "-", "1 when the wheel point lies in the flange window, else 0",
+     [](const dynamics::PatchOutput& p) { return p.on_flange ? 1.0 : 0.0; }},
+    {"normal_force", "N", "normal force", [](const dynamics::PatchOutput& p) { return p.normal; }},
+    {"creep_force_x", "N", "creep force along the patch's x (rolling direction)",
+     [](const dynamics::PatchOutput& p) { return p.fx; }},
+    {"creep_force_y", "N", "creep force along the patch's y = n x x",
+     [](const dynamics::PatchOutput& p) { return p.fy; }},
+    {"spin_moment", "N m", "spin moment (kalker, fastsim; 0 with polach)",
+     [](const dynamics::PatchOutput& p) { return p.mz; }},
+    {"creepage_x", "-", "longitudinal creepage",
+     [](const dynamics::PatchOutput& p) { return p.sx; }},
+    {"creepage_y", "-", "lateral creepage", [](const dynamics::PatchOutput& p) { return p.sy; }},
+    {"spin", "1/m", "spin creepage", [](const dynamics::PatchOutput& p) { return p.spin; }},
+    {"wheel_s", "m", "contact point on the wheel profile",
+     [](const dynamics::PatchOutput& p) { return p.s_w; }},
+    {"rail_s", "m", "contact point on the rail profile",
+     [](const dynamics::PatchOutput& p) { return p.s_r; }},
+    {"y", "m", "lateral track-frame position of the contact point, positive to the left",
+     [](const dynamics::PatchOutput& p) { return p.y; }},
+    {"contact_angle", "rad", "contact angle from the contact table, positive toward the centre",
+     [](const dynamics::PatchOutput& p) { return p.gamma; }},
+    {"contact_angle_track", "rad", "contact angle including the rails' cross-level angle (Eq. 5)",
+     [](const dynamics::PatchOutput& p) { return p.gamma_track; }},
+    {"rolling_radius", "m", "rolling radius at the contact point",
+     [](const dynamics::PatchOutput& p) { return p.radius; }},
+    {"semi_axis_a", "m", "Hertz semi-axis along the rolling direction",
+     [](const dynamics::PatchOutput& p) { return p.a; }},
+    {"semi_axis_b", "m", "Hertz semi-axis across the rolling direction",
+     [](const dynamics::PatchOutput& p) { return p.b; }},
+    {"X", "N", "longitudinal force of the patch on the wheel, track frame",
+     [](const dynamics::PatchOutput& p) { return p.force.X; }},
+    {"Y", "N", "lateral force of the patch on the wheel, positive toward the track centre",
+     [](const dynamics::PatchOutput& p) { return p.force.Y; }},
+    {"Q", "N", "force of the patch perpendicular to the track plane, positive upward",
+     [](const dynamics::PatchOutput& p) { return p.force.Q; }},
+    {"y_track", "N", "lateral force of the patch on the wheel, positive to the left",
+     [](const dynamics::PatchOutput& p) { return p.force.y_track; }},
+    {"t_gamma", "N", "wear number T gamma = |fx sx| + |fy sy| + |mz spin|",
+     [](const dynamics::PatchOutput& p) { return p.t_gamma; }},
+    {"power", "W", "power dissipated in the patch, T gamma V",
+     [](const dynamics::PatchOutput& p) { return p.power; }},
+};
+
+inline constexpr std::size_t kWheelChannelCount = std::size(kWheelChannels);
+inline constexpr std::size_t kPatchChannelCount = std::size(kPatchChannels);
+
+// One body's coordinates and absolute centre-of-mass acceleration at an output time.
+struct BodySample {
+  const vehicle::Vector6d& q;
+  const Eigen::Vector3d& a;
+};
+
+// Per body, /bodies/<body>/<name>: the coordinates of the body's track frame (vehicle::kCoordNames
+// order, paper Eq. 1-2) and, with run.output.body_accelerations, its acceleration.
+inline constexpr ChannelRow<BodySample> kBodyCoordChannels[] = {
+    {vehicle::kCoordNames[0], "m", "arc length of the body's track frame along the track",
+     [](const BodySample& b) { return b.q[0]; }},
+    {vehicle::kCoordNames[1], "m", "lateral displacement in the track frame, positive to the left",
+     [](const BodySample& b) { return b.q[1]; }},
+    {vehicle::kCoordNames[2], "m", "vertical displacement in the track frame",
+     [](const BodySample& b) { return b.q[2]; }},
+    {vehicle::kCoordNames[3], "rad", "roll angle relative to the track frame",
+     [](const BodySample& b) { return b.q[3]; }},
+    {vehicle::kCoordNames[4], "rad", "pitch angle relative to the track frame",
+     [](const BodySample& b) { return b.q[4]; }},
+    {vehicle::kCoordNames[5], "rad", "yaw angle relative to the track frame",
+     [](const BodySample& b) { return b.q[5]; }},
+};
+inline constexpr ChannelRow<BodySample> kBodyAccelerationChannels[] = {
+    {"ax", "m/s^2", "absolute centre-of-mass acceleration, body track-frame x",
+     [](const BodySample& b) { return b.a[0]; }},
+    {"ay", "m/s^2", "absolute centre-of-mass acceleration, body track-frame y",
+     [](const BodySample& b) { return b.a[1]; }},
+    {"az", "m/s^2", "absolute centre-of-mass acceleration, body track-frame z",
+     [](const BodySample& b) { return b.a[2]; }},
+};
+
+}  // namespace rb::run
