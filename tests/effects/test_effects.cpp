@@ -57,15 +57,21 @@ bool hasKind(const rb::run::Model& m, const std::string& kind) {
   return std::find(k.begin(), k.end(), kind) != k.end();
 }
 
-TEST(Effects, SchemaListsEveryEffectOfTheNameTable) {
+TEST(Effects, SchemaListsEverySwitchOfTheEffectTable) {
   const auto& b = rb::scenario::block("run.effects");
-  ASSERT_EQ(b.keys.size(), rb::scenario::kEffectCount);
-  for (const auto& e : rb::scenario::kEffectNames) {
-    const auto* k = b.key(std::string(e.name));
-    ASSERT_NE(k, nullptr) << e.name;
+  ASSERT_EQ(b.keys.size(), rb::scenario::kEffectSwitches.size());
+  for (const auto& e : rb::scenario::kEffectSwitches) {
+    const std::string name(rb::nameOf(e.effect));
+    const auto* k = b.key(name);
+    ASSERT_NE(k, nullptr) << name;
     EXPECT_EQ(k->def, "true");
-    EXPECT_EQ(rb::parse<Effect>(e.name), e.value);
+    EXPECT_EQ(k->help, e.help);
+    EXPECT_EQ(rb::parse<Effect>(name), e.effect);
   }
+  // What a run records but a user cannot switch is no key of run.effects.
+  for (const char* recorded : {"guided_wheelsets", "contact", "normal_forces", "wheelset_spin",
+                               "spring_dampers", "shear_springs", "bending_springs"})
+    EXPECT_EQ(b.key(recorded), nullptr) << recorded;
   EXPECT_NE(rb::scenario::referenceText().find("run.effects = { ... }"), std::string::npos);
 }
 

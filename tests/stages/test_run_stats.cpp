@@ -129,11 +129,11 @@ TEST(RunEffects, KecAndLutDifferInTheirContactMethodAndFlangeContact) {
   EXPECT_TRUE(has(lut, "contact: lut"));
   EXPECT_TRUE(has(lut, "flange_contact: hertz"));
   for (const auto* v : {&kec, &lut}) {
-    EXPECT_TRUE(has(*v, "creep: polach"));
+    EXPECT_TRUE(has(*v, "creep_forces: polach"));
     EXPECT_TRUE(has(*v, "normal_forces: consistent"));
     EXPECT_TRUE(has(*v, "wheelset_spin: free"));
     EXPECT_TRUE(has(*v, "irregularities: psd"));
-    EXPECT_TRUE(has(*v, "patch_outputs"));
+    EXPECT_TRUE(has(*v, "patches"));
     EXPECT_TRUE(hasPrefix(*v, "series_dampers: "));
     EXPECT_TRUE(has(*v, "bump_stops: 2"));
     EXPECT_FALSE(hasPrefix(*v, "guided_wheelsets"));
@@ -153,7 +153,7 @@ TEST(RunEffects, GuidedVehicleHasNoContactEffects) {
   ASSERT_FALSE(g.empty());
   EXPECT_EQ(g.front(), "guided_wheelsets");
   for (const char* p : {"contact", "creep", "normal_forces", "flange_contact", "wheelset_spin",
-                        "patch_outputs", "irregularities"})
+                        "patches", "irregularities"})
     EXPECT_FALSE(hasPrefix(g, p)) << p;
   EXPECT_TRUE(has(g, "element_outputs: 2"));
   EXPECT_TRUE(has(g, "body_accelerations"));
@@ -170,7 +170,7 @@ TEST(RunEffects, DerivedFromTheModelNotTheScenarioText) {
                                   "run.output.patches=false"}));
   EXPECT_FALSE(hasPrefix(e, "creep"));
   EXPECT_FALSE(hasPrefix(e, "normal_forces"));
-  EXPECT_FALSE(has(e, "patch_outputs"));
+  EXPECT_FALSE(has(e, "patches"));
   EXPECT_TRUE(has(e, "wheelset_spin: prescribed"));
   // The minimal scene of the effect studies: no irregularities, bump stops or series dampers.
   const auto minimal = effectLines(compiled("scenarios/studies/bases/minimal.lua"));

@@ -79,9 +79,7 @@ std::string mps(double v) {
 }
 
 std::string mm(double v) {
-  std::ostringstream s;
-  s << std::setprecision(3) << v * 1e3 << " mm";
-  return s.str();
+  return formatNumber(v * 1e3, 3) + " mm";
 }
 
 std::string runName(const std::string& kind, std::size_t index, double v) {

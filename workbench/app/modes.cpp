@@ -118,9 +118,7 @@ std::string unstableLine(const stability::Analysis& a) {
   for (std::size_t i : a.unstableModes())
     s += (s.empty() ? "" : "; ") + stability::describe(a.modes[i]);
   if (s.empty()) return s;
-  std::ostringstream t;
-  t << a.speed << " m/s: " << s;
-  return t.str();
+  return formatNumber(a.speed) + " m/s: " + s;
 }
 
 // The body modes below 30 Hz (the stiff creep and series modes are in the files), and every

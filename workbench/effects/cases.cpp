@@ -6,13 +6,13 @@ using scenario::Effect;
 
 std::vector<SceneEffect> sceneEffects(const scenario::ScenarioSpec& spec) {
   std::vector<SceneEffect> out;
-  for (const auto& entry : scenario::kEffectNames) {
-    const auto& sw = spec.run.effects[scenario::effectIndex(entry.value)];
+  for (const auto& entry : scenario::kEffectSwitches) {
+    const auto& sw = spec.run.effects[scenario::effectIndex(entry.effect)];
     if (!sw.present) continue;
-    if (entry.value == Effect::FlangeContact)
-      out.push_back({entry.value, "always on"});
+    if (entry.effect == Effect::FlangeContact)
+      out.push_back({entry.effect, "always on"});
     else
-      out.push_back({entry.value, sw.on ? "measured" : "off in the scene"});
+      out.push_back({entry.effect, sw.on ? "measured" : "off in the scene"});
   }
   return out;
 }

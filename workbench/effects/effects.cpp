@@ -93,9 +93,8 @@ std::string lengthOverride(const scenario::ScenarioSpec& spec, double seconds, d
 }
 
 std::string effectHelp(scenario::Effect e) {
-  for (const auto& entry : scenario::kEffectNames)
-    if (entry.value == e) return std::string(entry.help);
-  return {};
+  const scenario::EffectSwitchEntry* s = scenario::effectSwitch(e);
+  return s ? std::string(s->help) : std::string();
 }
 
 // effects_scene.csv: every effect of the scene, its state, the override that switches it off and

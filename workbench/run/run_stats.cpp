@@ -19,7 +19,7 @@ void contactEffects(const dynamics::ContactModel& c, std::vector<EffectUse>& out
   const dynamics::ContactMethodInfo& method = dynamics::methodInfo(c.method);
   out.push_back({Effect::WheelRailContact, std::string(nameOf(c.method))});
   if (c.creep != dynamics::CreepModel::None) {
-    out.push_back({Effect::CreepLaw, std::string(nameOf(c.creep))});
+    out.push_back({Effect::CreepForces, std::string(nameOf(c.creep))});
     // The elastic method's normal forces come from the approach: nothing to couple.
     if (method.coupling)
       out.push_back({Effect::NormalForceCoupling, std::string(nameOf(c.coupling))});
@@ -40,7 +40,7 @@ std::string assessmentGroups(const assessment::AssessmentSpec& a) {
 // The printed label of an effect: the contact method and creep law by their names, the others as
 // "name (detail)" with spaces.
 std::string label(const EffectUse& e) {
-  if (e.effect == Effect::WheelRailContact || e.effect == Effect::CreepLaw) return e.detail;
+  if (e.effect == Effect::WheelRailContact || e.effect == Effect::CreepForces) return e.detail;
   std::string name(nameOf(e.effect));
   std::replace(name.begin(), name.end(), '_', ' ');
   return e.detail.empty() ? name : name + " (" + e.detail + ")";
@@ -72,7 +72,7 @@ std::vector<EffectUse> compiledEffects(const Model& m) {
   addCount(out, Effect::ShearSprings, v.shear_springs.size());
   addCount(out, Effect::BendingSprings, v.bending_springs.size());
   addCount(out, Effect::BumpStops, v.bumpstops.size());
-  if (m.contact && m.spec.run.output_patches) out.push_back({Effect::PatchOutputs, ""});
+  if (m.contact && m.spec.run.output_patches) out.push_back({Effect::Patches, ""});
   addCount(out, Effect::ElementOutputs, m.output_elements.size());
   if (m.spec.run.body_accelerations) out.push_back({Effect::BodyAccelerations, ""});
   const assessment::AssessmentSpec a = applicableAssessment(m);

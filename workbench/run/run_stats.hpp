@@ -2,68 +2,27 @@
 // What every vehicle run states about itself in /stats (docs/run_stats.md):
 //   effects: the effects the compiled Model evaluates (derived from the Model, not from the
 //     scenario text: a scenario may ask for what the vehicle cannot give), one per line,
-//     "name" or "name: detail" with the names of kEffectNames;
+//     "name" or "name: detail" with the names of scenario::kEffectNames;
 //   stage_names, stage_share: the share of the integration's wall time per named rhs stage
 //     (vehicle::StageClock, sampled 1 evaluation in stage_period and scaled to all), the
 //     integrator's own work and the observer (outputs, assessment samples, progress);
 //   stage_samples, stage_rejected, stage_period: how many rhs evaluations were timed and kept,
 //     how many were left out (vehicle::StageClock::finish), and 1 in how many were timed.
 // The summary of `workbench run` prints both as its second line.
-#include <array>
 #include <string>
 #include <vector>
 
-#include "workbench/core/names.hpp"
 #include "workbench/integrators/integrator.hpp"
 #include "workbench/io/result_file.hpp"
 #include "workbench/run/compile.hpp"
+#include "workbench/scenario/effect_names.hpp"
 #include "workbench/vehicle/stage_clock.hpp"
 
 namespace rb::run {
 
-enum class Effect {
-  GuidedWheelsets,
-  WheelRailContact,
-  CreepLaw,
-  NormalForceCoupling,
-  FlangeContact,
-  WheelsetSpin,
-  Irregularities,
-  SpringDampers,
-  SeriesDampers,
-  ShearSprings,
-  BendingSprings,
-  BumpStops,
-  PatchOutputs,
-  ElementOutputs,
-  BodyAccelerations,
-  Assessment,
-};
-
-inline constexpr std::array<NameEntry<Effect>, 16> kEffectNames = {{
-    {Effect::GuidedWheelsets, "guided_wheelsets",
-     "wheelsets follow the track centre line (no wheel/rail contact)"},
-    {Effect::WheelRailContact, "contact", "wheel/rail contact constraints: kec or lut"},
-    {Effect::CreepLaw, "creep", "tangential creep forces: polach or kalker (absent with none)"},
-    {Effect::NormalForceCoupling, "normal_forces",
-     "normal/tangential coupling of the creep forces: lagged or consistent"},
-    {Effect::FlangeContact, "flange_contact",
-     "kec_band: KEC regularised tread-flange band (Eq. 26); hertz: LUT Hertz flange (Eq. 20-21)"},
-    {Effect::WheelsetSpin, "wheelset_spin", "wheelset spin: free (a state) or prescribed"},
-    {Effect::Irregularities, "irregularities", "track irregularities: psd or measured"},
-    {Effect::SpringDampers, "spring_dampers", "parallel spring-dampers (count)"},
-    {Effect::SeriesDampers, "series_dampers", "Maxwell series dampers, a state each (count)"},
-    {Effect::ShearSprings, "shear_springs", "shear springs (count)"},
-    {Effect::BendingSprings, "bending_springs", "bending springs, anti-roll bars (count)"},
-    {Effect::BumpStops, "bump_stops", "bump stops (count)"},
-    {Effect::PatchOutputs, "patch_outputs", "per-patch contact outputs (run.output.patches)"},
-    {Effect::ElementOutputs, "element_outputs", "suspension element outputs (count)"},
-    {Effect::BodyAccelerations, "body_accelerations", "body acceleration outputs"},
-    {Effect::Assessment, "assessment", "assessment groups sampled during the run"},
-}};
-constexpr const auto& nameTable(Effect /*tag*/) {
-  return kEffectNames;
-}
+// The effects are the one table of scenario/effect_names.hpp: the switches of run.effects are a
+// part of what a run records.
+using scenario::Effect;
 
 // One effect of a run and what it is (a choice name, a count or a list; empty: none).
 struct EffectUse {
@@ -72,7 +31,7 @@ struct EffectUse {
   bool operator==(const EffectUse&) const = default;
 };
 
-// The effects the compiled vehicle model evaluates, in kEffectNames order.
+// The effects the compiled vehicle model evaluates, in scenario::kEffectNames order.
 std::vector<EffectUse> compiledEffects(const Model& m);
 // "name" or "name: detail" (the lines of /stats/effects).
 std::string effectLine(const EffectUse& e);

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "workbench/core/eigen_decomposition.hpp"
+#include "workbench/vehicle/modal.hpp"
 
 namespace rb::run {
 namespace {
@@ -87,24 +88,23 @@ StepLimit fixedStepLimit(integ::OdeSystem& ode, double t0, const Eigen::VectorXd
                          FixedStepMethod method, std::span<const int> exponential) {
   StepLimit out;
   const int n = ode.size();
-  Eigen::MatrixXd jac(n, n);
-  Eigen::VectorXd y = y0, fp(n), fm(n);
   // Central differences with a relative increment of eps^(1/3) (the optimum for a central
   // quotient), at least 1e-8 in the component's unit (m, rad, m/s, N).
   const double rel = std::cbrt(std::numeric_limits<double>::epsilon());
+  Eigen::VectorXd steps(n);
+  std::vector<int> all(static_cast<std::size_t>(n));
   for (int j = 0; j < n; ++j) {
-    const double dj = rel * std::max(std::abs(y0(j)), 1e-8 / rel);
-    y(j) = y0(j) + dj;
-    int rc = ode.rhs(t0, y.data(), fp.data());
-    y(j) = y0(j) - dj;
-    if (rc == 0) rc = ode.rhs(t0, y.data(), fm.data());
-    y(j) = y0(j);
-    out.evaluations += 2;
-    if (rc != 0) {
-      out.why_not = ode.lastError();
-      return out;
-    }
-    jac.col(j) = (fp - fm) / (2.0 * dj);
+    steps(j) = rel * std::max(std::abs(y0(j)), 1e-8 / rel);
+    all[static_cast<std::size_t>(j)] = j;
+  }
+  Eigen::MatrixXd jac;
+  long evaluations = 0;
+  const int failed = vehicle::centralDifferenceJacobian(
+      ode, t0, y0, steps, all, vehicle::DifferenceQuotient::NominalStep, jac, evaluations);
+  out.evaluations = static_cast<int>(evaluations);
+  if (failed >= 0) {
+    out.why_not = ode.lastError();
+    return out;
   }
   for (const int i : exponential) jac(i, i) = 0.0;
   if (!jac.allFinite()) {

@@ -43,6 +43,8 @@ bool present(const ScenarioSpec& s, Effect e) {
       return s.has_vehicle && assessmentAsked(s.run.assessment);
     case Effect::FlangeContact:
       return wheelRail;
+    default:
+      break;  // recorded by a run, not a switch: applyEffectSwitches never asks
   }
   return false;
 }
@@ -100,6 +102,8 @@ const char* absentReason(Effect e) {
       return "run.assessment asks for no group";
     case Effect::FlangeContact:
       return "no wheel/rail contact";
+    default:
+      break;  // not a switch
   }
   return "";
 }
@@ -132,8 +136,8 @@ void switchOff(ScenarioSpec& s, Effect e) {
       s.run.assessment.comfort = s.run.assessment.wear = false;
       s.run.assessment.all = false;
       break;
-    case Effect::FlangeContact:
-      break;  // not switchable: refused in applyEffectSwitches
+    default:
+      break;  // flange contact is refused in applyEffectSwitches, the others are no switches
   }
 }
 
@@ -141,11 +145,11 @@ void switchOff(ScenarioSpec& s, Effect e) {
 
 void buildEffects(const Node& n, EffectSwitches& effects, Diagnostics& d) {
   Reader r(n, block("run.effects"), "run.effects", d);
-  for (const auto& entry : kEffectNames) {
-    const std::string name(entry.name);
+  for (const auto& entry : kEffectSwitches) {
+    const std::string name(nameOf(entry.effect));
     const Node* v = r.value(name);
     if (!v) continue;
-    EffectSwitch& sw = effects[effectIndex(entry.value)];
+    EffectSwitch& sw = effects[effectIndex(entry.effect)];
     sw.given = true;
     sw.loc = v->loc;
     sw.on = r.boolean(name);
@@ -153,24 +157,25 @@ void buildEffects(const Node& n, EffectSwitches& effects, Diagnostics& d) {
 }
 
 void applyEffectSwitches(ScenarioSpec& spec, Diagnostics& d) {
-  for (const auto& entry : kEffectNames) {
-    EffectSwitch& sw = spec.run.effects[effectIndex(entry.value)];
-    sw.present = present(spec, entry.value);
+  for (const auto& entry : kEffectSwitches) {
+    const Effect e = entry.effect;
+    EffectSwitch& sw = spec.run.effects[effectIndex(e)];
+    sw.present = present(spec, e);
     if (sw.on) {
       sw.on = sw.present;
       continue;
     }
-    const std::string key = "run.effects." + std::string(entry.name);
-    if (entry.value == Effect::FlangeContact)
+    const std::string key = "run.effects." + std::string(nameOf(e));
+    if (e == Effect::FlangeContact)
       d.add(sw.loc, key +
                         ": flange contact is part of the contact model (the KEC flange regime, "
                         "the LUT Hertz flange) and cannot be switched off without changing the "
                         "physics; remove the switch");
     else if (!sw.present)
-      d.add(sw.loc, key + " = false: nothing to switch off, " + absentReason(entry.value) +
-                        "; remove the switch");
+      d.add(sw.loc,
+            key + " = false: nothing to switch off, " + absentReason(e) + "; remove the switch");
     else
-      switchOff(spec, entry.value);
+      switchOff(spec, e);
   }
 }
 

@@ -607,7 +607,7 @@ void addAssessmentBlock(std::vector<BlockSpec>& s) {
             true)}});
 }
 
-// run.effects: one boolean per entry of the effect name table (effect_names.hpp).
+// run.effects: one boolean per switch of the effect table (effect_names.hpp).
 void addEffectsBlock(std::vector<BlockSpec>& s) {
   BlockSpec b{"run.effects",
               "Optional effects of the scene, each on by default when the scene has it (a plain "
@@ -617,8 +617,8 @@ void addEffectsBlock(std::vector<BlockSpec>& s) {
               "error. `workbench effects SCENARIO.lua` measures what each costs and changes "
               "(docs/effects.md).",
               {}};
-  for (const auto& e : kEffectNames)
-    b.keys.push_back(boolean(std::string(e.name), true, std::string(e.help)));
+  for (const auto& e : kEffectSwitches)
+    b.keys.push_back(boolean(std::string(nameOf(e.effect)), true, std::string(e.help)));
   s.push_back(std::move(b));
 }
 

@@ -1,7 +1,6 @@
 #include "workbench/stress/plan.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <functional>
 #include <sstream>
 
@@ -32,9 +31,7 @@ struct Axis {
 };
 
 std::string compactNumber(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  std::string s = buf;
+  std::string s = formatNumber(v);
   for (const char* from : {"e+0", "e+", "e-0"}) {
     const auto p = s.find(from);
     if (p != std::string::npos) s.replace(p, std::string(from).size(), from[1] == '-' ? "e-" : "e");

@@ -9,7 +9,6 @@
 #include <cerrno>
 #include <chrono>
 #include <csignal>
-#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -19,6 +18,7 @@
 
 #include "workbench/core/error.hpp"
 #include "workbench/core/files.hpp"
+#include "workbench/core/strings.hpp"
 #include "workbench/io/read_stats.hpp"
 #include "workbench/io/result_reader.hpp"
 #include "workbench/io/root_text.hpp"
@@ -266,9 +266,7 @@ class Pool {
     for (const auto& [pid, index] : running) {
       const double age = std::chrono::duration<double>(now - started[pid]).count();
       if (age <= o_.run_timeout_s || !all[index].note.empty()) continue;
-      char limit[32];
-      std::snprintf(limit, sizeof limit, "%g", o_.run_timeout_s);
-      all[index].note = std::string("killed after ") + limit +
+      all[index].note = "killed after " + formatNumber(o_.run_timeout_s) +
                         " s of wall time (run timeout): the run did not end (a hang?)";
       ::kill(pid, SIGKILL);
     }

@@ -98,9 +98,7 @@ RunState noResult(const Job& j, Summary& sm) {
 // A metric value to the last bit (round trip), "" when it could not be computed.
 std::string exactField(double v) {
   if (!std::isfinite(v)) return {};
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+  return formatNumber(v, 17);
 }
 
 // `message` with the reasons of the metrics that could not be computed and the notes of those

@@ -1,7 +1,6 @@
 #pragma once
 // Number and file-name formatting for input-error messages (internal to the track module).
 #include <charconv>
-#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <system_error>
@@ -13,13 +12,6 @@ inline std::string num(double x) {
   char buf[64];
   const auto r = std::to_chars(buf, buf + sizeof buf, x);
   return std::string(buf, r.ptr);
-}
-
-// Four significant digits, for derived values and limits ("0.003333").
-inline std::string num4(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
 }
 
 // A data file's name in messages: relative to the working directory when it lies below it (as the

@@ -8,12 +8,12 @@
 #include <string>
 #include <utility>
 
+#include "workbench/core/strings.hpp"
 #include "workbench/track/format.hpp"
 
 namespace rb::track {
 
 using detail::num;
-using detail::num4;
 
 namespace {
 
@@ -91,7 +91,7 @@ void checkSynthesis(const TrackSpec& spec, double length, Diagnostics& d) {
     const double rms = std::sqrt(var);
     if (!(rms <= kMaxIrregularity)) {
       ierr(std::string(channelName(static_cast<Channel>(c))) + ": the synthesised irregularity " +
-           "has an RMS of " + num4(rms) + " m, more than a track irregularity can be (" +
+           "has an RMS of " + formatNumber(rms, 4) + " m, more than a track irregularity can be (" +
            num(kMaxIrregularity) + " m); check the PSD (one-sided, in m^2/(rad/m)) and scale");
     }
   }
@@ -140,8 +140,8 @@ void checkTrackFields(const TrackSpec& spec, bool maxOk, bool baseOk, Diagnostic
   if (!(spec.gauge > 0.0)) d.add(tl, "track.gauge must be > 0 m, got " + num(spec.gauge));
   if (!(spec.rail_lr > 0.0)) d.add(tl, "track.rail_lr must be > 0 m, got " + num(spec.rail_lr));
   if (!(spec.rail_inclination >= 0.0 && spec.rail_inclination <= kMaxInclination)) {
-    d.add(tl, "track.rail_inclination must be in [0, " + num4(kMaxInclination) + "] rad, got " +
-                  num(spec.rail_inclination));
+    d.add(tl, "track.rail_inclination must be in [0, " + formatNumber(kMaxInclination, 4) +
+                  "] rad, got " + num(spec.rail_inclination));
   }
 }
 
@@ -172,8 +172,8 @@ void checkSegmentFields(const SegmentSpec& sg, const TrackSpec& spec, bool baseO
   if (baseOk) {
     const double maxCant = kMaxCantPerBase * spec.cant_base;
     if (!(std::abs(sg.cant) <= maxCant)) {
-      err("|cant| must be <= " + num4(maxCant) + " m (0.2 m per 1.5 m of cant_base), got " +
-          num(sg.cant));
+      err("|cant| must be <= " + formatNumber(maxCant, 4) +
+          " m (0.2 m per 1.5 m of cant_base), got " + num(sg.cant));
     }
   }
   if (!(std::abs(sg.gradient) <= kMaxGradient)) {
@@ -194,19 +194,20 @@ void checkContinuity(const SegmentSpec& sg, double kEnd, double uHere, const Seg
                      const std::function<void(const std::string&)>& err) {
   const double kStart = sg.kind == SegmentKind::Curve ? kEnd : 0.0;
   if (prev.kind == SegmentKind::Transition && std::abs(kStart - prev.kappa) > kJumpTol) {
-    err("curvature jumps from " + num4(prev.kappa) + " 1/m to " + num4(kStart) +
+    err("curvature jumps from " + formatNumber(prev.kappa, 4) + " 1/m to " +
+        formatNumber(kStart, 4) +
         " 1/m at the segment start (positive = left); the preceding transition must end " +
         (sg.kind == SegmentKind::Tangent ? std::string("straight (radius 0)")
                                          : std::string("at this radius and side")));
   }
   if (std::abs(uHere - prev.u) > kJumpTol) {
-    err("cant jumps from " + num4(prev.u) + " m to " + num4(uHere) +
+    err("cant jumps from " + formatNumber(prev.u, 4) + " m to " + formatNumber(uHere, 4) +
         " m at the segment start (signed, positive = banked left); change cant in a "
         "transition");
   }
   if (std::abs(sg.gradient - prev.grad) > kJumpTol) {
-    err("gradient jumps from " + num4(prev.grad) + " to " + num4(sg.gradient) +
-        " at the segment start; change gradient in a transition");
+    err("gradient jumps from " + formatNumber(prev.grad, 4) + " to " +
+        formatNumber(sg.gradient, 4) + " at the segment start; change gradient in a transition");
   }
 }
 

@@ -21,34 +21,52 @@ Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const 
   return finiteDifferenceJacobian(sys, t, y, steps, all);
 }
 
-Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const Eigen::VectorXd& y,
-                                         const Eigen::VectorXd& steps, const std::vector<int>& keep,
-                                         long* evaluations) {
+int centralDifferenceJacobian(integ::OdeSystem& sys, double t, const Eigen::VectorXd& y,
+                              const Eigen::VectorXd& steps, const std::vector<int>& keep,
+                              DifferenceQuotient quotient, Eigen::MatrixXd& J, long& evaluations,
+                              bool* failed_plus) {
   const int n = sys.size();
   const auto m = static_cast<Eigen::Index>(keep.size());
-  Eigen::MatrixXd J(m, m);
+  J.resize(m, m);
   Eigen::VectorXd yp = y, fp(n), fm(n);
   for (Eigen::Index j = 0; j < m; ++j) {
     const int c = keep[static_cast<std::size_t>(j)];
     const double h = steps[c];
-    // The perturbed values are rounded to doubles: divide by the step actually taken.
+    evaluations += 2;
     yp[c] = y[c] + h;
     const double hp = yp[c] - y[c];
-    if (sys.rhs(t, yp.data(), fp.data()) != 0)
-      throw std::runtime_error("rhs failed at " + sys.componentName(c) +
-                               " + h: " + sys.lastError());
+    const bool plus_ok = sys.rhs(t, yp.data(), fp.data()) == 0;
     yp[c] = y[c] - h;
     const double hm = y[c] - yp[c];
-    if (sys.rhs(t, yp.data(), fm.data()) != 0)
-      throw std::runtime_error("rhs failed at " + sys.componentName(c) +
-                               " - h: " + sys.lastError());
+    const bool minus_ok = plus_ok && sys.rhs(t, yp.data(), fm.data()) == 0;
     yp[c] = y[c];
+    if (!minus_ok) {
+      if (failed_plus != nullptr) *failed_plus = !plus_ok;
+      return c;
+    }
+    // The perturbed values are rounded to doubles: over the step taken, hp + hm is the exact
+    // distance between the two states.
+    const double denominator = quotient == DifferenceQuotient::StepTaken ? hp + hm : 2.0 * h;
     for (Eigen::Index i = 0; i < m; ++i) {
       const int r = keep[static_cast<std::size_t>(i)];
-      J(i, j) = (fp[r] - fm[r]) / (hp + hm);
+      J(i, j) = (fp[r] - fm[r]) / denominator;
     }
   }
-  if (evaluations != nullptr) *evaluations += 2 * m;
+  return -1;
+}
+
+Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const Eigen::VectorXd& y,
+                                         const Eigen::VectorXd& steps, const std::vector<int>& keep,
+                                         long* evaluations) {
+  Eigen::MatrixXd J;
+  long count = 0;
+  bool plus = false;
+  const int failed = centralDifferenceJacobian(sys, t, y, steps, keep,
+                                               DifferenceQuotient::StepTaken, J, count, &plus);
+  if (failed >= 0)
+    throw std::runtime_error("rhs failed at " + sys.componentName(failed) +
+                             (plus ? " + h: " : " - h: ") + sys.lastError());
+  if (evaluations != nullptr) *evaluations += count;
   // The rhs refuses non-finite states, but a finite state can still give difference quotients
   // that overflow: never hand a non-finite Jacobian to the eigensolver.
   if (!J.allFinite()) throw std::runtime_error("the finite-difference Jacobian is not finite");

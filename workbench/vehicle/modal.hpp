@@ -15,11 +15,27 @@ namespace rb::vehicle {
 Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const Eigen::VectorXd& y,
                                          double rel_step = 1e-6);
 
-// The Jacobian of the reduced system: rows and columns `keep` of df/dy at (t, y) by central
-// differences with the step steps[c] for state c (c in keep), J(i, j) = d f_keep[i] / d y_keep[j].
-// The states outside `keep` stay at y (cyclic coordinates such as the wheelset spin angles, on
-// which f does not depend). Adds the rhs evaluations to *evaluations when given. Throws
-// std::runtime_error naming the state when the rhs fails.
+// What a central difference quotient divides by: the step actually taken (y + h and y - h are
+// rounded to doubles; the linearised stability analysis), or the nominal 2 h (the fixed-step
+// check at the start of a run, run/step_limit.hpp, whose recorded limits were computed so).
+enum class DifferenceQuotient { StepTaken, NominalStep };
+
+// The one central-difference Jacobian of the workbench: rows and columns `keep` of df/dy at
+// (t, y) with the step steps[c] for state c (c in keep), J(i, j) = d f_keep[i] / d y_keep[j], the
+// columns in the order of `keep` (f+ then f- of each). The states outside `keep` stay at y.
+// Counts 2 rhs evaluations per column tried in *evaluations. Returns the state index whose
+// perturbed rhs failed (sys.lastError() says why; J is incomplete), or -1; *failed_plus says
+// which side failed when given. J is not checked for finite values.
+int centralDifferenceJacobian(integ::OdeSystem& sys, double t, const Eigen::VectorXd& y,
+                              const Eigen::VectorXd& steps, const std::vector<int>& keep,
+                              DifferenceQuotient quotient, Eigen::MatrixXd& J, long& evaluations,
+                              bool* failed_plus = nullptr);
+
+// The Jacobian of the reduced system (centralDifferenceJacobian over the step taken) for the
+// linearised analyses: the states outside `keep` are cyclic coordinates such as the wheelset spin
+// angles, on which f does not depend. Adds the rhs evaluations to *evaluations when given and the
+// Jacobian is formed. Throws std::runtime_error naming the state when the rhs fails, and when a
+// difference quotient is not finite.
 Eigen::MatrixXd finiteDifferenceJacobian(integ::OdeSystem& sys, double t, const Eigen::VectorXd& y,
                                          const Eigen::VectorXd& steps, const std::vector<int>& keep,
                                          long* evaluations = nullptr);
