@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "workbench/core/error.hpp"
+#include "workbench/core/strings.hpp"
+#include "workbench/dynamics/spec.hpp"
 
 namespace fs = std::filesystem;
 
@@ -82,7 +84,8 @@ std::string sceneText(const std::string& path, const std::string& module,
     << "-- (workbench/app/stability_scene.hpp): long tangent track without irregularities,\n"
     << "-- S1002 on 60E1 at 1:40 (B = 1360 mm, G = 1435 mm, r0 = 0.46 m), " << contact
     << " contact with\n"
-    << "-- Polach creep at the paper's mu = 0.2364 (section 5.1), dopri5. The commands set\n"
+    << "-- Polach creep at the paper's mu = " << formatNumber(creep::kDefaultMu)
+    << " (section 5.1), dopri5. The commands set\n"
     << "-- vehicle.speed and run.duration per run.\n"
     << "local make = require \"" << module << "\"\n"
     << "if type(make) ~= \"function\" then\n"
@@ -91,10 +94,11 @@ std::string sceneText(const std::string& path, const std::string& module,
     << "        .. \"returning function(opts) -> vehicle table)\")\n"
     << "end\n"
     << "track { segments = { tangent { length = 20000 } }, step = 0.5 }\n"
-    << "profiles { wheel = \"s1002\", rail = \"60e1\", back_to_back = 1.360, gauge = 1.435, r0 = "
-       "0.46,\n"
+    << "profiles { wheel = \"s1002\", rail = \"60e1\", back_to_back = 1.360, gauge = "
+    << formatNumber(track::kStandardGauge) << ", r0 = 0.46,\n"
     << "           inclination = 0.025 }\n"
-    << "contact { method = \"" << contact << "\", creep = \"polach\", mu = 0.2364 }\n"
+    << "contact { method = \"" << contact
+    << "\", creep = \"polach\", mu = " << formatNumber(creep::kDefaultMu) << " }\n"
     << "vehicle (make { speed = 20 })\n"
     << "solver { method = \"dopri5\" }\n"
     << "run { duration = 10, output = { every = 0.01 } }\n";

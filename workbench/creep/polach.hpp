@@ -59,8 +59,12 @@
 
 namespace rb::creep {
 
+// [-] The paper's friction coefficient (section 5.1): the default of contact.mu and of a creep
+// law's parameters.
+inline constexpr double kDefaultMu = 0.2364;
+
 struct CreepParams {
-  double mu = 0.2364;                // friction coefficient mu_0 [-] (paper section 5.1)
+  double mu = kDefaultMu;            // friction coefficient mu_0 [-] (paper section 5.1)
   double G = 2.1e11 / (2.0 * 1.28);  // shear modulus E / (2 (1 + nu)) [Pa] (paper: E, nu of 5.3)
   // Polach (2005) reduction factors of the initial slope, k_S <= k_A <= 1; 1, 1 = Polach (1999).
   double k_A = 1.0;

@@ -6,15 +6,18 @@
 #include "workbench/contact/interpolation.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/creep/fastsim.hpp"
+#include "workbench/creep/polach.hpp"
+#include "workbench/track/spec.hpp"
 
 namespace rb::dynamics {
 
 // Wheel and rail profiles and their positioning (paper Table 1, ../docs/profiles.md).
 struct ProfilesSpec {
-  std::string wheel = "s1002";      // built-in "s1002", or a resolved path to a .prw / text file
-  std::string rail = "60e1";        // built-in "60e1", or a resolved path to a .prr / text file
-  double back_to_back = 1.360;      // [m] B; Lw = B/2 + flange-back distance (70 mm for S1002)
-  double gauge = 1.435;             // [m] G measured 14 mm below the rail top; Lr = G/2 + offset
+  std::string wheel = "s1002";  // built-in "s1002", or a resolved path to a .prw / text file
+  std::string rail = "60e1";    // built-in "60e1", or a resolved path to a .prr / text file
+  double back_to_back = 1.360;  // [m] B; Lw = B/2 + flange-back distance (70 mm for S1002)
+  // [m] G measured 14 mm below the rail top; Lr = G/2 + offset
+  double gauge = track::kStandardGauge;
   double r0 = 0.46;                 // [m] nominal rolling radius (Manchester vehicle 1)
   double inclination = 1.0 / 40.0;  // [rad] rail inclination beta
   double lw = 0.0;                  // [m] explicit Lw (0: from back_to_back)
@@ -59,7 +62,7 @@ struct ContactSpec {
   double flange_damping = -1.0;    // [N s/m^2] LUT flange D; < 0: K / 100 as in paper Table 3
   CreepModel creep = CreepModel::Polach;
   creep::FastsimGrid fastsim;      // creep = fastsim: its grid and traction bound (fastsim.hpp)
-  double mu = 0.2364;              // [-] friction coefficient (paper section 5.1)
+  double mu = creep::kDefaultMu;   // [-] friction coefficient (paper section 5.1)
   double youngs_modulus = 2.1e11;  // [Pa] (paper section 5.3)
   double poisson = 0.28;           // [-]
   // Lagged: creep forces use the previous evaluation's constraint normal forces (the paper,

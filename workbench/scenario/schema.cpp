@@ -10,6 +10,7 @@
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/limits.hpp"
 #include "workbench/dynamics/names.hpp"
+#include "workbench/dynamics/spec.hpp"
 #include "workbench/integrators/registry.hpp"
 #include "workbench/scenario/effect_names.hpp"
 #include "workbench/track/names.hpp"
@@ -120,7 +121,7 @@ void addTrackBlocks(std::vector<BlockSpec>& s) {
                     kInf, true),
                 num("cant_base", "m", 1.5, "lateral base over which cant height is measured", 0,
                     kInf, true),
-                num("gauge", "m", 1.435, "nominal track gauge", 1.0, 2.0),
+                num("gauge", "m", track::kStandardGauge, "nominal track gauge", 1.0, 2.0),
                 num("rail_lr", "m", 0.7555,
                     "Lr: lateral position of the rail profile frames (paper Table 1)", 0.5, 1.0),
                 num("rail_inclination", "rad", 0.025,
@@ -249,8 +250,8 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
               "\"60e1\" or a rail profile file (.prr or two-column text) below the scenario"),
         num("back_to_back", "m", 1.36, "back-to-back distance B (Lw = B/2 + 70 mm for S1002)",
             dynamics::kBackToBackRange),
-        num("gauge", "m", 1.435, "track gauge G, 14 mm below the rail top (sets Lr)",
-            dynamics::kGaugeRange),
+        num("gauge", "m", track::kStandardGauge,
+            "track gauge G, 14 mm below the rail top (sets Lr)", dynamics::kGaugeRange),
         num("r0", "m", 0.46,
             "nominal rolling radius (Manchester vehicle 1: 0.46 m; paper Table 1: "
             "0.457 m)",
@@ -283,7 +284,8 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
                  "the elastic contact method's damping, search step and derailment criterion, for "
                  "method = \"elastic\" (docs/elastic_contact.md)",
                  "contact.elastic"),
-        num("mu", "-", 0.2364, "friction coefficient (paper section 5.1)", dynamics::kMuRange),
+        num("mu", "-", creep::kDefaultMu, "friction coefficient (paper section 5.1)",
+            dynamics::kMuRange),
         num("youngs_modulus", "Pa", 2.1e11, "Young's modulus of wheel and rail",
             dynamics::kYoungsModulusRange),
         num("poisson", "-", 0.28, "Poisson ratio", dynamics::kPoissonRange),

@@ -105,12 +105,16 @@ struct IrregularitySpec {
   SourceLoc loc;
 };
 
+// [m] Nominal (standard) track gauge: the default of track.gauge and of profiles.gauge, which
+// sets the rail positions of the contact geometry.
+inline constexpr double kStandardGauge = 1.435;
+
 struct TrackSpec {
   std::vector<SegmentSpec> segments;
-  double step = 0.5;        // [m] centreline spline sampling step (paper: 0.5 m)
-  double cant_base = 1.5;   // [m] lateral distance over which cant height is measured
-  double gauge = 1.435;     // [m] nominal track gauge (recorded; rail positions use Lr)
-  double rail_lr = 0.7555;  // [m] Lr, rail profile frame lateral position (paper Table 1)
+  double step = 0.5;              // [m] centreline spline sampling step (paper: 0.5 m)
+  double cant_base = 1.5;         // [m] lateral distance over which cant height is measured
+  double gauge = kStandardGauge;  // [m] nominal track gauge (recorded; rail positions use Lr)
+  double rail_lr = 0.7555;        // [m] Lr, rail profile frame lateral position (paper Table 1)
   double rail_inclination = 1.0 / 40.0;   // [rad] beta (paper Table 1)
   double max_points = kDefaultMaxPoints;  // work and memory bound (see kDefaultMaxPoints)
   IrregularitySpec irregularities;
