@@ -132,8 +132,8 @@ TEST(ResultSchema, ContactRunDescribesEveryDataset) {
   const auto regime = r.text("/schema/enums", std::string(rb::run::kRegimeEnum));
   ASSERT_TRUE(regime);
   const auto codes = parseCodes(*regime);
-  ASSERT_EQ(codes.size(), rb::run::kContactRegimeNames.size());
-  for (const auto& e : rb::run::kContactRegimeNames)
+  ASSERT_EQ(codes.size(), rb::dynamics::kContactRegimeNames.size());
+  for (const auto& e : rb::dynamics::kContactRegimeNames)
     EXPECT_EQ(codes.at(static_cast<int>(e.value)), e.name);
   EXPECT_EQ(codes.at(0), "tread");
   EXPECT_EQ(codes.at(1), "two_point");

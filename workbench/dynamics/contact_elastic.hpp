@@ -132,7 +132,7 @@ void elasticPatches(const ContactModels& models, const StageInput& in, WheelsetW
       if constexpr (Law::kCreep) creepForce<Law>(p, N, c, Q);
       (p.on_flange ? flange : tread) = true;
     }
-    ww.regime[side] = flange ? (tread ? 1 : 2) : 0;
+    ww.regime[side] = contactRegime(tread, flange);
   }
 }
 

@@ -100,6 +100,15 @@ struct PatchOutput {
   double t_gamma = 0.0, power = 0.0;
 };
 
+// Contact regime of a wheel, from the patches in contact: WheelOutput::regime holds its code.
+enum class ContactRegime { Tread = 0, TwoPoint = 1, Flange = 2 };
+
+// The regime's code of a wheel with patches on the tread and/or on the flange (tread when none).
+constexpr int contactRegime(bool tread, bool flange) {
+  return static_cast<int>(flange ? (tread ? ContactRegime::TwoPoint : ContactRegime::Flange)
+                                 : ContactRegime::Tread);
+}
+
 // Contact of one wheel at an output time.
 struct WheelOutput {
   // KEC: outside a regularised band the single contact point; inside it A (the field-side end,

@@ -294,13 +294,13 @@ int contactPatches(const ContactModels& models, const StageInput& in, WheelsetWo
   return 0;
 }
 
-// Contact regime of each wheel: 0 tread only, 1 two-point (tread and flange), 2 flange only.
+// Contact regime of each wheel (ContactRegime).
 inline void classifyRegimes(WheelsetWork& ww) {
   for (int s = 0; s < 2; ++s) {
     bool tread = false, flange = false;
     for (const Patch& p : ww.patch[s])
       if (p.active) (p.on_flange ? flange : tread) = true;
-    ww.regime[s] = flange ? (tread ? 1 : 2) : 0;
+    ww.regime[s] = contactRegime(tread, flange);
   }
 }
 

@@ -6,6 +6,7 @@
 #include "workbench/core/names.hpp"
 #include "workbench/creep/fastsim.hpp"
 #include "workbench/dynamics/contact_methods.hpp"
+#include "workbench/dynamics/contact_ode.hpp"
 #include "workbench/dynamics/creep_laws.hpp"
 #include "workbench/dynamics/spec.hpp"
 
@@ -21,6 +22,15 @@ constexpr const auto& nameTable(ContactMethod /*tag*/) {
 inline constexpr auto kCreepModelNames = creepLawNames(CreepLaws{});
 constexpr const auto& nameTable(CreepModel /*tag*/) {
   return kCreepModelNames;
+}
+
+inline constexpr std::array<NameEntry<ContactRegime>, 3> kContactRegimeNames = {{
+    {ContactRegime::Tread, "tread", "tread contact only"},
+    {ContactRegime::TwoPoint, "two_point", "a tread and a flange patch"},
+    {ContactRegime::Flange, "flange", "flange contact only"},
+}};
+constexpr const auto& nameTable(ContactRegime /*tag*/) {
+  return kContactRegimeNames;
 }
 
 inline constexpr std::array<NameEntry<NormalForceCoupling>, 2> kNormalForceCouplingNames = {{

@@ -10,25 +10,13 @@
 #include <array>
 #include <string_view>
 
-#include "workbench/core/names.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
+#include "workbench/dynamics/names.hpp"
 #include "workbench/io/schema.hpp"
 
 namespace rb::run {
 
-// Contact regime of a wheel: the value of dynamics::WheelOutput::regime, from the patches in
-// contact (classifyRegimes in dynamics/contact_patches.hpp, and the elastic method's search).
-enum class ContactRegime { Tread = 0, TwoPoint = 1, Flange = 2 };
-inline constexpr std::array<NameEntry<ContactRegime>, 3> kContactRegimeNames = {{
-    {ContactRegime::Tread, "tread", "tread contact only"},
-    {ContactRegime::TwoPoint, "two_point", "a tread and a flange patch"},
-    {ContactRegime::Flange, "flange", "flange contact only"},
-}};
-constexpr const auto& nameTable(ContactRegime /*tag*/) {
-  return kContactRegimeNames;
-}
-
-// The /schema/enums attribute of the regime's codes (io::codesOf<ContactRegime>()).
+// The /schema/enums attribute of the regime's codes (io::codesOf<dynamics::ContactRegime>()).
 inline constexpr std::string_view kRegimeEnum = "contact_regime";
 
 // One quantity of an output struct In: dataset name, SI unit ("-" dimensionless), what it is,
