@@ -80,7 +80,8 @@ void checkTrackRange(const Model& c, Diagnostics& d) {
   const auto& v = *c.vehicle;
   const double length = c.track->geometry().length();
   const double tol = 1e-9 * std::max(1.0, length);
-  const double rear = v.start + c.trailingX();
+  const Model::Stretch covered = c.coveredStretch();
+  const double rear = covered.s_from;
   const double lead0 = v.start + c.leadingX();
   const auto& segs = c.spec.track.segments;
   const bool straight_start = !segs.empty() && segs.front().kind == track::SegmentKind::Tangent &&
@@ -97,7 +98,7 @@ void checkTrackRange(const Model& c, Diagnostics& d) {
               " m and the track ends at " + formatNumber(length) + " m");
     return;
   }
-  const double lead_end = lead0 + v.travel(c.t_end);
+  const double lead_end = covered.s_to;
   if (lead_end > length + tol)
     d.add(c.spec.run.loc,
           "run: the leading body would reach s = " + formatNumber(lead_end) + " m after " +
@@ -156,6 +157,10 @@ double Model::trailingX() const {
   double rear = 1e300;
   for (const auto& b : vehicle->bodies) rear = std::min(rear, b.x);
   return rear;
+}
+
+Model::Stretch Model::coveredStretch() const {
+  return {vehicle->start + trailingX(), vehicle->start + leadingX() + vehicle->travel(t_end)};
 }
 
 namespace {

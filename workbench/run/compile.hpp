@@ -52,6 +52,12 @@ struct Model {
   // the vehicle's reference point. A run's distance and a failure's distance are measured there.
   double leadingX() const;
   double trailingX() const;
+  // The stretch of track [s_from, s_to] a vehicle run covers: from its rearmost body at the start
+  // to its leading body at t_end.
+  struct Stretch {
+    double s_from = 0.0, s_to = 0.0;  // [m]
+  };
+  Stretch coveredStretch() const;
 };
 
 // Throws InputError with every problem found.

@@ -59,9 +59,8 @@ std::string kindName(vehicle::BodyKind k) {
   return "?";
 }
 
-constexpr std::size_t kNq = kWheelChannelCount;
-constexpr std::size_t kNp = kPatchChannelCount;
-constexpr std::size_t kWheelValues = kNq + 2 * kNp;  // values per wheel and output time
+// Values per wheel and output time, with its two patches.
+constexpr std::size_t kWheelValues = kWheelChannelCount + 2 * kPatchChannelCount;
 // The conventions of the track-frame forces (dynamics::TrackForces) and of the patches.
 void writeContactConventions(io::ResultFile& f, dynamics::ContactMethod method) {
   f.attr("/contact", "force_frame",
@@ -208,7 +207,7 @@ void writeSeriesSchema(const std::vector<OutputChannel>& outputs, bool contact, 
   std::vector<io::SchemaEntry> rows = {{"/time", "s", "output time", ""}};
   for (const auto& o : outputs) rows.push_back({o.path, o.units, o.meaning, o.codes});
   std::vector<std::pair<std::string, std::string>> enums;
-  if (contact) enums.emplace_back(kRegimeEnum, io::codesOf<ContactRegime>());
+  if (contact) enums.emplace_back(kRegimeEnum, io::codesOf<dynamics::ContactRegime>());
   io::writeSchema(f, "series", rows, enums);
 }
 
@@ -752,7 +751,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   StateOutputs state(*ode, contact);
   CreepageMaximum creepage;
   const bool patches = m.spec.run.output_patches;
-  const std::size_t wheelValues = patches ? kWheelValues : kNq;
+  const std::size_t wheelValues = patches ? kWheelValues : kWheelChannelCount;
   r.sample = [&](double t, const Eigen::VectorXd& y, double* out) {
     *out++ = v.speedAt(t);
     state.at(t, y.data());
@@ -844,8 +843,9 @@ std::string writeProvenance(const Model& c, io::ResultFile& f, const std::string
   double s_from = -std::numeric_limits<double>::infinity();
   double s_to = std::numeric_limits<double>::infinity();
   if (track_store.empty() && c.vehicle && c.t_end > 0.0) {
-    s_from = c.vehicle->start + c.trailingX();
-    s_to = c.vehicle->start + c.leadingX() + c.vehicle->travel(c.t_end);
+    const Model::Stretch covered = c.coveredStretch();
+    s_from = covered.s_from;
+    s_to = covered.s_to;
   }
   const io::TrackContent track =
       io::trackContent(c.spec.track, track::sampleTrack(*c.track, s_from, s_to));
@@ -906,7 +906,9 @@ std::string bodySignalProblem(const scenario::ScenarioSpec& spec,
   if (acc)
     for (const auto& c : kBodyAccelerationChannels) q.emplace_back(c.name);
   if (among(p[2], q)) return {};
-  const bool asks_acc = p[2] == "ax" || p[2] == "ay" || p[2] == "az";
+  const bool asks_acc =
+      std::any_of(std::begin(kBodyAccelerationChannels), std::end(kBodyAccelerationChannels),
+                  [&](const auto& c) { return p[2] == c.name; });
   return notAmong("body signal", p[2], q) +
          (acc || !asks_acc ? "" : "; ax, ay, az need run.output.body_accelerations = true");
 }
