@@ -25,6 +25,7 @@
 #include "workbench/track/samples.hpp"
 #include "workbench/vehicle/guided.hpp"
 #include "workbench/vehicle/initial_conditions.hpp"
+#include "workbench/vehicle/names.hpp"
 #include "workbench/vehicle/vehicle_ode.hpp"
 
 namespace rb::run {
@@ -43,20 +44,6 @@ void absoluteAccelerations(StateOutputs& state, std::vector<Eigen::Vector3d>& a)
   const auto& kin = state.workspace().kin;
   const auto& qdd = state.qdd();
   for (std::size_t b = 0; b < a.size(); ++b) a[b] = kin[b].Lv * qdd[b] + kin[b].gamma_v;
-}
-
-std::string kindName(vehicle::BodyKind k) {
-  switch (k) {
-    case vehicle::BodyKind::CarBody:
-      return "car";
-    case vehicle::BodyKind::Bogie:
-      return "bogie";
-    case vehicle::BodyKind::Wheelset:
-      return "wheelset";
-    case vehicle::BodyKind::Frame:
-      return "frame";
-  }
-  return "?";
 }
 
 // Values per wheel and output time, with its two patches.
@@ -128,7 +115,7 @@ void addVehicleChannels(const Model& m, io::ResultFile& f, std::vector<OutputCha
   std::string names;
   for (const auto& b : v.bodies) {
     names += (names.empty() ? "" : "\n") + b.name;
-    f.attr("/bodies/" + b.name, "kind", kindName(b.kind));
+    f.attr("/bodies/" + b.name, "kind", std::string(nameOf(b.kind)));
     addChannels("/bodies/" + b.name + "/", kBodyCoordChannels, outputs);
     if (acc) addChannels("/bodies/" + b.name + "/", kBodyAccelerationChannels, outputs);
   }
