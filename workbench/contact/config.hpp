@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "workbench/contact/interpolation.hpp"
+#include "workbench/profiles/nominal.hpp"
 #include "workbench/profiles/profile.hpp"
 
 namespace rb::contact {
@@ -50,7 +51,8 @@ struct ContactGeometryConfig {
   double wheel_lw = 0.750;   // [m] Lw: wheel profile origins at +-Lw (B = 1360 mm, S1002)
   double rail_lr = 0.75303;  // [m] Lr: rail profile origins at +-Lr (G = 1435 mm, 60E1 1:40)
   double beta = 1.0 / 40.0;  // [rad] rail inclination (paper Table 1 gives beta = 1/40 rad)
-  double r0 = 0.46;          // [m] nominal rolling radius used by the KEC constraints (Eq. 22)
+  // [m] nominal rolling radius used by the KEC constraints (Eq. 22)
+  double r0 = profiles::kNominalWheelRadius;
 
   // Tread/flange split of the wheel profile, in LEFT-wheel coordinates (the right wheel uses the
   // mirror value -flange_boundary): the flange is s_w < flange_boundary, the tread s_w >=

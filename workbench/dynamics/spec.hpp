@@ -7,6 +7,7 @@
 #include "workbench/core/error.hpp"
 #include "workbench/creep/fastsim.hpp"
 #include "workbench/creep/polach.hpp"
+#include "workbench/profiles/nominal.hpp"
 #include "workbench/track/spec.hpp"
 
 namespace rb::dynamics {
@@ -18,11 +19,11 @@ struct ProfilesSpec {
   double back_to_back = 1.360;  // [m] B; Lw = B/2 + flange-back distance (70 mm for S1002)
   // [m] G measured 14 mm below the rail top; Lr = G/2 + offset
   double gauge = track::kStandardGauge;
-  double r0 = 0.46;                 // [m] nominal rolling radius (Manchester vehicle 1)
-  double inclination = 1.0 / 40.0;  // [rad] rail inclination beta
-  double lw = 0.0;                  // [m] explicit Lw (0: from back_to_back)
-  double lr = 0.0;                  // [m] explicit Lr (0: from gauge)
-  bool refined_tables = false;      // paper Tables 9-10 refined grids
+  double r0 = profiles::kNominalWheelRadius;  // [m] nominal rolling radius
+  double inclination = 1.0 / 40.0;            // [rad] rail inclination beta
+  double lw = 0.0;                            // [m] explicit Lw (0: from back_to_back)
+  double lr = 0.0;                            // [m] explicit Lr (0: from gauge)
+  bool refined_tables = false;                // paper Tables 9-10 refined grids
   SourceLoc loc;
 };
 

@@ -12,6 +12,7 @@
 #include "workbench/dynamics/names.hpp"
 #include "workbench/dynamics/spec.hpp"
 #include "workbench/integrators/registry.hpp"
+#include "workbench/profiles/nominal.hpp"
 #include "workbench/scenario/effect_names.hpp"
 #include "workbench/track/names.hpp"
 #include "workbench/vehicle/names.hpp"
@@ -252,7 +253,7 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
             dynamics::kBackToBackRange),
         num("gauge", "m", track::kStandardGauge,
             "track gauge G, 14 mm below the rail top (sets Lr)", dynamics::kGaugeRange),
-        num("r0", "m", 0.46,
+        num("r0", "m", profiles::kNominalWheelRadius,
             "nominal rolling radius (Manchester vehicle 1: 0.46 m; paper Table 1: "
             "0.457 m)",
             dynamics::kR0Range),
@@ -378,7 +379,8 @@ void addVehicleBlocks(std::vector<BlockSpec>& s) {
             "constant longitudinal acceleration a: V(t) = V0 + a t (speed ramp); V must stay >= 0 "
             "over the run",
             -20, 20),
-        num("wheel_radius", "m", 0.46, "nominal rolling radius r0 of the wheelsets", 0.2, 0.7),
+        num("wheel_radius", "m", profiles::kNominalWheelRadius,
+            "nominal rolling radius r0 of the wheelsets", dynamics::kR0Range),
         enumChoice("category", assessment::VehicleCategory::Unstated,
                    "kind of vehicle (EN 14363): sets alpha of the track shift limit of "
                    "run.assessment (1.0 passenger and locomotive, 0.85 freight)"),

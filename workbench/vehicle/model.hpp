@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "workbench/core/error.hpp"
+#include "workbench/profiles/nominal.hpp"
 #include "workbench/suspension/bumpstop.hpp"
 #include "workbench/track/geometry.hpp"
 #include "workbench/track/track.hpp"
@@ -109,11 +110,11 @@ std::string_view elementKindName(ElementKind kind);
 
 struct VehicleModel {
   std::string name;
-  double speed = 0.0;          // [m/s] V0, the forward speed at t = 0
-  double acceleration = 0.0;   // [m/s^2] a, constant: V(t) = V0 + a t (a speed ramp)
-  double wheel_radius = 0.46;  // [m] r0
-  double start = 0.0;          // [m] s of the vehicle reference point at t = 0
-  double gravity = 9.81;       // [m/s^2]
+  double speed = 0.0;         // [m/s] V0, the forward speed at t = 0
+  double acceleration = 0.0;  // [m/s^2] a, constant: V(t) = V0 + a t (a speed ramp)
+  double wheel_radius = profiles::kNominalWheelRadius;  // [m] r0
+  double start = 0.0;     // [m] s of the vehicle reference point at t = 0
+  double gravity = 9.81;  // [m/s^2]
   std::vector<Body> bodies;
   std::vector<SpringDamperElement> spring_dampers;
   std::vector<SeriesDamperElement> series_dampers;

@@ -8,6 +8,7 @@
 
 #include "workbench/assessment/spec.hpp"
 #include "workbench/core/error.hpp"
+#include "workbench/profiles/nominal.hpp"
 
 namespace rb::vehicle {
 
@@ -84,10 +85,10 @@ struct VehicleSpec {
   std::string name;
   std::vector<BodySpec> bodies;
   std::vector<ElementSpec> elements;
-  double speed = 0.0;          // [m/s] forward velocity V0 at t = 0
-  double acceleration = 0.0;   // [m/s^2] constant longitudinal acceleration a: V(t) = V0 + a t
-  double wheel_radius = 0.46;  // [m] nominal rolling radius r0 (wheelsets)
-  double start = 0.0;          // [m] arc length of the vehicle reference point at t = 0
+  double speed = 0.0;         // [m/s] forward velocity V0 at t = 0
+  double acceleration = 0.0;  // [m/s^2] constant longitudinal acceleration a: V(t) = V0 + a t
+  double wheel_radius = profiles::kNominalWheelRadius;  // [m] nominal rolling radius r0 (wheelsets)
+  double start = 0.0;  // [m] arc length of the vehicle reference point at t = 0
   // Kind of vehicle (EN 14363), for the alpha of the track shift limit of the assessment.
   assessment::VehicleCategory category = assessment::VehicleCategory::Unstated;
   std::vector<InitialCondition> initial;  // added to the initial state (vehicle.initial)
