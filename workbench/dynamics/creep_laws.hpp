@@ -7,19 +7,22 @@
 // per model, and each evaluation runs its law's code with no branch on the law (creep "none"
 // compiles the creep code out).
 //
-// Adding a creep law (docs/creep.md "Adding a creep law"): its pure function in workbench/creep/
-// (a file and its CMake entry), its value in CreepModel (spec.hpp), its struct below and its entry
-// in CreepLaws. Parameters it needs beyond CreepParams go into ContactSpec / ContactModel and the
-// contact{} schema, next to `fastsim`.
+// Adding a creep law (docs/creep.md "Adding a creep law") touches four files: its pure function in
+// workbench/creep/ (a header, a source and their CMake entry) and this one (its value in
+// CreepModel, its struct and its entry in CreepLaws). Parameters it needs beyond CreepParams go
+// into ContactSpec / ContactModel and the contact{} schema, next to `fastsim`.
 #include <array>
 #include <string_view>
 
 #include "workbench/core/names.hpp"
 #include "workbench/creep/fastsim.hpp"
 #include "workbench/creep/polach.hpp"
-#include "workbench/dynamics/spec.hpp"
+#include "workbench/creep/shen_hedrick_elkins.hpp"
 
 namespace rb::dynamics {
+
+// The laws of the registry below (ContactSpec::creep); one value per law.
+enum class CreepModel { Polach, Kalker, Fastsim, ShenHedrickElkins, None };
 
 // Each law: kModel, kName, kHelp, kCreep (false: no tangential forces, the creep stages are not
 // compiled) and apply(model, patch, creepages, fx, fy, mz), forces and spin moment on the wheel
@@ -70,6 +73,23 @@ struct FastsimLaw {
   }
 };
 
+struct ShenHedrickElkinsLaw {
+  static constexpr CreepModel kModel = CreepModel::ShenHedrickElkins;
+  static constexpr std::string_view kName = "shen_hedrick_elkins";
+  static constexpr std::string_view kHelp =
+      "Shen, Hedrick and Elkins (1983): Kalker's linear forces saturated by Johnson and "
+      "Vermeulen's cubic";
+  static constexpr bool kCreep = true;
+  template <class Model>
+  static void apply(const Model& m, const creep::ContactPatch& p, const creep::Creepages& c,
+                    double& fx, double& fy, double& mz) {
+    const creep::SaturatedCreepForce f = creep::shenHedrickElkinsForce(m.creep_params, p, c);
+    fx = f.fx;
+    fy = f.fy;
+    mz = f.mz;
+  }
+};
+
 struct NoCreep {
   static constexpr CreepModel kModel = CreepModel::None;
   static constexpr std::string_view kName = "none";
@@ -86,7 +106,7 @@ template <class... Laws>
 struct LawList {};
 
 // The registry, in the order of the scenario reference.
-using CreepLaws = LawList<PolachLaw, KalkerLaw, FastsimLaw, NoCreep>;
+using CreepLaws = LawList<PolachLaw, KalkerLaw, FastsimLaw, ShenHedrickElkinsLaw, NoCreep>;
 
 template <class... Laws>
 constexpr std::array<NameEntry<CreepModel>, sizeof...(Laws)> creepLawNames(LawList<Laws...>) {

@@ -7,6 +7,7 @@
 #include "workbench/core/error.hpp"
 #include "workbench/creep/fastsim.hpp"
 #include "workbench/creep/polach.hpp"
+#include "workbench/dynamics/creep_laws.hpp"
 #include "workbench/profiles/nominal.hpp"
 #include "workbench/track/spec.hpp"
 
@@ -31,8 +32,6 @@ struct ProfilesSpec {
 // Elastic: the wheelset has its full rigid-body freedom on an online multi-point contact search
 // with a Hertz normal force per patch (docs/elastic_contact.md).
 enum class ContactMethod { Kec, Lut, Elastic };
-// The creep laws of the registry (creep_laws.hpp, which names and describes each).
-enum class CreepModel { Polach, Kalker, Fastsim, None };
 enum class NormalForceCoupling { Lagged, Consistent };
 // Free: the wheelset spin theta is a degree of freedom driven by the creep forces (its creep mode
 // is stiff, ~ -2400 1/s at 20 m/s, docs/contact_dynamics.md section 7). Prescribed: the spin rate

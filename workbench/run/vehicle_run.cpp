@@ -72,7 +72,7 @@ void writeContactConventions(io::ResultFile& f, dynamics::ContactMethod method) 
                      "lateral track-frame position of the contact point, positive to the left"));
   f.attr("/contact", "t_gamma",
          std::string("T gamma = |fx sx| + |fy sy| + |mz spin| [N] (mz from the laws that give a "
-                     "spin moment, kalker and fastsim; 0 with polach); power = T gamma V [W]"));
+                     "spin moment; 0 with polach); power = T gamma V [W]"));
   // What patch 0 and 1 are: the method's row of the registry (dynamics/contact_methods.hpp).
   f.attr("/contact", "patches", std::string(dynamics::methodInfo(method).patches));
 }
