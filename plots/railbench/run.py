@@ -17,7 +17,7 @@ Figures (each returns a matplotlib Figure; nothing is written)
                                          flange angle
     fig_flange_contact(result)           tread and flange patch normal forces (KEC two-point
                                          contact, LUT Hertz flange), LUT flange indentation,
-                                         contact regime, per wheel
+                                         peak Hertz pressure, contact regime, per wheel
     fig_creep(result)                    creepages, spin and creep forces per wheelset
     fig_accelerations(result)            car body and bogie accelerations (/bodies/*/a[xyz])
     fig_elements(result)                 deflection and force of /elements/* versus time
@@ -191,7 +191,7 @@ FIGURES: List[FigureSpec] = [
                fig_contact_forces, "normal force Q and Y/Q per wheel"),
     FigureSpec("flange_contact",
                lambda r: _row_present(r, _ROW_FLANGE) or _row_present(r, _ROW_INDENT),
-               fig_flange_contact, "tread and flange normal force, flange indentation, regime"),
+               fig_flange_contact, "tread and flange normal force, flange indentation, peak pressure, regime"),
     FigureSpec("creep", lambda r: bool(_contact_rows(r, _CREEP_ROWS)), fig_creep,
                "creepages, spin and creep forces"),
     FigureSpec("accelerations", lambda r: bool(acceleration_bodies(r)), fig_accelerations,

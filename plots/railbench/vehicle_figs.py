@@ -113,8 +113,9 @@ _ROW_FLANGE = ContactRow("normal_flange", 1e-3, "flange patch\nnormal force [kN]
 _ROW_INDENT = ContactRow("flange_indentation", 1e3, "flange indentation\n[mm] (< 0: gap)", 0.05,
                          methods=("lut",))
 _ROW_REGIME = ContactRow("regime", 1.0, "contact\nregime", 2.6)
+_ROW_PRESSURE = ContactRow("max_pressure", 1e-6, "peak pressure\np0 [MPa]", 200.0)
 _CONTACT_ROWS = (_ROW_Q, _ROW_YQ)
-_FLANGE_ROWS = (_ROW_TREAD, _ROW_FLANGE, _ROW_INDENT, _ROW_REGIME)
+_FLANGE_ROWS = (_ROW_TREAD, _ROW_FLANGE, _ROW_INDENT, _ROW_PRESSURE, _ROW_REGIME)
 _CREEP_ROWS = (
     ContactRow("creepage_x", 1e3, "long. creepage\nξx [‰]", 0.5, creep=True),
     ContactRow("creepage_y", 1e3, "lat. creepage\nξy [‰]", 0.5, creep=True),
@@ -293,7 +294,8 @@ def fig_flange_contact(result: Result):
     """Where the flange carries load: the normal force of the tread patch and of the flange
     patch per wheel (KEC: the two points of the two-point contact; LUT: the tread contact and
     the Hertz flange force of Eq. 20), the LUT flange indentation (Eq. 21, negative: the gap
-    still open), and the contact regime (tread, two-point, flange only)."""
+    still open), the peak Hertz pressure p0 of the wheel's patches, and the contact regime
+    (tread, two-point, flange only)."""
     rows = _contact_rows(result, _FLANGE_ROWS)
     m = _method(result)
     notes = []

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "workbench/creep/hertz.hpp"
 #include "workbench/io/result_reader.hpp"
 #include "workbench/io/schema.hpp"
 #include "workbench/run/channels.hpp"
@@ -184,3 +185,30 @@ TEST(ResultSchema, ChannelRowsAreComplete) {
 }
 
 }  // namespace
+
+namespace rbtest_pressure {
+
+// The max_pressure channel's p0 is the Hertz module's maximum pressure for the patch's semi-axes
+// and load (creep::hertz, an independent computation from the curvatures), and 0 for a patch out
+// of contact or pulled.
+TEST(ResultChannels, PeakPressureIsHertzP0) {
+  const rb::creep::Material steel{2.1e11, 0.28};
+  // A wheel of radius 0.46 m on a straight rail; crown radii 0.3 m (rail) and flat (wheel).
+  const rb::creep::RelativeCurvatures k{1.0 / (2 * 0.46), 1.0 / (2 * 0.3)};
+  for (double n : {1e3, 5e4, 1.2e5}) {
+    const rb::creep::HertzContact h = rb::creep::hertz(steel, k, n);
+    rb::dynamics::PatchOutput p;
+    p.active = true;
+    p.normal = n;
+    p.a = h.a;
+    p.b = h.b;
+    EXPECT_NEAR(rb::run::peakPressure(p), h.p0, 1e-12 * h.p0) << n;
+    p.active = false;
+    EXPECT_EQ(rb::run::peakPressure(p), 0.0);
+    p.active = true;
+    p.normal = -n;
+    EXPECT_EQ(rb::run::peakPressure(p), 0.0);
+  }
+}
+
+}  // namespace rbtest_pressure

@@ -7,7 +7,9 @@
 //
 // A code-valued channel (a number that stands for a name) names its enum; the enum's codes are
 // written from its name table (core/names.hpp) into /schema/enums.
+#include <algorithm>
 #include <array>
+#include <numbers>
 #include <string_view>
 
 #include "workbench/dynamics/contact_ode.hpp"
@@ -27,6 +29,14 @@ struct ChannelRow {
   double (*get)(const In&);
   std::string_view codes = {};
 };
+
+// Peak pressure p0 = 3 N / (2 pi a b) of a Hertz patch (Johnson, Contact Mechanics (1985),
+// section 3.5: 1.5 times the mean pressure N / (pi a b) over the ellipse); 0
+// for a patch out of contact or pulled (N <= 0).
+inline double peakPressure(const dynamics::PatchOutput& p) {
+  const double area = std::numbers::pi * p.a * p.b;
+  return p.active && p.normal > 0.0 && area > 0.0 ? 1.5 * p.normal / area : 0.0;
+}
 
 // A wheel at an output time with its dominant patch (the larger normal force of an active
 // patch), which gives the wheel's creepages and contact position.
@@ -80,6 +90,12 @@ inline constexpr ChannelRow<WheelSample> kWheelChannels[] = {
      [](const WheelSample& s) { return static_cast<double>(s.w.patch_count); }},
     {"wheel_lift", "m", "rise of the tape circle above its centred height over the rail",
      [](const WheelSample& s) { return s.w.wheel_lift; }},
+    {"max_pressure", "Pa",
+     "largest peak Hertz pressure p0 = 3 N / (2 pi a b) of the wheel's patches (elastic: of its "
+     "strongest tread and flange patch)",
+     [](const WheelSample& s) {
+       return std::max(peakPressure(s.w.patch[0]), peakPressure(s.w.patch[1]));
+     }},
 };
 
 // Per contact patch, /contact/<wheelset>/<side>/patch0|patch1/<name>: what an EN 14363 assessment
@@ -94,7 +110,7 @@ inline constexpr ChannelRow<dynamics::PatchOutput> kPatchChannels[] = {
      [](const dynamics::PatchOutput& p) { return p.fx; }},
     {"creep_force_y", "N", "creep force along the patch's y = n x x",
      [](const dynamics::PatchOutput& p) { return p.fy; }},
-    {"spin_moment", "N m", "spin moment (kalker, fastsim; 0 with polach)",
+    {"spin_moment", "N m", "spin moment (0 with a law that gives none: polach)",
      [](const dynamics::PatchOutput& p) { return p.mz; }},
     {"creepage_x", "-", "longitudinal creepage",
      [](const dynamics::PatchOutput& p) { return p.sx; }},
