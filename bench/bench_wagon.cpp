@@ -58,8 +58,8 @@ Setup& setup(const std::string& method, bool free_spin) {
   co.scenario = std::string(RB_SOURCE_DIR) + "/scenarios/validation/case3_" + method + ".lua";
   if (!free_spin) co.overrides = {"contact.wheelset_spin=prescribed"};
   s.model = run::compile(co);
-  s.ode = std::make_unique<dynamics::ContactVehicleOde>(*s.model.vehicle, *s.model.contact,
-                                                        *s.model.track);
+  s.ode = std::make_unique<dynamics::ContactVehicleOde>(s.model.lead().vehicle,
+                                                        *s.model.lead().contact, *s.model.track);
   integ::SolverSpec solver;
   solver.method = "abm";
   solver.step = free_spin ? 2.5e-4 : 1e-3;
@@ -132,13 +132,13 @@ const BodyStates& bodyStates() {
 void BM_Vehicle(benchmark::State& st) {
   Setup& s = setup("kec", false);
   const BodyStates& b = bodyStates();
-  vehicle::Workspace ws = vehicle::makeWorkspace(*s.model.vehicle);
+  vehicle::Workspace ws = vehicle::makeWorkspace(s.model.lead().vehicle);
   std::size_t k = 0;
   long n = 0;
   for (auto _ : st) {
     ws.q = b.q[k];
     ws.qd = b.qd[k];
-    for (int r = 0; r < 2; ++r) vehicle::evaluate(*s.model.vehicle, b.series[k].data(), ws);
+    for (int r = 0; r < 2; ++r) vehicle::evaluate(s.model.lead().vehicle, b.series[k].data(), ws);
     benchmark::DoNotOptimize(ws.force.data());
     k = (k + 1) % b.q.size();
     n += 2;
@@ -150,10 +150,10 @@ void BM_Vehicle(benchmark::State& st) {
 void BM_KecGeometry(benchmark::State& st) {
   Setup& s = setup("kec", false);
   const BodyStates& b = bodyStates();
-  const contact::KecTable& tab = *s.model.contact->kec;
+  const contact::KecTable& tab = *s.model.lead().contact->kec;
   const track::Irregularities* irr =
       s.model.track->irregularities() ? &*s.model.track->irregularities() : nullptr;
-  std::vector<contact::KecSolution> warm(s.model.contact->wheelsets.size());
+  std::vector<contact::KecSolution> warm(s.model.lead().contact->wheelsets.size());
   std::vector<bool> has(warm.size(), false);
   std::size_t k = 0;
   long n = 0;
@@ -162,8 +162,8 @@ void BM_KecGeometry(benchmark::State& st) {
   for (auto _ : st) {
     for (int r = 0; r < 2; ++r) {
       for (std::size_t w = 0; w < warm.size(); ++w) {
-        const auto& q = b.q[k][static_cast<std::size_t>(s.model.contact->wheelsets[w])];
-        const auto& qd = b.qd[k][static_cast<std::size_t>(s.model.contact->wheelsets[w])];
+        const auto& q = b.q[k][static_cast<std::size_t>(s.model.lead().contact->wheelsets[w])];
+        const auto& qd = b.qd[k][static_cast<std::size_t>(s.model.lead().contact->wheelsets[w])];
         track::IrregularityPoint ip;
         if (irr) ip = irr->at(q[vehicle::kS]);
         const contact::KecInput in{q[vehicle::kY], ip.y_l, ip.y_r, ip.z_l, ip.z_r};
@@ -191,7 +191,7 @@ void BM_KecGeometry(benchmark::State& st) {
 void BM_LutGeometry(benchmark::State& st) {
   Setup& s = setup("lut", false);
   const BodyStates& b = bodyStates();
-  const contact::LutTable& lut = *s.model.contact->lut;
+  const contact::LutTable& lut = *s.model.lead().contact->lut;
   const track::Irregularities* irr =
       s.model.track->irregularities() ? &*s.model.track->irregularities() : nullptr;
   std::size_t k = 0;
@@ -201,7 +201,7 @@ void BM_LutGeometry(benchmark::State& st) {
   double sink = 0.0;
   for (auto _ : st) {
     for (int r = 0; r < 2; ++r) {
-      for (int w : s.model.contact->wheelsets) {
+      for (int w : s.model.lead().contact->wheelsets) {
         const auto& q = b.q[k][static_cast<std::size_t>(w)];
         track::IrregularityPoint ip;
         if (irr) ip = irr->at(q[vehicle::kS]);
@@ -224,7 +224,7 @@ void BM_LutGeometry(benchmark::State& st) {
 // 60E1 tread: A = 1.09, B = 3.3 1/m).
 void BM_Creep(benchmark::State& st) {
   Setup& s = setup("kec", false);
-  const dynamics::ContactModel& c = *s.model.contact;
+  const dynamics::ContactModel& c = *s.model.lead().contact;
   std::vector<dynamics::WheelOutput> wo(2 * c.wheelsets.size());
   std::vector<std::vector<dynamics::WheelOutput>> rec;
   for (std::size_t k = 0; k < s.t.size(); k += 7) {
@@ -260,7 +260,7 @@ void BM_AugmentedSolve(benchmark::State& st) {
   Eigen::VectorXd yd(s.ode->size());
   s.ode->rhs(s.t[0], s.y[0].data(), yd.data());
   std::vector<Eigen::Matrix<double, 5, 5>> M;
-  for (int w : s.model.contact->wheelsets)
+  for (int w : s.model.lead().contact->wheelsets)
     M.push_back(ws.mass[static_cast<std::size_t>(w)].block<5, 5>(1, 1));
   Eigen::Matrix<double, 5, 2> N = Eigen::Matrix<double, 5, 2>::Zero();
   N << 0.05, -0.05, 0.99, 0.99, -0.75, 0.75, 0.0, 0.0, 0.001, -0.001;

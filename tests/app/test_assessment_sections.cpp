@@ -41,7 +41,7 @@ rb::run::Model compileCase3(const std::string& method, std::vector<std::string> 
 
 double totalMass(const rb::run::Model& m) {
   double mass = 0.0;
-  for (const auto& b : m.vehicle->bodies) mass += b.mass;
+  for (const auto& b : m.lead().vehicle.bodies) mass += b.mass;
   return mass;
 }
 

@@ -77,9 +77,9 @@ TEST(Checks, GaugeNarrowingBeyondTheFlangewayPlayIsAWarning) {
   TempDir t("gauge");
   const std::string f = t.write("fra5.lua", wagon("psd { spectrum = 'fra_class_5', seed = 42 }"));
   const rb::run::Model m = rb::run::compile(options(f));
-  ASSERT_TRUE(m.contact.has_value());
-  EXPECT_NEAR(m.contact->flangeway[0], 6.3e-3, 0.1e-3);
-  EXPECT_NEAR(m.contact->flangeway[1], 6.3e-3, 0.1e-3);
+  ASSERT_TRUE(m.hasContact());
+  EXPECT_NEAR(m.lead().contact->flangeway[0], 6.3e-3, 0.1e-3);
+  EXPECT_NEAR(m.lead().contact->flangeway[1], 6.3e-3, 0.1e-3);
   EXPECT_TRUE(anyContains(m.warnings, f + ":2: warning: the gauge irregularity narrows the gauge "
                                           "by 13 mm"));
   EXPECT_TRUE(anyContains(m.run_warnings, "both flanges of a wheelset touch at once"));

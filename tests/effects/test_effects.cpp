@@ -53,7 +53,7 @@ std::string loadError(const std::string& file, std::vector<std::string> ov = {})
 }
 
 bool hasKind(const rb::run::Model& m, const std::string& kind) {
-  const auto& k = m.vehicle->element_kinds;
+  const auto& k = m.lead().vehicle.element_kinds;
   return std::find(k.begin(), k.end(), kind) != k.end();
 }
 
@@ -98,8 +98,8 @@ TEST(Effects, BumpStopsOffLeavesNoBumpstopInTheCompiledVehicle) {
   const auto off = compiled(kCase3, {"run.effects.bump_stops=false"});
   EXPECT_TRUE(hasKind(full, "bumpstop"));
   EXPECT_FALSE(hasKind(off, "bumpstop"));
-  EXPECT_TRUE(off.vehicle->bumpstops.empty());
-  EXPECT_EQ(full.vehicle->bumpstops.size(), 2U);
+  EXPECT_TRUE(off.lead().vehicle.bumpstops.empty());
+  EXPECT_EQ(full.lead().vehicle.bumpstops.size(), 2U);
 }
 
 TEST(Effects, PlainSeriesDampersHaveFewerStates) {
@@ -107,9 +107,9 @@ TEST(Effects, PlainSeriesDampersHaveFewerStates) {
   const auto off = compiled(kCase3, {"run.effects.series_dampers=false"});
   const auto nFull = rb::run::makeVehicleOde(full)->size();
   const auto nOff = rb::run::makeVehicleOde(off)->size();
-  EXPECT_EQ(nFull - nOff, static_cast<int>(full.vehicle->series_dampers.size()));
-  EXPECT_GT(full.vehicle->series_dampers.size(), 0U);
-  EXPECT_TRUE(off.vehicle->series_dampers.empty());
+  EXPECT_EQ(nFull - nOff, static_cast<int>(full.lead().vehicle.series_dampers.size()));
+  EXPECT_GT(full.lead().vehicle.series_dampers.size(), 0U);
+  EXPECT_TRUE(off.lead().vehicle.series_dampers.empty());
   EXPECT_FALSE(hasKind(off, "series_damper"));
 }
 

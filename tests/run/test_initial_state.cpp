@@ -30,13 +30,13 @@ rb::run::Model compileFlangeCurve(const std::string& method) {
 TEST(InitialState, WheelsetsStartCentredBetweenTheirRails) {
   for (const std::string method : {"kec", "lut"}) {
     const rb::run::Model m = compileFlangeCurve(method);
-    rb::dynamics::ContactVehicleOde ode(*m.vehicle, *m.contact, *m.track);
+    rb::dynamics::ContactVehicleOde ode(m.lead().vehicle, *m.lead().contact, *m.track);
     const Eigen::VectorXd y0 = ode.initialState(0.0);
     const auto& layout = ode.layout();
     const auto& irr = *m.track->irregularities();
     double largest_offset = 0.0;
     for (int w = 0; w < layout.n_ws; ++w) {
-      const double s = m.vehicle->bodyS(static_cast<int>(layout.wheelset(w)), 0.0);
+      const double s = m.lead().vehicle.bodyS(static_cast<int>(layout.wheelset(w)), 0.0);
       const auto rail = irr.at(s);
       const double mid = 0.5 * (rail.y_l + rail.y_r);
       largest_offset = std::max(largest_offset, std::abs(mid));
@@ -62,7 +62,7 @@ TEST(InitialState, WheelsetsStartCentredBetweenTheirRails) {
 // wheel within 10 ms (flange contact from the set-up, then a violent transient).
 TEST(InitialState, KecWagonOnTheRoughCurveRunsWithoutWheelLift) {
   const rb::run::Model m = compileFlangeCurve("kec");
-  rb::dynamics::ContactVehicleOde ode(*m.vehicle, *m.contact, *m.track);
+  rb::dynamics::ContactVehicleOde ode(m.lead().vehicle, *m.lead().contact, *m.track);
   const Eigen::VectorXd y0 = ode.initialState(0.0);
   auto integ = rb::integ::makeIntegrator(m.solver);
   const auto res = rb::integ::integrate(ode, *integ, 0.0, y0, {0.1, 0.2},

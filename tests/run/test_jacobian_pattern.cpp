@@ -110,7 +110,7 @@ TEST(JacobianPattern, WagonPatternIsConservativeAndGroupedEqualsPlain) {
   for (const char* method : {"kec", "lut"}) {
     for (const char* spin : {"free", "prescribed"}) {
       const rb::run::Model m = compileWagon({method, spin, "none"});
-      rb::dynamics::ContactVehicleOde ode(*m.vehicle, *m.contact, *m.track);
+      rb::dynamics::ContactVehicleOde ode(m.lead().vehicle, *m.lead().contact, *m.track);
       const Jacobians j = differences(ode, randomState(ode, 17));
       // LUT without creep forces is free of iterations: exact zeros, equal quotients. KEC: the
       // residue of its Newton iteration.
@@ -128,7 +128,7 @@ TEST(JacobianPattern, GroupedEqualsPlainWithCreepForces) {
   for (const char* method : {"kec", "lut"}) {
     for (const char* spin : {"free", "prescribed"}) {
       const rb::run::Model m = compileWagon({method, spin, "polach"});
-      rb::dynamics::ContactVehicleOde ode(*m.vehicle, *m.contact, *m.track);
+      rb::dynamics::ContactVehicleOde ode(m.lead().vehicle, *m.lead().contact, *m.track);
       const Eigen::VectorXd y = randomState(ode, 5);
       const Jacobians j = differences(ode, y);
       const double scale = j.plain.cwiseAbs().maxCoeff();

@@ -73,15 +73,15 @@ TEST(StateOutputs, ContactOutputsAreTheModelsOwnFromOneEvaluation) {
     const rb::run::Model m = compileScene("scenarios/validation/case3_" + method + ".lua");
     // Two models of the same vehicle from the same start: one asked by the model's own calls,
     // one through StateOutputs.
-    rb::dynamics::ContactVehicleOde direct(*m.vehicle, *m.contact, *m.track);
-    rb::dynamics::ContactVehicleOde shared(*m.vehicle, *m.contact, *m.track);
+    rb::dynamics::ContactVehicleOde direct(m.lead().vehicle, *m.lead().contact, *m.track);
+    rb::dynamics::ContactVehicleOde shared(m.lead().vehicle, *m.lead().contact, *m.track);
     const Eigen::VectorXd y = offState(direct);
     ASSERT_EQ(offState(shared), y);
     const double t = 0.0;
-    const std::size_t nb = m.vehicle->bodies.size();
-    const std::vector<ElementId> ids = allElements(*m.vehicle);
+    const std::size_t nb = m.lead().vehicle.bodies.size();
+    const std::vector<ElementId> ids = allElements(m.lead().vehicle);
 
-    std::vector<rb::dynamics::WheelOutput> wheels(2 * m.contact->wheelsets.size());
+    std::vector<rb::dynamics::WheelOutput> wheels(2 * m.lead().contact->wheelsets.size());
     std::vector<Vector6d> qdd(nb);
     std::vector<ElementValue> values(ids.size());
     ASSERT_EQ(direct.wheelOutputs(t, y.data(), wheels), 0);
@@ -126,9 +126,9 @@ TEST(StateOutputs, ContactOutputsAreTheModelsOwnFromOneEvaluation) {
 
 TEST(StateOutputs, ElementsAloneCostOneEvaluation) {
   const rb::run::Model m = compileScene("scenarios/validation/case3_kec.lua");
-  rb::dynamics::ContactVehicleOde ode(*m.vehicle, *m.contact, *m.track);
+  rb::dynamics::ContactVehicleOde ode(m.lead().vehicle, *m.lead().contact, *m.track);
   const Eigen::VectorXd y = offState(ode);
-  const std::vector<ElementId> ids = allElements(*m.vehicle);
+  const std::vector<ElementId> ids = allElements(m.lead().vehicle);
   std::vector<ElementValue> direct(ids.size()), got(ids.size());
   ASSERT_EQ(ode.elementOutputs(0.0, y.data(), ids, direct), 0);
   rb::run::StateOutputs state(ode, &ode);
@@ -146,8 +146,8 @@ TEST(StateOutputs, GuidedVehicleHasNoWheelsAndSharesTheAccelerationsEvaluation) 
   Eigen::VectorXd y = direct->initialState(0.0);
   ASSERT_EQ(shared->initialState(0.0), y);
   y[direct->layout().position(0, 0)] += 1e-3;  // the car body 1 mm to the left
-  const std::vector<ElementId> ids = allElements(*m.vehicle);
-  std::vector<Vector6d> qdd(m.vehicle->bodies.size());
+  const std::vector<ElementId> ids = allElements(m.lead().vehicle);
+  std::vector<Vector6d> qdd(m.lead().vehicle.bodies.size());
   std::vector<ElementValue> values(ids.size()), got(ids.size());
   ASSERT_EQ(direct->bodyAccelerations(0.5, y.data(), qdd), 0);
   ASSERT_EQ(direct->elementOutputs(0.5, y.data(), ids, values), 0);

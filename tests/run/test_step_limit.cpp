@@ -114,7 +114,7 @@ TEST(StepLimit, FreeSpinCreepModeLimitsAbmBelowTheMillisecond) {
     o.root = RB_SOURCE_DIR;
     o.overrides = {std::string("contact.wheelset_spin=") + spin, "run.distance=10"};
     const rb::run::Model model = rb::run::compile(o);
-    rb::dynamics::ContactVehicleOde ode(*model.vehicle, *model.contact, *model.track);
+    rb::dynamics::ContactVehicleOde ode(model.lead().vehicle, *model.lead().contact, *model.track);
     const Eigen::VectorXd y0 = ode.initialState(0.0);
     const auto lim = rb::run::fixedStepLimit(ode, 0.0, y0, FixedStepMethod::Abm);
     ASSERT_TRUE(lim.computed) << lim.why_not;
@@ -150,19 +150,20 @@ std::string compileError(std::vector<std::string> overrides) {
 
 // Lateral displacement of every wheelset at every 10 ms over the first `seconds` of case 3.
 std::vector<double> wheelsetPaths(const rb::run::Model& m, double seconds) {
-  rb::dynamics::ContactVehicleOde ode(*m.vehicle, *m.contact, *m.track);
+  rb::dynamics::ContactVehicleOde ode(m.lead().vehicle, *m.lead().contact, *m.track);
   const Eigen::VectorXd y0 = ode.initialState(0.0);
   auto integ = rb::integ::makeIntegrator(m.solver);
   std::vector<double> times;
   for (int k = 1; k <= static_cast<int>(std::lround(seconds / 0.01)); ++k)
     times.push_back(k * 0.01);
   std::vector<double> out;
-  std::vector<rb::vehicle::Vector6d> q(m.vehicle->bodies.size());
+  std::vector<rb::vehicle::Vector6d> q(m.lead().vehicle.bodies.size());
   const auto res =
       rb::integ::integrate(ode, *integ, 0.0, y0, times, [&](double t, const Eigen::VectorXd& y) {
         ode.bodyCoordinates(t, y.data(), q);
         for (std::size_t b = 0; b < q.size(); ++b)
-          if (m.vehicle->bodies[b].kind == rb::vehicle::BodyKind::Wheelset) out.push_back(q[b][1]);
+          if (m.lead().vehicle.bodies[b].kind == rb::vehicle::BodyKind::Wheelset)
+            out.push_back(q[b][1]);
         return true;
       });
   EXPECT_TRUE(res.ok) << res.message;

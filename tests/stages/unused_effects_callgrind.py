@@ -27,7 +27,7 @@ UNUSED = {
     "series dampers": r"rb::suspension::seriesDamper",
     "element outputs": r"::elementOutputs\(",
     "body accelerations": r"::bodyAccelerations\(",
-    "assessment sampling": r"rb::run::\(anonymous namespace\)::sampleAssessment\(",
+    "assessment sampling": r"rb::run::sampleAssessment\(",
     "stage timing": r"rb::vehicle::StageClock::",
 }
 OVERRIDES = ["run.distance=10"]

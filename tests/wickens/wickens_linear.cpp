@@ -107,8 +107,8 @@ CentredParameters centredParameters(Case& c, double dy) {
   p.normal = left.normal;
   p.a = first.a;
   p.b = first.b;
-  const double nu = c.model->contact->material.nu;
-  const double G = c.model->contact->creep_params.G;
+  const double nu = c.model->lead().contact->material.nu;
+  const double G = c.model->lead().contact->creep_params.G;
   for (const auto& q : left.patch) {
     if (!q.active) continue;
     const creep::KalkerCoefficients k = creep::kalkerCoefficients(q.a / q.b, nu);
@@ -136,7 +136,7 @@ CentredParameters centredParameters(Case& c, double dy) {
   const auto roll = [&](double y) {
     Eigen::VectorXd s = y0;
     s[ode.layout().wsPosition(0, 0)] += y;
-    std::vector<vehicle::Vector6d> q(c.model->vehicle->bodies.size());
+    std::vector<vehicle::Vector6d> q(c.model->lead().vehicle.bodies.size());
     if (ode.bodyCoordinates(0.0, s.data(), q) != 0)
       throw std::runtime_error("body coordinates failed: " + ode.lastError());
     return q[static_cast<std::size_t>(ws)][vehicle::kRoll];

@@ -23,7 +23,7 @@ namespace rbtest::wickens {
 // tables stay).
 struct Case {
   std::unique_ptr<rb::run::Model> model;
-  void setSpeed(double v) { model->vehicle->speed = v; }
+  void setSpeed(double v) { model->vehicles.front().vehicle.speed = v; }
 };
 
 // A scenario of scenarios/stability/ (e.g. "wickens.lua") with `overrides` (--set key=value).

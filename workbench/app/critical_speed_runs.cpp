@@ -29,7 +29,7 @@ std::vector<std::string> runOverrides(const RunSetup& s, double v0, double a, do
 
 std::vector<std::string> wheelsetNames(const run::Model& m) {
   std::vector<std::string> names;
-  for (const auto& b : m.vehicle->bodies)
+  for (const auto& b : m.lead().vehicle.bodies)
     if (b.kind == vehicle::BodyKind::Wheelset) names.push_back(b.name);
   return names;
 }

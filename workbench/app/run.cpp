@@ -170,7 +170,7 @@ int runScenario(const RunOptions& options) {
   if (!stored.empty()) msg << ", " << stored;
 
   int rc = 0;
-  if (c.vehicle) {
+  if (c.hasVehicle()) {
     run::VehicleRunOptions vo;
     vo.progress = !options.quiet && isatty(STDERR_FILENO);  // only for a person at a terminal
     vo.stage_period = period;
@@ -187,11 +187,12 @@ int runScenario(const RunOptions& options) {
     for (const auto& line : res.assessment_summary) std::cout << line << "\n";
     if (res.assessment_summary.empty())
       for (const auto& n : res.assessment_notes) std::cout << n << "\n";
-    if (c.contact)
-      msg << "; vehicle " << c.vehicle->name << " with " << nameOf(c.contact->method) << " contact";
+    const vehicle::VehicleModel& v = c.lead().vehicle;
+    if (c.hasContact())
+      msg << "; vehicle " << v.name << " with " << nameOf(c.lead().contact->method) << " contact";
     else
-      msg << "; vehicle " << c.vehicle->name << " (" << c.vehicle->bodies.size() << " bodies, "
-          << c.vehicle->elementCount() << " elements)";
+      msg << "; vehicle " << v.name << " (" << v.bodies.size() << " bodies, " << v.elementCount()
+          << " elements)";
     if (!res.result.ok) {
       std::cerr << c.spec.file << ": run failed: " << res.result.message << "\n";
       rc = 2;

@@ -4,8 +4,7 @@
 
 namespace rb::io {
 
-void writeInitialConditions(ResultFile& f, const InitialConditionsRecord& r) {
-  const std::string g = "/initial_conditions";
+void writeInitialConditions(ResultFile& f, const InitialConditionsRecord& r, const std::string& g) {
   f.attr(g, "count", static_cast<std::int64_t>(r.value.size()));
   f.attr(g, "description",
          std::string("vehicle.initial: offsets of body coordinates (track frame) and rates added "

@@ -20,6 +20,9 @@ struct InitialConditionsRecord {
 
 // Writes /initial_conditions/{body, key, value, unit, state_names, equilibrium, state} and the
 // group attribute `count` (number of conditions).
-void writeInitialConditions(ResultFile& f, const InitialConditionsRecord& r);
+// Into the group g: /initial_conditions, or /vehicles/<name>/initial_conditions for a vehicle of a
+// run of several.
+void writeInitialConditions(ResultFile& f, const InitialConditionsRecord& r,
+                            const std::string& g = "/initial_conditions");
 
 }  // namespace rb::io

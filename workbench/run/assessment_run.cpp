@@ -383,15 +383,16 @@ void writeSliding(io::ResultFile& f, const std::string& g, const Assessed& a,
   f.attr(g, "lower", s.stats.lower);
 }
 
-void writeSafety(io::ResultFile& f, const AssessmentSignals& sig, const AssessmentResult& r) {
+void writeSafety(io::ResultFile& f, const std::string& root, const AssessmentSignals& sig,
+                 const AssessmentResult& r) {
   for (std::size_t k = 0; k < r.wheel_safety.size(); ++k) {
     const auto& w = sig.wheels[k];
     const auto& s = r.wheel_safety[k];
-    const std::string base = "/assessment/safety/" + w.wheelset + "/" + w.side + "/";
+    const std::string base = root + "/safety/" + w.wheelset + "/" + w.side + "/";
     writeSliding(f, base + "y_over_q", s.yq, s.y_over_q, "-");
     // Window ends in this wheel's own arc length.
     f.dataset(base + "y_over_q/s", s.y_over_q.series.position, "m");
-    f.attr("/assessment/safety/" + w.wheelset + "/" + w.side, "s_offset", w.s_offset);
+    f.attr(root + "/safety/" + w.wheelset + "/" + w.side, "s_offset", w.s_offset);
     f.attr(base + "y_over_q", "nadal_limit", s.nadal_limit);
     f.attr(base + "y_over_q", "flange_angle", r.spec.flange_angle);
     f.attr(base + "y_over_q", "mu", s.nadal_mu);
@@ -403,13 +404,13 @@ void writeSafety(io::ResultFile& f, const AssessmentSignals& sig, const Assessme
     writeAssessed(f, base + "q_max", s.q_max);
     f.attr(base + "q_max", "q0", w.q0);
     // The sampled wheel forces, so that `workbench assess` can recompute from the file.
-    f.attr("/assessment/safety/" + w.wheelset + "/" + w.side, "q0", w.q0);
+    f.attr(root + "/safety/" + w.wheelset + "/" + w.side, "q0", w.q0);
     f.dataset(base + "Y", w.Y, "N");
     f.dataset(base + "Q", w.Q, "N");
     f.dataset(base + "y_track", w.y_track, "N");
   }
   for (const auto& ws : r.wheelset_safety) {
-    const std::string g = "/assessment/safety/" + ws.wheelset + "/sum_y";
+    const std::string g = root + "/safety/" + ws.wheelset + "/sum_y";
     writeSliding(f, g, ws.sy, ws.sum_y, "N");
     f.dataset(g + "/s", ws.sum_y.series.position, "m");
     f.attr(g, "alpha", r.spec.alpha);
@@ -450,13 +451,14 @@ void writeSectionWheel(io::ResultFile& f, const std::string& g, const SectionWhe
 
 // /assessment/sections/<name>: the section (kind, test zone, range, radius, cant) and its
 // quantities, worst first (as /assessment/summary) and per wheel and wheelset.
-void writeSections(io::ResultFile& f, const AssessmentSignals& sig, const AssessmentResult& r) {
+void writeSections(io::ResultFile& f, const std::string& root, const AssessmentSignals& sig,
+                   const AssessmentResult& r) {
   std::vector<std::string> names;
   for (std::size_t i = 0; i < r.sections.size(); ++i) {
     const SectionResult& sr = r.sections[i];
     const auto& sec = sr.section;
     names.push_back(sec.name);
-    const std::string g = "/assessment/sections/" + sec.name;
+    const std::string g = root + "/sections/" + sec.name;
     f.attr(g, "order", static_cast<std::int64_t>(i));
     f.attr(g, "kind", std::string(nameOf(sec.kind)));
     f.attr(g, "zone", std::string(nameOf(sec.zone)));
@@ -480,13 +482,14 @@ void writeSections(io::ResultFile& f, const AssessmentSignals& sig, const Assess
       if (std::isfinite(a.at_s)) f.attr(wg, "sum_y_at_s", a.at_s);
     }
   }
-  if (!names.empty()) f.attr("/assessment/sections", "names", join(names, "\n"));
+  if (!names.empty()) f.attr(root + "/sections", "names", join(names, "\n"));
 }
 
-void writeStability(io::ResultFile& f, const AssessmentSignals& sig, const AssessmentResult& r) {
+void writeStability(io::ResultFile& f, const std::string& root, const AssessmentSignals& sig,
+                    const AssessmentResult& r) {
   for (std::size_t k = 0; k < r.stability.size(); ++k) {
     const auto& s = r.stability[k];
-    const std::string g = "/assessment/stability/" + s.bogie + "/" + s.wheelset;
+    const std::string g = root + "/stability/" + s.bogie + "/" + s.wheelset;
     writeAssessed(f, g, s.a);
     f.dataset(g + "/s", s.st.series.position, "m");
     f.dataset(g + "/rms", s.st.series.value, "m/s^2");
@@ -497,11 +500,12 @@ void writeStability(io::ResultFile& f, const AssessmentSignals& sig, const Asses
   }
 }
 
-void writeComfort(io::ResultFile& f, const AssessmentSignals& sig, const AssessmentResult& r) {
+void writeComfort(io::ResultFile& f, const std::string& root, const AssessmentSignals& sig,
+                  const AssessmentResult& r) {
   for (std::size_t k = 0; k < r.comfort.size(); ++k) {
     const auto& c = r.comfort[k];
     const auto& p = sig.floor[k];
-    const std::string g = "/assessment/comfort/" + c.name;
+    const std::string g = root + "/comfort/" + c.name;
     f.dataset(g + "/a_x", p.ax, "m/s^2");
     f.dataset(g + "/a_y", p.ay, "m/s^2");
     f.dataset(g + "/a_z", p.az, "m/s^2");
@@ -527,10 +531,11 @@ void writeWearSummary(io::ResultFile& f, const std::string& g,
   f.attr(g, "energy", s.energy);
 }
 
-void writeWear(io::ResultFile& f, const AssessmentSignals& sig, const AssessmentResult& r) {
+void writeWear(io::ResultFile& f, const std::string& root, const AssessmentSignals& sig,
+               const AssessmentResult& r) {
   for (std::size_t k = 0; k < r.wear.size(); ++k) {
     const auto& w = r.wear[k];
-    const std::string g = "/assessment/wear/" + sig.wheels[k].wheelset + "/" + sig.wheels[k].side;
+    const std::string g = root + "/wear/" + sig.wheels[k].wheelset + "/" + sig.wheels[k].side;
     f.dataset(g + "/t_gamma", w.t_gamma, "N");
     f.dataset(g + "/power", w.power, "W");
     writeWearSummary(f, g, w.wheel);
@@ -544,8 +549,8 @@ void writeWear(io::ResultFile& f, const AssessmentSignals& sig, const Assessment
   }
 }
 
-void writeSummary(io::ResultFile& f, const AssessmentResult& r) {
-  const std::string g = "/assessment/summary";
+void writeSummary(io::ResultFile& f, const std::string& root, const AssessmentResult& r) {
+  const std::string g = root + "/summary";
   writeItems(f, g, r.summary);
   bool all_ok = true;
   for (const auto& it : r.summary) all_ok = all_ok && it.a.check.ok();
@@ -560,8 +565,9 @@ std::string joinLines(const std::vector<std::string>& v) {
 
 }  // namespace
 
-void writeAssessment(io::ResultFile& f, const AssessmentSignals& sig, const AssessmentResult& r) {
-  const std::string g = "/assessment";
+void writeAssessment(io::ResultFile& f, const AssessmentSignals& sig, const AssessmentResult& r,
+                     const std::string& root) {
+  const std::string& g = root;
   f.attr(g, "standards",
          std::string("EN 14363:2005 / UIC 518 (running safety, track loading, stability); EN "
                      "12299:2009 (ride comfort); Sperling Wz; T gamma wear number"));
@@ -578,14 +584,14 @@ void writeAssessment(io::ResultFile& f, const AssessmentSignals& sig, const Asse
   f.attr(g, "comfort_limit", r.spec.comfort_limit);
   f.dataset(g + "/time", sig.time, "s");
   f.dataset(g + "/distance", sig.distance, "m");
-  writeSummary(f, r);
+  writeSummary(f, root, r);
   f.attr(g, "q0_source", sig.q0_source);
   f.attr(g, "category", std::string(nameOf(r.spec.category)));
-  if (r.spec.safety) writeSafety(f, sig, r);
-  if (r.spec.safety) writeSections(f, sig, r);
-  if (r.spec.stability) writeStability(f, sig, r);
-  if (r.spec.comfort) writeComfort(f, sig, r);
-  if (r.spec.wear) writeWear(f, sig, r);
+  if (r.spec.safety) writeSafety(f, root, sig, r);
+  if (r.spec.safety) writeSections(f, root, sig, r);
+  if (r.spec.stability) writeStability(f, root, sig, r);
+  if (r.spec.comfort) writeComfort(f, root, sig, r);
+  if (r.spec.wear) writeWear(f, root, sig, r);
 }
 
 double spectrumPeak(const std::vector<double>& x, double dt, double f_low, double f_high,

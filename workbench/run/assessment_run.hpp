@@ -144,10 +144,11 @@ struct AssessmentResult {
 AssessmentResult assess(const AssessmentSignals& signals, const assessment::AssessmentSpec& spec,
                         double contact_mu);
 
-// Writes /assessment (ASSESSMENT_LAYOUT: one group per quantity with unit, value, limit, margin,
-// ok, clause, at_s) and its series.
-void writeAssessment(io::ResultFile& f, const AssessmentSignals& signals,
-                     const AssessmentResult& r);
+// Writes the group `root` (/assessment, or a vehicle's /vehicles/<name>/assessment in a run of
+// several; ASSESSMENT_LAYOUT: one group per quantity with unit, value, limit, margin, ok, clause,
+// at_s) and its series.
+void writeAssessment(io::ResultFile& f, const AssessmentSignals& signals, const AssessmentResult& r,
+                     const std::string& root = "/assessment");
 
 // The one-screen summary printed after a run: one line per summary quantity, "ok" or
 // "EXCEEDED".

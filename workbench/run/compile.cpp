@@ -34,9 +34,9 @@ void checkRamp(const Model& c, Diagnostics& d) {
                                 " s, before run.duration = " + formatNumber(spec.run.duration) +
                                 " s");
   if (!(spec.run.duration > 0)) {
-    const double dist = spec.run.distance > 0
-                            ? spec.run.distance
-                            : c.track->geometry().length() - (c.vehicle->start + c.leadingX());
+    const double dist = spec.run.distance > 0 ? spec.run.distance
+                                              : c.track->geometry().length() -
+                                                    (c.lead().vehicle.start + c.leadingX());
     if (spec.vehicle.speed * spec.vehicle.speed + 2.0 * a * dist < 0.0)
       d.add(spec.vehicle.loc,
             "vehicle: acceleration " + formatNumber(a) + " m/s^2 stops the vehicle after " +
@@ -50,7 +50,7 @@ void checkRamp(const Model& c, Diagnostics& d) {
 double endTime(const Model& c) {
   const auto& run = c.spec.run;
   if (run.duration > 0) return run.duration;
-  const auto& v = *c.vehicle;
+  const auto& v = c.lead().vehicle;
   double distance =
       run.distance > 0 ? run.distance : c.track->geometry().length() - (v.start + c.leadingX());
   distance = std::max(distance, 0.0);
@@ -77,7 +77,7 @@ double endTime(const Model& c) {
 // a tangent without gradient: the rear bodies of a vehicle whose reference point starts at s = 0
 // stand there (the paper's validation runs); before any other first segment it is an error.
 void checkTrackRange(const Model& c, Diagnostics& d) {
-  const auto& v = *c.vehicle;
+  const auto& v = c.lead().vehicle;
   const double length = c.track->geometry().length();
   const double tol = 1e-9 * std::max(1.0, length);
   const Model::Stretch covered = c.coveredStretch();
@@ -147,20 +147,25 @@ void checkOutputs(const Model& c, Diagnostics& d) {
 
 }  // namespace
 
-double Model::leadingX() const {
+double RunVehicle::leadingX() const {
   double lead = -1e300;
-  for (const auto& b : vehicle->bodies) lead = std::max(lead, b.x);
+  for (const auto& b : vehicle.bodies) lead = std::max(lead, b.x);
   return lead;
 }
 
-double Model::trailingX() const {
+double RunVehicle::trailingX() const {
   double rear = 1e300;
-  for (const auto& b : vehicle->bodies) rear = std::min(rear, b.x);
+  for (const auto& b : vehicle.bodies) rear = std::min(rear, b.x);
   return rear;
 }
 
 Model::Stretch Model::coveredStretch() const {
-  return {vehicle->start + trailingX(), vehicle->start + leadingX() + vehicle->travel(t_end)};
+  Stretch out{1e300, -1e300};
+  for (const auto& v : vehicles) {
+    out.s_from = std::min(out.s_from, v.vehicle.start + v.trailingX());
+    out.s_to = std::max(out.s_to, v.vehicle.start + v.leadingX() + v.vehicle.travel(t_end));
+  }
+  return out;
 }
 
 namespace {
@@ -189,17 +194,21 @@ void compileParts(const CompileOptions& o, Model& c, Diagnostics& d) {
   }
   if (spec.has_vehicle && c.track) {
     try {
-      c.vehicle = vehicle::compileVehicle(spec.vehicle, *c.track);
+      RunVehicle v;
+      v.vehicle = vehicle::compileVehicle(spec.vehicle, *c.track);
+      v.initial = spec.vehicle.initial;
+      c.vehicles.push_back(std::move(v));
     } catch (const InputError& e) {
       d.add(e);
     }
   }
-  if (c.vehicle && spec.has_contact) {
+  if (c.hasVehicle() && spec.has_contact) {
     try {
       dynamics::TableCache cache =
           o.table_cache.empty() ? dynamics::TableCache() : dynamics::TableCache(o.table_cache);
-      c.contact =
-          dynamics::compileContact(spec.profiles, spec.contact, *c.vehicle, *c.track, &cache);
+      RunVehicle& v = c.vehicles.front();
+      v.contact =
+          dynamics::compileContact(spec.profiles, spec.contact, v.vehicle, *c.track, &cache);
     } catch (const InputError& e) {
       d.add(e);
     }
@@ -219,13 +228,14 @@ void checkWithoutVehicle(const Model& c, Diagnostics& d) {
 // The element outputs by name, the speed ramp, the end time, the track range and the outputs.
 void checkVehicleRun(Model& c, Diagnostics& d) {
   const auto& spec = c.spec;
+  const vehicle::VehicleModel& v = c.lead().vehicle;
   for (const auto& name : spec.run.output_elements) {
-    if (auto id = c.vehicle->findElement(name)) {
-      c.output_elements.push_back(*id);
+    if (auto id = v.findElement(name)) {
+      c.vehicles.front().output_elements.push_back(*id);
       continue;
     }
     std::vector<std::string> names;
-    for (auto id : c.vehicle->elements()) names.push_back(c.vehicle->elementName(id));
+    for (auto id : v.elements()) names.push_back(v.elementName(id));
     std::string hint = closestMatch(name, names);
     d.add(spec.run.loc, "run.output.elements: no element named '" + name + "'" +
                             (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
@@ -248,15 +258,16 @@ void checkVehicleRun(Model& c, Diagnostics& d) {
 // the rail (a method without constraint tables) lose contact over it and land hard, so there it
 // is a warning of the run as well. Empty when nothing starts before a step of 0.01 mm or more.
 std::string irregularityStepWarning(const Model& c) {
-  if (!c.vehicle || !c.track->irregularities()) return {};
+  if (!c.hasVehicle() || !c.track->irregularities()) return {};
   const track::IrregularityPoint p = c.track->irregularities()->at(0.0);
   const double step =
       std::max({std::abs(p.y_l), std::abs(p.y_r), std::abs(p.z_l), std::abs(p.z_r)});
   if (!(step >= 1e-5)) return {};
   std::vector<std::string> behind;
-  for (const auto& b : c.vehicle->bodies)
-    if (b.kind == vehicle::BodyKind::Wheelset && c.vehicle->start + b.x < 0.0)
-      behind.push_back(b.name);
+  for (const auto& v : c.vehicles)
+    for (const auto& b : v.vehicle.bodies)
+      if (b.kind == vehicle::BodyKind::Wheelset && v.vehicle.start + b.x < 0.0)
+        behind.push_back(v.name.empty() ? b.name : v.name + "." + b.name);
   if (behind.empty()) return {};
   return "track.irregularities begin at s = 0 without a fade-in and " + join(behind, ", ") +
          (behind.size() == 1 ? " starts" : " start") +
@@ -274,18 +285,18 @@ void collectWarnings(Model& c) {
                          "' are UNVERIFIED against a primary source (see docs/track.md)");
   for (const auto& w : c.track->warnings())
     c.warnings.push_back(w.loc.str() + ": warning: " + w.message);
-  if (c.contact) {
-    for (const auto& w : c.contact->warnings)
+  if (c.hasContact()) {
+    for (const auto& w : c.lead().contact->warnings)
       c.warnings.push_back(w);  // already "file:line: warning: ..."
     // Printed by check and run, and recorded in the result's /stats/warnings.
-    for (const auto& w : c.contact->gauge_warnings) {
+    for (const auto& w : c.lead().contact->gauge_warnings) {
       c.warnings.push_back(irr.loc.str() + ": warning: " + w);
       c.run_warnings.push_back(w);
     }
   }
   if (const std::string w = irregularityStepWarning(c); !w.empty()) {
     c.warnings.push_back(irr.loc.str() + ": warning: " + w);
-    if (c.contact && !dynamics::methodInfo(spec.contact.method).table)
+    if (c.hasContact() && !dynamics::methodInfo(spec.contact.method).table)
       c.run_warnings.push_back(w + "; wheels may lose contact over it and land hard");
   }
 }
@@ -380,7 +391,7 @@ void checkFlangeway(const Model& c, dynamics::ContactVehicleOde& ode,
   }
   const auto& initial = c.spec.vehicle.initial;
   const int w = wheel / 2;
-  const std::string body = c.vehicle->bodies[ode.layout().wheelset(w)].name;
+  const std::string body = ode.model().bodies[ode.layout().wheelset(w)].name;
   std::string limit = "the wheels stay on their treads up to " + formatNumber(lo) + " times them";
   if (initial.size() == 1)
     limit += " (here " + formatNumber(std::abs(lo * initial.front().value)) + " in magnitude)";
@@ -422,11 +433,40 @@ void checkInitialState(const Model& c, vehicle::VehicleOde& ode, Eigen::VectorXd
 
 }  // namespace
 
-std::unique_ptr<vehicle::VehicleOde> makeVehicleOde(const Model& m) {
-  RB_CHECK(m.vehicle.has_value(), "makeVehicleOde needs a vehicle");
-  if (m.contact)
-    return std::make_unique<dynamics::ContactVehicleOde>(*m.vehicle, *m.contact, *m.track);
-  return std::make_unique<vehicle::GuidedVehicleOde>(*m.vehicle);
+std::unique_ptr<vehicle::VehicleOde> makeVehicleOde(const Model& m, std::size_t k) {
+  RB_CHECK(k < m.vehicles.size(), "makeVehicleOde needs a vehicle");
+  const RunVehicle& v = m.vehicles[k];
+  if (v.contact)
+    return std::make_unique<dynamics::ContactVehicleOde>(v.vehicle, *v.contact, *m.track);
+  return std::make_unique<vehicle::GuidedVehicleOde>(v.vehicle);
+}
+
+std::unique_ptr<train::TrainOde> makeRunOde(const Model& m) {
+  std::vector<train::TrainOde::Part> parts;
+  for (std::size_t k = 0; k < m.vehicles.size(); ++k)
+    parts.push_back({m.vehicles[k].name, makeVehicleOde(m, k)});
+  return std::make_unique<train::TrainOde>(std::move(parts), m.connections);
+}
+
+void addVehicle(Model& m, RunVehicle v) {
+  RB_CHECK(m.hasVehicle() && m.track.has_value(), "addVehicle needs a compiled vehicle run");
+  Diagnostics d;
+  const SourceLoc& loc = m.spec.vehicle.loc;
+  for (const auto& name : {m.lead().name, v.name})
+    if (name.empty())
+      d.add(loc, "a run of several vehicles: every vehicle needs a name of its own");
+  for (const auto& other : m.vehicles)
+    if (!v.name.empty() && other.name == v.name)
+      d.add(loc, "a run of several vehicles: two vehicles are named '" + v.name + "'");
+  const double length = m.track->geometry().length();
+  const double rear = v.vehicle.start + v.trailingX();
+  const double lead_end = v.vehicle.start + v.leadingX() + v.vehicle.travel(m.t_end);
+  if (rear < 0.0 || lead_end > length)
+    d.add(loc, "vehicle '" + v.name + "': its bodies cover s = " + formatNumber(rear) + " to " +
+                   formatNumber(lead_end) + " m over the run, beyond the track (0 to " +
+                   formatNumber(length) + " m)");
+  d.throwIfAny();
+  m.vehicles.push_back(std::move(v));
 }
 
 Model compile(const CompileOptions& o) {
@@ -438,7 +478,7 @@ Model compile(const CompileOptions& o) {
   Diagnostics d;
   compileParts(o, c, d);
   if (!c.spec.has_vehicle) checkWithoutVehicle(c, d);
-  if (c.vehicle) checkVehicleRun(c, d);
+  if (c.hasVehicle()) checkVehicleRun(c, d);
   d.throwIfAny();
   // An assessment group the vehicle cannot give (safety without wheel/rail contact, comfort
   // without a car body) is an error of the scenario, whoever compiles it.
@@ -448,7 +488,7 @@ Model compile(const CompileOptions& o) {
   // (the contact points inside the tables, no wheel lift), a guided vehicle's on its suspension.
   // The run computes it again on its own system (the lagged normal-force memory starts there).
   // A fixed step must also be stable on the stiffest mode there (step_limit.hpp).
-  if (c.vehicle) {
+  if (c.hasVehicle()) {
     const std::unique_ptr<vehicle::VehicleOde> ode = makeVehicleOde(c);
     Eigen::VectorXd y0 = ode->initialState(0.0);
     checkInitialState(c, *ode, y0, d);

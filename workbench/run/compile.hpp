@@ -17,6 +17,7 @@
 #include "workbench/run/step_limit.hpp"
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/track/track.hpp"
+#include "workbench/train/train_ode.hpp"
 #include "workbench/vehicle/model.hpp"
 #include "workbench/vehicle/vehicle_ode.hpp"
 
@@ -30,13 +31,37 @@ struct CompileOptions {
   std::string table_cache;
 };
 
+// One vehicle of a run: its bodies, elements and wheelsets (vehicle.start places it along the
+// track), its wheel/rail contact (none: guided wheelsets), the offsets its run starts from, and
+// the name that keeps its outputs apart from the other vehicles'.
+struct RunVehicle {
+  // Empty for the only vehicle of a run: its outputs are the file's /bodies, /contact, ...
+  // groups. In a run of several every vehicle is named and its groups are under prefix().
+  std::string name;
+  vehicle::VehicleModel vehicle;
+  std::optional<dynamics::ContactModel> contact;
+  std::vector<vehicle::InitialCondition> initial;   // vehicle.initial
+  std::vector<vehicle::ElementId> output_elements;  // run.output.elements
+
+  // "" or "/vehicles/<name>": what the paths of this vehicle's outputs begin with.
+  std::string prefix() const { return name.empty() ? std::string() : "/vehicles/" + name; }
+  // Body position x of the foremost and the rearmost body relative to the vehicle's reference
+  // point.
+  double leadingX() const;
+  double trailingX() const;
+};
+
 struct Model {
   scenario::ScenarioSpec spec;
   std::optional<track::TrackModel> track;
-  std::optional<vehicle::VehicleModel> vehicle;
-  std::optional<dynamics::ContactModel> contact;
-  integ::SolverSpec solver;  // the scenario's, or the paper's default (ABM, 1 ms)
-  std::vector<vehicle::ElementId> output_elements;
+  // The vehicles of the run, front to rear: the first leads (a run's distance and a failure's
+  // distance are measured at its foremost body). Empty: a track-only scenario. A scenario gives
+  // one vehicle; a run of several is built by adding vehicles (addVehicle) to a compiled one.
+  std::vector<RunVehicle> vehicles;
+  // Force elements between the vehicles (buffers, couplers): none yet (train::TrainOde refuses
+  // them), so the vehicles of a run move independently.
+  std::vector<train::Connection> connections;
+  integ::SolverSpec solver;           // the scenario's, or the paper's default (ABM, 1 ms)
   double track_build_s = 0.0;         // [s] wall time of the track build
   double t_end = 0.0;                 // [s] simulated time of a vehicle run
   std::vector<std::string> warnings;  // "file:line: warning: ...", printed by the app
@@ -46,14 +71,16 @@ struct Model {
   StepLimit step_limit;
   std::vector<std::string> run_warnings;
 
-  bool hasVehicle() const { return vehicle.has_value(); }
-  bool hasContact() const { return contact.has_value(); }
-  // Body position x of the leading body (largest x: the first wheelset of the wagon) relative to
-  // the vehicle's reference point. A run's distance and a failure's distance are measured there.
-  double leadingX() const;
-  double trailingX() const;
-  // The stretch of track [s_from, s_to] a vehicle run covers: from its rearmost body at the start
-  // to its leading body at t_end.
+  bool hasVehicle() const { return !vehicles.empty(); }
+  // The leading vehicle (the only one of a run a scenario gives): what the analyses of one
+  // vehicle (modes, critical speed, static wheel loads) work on.
+  const RunVehicle& lead() const { return vehicles.front(); }
+  bool hasContact() const { return hasVehicle() && lead().contact.has_value(); }
+  // leadingX() of the leading vehicle: a run's distance and a failure's distance are measured at
+  // its foremost body (the first wheelset of the wagon).
+  double leadingX() const { return lead().leadingX(); }
+  // The stretch of track [s_from, s_to] a vehicle run covers: from the rearmost body of its last
+  // vehicle at the start to the foremost body of its first at t_end.
   struct Stretch {
     double s_from = 0.0, s_to = 0.0;  // [m]
   };
@@ -63,9 +90,16 @@ struct Model {
 // Throws InputError with every problem found.
 Model compile(const CompileOptions& options);
 
-// The vehicle ODE of a compiled model with a vehicle: on wheel/rail contact when the model has a
-// contact block, guided otherwise. compile() and runVehicle() both build theirs here.
-std::unique_ptr<vehicle::VehicleOde> makeVehicleOde(const Model& model);
+// The vehicle ODE of vehicle k of a compiled model: on wheel/rail contact when it has a contact
+// model, guided otherwise. compile() and runVehicle() both build theirs here.
+std::unique_ptr<vehicle::VehicleOde> makeVehicleOde(const Model& model, std::size_t k = 0);
+// The ODE of a whole run: every vehicle's, one after the other (train::TrainOde).
+std::unique_ptr<train::TrainOde> makeRunOde(const Model& model);
+
+// Adds v behind the model's vehicles (v.vehicle.start places it; it runs at the model's speed
+// over the model's t_end on its track). Every vehicle of a run of several must be named, with a
+// name of its own: InputError otherwise, or when v's bodies are not on the track at the start.
+void addVehicle(Model& model, RunVehicle v);
 
 // Upper bound of output samples per run unless run.output.max_samples says otherwise.
 inline constexpr double kDefaultMaxOutputSamples = 1e7;

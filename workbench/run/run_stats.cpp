@@ -56,10 +56,11 @@ std::string percent(double share) {
 
 std::vector<EffectUse> compiledEffects(const Model& m) {
   std::vector<EffectUse> out;
-  if (!m.vehicle) return out;
-  const vehicle::VehicleModel& v = *m.vehicle;
-  if (m.contact)
-    contactEffects(*m.contact, out);
+  // The effects of the leading vehicle: the vehicles of a run share the scenario's.
+  if (!m.hasVehicle()) return out;
+  const vehicle::VehicleModel& v = m.lead().vehicle;
+  if (m.hasContact())
+    contactEffects(*m.lead().contact, out);
   else
     out.push_back({Effect::GuidedWheelsets, ""});
   if (m.track && m.track->irregularities())
@@ -72,8 +73,8 @@ std::vector<EffectUse> compiledEffects(const Model& m) {
   addCount(out, Effect::ShearSprings, v.shear_springs.size());
   addCount(out, Effect::BendingSprings, v.bending_springs.size());
   addCount(out, Effect::BumpStops, v.bumpstops.size());
-  if (m.contact && m.spec.run.output_patches) out.push_back({Effect::Patches, ""});
-  addCount(out, Effect::ElementOutputs, m.output_elements.size());
+  if (m.hasContact() && m.spec.run.output_patches) out.push_back({Effect::Patches, ""});
+  addCount(out, Effect::ElementOutputs, m.lead().output_elements.size());
   if (m.spec.run.body_accelerations) out.push_back({Effect::BodyAccelerations, ""});
   const assessment::AssessmentSpec a = applicableAssessment(m);
   if (a.any()) out.push_back({Effect::Assessment, assessmentGroups(a)});

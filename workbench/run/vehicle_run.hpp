@@ -1,7 +1,8 @@
 #pragma once
-// The one vehicle-run path: a compiled Model with a vehicle (wheelsets guided along the track, or
-// on wheel/rail contact by the KEC or LUT method) is integrated into a result file with one set
-// of outputs, so every run.output key means the same in every vehicle run:
+// The one vehicle-run path: a compiled Model with its vehicles (wheelsets guided along the track,
+// or on wheel/rail contact by a contact method) is integrated into a result file with one set of
+// outputs, so every run.output key means the same in every vehicle run (the groups below are
+// the only vehicle's; in a run of several each vehicle's are under /vehicles/<name>):
 //   /vehicle/speed; /bodies/<b>/{s, y, z, roll, pitch, yaw} (track frame of the body);
 //   with run.output.body_accelerations /bodies/<b>/{ax, ay, az}: the absolute acceleration of the
 //     centre of mass in the body's track-frame components [m/s^2];
@@ -18,6 +19,7 @@
 #include "workbench/io/result_file.hpp"
 #include "workbench/run/compile.hpp"
 #include "workbench/run/run_stats.hpp"
+#include "workbench/run/vehicle_assessment.hpp"
 #include "workbench/vehicle/stage_clock.hpp"
 
 namespace rb::run {
@@ -38,31 +40,9 @@ struct VehicleRunResult {
   StageCosts costs;                // /stats/stage_*
 };
 
-// Refuses (InputError at run.assessment's file:line) assessment groups a vehicle cannot give when
-// the scenario names them: safety and wear need wheel/rail contact, stability a bogie, comfort a
-// car body. run.assessment = true drops them instead. check and run call it after compile().
-void checkAssessment(const Model& m);
-// The assessment groups that apply to the vehicle of m (those it cannot give dropped).
-assessment::AssessmentSpec applicableAssessment(const Model& m);
-
-// The static wheel load Q0 of every wheel (per wheelset of m.contact: left, right) [N]: the
-// vehicle's static equilibrium on perfect level tangent track with the run's profiles, gauge and
-// rail inclination (EN 14363's Q0 is the static wheel force, the same for every run of the
-// vehicle, not the load of a run's first state on its curve or irregular track), and a sentence
-// saying so. m must have a vehicle on wheel/rail contact.
-struct StaticWheelLoads {
-  std::vector<double> load;  // [N]
-  std::string source;
-};
-StaticWheelLoads staticWheelLoads(const Model& m);
-
-// The track sections a run's safety assessment evaluates on their own: run.assessment.sections,
-// else one per track segment (tangentN, transitionN, curveN with N the segment's number), with
-// test zone, radius and cant.
-std::vector<assessment::TrackSection> assessmentSections(const Model& m);
-
 // Integrates m (which must have a vehicle) and writes outputs, /stats and warnings into f (not
-// finalized). Throws InputError only for problems compile() could not know.
+// finalized), vehicle by vehicle: their outputs (vehicle_outputs.hpp) and assessments
+// (vehicle_assessment.hpp). Throws InputError only for problems compile() could not know.
 VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunOptions& options);
 
 // Root provenance attributes (version, scenario text and modules, overrides, effects, seeds) and

@@ -1,0 +1,163 @@
+// A run holds a list of vehicles (run::Model::vehicles): two wagons without connections between
+// them move independently, so with a fixed-step method each is integrated exactly as it would be
+// alone. Every output and assessment dataset of each vehicle of the run of two equals the same
+// dataset of its single run bit for bit (under /vehicles/<name>), the run of one keeps the root
+// groups, and what a run of several cannot be (unnamed vehicles, two of one name, a vehicle off
+// the track, a connection) is refused.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "workbench/core/error.hpp"
+#include "workbench/io/result_reader.hpp"
+#include "workbench/run/compile.hpp"
+#include "workbench/run/vehicle_run.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The default scene (ABM, fixed step, KEC contact, assessment on), 0.3 s, the wagon's reference
+// point at `start`, with one suspension element written.
+rb::run::Model compiled(double start) {
+  rb::run::CompileOptions o;
+  o.scenario = "scenarios/default/case3_kec_fast.lua";
+  o.root = RB_SOURCE_DIR;
+  o.overrides = {"run.duration=0.3", "vehicle.start=" + std::to_string(start)};
+  rb::run::Model m = rb::run::compile(o);
+  // One element written too (what run.output.elements gives).
+  const auto id = m.lead().vehicle.findElement("prim_y_ws1_l");
+  EXPECT_TRUE(id);
+  if (id) m.vehicles.front().output_elements = {*id};
+  return m;
+}
+
+std::string runInto(const rb::run::Model& m, const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / "rb_test_run_of_vehicles";
+  fs::create_directories(dir);
+  const std::string path = (dir / name).string();
+  rb::io::ResultFile f(path);
+  rb::run::writeProvenance(m, f, "now");
+  const rb::run::VehicleRunResult res = rb::run::runVehicle(m, f, rb::run::VehicleRunOptions{});
+  f.finalize();
+  EXPECT_TRUE(res.result.ok) << res.result.message;
+  return path;
+}
+
+void datasets(const rb::io::ResultReader& r, const std::string& group,
+              std::vector<std::string>& out) {
+  for (const auto& m : r.members(group)) {
+    const std::string p = (group == "/" ? "" : group) + "/" + m;
+    if (r.dataset(p))
+      out.push_back(p);
+    else
+      datasets(r, p, out);
+  }
+}
+
+bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+// Every dataset of the single run's vehicle groups is in the run of two under `prefix`, bit for
+// bit; returns how many were compared.
+int expectSameVehicle(const std::string& single, const std::string& train,
+                      const std::string& prefix) {
+  const rb::io::ResultReader s(single), t(train);
+  std::vector<std::string> paths;
+  for (const char* g : {"/bodies", "/elements", "/contact", "/assessment"}) datasets(s, g, paths);
+  int compared = 0;
+  for (const auto& p : paths) {
+    const auto a = s.dataset(p), b = t.dataset(prefix + p);
+    EXPECT_TRUE(b) << prefix + p << " is not written";
+    if (!a || !b) continue;
+    EXPECT_TRUE(sameBits(*a, *b)) << prefix + p;
+    ++compared;
+  }
+  return compared;
+}
+
+TEST(RunOfVehicles, TwoUncoupledWagonsAreEachTheirSingleRunBitForBit) {
+  const rb::run::Model front = compiled(40.0), rear = compiled(20.0);
+  const std::string single_front = runInto(front, "front.h5");
+  const std::string single_rear = runInto(rear, "rear.h5");
+
+  rb::run::Model two = compiled(40.0);
+  two.vehicles.front().name = "front";
+  rb::run::RunVehicle second = rear.vehicles.front();
+  second.name = "rear";
+  rb::run::addVehicle(two, second);
+  ASSERT_EQ(two.vehicles.size(), 2u);
+  const std::string train = runInto(two, "two.h5");
+
+  // Wheels, bodies, the element, the patches and the assessment of both wagons.
+  EXPECT_GT(expectSameVehicle(single_front, train, "/vehicles/front"), 500);
+  EXPECT_GT(expectSameVehicle(single_rear, train, "/vehicles/rear"), 500);
+  const rb::io::ResultReader t(train), s(single_front), r(single_rear);
+  EXPECT_FALSE(t.has("/bodies")) << "a run of several keeps no root vehicle groups";
+  EXPECT_EQ(t.text("/vehicles", "names").value_or(""), "front\nrear");
+  EXPECT_TRUE(sameBits(*t.dataset("/time"), *s.dataset("/time")));
+  // Each wagon's contact model counts its own evaluations; the run's are their sum.
+  EXPECT_EQ(t.number("/stats", "model_evaluations").value_or(-1),
+            s.number("/stats", "model_evaluations").value_or(0) +
+                r.number("/stats", "model_evaluations").value_or(0));
+  EXPECT_TRUE(t.has("/vehicles/rear/assessment/summary"));
+
+  const auto ode = rb::run::makeRunOde(two);
+  EXPECT_EQ(ode->size(), 2 * rb::run::makeVehicleOde(front)->size());
+  EXPECT_EQ(ode->componentName(0), "front." + rb::run::makeVehicleOde(front)->componentName(0));
+  EXPECT_EQ(ode->componentName(ode->offset(1)),
+            "rear." + rb::run::makeVehicleOde(rear)->componentName(0));
+}
+
+TEST(RunOfVehicles, ARunOfOneKeepsItsRootGroupsAndComponentNames) {
+  const rb::run::Model one = compiled(40.0);
+  const auto ode = rb::run::makeRunOde(one);
+  const auto alone = rb::run::makeVehicleOde(one);
+  ASSERT_EQ(ode->size(), alone->size());
+  for (int i = 0; i < ode->size(); ++i) EXPECT_EQ(ode->componentName(i), alone->componentName(i));
+  EXPECT_EQ(ode->jacobianPattern().rows, alone->jacobianPattern().rows);
+  EXPECT_EQ(ode->stiffComponents(), alone->stiffComponents());
+  EXPECT_EQ(one.lead().prefix(), "");
+}
+
+TEST(RunOfVehicles, WhatARunOfSeveralCannotBeIsRefused) {
+  const rb::run::Model rear = compiled(20.0);
+  {
+    rb::run::Model m = compiled(40.0);
+    rb::run::RunVehicle v = rear.vehicles.front();
+    v.name = "rear";
+    EXPECT_THROW(rb::run::addVehicle(m, v), rb::InputError) << "the first vehicle has no name";
+  }
+  {
+    rb::run::Model m = compiled(40.0);
+    m.vehicles.front().name = "wagon";
+    rb::run::RunVehicle v = rear.vehicles.front();
+    v.name = "wagon";
+    EXPECT_THROW(rb::run::addVehicle(m, v), rb::InputError) << "two vehicles named alike";
+  }
+  {
+    rb::run::Model m = compiled(40.0);
+    m.vehicles.front().name = "front";
+    rb::run::RunVehicle v = rear.vehicles.front();
+    v.name = "rear";
+    v.vehicle.start = -30.0;  // its rear bodies before the track's start
+    EXPECT_THROW(rb::run::addVehicle(m, v), rb::InputError);
+  }
+  {
+    rb::run::Model m = compiled(40.0);
+    m.vehicles.front().name = "front";
+    rb::run::RunVehicle v = rear.vehicles.front();
+    v.name = "rear";
+    rb::run::addVehicle(m, v);
+    m.connections.push_back({0, 1});  // buffers and couplers are not modelled yet
+    EXPECT_THROW((void)rb::run::makeRunOde(m), std::logic_error);
+  }
+}
+
+}  // namespace

@@ -1,0 +1,111 @@
+// Which dataset paths a vehicle run writes, before any run (vehicle_run.hpp: signalProblem).
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "workbench/core/strings.hpp"
+#include "workbench/run/channels.hpp"
+#include "workbench/run/vehicle_run.hpp"
+
+namespace rb::run {
+namespace {
+
+// The parts of a dataset path: "/bodies/ws1/y" -> {"bodies", "ws1", "y"}.
+std::vector<std::string> pathParts(const std::string& path) {
+  std::vector<std::string> out;
+  std::size_t at = 1;
+  while (at <= path.size()) {
+    const std::size_t next = std::min(path.find('/', at), path.size());
+    out.push_back(path.substr(at, next - at));
+    at = next + 1;
+  }
+  return out;
+}
+
+// "'x' is not one of a, b (did you mean 'a'?)" for a name that is not among `names`.
+std::string notAmong(const std::string& what, const std::string& x,
+                     const std::vector<std::string>& names) {
+  const std::string hint = closestMatch(x, names);
+  return "no " + what + " '" + x + "'" +
+         (hint.empty() ? " (there are: " + join(names, ", ") + ")"
+                       : " (did you mean '" + hint + "'?)");
+}
+
+}  // namespace
+
+namespace {
+
+bool among(const std::string& x, const std::vector<std::string>& names) {
+  return std::find(names.begin(), names.end(), x) != names.end();
+}
+
+std::string bodySignalProblem(const scenario::ScenarioSpec& spec,
+                              const std::vector<std::string>& p) {
+  if (p.size() != 3) return "a body's signal is /bodies/<body>/<coordinate>";
+  std::vector<std::string> bodies;
+  for (const auto& b : spec.vehicle.bodies) bodies.push_back(b.name);
+  if (!among(p[1], bodies)) return notAmong("body", p[1], bodies);
+  std::vector<std::string> q;
+  for (const auto& c : kBodyCoordChannels) q.emplace_back(c.name);
+  const bool acc = spec.run.body_accelerations;
+  if (acc)
+    for (const auto& c : kBodyAccelerationChannels) q.emplace_back(c.name);
+  if (among(p[2], q)) return {};
+  const bool asks_acc =
+      std::any_of(std::begin(kBodyAccelerationChannels), std::end(kBodyAccelerationChannels),
+                  [&](const auto& c) { return p[2] == c.name; });
+  return notAmong("body signal", p[2], q) +
+         (acc || !asks_acc ? "" : "; ax, ay, az need run.output.body_accelerations = true");
+}
+
+std::string elementSignalProblem(const scenario::ScenarioSpec& spec,
+                                 const std::vector<std::string>& p) {
+  const auto& out = spec.run.output_elements;
+  if (p.size() != 3) return "an element's signal is /elements/<name>/deflection or force";
+  if (!among(p[1], out))
+    return "element '" + p[1] + "' is not written: name it in run.output.elements" +
+           (out.empty() ? "" : " (written: " + join(out, ", ") + ")");
+  if (p[2] != "deflection" && p[2] != "force")
+    return notAmong("element signal", p[2], {"deflection", "force"});
+  return {};
+}
+
+std::string contactSignalProblem(const scenario::ScenarioSpec& spec,
+                                 const std::vector<std::string>& p) {
+  if (!spec.has_contact)
+    return "the scenario has no wheel/rail contact model, so its result has no /contact";
+  if (p.size() < 4) return "a wheel's signal is /contact/<wheelset>/<left|right>/<quantity>";
+  std::vector<std::string> wheelsets;
+  for (const auto& b : spec.vehicle.bodies)
+    if (b.kind == vehicle::BodyKind::Wheelset) wheelsets.push_back(b.name);
+  if (!among(p[1], wheelsets)) return notAmong("wheelset", p[1], wheelsets);
+  if (p[2] != "left" && p[2] != "right") return notAmong("side", p[2], {"left", "right"});
+  std::vector<std::string> q;
+  if (p.size() == 4) {
+    for (const auto& c : kWheelChannels) q.emplace_back(c.name);
+    return among(p[3], q) ? std::string() : notAmong("wheel signal", p[3], q);
+  }
+  if (p.size() != 5 || (p[3] != "patch0" && p[3] != "patch1"))
+    return "a patch's signal is /contact/<wheelset>/<side>/patch0|patch1/<quantity>";
+  for (const auto& c : kPatchChannels) q.emplace_back(c.name);
+  return among(p[4], q) ? std::string() : notAmong("patch signal", p[4], q);
+}
+
+}  // namespace
+
+std::string signalProblem(const scenario::ScenarioSpec& spec, const std::string& path) {
+  if (path.size() < 2 || path[0] != '/') return {};
+  const std::vector<std::string> p = pathParts(path);
+  const std::string& group = p[0];
+  if (group != "vehicle" && group != "bodies" && group != "elements" && group != "contact")
+    return {};
+  if (!spec.has_vehicle) return "the scenario has no vehicle, so its result has no /" + group;
+  if (group == "vehicle")
+    return p.size() == 2 && p[1] == "speed" ? std::string()
+                                            : "the vehicle group holds /vehicle/speed only";
+  if (group == "bodies") return bodySignalProblem(spec, p);
+  if (group == "elements") return elementSignalProblem(spec, p);
+  return contactSignalProblem(spec, p);
+}
+
+}  // namespace rb::run

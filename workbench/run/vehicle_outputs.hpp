@@ -1,0 +1,55 @@
+#pragma once
+// The output stage of one vehicle of a run: the plan of its channels (body coordinates and
+// accelerations, suspension elements, wheels and patches), built once before the run from the
+// channel rows (channels.hpp), and its values at an output time from one evaluation of the model
+// (StateOutputs). The paths of the only vehicle of a run are the file's /bodies, /elements and
+// /contact; in a run of several, each vehicle's are under /vehicles/<name>.
+#include <span>
+#include <string>
+#include <vector>
+
+#include "workbench/dynamics/contact_ode.hpp"
+#include "workbench/io/result_file.hpp"
+#include "workbench/run/compile.hpp"
+#include "workbench/run/simulate.hpp"
+#include "workbench/run/state_outputs.hpp"
+#include "workbench/vehicle/vehicle_ode.hpp"
+
+namespace rb::run {
+
+// Largest creepage of any active patch at the output times, and when.
+struct CreepageMaximum {
+  double value = 0.0, t = 0.0;
+  void update(const dynamics::WheelOutput& w, double t_now);
+};
+
+class VehicleOutputs {
+ public:
+  // ode: the vehicle's own ODE (its part of the run's), on wheel/rail contact when v has a
+  // contact model. All three must outlive this object.
+  VehicleOutputs(const Model& m, const RunVehicle& v, vehicle::VehicleOde& ode);
+
+  // Appends the vehicle's channels to `outputs` in the order sample() fills them, and writes the
+  // attributes of its groups (body kinds and names, the contact conventions and method).
+  void declare(io::ResultFile& f, std::vector<OutputChannel>& outputs) const;
+  // The values of every channel at (t, y), y the vehicle's part of the run's state, from `out`;
+  // returns the next slot.
+  double* sample(double t, const double* y, double* out);
+
+  StateOutputs& state() { return state_; }
+  dynamics::ContactVehicleOde* contact() const { return contact_; }
+  const CreepageMaximum& creepage() const { return creepage_; }
+
+ private:
+  const Model& m_;
+  const RunVehicle& v_;
+  vehicle::VehicleOde& ode_;
+  dynamics::ContactVehicleOde* contact_;  // null: guided
+  StateOutputs state_;
+  CreepageMaximum creepage_;
+  std::vector<vehicle::Vector6d> q_;
+  std::vector<Eigen::Vector3d> a_;
+  std::vector<vehicle::ElementValue> values_;
+};
+
+}  // namespace rb::run
