@@ -96,7 +96,7 @@ void expectDescribed(const std::string& file, bool contact) {
   ASSERT_TRUE(r.ok()) << file;
   const auto rows = schemaRows(r);
   std::vector<std::string> written;
-  for (const char* g : {"/vehicle", "/bodies", "/elements", "/contact", "/track"})
+  for (const char* g : {"/vehicle", "/bodies", "/elements", "/contact", "/track", "/assessment"})
     datasets(r, g, written);
   written.emplace_back("/time");
   std::size_t contact_datasets = 0;

@@ -11,6 +11,7 @@
 #include "workbench/core/strings.hpp"
 #include "workbench/io/result_file.hpp"
 #include "workbench/io/result_reader.hpp"
+#include "workbench/io/schema.hpp"
 #include "workbench/run/assessment_run.hpp"
 #include "workbench/scenario/schema.hpp"
 
@@ -161,7 +162,8 @@ int assessFile(const AssessOptions& o) {
   try {
     io::ResultFile f(o.file, io::ResultFile::UpdateExisting{});
     f.remove("/assessment");
-    run::writeAssessment(f, signals, r);
+    f.remove("/schema/assessment");
+    io::writeSchema(f, "assessment", run::writeAssessment(f, signals, r), {});
     f.finalize();
   } catch (const io::WriteError& e) {
     // Nothing was run and the file is as it was (the copy is deleted): an environment problem

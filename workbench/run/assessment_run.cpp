@@ -363,6 +363,14 @@ void assessWear(const AssessmentSignals& sig, AssessmentResult& r) {
   }
 }
 
+// The rows of /schema/assessment: every dataset written below, with its unit and meaning.
+using SchemaRows = std::vector<io::SchemaEntry>;
+void put(io::ResultFile& f, SchemaRows& rows, const std::string& path,
+         const std::vector<double>& values, const char* unit, std::string meaning) {
+  f.dataset(path, values, unit);
+  rows.push_back({path, unit, std::move(meaning), ""});
+}
+
 // The attributes every quantity's group carries (ASSESSMENT_LAYOUT).
 void writeAssessed(io::ResultFile& f, const std::string& g, const Assessed& a) {
   f.attr(g, "unit", a.unit);
@@ -375,29 +383,32 @@ void writeAssessed(io::ResultFile& f, const std::string& g, const Assessed& a) {
   if (std::isfinite(a.at_s)) f.attr(g, "at_s", a.at_s);
 }
 
-void writeSliding(io::ResultFile& f, const std::string& g, const Assessed& a,
+void writeSliding(io::ResultFile& f, SchemaRows& rows, const std::string& g, const Assessed& a,
                   const a14::SlidingAssessment& s, const char* unit) {
   writeAssessed(f, g, a);
-  f.dataset(g + "/value", s.series.value, unit);
+  put(f, rows, g + "/value", s.series.value, unit,
+      "the sliding quantity at each window end (the group's clause attribute)");
   f.attr(g, "upper", s.stats.upper);
   f.attr(g, "lower", s.stats.lower);
 }
 
-void writeSafety(io::ResultFile& f, const std::string& root, const AssessmentSignals& sig,
-                 const AssessmentResult& r) {
+void writeSafety(io::ResultFile& f, SchemaRows& rows, const std::string& root,
+                 const AssessmentSignals& sig, const AssessmentResult& r) {
   for (std::size_t k = 0; k < r.wheel_safety.size(); ++k) {
     const auto& w = sig.wheels[k];
     const auto& s = r.wheel_safety[k];
     const std::string base = root + "/safety/" + w.wheelset + "/" + w.side + "/";
-    writeSliding(f, base + "y_over_q", s.yq, s.y_over_q, "-");
+    writeSliding(f, rows, base + "y_over_q", s.yq, s.y_over_q, "-");
     // Window ends in this wheel's own arc length.
-    f.dataset(base + "y_over_q/s", s.y_over_q.series.position, "m");
+    put(f, rows, base + "y_over_q/s", s.y_over_q.series.position, "m",
+        "window end in the wheel's own arc length");
     f.attr(root + "/safety/" + w.wheelset + "/" + w.side, "s_offset", w.s_offset);
     f.attr(base + "y_over_q", "nadal_limit", s.nadal_limit);
     f.attr(base + "y_over_q", "flange_angle", r.spec.flange_angle);
     f.attr(base + "y_over_q", "mu", s.nadal_mu);
     writeAssessed(f, base + "dq_over_q", s.dq);
-    f.dataset(base + "dq_over_q/value", s.dq_series, "-");
+    put(f, rows, base + "dq_over_q/value", s.dq_series, "-",
+        "wheel unloading (Q0 - Q) / Q0 at the samples");
     f.attr(base + "dq_over_q", "q0", w.q0);
     writeAssessed(f, base + "y_qst", s.y_qst);
     writeAssessed(f, base + "q_qst", s.q_qst);
@@ -405,14 +416,16 @@ void writeSafety(io::ResultFile& f, const std::string& root, const AssessmentSig
     f.attr(base + "q_max", "q0", w.q0);
     // The sampled wheel forces, so that `workbench assess` can recompute from the file.
     f.attr(root + "/safety/" + w.wheelset + "/" + w.side, "q0", w.q0);
-    f.dataset(base + "Y", w.Y, "N");
-    f.dataset(base + "Q", w.Q, "N");
-    f.dataset(base + "y_track", w.y_track, "N");
+    put(f, rows, base + "Y", w.Y, "N", "sampled lateral wheel force Y (EN 14363 sign)");
+    put(f, rows, base + "Q", w.Q, "N", "sampled vertical wheel force Q");
+    put(f, rows, base + "y_track", w.y_track, "N",
+        "sampled lateral force in the track frame, positive to the left");
   }
   for (const auto& ws : r.wheelset_safety) {
     const std::string g = root + "/safety/" + ws.wheelset + "/sum_y";
-    writeSliding(f, g, ws.sy, ws.sum_y, "N");
-    f.dataset(g + "/s", ws.sum_y.series.position, "m");
+    writeSliding(f, rows, g, ws.sy, ws.sum_y, "N");
+    put(f, rows, g + "/s", ws.sum_y.series.position, "m",
+        "window end in the wheelset's own arc length");
     f.attr(g, "alpha", r.spec.alpha);
     f.attr(g, "q0", ws.q0);
   }
@@ -485,33 +498,36 @@ void writeSections(io::ResultFile& f, const std::string& root, const AssessmentS
   if (!names.empty()) f.attr(root + "/sections", "names", join(names, "\n"));
 }
 
-void writeStability(io::ResultFile& f, const std::string& root, const AssessmentSignals& sig,
-                    const AssessmentResult& r) {
+void writeStability(io::ResultFile& f, SchemaRows& rows, const std::string& root,
+                    const AssessmentSignals& sig, const AssessmentResult& r) {
   for (std::size_t k = 0; k < r.stability.size(); ++k) {
     const auto& s = r.stability[k];
     const std::string g = root + "/stability/" + s.bogie + "/" + s.wheelset;
     writeAssessed(f, g, s.a);
-    f.dataset(g + "/s", s.st.series.position, "m");
-    f.dataset(g + "/rms", s.st.series.value, "m/s^2");
-    f.dataset(g + "/acceleration", sig.bogies[k].ay, "m/s^2");
+    put(f, rows, g + "/s", s.st.series.position, "m",
+        "window end in the wheelset's own arc length");
+    put(f, rows, g + "/rms", s.st.series.value, "m/s^2",
+        "sliding rms of the band-passed bogie-frame lateral acceleration (EN 14363)");
+    put(f, rows, g + "/acceleration", sig.bogies[k].ay, "m/s^2",
+        "sampled lateral acceleration of the bogie frame over the wheelset");
     f.attr(g, "f0", s.f0);
     f.attr(g, "bogie_mass", s.bogie_mass);
     f.attr(g, "s_offset", sig.bogies[k].s_offset);
   }
 }
 
-void writeComfort(io::ResultFile& f, const std::string& root, const AssessmentSignals& sig,
-                  const AssessmentResult& r) {
+void writeComfort(io::ResultFile& f, SchemaRows& rows, const std::string& root,
+                  const AssessmentSignals& sig, const AssessmentResult& r) {
   for (std::size_t k = 0; k < r.comfort.size(); ++k) {
     const auto& c = r.comfort[k];
     const auto& p = sig.floor[k];
     const std::string g = root + "/comfort/" + c.name;
-    f.dataset(g + "/a_x", p.ax, "m/s^2");
-    f.dataset(g + "/a_y", p.ay, "m/s^2");
-    f.dataset(g + "/a_z", p.az, "m/s^2");
-    f.dataset(g + "/nc_x", c.nc[0], "-");
-    f.dataset(g + "/nc_y", c.nc[1], "-");
-    f.dataset(g + "/nc_z", c.nc[2], "-");
+    put(f, rows, g + "/a_x", p.ax, "m/s^2", "sampled longitudinal floor acceleration");
+    put(f, rows, g + "/a_y", p.ay, "m/s^2", "sampled lateral floor acceleration");
+    put(f, rows, g + "/a_z", p.az, "m/s^2", "sampled vertical floor acceleration");
+    put(f, rows, g + "/nc_x", c.nc[0], "-", "EN 12299 comfort index of the x axis per 5 s block");
+    put(f, rows, g + "/nc_y", c.nc[1], "-", "EN 12299 comfort index of the y axis per 5 s block");
+    put(f, rows, g + "/nc_z", c.nc[2], "-", "EN 12299 comfort index of the z axis per 5 s block");
     writeAssessed(f, g, c.n);
     f.attr(g, "n_mv", c.n.check.value);
     f.attr(g, "x_offset", c.x_offset);
@@ -531,20 +547,20 @@ void writeWearSummary(io::ResultFile& f, const std::string& g,
   f.attr(g, "energy", s.energy);
 }
 
-void writeWear(io::ResultFile& f, const std::string& root, const AssessmentSignals& sig,
-               const AssessmentResult& r) {
+void writeWear(io::ResultFile& f, SchemaRows& rows, const std::string& root,
+               const AssessmentSignals& sig, const AssessmentResult& r) {
   for (std::size_t k = 0; k < r.wear.size(); ++k) {
     const auto& w = r.wear[k];
     const std::string g = root + "/wear/" + sig.wheels[k].wheelset + "/" + sig.wheels[k].side;
-    f.dataset(g + "/t_gamma", w.t_gamma, "N");
-    f.dataset(g + "/power", w.power, "W");
+    put(f, rows, g + "/t_gamma", w.t_gamma, "N", "T gamma wear number of the wheel");
+    put(f, rows, g + "/power", w.power, "W", "frictional power T gamma V of the wheel");
     writeWearSummary(f, g, w.wheel);
     f.attr(g, "unit", std::string("N"));
     for (int p = 0; p < 2; ++p) {
       const std::string pg = g + "/patch" + std::to_string(p);
       writeWearSummary(f, pg, w.patch[p]);
-      f.dataset(pg + "/t_gamma", sig.wheels[k].t_gamma[p], "N");
-      f.dataset(pg + "/power", sig.wheels[k].power[p], "W");
+      put(f, rows, pg + "/t_gamma", sig.wheels[k].t_gamma[p], "N", "T gamma of the patch");
+      put(f, rows, pg + "/power", sig.wheels[k].power[p], "W", "frictional power of the patch");
     }
   }
 }
@@ -565,8 +581,9 @@ std::string joinLines(const std::vector<std::string>& v) {
 
 }  // namespace
 
-void writeAssessment(io::ResultFile& f, const AssessmentSignals& sig, const AssessmentResult& r,
-                     const std::string& root) {
+std::vector<io::SchemaEntry> writeAssessment(io::ResultFile& f, const AssessmentSignals& sig,
+                                             const AssessmentResult& r, const std::string& root) {
+  SchemaRows rows;
   const std::string& g = root;
   f.attr(g, "standards",
          std::string("EN 14363:2005 / UIC 518 (running safety, track loading, stability); EN "
@@ -582,16 +599,18 @@ void writeAssessment(io::ResultFile& f, const AssessmentSignals& sig, const Asse
   f.attr(g, "yq_limit", r.spec.yq_limit);
   f.attr(g, "instability_frequency", r.spec.instability_frequency);
   f.attr(g, "comfort_limit", r.spec.comfort_limit);
-  f.dataset(g + "/time", sig.time, "s");
-  f.dataset(g + "/distance", sig.distance, "m");
+  put(f, rows, g + "/time", sig.time, "s", "assessment sample time");
+  put(f, rows, g + "/distance", sig.distance, "m",
+      "arc length of the vehicle's foremost body at the samples");
   writeSummary(f, root, r);
   f.attr(g, "q0_source", sig.q0_source);
   f.attr(g, "category", std::string(nameOf(r.spec.category)));
-  if (r.spec.safety) writeSafety(f, root, sig, r);
+  if (r.spec.safety) writeSafety(f, rows, root, sig, r);
   if (r.spec.safety) writeSections(f, root, sig, r);
-  if (r.spec.stability) writeStability(f, root, sig, r);
-  if (r.spec.comfort) writeComfort(f, root, sig, r);
-  if (r.spec.wear) writeWear(f, root, sig, r);
+  if (r.spec.stability) writeStability(f, rows, root, sig, r);
+  if (r.spec.comfort) writeComfort(f, rows, root, sig, r);
+  if (r.spec.wear) writeWear(f, rows, root, sig, r);
+  return rows;
 }
 
 double spectrumPeak(const std::vector<double>& x, double dt, double f_low, double f_high,

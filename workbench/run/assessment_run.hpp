@@ -14,6 +14,7 @@
 #include "workbench/assessment/wear.hpp"
 #include "workbench/io/result_file.hpp"
 #include "workbench/io/result_reader.hpp"
+#include "workbench/io/schema.hpp"
 
 namespace rb::run {
 
@@ -146,9 +147,11 @@ AssessmentResult assess(const AssessmentSignals& signals, const assessment::Asse
 
 // Writes the group `root` (/assessment, or a vehicle's /vehicles/<name>/assessment in a run of
 // several; ASSESSMENT_LAYOUT: one group per quantity with unit, value, limit, margin, ok, clause,
-// at_s) and its series.
-void writeAssessment(io::ResultFile& f, const AssessmentSignals& signals, const AssessmentResult& r,
-                     const std::string& root = "/assessment");
+// at_s) and its series. Returns the /schema rows of the datasets written (the caller writes the
+// table /schema/assessment once for all of a file's assessments).
+std::vector<io::SchemaEntry> writeAssessment(io::ResultFile& f, const AssessmentSignals& signals,
+                                             const AssessmentResult& r,
+                                             const std::string& root = "/assessment");
 
 // The one-screen summary printed after a run: one line per summary quantity, "ok" or
 // "EXCEEDED".

@@ -350,7 +350,7 @@ AssessmentOutcome finishAssessment(const Model& m, const AssessmentSetup& as, io
   }
   const auto t0 = std::clock();
   const AssessmentResult res = assess(as.signals, as.spec, m.spec.contact.mu);
-  writeAssessment(f, as.signals, res, root);
+  out.schema = writeAssessment(f, as.signals, res, root);
   out.cpu_s = static_cast<double>(std::clock() - t0) / static_cast<double>(CLOCKS_PER_SEC);
   out.summary = summaryLines(res);
   out.warnings = exceededWarnings(res);

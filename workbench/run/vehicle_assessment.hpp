@@ -64,7 +64,8 @@ void sampleAssessment(AssessmentSetup& as, StateOutputs& state, bool contact, do
 // exceeded (a result, not a failure). Returns false, with a warning, when a signal is not finite.
 struct AssessmentOutcome {
   std::vector<std::string> summary, warnings;
-  double cpu_s = 0.0;  // [s] of computing and writing it
+  std::vector<io::SchemaEntry> schema;  // its datasets' rows of /schema/assessment
+  double cpu_s = 0.0;                   // [s] of computing and writing it
 };
 AssessmentOutcome finishAssessment(const Model& m, const AssessmentSetup& as, io::ResultFile& f,
                                    const std::string& root);

@@ -180,14 +180,17 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
       out.assessment_notes.emplace_back("assessment skipped: the run failed");
     } else {
       double cpu = 0.0;
+      std::vector<io::SchemaEntry> schema;
       for (const auto& p : parts) {
         AssessmentOutcome a = finishAssessment(m, p.assessment, f, p.v->prefix() + "/assessment");
         cpu += a.cpu_s;
+        schema.insert(schema.end(), a.schema.begin(), a.schema.end());
         if (several && !a.summary.empty()) out.assessment_summary.push_back(p.v->name + ":");
         for (auto& line : a.summary) out.assessment_summary.push_back(std::move(line));
         for (auto& w : a.warnings)
           out.warnings.push_back(several ? p.v->name + ": " + w : std::move(w));
       }
+      if (!schema.empty()) io::writeSchema(f, "assessment", schema, {});
       if (!out.assessment_summary.empty()) {
         f.attr("/stats", "assessment_cpu_s", cpu);
         for (auto& n : out.assessment_notes) out.assessment_summary.push_back("  " + n);
