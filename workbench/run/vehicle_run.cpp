@@ -84,19 +84,15 @@ struct RunPart {
   double lead = 0.0;  // [m] arc length of its foremost body at t = 0
 };
 
-}  // namespace
-
-VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunOptions& o) {
-  RB_CHECK(m.hasVehicle(), "runVehicle needs a vehicle");
-  const std::unique_ptr<train::TrainOde> ode = makeRunOde(m);
-  const bool several = m.vehicles.size() > 1;
+// The parts of the run's ODE, vehicle by vehicle, with their output plans.
+std::vector<RunPart> makeParts(const Model& m, train::TrainOde& ode, const VehicleRunOptions& o) {
   const bool fixed_step = integ::makeIntegrator(m.solver)->isFixedStep();
   std::vector<RunPart> parts(m.vehicles.size());
   for (std::size_t k = 0; k < parts.size(); ++k) {
     RunPart& p = parts[k];
     p.v = &m.vehicles[k];
-    p.ode = &ode->vehicle(static_cast<int>(k));
-    p.offset = ode->offset(static_cast<int>(k));
+    p.ode = &ode.vehicle(static_cast<int>(k));
+    p.offset = ode.offset(static_cast<int>(k));
     p.ode->setStageSampling(o.stage_period);
     p.outputs = std::make_unique<VehicleOutputs>(m, *p.v, *p.ode);
     // A fixed-step run is observed at step ends only, where the integrator's next right-hand side
@@ -105,23 +101,84 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
       p.outputs->contact()->shareOutputEvaluations(true);
     p.lead = p.v->vehicle.start + p.v->leadingX();
   }
+  return parts;
+}
+
+// The run's start state: each vehicle's equilibrium with its initial conditions (recorded in its
+// /initial_conditions).
+Eigen::VectorXd startState(const std::vector<RunPart>& parts, int size, io::ResultFile& f) {
+  Eigen::VectorXd y0(size);
+  for (const auto& p : parts) {
+    Eigen::VectorXd y = p.ode->initialState(0.0);
+    if (!p.v->initial.empty()) {
+      const Eigen::VectorXd equilibrium = y;
+      vehicle::applyInitialConditions(*p.ode, p.v->initial, y);
+      writeInitialConditions(*p.ode, p.v->initial, equilibrium, y, p.v->prefix(), f);
+    }
+    y0.segment(p.offset, y.size()) = y;
+  }
+  return y0;
+}
+
+// After the run: each vehicle's assessment into its group, the summary lines (each vehicle's
+// under its name when there are several) and the warnings, and /schema/assessment.
+void finishAssessments(const Model& m, const std::vector<RunPart>& parts, std::size_t samples,
+                       io::ResultFile& f, VehicleRunResult& out) {
+  f.attr("/stats", "assessment_samples", static_cast<std::int64_t>(samples));
+  if (!out.result.ok) {
+    out.assessment_notes.emplace_back("assessment skipped: the run failed");
+    return;
+  }
+  const bool several = parts.size() > 1;
+  double cpu = 0.0;
+  std::vector<io::SchemaEntry> schema;
+  for (const auto& p : parts) {
+    AssessmentOutcome a = finishAssessment(m, p.assessment, f, p.v->prefix() + "/assessment");
+    cpu += a.cpu_s;
+    schema.insert(schema.end(), a.schema.begin(), a.schema.end());
+    if (several && !a.summary.empty()) out.assessment_summary.push_back(p.v->name + ":");
+    for (auto& line : a.summary) out.assessment_summary.push_back(std::move(line));
+    for (auto& w : a.warnings)
+      out.warnings.push_back(several ? p.v->name + ": " + w : std::move(w));
+  }
+  if (!schema.empty()) io::writeSchema(f, "assessment", schema, {});
+  if (out.assessment_summary.empty()) return;
+  f.attr("/stats", "assessment_cpu_s", cpu);
+  for (auto& n : out.assessment_notes) out.assessment_summary.push_back("  " + n);
+}
+
+// The contact models' counters summed over the vehicles, and the largest creepage of any.
+void writeContactCounters(const Model& m, const std::vector<RunPart>& parts, io::ResultFile& f,
+                          VehicleRunResult& out) {
+  dynamics::ContactStats cs;
+  CreepageMaximum creepage;
+  for (const auto& p : parts) {
+    const dynamics::ContactVehicleOde* c = p.outputs->contact();
+    if (c == nullptr) continue;
+    const dynamics::ContactStats& s = c->stats();
+    cs.evaluations += s.evaluations;
+    cs.shared_evaluations += s.shared_evaluations;
+    cs.kec_iterations += s.kec_iterations;
+    cs.lift_evaluations += s.lift_evaluations;
+    cs.consistent_iterations += s.consistent_iterations;
+    if (p.outputs->creepage().value > creepage.value) creepage = p.outputs->creepage();
+  }
+  writeContactStats(m, cs, creepage, f, out);
+}
+
+}  // namespace
+
+VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunOptions& o) {
+  RB_CHECK(m.hasVehicle(), "runVehicle needs a vehicle");
+  const std::unique_ptr<train::TrainOde> ode = makeRunOde(m);
+  std::vector<RunPart> parts = makeParts(m, *ode, o);
   const bool contact = m.hasContact();
   const vehicle::VehicleModel& lead = m.lead().vehicle;
 
   SimulationRequest r;
   r.system = ode.get();
   r.solver = m.solver;
-  r.y0.resize(ode->size());
-  for (auto& p : parts) {
-    Eigen::VectorXd y0 = p.ode->initialState(0.0);
-    if (!p.v->initial.empty()) {
-      // The equilibrium the initial conditions offset (recorded in /initial_conditions).
-      const Eigen::VectorXd equilibrium = y0;
-      vehicle::applyInitialConditions(*p.ode, p.v->initial, y0);
-      writeInitialConditions(*p.ode, p.v->initial, equilibrium, y0, p.v->prefix(), f);
-    }
-    r.y0.segment(p.offset, y0.size()) = y0;
-  }
+  r.y0 = startState(parts, ode->size(), f);
   r.t_end = m.t_end;
   r.output_every = m.spec.run.output_every;
   r.progress = o.progress;
@@ -135,13 +192,12 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   // Channels, in the order the sampler fills them: the run's speed, then vehicle by vehicle.
   r.outputs.push_back({"/vehicle/speed", "m/s", "speed of the vehicle along the track", ""});
   for (const auto& p : parts) p.outputs->declare(f, r.outputs);
-  if (several) {
+  if (parts.size() > 1) {
     std::string names;
     for (const auto& v : m.vehicles) names += (names.empty() ? "" : "\n") + v.name;
     f.attr("/vehicles", "names", names);
   }
   writeSeriesSchema(r.outputs, contact, f);
-
   r.sample = [&](double t, const Eigen::VectorXd& y, double* out) {
     *out++ = lead.speedAt(t);
     for (auto& p : parts) out = p.outputs->sample(t, y.data() + p.offset, out);
@@ -174,45 +230,8 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     r.extra = &extra;
   }
   out.result = simulate(r, f);
-  if (assess) {
-    f.attr("/stats", "assessment_samples", static_cast<std::int64_t>(extra.samples));
-    if (!out.result.ok) {
-      out.assessment_notes.emplace_back("assessment skipped: the run failed");
-    } else {
-      double cpu = 0.0;
-      std::vector<io::SchemaEntry> schema;
-      for (const auto& p : parts) {
-        AssessmentOutcome a = finishAssessment(m, p.assessment, f, p.v->prefix() + "/assessment");
-        cpu += a.cpu_s;
-        schema.insert(schema.end(), a.schema.begin(), a.schema.end());
-        if (several && !a.summary.empty()) out.assessment_summary.push_back(p.v->name + ":");
-        for (auto& line : a.summary) out.assessment_summary.push_back(std::move(line));
-        for (auto& w : a.warnings)
-          out.warnings.push_back(several ? p.v->name + ": " + w : std::move(w));
-      }
-      if (!schema.empty()) io::writeSchema(f, "assessment", schema, {});
-      if (!out.assessment_summary.empty()) {
-        f.attr("/stats", "assessment_cpu_s", cpu);
-        for (auto& n : out.assessment_notes) out.assessment_summary.push_back("  " + n);
-      }
-    }
-  }
-  if (contact) {
-    dynamics::ContactStats cs;
-    CreepageMaximum creepage;
-    for (const auto& p : parts) {
-      const dynamics::ContactVehicleOde* c = p.outputs->contact();
-      if (c == nullptr) continue;
-      const dynamics::ContactStats& s = c->stats();
-      cs.evaluations += s.evaluations;
-      cs.shared_evaluations += s.shared_evaluations;
-      cs.kec_iterations += s.kec_iterations;
-      cs.lift_evaluations += s.lift_evaluations;
-      cs.consistent_iterations += s.consistent_iterations;
-      if (p.outputs->creepage().value > creepage.value) creepage = p.outputs->creepage();
-    }
-    writeContactStats(m, cs, creepage, f, out);
-  }
+  if (assess) finishAssessments(m, parts, extra.samples, f, out);
+  if (contact) writeContactCounters(m, parts, f, out);
   out.effects = compiledEffects(m);
   out.costs = stageCosts(ode->vehicle(0).stageClock(), out.result.stats);
   writeRunStats(f, out.effects, out.costs);
