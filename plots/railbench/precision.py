@@ -1,16 +1,16 @@
-"""`workbench precision`: errors, reference bound, Pareto fronts, figures and the recommendation
-table of a precision folder (docs/precision.md).
+"""`workbench precision`: the figures and the markdown block of a precision folder
+(docs/precision.md), drawn from the engine's answer.
 
     plots/rbplot precision OUT [--quantities y,yaw] [--levels 1,0.1,0.01] [--limit 0.001]
                                [--callgrind --workbench BIN --root ROOT]
 
-Reads OUT/precision_plan.csv (written by the command: every case, its model, integrator,
-setting and role) and the study folders OUT/reference and OUT/cases. Writes into OUT:
-precision.csv (per case: cost, integration and total error per quantity), precision_references.csv
-(the references, their bound, verified or not, and the table error), precision_recommendation.csv
-is the engine's (the cheapest setting per model and level, computed and printed by `workbench
-precision` before this step: read here, never recomputed), precision.h5 (all of these as
-datasets), and one figure per model, precision_<model>.png.
+Every number is the engine's (workbench/precision/answer.cpp), written by `workbench precision`
+before this step: OUT/precision.csv (per case: cost, integration and total error per quantity),
+precision_references.csv (the references, their bound, verified or not, and the table error),
+precision_recommendation.csv (the cheapest setting per model and level) and precision.h5 (all of
+these as datasets). This module reads them and draws one figure per model,
+precision_<model>.png; with --callgrind it adds the instruction counts of the recommended
+settings to precision_recommendation.csv.
 """
 from __future__ import annotations
 
@@ -23,10 +23,9 @@ import tempfile
 from typing import Dict, List, Optional
 
 import h5py
-import numpy as np
 
 from .common import parser, read_csv, write_csv
-from .precision_errors import Quantity, QuantityError, errors, parse_quantities, verify
+from .precision_errors import Quantity, QuantityError, parse_quantities
 from .study_data import Case, StudyError, load_study
 
 
@@ -46,69 +45,43 @@ def _cases(outdir: str) -> Dict[str, Case]:
     return out
 
 
-def _err(case: Optional[Case], ref: Optional[Case], qs: List[Quantity]) -> dict:
-    if case is None or ref is None or not case.file or not ref.file or \
-            not os.path.exists(case.file) or not os.path.exists(ref.file):
-        return {}
-    try:
-        return errors(case.file, ref.file, qs)
-    except (OSError, KeyError):
-        return {}
+def engine_refs(outdir: str, qs: List[Quantity]) -> Dict[str, dict]:
+    """Per default-table model, the engine's verification of its references (precision.h5,
+    /reference_bound/<model>): verified, why, and per quantity the bound and the table error as
+    (max, rms)."""
+    path = os.path.join(outdir, "precision.h5")
+    if not os.path.exists(path):
+        raise FileNotFoundError(f"{path} not found: the answer is computed by `workbench "
+                                f"precision` (run it again to write it)")
+    out: Dict[str, dict] = {}
+    with h5py.File(path, "r") as f:
+        for model, g in f.get("reference_bound", {}).items():
+            a = g.attrs
 
+            def pair(key, q):
+                mx, rms = a.get(f"{q.tag}_{key}max_{q.unit}"), a.get(f"{q.tag}_{key}rms_{q.unit}")
+                if mx is None or math.isnan(float(mx)):
+                    return None
+                return (float(mx), float(rms) if rms is not None else math.nan)
 
-def reference_rows(plan: List[dict], cases: Dict[str, Case], qs: List[Quantity],
-                   limit: float) -> Dict[str, dict]:
-    """Per default-table model: its references, the bound (reference_check vs reference), whether
-    verified, and the table error (same-tables reference vs reference)."""
-    out = {}
-    for model in dict.fromkeys(r["model"] for r in plan if r["role"] == "reference"):
-        refs = {r["role"]: cases.get(r["case"]) for r in plan
-                if r["model"] == model and r["folder"] == "reference"}
-        ref, check, same = (refs.get("reference"), refs.get("reference_check"),
-                            refs.get("reference_same_tables"))
-        bound = _err(check, ref, qs)
-        both_ok = bool(ref and check and ref.ok and check.ok)
-        verified, why = verify(bound, qs, limit, both_ok)
-        table = _err(same, ref, qs)
-        out[model] = dict(ref=ref, check=check, same=same, bound=bound, verified=verified,
-                          why=why, table=table)
+            out[model] = dict(verified=bool(int(a.get("verified", 0))),
+                              why=_str_attr(a.get("why", "")),
+                              bound={q.tag: pair("", q) for q in qs if pair("", q)},
+                              table={q.tag: pair("table_error_", q) for q in qs
+                                     if pair("table_error_", q)})
     return out
 
 
-def case_rows(plan: List[dict], cases: Dict[str, Case], refs: Dict[str, dict],
-              qs: List[Quantity]) -> List[dict]:
-    """One row per setting of the matrix: cost, integration error (against the reference on the
-    same tables), total error (against the refined-table reference)."""
-    rows = []
-    for p in plan:
-        if p["role"] != "case":
-            continue
-        base_model = p["model"].replace(" refined", "")
-        rf = refs.get(base_model, {})
-        c = cases.get(p["case"])
-        ran = c is not None and p["status"] == "run"
-        same = rf.get("ref") if p["tables"] == "refined" else rf.get("same")
-        integ = _err(c, same, qs) if ran else {}
-        total = _err(c, rf.get("ref"), qs) if ran else {}
-        row = dict(model=p["model"], method=p["method"], tables=p["tables"],
-                   integrator=p["integrator"], kind=p["kind"], value=p["value"], label=p["label"],
-                   case=p["case"], status=(c.status if ran else p["status"]),
-                   cpu_median_s=_fmt(c.cpu) if ran else "",
-                   cpu_min_s=_fmt(c.cpu_min) if ran else "",
-                   cpu_max_s=_fmt(c.cpu_max) if ran else "",
-                   runs_ok=c.runs_ok if ran else "",
-                   rhs_evals=int(c.counts["rhs_evals"]) if ran else "")
-        for q in qs:
-            for what, e in (("integration", integ), ("total", total)):
-                v = e.get(q.tag)
-                row[f"{q.tag}_{what}_max_{q.unit}"] = _fmt(v[0]) if v else ""
-                row[f"{q.tag}_{what}_rms_{q.unit}"] = _fmt(v[1]) if v else ""
-        note = p.get("note", "")
-        if ran and not c.ok:
-            note = "failed: error over the part it ran; " + (c.message or "")[:160]
-        row["note"] = note
-        rows.append(row)
-    return rows
+def _str_attr(v) -> str:
+    return v.decode() if isinstance(v, bytes) else str(v)
+
+
+def _engine_csv(outdir: str, name: str) -> List[dict]:
+    path = os.path.join(outdir, name)
+    if not os.path.exists(path):
+        raise FileNotFoundError(f"{path} not found: the answer is computed by `workbench "
+                                f"precision` (run it again to write it)")
+    return read_csv(path)
 
 
 def _num(s) -> Optional[float]:
@@ -128,85 +101,6 @@ def recommendation_rows(outdir: str) -> List[dict]:
         raise FileNotFoundError(f"{path} not found: the recommendation is computed by "
                                 f"`workbench precision` (run it again to write it)")
     return read_csv(path)
-
-
-def _table_to_h5(g: h5py.Group, rows: List[dict]) -> None:
-    if not rows:
-        return
-    for k in rows[0]:
-        vals = [r.get(k, "") for r in rows]
-        nums = [_num(v) for v in vals]
-        if all(n is not None or v == "" for n, v in zip(nums, vals)) and any(
-                n is not None for n in nums):
-            g.create_dataset(k, data=np.array([np.nan if n is None else n for n in nums]))
-        else:
-            g.create_dataset(k, data=np.array([str(v) for v in vals], dtype=h5py.string_dtype()))
-
-
-def _engine_model_errors(path: str) -> Dict[str, dict]:
-    """The model errors the engine wrote (--model-reference), kept when the file is rewritten:
-    they are the engine's answer, this module does not compute them."""
-    out: Dict[str, dict] = {}
-    if not os.path.exists(path):
-        return out
-    with h5py.File(path, "r") as f:
-        for model, g in f.get("reference_bound", {}).items():
-            out[model] = {k: v for k, v in g.attrs.items()
-                          if "_model_error_" in k or k == "model_reference"}
-    return out
-
-
-def write_h5(path: str, rows, ref_rows, rec_rows, qs, levels, limit, refs) -> None:
-    tmp = path + ".tmp"
-    model_errors = _engine_model_errors(path)
-    with h5py.File(tmp, "w") as f:
-        f.attrs["quantities"] = ",".join(q.tag for q in qs)
-        f.attrs["units"] = ",".join(q.unit for q in qs)
-        f.attrs["levels"] = np.array(levels, float)
-        f.create_dataset("levels", data=np.array(levels, float))  # as the engine writes it
-        f.attrs["reference_limit"] = limit
-        for model, rf in refs.items():
-            g = f.create_group(f"reference_bound/{model}")
-            g.attrs["verified"] = int(rf["verified"])
-            g.attrs["why"] = rf["why"]
-            for q in qs:
-                b = rf["bound"].get(q.tag)
-                t = rf["table"].get(q.tag)
-                g.attrs[f"{q.tag}_max_{q.unit}"] = b[0] if b else np.nan
-                g.attrs[f"{q.tag}_rms_{q.unit}"] = b[1] if b else np.nan
-                g.attrs[f"{q.tag}_table_error_max_{q.unit}"] = t[0] if t else np.nan
-            for k, v in model_errors.get(model, {}).items():
-                g.attrs[k] = v
-        _table_to_h5(f.create_group("cases"), rows)
-        _table_to_h5(f.create_group("references"), ref_rows)
-        _table_to_h5(f.create_group("recommendation"), rec_rows)
-    os.replace(tmp, path)
-
-
-def _reference_table(refs: Dict[str, dict], qs: List[Quantity], limit: float) -> List[dict]:
-    out = []
-    for model, rf in refs.items():
-        for role in ("ref", "check", "same"):
-            c = rf[role]
-            row = dict(model=model, role={"ref": "reference", "check": "reference_check",
-                                         "same": "reference_same_tables"}[role],
-                       label=c.label if c else "", status=c.status if c else "missing",
-                       cpu_median_s=_fmt(c.cpu) if c else "",
-                       rhs_evals=int(c.counts["rhs_evals"]) if c else "")
-            out.append(row)
-        bound = dict(model=model, role="bound (reference_check vs reference)", label="",
-                     status="verified" if rf["verified"] else "UNVERIFIED: " + rf["why"],
-                     cpu_median_s="", rhs_evals="", limit=f"{limit:g}")
-        table = dict(model=model, role="table error (same-tables reference vs reference)",
-                     label="", status="", cpu_median_s="", rhs_evals="")
-        for q in qs:
-            b, t = rf["bound"].get(q.tag), rf["table"].get(q.tag)
-            bound[f"{q.tag}_max_{q.unit}"] = _fmt(b[0]) if b else ""
-            bound[f"{q.tag}_rms_{q.unit}"] = _fmt(b[1]) if b else ""
-            table[f"{q.tag}_max_{q.unit}"] = _fmt(t[0]) if t else ""
-            table[f"{q.tag}_rms_{q.unit}"] = _fmt(t[1]) if t else ""
-        out += [bound, table]
-    return out
 
 
 def _callgrind(rec_rows: List[dict], cases: Dict[str, Case], workbench: str, root: str) -> None:
@@ -275,14 +169,10 @@ def markdown(rows: List[dict], rec_rows: List[dict], refs: Dict[str, dict],
 def block_from_folder(outdir: str, quantities: str = "y,yaw", levels: str = "1,0.1,0.01",
                       limit: Optional[float] = None) -> str:
     """The markdown block of a precision folder (for the docs generator): as --markdown."""
+    del levels, limit  # the engine's answer holds them
     qs = parse_quantities(quantities)
-    lv = sorted((float(x) for x in levels.split(",")), reverse=True)
-    lim = limit if limit is not None else lv[-1] / 10
-    plan = read_csv(os.path.join(outdir, "precision_plan.csv"))
-    cases = _cases(outdir)
-    refs = reference_rows(plan, cases, qs, lim)
-    rows = case_rows(plan, cases, refs, qs)
-    return markdown(rows, recommendation_rows(outdir), refs, qs)
+    return markdown(_engine_csv(outdir, "precision.csv"), recommendation_rows(outdir),
+                    engine_refs(outdir, qs), qs)
 
 
 def _slug(model: str) -> str:
@@ -295,7 +185,8 @@ def main(argv=None) -> int:
     ap.add_argument("--quantities", default="y,yaw")
     ap.add_argument("--levels", default="1,0.1,0.01")
     ap.add_argument("--limit", type=float, default=None,
-                    help="verification limit of the references (default: smallest level / 10)")
+                    help="accepted for the command line's sake: the engine verified the "
+                         "references against its limit (precision.h5)")
     ap.add_argument("--callgrind", action="store_true")
     ap.add_argument("--workbench", default="")
     ap.add_argument("--root", default="")
@@ -308,34 +199,22 @@ def main(argv=None) -> int:
     except (QuantityError, ValueError) as e:
         print(f"railbench precision: {e}", file=sys.stderr)
         return 1
-    limit = a.limit if a.limit is not None else levels[-1] / 10
-    plan_path = os.path.join(a.outdir, "precision_plan.csv")
-    if not os.path.exists(plan_path):
-        print(f"railbench precision: {plan_path} not found (run `workbench precision` first)",
-              file=sys.stderr)
-        return 1
-    plan = read_csv(plan_path)
     try:
-        cases = _cases(a.outdir)
-    except StudyError as e:
-        print(f"railbench precision: {e}", file=sys.stderr)
-        return 1
-    refs = reference_rows(plan, cases, qs, limit)
-    rows = case_rows(plan, cases, refs, qs)
-    ref_rows = _reference_table(refs, qs, limit)
-    try:
+        rows = _engine_csv(a.outdir, "precision.csv")
+        refs = engine_refs(a.outdir, qs)
         rec_rows = recommendation_rows(a.outdir)
     except FileNotFoundError as e:
         print(f"railbench precision: {e}", file=sys.stderr)
         return 1
-    write_csv(os.path.join(a.outdir, "precision.csv"), rows)
-    write_csv(os.path.join(a.outdir, "precision_references.csv"), ref_rows)
     if a.callgrind and a.workbench:
         # Adds the instruction counts of the recommended settings as columns.
+        try:
+            cases = _cases(a.outdir)
+        except StudyError as e:
+            print(f"railbench precision: {e}", file=sys.stderr)
+            return 1
         _callgrind(rec_rows, cases, a.workbench, a.root)
         write_csv(os.path.join(a.outdir, "precision_recommendation.csv"), rec_rows)
-    write_h5(os.path.join(a.outdir, "precision.h5"), rows, ref_rows, rec_rows, qs, levels, limit,
-             refs)
     if a.markdown:
         with open(a.markdown, "w") as f:
             f.write(markdown(rows, rec_rows, refs, qs))

@@ -72,6 +72,57 @@ TEST(PrecisionAnswer, DivergedRunIsInfinitelyWrong) {
   EXPECT_TRUE(std::isinf(e.max));
 }
 
+// A file like resultFile's with its own output times t.
+std::string resultFileAt(const std::string& name, const std::vector<double>& t,
+                         const std::vector<double>& y, const std::vector<double>& car = {}) {
+  const std::string path = (dir() / name).string();
+  rb::io::ResultFile f(path);
+  f.dataset("/time", t, "s");
+  f.attr("/bodies", "names", std::string(car.empty() ? "ws1" : "ws1\ncar"));
+  f.attr("/bodies/ws1", "kind", std::string("wheelset"));
+  f.dataset("/bodies/ws1/y", y, "m");
+  if (car.empty()) {
+    f.attr("/contact", "method", std::string("kec"));
+  } else {
+    f.attr("/bodies/car", "kind", std::string("car_body"));
+    f.dataset("/bodies/car/y", car, "m");
+  }
+  f.finalize();
+  return path;
+}
+
+TEST(PrecisionAnswer, ErrorOfAFailedRunIsOnTheReferenceTimesInsideItsRun) {
+  // The reference over 1 s at 0.1 s; the run failed at 0.5 s with outputs every 0.025 s, 0.05 mm
+  // off: the error is taken at the reference's times up to 0.5 s, the run interpolated there.
+  std::vector<double> tr, yr, tc, yc;
+  for (int i = 0; i <= 10; ++i) {
+    tr.push_back(0.1 * i);
+    yr.push_back(1e-3 * tr.back());
+  }
+  for (int i = 0; i <= 20; ++i) {
+    tc.push_back(0.025 * i);
+    yc.push_back(1e-3 * tc.back() + 5e-5);
+  }
+  const rb::io::ResultReader a(resultFileAt("half.h5", tc, yc)), b(resultFileAt("full.h5", tr, yr));
+  const pr::Error e = pr::runError(a, b, lateral());
+  ASSERT_TRUE(e.have);
+  EXPECT_NEAR(e.max, 0.05, 1e-9);
+  EXPECT_NEAR(e.rms, 0.05, 1e-9);
+}
+
+TEST(PrecisionAnswer, GuidedVehicleErrorCoversItsOtherBodies) {
+  // Guided wheelsets follow the track (no error of their own): y covers the other bodies.
+  const std::vector<double> t = {0.0, 0.1, 0.2}, zero = {0, 0, 0}, off = {3e-4, 3e-4, 3e-4};
+  const rb::io::ResultReader a(resultFileAt("g_run.h5", t, zero, off)),
+      b(resultFileAt("g_ref.h5", t, zero, zero));
+  const auto qs = pr::parseQuantities({"y", "car.y"}, {"ws1", "car"}, false);
+  for (const auto& q : qs) {
+    const pr::Error e = pr::runError(a, b, q);
+    ASSERT_TRUE(e.have) << q.tag;
+    EXPECT_NEAR(e.max, 0.3, 1e-12) << q.tag;
+  }
+}
+
 pr::ReferenceAnswer reference(double bound, double table, bool verified = true) {
   pr::ReferenceAnswer r;
   r.model = "KEC";
@@ -117,6 +168,30 @@ TEST(PrecisionAnswer, CheapestOkSettingReachingTheLevel) {
   const pr::Recommendation none = pr::recommend("KEC", 1e-6, cs, &ref, false, "mm");
   EXPECT_FALSE(none.reached);  // the failed rk4 run does not count
   EXPECT_NE(none.note.find("none reaches it"), std::string::npos);
+}
+
+TEST(PrecisionAnswer, TheTablesAreTheEnginesErrors) {
+  // precision.csv and precision_references.csv are written by the engine from the same errors
+  // the recommendation uses: per quantity integration and total error, max and RMS; the bound row
+  // says verified or why not.
+  pr::Answer a;
+  a.quantities = pr::parseQuantities({"y"}, {"ws1"}, true);
+  a.limit = 1e-3;
+  a.references = {reference(0.02, 0.5, false)};
+  a.cases = cases();
+  for (auto& c : a.cases) {
+    c.status = c.ok ? "ok" : "failed";
+    c.integration_all = {c.integration};
+    c.total_all = {pr::Error{}};
+  }
+  const std::string csv = pr::casesCsv(a);
+  EXPECT_NE(csv.find("y_integration_max_mm,y_integration_rms_mm,y_total_max_mm"), std::string::npos)
+      << csv;
+  EXPECT_NE(csv.find(",0.035,"), std::string::npos) << csv;  // abm h=1ms's integration error
+  EXPECT_NE(csv.find(",inf,"), std::string::npos) << csv;    // the diverged one's
+  const std::string refs = pr::referencesCsv(a);
+  EXPECT_NE(refs.find("UNVERIFIED: a reference run failed"), std::string::npos) << refs;
+  EXPECT_NE(refs.find(",0.5,"), std::string::npos) << refs;  // the table error
 }
 
 TEST(PrecisionAnswer, LevelBelowTheTableErrorIsSaidToBeUnreachable) {

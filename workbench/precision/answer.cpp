@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <optional>
 #include <regex>
@@ -106,6 +108,8 @@ struct RunFile {
   std::string status;
   std::string message;  // of the first repeat that did not end ok
   double rhs = 0.0;
+  std::vector<double> cpu;  // [s] of every repeat that wrote it
+  int runs_ok = 0;
 };
 
 // Every repeat of a case ended ok (status of /stats), its rhs evaluations from the first.
@@ -126,8 +130,10 @@ RunFile runFile(const fs::path& dir, const std::string& id, int repeats) {
     if (s != "ok" && r.message.empty() && st->text.count("message"))
       r.message = st->text.at("message");
     if (s != "ok") r.status = s.empty() ? "failed" : s;
+    if (st->number.count("cpu_time_s")) r.cpu.push_back(st->number.at("cpu_time_s"));
     r.exists = true;
     r.ok = r.ok && s == "ok";
+    r.runs_ok += s == "ok" ? 1 : 0;
   }
   if (!r.exists) {
     r.ok = false;
@@ -305,6 +311,19 @@ ReferenceAnswer referenceAnswer(const Plan& p, const std::string& model,
   if (same.empty()) same = ref;
   const RunFile fr = runFile(refDir, ref, 1);
   const RunFile fc = runFile(refDir, check, 1);
+  for (const char* role : {kRoleReference, kRoleCheck, kRoleSameTables}) {
+    ReferenceAnswer::Run run{role, "", "missing", 0.0, 0.0};
+    const std::string id = referenceId(p, model, role);
+    for (const auto& r : p.references)
+      if (r.model == model && r.role == role) run.label = r.c.label;
+    if (!id.empty()) {
+      const RunFile f = runFile(refDir, id, 1);
+      run.status = f.status;
+      run.cpu = f.cpu.empty() ? 0.0 : f.cpu.front();
+      run.rhs = f.rhs;
+    }
+    ra.runs.push_back(std::move(run));
+  }
   const bool both_ok = !ref.empty() && !check.empty() && fr.ok && fc.ok;
   for (const auto& q : quantities) {
     ra.bound.push_back(fileError(runH5(refDir, check), runH5(refDir, ref), q));
@@ -336,12 +355,15 @@ ReferenceAnswer referenceAnswer(const Plan& p, const std::string& model,
 }
 
 // Every rung of every ladder with its errors against the references of its model.
-std::vector<CaseAnswer> caseAnswers(const Plan& p, const Quantity& q0, const fs::path& refDir,
-                                    const fs::path& caseDir, int repeats) {
+std::vector<CaseAnswer> caseAnswers(const Plan& p, const std::vector<Quantity>& qs,
+                                    const fs::path& refDir, const fs::path& caseDir, int repeats) {
   std::vector<CaseAnswer> out;
   for (const auto& l : p.ladders) {
     const std::string base = baseModel(l.model);
     const bool refined = base != l.model;
+    std::string method;
+    for (const auto& m : p.models)
+      if (m.name == l.model) method = m.method;
     const std::string ref = referenceId(p, base, kRoleReference);
     std::string same = refined ? ref : referenceId(p, base, kRoleSameTables);
     if (same.empty()) same = ref;  // no tables (elastic)
@@ -355,14 +377,30 @@ std::vector<CaseAnswer> caseAnswers(const Plan& p, const Quantity& q0, const fs:
       c.value = rung.value;
       c.cpu = rung.cpu;
       c.status = rung.status;
+      c.method = method;
+      c.tables = tablesOf(method, l.model);
+      c.kind = l.fixed ? "step" : "tol";
+      c.note = rung.note;
       if (rung.status == "run") {
         const RunFile f = runFile(caseDir, c.id, repeats);
         c.status = f.status;
         c.ok = f.ok;
         c.rhs = f.rhs;
-        if (f.exists) {
-          c.integration = fileError(runH5(caseDir, c.id), runH5(refDir, same), q0);
-          c.total = fileError(runH5(caseDir, c.id), runH5(refDir, ref), q0);
+        c.runs_ok = f.runs_ok;
+        if (!f.cpu.empty()) {
+          c.cpu_min = *std::min_element(f.cpu.begin(), f.cpu.end());
+          c.cpu_max = *std::max_element(f.cpu.begin(), f.cpu.end());
+        }
+        if (f.exists && !f.ok)
+          c.note = "failed: error over the part it ran; " + f.message.substr(0, 160);
+        if (f.exists)
+          for (const auto& q : qs) {
+            c.integration_all.push_back(fileError(runH5(caseDir, c.id), runH5(refDir, same), q));
+            c.total_all.push_back(fileError(runH5(caseDir, c.id), runH5(refDir, ref), q));
+          }
+        if (!c.integration_all.empty()) {
+          c.integration = c.integration_all.front();
+          c.total = c.total_all.front();
         }
       }
       out.push_back(std::move(c));
@@ -396,7 +434,7 @@ Answer computeAnswer(const Plan& p, const std::string& out, int repeats) {
     }
   }
   const Quantity& q0 = a.quantities.front();
-  a.cases = caseAnswers(p, q0, refDir, caseDir, repeats);
+  a.cases = caseAnswers(p, a.quantities, refDir, caseDir, repeats);
   for (const auto& m : p.models) {
     const std::string base = baseModel(m.name);
     const ReferenceAnswer* ref = nullptr;
@@ -431,6 +469,154 @@ std::string recommendationCsv(const Answer& a) {
 
 namespace {
 
+// A number of the tables, empty when it is not known.
+std::string cell(bool have, double v) {
+  return have ? fmt(v) : std::string();
+}
+
+// The columns of precision.csv and their values per case, one definition for the CSV and the
+// /cases datasets of precision.h5.
+struct Table {
+  std::vector<std::string> names;
+  std::vector<std::vector<std::string>> rows;
+};
+
+Table casesTable(const Answer& a) {
+  Table t;
+  t.names = {"model", "method", "tables",       "integrator", "kind",      "value",   "label",
+             "case",  "status", "cpu_median_s", "cpu_min_s",  "cpu_max_s", "runs_ok", "rhs_evals"};
+  for (const auto& q : a.quantities)
+    for (const char* what : {"integration", "total"})
+      for (const char* stat : {"max", "rms"})
+        t.names.push_back(q.tag + "_" + what + "_" + stat + "_" + q.unit);
+  t.names.emplace_back("note");
+  for (const auto& c : a.cases) {
+    const bool ran = c.status != "planned" && c.status != "skipped";
+    std::vector<std::string> r = {c.model,
+                                  c.method,
+                                  c.tables,
+                                  c.integrator,
+                                  c.kind,
+                                  formatNumberExact(c.value),
+                                  c.label,
+                                  c.id,
+                                  c.status,
+                                  cell(ran && c.cpu > 0.0, c.cpu),
+                                  cell(ran && c.cpu_max > 0.0, c.cpu_min),
+                                  cell(ran && c.cpu_max > 0.0, c.cpu_max),
+                                  ran ? std::to_string(c.runs_ok) : std::string(),
+                                  ran ? formatNumber(c.rhs, 12) : std::string()};
+    for (std::size_t k = 0; k < a.quantities.size(); ++k) {
+      const Error none;
+      const Error& i = k < c.integration_all.size() ? c.integration_all[k] : none;
+      const Error& o = k < c.total_all.size() ? c.total_all[k] : none;
+      for (const Error* e : {&i, &o}) {
+        r.push_back(cell(e->have, e->max));
+        r.push_back(cell(e->have, e->rms));
+      }
+    }
+    r.push_back(c.note);
+    t.rows.push_back(std::move(r));
+  }
+  return t;
+}
+
+Table referencesTable(const Answer& a) {
+  Table t;
+  t.names = {"model", "role", "label", "status", "cpu_median_s", "rhs_evals", "limit"};
+  for (const auto& q : a.quantities)
+    for (const char* stat : {"max", "rms"}) t.names.push_back(q.tag + "_" + stat + "_" + q.unit);
+  const std::size_t nq = a.quantities.size();
+  for (const auto& ref : a.references) {
+    for (const auto& run : ref.runs) {
+      std::vector<std::string> r = {ref.model,
+                                    run.role,
+                                    run.label,
+                                    run.status,
+                                    cell(run.status != "missing" && run.cpu > 0.0, run.cpu),
+                                    run.status != "missing" ? formatNumber(run.rhs, 12) : "",
+                                    ""};
+      r.resize(t.names.size());
+      t.rows.push_back(std::move(r));
+    }
+    const std::pair<const char*, const std::vector<Error>*> errors[] = {
+        {"bound (reference_check vs reference)", &ref.bound},
+        {"table error (same-tables reference vs reference)", &ref.table}};
+    for (const auto& [role, errs] : errors) {
+      const bool bound = errs == &ref.bound;
+      std::vector<std::string> r = {
+          ref.model,
+          role,
+          "",
+          bound ? (ref.verified ? std::string("verified") : "UNVERIFIED: " + ref.why) : "",
+          "",
+          "",
+          bound ? formatNumber(a.limit) : ""};
+      for (std::size_t k = 0; k < nq; ++k) {
+        const Error& e = (*errs)[k];
+        r.push_back(cell(e.have, e.max));
+        r.push_back(cell(e.have, e.rms));
+      }
+      t.rows.push_back(std::move(r));
+    }
+  }
+  return t;
+}
+
+std::string csvOf(const Table& t) {
+  std::ostringstream s;
+  for (std::size_t i = 0; i < t.names.size(); ++i) s << (i ? "," : "") << csvField(t.names[i]);
+  s << "\n";
+  for (const auto& r : t.rows) {
+    for (std::size_t i = 0; i < r.size(); ++i) s << (i ? "," : "") << csvField(r[i]);
+    s << "\n";
+  }
+  return s.str();
+}
+
+// A table as one dataset per column under g: numbers where every cell of the column is a number
+// or empty (empty: NaN), text otherwise.
+void writeTable(io::ResultFile& f, const std::string& g, const Table& t) {
+  if (t.rows.empty()) return;
+  for (std::size_t c = 0; c < t.names.size(); ++c) {
+    std::vector<double> numbers;
+    std::vector<std::string> text;
+    bool numeric = false, all = true;
+    for (const auto& r : t.rows) {
+      const std::string& v = r[c];
+      text.push_back(v);
+      if (v.empty()) {
+        numbers.push_back(std::numeric_limits<double>::quiet_NaN());
+        continue;
+      }
+      char* end = nullptr;
+      const double x = std::strtod(v.c_str(), &end);
+      if (end == v.c_str() || *end != '\0') {
+        all = false;
+        continue;
+      }
+      numbers.push_back(x);
+      numeric = true;
+    }
+    if (numeric && all)
+      f.dataset(g + "/" + t.names[c], numbers, "-");
+    else
+      f.stringDataset(g + "/" + t.names[c], text);
+  }
+}
+
+}  // namespace
+
+std::string casesCsv(const Answer& a) {
+  return csvOf(casesTable(a));
+}
+
+std::string referencesCsv(const Answer& a) {
+  return csvOf(referencesTable(a));
+}
+
+namespace {
+
 // /reference_bound/<model>: whether the references agree, and their errors per quantity.
 void writeReferenceBounds(io::ResultFile& f, const Answer& a) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -444,6 +630,7 @@ void writeReferenceBounds(io::ResultFile& f, const Answer& a) {
       f.attr(g, q.tag + "_max" + u, r.bound[k].have ? r.bound[k].max : nan);
       f.attr(g, q.tag + "_rms" + u, r.bound[k].have ? r.bound[k].rms : nan);
       f.attr(g, q.tag + "_table_error_max" + u, r.table[k].have ? r.table[k].max : nan);
+      f.attr(g, q.tag + "_table_error_rms" + u, r.table[k].have ? r.table[k].rms : nan);
       if (k < r.model_error.size()) {
         f.attr(g, q.tag + "_model_error_max" + u,
                r.model_error[k].have ? r.model_error[k].max : nan);
@@ -515,6 +702,8 @@ void writeAnswerH5(const Answer& a, const std::string& path) {
   f.dataset("/levels", a.levels, a.quantities.front().unit);
   writeReferenceBounds(f, a);
   writeRecommendations(f, a);
+  writeTable(f, "/cases", casesTable(a));
+  writeTable(f, "/references", referencesTable(a));
   f.finalize();
 }
 

@@ -3,7 +3,8 @@
 // are done, so that it exists and is printed whether or not the figures are drawn: the error of
 // every run against its reference, the references' verification, and the cheapest setting per
 // accuracy level with a plain note when a level cannot be reached or verified. The plotting step
-// (plots/railbench/precision.py) reads precision_recommendation.csv and only draws.
+// (plots/railbench/precision.py) reads the files written here (precision.csv,
+// precision_references.csv, precision_recommendation.csv, precision.h5) and only draws.
 //
 // The error rule (one rule for every run and reference): quantity q of a run against a reference
 // is max and RMS of |run - reference| in q's display unit over the reference's output times
@@ -59,6 +60,13 @@ struct ReferenceAnswer {
   // per quantity: this model's reference against the model reference's (--model-reference;
   // empty without one, and for the model reference itself)
   std::vector<Error> model_error;
+  // Its reference runs (reference, reference_check, reference_same_tables) as they ended.
+  struct Run {
+    std::string role, label, status;  // status: ok, failed, missing
+    double cpu = 0.0;                 // [s]
+    double rhs = 0.0;
+  };
+  std::vector<Run> runs;
 };
 
 struct CaseAnswer {
@@ -71,6 +79,13 @@ struct CaseAnswer {
   double rhs = 0.0;    // rhs evaluations (first repeat)
   Error integration;   // first quantity, against the same-tables reference
   Error total;         // first quantity, against the refined-table reference
+  // As precision_plan.csv: contact method, tables (default, refined, none) and step or tol.
+  std::string method, tables, kind;
+  std::string note;                     // the plan's, or why the run failed
+  double cpu_min = 0.0, cpu_max = 0.0;  // [s] over the repeats that wrote a time
+  int runs_ok = 0;                      // repeats that ended ok
+  std::vector<Error> integration_all;   // every quantity (the first is `integration`)
+  std::vector<Error> total_all;         // every quantity (the first is `total`)
 };
 
 struct Recommendation {
@@ -106,10 +121,20 @@ Answer computeAnswer(const Plan& plan, const std::string& out, int repeats);
 // precision_recommendation.csv (one row per model and level).
 std::string recommendationCsv(const Answer& answer);
 
-// precision.h5 as the engine knows it: /recommendation (the columns of the CSV as datasets),
-// /reference_bound/<model> attributes (verified, why, per quantity the bound and the table
-// error), root attributes quantities, units, reference_limit and the dataset /levels. The
-// plotting step rewrites the file with the per-case tables added.
+// precision.csv: one row per setting of the ladders (model, method, tables, integrator, step or
+// tolerance, status, CPU median / min / max, repeats ok, rhs evaluations, and per quantity the
+// integration error against the same-tables reference and the total error against the
+// refined-table reference, max and RMS, and a note).
+std::string casesCsv(const Answer& answer);
+// precision_references.csv: per default-table model its reference runs, the verification bound
+// (reference_check against reference) and the table error (same-tables reference against
+// reference) per quantity.
+std::string referencesCsv(const Answer& answer);
+
+// precision.h5, the engine's whole answer: /recommendation, /cases and /references (the columns
+// of the three CSVs as datasets), /reference_bound/<model> attributes (verified, why, per
+// quantity the bound and the table error, max and RMS), root attributes quantities, units,
+// reference_limit and the dataset /levels. The plotting step only reads it.
 void writeAnswerH5(const Answer& answer, const std::string& path);
 
 // The printed answer: per model the reference state, bound and table error, then the table.

@@ -521,13 +521,15 @@ Plan makePlan(const PrecisionOptions& o) {
   return p;
 }
 
+std::string tablesOf(const std::string& method, const std::string& model) {
+  if (!methodNamed(method).table) return "none";
+  return model.find("refined") != std::string::npos ? "refined" : "default";
+}
+
 std::string planCsv(const Plan& plan) {
   std::ostringstream s;
   s.precision(12);
   s << "folder,case,role,model,method,tables,integrator,kind,value,label,status,note\n";
-  auto tablesOf = [&](const std::string& model) {
-    return model.find("refined") != std::string::npos ? "refined" : "default";
-  };
   for (const auto& r : plan.references) {
     const bool refined = r.role != std::string(kRoleSameTables);
     std::string method;
@@ -543,8 +545,8 @@ std::string planCsv(const Plan& plan) {
       if (m.name == l.model) method = m.method;
     for (const auto& r : l.rungs)
       s << "cases," << r.c.id << "," << kRoleCase << "," << csvField(l.model) << "," << method
-        << "," << (!methodNamed(method).table ? "none" : tablesOf(l.model)) << "," << l.integrator
-        << "," << (l.fixed ? "step" : "tol") << "," << r.value << "," << csvField(r.c.label) << ","
+        << "," << tablesOf(method, l.model) << "," << l.integrator << ","
+        << (l.fixed ? "step" : "tol") << "," << r.value << "," << csvField(r.c.label) << ","
         << r.status << "," << csvField(r.note) << "\n";
   }
   for (const auto& n : plan.notes)

@@ -84,6 +84,10 @@ std::vector<double> splitNumbers(const std::string& text, const std::string& opt
 // decides the models and the ladders, and leaves out (with a note) what the scenario refuses.
 Plan makePlan(const PrecisionOptions& o);
 
+// The tables a case of `model` (contact method `method`) runs on, as precision_plan.csv and
+// precision.csv write it: "none" (a method without tables), "refined" or "default".
+std::string tablesOf(const std::string& method, const std::string& model);
+
 // precision_plan.csv: one row per case (references and rungs, also those skipped) with its
 // folder, id, role, model, integrator, setting, status and note.
 std::string planCsv(const Plan& plan);

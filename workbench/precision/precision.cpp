@@ -195,6 +195,8 @@ int runPrecision(const PrecisionOptions& given) {
   // The answer is the engine's: computed, written and printed here whether or not figures follow.
   const precision::Answer answer = precision::computeAnswer(p, out.string(), o.repeats);
   writeText(out / "precision_recommendation.csv", precision::recommendationCsv(answer));
+  writeText(out / "precision.csv", precision::casesCsv(answer));
+  writeText(out / "precision_references.csv", precision::referencesCsv(answer));
   precision::writeAnswerH5(answer, (out / "precision.h5").string());
   precision::printAnswer(answer, std::cout);
   for (const auto& r : answer.references)
