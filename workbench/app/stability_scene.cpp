@@ -7,6 +7,7 @@
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/spec.hpp"
+#include "workbench/profiles/nominal.hpp"
 
 namespace fs = std::filesystem;
 
@@ -82,7 +83,8 @@ std::string sceneText(const std::string& path, const std::string& module,
     if (c == '\n') c = ' ';
   s << "-- Stability scene written by workbench for the vehicle file " << shown << "\n"
     << "-- (workbench/app/stability_scene.hpp): long tangent track without irregularities,\n"
-    << "-- S1002 on 60E1 at 1:40 (B = 1360 mm, G = 1435 mm, r0 = 0.46 m), " << contact
+    << "-- S1002 on 60E1 at 1:40 (B = 1360 mm, G = " << formatNumber(track::kStandardGauge * 1e3)
+    << " mm, r0 = " << formatNumber(profiles::kNominalWheelRadius) << " m), " << contact
     << " contact with\n"
     << "-- Polach creep at the paper's mu = " << formatNumber(creep::kDefaultMu)
     << " (section 5.1), dopri5. The commands set\n"
@@ -95,7 +97,8 @@ std::string sceneText(const std::string& path, const std::string& module,
     << "end\n"
     << "track { segments = { tangent { length = 20000 } }, step = 0.5 }\n"
     << "profiles { wheel = \"s1002\", rail = \"60e1\", back_to_back = 1.360, gauge = "
-    << formatNumber(track::kStandardGauge) << ", r0 = 0.46,\n"
+    << formatNumber(track::kStandardGauge)
+    << ", r0 = " << formatNumber(profiles::kNominalWheelRadius) << ",\n"
     << "           inclination = 0.025 }\n"
     << "contact { method = \"" << contact
     << "\", creep = \"polach\", mu = " << formatNumber(creep::kDefaultMu) << " }\n"
