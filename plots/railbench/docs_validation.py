@@ -3,10 +3,10 @@ Eq. 33)."""
 from __future__ import annotations
 
 import os
-import re
 from typing import Dict, List, Optional
 
 from .provenance import ROOT
+from .stress_checks import failure_summary
 from .docs_blocks import fmt, missing, num, read_csv, table
 
 
@@ -31,13 +31,12 @@ def hard_rows(build: str) -> List[dict]:
     return read_csv(os.path.join(build, "hard", "hard_cases.csv"))
 
 
-def failure_reason(msg: str) -> str:
-    """The short reason of a failure message ("rk4: failed at t = 1.8: <reason>; details")."""
-    if "left the table" in msg:
-        return ("the LUT entry" if "LUT entry" in msg else "the contact") + " left the table"
-    m = re.search(r"failed at t = [^:]+: (.*)", msg)
-    reason = re.split(r"[:;(\[]", m.group(1) if m else msg)[0].strip()
-    return reason[:60].replace("|", "/") or "?"
+def failure_reason(row: dict) -> str:
+    """The short reason of a failed run from its failure record (hard_cases.csv's failure_*
+    columns, the result's /stats)."""
+    if row.get("failure_kind"):
+        return failure_summary({k: row.get(k) for k in ("failure_kind", "failure_reason")})
+    return "?"
 
 
 def hard_detail_block(build: str) -> str:
@@ -50,7 +49,7 @@ def hard_detail_block(build: str) -> str:
     for r in rows:
         status = r["status"] or "error"
         if status == "failed":
-            status = "failed: " + failure_reason(r["message"] or "")
+            status = "failed: " + failure_reason(r)
         extra = []
         if r["case"].startswith("hunting"):  # the hunting measures mean nothing elsewhere
             if r.get("ws1_y_pp_last_mm") not in (None, "", "nan"):

@@ -28,7 +28,7 @@ import sys
 from typing import Dict, List, Optional, Tuple
 
 from .common import error, parser, read_csv, save_figure, write_csv
-from .stress_checks import BOUNDS, classify_run, failure_summary
+from .stress_checks import BOUNDS, VALIDITY_REASONS, classify_run, failure_summary
 from .study_data import StudyError, load_study
 from .study_precision import _errors
 
@@ -67,11 +67,11 @@ def _run_row(meta: dict, case, outcome: str, fields: dict, message: str,
         "message": message, "case": meta["case"], "file": case.file if case else ""}
 
 
-def _validity(message: str) -> str:
+def _validity(failure: dict) -> str:
     """What a clean failure of a reference means: the model leaves its validity (wheel lift,
     contact outside its table: docs/contact_dynamics.md), or "" (the reference's own solver gave
-    up: too much work, step too small)."""
-    if "wheel lift" in (message or "") or "table" in (message or ""):
+    up: too much work, step too small). From its failure record, never its message."""
+    if (failure or {}).get("failure_reason") in VALIDITY_REASONS:
         return "the model leaves its validity there, this run went on through it"
     return ""
 
@@ -91,8 +91,8 @@ def _judge(case, ref, ref_outcome: str, tol: float) -> Tuple[str, Optional[float
     if ref_outcome == "failed cleanly":
         return ("inaccurate", err,
                 "its reference stops at t = %.4g s (%s): %s; error up to there %s mm"
-                % (ref.counts.get("t_reached", 0.0), failure_summary(ref.message),
-                   _validity(ref.message) or "accuracy beyond it not established",
+                % (ref.counts.get("t_reached", 0.0), failure_summary(ref.failure),
+                   _validity(ref.failure) or "accuracy beyond it not established",
                    "?" if err is None else "%.3g" % err))
     if err is None:
         return "inaccurate", None, "no common output times with the reference"
@@ -120,8 +120,8 @@ def evaluate(outdir: str, tol: float) -> List[dict]:
         if ref_meta is not None:
             ref_outcome, fields, problems, _ = _classify(ref, ref_meta)
             msg = "; ".join(problems) if problems else (
-                failure_summary(ref.message) + "; " + (
-                    "the model leaves its validity there" if _validity(ref.message) else
+                failure_summary(ref.failure) + "; " + (
+                    "the model leaves its validity there" if _validity(ref.failure) else
                     "the reference itself could not be computed past it")
                 if ref_outcome == "failed cleanly" else "")
             rows.append(_run_row(dict(ref_meta, integrator="reference " + ref_meta["integrator"]),
@@ -136,7 +136,7 @@ def evaluate(outdir: str, tol: float) -> List[dict]:
             if outcome == "ok":
                 outcome, err, msg = _judge(case, ref, ref_outcome, tol)
             elif outcome == "failed cleanly":
-                msg = failure_summary(case.message if case else "")
+                msg = failure_summary(case.failure if case else {})
                 if ref_outcome == "failed cleanly":
                     msg += "; the reference fails too"
             rows.append(_run_row(m, case, outcome, fields, msg, err))

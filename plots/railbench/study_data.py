@@ -59,6 +59,10 @@ def parse_overrides(text: str) -> Dict[str, str]:
     return out
 
 
+# The failure record's columns of the summaries (workbench/study/summary.cpp).
+FAILURE_COLUMNS = ("failure_kind", "failure_reason", "failure_body", "failure_t", "failure_s")
+
+
 @dataclass
 class Case:
     id: str
@@ -76,6 +80,9 @@ class Case:
     counts: Dict[str, float]
     file: str
     solver: str = ""  # the solver part of the label (summary_cases.csv), "" for the base's solver
+    # The failure record of its first failed run (summary_cases.csv, the result's /stats):
+    # failure_kind, failure_reason, failure_body, failure_t, failure_s; "" where unknown.
+    failure: Dict[str, str] = field(default_factory=dict)
     repeats: List[dict] = field(default_factory=list)
     common: frozenset = frozenset()  # (key, value) overrides every case of the study has
     main_base: str = ""  # the base scenario of most cases
@@ -237,7 +244,8 @@ def load_study(outdir: str) -> Study:
             message=r.get("message", ""), runs=int(_num(r.get("runs"), 0)),
             runs_ok=int(_num(r.get("runs_ok"), 0)), cpu_median=_num(r["median_cpu_time_s"], 0.0),
             cpu_min=_num(r.get("min_cpu_time_s"), 0.0), cpu_max=_num(r.get("max_cpu_time_s"), 0.0),
-            counts=counts, file=f, solver=r["solver"], repeats=reps))
+            counts=counts, file=f, solver=r["solver"], repeats=reps,
+            failure={k: r.get(k, "") or "" for k in FAILURE_COLUMNS}))
     if len(cases) > 1:
         common = frozenset.intersection(*(frozenset(c.overrides.items()) for c in cases))
         bases = [c.base for c in cases]

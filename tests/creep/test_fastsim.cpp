@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/creep/tractcurv.hpp"
 #include "workbench/creep/fastsim.hpp"
 #include "workbench/creep/polach.hpp"
 
@@ -240,32 +241,14 @@ TEST(Fastsim, ConvergesWithGridRefinement) {
   EXPECT_LT(worst_spin, 1.5e-2);
 }
 
-struct CurvePoint {
-  std::string series;
-  double cksi, fx;
-};
-
-std::vector<CurvePoint> readCurve() {
-  std::ifstream in(std::string(RB_SOURCE_DIR) + "/tests/data/creep/contact_tractcurv.txt");
-  std::vector<CurvePoint> out;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream is(line);
-    CurvePoint p;
-    int id = 0;
-    is >> p.series >> id >> p.cksi >> p.fx;
-    out.push_back(p);
-  }
-  return out;
-}
+using rb::test::CurvePoint;
 
 // The creep force curve of CONTACT's tractcurv example (a/b = 0.5, mu = 0.33, pure s_x): ours
 // against CONTACT's own FASTSIM (same algorithm, its grid and coefficients: an implementation
 // check) and against Kalker's exact theory (the method's known error in the transition range;
 // measured, not tuned: docs/creep.md).
 TEST(Fastsim, TractionCurveAgainstContact) {
-  const std::vector<CurvePoint> curve = readCurve();
+  const std::vector<CurvePoint> curve = rb::test::tractcurv();
   ASSERT_EQ(curve.size(), 60u);
   const CreepParams p = params(0.33, 8.2e10);
   const ContactPatch c = ellipse(6.304e-3, 12.61e-3, 1.067e5);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/creep/tractcurv.hpp"
 #include "workbench/creep/fastsim.hpp"
 #include "workbench/creep/polach.hpp"
 #include "workbench/creep/shen_hedrick_elkins.hpp"
@@ -106,32 +107,14 @@ TEST(ShenHedrickElkins, DegenerateInputsGiveZero) {
   EXPECT_EQ(z.fy, 0.0);
 }
 
-struct CurvePoint {
-  std::string series;
-  double cksi, fx;
-};
-
-std::vector<CurvePoint> exactCurve() {
-  std::ifstream in(std::string(RB_SOURCE_DIR) + "/tests/data/creep/contact_tractcurv.txt");
-  std::vector<CurvePoint> out;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream is(line);
-    CurvePoint p;
-    int id = 0;
-    is >> p.series >> id >> p.cksi >> p.fx;
-    if (p.series == "exact") out.push_back(p);
-  }
-  return out;
-}
+using rb::test::CurvePoint;
 
 // CONTACT's tractcurv example (a/b = 0.5, mu = 0.33, pure s_x): the law and FASTSIM (default grid)
 // against Kalker's exact theory. Measured, not tuned: both lie below the exact curve in the
 // transition range, the cubic by at most 0.035 mu Q (at s_x = 2e-3) and FASTSIM by 0.045 mu Q;
 // the cubic reaches mu Q at u = 3, where the exact curve is within 1e-3 of it.
 TEST(ShenHedrickElkins, TractionCurveAgainstExactTheory) {
-  const std::vector<CurvePoint> curve = exactCurve();
+  const std::vector<CurvePoint> curve = rb::test::tractcurv("exact");
   ASSERT_EQ(curve.size(), 30u);
   const CreepParams p = params(0.33);
   const ContactPatch c = ellipse(6.304e-3, 12.61e-3, 1.067e5);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/run/run_files.hpp"
 #include "workbench/creep/hertz.hpp"
 #include "workbench/io/result_reader.hpp"
 #include "workbench/io/schema.hpp"
@@ -29,21 +30,11 @@ struct Row {
 // A short run of `scenario` written into a result file; returns its path.
 std::string runInto(const std::string& scenario, const std::string& name,
                     std::vector<std::string> sets) {
-  rb::run::CompileOptions o;
-  o.scenario = scenario;
-  o.root = RB_SOURCE_DIR;
   sets.emplace_back("run.duration=0.02");
-  o.overrides = sets;
-  const rb::run::Model m = rb::run::compile(o);
-  const fs::path dir = fs::temp_directory_path() / "rb_test_result_schema";
-  fs::create_directories(dir);
-  const std::string path = (dir / name).string();
-  rb::io::ResultFile f(path);
-  rb::run::writeProvenance(m, f, "now");
-  rb::run::runVehicle(m, f, rb::run::VehicleRunOptions{});
-  f.finalize();
-  return path;
+  return rb::test::runInto(rb::test::compiled(scenario, sets), "rb_test_result_schema", name).path;
 }
+
+using rb::test::datasets;
 
 // Every row of every /schema/<part> table, by dataset path.
 std::map<std::string, Row> schemaRows(const rb::io::ResultReader& r) {
@@ -64,18 +55,6 @@ std::map<std::string, Row> schemaRows(const rb::io::ResultReader& r) {
     }
   }
   return out;
-}
-
-// The numeric datasets below `group`, recursively.
-void datasets(const rb::io::ResultReader& r, const std::string& group,
-              std::vector<std::string>& out) {
-  for (const auto& m : r.members(group)) {
-    const std::string p = (group == "/" ? "" : group) + "/" + m;
-    if (r.dataset(p))
-      out.push_back(p);
-    else
-      datasets(r, p, out);
-  }
 }
 
 // The row of dataset `d`: present, with a unit (its `units`), a meaning and existing codes.

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/run/run_files.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/io/result_reader.hpp"
 #include "workbench/run/compile.hpp"
@@ -24,11 +25,9 @@ namespace fs = std::filesystem;
 // The default scene (ABM, fixed step, KEC contact, assessment on), 0.3 s, the wagon's reference
 // point at `start`, with one suspension element written.
 rb::run::Model compiled(double start) {
-  rb::run::CompileOptions o;
-  o.scenario = "scenarios/default/case3_kec_fast.lua";
-  o.root = RB_SOURCE_DIR;
-  o.overrides = {"run.duration=0.3", "vehicle.start=" + std::to_string(start)};
-  rb::run::Model m = rb::run::compile(o);
+  rb::run::Model m =
+      rb::test::compiled("scenarios/default/case3_kec_fast.lua",
+                         {"run.duration=0.3", "vehicle.start=" + std::to_string(start)});
   // One element written too (what run.output.elements gives).
   const auto id = m.lead().vehicle.findElement("prim_y_ws1_l");
   EXPECT_TRUE(id);
@@ -37,27 +36,12 @@ rb::run::Model compiled(double start) {
 }
 
 std::string runInto(const rb::run::Model& m, const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "rb_test_run_of_vehicles";
-  fs::create_directories(dir);
-  const std::string path = (dir / name).string();
-  rb::io::ResultFile f(path);
-  rb::run::writeProvenance(m, f, "now");
-  const rb::run::VehicleRunResult res = rb::run::runVehicle(m, f, rb::run::VehicleRunOptions{});
-  f.finalize();
-  EXPECT_TRUE(res.result.ok) << res.result.message;
-  return path;
+  const rb::test::RunFile run = rb::test::runInto(m, "rb_test_run_of_vehicles", name);
+  EXPECT_TRUE(run.result.result.ok) << run.result.result.message;
+  return run.path;
 }
 
-void datasets(const rb::io::ResultReader& r, const std::string& group,
-              std::vector<std::string>& out) {
-  for (const auto& m : r.members(group)) {
-    const std::string p = (group == "/" ? "" : group) + "/" + m;
-    if (r.dataset(p))
-      out.push_back(p);
-    else
-      datasets(r, p, out);
-  }
-}
+using rb::test::datasets;
 
 bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() &&

@@ -149,7 +149,7 @@ int consistentCoupling(const ContactModels& models, const StageInput& in,
     os << "wheelset '" << models.vehicle.bodies[ww.body].name << "' at t = " << in.t
        << " s: normal and tangential forces did not converge in " << it
        << " fixed-point iterations";
-    work.error = os.str();
+    work.fail(ContactFailure::Coupling, models.vehicle.bodies[ww.body].name, os.str());
     return 1;
   }
   ww.lambda = lambda;  // the patches carry the creep forces of the converged normal forces

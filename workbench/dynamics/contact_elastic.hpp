@@ -152,7 +152,7 @@ inline int checkDerailment(const ContactModels& models, const StageInput& in,
        << e.derailment_lift * 1e3 << " mm) at t = " << in.t
        << " s, s = " << work.bodies.q[ww.body][vehicle::kS]
        << " m (lateral position y = " << work.bodies.q[ww.body][vehicle::kY] * 1e3 << " mm)";
-    work.error = os.str();
+    work.fail(ContactFailure::Derailment, models.vehicle.bodies[ww.body].name, os.str());
     return 1;
   }
   return 0;
@@ -172,14 +172,16 @@ inline int elasticAccelerations(const ContactModels& models, const StageInput& i
   }
   Cholesky5 llt;
   if (!llt.factor(M)) {
-    work.error = "wheelset '" + models.vehicle.bodies[ww.body].name +
-                 "': mass matrix not positive definite at t = " + std::to_string(in.t) + " s";
+    work.fail(ContactFailure::Singular, models.vehicle.bodies[ww.body].name,
+              "wheelset '" + models.vehicle.bodies[ww.body].name +
+                  "': mass matrix not positive definite at t = " + std::to_string(in.t) + " s");
     return 1;
   }
   qdd = llt.solve(b);
   if (qdd.allFinite()) return 0;
-  work.error = "wheelset '" + models.vehicle.bodies[ww.body].name +
-               "': non-finite accelerations at t = " + std::to_string(in.t) + " s";
+  work.fail(ContactFailure::NonFinite, models.vehicle.bodies[ww.body].name,
+            "wheelset '" + models.vehicle.bodies[ww.body].name + "': non-finite accelerations at t = " +
+                std::to_string(in.t) + " s");
   return 1;
 }
 

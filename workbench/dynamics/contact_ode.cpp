@@ -7,6 +7,7 @@
 #include "workbench/core/bits.hpp"
 #include "workbench/dynamics/contact_evaluate.hpp"
 #include "workbench/dynamics/contact_methods.hpp"
+#include "workbench/dynamics/names.hpp"
 #include "workbench/vehicle/equilibrium.hpp"
 
 namespace rb::dynamics {
@@ -103,6 +104,10 @@ ContactVehicleOde::ContactVehicleOde(ContactVehicleOde&&) noexcept = default;
 
 std::string ContactVehicleOde::lastError() const {
   return work_->error;
+}
+integ::ModelFailure ContactVehicleOde::lastFailure() const {
+  if (work_->failure == ContactFailure::None) return {};
+  return {std::string(nameOf(work_->failure)), work_->failure_body};
 }
 const vehicle::Workspace& ContactVehicleOde::workspace() const {
   return work_->bodies;

@@ -103,6 +103,20 @@ struct PatchOutput {
 // Contact regime of a wheel, from the patches in contact: WheelOutput::regime holds its code.
 enum class ContactRegime { Tread = 0, TwoPoint = 1, Flange = 2 };
 
+// Why the contact vehicle refused an evaluation (ContactVehicleOde::lastFailure, the result
+// file's /stats failure_reason); names in dynamics/names.hpp.
+enum class ContactFailure {
+  None,
+  WheelLift,        // a wheel's constraint normal force below contact.min_normal_force
+  Derailment,       // elastic: a wheel rose or dropped beyond contact.elastic.derailment_lift
+  TableRange,       // the contact point left its table (KEC, LUT)
+  ConstraintSolve,  // the KEC constraints (Eq. 22) were not solved
+  Coupling,         // the normal/tangential coupling did not converge
+  BodyRotation,     // a body's pitch angle reached the Euler-angle guard
+  Singular,         // a mass or constraint matrix could not be factored
+  NonFinite,        // the solution of a wheelset is not finite
+};
+
 // The regime's code of a wheel with patches on the tread and/or on the flange (tread when none).
 constexpr int contactRegime(bool tread, bool flange) {
   return static_cast<int>(flange ? (tread ? ContactRegime::TwoPoint : ContactRegime::Flange)
@@ -165,6 +179,7 @@ class ContactVehicleOde final : public vehicle::VehicleOde {
 
   int rhs(double t, const double* y, double* ydot) override;
   std::string lastError() const override;
+  integ::ModelFailure lastFailure() const override;
 
   const ContactModel& contact() const { return *contact_; }
 

@@ -66,7 +66,9 @@ int kecConstraints(const ContactModels& models, const StageInput& in, WheelsetWo
     std::ostringstream os;
     wheelsetAt(os, models, ww, in.t, q[kS]);
     os << "KEC constraints (Eq. 22) " << kecFailure(sol) << ", y = " << q[kY] * 1e3 << " mm";
-    work.error = os.str();
+    work.fail(sol.status == contact::KecStatus::OutOfTable ? ContactFailure::TableRange
+                                                          : ContactFailure::ConstraintSolve,
+              models.vehicle.bodies[ww.body].name, os.str());
     ww.kec_warm = false;
     return 1;
   }
@@ -146,7 +148,7 @@ int lutConstraints(const ContactModels& models, const StageInput& in, WheelsetWo
     os << "the LUT entry (y - xi_a = " << ybar * 1e3 << " mm, xi_g = " << xi.g * 1e3
        << " mm) left the table [" << lut.yGrid().min * 1e3 << ", " << lut.yGrid().max * 1e3
        << "] x [" << lut.gaugeGrid().min * 1e3 << ", " << lut.gaugeGrid().max * 1e3 << "] mm";
-    work.error = os.str();
+    work.fail(ContactFailure::TableRange, models.vehicle.bodies[ww.body].name, os.str());
     return 1;
   }
   ww.ybar_dot = ybar_dot;
@@ -211,8 +213,9 @@ int setIndependentCoordinates(const ContactModels& models, const StageInput& in,
       qd[1 + c] = in.y[l.rate(k, c)];
     }
     if (!(std::abs(q[kPitch]) < kPitchLimit)) {
-      work.error = "body '" + m.bodies[b].name + "': pitch angle " + std::to_string(q[kPitch]) +
-                   " rad reached the Euler-angle guard at t = " + std::to_string(in.t) + " s";
+      work.fail(ContactFailure::BodyRotation, m.bodies[b].name,
+                "body '" + m.bodies[b].name + "': pitch angle " + std::to_string(q[kPitch]) +
+                    " rad reached the Euler-angle guard at t = " + std::to_string(in.t) + " s");
       return 1;
     }
   }
@@ -250,8 +253,9 @@ int freeBodyAccelerations(const ContactModels& models, const StageInput& in, dou
     const vehicle::Matrix6d& mass = work.bodies.mass[b];
     Cholesky5 llt;
     if (!llt.factor(mass.block<5, 5>(1, 1))) {
-      work.error = "body '" + models.vehicle.bodies[b].name +
-                   "': mass matrix not positive definite at t = " + std::to_string(in.t) + " s";
+      work.fail(ContactFailure::Singular, models.vehicle.bodies[b].name,
+                "body '" + models.vehicle.bodies[b].name +
+                    "': mass matrix not positive definite at t = " + std::to_string(in.t) + " s");
       return 1;
     }
     const Vec5 pdd = llt.solve(work.bodies.force[b].segment<5>(1) - mass.block<5, 1>(1, kS) * acc);
@@ -278,9 +282,10 @@ int lutNormalMap(const ContactModels& models, const StageInput& in, WheelsetWork
   ww.N = -ww.G.transpose();
   const double det = A.determinant();
   if (!(std::abs(det) > 1e-12)) {
-    work.error = "wheelset '" + models.vehicle.bodies[ww.body].name +
-                 "': the tread normal directions do not span vertical and roll at t = " +
-                 std::to_string(in.t) + " s";
+    work.fail(ContactFailure::Singular, models.vehicle.bodies[ww.body].name,
+              "wheelset '" + models.vehicle.bodies[ww.body].name +
+                  "': the tread normal directions do not span vertical and roll at t = " +
+                  std::to_string(in.t) + " s");
     return 1;
   }
   const Eigen::Matrix2d T = A.inverse() * ww.N.block<2, 2>(1, 0);
@@ -299,8 +304,9 @@ int augmentedSystem(const ContactModels& models, const StageInput& in, const Whe
   // coupling.
   if (!system.solver.factor(mass.block<5, 5>(1, 1), ww.N, ww.G, !spin_free,
                             spin_free ? 0.0 : in.acceleration / models.contact.centredRadius())) {
-    work.error = "wheelset '" + models.vehicle.bodies[ww.body].name +
-                 "': mass matrix not positive definite at t = " + std::to_string(in.t) + " s";
+    work.fail(ContactFailure::Singular, models.vehicle.bodies[ww.body].name,
+              "wheelset '" + models.vehicle.bodies[ww.body].name +
+                  "': mass matrix not positive definite at t = " + std::to_string(in.t) + " s");
     return 1;
   }
   // The prescribed sddot = a enters as -M_qs a (inertia of the speed ramp).
@@ -313,9 +319,10 @@ int augmentedSystem(const ContactModels& models, const StageInput& in, const Whe
 int checkSolution(const ContactModels& models, const StageInput& in, const WheelsetWork& ww,
                   const Vec7& x, ContactWorkspace& work) {
   if (x.allFinite()) return 0;
-  work.error = "wheelset '" + models.vehicle.bodies[ww.body].name +
-               "': singular contact equations (augmented system) at t = " + std::to_string(in.t) +
-               " s";
+  work.fail(ContactFailure::NonFinite, models.vehicle.bodies[ww.body].name,
+            "wheelset '" + models.vehicle.bodies[ww.body].name +
+                "': singular contact equations (augmented system) at t = " +
+                std::to_string(in.t) + " s");
   return 1;
 }
 
@@ -339,7 +346,7 @@ int refuseWheelLift(const ContactModels& models, const StageInput& in, const Whe
      << (side == 0 ? "left" : "right") << " wheel: constraint normal force " << qn / 1e3
      << " kN < contact.min_normal_force = " << min_normal / 1e3 << " kN at t = " << in.t
      << " s (a constraint contact cannot lift a wheel: the model is not valid past this point)";
-  work.error = os.str();
+  work.fail(ContactFailure::WheelLift, models.vehicle.bodies[ww.body].name, os.str());
   ++work.stats.lift_evaluations;
   return 1;
 }

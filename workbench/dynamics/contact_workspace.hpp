@@ -172,6 +172,15 @@ struct ContactWorkspace {
   std::vector<double> next_y, next_ydot;
   ContactStats stats;
   std::string error;  // why the last evaluation failed
+  ContactFailure failure = ContactFailure::None;  // the same as a code
+  std::string failure_body;                       // the body it concerns
+
+  // The failure of this evaluation: its code, its body and its message.
+  void fail(ContactFailure why, const std::string& body, std::string message) {
+    failure = why;
+    failure_body = body;
+    error = std::move(message);
+  }
 
   WheelsetWork& wheelset(int w) { return wheelsets[static_cast<std::size_t>(w)]; }
 };

@@ -33,6 +33,21 @@ constexpr const auto& nameTable(ContactRegime /*tag*/) {
   return kContactRegimeNames;
 }
 
+inline constexpr std::array<NameEntry<ContactFailure>, 9> kContactFailureNames = {{
+    {ContactFailure::None, "none", "no failure"},
+    {ContactFailure::WheelLift, "wheel_lift", "a wheel's normal force fell below the minimum"},
+    {ContactFailure::Derailment, "derailment", "a wheel rose beyond the derailment lift"},
+    {ContactFailure::TableRange, "table_range", "the contact point left its table"},
+    {ContactFailure::ConstraintSolve, "constraint_solve", "the KEC constraints were not solved"},
+    {ContactFailure::Coupling, "coupling", "the normal/tangential coupling did not converge"},
+    {ContactFailure::BodyRotation, "body_rotation", "a pitch angle reached the Euler-angle guard"},
+    {ContactFailure::Singular, "singular", "a mass or constraint matrix could not be factored"},
+    {ContactFailure::NonFinite, "non_finite", "a wheelset's solution is not finite"},
+}};
+constexpr const auto& nameTable(ContactFailure /*tag*/) {
+  return kContactFailureNames;
+}
+
 inline constexpr std::array<NameEntry<NormalForceCoupling>, 2> kNormalForceCouplingNames = {{
     {NormalForceCoupling::Lagged, "lagged", "the previous evaluation's (the paper, section 2.5)"},
     {NormalForceCoupling::Consistent, "consistent",

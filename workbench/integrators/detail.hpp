@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "workbench/integrators/ode.hpp"
+
 namespace rb::integ::detail {
 
 // Times and numbers in messages: "%.10g".
@@ -36,6 +38,7 @@ struct RhsRecord {
   double t = 0.0;           // time of that call
   std::string what;         // "right-hand side", "Jacobian", "residual"
   std::string model_error;  // the model's lastError() right after that call
+  ModelFailure model_failure;  // and its lastFailure()
   bool nonfinite = false;   // a NaN/Inf was seen (latest event below)
   double nonfinite_t = 0.0;
   std::string nonfinite_where;  // "derivative", "state", "residual", "Jacobian"
@@ -43,11 +46,12 @@ struct RhsRecord {
   std::exception_ptr exception;  // thrown by the model inside a C callback, rethrown later
   long recoverable = 0;          // recoverable failures (> 0 returns, NaN/Inf turned recoverable)
 
-  void recordCode(int c, double tt, const char* w, std::string err) {
+  void recordCode(int c, double tt, const char* w, std::string err, ModelFailure why = {}) {
     code = c;
     t = tt;
     what = w;
     model_error = std::move(err);
+    model_failure = std::move(why);
   }
   void recordNonFinite(double tt, const char* where, const double* v, long n) {
     nonfinite = true;

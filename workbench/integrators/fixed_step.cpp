@@ -15,7 +15,7 @@ FixedStepIntegrator::Status FixedStepIntegrator::eval(double t, const double* y,
   ++stats_.rhs_evals;
   const int rc = sys_->rhs(t, y, ydot);
   if (rc != 0) {
-    rec_.recordCode(rc, t, "right-hand side", sys_->lastError());
+    rec_.recordCode(rc, t, "right-hand side", sys_->lastError(), sys_->lastFailure());
     if (rc > 0) {
       ++stats_.recoverable_rhs_failures;
       return Status::Recoverable;
@@ -325,7 +325,9 @@ RunResult FixedStepIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::Ve
       if (s != Status::Ok) {
         res.t_reached = t;
         res.message = failureMessage(s, t);
+        res.failure = s == Status::NonFinite ? FailureKind::NonFinite : FailureKind::Model;
         if (s == Status::NonFinite) res.offending_components = rec_.nonfinite_comps;
+        if (res.failure == FailureKind::Model) res.cause = rec_.model_failure;
         return finish(false);
       }
     }

@@ -24,6 +24,7 @@ class ResidualModel {
   virtual bool isDifferential(int i) const = 0;
   virtual std::string componentName(int i) const = 0;
   virtual std::string lastError() const = 0;
+  virtual ModelFailure lastFailure() const { return {}; }
   virtual const char* callName() const = 0;      // "residual", "right-hand side"
   virtual const char* residualName() const = 0;  // what a NaN/Inf is in: "residual", "derivative"
   virtual bool hasJacobian() const { return false; }
@@ -73,6 +74,7 @@ class OdeModel final : public ResidualModel {
   bool isDifferential(int) const override { return true; }
   std::string componentName(int i) const override { return s_.componentName(i); }
   std::string lastError() const override { return s_.lastError(); }
+  ModelFailure lastFailure() const override { return s_.lastFailure(); }
   const char* callName() const override { return "right-hand side"; }
   const char* residualName() const override { return "derivative"; }
   bool hasJacobian() const override { return use_jac_ || grouped_.has_value(); }
@@ -149,7 +151,8 @@ int idaRes(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data) {
     }
     const int rc = d->model->residual(t, yv, ypv, rv);
     if (rc != 0) {
-      d->rec.recordCode(rc, t, d->model->callName(), d->model->lastError());
+      d->rec.recordCode(rc, t, d->model->callName(), d->model->lastError(),
+                        d->model->lastFailure());
       if (rc > 0) ++d->rec.recoverable;
       return rc;
     }
@@ -174,7 +177,7 @@ int idaJac(double t, double cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix J
     const int rc =
         d->model->jacobian(t, cj, detail::data(y), detail::data(yp), detail::data(r), jm);
     if (rc != 0) {
-      d->rec.recordCode(rc, t, "Jacobian", d->model->lastError());
+      d->rec.recordCode(rc, t, "Jacobian", d->model->lastError(), d->model->lastFailure());
       if (rc > 0) ++d->rec.recoverable;
       return rc;
     }
@@ -315,6 +318,8 @@ RunResult runIda(std::string_view method, const SolverSpec& sp, ResidualModel& m
         IDAGetEstLocalErrors(mem, ele.get()) == IDA_SUCCESS)
       f.weighted_errors = detail::largestWeightedErrors(ele.get(), ewt.get(), n);
     res.message = detail::buildFailure(f, cb.rec, names, res.offending_components);
+    res.failure = detail::failureKind(f, cb.rec);
+    if (res.failure == FailureKind::Model) res.cause = cb.rec.model_failure;
     res.ok = false;
     res.t_fail = res.t_reached;
     collect();
@@ -376,9 +381,12 @@ RunResult IdaIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::VectorXd
     res.stats.rhs_evals = 1;
     detail::RhsRecord rec;
     if (rc != 0) {
-      rec.recordCode(rc, t0, "right-hand side", sys.lastError());
+      rec.recordCode(rc, t0, "right-hand side", sys.lastError(), sys.lastFailure());
       res.message = "ida: failed at t = " + detail::num(t0) + ": " + rec.describeCode();
+      res.failure = FailureKind::Model;
+      res.cause = rec.model_failure;
     } else {
+      res.failure = FailureKind::NonFinite;
       rec.recordNonFinite(t0, "derivative", yp0.data(), yp0.size());
       res.offending_components = rec.nonfinite_comps;
       res.message = "ida: failed at t = " + detail::num(t0) + ": " +

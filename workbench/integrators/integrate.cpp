@@ -55,6 +55,7 @@ bool nonFiniteStart(const Sys& sys, const Integrator& integ, double t0, const Ei
                     const char* what, RunResult& res) {
   if (detail::allFinite(y.data(), y.size())) return false;
   res.ok = false;
+  res.failure = FailureKind::NonFinite;
   res.t_reached = res.t_fail = t0;
   res.offending_components = detail::nonFiniteComponents(y.data(), y.size());
   res.message = std::string(integ.name()) + ": failed at t = " + detail::num(t0) + ": NaN/Inf in " +

@@ -12,12 +12,15 @@
 //  - exceptions thrown by the model (rhs, jacobian, residual) propagate out of integrate(), also
 //    through SUNDIALS (caught in the callback, rethrown after the solver returned).
 #include <Eigen/Dense>
+#include <array>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "workbench/core/names.hpp"
 #include "workbench/integrators/ode.hpp"
 #include "workbench/integrators/spec.hpp"
 
@@ -41,6 +44,34 @@ struct Stats {
   long recoverable_rhs_failures = 0;  // rhs returned > 0, or (adaptive methods) NaN/Inf in y/ydot
 };
 
+// What ended a failed run, as the integrator saw it; the model's own reason (wheel lift, a contact
+// point leaving its table) is RunResult::cause when the kind is Model.
+enum class FailureKind : std::uint8_t {
+  None,         // the run did not fail
+  Model,        // the model refused its evaluation (fatal, or recoverable down to the smallest step)
+  NonFinite,    // NaN/Inf in the state, a derivative or an output
+  StepSize,     // the error test kept failing down to the smallest step
+  TooMuchWork,  // the step limit (solver.max_steps) was reached
+  Convergence,  // the Newton iteration of an implicit method kept failing
+  Solver,       // another error of the solver
+  Setup,        // the solver could not be set up
+  Validity,     // an output left the model's validity (the run's checks)
+};
+inline constexpr std::array<NameEntry<FailureKind>, 9> kFailureKindNames = {{
+    {FailureKind::None, "none", "the run did not fail"},
+    {FailureKind::Model, "model", "the model refused its evaluation (failure_reason says why)"},
+    {FailureKind::NonFinite, "non_finite", "NaN/Inf in the state, a derivative or an output"},
+    {FailureKind::StepSize, "step_size", "the error test kept failing down to the smallest step"},
+    {FailureKind::TooMuchWork, "too_much_work", "the step limit solver.max_steps was reached"},
+    {FailureKind::Convergence, "convergence", "the Newton iteration kept failing"},
+    {FailureKind::Solver, "solver", "another error of the solver"},
+    {FailureKind::Setup, "setup", "the solver could not be set up"},
+    {FailureKind::Validity, "validity", "an output left the model's validity"},
+}};
+constexpr const auto& nameTable(FailureKind /*tag*/) {
+  return kFailureKindNames;
+}
+
 struct RunResult {
   bool ok = false;
   bool stopped_by_observer = false;  // ok, but the observer returned false at t_reached
@@ -48,6 +79,8 @@ struct RunResult {
   double t_reached = 0.0;            // last time with a valid solution (final time when complete)
   double t_fail = std::numeric_limits<double>::quiet_NaN();  // == t_reached when !ok, else NaN
   std::vector<int> offending_components;                     // state indices blamed for a failure
+  FailureKind failure = FailureKind::None;  // what ended a failed run
+  ModelFailure cause;                       // the model's reason and body (failure == Model)
   Stats stats;
 };
 

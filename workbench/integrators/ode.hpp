@@ -24,6 +24,13 @@ struct JacobianPattern {
   bool empty() const { return rows.empty(); }
 };
 
+// Why a model refused its last evaluation, in the model's own terms: a reason from the model's
+// name table ("wheel_lift", "table_range") and the body it concerns ("ws1"); empty when it does
+// not say.
+struct ModelFailure {
+  std::string reason, body;
+};
+
 class OdeSystem {
  public:
   virtual ~OdeSystem() = default;
@@ -46,6 +53,8 @@ class OdeSystem {
   virtual std::string componentName(int i) const { return "y[" + std::to_string(i) + "]"; }
   // Human-readable reason for the last non-zero return of rhs(); empty if none.
   virtual std::string lastError() const { return {}; }
+  // The same as a record (what the result file's failure record holds); default: unknown.
+  virtual ModelFailure lastFailure() const { return {}; }
 };
 
 // Index-reduced DAE F(t, y, yp) = 0 for IDA (embedding vs. DAE comparisons).

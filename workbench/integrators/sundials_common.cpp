@@ -53,7 +53,7 @@ int odeRhs(double t, N_Vector y, N_Vector ydot, void* user_data) {
     }
     const int rc = d->sys->rhs(t, yv, dv);
     if (rc != 0) {
-      d->rec.recordCode(rc, t, "right-hand side", d->sys->lastError());
+      d->rec.recordCode(rc, t, "right-hand side", d->sys->lastError(), d->sys->lastFailure());
       if (rc > 0) ++d->rec.recoverable;
       return rc;
     }
@@ -77,7 +77,7 @@ int odeJac(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* user_data, N_Ve
     Eigen::Map<Eigen::MatrixXd> jm(SUNDenseMatrix_Data(J), d->n, d->n);  // column-major
     const int rc = d->sys->jacobian(t, data(y), data(fy), jm);
     if (rc != 0) {
-      d->rec.recordCode(rc, t, "Jacobian", d->sys->lastError());
+      d->rec.recordCode(rc, t, "Jacobian", d->sys->lastError(), d->sys->lastFailure());
       if (rc > 0) ++d->rec.recoverable;
       return rc;
     }
@@ -108,6 +108,24 @@ std::vector<std::pair<int, double>> largestWeightedErrors(N_Vector ele, N_Vector
                     [](const auto& a, const auto& b) { return a.second > b.second; });
   w.resize(k);
   return w;
+}
+
+FailureKind failureKind(const FailureReport& f, const RhsRecord& rec) {
+  const double tol = 1e-12 * std::max(1.0, std::abs(f.t_reached));
+  if (rec.nonfinite && rec.nonfinite_t >= f.t_reached - tol) return FailureKind::NonFinite;
+  if (f.rhs_related && rec.code != 0) return FailureKind::Model;
+  // SUNDIALS' flag names are the same for CVODE (CV_), ARKODE (ARK_) and IDA (IDA_) after the
+  // prefix: the kind follows the flag, never the text of a message.
+  const std::string& n = f.flag_name;
+  auto is = [&n](std::string_view suffix) {
+    return n.size() >= suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0;
+  };
+  if (is("_TOO_MUCH_WORK")) return FailureKind::TooMuchWork;
+  if (is("_ERR_FAILURE") || is("_ERR_FAIL") || is("_TOO_CLOSE") || is("_TOO_MUCH_ACC"))
+    return FailureKind::StepSize;
+  if (is("_CONV_FAILURE") || is("_CONV_FAIL") || is("_LSETUP_FAIL") || is("_LSOLVE_FAIL"))
+    return FailureKind::Convergence;
+  return FailureKind::Solver;
 }
 
 std::string buildFailure(const FailureReport& f, const RhsRecord& rec, const NameFn& name,
@@ -147,6 +165,7 @@ std::string takeFlagName(char* name) {
 bool setupFailed(RunResult& res, std::string_view method, double t0, const char* call,
                  const std::string& flag_name, const SundialsMessages& msgs) {
   res.ok = false;
+  res.failure = FailureKind::Setup;
   res.t_reached = res.t_fail = t0;
   res.message = std::string(method) + ": failed at t = " + num(t0) + ": solver setup " + call +
                 " returned " + flag_name;

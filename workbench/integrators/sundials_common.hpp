@@ -115,6 +115,8 @@ struct FailureReport {
 };
 std::string buildFailure(const FailureReport& f, const RhsRecord& rec, const NameFn& name,
                          std::vector<int>& offending);
+// The kind of the failure buildFailure describes (NonFinite, Model, else by the SUNDIALS flag).
+FailureKind failureKind(const FailureReport& f, const RhsRecord& rec);
 
 // SUNDIALS returns a malloc'ed string for flag names.
 std::string takeFlagName(char* name);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 #include "workbench/integrators/registry.hpp"
@@ -87,13 +88,51 @@ namespace {
 
 // Why the sample `values` at t stops the run (a non-finite value, or the request's check); empty
 // when it is valid.
-std::string invalidSample(const SimulationRequest& r, double t, const std::vector<double>& values) {
+// The body a dataset path is about: /bodies/ws1/y, /contact/ws1/left/Q -> "ws1";
+// /vehicles/front/bodies/ws1/y -> "front.ws1"; "" for the run's own datasets.
+std::string bodyOfPath(const std::string& path) {
+  std::vector<std::string> parts;
+  for (std::size_t at = 1; at <= path.size();) {
+    const std::size_t next = std::min(path.find('/', at), path.size());
+    parts.push_back(path.substr(at, next - at));
+    at = next + 1;
+  }
+  std::string vehicle;
+  if (parts.size() > 2 && parts[0] == "vehicles") {
+    vehicle = parts[1] + ".";
+    parts.erase(parts.begin(), parts.begin() + 2);
+  }
+  const bool of_body = parts.size() > 2 && (parts[0] == "bodies" || parts[0] == "contact" ||
+                                            parts[0] == "elements");
+  return of_body ? vehicle + parts[1] : std::string();
+}
+
+// An output sample the run cannot write: its kind, the body it is about and why ("" when valid).
+struct InvalidSample {
+  integ::FailureKind kind = integ::FailureKind::None;
+  std::string body, why;
+};
+InvalidSample invalidSample(const SimulationRequest& r, double t,
+                            const std::vector<double>& values) {
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (std::isfinite(values[i])) continue;
-    return "non-finite output " + r.outputs[i].path + " = " + std::to_string(values[i]) +
-           " at t = " + std::to_string(t) + " s";
+    return {integ::FailureKind::NonFinite, bodyOfPath(r.outputs[i].path),
+            "non-finite output " + r.outputs[i].path + " = " + std::to_string(values[i]) +
+                " at t = " + std::to_string(t) + " s"};
   }
-  return r.check ? r.check(t, values.data()) : std::string();
+  std::string why = r.check ? r.check(t, values.data()) : std::string();
+  if (why.empty()) return {};
+  return {integ::FailureKind::Validity, "", std::move(why)};
+}
+
+// The body a failure concerns: the model's own word, else the body of the first blamed state
+// component ("ws1.y" -> "ws1", "front.ws1.y" -> "front.ws1").
+std::string failureBody(const integ::RunResult& res, const integ::OdeSystem& sys) {
+  if (!res.cause.body.empty()) return res.cause.body;
+  if (res.offending_components.empty()) return {};
+  const std::string name = sys.componentName(res.offending_components.front());
+  const std::size_t dot = name.rfind('.');
+  return dot == std::string::npos ? std::string() : name.substr(0, dot);
 }
 
 }  // namespace
@@ -116,7 +155,7 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
   double start = wallNow();
   double lastDistance = 0.0;
 
-  std::string invalid;  // why the observer stopped the run, if it did
+  InvalidSample invalid;  // why the observer stopped the run, if it did
   double t_invalid = 0.0;
   double t_written = r.t0;
   auto observer = [&](double t, const Eigen::VectorXd& y) {
@@ -132,7 +171,7 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
     if (!series.empty()) {
       r.sample(t, y, values.data());
       invalid = invalidSample(r, t, values);
-      if (!invalid.empty()) {
+      if (!invalid.why.empty()) {
         t_invalid = t;
         return false;  // not written: the file ends at the last valid sample
       }
@@ -159,32 +198,51 @@ integ::RunResult simulate(const SimulationRequest& r, io::ResultFile& f) {
   integ::RunResult res =
       integ::integrate(*r.system, *integrator, r.t0, r.y0, times, observer, progress);
   if (printed) std::fprintf(stderr, "\n");
-  if (!invalid.empty() && res.stopped_by_observer) {
+  std::string body;
+  if (!invalid.why.empty() && res.stopped_by_observer) {
     res.ok = false;
     res.stopped_by_observer = false;
     res.t_fail = t_invalid;
     res.t_reached = t_written;
+    res.failure = invalid.kind;
+    body = invalid.body;
     res.message = std::string(integrator->name()) +
-                  ": stopped at t = " + std::to_string(t_invalid) + " s: " + invalid;
+                  ": stopped at t = " + std::to_string(t_invalid) + " s: " + invalid.why;
   }
+  FailureRecord record;
   if (!res.ok) {
     std::ostringstream os;
     os << res.message;
+    record.t = std::isfinite(res.t_fail) ? res.t_fail : res.t_reached;
     if (r.distance) {
-      const double t_fail = std::isfinite(res.t_fail) ? res.t_fail : res.t_reached;
-      os << " (leading wheelset at s = " << r.distance(t_fail, r.y0) << " m)";
+      record.s = r.distance(record.t, r.y0);
+      os << " (leading wheelset at s = " << record.s << " m)";
     }
     res.message = os.str();
+    record.body = body.empty() ? failureBody(res, *r.system) : body;
   }
-  writeStats(f, res, std::string(integrator->name()));
+  writeStats(f, res, std::string(integrator->name()), record);
   f.flush();
   return res;
 }
 
-void writeStats(io::ResultFile& f, const integ::RunResult& res, const std::string& method) {
+void writeStats(io::ResultFile& f, const integ::RunResult& res, const std::string& method,
+                const FailureRecord& failure) {
   const auto& s = res.stats;
   f.attr("/stats", "status", std::string(res.ok ? "ok" : "failed"));
   f.attr("/stats", "message", res.message);
+  // The failure record (docs/architecture.md, "Failed runs and exit codes"): what ended the run
+  // as names a reader can branch on, beside the message for a person.
+  const integ::FailureKind kind =
+      res.ok ? integ::FailureKind::None
+             : (res.failure == integ::FailureKind::None ? integ::FailureKind::Solver : res.failure);
+  f.attr("/stats", "failure_kind", std::string(nameOf(kind)));
+  f.attr("/stats", "failure_reason", res.ok ? std::string() : res.cause.reason);
+  f.attr("/stats", "failure_body", res.ok ? std::string() : failure.body);
+  // Only what is known: an ok run has no failure time, a run without a vehicle no distance (no
+  // NaN is written as a value).
+  if (!res.ok && std::isfinite(failure.t)) f.attr("/stats", "failure_t", failure.t);
+  if (!res.ok && std::isfinite(failure.s)) f.attr("/stats", "failure_s", failure.s);
   f.attr("/stats", "method", method);
   f.attr("/stats", "t_reached", res.t_reached);
   f.attr("/stats", "cpu_time_s", s.cpu_time_s);

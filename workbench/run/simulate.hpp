@@ -5,6 +5,7 @@
 // value stops the run as a failure (a NaN is never written as a result).
 #include <Eigen/Dense>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -70,8 +71,18 @@ ObservationTimes observationTimes(double t0, double t_end, double every, double 
 // Throws InputError for inconsistent options (e.g. output interval not on a fixed-step grid).
 integ::RunResult simulate(const SimulationRequest& request, io::ResultFile& file);
 
-// /stats attributes of a run (architecture.md): status, message, times and counters.
-void writeStats(io::ResultFile& file, const integ::RunResult& result, const std::string& method);
+// Where a failed run ended: the time of the failure, the arc length of the leading body then
+// (NaN without a vehicle) and the body the failure concerns ("" when none is named).
+struct FailureRecord {
+  double t = std::numeric_limits<double>::quiet_NaN();  // [s]
+  double s = std::numeric_limits<double>::quiet_NaN();  // [m]
+  std::string body;
+};
+// /stats attributes of a run (architecture.md): status, message, the failure record
+// (failure_kind, failure_reason, failure_body; failure_t and failure_s when known), times and
+// counters.
+void writeStats(io::ResultFile& file, const integ::RunResult& result, const std::string& method,
+                const FailureRecord& failure = {});
 // /stats/warnings (one per line) and /stats/warning_count: what a run found questionable without
 // failing; the summary line prints them.
 void writeWarnings(io::ResultFile& file, const std::vector<std::string>& warnings);

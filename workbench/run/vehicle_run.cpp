@@ -31,6 +31,9 @@ void writeSeriesSchema(const std::vector<OutputChannel>& outputs, bool contact, 
   for (const auto& o : outputs) rows.push_back({o.path, o.units, o.meaning, o.codes});
   std::vector<std::pair<std::string, std::string>> enums;
   if (contact) enums.emplace_back(kRegimeEnum, io::codesOf<dynamics::ContactRegime>());
+  // The names the failure record (/stats failure_kind, failure_reason) takes, in their tables.
+  enums.emplace_back("failure_kind", io::codesOf<integ::FailureKind>());
+  if (contact) enums.emplace_back("failure_reason", io::codesOf<dynamics::ContactFailure>());
   io::writeSchema(f, "series", rows, enums);
 }
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "workbench/core/strings.hpp"
@@ -59,6 +60,7 @@ struct CaseSum {
   std::vector<double> cpu;
   int runs = 0;
   std::string status, message, file;
+  std::string failure;                    // the failure record's fields of the same run (CSV)
   std::map<std::string, double> first;    // counts of the first run (exact, equal over repeats)
   std::vector<io::MetricRecord> metrics;  // of the first run with a result (deterministic)
 };
@@ -77,6 +79,26 @@ struct Summary {
 struct RunState {
   std::string status, message;
 };
+
+// The failure record of a run's /stats (run/simulate.hpp) as the CSV fields failure_kind,
+// failure_reason, failure_body, failure_t, failure_s (empty where the file has none), so that a
+// reader branches on them instead of parsing the message.
+constexpr const char* kFailureColumns =
+    "failure_kind,failure_reason,failure_body,failure_t,failure_s";
+std::string failureFields(const std::optional<io::StatsRecord>& rec) {
+  if (!rec) return ",,,,";
+  auto text = [&](const char* k) {
+    const auto it = rec->text.find(k);
+    return it == rec->text.end() ? std::string() : csvField(it->second);
+  };
+  auto number = [&](const char* k) {
+    const auto it = rec->number.find(k);
+    return it == rec->number.end() || !std::isfinite(it->second) ? std::string()
+                                                                  : formatNumberExact(it->second);
+  };
+  return text("failure_kind") + "," + text("failure_reason") + "," + text("failure_body") + "," +
+         number("failure_t") + "," + number("failure_s");
+}
 
 // The state of a run that left no valid result.
 RunState noResult(const Job& j, Summary& sm) {
@@ -170,7 +192,7 @@ void summariseRuns(const scenario::StudySpec& st, const std::vector<Job>& all, S
   sm.csv << "case,repeat,label,role,base,overrides,status";
   for (const auto& k : kSummaryNumbers) sm.csv << "," << k;
   for (const auto& m : st.metrics) sm.csv << ",metric_" << m.name;
-  sm.csv << ",message,file\n";
+  sm.csv << "," << kFailureColumns << ",message,file\n";
   for (const auto& j : all) {
     const bool valid = isDone(j.h5, *j.hash);
     auto rec = valid ? io::readStats(j.h5) : std::nullopt;
@@ -191,7 +213,9 @@ void summariseRuns(const scenario::StudySpec& st, const std::vector<Job>& all, S
       sm.cols[k].push_back(numbers[k]);
     }
     addMetricFields(metrics, sm);
-    sm.csv << "," << csvField(message) << "," << csvField(valid ? j.h5 : "") << "\n";
+    const std::string failure = failureFields(rec);
+    sm.csv << "," << failure << "," << csvField(message) << "," << csvField(valid ? j.h5 : "")
+           << "\n";
     sm.ok.push_back(status == "ok" ? 1.0 : 0.0);
     CaseSum& cs = sm.cases[j.c->id];
     ++cs.runs;
@@ -201,6 +225,7 @@ void summariseRuns(const scenario::StudySpec& st, const std::vector<Job>& all, S
     if (cs.status.empty() || (cs.status == "ok" && status != "ok")) {
       cs.status = status;
       cs.message = run.message;
+      cs.failure = failure;
       cs.file = valid ? j.h5 : "";
       cs.first = numbers;
     }
@@ -216,7 +241,7 @@ std::string casesCsv(const scenario::StudySpec& st, std::map<std::string, CaseSu
   for (const auto& k : kSummaryNumbers)
     if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << k;
   for (const auto& m : st.metrics) cases << ",metric_" << m.name;
-  cases << ",message,file\n";
+  cases << "," << kFailureColumns << ",message,file\n";
   for (const auto& c : st.cases) {
     CaseSum& cs = sum[c.id];
     auto [lo, hi] =
@@ -231,7 +256,8 @@ std::string casesCsv(const scenario::StudySpec& st, std::map<std::string, CaseSu
       if (k != "cpu_time_s" && k != "wall_time_s") cases << "," << cs.first[k];
     for (std::size_t k = 0; k < st.metrics.size(); ++k)
       cases << "," << (k < cs.metrics.size() ? exactField(cs.metrics[k].value) : std::string());
-    cases << "," << csvField(withMetricReasons(cs.message, cs.metrics)) << "," << csvField(cs.file)
+    cases << "," << (cs.failure.empty() ? std::string(",,,,") : cs.failure) << ","
+          << csvField(withMetricReasons(cs.message, cs.metrics)) << "," << csvField(cs.file)
           << "\n";
   }
   return cases.str();

@@ -70,6 +70,14 @@ std::string TrainOde::componentName(int i) const {
   return p.name.empty() ? local : p.name + "." + local;
 }
 
+integ::ModelFailure TrainOde::lastFailure() const {
+  if (failed_ < 0) return {};
+  const auto& p = parts_[static_cast<std::size_t>(failed_)];
+  integ::ModelFailure f = p.ode->lastFailure();
+  if (!p.name.empty() && !f.body.empty()) f.body = p.name + "." + f.body;
+  return f;
+}
+
 std::string TrainOde::lastError() const {
   if (failed_ < 0) return {};
   const auto& p = parts_[static_cast<std::size_t>(failed_)];

@@ -37,6 +37,8 @@ class TrainOde final : public integ::OdeSystem {
   std::vector<int> stiffComponents() const override;
   std::string componentName(int i) const override;
   std::string lastError() const override;
+  // The failing vehicle's, its body named "<vehicle>.<body>" in a run of several.
+  integ::ModelFailure lastFailure() const override;
 
   int vehicles() const { return static_cast<int>(parts_.size()); }
   vehicle::VehicleOde& vehicle(int k) { return *parts_[static_cast<std::size_t>(k)].ode; }

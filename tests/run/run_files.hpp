@@ -1,0 +1,53 @@
+#pragma once
+// The run library's tests that read what a run wrote: a compiled model run into a fresh result
+// file under the temporary folder, and the numeric datasets of a group.
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "workbench/io/result_reader.hpp"
+#include "workbench/run/compile.hpp"
+#include "workbench/run/vehicle_run.hpp"
+
+namespace rb::test {
+
+// A scenario of the source tree compiled with `sets`.
+inline run::Model compiled(const std::string& scenario, std::vector<std::string> sets = {}) {
+  run::CompileOptions o;
+  o.scenario = scenario;
+  o.root = RB_SOURCE_DIR;
+  o.overrides = std::move(sets);
+  return run::compile(o);
+}
+
+// m run into <temp>/<folder>/<name> (provenance, outputs, /stats); the path and the run's result.
+struct RunFile {
+  std::string path;
+  run::VehicleRunResult result;
+};
+inline RunFile runInto(const run::Model& m, const std::string& folder, const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / folder;
+  std::filesystem::create_directories(dir);
+  RunFile out;
+  out.path = (dir / name).string();
+  io::ResultFile f(out.path);
+  run::writeProvenance(m, f, "now");
+  out.result = run::runVehicle(m, f, run::VehicleRunOptions{});
+  f.finalize();
+  return out;
+}
+
+// The numeric datasets below `group`, recursively.
+inline void datasets(const io::ResultReader& r, const std::string& group,
+                     std::vector<std::string>& out) {
+  for (const auto& m : r.members(group)) {
+    const std::string p = (group == "/" ? "" : group) + "/" + m;
+    if (r.dataset(p))
+      out.push_back(p);
+    else
+      datasets(r, p, out);
+  }
+}
+
+}  // namespace rb::test
