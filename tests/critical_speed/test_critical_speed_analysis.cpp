@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "workbench/app/critical_speed.hpp"
-#include "workbench/app/critical_speed_analysis.hpp"
 #include "workbench/core/error.hpp"
+#include "workbench/critical_speed/analysis.hpp"
+#include "workbench/critical_speed/critical_speed.hpp"
 
-namespace cs = rb::app::critical;
+namespace cs = rb::critical_speed;
 
 namespace {
 
@@ -167,9 +167,9 @@ TEST(CriticalSpeedAnalysis, RampWithoutDeathOrWithoutCycleFindsNothing) {
 namespace {
 
 // The problems checkCriticalSpeedOptions reports for `o` (empty when it accepts them).
-std::vector<std::string> optionProblems(const rb::app::CriticalSpeedOptions& o) {
+std::vector<std::string> optionProblems(const rb::critical_speed::CriticalSpeedOptions& o) {
   try {
-    rb::app::checkCriticalSpeedOptions(o);
+    rb::critical_speed::checkCriticalSpeedOptions(o);
   } catch (const rb::InputError& e) {
     std::vector<std::string> out;
     for (const auto& d : e.diagnostics()) out.push_back(d.message);
@@ -181,11 +181,11 @@ std::vector<std::string> optionProblems(const rb::app::CriticalSpeedOptions& o) 
 }  // namespace
 
 TEST(CriticalSpeedOptions, DefaultsAreAccepted) {
-  EXPECT_TRUE(optionProblems(rb::app::CriticalSpeedOptions{}).empty());
+  EXPECT_TRUE(optionProblems(rb::critical_speed::CriticalSpeedOptions{}).empty());
 }
 
 TEST(CriticalSpeedOptions, UnboundedWorkIsRefusedAllAtOnceWithTheValues) {
-  rb::app::CriticalSpeedOptions o;
+  rb::critical_speed::CriticalSpeedOptions o;
   o.tolerance = 1e-300;  // repeated one bisection probe forever
   o.max_speed = 1e9;     // swept the linear critical speed over 1e8 speeds
   o.duration = 1e9;
@@ -197,7 +197,7 @@ TEST(CriticalSpeedOptions, UnboundedWorkIsRefusedAllAtOnceWithTheValues) {
 }
 
 TEST(CriticalSpeedOptions, ATypedZeroSpeedIsNoDefault) {
-  rb::app::CriticalSpeedOptions o;
+  rb::critical_speed::CriticalSpeedOptions o;
   o.from = 0.0;
   o.from_given = true;
   const auto p = optionProblems(o);
@@ -208,7 +208,7 @@ TEST(CriticalSpeedOptions, ATypedZeroSpeedIsNoDefault) {
 }
 
 TEST(CriticalSpeedOptions, ToleranceIsBoundedRelativeToTheSpeed) {
-  rb::app::CriticalSpeedOptions o;
+  rb::critical_speed::CriticalSpeedOptions o;
   o.from = 100.0;
   o.from_given = true;
   o.tolerance = 0.005;  // below 1e-4 x 100 m/s

@@ -7,8 +7,8 @@
 #include <sstream>
 #include <string>
 
-#include "workbench/app/stability_scene.hpp"
 #include "workbench/scenario/scenario.hpp"
+#include "workbench/stability/scene.hpp"
 #include "workbench/stability/stability.hpp"
 
 namespace rb::modes_test {
@@ -25,13 +25,14 @@ inline std::string outDir(const std::string& name) {
 }
 
 inline scenario::ScenarioSpec wagon(const std::string& contact) {
-  return app::loadStabilityScene(kWagon, contact, {}, kRoot, outDir("scene_" + contact)).spec;
+  return stability::loadStabilityScene(kWagon, contact, {}, kRoot, outDir("scene_" + contact)).spec;
 }
 
 // The wagon scene with the primary longitudinal stiffness Kpx [N/m] (the wagon module's option).
 inline scenario::ScenarioSpec wagonWithKpx(const std::string& contact, double kpx) {
   const std::string dir = outDir("kpx_" + contact + "_" + std::to_string(static_cast<long>(kpx)));
-  const app::StabilityScene s = app::loadStabilityScene(kWagon, contact, {}, kRoot, dir);
+  const stability::StabilityScene s =
+      stability::loadStabilityScene(kWagon, contact, {}, kRoot, dir);
   std::ifstream in(s.file);
   std::stringstream text;
   text << in.rdbuf();

@@ -183,8 +183,8 @@ namespace {
 // yaw; hunting at about 41 m/s). The linear critical speed is the lowest speed with any unstable
 // mode, named; every unstable mode is reported; the hunting modes' own crossing is kept apart.
 scenario::ScenarioSpec twoAxleWagon() {
-  return app::loadStabilityScene(kRoot + "/scenarios/vehicles/two_axle_wagon.lua", "kec", {}, kRoot,
-                                 outDir("two_axle"))
+  return stability::loadStabilityScene(kRoot + "/scenarios/vehicles/two_axle_wagon.lua", "kec", {},
+                                       kRoot, outDir("two_axle"))
       .spec;
 }
 

@@ -14,9 +14,8 @@
 
 #include "railbench/version.hpp"
 #include "workbench/app/assess.hpp"
-#include "workbench/app/critical_speed.hpp"
-#include "workbench/app/modes.hpp"
 #include "workbench/app/run.hpp"
+#include "workbench/app/scenario_command.hpp"
 #include "workbench/app/tables.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/effects/effects.hpp"
@@ -105,9 +104,9 @@ int workbench(int argc, char** argv) {
   auto* effects = rb::app::addEffectsCommand(app, eo);
 
   // Stability (docs/stability.md).
-  rb::app::ModesOptions mo;
+  rb::modes::ModesOptions mo;
   auto* modes = rb::app::addModesCommand(app, mo);
-  rb::app::CriticalSpeedOptions cso;
+  rb::critical_speed::CriticalSpeedOptions cso;
   auto* critical = rb::app::addCriticalSpeedCommand(app, cso);
 
   rb::app::AssessOptions ao;
@@ -196,12 +195,12 @@ int workbench(int argc, char** argv) {
     if (*modes) {
       mo.root = root;
       mo.program = program;
-      return rb::app::runModes(mo);
+      return rb::modes::runModes(mo);
     }
     if (*critical) {
       cso.root = root;
       cso.program = program;
-      return rb::app::runCriticalSpeed(cso);
+      return rb::critical_speed::runCriticalSpeed(cso);
     }
     ro.root = root;
     return rb::app::runScenario(ro);

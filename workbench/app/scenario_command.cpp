@@ -4,8 +4,6 @@
 #include <filesystem>
 #include <functional>
 
-#include "workbench/app/critical_speed.hpp"
-#include "workbench/app/modes.hpp"
 #include "workbench/effects/effects.hpp"
 #include "workbench/precision/precision.hpp"
 #include "workbench/stress/stress.hpp"
@@ -53,7 +51,7 @@ CLI::App* addEffectsCommand(CLI::App& app, effects::EffectsOptions& o) {
   return c;
 }
 
-CLI::App* addCriticalSpeedCommand(CLI::App& app, CriticalSpeedOptions& o) {
+CLI::App* addCriticalSpeedCommand(CLI::App& app, critical_speed::CriticalSpeedOptions& o) {
   auto* c = addScenarioCommand(app, "critical-speed",
                                "nonlinear critical speed: ramp-down or bisection, bifurcation "
                                "diagram",
@@ -92,7 +90,7 @@ CLI::App* addCriticalSpeedCommand(CLI::App& app, CriticalSpeedOptions& o) {
   return c;
 }
 
-CLI::App* addModesCommand(CLI::App& app, ModesOptions& o) {
+CLI::App* addModesCommand(CLI::App& app, modes::ModesOptions& o) {
   auto* c = addScenarioCommand(
       app, "modes", "linearised stability: modes, damping versus speed, linear critical speed", o);
   c->add_option("--speeds", o.speeds,

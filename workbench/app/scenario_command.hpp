@@ -1,10 +1,12 @@
 #pragma once
 // The command lines of the analyses that run variants of one scenario (effects, critical-speed,
-// modes, precision, stress; their options in their own headers): the scenario and the common
-// options (study/command.hpp) declared once, in scenario_command.cpp.
+// modes, precision, stress; their options and drivers in their own libraries): the scenario and the
+// common options (study/command.hpp) declared once, in scenario_command.cpp.
 #include <string>
 
+#include "workbench/critical_speed/critical_speed.hpp"
 #include "workbench/effects/effects.hpp"
+#include "workbench/modes/modes.hpp"
 #include "workbench/precision/precision.hpp"
 #include "workbench/stress/stress.hpp"
 #include "workbench/study/command.hpp"
@@ -29,5 +31,11 @@ CLI::App* addStressCommand(CLI::App& app, stress::StressOptions& options);
 
 // Declares the subcommand and its options on `app` (filled into `options` when parsed).
 CLI::App* addEffectsCommand(CLI::App& app, effects::EffectsOptions& options);
+
+// Declares the subcommand and its options on `app` (filled into `options` when parsed).
+CLI::App* addModesCommand(CLI::App& app, modes::ModesOptions& options);
+
+// Declares the subcommand and its options on `app` (filled into `options` when parsed).
+CLI::App* addCriticalSpeedCommand(CLI::App& app, critical_speed::CriticalSpeedOptions& options);
 
 }  // namespace rb::app

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace rb::app::critical {
+namespace rb::critical_speed {
 
 struct Window {
   double t0 = 0.0;         // [s] window start
@@ -78,4 +78,4 @@ RampVerdict rampCriticalSpeed(const std::vector<Window>& windows, double thresho
 // time.
 RampVerdict lastExceedance(std::span<const double> speed, std::span<const double> ratio);
 
-}  // namespace rb::app::critical
+}  // namespace rb::critical_speed

@@ -1,4 +1,4 @@
-#include "workbench/app/critical_speed_analysis.hpp"
+#include "workbench/critical_speed/analysis.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <limits>
 #include <sstream>
 
-namespace rb::app::critical {
+namespace rb::critical_speed {
 
 namespace {
 
@@ -147,4 +147,4 @@ RampVerdict rampCriticalSpeed(const std::vector<Window>& windows, double thresho
   return r;
 }
 
-}  // namespace rb::app::critical
+}  // namespace rb::critical_speed

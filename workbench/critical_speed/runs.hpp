@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "workbench/app/critical_speed_analysis.hpp"
+#include "workbench/critical_speed/analysis.hpp"
 
-namespace rb::app::critical {
+namespace rb::critical_speed {
 
 struct RunSetup {
   std::string scenario;                // the scene (scenario file)
@@ -68,4 +68,4 @@ KickedRun runKicked(const RunSetup& setup, const std::string& kind, const std::s
 // rails: the finding is reported with it).
 bool runUnstable(const KickedRun& run, bool en14363);
 
-}  // namespace rb::app::critical
+}  // namespace rb::critical_speed

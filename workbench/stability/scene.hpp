@@ -11,7 +11,7 @@
 
 #include "workbench/scenario/scenario.hpp"
 
-namespace rb::app {
+namespace rb::stability {
 
 struct StabilityScene {
   std::string file;                    // the scenario the command runs (the user's, or scene.lua)
@@ -27,4 +27,4 @@ StabilityScene loadStabilityScene(const std::string& path, const std::string& co
                                   const std::vector<std::string>& overrides,
                                   const std::string& root, const std::string& out);
 
-}  // namespace rb::app
+}  // namespace rb::stability

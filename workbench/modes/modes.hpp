@@ -5,11 +5,11 @@
 // linear critical speed where the least damped hunting mode crosses zero damping.
 #include <string>
 
-#include "workbench/app/scenario_command.hpp"
+#include "workbench/study/command.hpp"
 
-namespace rb::app {
+namespace rb::modes {
 
-struct ModesOptions : ScenarioCommandOptions {
+struct ModesOptions : study::ScenarioCommandOptions {
   std::string speeds;   // "a:b:n" [m/s], n speeds from a to b; "" = the scenario's speed
   std::string contact;  // "kec" / "lut": the contact method ("" = the scenario's; kec for a
                         // vehicle file)
@@ -18,10 +18,8 @@ struct ModesOptions : ScenarioCommandOptions {
   double fd_scale = 1.0;  // multiplies the finite-difference steps (stability::StepRule)
 };
 
-CLI::App* addModesCommand(CLI::App& app, ModesOptions& options);
-
 // Returns the process exit code (0 ok, 1 bad input, 2 the analysis failed, 4 figures failed).
 // Throws InputError for a bad scenario or option.
 int runModes(const ModesOptions& options);
 
-}  // namespace rb::app
+}  // namespace rb::modes

@@ -16,12 +16,12 @@
 #include <optional>
 #include <string>
 
-#include "workbench/app/scenario_command.hpp"
-#include "workbench/app/stability_scene.hpp"
+#include "workbench/stability/scene.hpp"
+#include "workbench/study/command.hpp"
 
-namespace rb::app {
+namespace rb::critical_speed {
 
-struct CriticalSpeedOptions : ScenarioCommandOptions {
+struct CriticalSpeedOptions : study::ScenarioCommandOptions {
   std::string method = "ramp";          // "ramp", "bisection" or "both"
   std::string criterion = "amplitude";  // "amplitude" (wheelset lateral) or "en14363" (bogie
                                         // frame lateral acceleration, EN 14363 stability)
@@ -46,12 +46,10 @@ struct CriticalSpeedOptions : ScenarioCommandOptions {
   bool irregular = false;  // keep the scenario's irregularities
 };
 
-CLI::App* addCriticalSpeedCommand(CLI::App& app, CriticalSpeedOptions& options);
-
 // Without --from the search first probes 1.1 x the linear critical speed (linearCriticalSpeed);
 // when that run does not hunt (or there is no linear critical speed below --max-speed), it probes
 // upwards from the scene's vehicle speed (defaultStartSpeed) by factors of 1.2.
-double defaultStartSpeed(const StabilityScene& scene);
+double defaultStartSpeed(const stability::StabilityScene& scene);
 // The linear answers of the scene (workbench/stability) between 10 m/s and max_speed: the lowest
 // speed at which any mode is unstable (with that mode), and the speed at which the least damped
 // hunting mode loses its damping (where the nonlinear search starts). NaN with a note saying why
@@ -63,7 +61,7 @@ struct LinearAnswer {
   std::string note;          // why `any` is NaN
   std::string hunting_note;  // why `hunting` is NaN
 };
-LinearAnswer linearCriticalSpeed(const StabilityScene& scene, double max_speed,
+LinearAnswer linearCriticalSpeed(const stability::StabilityScene& scene, double max_speed,
                                  const std::string& table_cache);
 
 // The amplitude threshold: --threshold, else 0.1 mm on a track without irregularities (no forced
@@ -80,4 +78,4 @@ void checkCriticalSpeedOptions(const CriticalSpeedOptions& options);
 // Throws InputError for a bad scenario or option.
 int runCriticalSpeed(const CriticalSpeedOptions& options);
 
-}  // namespace rb::app
+}  // namespace rb::critical_speed

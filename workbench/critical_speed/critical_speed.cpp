@@ -1,4 +1,4 @@
-#include "workbench/app/critical_speed.hpp"
+#include "workbench/critical_speed/critical_speed.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,23 +8,21 @@
 #include <iostream>
 #include <sstream>
 
-#include "workbench/app/critical_speed_runs.hpp"
-#include "workbench/app/stability_scene.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
+#include "workbench/critical_speed/runs.hpp"
 #include "workbench/integrators/registry.hpp"
 #include "workbench/io/critical_speed_file.hpp"
 #include "workbench/io/result_file.hpp"
+#include "workbench/stability/scene.hpp"
 #include "workbench/stability/stability.hpp"
 #include "workbench/study/option_checks.hpp"
 
 namespace fs = std::filesystem;
 
-namespace rb::app {
+namespace rb::critical_speed {
 
 namespace {
-
-using critical::KickedRun;
 
 // Probes above the start speed when --from is not given: x 1.2 per probe reaches 2x the start
 // in 4 probes, fine enough that the first hunting probe is within 20 % of the onset.
@@ -51,7 +49,7 @@ void refuse(const std::string& option, const std::string& message) {
 
 // The speeds and the findings of one search.
 struct Search {
-  critical::RunSetup setup;
+  RunSetup setup;
   std::vector<KickedRun> runs;
   std::vector<std::string> findings;  // what could not be answered, with time and speed
   double start = 0.0;                 // [m/s] the start speed showing hunting (0: none)
@@ -91,7 +89,7 @@ std::string runName(const std::string& kind, std::size_t index, double v) {
 
 // One line on a constant-speed run: the numbers behind its verdict under the criterion.
 std::string describe(const KickedRun& r, bool en) {
-  const bool unstable = critical::runUnstable(r, en);
+  const bool unstable = runUnstable(r, en);
   std::ostringstream m;
   m << (unstable                ? "unstable"
         : r.verdict.small_cycle ? "NOT stable: sustained small-amplitude oscillation"
@@ -112,8 +110,7 @@ void noteFailure(Search& s, const KickedRun& r) {
 }
 
 const KickedRun& constantRun(Search& s, const std::string& kind, double v, double duration) {
-  KickedRun r =
-      critical::runKicked(s.setup, kind, runName(kind, s.runs.size(), v), v, 0.0, duration);
+  KickedRun r = runKicked(s.setup, kind, runName(kind, s.runs.size(), v), v, 0.0, duration);
   noteFailure(s, r);
   if (r.verdict.small_cycle) {
     std::ostringstream m;
@@ -129,7 +126,7 @@ const KickedRun& constantRun(Search& s, const std::string& kind, double v, doubl
 
 // The start speed with hunting: the probe at the start speed, then (without --from) higher
 // speeds. Returns false when none hunts.
-bool findStart(const CriticalSpeedOptions& o, const StabilityScene& scene, Search& s) {
+bool findStart(const CriticalSpeedOptions& o, const stability::StabilityScene& scene, Search& s) {
   const bool en = o.criterion == "en14363";
   if (o.from <= 0.0 && std::isfinite(s.linear) && kLinearMargin * s.linear <= o.max_speed) {
     const double v = kLinearMargin * s.linear;
@@ -137,7 +134,7 @@ bool findStart(const CriticalSpeedOptions& o, const StabilityScene& scene, Searc
     std::cout << "probe at " << mps(v) << " (1.1 x the linear critical speed): "
               << (r.ok ? describe(r, en) : "failed: " + r.message) << "\n";
     // A failed run (the kick lifting a wheel at this speed) is no start for a ramp.
-    if (r.ok && critical::runUnstable(r, en)) {
+    if (r.ok && runUnstable(r, en)) {
       s.start = v;
       return true;
     }
@@ -150,7 +147,7 @@ bool findStart(const CriticalSpeedOptions& o, const StabilityScene& scene, Searc
   for (;;) {
     const KickedRun& r = constantRun(s, "probe", v, o.duration);
     std::cout << "probe at " << mps(v) << ": " << describe(r, en) << "\n";
-    if (critical::runUnstable(r, en)) {
+    if (runUnstable(r, en)) {
       s.start = v;
       return true;
     }
@@ -164,20 +161,18 @@ bool findStart(const CriticalSpeedOptions& o, const StabilityScene& scene, Searc
 
 void rampDown(const CriticalSpeedOptions& o, Search& s) {
   const double duration = (s.start - s.end) / o.deceleration;
-  KickedRun r = critical::runKicked(s.setup, "ramp", "ramp", s.start, -o.deceleration, duration);
+  KickedRun r = runKicked(s.setup, "ramp", "ramp", s.start, -o.deceleration, duration);
   noteFailure(s, r);
-  const critical::RampVerdict v = o.criterion == "en14363"
-                                      ? critical::lastExceedance(r.en_speed, r.en_ratio)
-                                      : critical::rampCriticalSpeed(r.windows, s.setup.threshold);
+  const RampVerdict v = o.criterion == "en14363" ? lastExceedance(r.en_speed, r.en_ratio)
+                                                 : rampCriticalSpeed(r.windows, s.setup.threshold);
   if (!r.en_ratio.empty())
     s.ramp_max_ratio = *std::max_element(r.en_ratio.begin(), r.en_ratio.end());
   if (!r.windows.empty()) {
-    s.ramp_start_amplitude =
-        critical::rampCriticalSpeed(r.windows, s.setup.threshold).start_amplitude;
+    s.ramp_start_amplitude = rampCriticalSpeed(r.windows, s.setup.threshold).start_amplitude;
     s.ramp_end_amplitude = r.windows.back().amplitude;
     // Below the threshold at the end but not died out: the ramp's answer is where the cycle
     // fell below the threshold, not where the motion ceased.
-    if (s.ramp_end_amplitude >= critical::kRestFraction * s.setup.threshold &&
+    if (s.ramp_end_amplitude >= kRestFraction * s.setup.threshold &&
         s.ramp_end_amplitude < s.setup.threshold) {
       std::ostringstream m;
       m << "ramp: at its end speed " << mps(s.end) << " the lateral motion is still "
@@ -210,7 +205,7 @@ void bisect(const CriticalSpeedOptions& o, Search& s) {
   double hi = s.start;
   const KickedRun& low = constantRun(s, "bracket", lo, o.duration);
   std::cout << "bracket low end " << mps(lo) << ": " << describe(low, en) << "\n";
-  if (critical::runUnstable(low, en)) {
+  if (runUnstable(low, en)) {
     s.findings.push_back("bisection: hunting at the low end " + mps(lo) +
                          " of the bracket: the critical speed is lower (--to)");
     return;
@@ -226,7 +221,7 @@ void bisect(const CriticalSpeedOptions& o, Search& s) {
       break;
     }
     const KickedRun& r = constantRun(s, "bisection", mid, o.duration);
-    const bool unstable = critical::runUnstable(r, en);
+    const bool unstable = runUnstable(r, en);
     std::cout << "bisection " << mps(mid) << ": " << describe(r, en) << "\n";
     (unstable ? hi : lo) = mid;
   }
@@ -250,7 +245,7 @@ io::CriticalSpeedRun record(const KickedRun& r, const std::string& name, bool en
   o.rhs_evals = r.rhs_evals;
   o.steps = r.steps;
   o.ok = r.ok;
-  o.unstable = critical::runUnstable(r, en);
+  o.unstable = runUnstable(r, en);
   o.a_first = r.verdict.a_first;
   o.a_mid = r.verdict.a_mid;
   o.a_last = r.verdict.a_last;
@@ -278,8 +273,8 @@ void addRamp(const KickedRun& r, io::CriticalSpeedResult& res) {
   }
 }
 
-io::CriticalSpeedResult resultOf(const CriticalSpeedOptions& o, const StabilityScene& scene,
-                                 const Search& s) {
+io::CriticalSpeedResult resultOf(const CriticalSpeedOptions& o,
+                                 const stability::StabilityScene& scene, const Search& s) {
   io::CriticalSpeedResult res;
   const bool en = o.criterion == "en14363";
   res.text = {{"scenario", scene.file},
@@ -321,7 +316,7 @@ io::CriticalSpeedResult resultOf(const CriticalSpeedOptions& o, const StabilityS
     } else {
       res.bisection_speed.push_back(r.v0);
       res.bisection_amplitude.push_back(r.verdict.a_last);
-      res.bisection_unstable.push_back(critical::runUnstable(r, en) ? 1.0 : 0.0);
+      res.bisection_unstable.push_back(runUnstable(r, en) ? 1.0 : 0.0);
       res.bisection_small.push_back(r.verdict.small_cycle ? 1.0 : 0.0);
     }
   }
@@ -337,7 +332,7 @@ void writeCsv(const std::string& path, const Search& s, bool en) {
     const KickedRun& r = s.runs[k];
     const std::string head = std::to_string(k) + "," + r.kind + "," + formatNumberExact(r.v0) +
                              "," + formatNumberExact(r.acceleration) + "," + (r.ok ? "1" : "0") +
-                             "," + (critical::runUnstable(r, en) ? "1" : "0") + ",";
+                             "," + (runUnstable(r, en) ? "1" : "0") + ",";
     for (const auto& w : r.windows)
       f << head << r.cpu_s << "," << r.rhs_evals << "," << w.t0 << "," << w.t1 << "," << w.speed
         << "," << w.amplitude << "\n";
@@ -429,7 +424,7 @@ void printSummary(const CriticalSpeedOptions& o, const Search& s) {
             << " rhs evaluations\n";
 }
 
-void search(const CriticalSpeedOptions& o, const StabilityScene& scene, Search& s) {
+void search(const CriticalSpeedOptions& o, const stability::StabilityScene& scene, Search& s) {
   if (!findStart(o, scene, s)) return;
   s.end = o.to > 0.0 ? o.to : 0.5 * s.start;
   if (s.end >= s.start) {
@@ -443,7 +438,7 @@ void search(const CriticalSpeedOptions& o, const StabilityScene& scene, Search& 
 // The first run must fit on the scene's track: a --duration (or a ramp) that carries the vehicle
 // beyond its end at the start speed is refused as the option, before any run (a later run at a
 // higher probe speed that does not fit is a finding of the search).
-void checkTrackReach(const CriticalSpeedOptions& o, const StabilityScene& scene) {
+void checkTrackReach(const CriticalSpeedOptions& o, const stability::StabilityScene& scene) {
   const double reach = study::trackReach(scene.spec);
   const double v0 = o.from_given ? o.from : defaultStartSpeed(scene);
   Diagnostics d;
@@ -470,8 +465,8 @@ void checkTrackReach(const CriticalSpeedOptions& o, const StabilityScene& scene)
 // The kick becomes an initial condition of the first wheelset: a kick beyond its flangeway is
 // refused as --kick (with the largest admissible offset) before any run, on the first run's
 // settings, not as the vehicle.initial key it becomes.
-void checkKick(const CriticalSpeedOptions& o, const StabilityScene& scene,
-               const critical::RunSetup& setup) {
+void checkKick(const CriticalSpeedOptions& o, const stability::StabilityScene& scene,
+               const RunSetup& setup) {
   if (setup.first_wheelset.empty()) return;
   const double v0 = o.from_given ? o.from : defaultStartSpeed(scene);
   double duration = o.duration;
@@ -482,7 +477,7 @@ void checkKick(const CriticalSpeedOptions& o, const StabilityScene& scene,
   base.push_back("vehicle.acceleration=0");
   base.push_back("run.duration=" + formatNumberExact(duration));
   if (setup.drop_irregularities) base.emplace_back("run.effects.irregularities=false");
-  ScenarioCommandOptions sc;
+  study::ScenarioCommandOptions sc;
   sc.scenario = scene.file;
   sc.root = o.root;
   (void)checkOptionOverrides(
@@ -491,7 +486,7 @@ void checkKick(const CriticalSpeedOptions& o, const StabilityScene& scene,
         "vehicle.initial." + setup.first_wheelset + ".y=" + formatNumberExact(o.kick)}});
 }
 
-bool hasBogie(const StabilityScene& scene) {
+bool hasBogie(const stability::StabilityScene& scene) {
   for (const auto& b : scene.spec.vehicle.bodies)
     if (b.kind == vehicle::BodyKind::Bogie) return true;
   return false;
@@ -510,12 +505,12 @@ double thresholdOf(const CriticalSpeedOptions& o, bool irregular_track) {
   return irregular_track ? 1e-3 : 1e-4;
 }
 
-double defaultStartSpeed(const StabilityScene& scene) {
+double defaultStartSpeed(const stability::StabilityScene& scene) {
   // A scene at rest (speed 0 with a run.duration) would probe 0 m/s forever: start at 10 m/s.
   return std::max(scene.spec.vehicle.speed, 10.0);
 }
 
-LinearAnswer linearCriticalSpeed(const StabilityScene& scene, double max_speed,
+LinearAnswer linearCriticalSpeed(const stability::StabilityScene& scene, double max_speed,
                                  const std::string& table_cache) {
   LinearAnswer out;
   if (!scene.spec.has_contact || max_speed <= 10.0) return out;
@@ -593,8 +588,8 @@ void checkCriticalSpeedOptions(const CriticalSpeedOptions& o) {
 int runCriticalSpeed(const CriticalSpeedOptions& o) {
   checkCriticalSpeedOptions(o);
   const study::StudyOptions so = commandStudyOptions(o, "critical_speed");
-  const StabilityScene scene =
-      loadStabilityScene(o.scenario, o.contact, o.overrides, o.root, so.out);
+  const stability::StabilityScene scene =
+      stability::loadStabilityScene(o.scenario, o.contact, o.overrides, o.root, so.out);
   if (!scene.spec.has_vehicle) refuse(o.scenario, "has no vehicle");
   if (o.criterion == "en14363" && !hasBogie(scene))
     refuse("--criterion",
@@ -656,4 +651,4 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
   return complete(o, s) && s.findings.empty() ? plots : 2;
 }
 
-}  // namespace rb::app
+}  // namespace rb::critical_speed

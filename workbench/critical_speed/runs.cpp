@@ -1,4 +1,4 @@
-#include "workbench/app/critical_speed_runs.hpp"
+#include "workbench/critical_speed/runs.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 
 namespace fs = std::filesystem;
 
-namespace rb::app::critical {
+namespace rb::critical_speed {
 
 namespace {
 
@@ -147,4 +147,4 @@ bool runUnstable(const KickedRun& run, bool en14363) {
   return run.verdict.unstable;
 }
 
-}  // namespace rb::app::critical
+}  // namespace rb::critical_speed

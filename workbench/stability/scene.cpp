@@ -1,4 +1,4 @@
-#include "workbench/app/stability_scene.hpp"
+#include "workbench/stability/scene.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -11,7 +11,7 @@
 
 namespace fs = std::filesystem;
 
-namespace rb::app {
+namespace rb::stability {
 
 namespace {
 
@@ -82,7 +82,7 @@ std::string sceneText(const std::string& path, const std::string& module,
   for (char& c : shown)
     if (c == '\n') c = ' ';
   s << "-- Stability scene written by workbench for the vehicle file " << shown << "\n"
-    << "-- (workbench/app/stability_scene.hpp): long tangent track without irregularities,\n"
+    << "-- (workbench/stability/scene.hpp): long tangent track without irregularities,\n"
     << "-- S1002 on 60E1 at 1:40 (B = 1360 mm, G = " << formatNumber(track::kStandardGauge * 1e3)
     << " mm, r0 = " << formatNumber(profiles::kNominalWheelRadius) << " m), " << contact
     << " contact with\n"
@@ -151,4 +151,4 @@ StabilityScene loadStabilityScene(const std::string& path, const std::string& co
   return scene;
 }
 
-}  // namespace rb::app
+}  // namespace rb::stability

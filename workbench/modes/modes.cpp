@@ -1,4 +1,4 @@
-#include "workbench/app/modes.hpp"
+#include "workbench/modes/modes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,16 +8,16 @@
 #include <limits>
 #include <sstream>
 
-#include "workbench/app/stability_scene.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/io/modes_file.hpp"
+#include "workbench/stability/scene.hpp"
 #include "workbench/stability/stability.hpp"
 #include "workbench/study/option_checks.hpp"
 
 namespace fs = std::filesystem;
 
-namespace rb::app {
+namespace rb::modes {
 
 namespace {
 
@@ -231,8 +231,8 @@ int runModes(const ModesOptions& o) {
   std::vector<double> speeds;
   if (!o.speeds.empty()) speeds = parseSpeeds(o.speeds);
   const study::StudyOptions so = commandStudyOptions(o, "modes");
-  const StabilityScene scene =
-      loadStabilityScene(o.scenario, o.contact, o.overrides, o.root, so.out);
+  const stability::StabilityScene scene =
+      stability::loadStabilityScene(o.scenario, o.contact, o.overrides, o.root, so.out);
   if (speeds.empty()) speeds.push_back(scene.spec.vehicle.speed);
   if (!(speeds.front() > 0.0))
     throw InputError(scene.spec.vehicle.loc, "vehicle.speed must be > 0 for workbench modes");
@@ -296,4 +296,4 @@ int runModes(const ModesOptions& o) {
   return study::runPlots(so, {"modes", so.out});
 }
 
-}  // namespace rb::app
+}  // namespace rb::modes
