@@ -180,8 +180,8 @@ inline int elasticAccelerations(const ContactModels& models, const StageInput& i
   qdd = llt.solve(b);
   if (qdd.allFinite()) return 0;
   work.fail(ContactFailure::NonFinite, models.vehicle.bodies[ww.body].name,
-            "wheelset '" + models.vehicle.bodies[ww.body].name + "': non-finite accelerations at t = " +
-                std::to_string(in.t) + " s");
+            "wheelset '" + models.vehicle.bodies[ww.body].name +
+                "': non-finite accelerations at t = " + std::to_string(in.t) + " s");
   return 1;
 }
 

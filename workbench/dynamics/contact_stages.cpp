@@ -67,7 +67,7 @@ int kecConstraints(const ContactModels& models, const StageInput& in, WheelsetWo
     wheelsetAt(os, models, ww, in.t, q[kS]);
     os << "KEC constraints (Eq. 22) " << kecFailure(sol) << ", y = " << q[kY] * 1e3 << " mm";
     work.fail(sol.status == contact::KecStatus::OutOfTable ? ContactFailure::TableRange
-                                                          : ContactFailure::ConstraintSolve,
+                                                           : ContactFailure::ConstraintSolve,
               models.vehicle.bodies[ww.body].name, os.str());
     ww.kec_warm = false;
     return 1;
@@ -321,8 +321,8 @@ int checkSolution(const ContactModels& models, const StageInput& in, const Wheel
   if (x.allFinite()) return 0;
   work.fail(ContactFailure::NonFinite, models.vehicle.bodies[ww.body].name,
             "wheelset '" + models.vehicle.bodies[ww.body].name +
-                "': singular contact equations (augmented system) at t = " +
-                std::to_string(in.t) + " s");
+                "': singular contact equations (augmented system) at t = " + std::to_string(in.t) +
+                " s");
   return 1;
 }
 

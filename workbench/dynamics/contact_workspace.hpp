@@ -171,7 +171,7 @@ struct ContactWorkspace {
   double next_t = 0.0;
   std::vector<double> next_y, next_ydot;
   ContactStats stats;
-  std::string error;  // why the last evaluation failed
+  std::string error;                              // why the last evaluation failed
   ContactFailure failure = ContactFailure::None;  // the same as a code
   std::string failure_body;                       // the body it concerns
 

@@ -34,12 +34,12 @@ std::string componentList(const std::vector<int>& comps, const NameFn& name);
 // What the model did on its last failing call, recorded by the callback wrappers. Only written on
 // failure paths (may allocate there).
 struct RhsRecord {
-  int code = 0;             // last non-zero return of rhs/residual/jacobian
-  double t = 0.0;           // time of that call
-  std::string what;         // "right-hand side", "Jacobian", "residual"
-  std::string model_error;  // the model's lastError() right after that call
+  int code = 0;                // last non-zero return of rhs/residual/jacobian
+  double t = 0.0;              // time of that call
+  std::string what;            // "right-hand side", "Jacobian", "residual"
+  std::string model_error;     // the model's lastError() right after that call
   ModelFailure model_failure;  // and its lastFailure()
-  bool nonfinite = false;   // a NaN/Inf was seen (latest event below)
+  bool nonfinite = false;      // a NaN/Inf was seen (latest event below)
   double nonfinite_t = 0.0;
   std::string nonfinite_where;  // "derivative", "state", "residual", "Jacobian"
   std::vector<int> nonfinite_comps;

@@ -47,10 +47,10 @@ struct Stats {
 // What ended a failed run, as the integrator saw it; the model's own reason (wheel lift, a contact
 // point leaving its table) is RunResult::cause when the kind is Model.
 enum class FailureKind : std::uint8_t {
-  None,         // the run did not fail
-  Model,        // the model refused its evaluation (fatal, or recoverable down to the smallest step)
-  NonFinite,    // NaN/Inf in the state, a derivative or an output
-  StepSize,     // the error test kept failing down to the smallest step
+  None,       // the run did not fail
+  Model,      // the model refused its evaluation (fatal, or recoverable down to the smallest step)
+  NonFinite,  // NaN/Inf in the state, a derivative or an output
+  StepSize,   // the error test kept failing down to the smallest step
   TooMuchWork,  // the step limit (solver.max_steps) was reached
   Convergence,  // the Newton iteration of an implicit method kept failing
   Solver,       // another error of the solver
@@ -79,8 +79,8 @@ struct RunResult {
   double t_reached = 0.0;            // last time with a valid solution (final time when complete)
   double t_fail = std::numeric_limits<double>::quiet_NaN();  // == t_reached when !ok, else NaN
   std::vector<int> offending_components;                     // state indices blamed for a failure
-  FailureKind failure = FailureKind::None;  // what ended a failed run
-  ModelFailure cause;                       // the model's reason and body (failure == Model)
+  FailureKind failure = FailureKind::None;                   // what ended a failed run
+  ModelFailure cause;  // the model's reason and body (failure == Model)
   Stats stats;
 };
 

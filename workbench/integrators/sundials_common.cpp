@@ -118,7 +118,8 @@ FailureKind failureKind(const FailureReport& f, const RhsRecord& rec) {
   // prefix: the kind follows the flag, never the text of a message.
   const std::string& n = f.flag_name;
   auto is = [&n](std::string_view suffix) {
-    return n.size() >= suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0;
+    return n.size() >= suffix.size() &&
+           n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0;
   };
   if (is("_TOO_MUCH_WORK")) return FailureKind::TooMuchWork;
   if (is("_ERR_FAILURE") || is("_ERR_FAIL") || is("_TOO_CLOSE") || is("_TOO_MUCH_ACC"))

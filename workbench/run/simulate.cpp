@@ -102,8 +102,8 @@ std::string bodyOfPath(const std::string& path) {
     vehicle = parts[1] + ".";
     parts.erase(parts.begin(), parts.begin() + 2);
   }
-  const bool of_body = parts.size() > 2 && (parts[0] == "bodies" || parts[0] == "contact" ||
-                                            parts[0] == "elements");
+  const bool of_body =
+      parts.size() > 2 && (parts[0] == "bodies" || parts[0] == "contact" || parts[0] == "elements");
   return of_body ? vehicle + parts[1] : std::string();
 }
 

@@ -94,7 +94,7 @@ std::string failureFields(const std::optional<io::StatsRecord>& rec) {
   auto number = [&](const char* k) {
     const auto it = rec->number.find(k);
     return it == rec->number.end() || !std::isfinite(it->second) ? std::string()
-                                                                  : formatNumberExact(it->second);
+                                                                 : formatNumberExact(it->second);
   };
   return text("failure_kind") + "," + text("failure_reason") + "," + text("failure_body") + "," +
          number("failure_t") + "," + number("failure_s");
