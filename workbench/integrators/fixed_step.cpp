@@ -253,6 +253,18 @@ std::string FixedStepIntegrator::failureMessage(Status s, double t_n) const {
   return m + "unknown failure";
 }
 
+void FixedStepIntegrator::recordFailure(Status s, double t_n, RunResult& res) const {
+  res.t_reached = t_n;
+  res.message = failureMessage(s, t_n);
+  if (s == Status::NonFinite) {
+    res.failure = FailureKind::NonFinite;
+    res.offending_components = rec_.nonfinite_comps;
+  } else {
+    res.failure = FailureKind::Model;
+    res.cause = rec_.model_failure;
+  }
+}
+
 RunResult FixedStepIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::VectorXd& y0,
                                       const std::vector<double>& output_times,
                                       const Observer& observer, const Progress& progress) {
@@ -323,11 +335,7 @@ RunResult FixedStepIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::Ve
       const double t = t0 + static_cast<double>(n) * h;
       const Status s = method_ == Method::Rk4 ? advanceRk4(t, h, 0, k1_.data()) : abmStep(t, h);
       if (s != Status::Ok) {
-        res.t_reached = t;
-        res.message = failureMessage(s, t);
-        res.failure = s == Status::NonFinite ? FailureKind::NonFinite : FailureKind::Model;
-        if (s == Status::NonFinite) res.offending_components = rec_.nonfinite_comps;
-        if (res.failure == FailureKind::Model) res.cause = rec_.model_failure;
+        recordFailure(s, t, res);
         return finish(false);
       }
     }

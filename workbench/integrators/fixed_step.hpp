@@ -80,6 +80,9 @@ class FixedStepIntegrator final : public Integrator {
   void expAbmCorrect(double h, int slot, Eigen::VectorXd& ynew) const;
   const expo::Weights& weightsFor(std::size_t j, double z) const;
   std::string failureMessage(Status s, double t_n) const;
+  // The failure of a step at t_n into res: its time, message, kind and the blamed components or
+  // the model's reason.
+  void recordFailure(Status s, double t_n, RunResult& res) const;
 
   Method method_;
   // Per-run state (buffers sized at the start of runOde).
