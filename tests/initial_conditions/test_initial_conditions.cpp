@@ -333,6 +333,11 @@ TEST(InitialConditionsRun, KickedWheelsetStartsThereDecaysAndIsRecorded) {
   rb::io::ResultReader r(out);
   ASSERT_TRUE(r.has("/initial_conditions"));
   EXPECT_EQ(r.number("/initial_conditions", "count"), 1.0);
+  // The file states the group's layout: one /schema row per dataset, each naming a dataset.
+  const auto rows = r.strings("/schema/initial_conditions/path");
+  ASSERT_TRUE(rows);
+  EXPECT_EQ(r.members("/initial_conditions").size(), rows->size());
+  for (const auto& p : *rows) EXPECT_TRUE(r.has(p)) << p;
   EXPECT_EQ(series(out, "/initial_conditions/value"), std::vector<double>{3e-3});
   const std::vector<double> eq = series(out, "/initial_conditions/equilibrium");
   const std::vector<double> st = series(out, "/initial_conditions/state");

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "workbench/io/result_file.hpp"
+#include "workbench/io/schema.hpp"
 
 namespace rb::io {
 
@@ -19,10 +20,10 @@ struct InitialConditionsRecord {
 };
 
 // Writes /initial_conditions/{body, key, value, unit, state_names, equilibrium, state} and the
-// group attribute `count` (number of conditions).
-// Into the group g: /initial_conditions, or /vehicles/<name>/initial_conditions for a vehicle of a
-// run of several.
-void writeInitialConditions(ResultFile& f, const InitialConditionsRecord& r,
-                            const std::string& g = "/initial_conditions");
+// group attribute `count` (number of conditions) into the group g: /initial_conditions, or
+// /vehicles/<name>/initial_conditions for a vehicle of a run of several. Returns the /schema rows
+// of the datasets written (the caller writes /schema/initial_conditions once per file).
+std::vector<SchemaEntry> writeInitialConditions(ResultFile& f, const InitialConditionsRecord& r,
+                                                const std::string& g = "/initial_conditions");
 
 }  // namespace rb::io

@@ -59,10 +59,10 @@ void writeContactStats(const Model& m, const dynamics::ContactStats& cs,
 
 // /initial_conditions: the conditions as given and the state the run starts from, so the result
 // alone says where the motion began (written only when vehicle.initial gives any).
-void writeInitialConditions(const vehicle::VehicleOde& ode,
-                            std::span<const vehicle::InitialCondition> conditions,
-                            const Eigen::VectorXd& equilibrium, const Eigen::VectorXd& y0,
-                            const std::string& prefix, io::ResultFile& f) {
+std::vector<io::SchemaEntry> writeInitialConditions(
+    const vehicle::VehicleOde& ode, std::span<const vehicle::InitialCondition> conditions,
+    const Eigen::VectorXd& equilibrium, const Eigen::VectorXd& y0, const std::string& prefix,
+    io::ResultFile& f) {
   io::InitialConditionsRecord rec;
   for (const auto& c : conditions) {
     rec.body.push_back(c.body);
@@ -74,7 +74,7 @@ void writeInitialConditions(const vehicle::VehicleOde& ode,
   for (int i = 0; i < ode.size(); ++i) rec.state_names.push_back(ode.componentName(i));
   rec.equilibrium.assign(equilibrium.begin(), equilibrium.end());
   rec.state.assign(y0.begin(), y0.end());
-  io::writeInitialConditions(f, rec, prefix + "/initial_conditions");
+  return io::writeInitialConditions(f, rec, prefix + "/initial_conditions");
 }
 
 // One vehicle of the run: its part of the run's ODE and state, its outputs and its assessment.
@@ -111,15 +111,19 @@ std::vector<RunPart> makeParts(const Model& m, train::TrainOde& ode, const Vehic
 // /initial_conditions).
 Eigen::VectorXd startState(const std::vector<RunPart>& parts, int size, io::ResultFile& f) {
   Eigen::VectorXd y0(size);
+  std::vector<io::SchemaEntry> schema;
   for (const auto& p : parts) {
     Eigen::VectorXd y = p.ode->initialState(0.0);
     if (!p.v->initial.empty()) {
       const Eigen::VectorXd equilibrium = y;
       vehicle::applyInitialConditions(*p.ode, p.v->initial, y);
-      writeInitialConditions(*p.ode, p.v->initial, equilibrium, y, p.v->prefix(), f);
+      const auto rows =
+          writeInitialConditions(*p.ode, p.v->initial, equilibrium, y, p.v->prefix(), f);
+      schema.insert(schema.end(), rows.begin(), rows.end());
     }
     y0.segment(p.offset, y.size()) = y;
   }
+  if (!schema.empty()) io::writeSchema(f, "initial_conditions", schema, {});
   return y0;
 }
 
