@@ -63,7 +63,8 @@ def _onset(cells: List[dict]) -> str:
 def _cell(r: dict, name: str, scale: float, spec: str) -> str:
     x = _metric(r, name)
     if r["status"] != "ok":
-        reason = "wheel lift" if "wheel lift" in r.get("message", "") else r["status"]
+        # The summary's failure record (workbench/study/summary.cpp), not the message's words.
+        reason = "wheel lift" if r.get("failure_reason") == "wheel_lift" else r["status"]
         return f"{fmt(None if x is None else x * scale, spec)} ({reason})" if x is not None \
             else reason
     return fmt(None if x is None else x * scale, spec)
