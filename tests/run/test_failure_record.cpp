@@ -48,6 +48,20 @@ TEST(FailureRecord, WheelLiftIsTheModelsReasonWithItsWheelsetTimeAndDistance) {
   EXPECT_NE(reasons.find("=wheel_lift"), std::string::npos) << reasons;
 }
 
+TEST(FailureRecord, TheSolversStepLimitIsTooMuchWork) {
+  // dopri5 allowed 5 internal steps per output interval: the kind follows the SUNDIALS-style flag,
+  // no model reason, the time and distance where it stopped.
+  const std::string file =
+      runInto("scenarios/default/case3_kec_fast.lua", "work.h5",
+              {"run.duration=0.02", "solver.method=dopri5", "solver.max_steps=5"});
+  const rb::io::ResultReader r(file);
+  EXPECT_EQ(r.text("/stats", "status").value_or(""), "failed");
+  EXPECT_EQ(r.text("/stats", "failure_kind").value_or(""), "too_much_work");
+  EXPECT_EQ(r.text("/stats", "failure_reason").value_or("?"), "");
+  EXPECT_TRUE(r.number("/stats", "failure_t"));
+  EXPECT_TRUE(r.number("/stats", "failure_s"));
+}
+
 TEST(FailureRecord, AnOkRunRecordsNoFailure) {
   const std::string file =
       runInto("scenarios/default/case3_kec_fast.lua", "ok.h5", {"run.duration=0.02"});

@@ -206,9 +206,7 @@ RunResult BdfIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::VectorXd
           CVodeGetErrWeights(mem, ewt.get()) == CV_SUCCESS &&
           CVodeGetEstLocalErrors(mem, ele.get()) == CV_SUCCESS)
         f.weighted_errors = detail::largestWeightedErrors(ele.get(), ewt.get(), n);
-      res.message = detail::buildFailure(f, cb.rec, names, res.offending_components);
-      res.failure = detail::failureKind(f, cb.rec);
-      if (res.failure == FailureKind::Model) res.cause = cb.rec.model_failure;
+      detail::reportFailure(f, cb.rec, names, res);
       res.ok = false;
       res.t_fail = tcur;
       collect();

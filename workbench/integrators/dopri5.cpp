@@ -114,9 +114,7 @@ RunResult Dopri5Integrator::runOde(OdeSystem& sys, double t0, const Eigen::Vecto
     if (local_errors && ERKStepGetErrWeights(mem, ytmp.get()) == ARK_SUCCESS &&
         ERKStepGetEstLocalErrors(mem, ytmp2.get()) == ARK_SUCCESS)
       f.weighted_errors = detail::largestWeightedErrors(ytmp2.get(), ytmp.get(), n);
-    res.message = detail::buildFailure(f, cb.rec, names, res.offending_components);
-    res.failure = detail::failureKind(f, cb.rec);
-    if (res.failure == FailureKind::Model) res.cause = cb.rec.model_failure;
+    detail::reportFailure(f, cb.rec, names, res);
     res.ok = false;
     res.t_fail = res.t_reached;
     collect();

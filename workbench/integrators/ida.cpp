@@ -317,9 +317,7 @@ RunResult runIda(std::string_view method, const SolverSpec& sp, ResidualModel& m
         IDAGetErrWeights(mem, ewt.get()) == IDA_SUCCESS &&
         IDAGetEstLocalErrors(mem, ele.get()) == IDA_SUCCESS)
       f.weighted_errors = detail::largestWeightedErrors(ele.get(), ewt.get(), n);
-    res.message = detail::buildFailure(f, cb.rec, names, res.offending_components);
-    res.failure = detail::failureKind(f, cb.rec);
-    if (res.failure == FailureKind::Model) res.cause = cb.rec.model_failure;
+    detail::reportFailure(f, cb.rec, names, res);
     res.ok = false;
     res.t_fail = res.t_reached;
     collect();

@@ -110,9 +110,11 @@ std::vector<std::pair<int, double>> largestWeightedErrors(N_Vector ele, N_Vector
   return w;
 }
 
-FailureKind failureKind(const FailureReport& f, const RhsRecord& rec) {
-  const double tol = 1e-12 * std::max(1.0, std::abs(f.t_reached));
-  if (rec.nonfinite && rec.nonfinite_t >= f.t_reached - tol) return FailureKind::NonFinite;
+namespace {
+
+// The kind of a failure that is not a non-finite value the solver gave up on: the model's
+// refusal, else the SUNDIALS flag's.
+FailureKind flagKind(const FailureReport& f, const RhsRecord& rec) {
   if (f.rhs_related && rec.code != 0) return FailureKind::Model;
   // SUNDIALS' flag names are the same for CVODE (CV_), ARKODE (ARK_) and IDA (IDA_) after the
   // prefix: the kind follows the flag, never the text of a message.
@@ -129,11 +131,16 @@ FailureKind failureKind(const FailureReport& f, const RhsRecord& rec) {
   return FailureKind::Solver;
 }
 
-std::string buildFailure(const FailureReport& f, const RhsRecord& rec, const NameFn& name,
-                         std::vector<int>& offending) {
+}  // namespace
+
+void reportFailure(const FailureReport& f, const RhsRecord& rec, const NameFn& name,
+                   RunResult& res) {
   std::string m = f.method + ": failed at t = " + num(f.t_reached) + ": ";
   const double tol = 1e-12 * std::max(1.0, std::abs(f.t_reached));
   const bool blame_nonfinite = rec.nonfinite && rec.nonfinite_t >= f.t_reached - tol;
+  res.failure = blame_nonfinite ? FailureKind::NonFinite : flagKind(f, rec);
+  if (res.failure == FailureKind::Model) res.cause = rec.model_failure;
+  std::vector<int>& offending = res.offending_components;
   offending.clear();
   if (blame_nonfinite) {
     m += rec.describeNonFinite(name) + " (the solver shrank the step and gave up: " + f.reason +
@@ -153,7 +160,7 @@ std::string buildFailure(const FailureReport& f, const RhsRecord& rec, const Nam
     }
     for (const auto& [i, v] : f.weighted_errors) offending.push_back(i);
   }
-  return m;
+  res.message = std::move(m);
 }
 
 std::string takeFlagName(char* name) {

@@ -103,7 +103,6 @@ std::vector<std::pair<int, double>> largestWeightedErrors(N_Vector ele, N_Vector
 // The NaN/Inf detail takes precedence when rec saw a non-finite value at or after t_reached
 // (offending = the non-finite components, no local errors); otherwise offending = the components
 // with the largest weighted local errors, if given.
-// Sets res.message, res.offending_components, res.ok = false, res.t_fail = res.t_reached.
 struct FailureReport {
   std::string method;
   double t_reached = 0.0;
@@ -113,10 +112,10 @@ struct FailureReport {
   std::string sundials_text;
   std::vector<std::pair<int, double>> weighted_errors;
 };
-std::string buildFailure(const FailureReport& f, const RhsRecord& rec, const NameFn& name,
-                         std::vector<int>& offending);
-// The kind of the failure buildFailure describes (NonFinite, Model, else by the SUNDIALS flag).
-FailureKind failureKind(const FailureReport& f, const RhsRecord& rec);
+// The failure into res: its message, the blamed components, its kind (NonFinite, Model, else by
+// the SUNDIALS flag) and, when the model refused, the model's reason.
+void reportFailure(const FailureReport& f, const RhsRecord& rec, const NameFn& name,
+                   RunResult& res);
 
 // SUNDIALS returns a malloc'ed string for flag names.
 std::string takeFlagName(char* name);
