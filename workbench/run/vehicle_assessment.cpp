@@ -4,7 +4,6 @@
 #include <cmath>
 #include <ctime>
 #include <limits>
-#include <sstream>
 
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
@@ -15,12 +14,6 @@ namespace rb::run {
 namespace {
 
 using vehicle::Vector6d;
-
-std::string num(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
 
 std::vector<int> bodiesOfKind(const vehicle::VehicleModel& v, vehicle::BodyKind k) {
   std::vector<int> out;
@@ -78,7 +71,7 @@ void addFloorPoints(const vehicle::VehicleModel& v, AssessmentSetup& as) {
     const std::string prefix = cars.size() > 1 ? v.bodies[c].name + "_" : "";
     std::vector<std::pair<std::string, double>> pts;
     if (!as.spec.floor_positions.empty()) {
-      for (const double x : as.spec.floor_positions) pts.emplace_back("x_" + num(x), x);
+      for (const double x : as.spec.floor_positions) pts.emplace_back("x_" + formatNumber(x), x);
     } else {
       double front = 0.0, rear = 0.0;
       for (const int b : supports) {
@@ -320,9 +313,9 @@ AssessmentSetup setupAssessment(const Model& m, std::size_t k,
   if (!as.spec.any()) return as;
   as.signals.dt = sampleInterval(m, as.spec.sample_every);
   if (as.signals.dt > as.spec.sample_every * (1 + 1e-9))
-    notes.push_back("assessment: sample_every " + num(as.spec.sample_every) +
+    notes.push_back("assessment: sample_every " + formatNumber(as.spec.sample_every) +
                     " s is below the solver step; the signals are sampled at every step (" +
-                    num(as.signals.dt) + " s)");
+                    formatNumber(as.signals.dt) + " s)");
   if ((as.spec.safety || as.spec.wear) && contact != nullptr) addWheels(m, k, as);
   if (as.spec.safety) as.signals.sections = assessmentSections(m);
   if (as.spec.stability) addBogiePoints(m.vehicles[k], as);
@@ -372,9 +365,10 @@ void checkSampling(const Model& m) {
   Diagnostics d;
   const double n = std::ceil(m.t_end / sampleInterval(m, a.sample_every) - 1e-9);
   if (n > m.spec.run.max_output_samples)
-    d.add(a.loc, "run.assessment.sample_every: " + num(a.sample_every) + " s over " + num(m.t_end) +
-                     " s gives " + num(n) + " samples, more than run.output.max_samples = " +
-                     num(m.spec.run.max_output_samples));
+    d.add(a.loc, "run.assessment.sample_every: " + formatNumber(a.sample_every) + " s over " +
+                     formatNumber(m.t_end) + " s gives " + formatNumber(n) +
+                     " samples, more than run.output.max_samples = " +
+                     formatNumber(m.spec.run.max_output_samples));
   double lo = 0.0, hi = 0.0;
   const vehicle::VehicleModel& v = m.lead().vehicle;
   const auto cars = bodiesOfKind(v, vehicle::BodyKind::CarBody);
@@ -385,10 +379,10 @@ void checkSampling(const Model& m) {
   }
   for (const double x : a.floor_positions)
     if (x < lo - kFloorOverhang || x > hi + kFloorOverhang)
-      d.add(a.loc, "run.assessment.floor_positions: " + num(x) +
-                       " m is not on the vehicle (its bodies lie between " + num(lo) + " and " +
-                       num(hi) + " m from the car body's centre; at most " + num(kFloorOverhang) +
-                       " m beyond)");
+      d.add(a.loc, "run.assessment.floor_positions: " + formatNumber(x) +
+                       " m is not on the vehicle (its bodies lie between " + formatNumber(lo) +
+                       " and " + formatNumber(hi) + " m from the car body's centre; at most " +
+                       formatNumber(kFloorOverhang) + " m beyond)");
   d.throwIfAny();
 }
 
@@ -398,8 +392,9 @@ void checkSections(const Model& m) {
   const double length = m.track->geometry().length();
   for (const auto& sec : m.spec.run.assessment.sections)
     if (sec.to > length)
-      d.add(sec.loc, "run.assessment.sections: section '" + sec.name + "' ends at " + num(sec.to) +
-                         " m, beyond the track's end at " + num(length) + " m");
+      d.add(sec.loc, "run.assessment.sections: section '" + sec.name + "' ends at " +
+                         formatNumber(sec.to) + " m, beyond the track's end at " +
+                         formatNumber(length) + " m");
   d.throwIfAny();
 }
 }  // namespace

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <sstream>
 
+#include "workbench/core/strings.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
 #include "workbench/dynamics/names.hpp"
 #include "workbench/integrators/registry.hpp"
@@ -17,12 +17,6 @@
 
 namespace rb::run {
 namespace {
-
-std::string num(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
 
 // /schema/series: /time and every output channel, before the run so that the partial file of a
 // failed run has it too.
@@ -52,8 +46,9 @@ void writeContactStats(const Model& m, const dynamics::ContactStats& cs,
                            " trial evaluations (the integrator retried smaller steps); the "
                            "accepted solution never lifted");
   if (m.lead().contact->creep != dynamics::CreepModel::None && creepage.value > kCreepageWarning)
-    out.warnings.push_back("creepage reached " + num(creepage.value) +
-                           " at t = " + num(creepage.t) + " s, beyond " + num(kCreepageWarning) +
+    out.warnings.push_back("creepage reached " + formatNumber(creepage.value) +
+                           " at t = " + formatNumber(creepage.t) + " s, beyond " +
+                           formatNumber(kCreepageWarning) +
                            " where the creep law is calibrated (docs/contact_dynamics.md)");
 }
 
