@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/creep/tractcurv.hpp"
+#include "tests/creep/fixtures.hpp"
 #include "workbench/creep/fastsim.hpp"
 #include "workbench/creep/polach.hpp"
 
@@ -24,18 +24,7 @@ using namespace rb::creep;
 constexpr double kPi = std::numbers::pi;
 constexpr double kNu = 0.28;
 
-ContactPatch ellipse(double a, double b, double Q, double nu = kNu) {
-  const KalkerCoefficients c = kalkerCoefficients(a / b, nu);
-  ContactPatch p;
-  p.Q = Q;
-  p.a = a;
-  p.b = b;
-  p.c11 = c.c11;
-  p.c22 = c.c22;
-  p.c23 = c.c23;
-  p.c33 = c.c33;
-  return p;
-}
+using rb::test::ellipse;
 
 // Patches with a/b from 0.2 (tread) to 5 (flange-like), all in the Kalker table.
 std::vector<ContactPatch> patches() {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/creep/tractcurv.hpp"
+#include "tests/creep/fixtures.hpp"
 #include "workbench/creep/fastsim.hpp"
 #include "workbench/creep/polach.hpp"
 #include "workbench/creep/shen_hedrick_elkins.hpp"
@@ -20,18 +20,7 @@ namespace {
 
 using namespace rb::creep;
 
-ContactPatch ellipse(double a, double b, double Q, double nu = 0.28) {
-  const KalkerCoefficients c = kalkerCoefficients(a / b, nu);
-  ContactPatch p;
-  p.Q = Q;
-  p.a = a;
-  p.b = b;
-  p.c11 = c.c11;
-  p.c22 = c.c22;
-  p.c23 = c.c23;
-  p.c33 = c.c33;
-  return p;
-}
+using rb::test::ellipse;
 
 CreepParams params(double mu, double G = 8.2e10) {
   CreepParams p;

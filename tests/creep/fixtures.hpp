@@ -1,13 +1,31 @@
 #pragma once
+// What the creep law tests share: a Hertz patch with Kalker's coefficients, and the rows of
 // CONTACT's tractcurv example (tests/data/creep/contact_tractcurv.txt: a/b = 0.5, mu = 0.33, pure
-// s_x): its rows (series "exact", "fastsim", ...; creepage coefficient cksi, force fx / mu Q),
-// read by the creep law tests that compare with it.
+// s_x; series "exact", "fastsim", ...; creepage coefficient cksi, force fx / mu Q).
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "workbench/creep/kalker.hpp"
+#include "workbench/creep/polach.hpp"
+
 namespace rb::test {
+
+// The patch of semi-axes a (rolling direction), b [m] under normal load Q [N] with Kalker's
+// coefficients for a/b and Poisson's ratio nu.
+inline creep::ContactPatch ellipse(double a, double b, double Q, double nu = 0.28) {
+  const creep::KalkerCoefficients c = creep::kalkerCoefficients(a / b, nu);
+  creep::ContactPatch p;
+  p.Q = Q;
+  p.a = a;
+  p.b = b;
+  p.c11 = c.c11;
+  p.c22 = c.c22;
+  p.c23 = c.c23;
+  p.c33 = c.c33;
+  return p;
+}
 
 struct CurvePoint {
   std::string series;
