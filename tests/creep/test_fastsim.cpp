@@ -22,7 +22,6 @@ namespace {
 using namespace rb::creep;
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kNu = 0.28;
 
 using rb::test::ellipse;
 
