@@ -55,3 +55,12 @@ TEST(Range, ContainsAndText) {
   EXPECT_EQ(open.text(), "(0, 1)");
   EXPECT_EQ((rb::Range{0.0, std::numeric_limits<double>::infinity(), true}).text(), "(0, inf)");
 }
+
+TEST(Strings, PathPartsSplitADatasetPathAfterItsRoot) {
+  EXPECT_EQ(rb::pathParts("/bodies/ws1/y"), (std::vector<std::string>{"bodies", "ws1", "y"}));
+  EXPECT_EQ(rb::pathParts("/vehicles/front/contact/ws1/left/Q"),
+            (std::vector<std::string>{"vehicles", "front", "contact", "ws1", "left", "Q"}));
+  EXPECT_EQ(rb::pathParts("/time"), (std::vector<std::string>{"time"}));
+  EXPECT_EQ(rb::pathParts("/a//b/"), (std::vector<std::string>{"a", "", "b", ""}));
+  EXPECT_TRUE(rb::pathParts("").empty());
+}

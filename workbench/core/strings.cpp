@@ -73,6 +73,17 @@ std::string formatNumberExact(double v) {
   return buf;
 }
 
+std::vector<std::string> pathParts(std::string_view path) {
+  std::vector<std::string> out;
+  std::size_t at = 1;
+  while (at <= path.size()) {
+    const std::size_t next = std::min(path.find('/', at), path.size());
+    out.emplace_back(path.substr(at, next - at));
+    at = next + 1;
+  }
+  return out;
+}
+
 std::string csvField(std::string_view s) {
   const bool quote = s.find_first_of(",\"\n") != std::string_view::npos;
   std::string out;

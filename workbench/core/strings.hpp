@@ -15,6 +15,10 @@ int editDistance(std::string_view a, std::string_view b);
 // Close enough: distance <= max(1, word.size() / 3). Ties go to the earlier candidate.
 std::string closestMatch(std::string_view word, const std::vector<std::string>& candidates);
 
+// The parts of a slash-separated path after its first character (a result file's dataset path):
+// pathParts("/bodies/ws1/y") == {"bodies", "ws1", "y"}.
+std::vector<std::string> pathParts(std::string_view path);
+
 // Items separated by `sep`: join({"a", "b"}) == "a, b".
 std::string join(const std::vector<std::string>& items, std::string_view sep = ", ");
 

@@ -10,18 +10,6 @@
 namespace rb::run {
 namespace {
 
-// The parts of a dataset path: "/bodies/ws1/y" -> {"bodies", "ws1", "y"}.
-std::vector<std::string> pathParts(const std::string& path) {
-  std::vector<std::string> out;
-  std::size_t at = 1;
-  while (at <= path.size()) {
-    const std::size_t next = std::min(path.find('/', at), path.size());
-    out.push_back(path.substr(at, next - at));
-    at = next + 1;
-  }
-  return out;
-}
-
 // "'x' is not one of a, b (did you mean 'a'?)" for a name that is not among `names`.
 std::string notAmong(const std::string& what, const std::string& x,
                      const std::vector<std::string>& names) {

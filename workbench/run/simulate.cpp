@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "workbench/core/strings.hpp"
 #include "workbench/integrators/registry.hpp"
 
 namespace rb::run {
@@ -91,12 +92,7 @@ namespace {
 // The body a dataset path is about: /bodies/ws1/y, /contact/ws1/left/Q -> "ws1";
 // /vehicles/front/bodies/ws1/y -> "front.ws1"; "" for the run's own datasets.
 std::string bodyOfPath(const std::string& path) {
-  std::vector<std::string> parts;
-  for (std::size_t at = 1; at <= path.size();) {
-    const std::size_t next = std::min(path.find('/', at), path.size());
-    parts.push_back(path.substr(at, next - at));
-    at = next + 1;
-  }
+  std::vector<std::string> parts = pathParts(path);
   std::string vehicle;
   if (parts.size() > 2 && parts[0] == "vehicles") {
     vehicle = parts[1] + ".";
