@@ -6,7 +6,6 @@ import os
 from typing import Dict, List, Optional
 
 from .provenance import ROOT
-from .stress_checks import failure_summary
 from .docs_blocks import fmt, missing, num, read_csv, table
 
 
@@ -32,11 +31,10 @@ def hard_rows(build: str) -> List[dict]:
 
 
 def failure_reason(row: dict) -> str:
-    """The short reason of a failed run from its failure record (hard_cases.csv's failure_*
-    columns, the result's /stats)."""
-    if row.get("failure_kind"):
-        return failure_summary({k: row.get(k) for k in ("failure_kind", "failure_reason")})
-    return "?"
+    """The reason of a failed run in words, from its failure record (hard_cases.csv's
+    failure_text, written by `workbench check-result` from the engine's name tables; a record of
+    an older suite: the reason's or kind's name)."""
+    return row.get("failure_text") or row.get("failure_reason") or row.get("failure_kind") or "?"
 
 
 def hard_detail_block(build: str) -> str:

@@ -3,6 +3,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "workbench/core/names.hpp"
 #include "workbench/core/range.hpp"
@@ -34,6 +36,20 @@ TEST(Strings, FormatNumberExactReadsBack) {
   EXPECT_EQ(rb::formatNumberExact(0.1), "0.1");
   for (double v : {1.0 / 3.0, 2.0 / 7.0, 1e-300, 123456789.123})
     EXPECT_EQ(std::strtod(rb::formatNumberExact(v).c_str(), nullptr), v);
+}
+
+TEST(Strings, ParseCsvReadsWhatCsvFieldWrites) {
+  const std::string text = "a,b,c\r\n" + rb::csvField("x, y") + "," + rb::csvField("say \"hi\"") +
+                           ",\n\n\"two\nlines\",,3\n";
+  const auto rows = rb::parseCsv(text);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"a", "b", "c"}));
+  EXPECT_EQ(rows[1], (std::vector<std::string>{"x, y", "say \"hi\"", ""}));
+  EXPECT_EQ(rows[2], (std::vector<std::string>{"two\nlines", "", "3"}));
+  EXPECT_TRUE(rb::parseCsv("").empty());
+  // A last record without its line end, and an unterminated quote ends at the end of the text.
+  EXPECT_EQ(rb::parseCsv("1,2").at(0), (std::vector<std::string>{"1", "2"}));
+  EXPECT_EQ(rb::parseCsv("\"open,x").at(0), (std::vector<std::string>{"open,x"}));
 }
 
 TEST(Names, TableLookups) {

@@ -1,17 +1,17 @@
 #!/usr/bin/python3
-"""Hard-case stability suite (issue 7 item 4; docs/hard_cases.md).
+"""Hard-case stability suite (docs/hard_cases.md).
 
 Runs one hard case (scenarios/hard/*.lua) with each of its integrator/tolerance combinations
 through the real command line and checks every result:
 
 * exit code 0 (ok) or 2 (the documented clean failure, docs/integrators.md); 1 (bad input),
   3 (internal error), a signal (crash) or a timeout (hang) fail the test;
-* the result file exists (renamed from .tmp), /stats/status agrees with the exit code; on
-  failure the message names the failure time and distance, t_reached < t_end and the partial
-  time history ends at or before t_reached;
-* no NaN/Inf in any dataset or numeric attribute;
-* plausibility: wheelset |y|, wheel normal forces, flange forces and indentation, |Y/Q| within
-  the case's bounds;
+* the result file exists (renamed from .tmp) and passes `workbench check-result` (the checks of
+  `workbench stress`, workbench/stress/result_checks.hpp): /stats/status agrees with the exit
+  code; on failure the failure record names the failure time and distance, t_reached < t_end
+  and the partial time history ends at or before t_reached; no NaN/Inf in any dataset or numeric
+  attribute; plausibility: wheelset |y|, wheel normal forces, flange forces and indentation,
+  |Y/Q| within the case's bounds;
 * combinations marked expect="ok" must finish (the reference of each case: the test can fail);
   combinations marked expect="lift" must stop with the wheel-lift diagnostic (the model leaves
   its validity there: a constraint contact cannot lift a wheel, so the run may not go on);
@@ -37,7 +37,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "plots"))
 from railbench import provenance  # noqa: E402  (the commit each record row was run with, for docs/ stamps)
-from railbench.stress_checks import BOUNDS, check_file  # noqa: E402  (shared with workbench stress)
+import json  # noqa: E402
 
 # Fixed-step and adaptive settings used by the cases. Adaptive methods run with rtol = atol
 # (as the paper) and the paper's 1 ms maximum step (section 5.4). Every combination states its
@@ -93,8 +93,25 @@ def elastic(c):
     label, sets = c
     return (label, [s for s in sets if not s.startswith("contact.normal_forces")])
 
-# Plausibility bounds (BOUNDS) and the checks of a result file (check_file) are shared with
-# `workbench stress` (plots/railbench/stress_checks.py, docs/stress.md).
+
+
+def check_file(workbench, path, rc, bounds, t_end):
+    """`workbench check-result` on a result file: (row fields, problems, notes). `bounds`: the
+    case's changes of the plausibility bounds ({"yq": 2.0}); the checks and their defaults are
+    those of `workbench stress` (docs/stress.md)."""
+    cmd = [workbench, "check-result", path, "--exit-code", str(rc), "--t-end", repr(t_end or 0.0)]
+    for name, value in sorted(bounds.items()):
+        cmd += ["--bound", "%s=%r" % (name, value)]
+    p = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, timeout=600)
+    if p.returncode not in (0, 2):
+        raise RuntimeError((p.stderr or p.stdout).strip()[-300:])
+    fields = json.loads(p.stdout)
+    problems, notes = fields.pop("problems"), fields.pop("notes")
+    # null: a number the file does not give (NaN, as the record always wrote it; an absent
+    # failure time or distance stays empty).
+    empty = ("failure_t", "failure_s")
+    return {k: ("" if k in empty else float("nan")) if v is None else v
+            for k, v in fields.items()}, problems, notes
 
 CASES = {
     # --- short cases (default suite, label hard) ---
@@ -273,7 +290,8 @@ FIELDS = ["case", "combination", "expect", "rc", "status", "outcome", "verdict",
           "jacobian_evals", "max_abs_y_mm", "max_normal_kN", "min_normal_kN", "max_flange_kN",
           "max_normal_flange_kN", "flange_time_share",
           "max_indent_mm", "max_abs_yq", "ws1_y_pp_last_mm", "onset_t", "onset_speed", "problems", "notes",
-          "failure_kind", "failure_reason", "failure_body", "failure_t", "failure_s", "message",
+          "failure_kind", "failure_reason", "failure_body", "failure_t", "failure_s",
+          "failure_text", "message",
           "commit", "run_date"]
 
 
@@ -318,8 +336,7 @@ def print_table(rows):
 def run_case(args):
     case = CASES[args.case]
     os.makedirs(args.out_dir, exist_ok=True)
-    bounds = dict(BOUNDS)
-    bounds.update(case.get("bounds", {}))
+    bounds = case.get("bounds", {})
     rows = []
     failures = []
     env = dict(os.environ, RAILBENCH_ROOT=ROOT)
@@ -359,7 +376,7 @@ def run_case(args):
                 if glob.glob(out + ".tmp*"):
                     problems.append("stale temporary file beside the result")
                 try:
-                    fields, pr, notes = check_file(out, rc, bounds, t_end)
+                    fields, pr, notes = check_file(args.workbench, out, rc, bounds, t_end)
                     row.update(fields)
                     problems += pr
                     row["notes"] = "; ".join(notes)

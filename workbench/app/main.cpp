@@ -1,6 +1,6 @@
-// The `workbench` command line: run, check, assess, tables, study, precision, stress, effects,
-// modes, critical-speed, help scenario, --version. Never prompts; every problem is reported as
-// file:line: message with a non-zero exit code.
+// The `workbench` command line: run, check, check-result, assess, tables, study, precision, stress,
+// effects, modes, critical-speed, help scenario, --version. Never prompts; every problem is
+// reported as file:line: message with a non-zero exit code.
 //   exit 0: ok; 1: bad input (scenario, options; nothing was run); 2: the run failed (partial
 //   results kept), or its result could not be written (an earlier result is unchanged);
 //   3: internal error (a bug); 4: only the figures of a study, precision, stress or effects
@@ -23,6 +23,7 @@
 #include "workbench/precision/precision.hpp"
 #include "workbench/scenario/override_check.hpp"
 #include "workbench/scenario/schema.hpp"
+#include "workbench/stress/result_checks.hpp"
 #include "workbench/stress/stress.hpp"
 #include "workbench/study/runner.hpp"
 
@@ -116,6 +117,26 @@ int workbench(int argc, char** argv) {
   assess->add_option("--set", ao.overrides, "change an assessment key: run.assessment.KEY=VALUE")
       ->allow_extra_args(false);
 
+  std::string checkFile;
+  int checkExit = 0;
+  double checkEnd = 0.0;
+  std::vector<std::string> checkBounds;
+  auto* checkResult = app.add_subcommand(
+      "check-result",
+      "check a run's result file as stress and the hard-case suite do (consistent with the "
+      "run's exit code, no NaN/Inf, plausible); prints the findings as JSON; exit 0 when it "
+      "passes, 2 when it does not");
+  checkResult->add_option("file", checkFile, "result file (.h5)")->required();
+  checkResult->add_option("--exit-code", checkExit, "the run's exit code: 0 (ok) or 2 (failed)")
+      ->check(CLI::IsMember({0, 2}));
+  checkResult->add_option("--t-end", checkEnd, "the run's end time [s] (0: unknown)")
+      ->check(CLI::NonNegativeNumber);
+  checkResult
+      ->add_option("--bound", checkBounds,
+                   "change a plausibility bound: NAME=VALUE, NAME (default) one of " +
+                       rb::stress::boundsHelp())
+      ->allow_extra_args(false);
+
   std::string topic;
   std::string helpScenario;
   auto* help = app.add_subcommand("help", "reference documentation");
@@ -167,6 +188,16 @@ int workbench(int argc, char** argv) {
       return 0;
     }
     if (*assess) return rb::app::assessFile(ao);
+    if (*checkResult) {
+      std::error_code ec;
+      if (!fs::is_regular_file(checkFile, ec))
+        throw rb::InputError({checkFile, 0}, "no such result file");
+      rb::stress::Bounds bounds;
+      for (const auto& b : checkBounds) rb::stress::setBound(bounds, b, "--bound");
+      const auto c = rb::stress::checkResult(checkFile, checkExit, bounds, checkEnd);
+      std::cout << rb::stress::toJson(c);
+      return c.problems.empty() ? 0 : 2;
+    }
     if (*tables) {
       to.root = root;
       return rb::app::buildTables(to);

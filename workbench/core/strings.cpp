@@ -94,4 +94,49 @@ std::string csvField(std::string_view s) {
   return quote ? "\"" + out + "\"" : out;
 }
 
+std::vector<std::vector<std::string>> parseCsv(std::string_view text) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> row;
+  std::string field;
+  bool quoted = false;    // inside a quoted field
+  bool anything = false;  // the current record has a character (an empty line is no record)
+  const auto endRecord = [&] {
+    if (anything) {
+      row.push_back(std::move(field));
+      rows.push_back(std::move(row));
+    }
+    row.clear();
+    field.clear();
+    anything = false;
+  };
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char ch = text[i];
+    if (quoted) {
+      if (ch != '"') {
+        field += ch;
+      } else if (i + 1 < text.size() && text[i + 1] == '"') {
+        field += '"';
+        ++i;
+      } else {
+        quoted = false;
+      }
+      continue;
+    }
+    if (ch == '"') {
+      quoted = anything = true;
+    } else if (ch == ',') {
+      row.push_back(std::move(field));
+      field.clear();
+      anything = true;
+    } else if (ch == '\n') {
+      endRecord();
+    } else if (ch != '\r') {
+      field += ch;
+      anything = true;
+    }
+  }
+  endRecord();
+  return rows;
+}
+
 }  // namespace rb

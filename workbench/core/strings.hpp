@@ -26,6 +26,10 @@ std::string join(const std::vector<std::string>& items, std::string_view sep = "
 // written as spaces (one record per line, so line-based readers keep working).
 std::string csvField(std::string_view s);
 
+// The records of CSV text (RFC 4180: fields separated by commas, a quoted field may hold commas,
+// doubled quotes and line breaks; CRLF or LF line ends). Empty lines are left out.
+std::vector<std::vector<std::string>> parseCsv(std::string_view text);
+
 // A number as message and attribute text, printf "%.*g" with `significant` digits: the shortest
 // form a reader recognises (formatNumber(0.001) == "0.001", formatNumber(2.1e11) == "2.1e+11"),
 // identical to what an std::ostream with its default precision (6) writes.

@@ -3,6 +3,8 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
 
 #include "workbench/io/hdf5_init.hpp"
 
@@ -12,6 +14,57 @@ namespace {
 herr_t collectName(hid_t, const char* name, const H5L_info_t*, void* data) {
   static_cast<std::vector<std::string>*>(data)->emplace_back(name);
   return 0;
+}
+
+// Reads every element of an attribute or dataset as double; false when it cannot be read.
+bool allFinite(hid_t space, const std::function<herr_t(void*)>& read) {
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  if (n <= 0) return true;
+  std::vector<double> v(static_cast<std::size_t>(n));
+  if (read(v.data()) < 0) return true;  // unreadable: not this check's finding
+  return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+
+struct NonFiniteVisit {
+  std::vector<std::string>* out;
+  std::size_t limit;
+  std::string object;  // the object whose attributes are iterated
+};
+
+herr_t checkAttr(hid_t o, const char* name, const H5A_info_t*, void* data) {
+  auto* v = static_cast<NonFiniteVisit*>(data);
+  const hid_t a = H5Aopen(o, name, H5P_DEFAULT);
+  if (a < 0) return 0;
+  const hid_t t = H5Aget_type(a);
+  const hid_t sp = H5Aget_space(a);
+  if (t >= 0 && sp >= 0 && H5Tget_class(t) == H5T_FLOAT &&
+      !allFinite(sp, [&](void* buf) { return H5Aread(a, H5T_NATIVE_DOUBLE, buf); }))
+    v->out->push_back((v->object == "/" ? std::string() : v->object) + "@" + name);
+  if (sp >= 0) H5Sclose(sp);
+  if (t >= 0) H5Tclose(t);
+  H5Aclose(a);
+  return v->out->size() >= v->limit ? 1 : 0;
+}
+
+herr_t checkObject(hid_t root, const char* name, const H5O_info_t* info, void* data) {
+  auto* v = static_cast<NonFiniteVisit*>(data);
+  v->object = std::string(name) == "." ? "/" : "/" + std::string(name);
+  const hid_t o = H5Oopen(root, name, H5P_DEFAULT);
+  if (o < 0) return 0;
+  hsize_t idx = 0;
+  H5Aiterate2(o, H5_INDEX_NAME, H5_ITER_INC, &idx, checkAttr, v);
+  if (info->type == H5O_TYPE_DATASET && v->out->size() < v->limit) {
+    const hid_t t = H5Dget_type(o);
+    const hid_t sp = H5Dget_space(o);
+    if (t >= 0 && sp >= 0 && H5Tget_class(t) == H5T_FLOAT && !allFinite(sp, [&](void* buf) {
+          return H5Dread(o, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf);
+        }))
+      v->out->push_back(v->object);
+    if (sp >= 0) H5Sclose(sp);
+    if (t >= 0) H5Tclose(t);
+  }
+  H5Oclose(o);
+  return v->out->size() >= v->limit ? 1 : 0;
 }
 
 }  // namespace
@@ -112,6 +165,13 @@ std::optional<std::string> ResultReader::text(const std::string& object,
     if (t >= 0 && H5Tget_class(t) == H5T_STRING && !H5Tis_variable_str(t)) {
       std::string s(H5Tget_size(t), '\0');
       if (H5Aread(a, t, s.data()) >= 0) out = s.substr(0, s.find('\0'));
+    } else if (t >= 0 && H5Tget_class(t) == H5T_STRING) {
+      // Variable length (h5py writes a Python str so): one string, freed by the library.
+      char* p = nullptr;
+      if (H5Aread(a, t, static_cast<void*>(&p)) >= 0 && p != nullptr) {
+        out = std::string(p);
+        H5free_memory(p);
+      }
     }
     if (t >= 0) H5Tclose(t);
     if (a >= 0) H5Aclose(a);
@@ -129,6 +189,14 @@ std::vector<std::string> ResultReader::members(const std::string& group) const {
   H5Literate(g, H5_INDEX_NAME, H5_ITER_INC, &idx, collectName, &out);
   H5Gclose(g);
   std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<std::string> ResultReader::nonFinite(std::size_t limit) const {
+  std::vector<std::string> out;
+  if (file_ < 0 || limit == 0) return out;
+  NonFiniteVisit v{&out, limit, "/"};
+  H5Ovisit2(static_cast<hid_t>(file_), H5_INDEX_NAME, H5_ITER_INC, checkObject, &v, H5O_INFO_BASIC);
   return out;
 }
 

@@ -26,10 +26,14 @@ class ResultReader {
   std::optional<std::vector<std::string>> strings(const std::string& path) const;
   // A numeric attribute of a group or dataset; nullopt when absent.
   std::optional<double> number(const std::string& object, const std::string& name) const;
-  // A string attribute; nullopt when absent.
+  // A string attribute (fixed or variable length); nullopt when absent.
   std::optional<std::string> text(const std::string& object, const std::string& name) const;
   // Names of the members of a group (sorted), empty when it is not a group.
   std::vector<std::string> members(const std::string& group) const;
+  // The floating-point datasets and attributes that hold a NaN or an infinity, in the order of
+  // the file's name index ("/bodies/ws1/y", an attribute as "/stats@t_reached"), at most `limit`
+  // of them. Every element of every dataset is read: the cost is one pass over the file.
+  std::vector<std::string> nonFinite(std::size_t limit) const;
 
  private:
   std::int64_t file_ = -1;

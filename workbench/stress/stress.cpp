@@ -13,6 +13,8 @@
 #include "workbench/scenario/scenario.hpp"
 #include "workbench/scenario/study.hpp"
 #include "workbench/stress/plan.hpp"
+#include "workbench/stress/verdict.hpp"
+#include "workbench/study/jobs.hpp"
 #include "workbench/study/option_checks.hpp"
 #include "workbench/study/runner.hpp"
 
@@ -202,27 +204,53 @@ void checkSettings(const std::vector<std::string>& given, const std::string& opt
   d.throwIfAny();
 }
 
-// `python3 -m railbench stress DIR ...`: classification, stress.csv, the map. Its exit code.
-int classify(const StressOptions& o, const std::string& dir) {
-  std::vector<std::string> args = {"stress", dir, "--tolerance", formatNumber(o.tolerance, 12)};
-  if (!o.expect.empty()) args.insert(args.end(), {"--expect", o.expect});
-  if (const char* e = std::getenv("RAILBENCH_STUDY_PLOTS"); e && std::string(e) == "0")
-    args.emplace_back("--no-figure");
-  study::StudyOptions so;
-  so.root = o.root;
-  const int code = study::runRbplot(so, args);
-  if (code < 0) {
-    std::cerr << "stress: cannot classify the runs: python3 or " << o.root
-              << "/plots/railbench not found\n";
-    return 4;
+// The verdict on every run of the folder: stress.csv, the map as text, stress_map.png (drawn by
+// plots/rbplot stress from stress.csv) and the expectations. The command's exit code.
+int judge(const StressOptions& o, const std::string& dir,
+          const std::vector<stress::Expectation>& expectations) {
+  const std::vector<StressRow> rows = evaluate(dir, o.tolerance, Bounds{});
+  const fs::path csv = fs::path(dir) / "stress.csv";
+  study::detail::writeAtomically(csv, stressCsv(rows));
+  std::cout << textMap(rows, o.tolerance) << csv.string() << "\n";
+  int rc = 0;
+  const char* plots = std::getenv("RAILBENCH_STUDY_PLOTS");
+  if (!rows.empty() && !(plots != nullptr && std::string(plots) == "0")) {
+    study::StudyOptions so;
+    so.root = o.root;
+    const int code =
+        study::runRbplot(so, {"stress", dir, "--tolerance", formatNumber(o.tolerance, 12)});
+    if (code != 0) {
+      std::cerr << "stress: the figure failed"
+                << (code < 0 ? " (python3 or " + o.root + "/plots/railbench not found)" : "")
+                << "; the verdict above stands\n";
+      rc = 4;
+    }
   }
-  return code == 0 || code == 2 || code == 5 ? code : 4;
+  if (!rows.empty() && std::all_of(rows.begin(), rows.end(), [](const StressRow& r) {
+        return r.message.rfind("no result", 0) == 0;
+      })) {
+    std::cerr << "stress: no run left a result\n";
+    return 2;
+  }
+  const auto mismatches = checkExpectations(rows, expectations);
+  if (!mismatches.empty()) {
+    std::cout << "\n" << mismatches.size() << " outcomes differ from " << o.expect << ":\n";
+    for (const auto& m : mismatches) std::cout << "  " << m << "\n";
+    return 5;
+  }
+  if (!expectations.empty())
+    std::cout << "every outcome as expected (" << expectations.size() << " expectations, "
+              << o.expect << ")\n";
+  return rc;
 }
 
 }  // namespace
 
 int runStress(const StressOptions& o) {
   checkStressOptions(o);
+  // Read before anything runs: a malformed expectation file is bad input that costs no run.
+  const std::vector<Expectation> expectations =
+      o.expect.empty() ? std::vector<Expectation>{} : readExpectations(o.expect);
   std::vector<std::string> common = o.overrides;
   scenario::ScenarioSpec spec = loadCommandScenario(o, common);
   if (!spec.has_vehicle)
@@ -284,7 +312,7 @@ int runStress(const StressOptions& o) {
   // A failed run is a result here: runStudySpec's "no run ok" (2) does not end the command.
   const int rc = study::runStudySpec(e.study, so, {});
   if (rc == 1) return 1;
-  return classify(o, so.out);
+  return judge(o, so.out, expectations);
 }
 
 }  // namespace rb::stress

@@ -3,8 +3,9 @@
 // (docs/stress.md): does the scenario stay numerically stable when it is made harder? The
 // scenario is hardened along named axes (plan.hpp); every hardened case runs with a set of
 // integrator settings and with its own tight-tolerance reference, each run in its own process
-// (runStudySpec); plots/rbplot stress classifies every run (ok, inaccurate, failed cleanly, failed
-// badly), writes stress.csv and the stability map and checks an expectation file.
+// (runStudySpec); the verdict (verdict.hpp) classifies every run (ok, inaccurate, failed cleanly,
+// failed badly), writes stress.csv, prints the map and checks an expectation file; plots/rbplot
+// stress draws the map.
 #include <string>
 #include <vector>
 
