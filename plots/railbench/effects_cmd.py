@@ -12,7 +12,8 @@ scene's effects and their states). For every case:
             number follows wall time), their difference to the full scene, and the CPU time per
             evaluation (median over the repeats) beside it;
   change    max and RMS difference against the full scene of every wheelset's quantities
-            (study_precision._errors, on the full scene's output times);
+            (the engine's summary_errors.csv: workbench/study/reference_errors.hpp, on the
+            full scene's output times);
   check     the effect is on in the full scene's result and off in its case's result (the root
             attribute `effects`, /elements, /bodies/*/ax, the patch datasets, /assessment).
 Writes DIR/effects.csv and DIR/effects.png and prints the table.
@@ -35,7 +36,6 @@ from .common import parser, read_csv
 from .effects import callgrind_total, flush_instructions
 from .provenance import ROOT
 from .study_data import QUANTITY_TAGS, Case, StudyError, close_all, load_study
-from .study_precision import _errors
 
 PROG = "effects"
 
@@ -197,7 +197,9 @@ def case_rows(study, scene: List[dict], a) -> List[dict]:
                 row["instructions_per_eval"] = int(cg["instructions"]) / int(cg["rhs_evals"])
             row["note"] = (row["note"] + " " + cg["note"]).strip()
         # A failed run keeps its partial result: the change is then over the time both ran.
-        errs = _errors(c, base) if (base is not None and c.file and base.file) else None
+        # (the engine's error against the full scene: summary_errors.csv)
+        e = study.errors_of(c, "baseline") if base is not None else None
+        errs = e[1] if e is not None else None
         for q in quantities:
             tag = QUANTITY_TAGS[q]
             e = (errs or {}).get(q)

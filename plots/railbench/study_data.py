@@ -2,6 +2,7 @@
 of its cases."""
 from __future__ import annotations
 
+import math
 import os
 from dataclasses import dataclass, field
 from typing import Dict, List, Optional, Tuple
@@ -15,8 +16,6 @@ from .result import _names_attr
 
 
 # Overrides that change how a model is solved, not which model (work-precision matching).
-NUMERICAL_PREFIXES = ("solver.", "run.output.")
-NUMERICAL_KEYS = ("profiles.refined_tables", "contact.normal_forces")
 WHEELSET_QUANTITIES = (  # (label, group, dataset, scale to display unit, unit)
     ("lateral displacement y", "bodies", "y", 1e3, "mm"),
     ("yaw angle", "bodies", "yaw", 1e3, "mrad"),
@@ -190,12 +189,6 @@ class Case:
             parts.append(f"[{stem}]")  # another base scenario than most cases
         return " ".join(parts) or stem
 
-    def physical_key(self) -> Tuple:
-        """The model without numerical settings (work-precision reference matching)."""
-        keep = tuple(sorted((k, v) for k, v in self.overrides.items()
-                            if not k.startswith(NUMERICAL_PREFIXES) and k not in NUMERICAL_KEYS))
-        return (self.base, keep)
-
     def attr(self, name, default=None):
         return self._file_attrs().get(name, default)
 
@@ -205,9 +198,37 @@ class Study:
     outdir: str
     cases: List[Case]
     study_file: str = ""
+    # summary_errors.csv, the engine's error of every case against the case it is measured
+    # against (workbench/study/reference_errors.hpp): {(case id, against role): (reference id,
+    # {quantity label: (max, rms, unit)})}.
+    errors: Dict[Tuple[str, str], Tuple[str, Dict[str, Tuple[float, float, str]]]] = \
+        field(default_factory=dict)
 
     def by_role(self, role: str) -> List[Case]:
         return [c for c in self.cases if c.role == role]
+
+    def case(self, case_id: str) -> Optional[Case]:
+        return next((c for c in self.cases if c.id == case_id), None)
+
+    def errors_of(self, case: Case, against: str) -> Optional[Tuple[str, Dict]]:
+        """(reference id, {quantity label: (max, rms, unit)}) of `case` against the case of role
+        `against` it is measured against; None when it has none."""
+        return self.errors.get((case.id, against))
+
+
+def read_errors(outdir: str) -> Dict[Tuple[str, str], Tuple[str, Dict]]:
+    """summary_errors.csv (empty for a folder written before it existed)."""
+    path = os.path.join(outdir, "summary_errors.csv")
+    if not os.path.exists(path):
+        return {}
+    labels = {tag: label for label, tag in QUANTITY_TAGS.items()}
+    out: Dict[Tuple[str, str], Tuple[str, Dict]] = {}
+    for r in read_csv(path):
+        ref, errs = out.setdefault((r["case"], r["against"]), (r["reference"], {}))
+        mx = _num(r.get("max"))
+        if mx is not None and r["quantity"] in labels:
+            errs[labels[r["quantity"]]] = (mx, _num(r.get("rms"), math.nan), r["unit"])
+    return out
 
 
 def load_study(outdir: str) -> Study:
@@ -261,7 +282,7 @@ def load_study(outdir: str) -> Study:
                 study_file = _str(f.attrs.get("study_file", ""))
         except OSError:
             pass
-    return Study(outdir=outdir, cases=cases, study_file=study_file)
+    return Study(outdir=outdir, cases=cases, study_file=study_file, errors=read_errors(outdir))
 
 
 # --------------------------------------------------------------------------------------------

@@ -2,57 +2,22 @@
 effects."""
 from __future__ import annotations
 
-import math
 import re
-from typing import Dict, List, Optional, Tuple
+from typing import Dict, List, Tuple
 
 from matplotlib.patches import Patch
 import numpy as np
 
 from .style import A4_WIDTH_IN, FAIL_COLOR, plt, report_style
-from .study_data import Case, INTEGRATOR_COLORS, METHOD_MARKERS, QUANTITY_TAGS, Study, WHEELSET_QUANTITIES, compact, on_grid, series
+from .study_data import Case, INTEGRATOR_COLORS, METHOD_MARKERS, QUANTITY_TAGS, Study, WHEELSET_QUANTITIES, compact
 from .study_cost import _title
 
 
 # Work precision
 # --------------------------------------------------------------------------------------------
-def _errors(case: Case, ref: Case) -> Optional[Dict[str, Tuple[float, float, str]]]:
-    """{quantity: (max abs, rms, unit)} of case vs ref on the reference output times inside the
-    case's run (display units), over every wheelset (and wheel)."""
-    s, r = series(case), series(ref)
-    if s is None or r is None or len(r.t) < 2 or len(s.t) < 2:
-        return None
-    out = {}
-    for name, group, ds, scale, unit in WHEELSET_QUANTITIES:
-        sq, rq = dict(s.quantity(group, ds)), dict(r.quantity(group, ds))
-        mx, sq_sum, n = 0.0, 0.0, 0
-        for key, rv in rq.items():
-            if key not in sq:
-                continue
-            m, v = on_grid(r.t[:len(rv)], s.t, sq[key])
-            if not m.any():
-                continue
-            d = (v - rv[:len(m)][m]) * scale
-            # The rule of workbench precision: a non-finite value (diverged) is an infinite
-            # error, never left out.
-            if not np.all(np.isfinite(d)) or not np.all(np.isfinite(sq[key][:len(s.t)])):
-                d = np.array([math.inf])
-            mx = max(mx, float(np.max(np.abs(d))))
-            sq_sum += float(np.sum(d * d))
-            n += len(d)
-        if n:
-            out[name] = (mx, math.sqrt(sq_sum / n), unit)
-    return out
-
-
-def find_reference(study: Study, case: Case, role: str = "reference") -> Optional[Case]:
-    refs = [c for c in study.by_role(role) if c.file]
-    same = [c for c in refs if c.physical_key() == case.physical_key()]
-    return same[0] if same else None
-
-
 def work_precision_rows(study: Study, against: str = "reference") -> List[dict]:
-    """Error of every case against the reference case of the same model (role `against`):
+    """Error of every case against the reference case of the same model (role `against`), as the
+    engine computed it (summary_errors.csv, workbench/study/reference_errors.hpp):
     "reference" (total error: the reference runs on the refined tables) or
     "reference_same_tables" (integration error only: a reference on the cases' own tables).
     With against = "reference", special rows (column `kind`): "reference_check" (the
@@ -61,21 +26,23 @@ def work_precision_rows(study: Study, against: str = "reference") -> List[dict]:
     rows = []
     if not study.by_role(against):
         return rows
+    notes = {"reference_check": ("reference_check",
+                                 "reference_check vs reference (the reference's own error)"),
+             "reference_same_tables": ("table_error", "same-tables reference vs reference (the "
+                                                      "contact tables' error)")}
     for c in study.cases:
         if c.role == "reference" and against == "reference":
             targets = []
-            for role, kind, note in (
-                    ("reference_check", "reference_check",
-                     "reference_check vs reference (the reference's own error)"),
-                    ("reference_same_tables", "table_error",
-                     "same-tables reference vs reference (the contact tables' error)")):
-                other = find_reference(study, c, role)
-                if other is not None:
-                    targets.append((other, c, kind, note))
+            for role, (kind, note) in notes.items():
+                for other in study.by_role(role):
+                    e = study.errors_of(other, "reference")
+                    if e is not None and e[0] == c.id:
+                        targets.append((other, c, kind, note, e[1]))
         elif c.role.startswith("reference"):
             continue
         else:
-            ref = find_reference(study, c, against)
+            e = study.errors_of(c, against)
+            ref = study.case(e[0]) if e is not None else None
             if ref is None:
                 rows.append(dict(against=against, kind="case", case=c.id, label=c.label,
                                  model=c.model_key, integrator=c.integrator,
@@ -85,9 +52,8 @@ def work_precision_rows(study: Study, against: str = "reference") -> List[dict]:
                                  rhs_evals=int(c.counts["rhs_evals"]),
                                  note="no reference case with the same model"))
                 continue
-            targets = [(c, ref, "case", "")]
-        for case, ref, kind, note in targets:
-            errs = _errors(case, ref) or {}
+            targets = [(c, ref, "case", "", e[1])]
+        for case, ref, kind, note, errs in targets:
             row = dict(against=against, kind=kind, case=case.id, label=case.label,
                        model=case.model_key, integrator=case.integrator,
                        solver=case.solver_key, setting=_setting(case), order=_order(case),

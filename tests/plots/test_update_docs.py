@@ -245,6 +245,7 @@ def stamps(docs, out):
                 problems="", notes="", commit="abc1234+dirty", run_date="2026-12-01",
                 failure_kind="model", failure_reason="table_range", failure_body="ws1",
                 failure_t="1.869", failure_s="37.4",
+                failure_text="the contact point left its table at t = 1.869 s, s = 37.4 m",
                 message="rk4: failed at t = 1.869: the right-hand side kept failing; the LUT "
                         "entry (y = -50 mm) left the table [-18, 18] x [-5, 5] mm")
     write_csv(os.path.join(build, "hard", "hard_cases.csv"), [
@@ -287,7 +288,7 @@ def stamps(docs, out):
           "the hard-case blocks are stamped from the record's commit column")
     check("`abc1234`" in block(s, "hard_cases").split("\n")[0],
           "the hard-case table of studies.md is stamped too")
-    check("the contact left its table" in hd and "1870 (6)" in hd,
+    check("the contact point left its table at t = 1.869 s" in hd and "1870 (6)" in hd,
           "hard-case detail: failure reason, steps (rejected)")
     check("onset none" in hd and "ws1 p-p last s 7.8 mm" in hd and "onset 15" not in hd,
           "hunting measures only for the hunting cases")

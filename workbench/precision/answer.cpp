@@ -300,9 +300,11 @@ std::string recommendationCsv(const Answer& a) {
 
 namespace {
 
-// A number of the tables, empty when it is not known.
+// A number of the tables to the last bit (the printed answer rounds; a table is read back),
+// "inf" for a diverged run, empty when it is not known.
 std::string cell(bool have, double v) {
-  return have ? fmt(v) : std::string();
+  if (!have || std::isnan(v)) return {};
+  return std::isinf(v) ? std::string("inf") : formatNumberExact(v);
 }
 
 // The columns of precision.csv and their values per case, one definition for the CSV and the

@@ -14,6 +14,7 @@
 #include "workbench/io/result_reader.hpp"
 #include "workbench/scenario/override_check.hpp"
 #include "workbench/study/metrics.hpp"
+#include "workbench/study/reference_errors.hpp"
 #include "workbench/vehicle/stage_clock.hpp"
 
 namespace fs = std::filesystem;
@@ -369,6 +370,9 @@ SummaryCounts writeSummaries(const scenario::StudySpec& st, const std::vector<Jo
   writeAtomically(dir / "summary.csv", sm.csv.str());
   writeAtomically(dir / "summary_cases.csv", casesCsv(st, sm.cases));
   writeSummaryH5(dir / "summary.h5", st, all, sm);
+  std::vector<CaseResult> results;
+  for (const auto& c : st.cases) results.push_back({&c, sm.cases[c.id].file});
+  writeAtomically(dir / "summary_errors.csv", referenceErrorsCsv(results));
   // Labels are for the figures: a base scenario that cannot be read again leaves them raw.
   try {
     writeAtomically(dir / "study_labels.csv", labelsCsv(st, all));
