@@ -119,3 +119,17 @@ TEST(SignalMetrics, MaxAbsDifference) {
   const std::vector<double> xe = {0, 1.5, 3.5}, ye = {0, 1.5, 9};
   EXPECT_EQ(m::maxAbsDifference(x, y, xe, ye, {}).value, 0.0);
 }
+
+TEST(SignalMetrics, DivergedRunIsAnInfiniteError) {
+  // The rule of every comparison of runs: a NaN in the case (or the reference) is not left out
+  // and not "no value", it is an infinite error, with its place in the note.
+  const std::vector<double> x = {0, 1, 2, 3}, y = {0, 1, 2, 3};
+  std::vector<double> diverged = y;
+  diverged[2] = std::nan("");
+  for (const auto& v : {m::maxAbsDifference(x, diverged, x, y, {}),
+                        m::maxAbsDifference(x, y, x, diverged, {})}) {
+    EXPECT_TRUE(v.ok());
+    EXPECT_TRUE(std::isinf(v.value));
+    EXPECT_NE(v.note.find("nan at 2"), std::string::npos) << v.note;
+  }
+}

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "workbench/core/strings.hpp"
 
@@ -171,10 +172,18 @@ Value maxAbsDifference(const std::vector<double>& x, const std::vector<double>& 
   std::size_t first = 0, last = 0;
   std::string why;
   if (!windowRange(xr, yr.size(), w, first, last, why)) return Value::fail("reference: " + why);
-  if (std::string bad = nonFinite(xr, yr, first, last); !bad.empty())
-    return Value::fail("reference: " + bad);
   if (x.size() != y.size() || x.empty()) return Value::fail("the case's signal has no samples");
-  if (std::string bad = nonFinite(x, y, 0, x.size()); !bad.empty()) return Value::fail(bad);
+  // The rule of every comparison of runs (study/run_error.hpp): a non-finite value of either
+  // signal (a diverged run) is an infinite error, never a value left out or no value at all.
+  std::string bad = nonFinite(xr, yr, first, last);
+  if (!bad.empty()) bad = "reference: " + bad;
+  if (bad.empty()) bad = nonFinite(x, y, 0, x.size());
+  if (!bad.empty()) {
+    Value v;
+    v.value = std::numeric_limits<double>::infinity();
+    v.note = bad + ": a diverged run, an infinite error";
+    return v;
+  }
   // Reference samples beyond the case's range by less than one of its sample spacings are left
   // out: two runs sampled in time end a fraction of a spacing apart along the track.
   const double slack = x.size() > 1 ? std::fabs(x[x.size() - 1] - x[x.size() - 2]) : 0.0;

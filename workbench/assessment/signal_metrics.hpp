@@ -65,7 +65,9 @@ bool interpolate(const std::vector<double>& x, const std::vector<double>& y, dou
 
 // max |y(xr) - yr| over the reference samples xr inside the window, y interpolated onto them.
 // Reference samples beyond the case's range by less than one of its sample spacings are left out;
-// further out, the difference is refused (no extrapolation).
+// further out, the difference is refused (no extrapolation). A non-finite value of the case's
+// signal or of the reference's inside the window is an infinite error with a note (the rule of
+// study/run_error.hpp).
 Value maxAbsDifference(const std::vector<double>& x, const std::vector<double>& y,
                        const std::vector<double>& xr, const std::vector<double>& yr,
                        const Window& w);

@@ -118,8 +118,10 @@ RunState noResult(const Job& j, Summary& sm) {
   return {"error", last.empty() ? "no result" : last.substr(0, 500)};
 }
 
-// A metric value to the last bit (round trip), "" when it could not be computed.
+// A metric value to the last bit (round trip), "inf" for the error of a diverged run, "" when it
+// could not be computed.
 std::string exactField(double v) {
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
   if (!std::isfinite(v)) return {};
   return formatNumber(v, 17);
 }
