@@ -126,8 +126,8 @@ TEST(SignalMetrics, DivergedRunIsAnInfiniteError) {
   const std::vector<double> x = {0, 1, 2, 3}, y = {0, 1, 2, 3};
   std::vector<double> diverged = y;
   diverged[2] = std::nan("");
-  for (const auto& v : {m::maxAbsDifference(x, diverged, x, y, {}),
-                        m::maxAbsDifference(x, y, x, diverged, {})}) {
+  for (const auto& v :
+       {m::maxAbsDifference(x, diverged, x, y, {}), m::maxAbsDifference(x, y, x, diverged, {})}) {
     EXPECT_TRUE(v.ok());
     EXPECT_TRUE(std::isinf(v.value));
     EXPECT_NE(v.note.find("nan at 2"), std::string::npos) << v.note;

@@ -7,6 +7,7 @@
 #include <optional>
 #include <utility>
 
+#include "workbench/core/strings.hpp"
 #include "workbench/integrators/dense_lu.hpp"
 #include "workbench/integrators/fd_jacobian.hpp"
 #include "workbench/integrators/serial_vector_ops.hpp"
@@ -25,8 +26,8 @@ std::string reasonFor(int flag, long max_steps, double tout, bool& rhs_related) 
   switch (flag) {
     case CV_TOO_MUCH_WORK:
       return "too much work: " + std::to_string(max_steps) +
-             " internal steps in one output interval without reaching t = " + detail::num(tout) +
-             " (raise solver.max_steps)";
+             " internal steps in one output interval without reaching t = " +
+             formatNumber(tout, 10) + " (raise solver.max_steps)";
     case CV_TOO_MUCH_ACC:
       return "the tolerances are too small for the machine precision";
     case CV_ERR_FAILURE:
@@ -182,7 +183,7 @@ RunResult BdfIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::VectorXd
 
   if (!observer(t0, y0)) {
     res.ok = res.stopped_by_observer = true;
-    res.message = "bdf: stopped by the observer at t = " + detail::num(t0);
+    res.message = "bdf: stopped by the observer at t = " + formatNumber(t0, 10);
     return res;
   }
   for (double tout : output_times) {
@@ -217,7 +218,7 @@ RunResult BdfIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::VectorXd
     res.t_reached = tout;
     if (!observer(tout, yout)) {
       res.ok = res.stopped_by_observer = true;
-      res.message = "bdf: stopped by the observer at t = " + detail::num(tout);
+      res.message = "bdf: stopped by the observer at t = " + formatNumber(tout, 10);
       return res;
     }
     if (progress) progress(tout, res.stats);

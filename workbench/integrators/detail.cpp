@@ -1,16 +1,11 @@
 #include "workbench/integrators/detail.hpp"
+#include "workbench/core/strings.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <ctime>
 
 namespace rb::integ::detail {
-
-std::string num(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
 
 std::vector<int> nonFiniteComponents(const double* v, long n) {
   std::vector<int> out;
@@ -32,7 +27,7 @@ std::string componentList(const std::vector<int>& comps, const NameFn& name) {
 
 std::string RhsRecord::describeCode() const {
   std::string s = what + " returned " + std::to_string(code) +
-                  (code > 0 ? " (recoverable)" : " (fatal)") + " at t = " + num(t);
+                  (code > 0 ? " (recoverable)" : " (fatal)") + " at t = " + formatNumber(t, 10);
   if (!model_error.empty()) s += ": " + model_error;
   return s;
 }
@@ -40,7 +35,7 @@ std::string RhsRecord::describeCode() const {
 std::string RhsRecord::describeNonFinite(const NameFn& name) const {
   std::string s = "NaN/Inf in the " + nonfinite_where;
   if (!nonfinite_comps.empty()) s += " of " + componentList(nonfinite_comps, name);
-  return s + " at t = " + num(nonfinite_t);
+  return s + " at t = " + formatNumber(nonfinite_t, 10);
 }
 
 double cpuSeconds() {

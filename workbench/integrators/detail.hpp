@@ -12,9 +12,6 @@
 
 namespace rb::integ::detail {
 
-// Times and numbers in messages: "%.10g".
-std::string num(double v);
-
 // True when every v[i] is finite: no exponent field is all ones. Integer OR-reduction without
 // branches, so the compiler vectorises it (a floating-point sum would be a serial chain).
 inline bool allFinite(const double* v, long n) {

@@ -1,5 +1,6 @@
 #include <arkode/arkode_erkstep.h>
 
+#include "workbench/core/strings.hpp"
 #include "workbench/integrators/sundials_common.hpp"
 #include "workbench/integrators/sundials_integrators.hpp"
 
@@ -123,7 +124,7 @@ RunResult Dopri5Integrator::runOde(OdeSystem& sys, double t0, const Eigen::Vecto
 
   if (!observer(t0, y0)) {
     res.ok = res.stopped_by_observer = true;
-    res.message = "dopri5: stopped by the observer at t = " + detail::num(t0);
+    res.message = "dopri5: stopped by the observer at t = " + formatNumber(t0, 10);
     return res;
   }
   double tn = t0;
@@ -137,7 +138,7 @@ RunResult Dopri5Integrator::runOde(OdeSystem& sys, double t0, const Eigen::Vecto
       const int flag = ERKStepGetDky(mem, output_times[k], 0, ytmp.get());
       if (flag != ARK_SUCCESS) {
         detail::FailureReport f;
-        f.reason = "dense output at t = " + detail::num(output_times[k]) + " failed";
+        f.reason = "dense output at t = " + formatNumber(output_times[k], 10) + " failed";
         f.flag_name = flagName(flag);
         return fail(f, false);
       }
@@ -146,7 +147,7 @@ RunResult Dopri5Integrator::runOde(OdeSystem& sys, double t0, const Eigen::Vecto
       res.t_reached = output_times[k];
       if (!observer(output_times[k], yout)) {
         res.ok = res.stopped_by_observer = true;
-        res.message = "dopri5: stopped by the observer at t = " + detail::num(res.t_reached);
+        res.message = "dopri5: stopped by the observer at t = " + formatNumber(res.t_reached, 10);
         return res;
       }
       if (progress) progress(output_times[k], res.stats);
@@ -160,7 +161,7 @@ RunResult Dopri5Integrator::runOde(OdeSystem& sys, double t0, const Eigen::Vecto
       detail::FailureReport f;
       f.reason = "too much work: " + std::to_string(max_steps) +
                  " internal steps in one output interval without reaching t = " +
-                 detail::num(output_times[k]) +
+                 formatNumber(output_times[k], 10) +
                  " (raise solver.max_steps; if the problem is stiff use bdf)";
       f.flag_name = "ARK_TOO_MUCH_WORK";
       return fail(f, true);

@@ -1,4 +1,5 @@
 #include "workbench/integrators/fixed_step.hpp"
+#include "workbench/core/strings.hpp"
 
 #include <cmath>
 #include <limits>
@@ -236,14 +237,14 @@ void FixedStepIntegrator::expAbmCorrect(double h, int slot, Eigen::VectorXd& yne
 }
 
 std::string FixedStepIntegrator::failureMessage(Status s, double t_n) const {
-  std::string m = std::string(name()) + ": failed at t = " + detail::num(t_n) + ": ";
+  std::string m = std::string(name()) + ": failed at t = " + formatNumber(t_n, 10) + ": ";
   const auto names = [this](int i) { return sys_->componentName(i); };
   switch (s) {
     case Status::NonFinite:
       return m + rec_.describeNonFinite(names);
     case Status::Recoverable:
       return m + "the right-hand side kept failing recoverably down to the smallest substep " +
-             detail::num(spec().step / double(1 << kMaxSplitDepth)) + " s (step / " +
+             formatNumber(spec().step / double(1 << kMaxSplitDepth), 10) + " s (step / " +
              std::to_string(1 << kMaxSplitDepth) + "); last failure: " + rec_.describeCode();
     case Status::Fatal:
       return m + rec_.describeCode();
@@ -285,13 +286,13 @@ RunResult FixedStepIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::Ve
       prev = nk;
     }
     if (off_grid > 0)
-      throw InputError(
-          spec().loc, "solver.step: output time " + detail::num(first_off) + " s is not on the " +
-                          std::string(name()) + " step grid t0 + k * " + detail::num(h) +
-                          " s (t0 = " + detail::num(t0) + "; " + std::to_string(off_grid) + " of " +
-                          std::to_string(output_times.size()) +
-                          " output times are off the grid): choose an output interval that "
-                          "is a multiple of the step");
+      throw InputError(spec().loc,
+                       "solver.step: output time " + formatNumber(first_off, 10) +
+                           " s is not on the " + std::string(name()) + " step grid t0 + k * " +
+                           formatNumber(h, 10) + " s (t0 = " + formatNumber(t0, 10) + "; " +
+                           std::to_string(off_grid) + " of " + std::to_string(output_times.size()) +
+                           " output times are off the grid): choose an output interval that "
+                           "is a multiple of the step");
   }
 
   sys_ = &sys;
@@ -326,7 +327,7 @@ RunResult FixedStepIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::Ve
   };
   if (!observer(t0, y_)) {
     res.stopped_by_observer = true;
-    res.message = std::string(name()) + ": stopped by the observer at t = " + detail::num(t0);
+    res.message = std::string(name()) + ": stopped by the observer at t = " + formatNumber(t0, 10);
     return finish(true);
   }
   long n = 0;
@@ -342,8 +343,8 @@ RunResult FixedStepIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::Ve
     res.t_reached = output_times[k];
     if (!observer(output_times[k], y_)) {
       res.stopped_by_observer = true;
-      res.message =
-          std::string(name()) + ": stopped by the observer at t = " + detail::num(res.t_reached);
+      res.message = std::string(name()) +
+                    ": stopped by the observer at t = " + formatNumber(res.t_reached, 10);
       return finish(true);
     }
     if (progress) progress(output_times[k], stats_);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <utility>
 
+#include "workbench/core/strings.hpp"
 #include "workbench/integrators/dense_lu.hpp"
 #include "workbench/integrators/fd_jacobian.hpp"
 #include "workbench/integrators/serial_vector_ops.hpp"
@@ -203,8 +204,8 @@ std::string reasonFor(int flag, long max_steps, double tout, bool& rhs_related) 
   switch (flag) {
     case IDA_TOO_MUCH_WORK:
       return "too much work: " + std::to_string(max_steps) +
-             " internal steps in one output interval without reaching t = " + detail::num(tout) +
-             " (raise solver.max_steps)";
+             " internal steps in one output interval without reaching t = " +
+             formatNumber(tout, 10) + " (raise solver.max_steps)";
     case IDA_TOO_MUCH_ACC:
       return "the tolerances are too small for the machine precision";
     case IDA_ERR_FAIL:
@@ -334,7 +335,7 @@ RunResult runIda(std::string_view method, const SolverSpec& sp, ResidualModel& m
   yout = detail::map(yy.get(), n);
   if (!observer(t0, yout)) {
     res.ok = res.stopped_by_observer = true;
-    res.message = std::string(method) + ": stopped by the observer at t = " + detail::num(t0);
+    res.message = std::string(method) + ": stopped by the observer at t = " + formatNumber(t0, 10);
     return res;
   }
   for (double tout : output_times) {
@@ -352,7 +353,8 @@ RunResult runIda(std::string_view method, const SolverSpec& sp, ResidualModel& m
     res.t_reached = tout;
     if (!observer(tout, yout)) {
       res.ok = res.stopped_by_observer = true;
-      res.message = std::string(method) + ": stopped by the observer at t = " + detail::num(tout);
+      res.message =
+          std::string(method) + ": stopped by the observer at t = " + formatNumber(tout, 10);
       return res;
     }
     if (progress) progress(tout, res.stats);
@@ -380,14 +382,14 @@ RunResult IdaIntegrator::runOde(OdeSystem& sys, double t0, const Eigen::VectorXd
     detail::RhsRecord rec;
     if (rc != 0) {
       rec.recordCode(rc, t0, "right-hand side", sys.lastError(), sys.lastFailure());
-      res.message = "ida: failed at t = " + detail::num(t0) + ": " + rec.describeCode();
+      res.message = "ida: failed at t = " + formatNumber(t0, 10) + ": " + rec.describeCode();
       res.failure = FailureKind::Model;
       res.cause = rec.model_failure;
     } else {
       res.failure = FailureKind::NonFinite;
       rec.recordNonFinite(t0, "derivative", yp0.data(), yp0.size());
       res.offending_components = rec.nonfinite_comps;
-      res.message = "ida: failed at t = " + detail::num(t0) + ": " +
+      res.message = "ida: failed at t = " + formatNumber(t0, 10) + ": " +
                     rec.describeNonFinite([&sys](int i) { return sys.componentName(i); });
     }
     return res;

@@ -1,6 +1,7 @@
 #include <cmath>
 
 #include "workbench/core/error.hpp"
+#include "workbench/core/strings.hpp"
 #include "workbench/integrators/detail.hpp"
 #include "workbench/integrators/integrator.hpp"
 
@@ -58,10 +59,10 @@ bool nonFiniteStart(const Sys& sys, const Integrator& integ, double t0, const Ei
   res.failure = FailureKind::NonFinite;
   res.t_reached = res.t_fail = t0;
   res.offending_components = detail::nonFiniteComponents(y.data(), y.size());
-  res.message = std::string(integ.name()) + ": failed at t = " + detail::num(t0) + ": NaN/Inf in " +
-                what + " " + detail::componentList(res.offending_components, [&sys](int i) {
-                  return sys.componentName(i);
-                });
+  res.message = std::string(integ.name()) + ": failed at t = " + formatNumber(t0, 10) +
+                ": NaN/Inf in " + what + " " +
+                detail::componentList(res.offending_components,
+                                      [&sys](int i) { return sys.componentName(i); });
   return true;
 }
 

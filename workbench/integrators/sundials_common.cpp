@@ -1,4 +1,5 @@
 #include "workbench/integrators/sundials_common.hpp"
+#include "workbench/core/strings.hpp"
 
 #include <sunmatrix/sunmatrix_dense.h>
 
@@ -135,7 +136,7 @@ FailureKind flagKind(const FailureReport& f, const RhsRecord& rec) {
 
 void reportFailure(const FailureReport& f, const RhsRecord& rec, const NameFn& name,
                    RunResult& res) {
-  std::string m = f.method + ": failed at t = " + num(f.t_reached) + ": ";
+  std::string m = f.method + ": failed at t = " + formatNumber(f.t_reached, 10) + ": ";
   const double tol = 1e-12 * std::max(1.0, std::abs(f.t_reached));
   const bool blame_nonfinite = rec.nonfinite && rec.nonfinite_t >= f.t_reached - tol;
   res.failure = blame_nonfinite ? FailureKind::NonFinite : flagKind(f, rec);
@@ -156,7 +157,8 @@ void reportFailure(const FailureReport& f, const RhsRecord& rec, const NameFn& n
     m += "; largest weighted local errors: ";
     for (std::size_t i = 0; i < f.weighted_errors.size(); ++i) {
       if (i > 0) m += ", ";
-      m += name(f.weighted_errors[i].first) + " (" + num(f.weighted_errors[i].second) + ")";
+      m += name(f.weighted_errors[i].first) + " (" + formatNumber(f.weighted_errors[i].second, 10) +
+           ")";
     }
     for (const auto& [i, v] : f.weighted_errors) offending.push_back(i);
   }
@@ -175,8 +177,8 @@ bool setupFailed(RunResult& res, std::string_view method, double t0, const char*
   res.ok = false;
   res.failure = FailureKind::Setup;
   res.t_reached = res.t_fail = t0;
-  res.message = std::string(method) + ": failed at t = " + num(t0) + ": solver setup " + call +
-                " returned " + flag_name;
+  res.message = std::string(method) + ": failed at t = " + formatNumber(t0, 10) +
+                ": solver setup " + call + " returned " + flag_name;
   if (!msgs.last_error.empty()) res.message += "; SUNDIALS: " + msgs.last_error;
   return false;
 }

@@ -15,7 +15,6 @@
 
 namespace rb::track {
 
-using detail::num;
 
 const char* channelName(Channel c) {
   switch (c) {
@@ -293,19 +292,19 @@ class MeasuredCsvReader {
     if (!parseRow(fields, lineNo, s, v)) return;
     IrregularityTable& t = out_.table;
     if (!(std::abs(s) <= kMaxTrackLength)) {
-      report(lineNo,
-             "s = " + num(s) + " m is beyond the longest track (" + num(kMaxTrackLength) + " m)");
+      report(lineNo, "s = " + formatNumberExact(s) + " m is beyond the longest track (" +
+                         formatNumberExact(kMaxTrackLength) + " m)");
       return;
     }
     if (!t.s.empty() && !(s > t.s.back())) {
-      report(lineNo, "s = " + num(s) +
-                         " m must be greater than the previous s = " + num(t.s.back()) + " m");
+      report(lineNo, "s = " + formatNumberExact(s) + " m must be greater than the previous s = " +
+                         formatNumberExact(t.s.back()) + " m");
       return;
     }
     noteImplausible(v, lineNo);
     if (static_cast<double>(t.s.size()) >= options_.max_rows) {
       if (!too_many_) {
-        report(lineNo, "more than " + num(options_.max_rows) +
+        report(lineNo, "more than " + formatNumberExact(options_.max_rows) +
                            " data rows (track.max_points); raise track.max_points to read it");
       }
       too_many_ = true;
@@ -468,9 +467,11 @@ class MeasuredCsvReader {
       const Implausible& im = implausible_[c];
       if (im.count == 0) continue;
       const std::string name = channelName(static_cast<Channel>(c));
-      std::string msg = name + " = " + num(im.first / factor_) + " " + unitName(options_.unit);
-      if (options_.unit == CsvUnit::Millimetre) msg += " (" + num(im.first) + " m)";
-      msg += " is larger than a track irregularity can be (" + num(kMaxIrregularity) + " m)";
+      std::string msg =
+          name + " = " + formatNumberExact(im.first / factor_) + " " + unitName(options_.unit);
+      if (options_.unit == CsvUnit::Millimetre) msg += " (" + formatNumberExact(im.first) + " m)";
+      msg += " is larger than a track irregularity can be (" + formatNumberExact(kMaxIrregularity) +
+             " m)";
       if (im.count > 1) msg += " here and on " + std::to_string(im.count - 1) + " more rows";
       if (options_.unit == CsvUnit::Metre) {
         msg += "; is the file in millimetres? Declare it: measured { unit = \"mm\" }";

@@ -13,7 +13,6 @@
 
 namespace rb::track {
 
-using detail::num;
 
 namespace {
 
@@ -67,8 +66,8 @@ void checkSynthesis(const TrackSpec& spec, double length, Diagnostics& d) {
   auto ierr = [&](const std::string& msg) { d.add(ir.loc, "track.irregularities: " + msg); };
   const double knots = knotCount(length, ir.step);
   if (knots > spec.max_points) {
-    ierr(num(length) + " m at step " + num(ir.step) + " m needs " + count(knots) +
-         " spline knots, more than track.max_points = " + count(spec.max_points) +
+    ierr(formatNumberExact(length) + " m at step " + formatNumberExact(ir.step) + " m needs " +
+         count(knots) + " spline knots, more than track.max_points = " + count(spec.max_points) +
          "; use a coarser step, or raise track.max_points");
     return;
   }
@@ -92,7 +91,8 @@ void checkSynthesis(const TrackSpec& spec, double length, Diagnostics& d) {
     if (!(rms <= kMaxIrregularity)) {
       ierr(std::string(channelName(static_cast<Channel>(c))) + ": the synthesised irregularity " +
            "has an RMS of " + formatNumber(rms, 4) + " m, more than a track irregularity can be (" +
-           num(kMaxIrregularity) + " m); check the PSD (one-sided, in m^2/(rad/m)) and scale");
+           formatNumberExact(kMaxIrregularity) +
+           " m); check the PSD (one-sided, in m^2/(rad/m)) and scale");
     }
   }
 }
@@ -111,21 +111,23 @@ void checkCoverage(const TrackSpec& spec, const MeasuredTable& m, double length,
   const std::string file = detail::displayPath(ir.csv_path);
   if (ir.beyond == Beyond::Error) {
     if (early) {
-      d.add(ir.loc, "track.irregularities: " + file + " starts at s = " + num(s0) + " m (line " +
-                        std::to_string(m.first_line) +
+      d.add(ir.loc, "track.irregularities: " + file + " starts at s = " + formatNumberExact(s0) +
+                        " m (line " + std::to_string(m.first_line) +
                         "), after the track start s = 0 m; give rows from s = 0, or beyond = "
                         "\"zero\" for a perfect track where the file does not reach");
     }
     if (late) {
-      d.add(ir.loc, "track.irregularities: the track is " + num(length) + " m long but " + file +
-                        " ends at s = " + num(s1) + " m (line " + std::to_string(m.last_line) +
+      d.add(ir.loc, "track.irregularities: the track is " + formatNumberExact(length) +
+                        " m long but " + file + " ends at s = " + formatNumberExact(s1) +
+                        " m (line " + std::to_string(m.last_line) +
                         "); give a file that covers the track, or beyond = \"zero\" for a "
                         "perfect track beyond the file");
     }
     return;
   }
-  warnings.push_back({ir.loc, "track.irregularities: " + file + " covers s = " + num(s0) + " .. " +
-                                  num(s1) + " m of the " + num(length) +
+  warnings.push_back({ir.loc, "track.irregularities: " + file +
+                                  " covers s = " + formatNumberExact(s0) + " .. " +
+                                  formatNumberExact(s1) + " m of the " + formatNumberExact(length) +
                                   " m track; the track is perfect (zero irregularities) beyond "
                                   "it (beyond = \"zero\")"});
 }
@@ -134,14 +136,17 @@ void checkCoverage(const TrackSpec& spec, const MeasuredTable& m, double length,
 void checkTrackFields(const TrackSpec& spec, bool maxOk, bool baseOk, Diagnostics& d) {
   const SourceLoc& tl = spec.loc;
   if (spec.segments.empty()) d.add(tl, "track.segments: at least one segment is required");
-  if (!(spec.step > 0.0)) d.add(tl, "track.step must be > 0 m, got " + num(spec.step));
-  if (!maxOk) d.add(tl, "track.max_points must be >= 2, got " + num(spec.max_points));
-  if (!baseOk) d.add(tl, "track.cant_base must be > 0 m, got " + num(spec.cant_base));
-  if (!(spec.gauge > 0.0)) d.add(tl, "track.gauge must be > 0 m, got " + num(spec.gauge));
-  if (!(spec.rail_lr > 0.0)) d.add(tl, "track.rail_lr must be > 0 m, got " + num(spec.rail_lr));
+  if (!(spec.step > 0.0))
+    d.add(tl, "track.step must be > 0 m, got " + formatNumberExact(spec.step));
+  if (!maxOk) d.add(tl, "track.max_points must be >= 2, got " + formatNumberExact(spec.max_points));
+  if (!baseOk) d.add(tl, "track.cant_base must be > 0 m, got " + formatNumberExact(spec.cant_base));
+  if (!(spec.gauge > 0.0))
+    d.add(tl, "track.gauge must be > 0 m, got " + formatNumberExact(spec.gauge));
+  if (!(spec.rail_lr > 0.0))
+    d.add(tl, "track.rail_lr must be > 0 m, got " + formatNumberExact(spec.rail_lr));
   if (!(spec.rail_inclination >= 0.0 && spec.rail_inclination <= kMaxInclination)) {
     d.add(tl, "track.rail_inclination must be in [0, " + formatNumber(kMaxInclination, 4) +
-                  "] rad, got " + num(spec.rail_inclination));
+                  "] rad, got " + formatNumberExact(spec.rail_inclination));
   }
 }
 
@@ -152,20 +157,23 @@ void checkSegmentFields(const SegmentSpec& sg, const TrackSpec& spec, bool baseO
   switch (sg.kind) {
     case SegmentKind::Curve:
       if (!(sg.radius > 0.0 && std::isfinite(sg.radius))) {
-        err("radius must be > 0 m, got " + num(sg.radius));
+        err("radius must be > 0 m, got " + formatNumberExact(sg.radius));
       } else if (sg.radius < kMinRadius) {
-        err("radius must be >= 10 m (tighter curves are not railway track), got " + num(sg.radius));
+        err("radius must be >= 10 m (tighter curves are not railway track), got " +
+            formatNumberExact(sg.radius));
       }
       break;
     case SegmentKind::Transition:
       if (!(sg.radius == 0.0 || (sg.radius >= kMinRadius && std::isfinite(sg.radius)))) {
-        err("radius must be 0 (ends straight) or >= 10 m, got " + num(sg.radius));
+        err("radius must be 0 (ends straight) or >= 10 m, got " + formatNumberExact(sg.radius));
       }
       break;
     case SegmentKind::Tangent:
-      if (sg.radius != 0.0) err("radius must be 0 on a tangent, got " + num(sg.radius));
+      if (sg.radius != 0.0)
+        err("radius must be 0 on a tangent, got " + formatNumberExact(sg.radius));
       if (sg.cant != 0.0) {
-        err("cant must be 0 on a tangent (ramp cant in a transition), got " + num(sg.cant));
+        err("cant must be 0 on a tangent (ramp cant in a transition), got " +
+            formatNumberExact(sg.cant));
       }
       break;
   }
@@ -173,11 +181,11 @@ void checkSegmentFields(const SegmentSpec& sg, const TrackSpec& spec, bool baseO
     const double maxCant = kMaxCantPerBase * spec.cant_base;
     if (!(std::abs(sg.cant) <= maxCant)) {
       err("|cant| must be <= " + formatNumber(maxCant, 4) +
-          " m (0.2 m per 1.5 m of cant_base), got " + num(sg.cant));
+          " m (0.2 m per 1.5 m of cant_base), got " + formatNumberExact(sg.cant));
     }
   }
   if (!(std::abs(sg.gradient) <= kMaxGradient)) {
-    err("|gradient| must be <= 0.1, got " + num(sg.gradient));
+    err("|gradient| must be <= 0.1, got " + formatNumberExact(sg.gradient));
   }
 }
 
@@ -226,10 +234,10 @@ void checkSegments(const TrackSpec& spec, bool baseOk, Diagnostics& d) {
       d.add(sg.loc, where + msg);
     };
     if (!(sg.length > 0.0 && std::isfinite(sg.length))) {
-      err("length must be > 0 m, got " + num(sg.length));
+      err("length must be > 0 m, got " + formatNumberExact(sg.length));
     } else if (sg.length > kMaxTrackLength) {
-      err("length must be <= " + num(kMaxTrackLength) + " m (longer than any railway line), got " +
-          num(sg.length));
+      err("length must be <= " + formatNumberExact(kMaxTrackLength) +
+          " m (longer than any railway line), got " + formatNumberExact(sg.length));
     } else if (sg.length < shortest) {
       shortest = sg.length;
       shortestIdx = i;
@@ -249,9 +257,10 @@ void checkSegments(const TrackSpec& spec, bool baseOk, Diagnostics& d) {
     prev.kind = sg.kind;
   }
   if (spec.step > 0.0 && std::isfinite(shortest) && spec.step > shortest) {
-    d.add(spec.loc, "track.step must be <= the shortest segment length (" + num(shortest) +
-                        " m, track.segments[" + std::to_string(shortestIdx + 1) + "]), got " +
-                        num(spec.step));
+    d.add(spec.loc, "track.step must be <= the shortest segment length (" +
+                        formatNumberExact(shortest) + " m, track.segments[" +
+                        std::to_string(shortestIdx + 1) + "]), got " +
+                        formatNumberExact(spec.step));
   }
 }
 
@@ -265,16 +274,16 @@ double checkedLength(const TrackSpec& spec, bool maxOk, Diagnostics& d) {
                                                                               : -1.0;
   }
   if (length > kMaxTrackLength) {
-    d.add(tl, "track: the segments add up to " + num(length) + " m, more than the longest track (" +
-                  num(kMaxTrackLength) + " m)");
+    d.add(tl, "track: the segments add up to " + formatNumberExact(length) +
+                  " m, more than the longest track (" + formatNumberExact(kMaxTrackLength) + " m)");
     length = 0.0;
   }
   length = std::max(length, 0.0);
   if (length > 0.0 && maxOk && spec.step > 0.0) {
     const double knots = knotCount(length, spec.step);
     if (knots > spec.max_points) {
-      d.add(tl, "track: " + num(length) + " m at step " + num(spec.step) + " m needs " +
-                    count(knots) +
+      d.add(tl, "track: " + formatNumberExact(length) + " m at step " +
+                    formatNumberExact(spec.step) + " m needs " + count(knots) +
                     " spline knots, more than track.max_points = " + count(spec.max_points) +
                     " (about 0.4 kB each); use a coarser step, or raise track.max_points");
     }
@@ -299,19 +308,19 @@ void checkUserPsdChannel(const PsdTable& t, int c,
   }
   for (std::size_t k = 0; k < t.omega.size(); ++k) {
     if (k == 0 && !(t.omega[0] > 0.0 && std::isfinite(t.omega[0]))) {
-      ierr(tn + "omega[1] must be > 0 rad/m, got " + num(t.omega[0]));
+      ierr(tn + "omega[1] must be > 0 rad/m, got " + formatNumberExact(t.omega[0]));
       break;
     }
     if (k > 0 && !(t.omega[k] > t.omega[k - 1] && std::isfinite(t.omega[k]))) {
       ierr(tn + "omega must be strictly increasing, omega[" + std::to_string(k + 1) +
-           "] = " + num(t.omega[k]) + " after " + num(t.omega[k - 1]));
+           "] = " + formatNumberExact(t.omega[k]) + " after " + formatNumberExact(t.omega[k - 1]));
       break;
     }
   }
   for (std::size_t k = 0; k < t.value.size(); ++k) {
     if (!(t.value[k] >= 0.0 && std::isfinite(t.value[k]))) {
       ierr(tn + "value[" + std::to_string(k + 1) + "] must be >= 0 m^2/(rad/m), got " +
-           num(t.value[k]));
+           formatNumberExact(t.value[k]));
       break;
     }
   }
@@ -330,24 +339,24 @@ void checkPsdSource(const TrackSpec& spec, double length, bool maxOk, Diagnostic
     ierr("unknown spectrum '" + ir.spectrum + "' (valid: " + spectrumNames() + ")");
   }
   const bool stepOk = ir.step > 0.0 && std::isfinite(ir.step);
-  if (!stepOk) ierr("step must be > 0 m, got " + num(ir.step));
+  if (!stepOk) ierr("step must be > 0 m, got " + formatNumberExact(ir.step));
   const bool wminOk = ir.wavelength_min > 0.0 && std::isfinite(ir.wavelength_min);
   if (!wminOk) {
-    ierr("wavelength_min must be > 0 m, got " + num(ir.wavelength_min));
+    ierr("wavelength_min must be > 0 m, got " + formatNumberExact(ir.wavelength_min));
   } else if (!(ir.wavelength_max > ir.wavelength_min && std::isfinite(ir.wavelength_max))) {
-    ierr("wavelength_min (" + num(ir.wavelength_min) + " m) must be < wavelength_max (" +
-         num(ir.wavelength_max) + " m)");
+    ierr("wavelength_min (" + formatNumberExact(ir.wavelength_min) +
+         " m) must be < wavelength_max (" + formatNumberExact(ir.wavelength_max) + " m)");
   }
   if (wminOk && stepOk && ir.wavelength_min < 2.0 * ir.step) {
-    ierr("wavelength_min (" + num(ir.wavelength_min) + " m) must be >= 2 * step (" +
-         num(2.0 * ir.step) + " m) to be resolved (Nyquist)");
+    ierr("wavelength_min (" + formatNumberExact(ir.wavelength_min) + " m) must be >= 2 * step (" +
+         formatNumberExact(2.0 * ir.step) + " m) to be resolved (Nyquist)");
   }
   if (ir.components < 1 || ir.components > kMaxComponents) {
     ierr("components must be in [1, " + std::to_string(kMaxComponents) + "], got " +
          std::to_string(ir.components));
   }
   if (!(ir.scale >= 0.0 && std::isfinite(ir.scale))) {
-    ierr("scale must be >= 0, got " + num(ir.scale));
+    ierr("scale must be >= 0, got " + formatNumberExact(ir.scale));
   }
   if (spectrum == Spectrum::User) {
     for (int c = 0; c < kChannels; ++c) checkUserPsdChannel(ir.user[c], c, ierr);
