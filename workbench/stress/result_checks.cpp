@@ -141,66 +141,79 @@ void hunting(const io::ResultReader& f, const std::vector<double>& t, ResultChec
   }
 }
 
+// Running extremes over every wheelset and wheel [SI].
+struct Extremes {
+  double ymax = 0.0, nmax = 0.0, fmax = 0.0, nfmax = 0.0, imax = 0.0, yqmax = 0.0;
+  double nmin = std::numeric_limits<double>::infinity();
+  std::vector<char> inFlange;  // per output time: a flange force on any wheel
+};
+
+double maxOf(const std::optional<std::vector<double>>& v, double m, bool abs) {
+  if (v)
+    for (double x : *v) m = std::max(m, abs ? std::abs(x) : x);
+  return m;
+}
+
+// A wheelset's |y| against the centre of its rails, and ws1's peak-to-peak over the last second.
+void wheelsetExtremes(const io::ResultReader& f, const std::string& ws, const RailCentre& rails,
+                      const std::vector<double>& t, Extremes& e, ResultCheck& r) {
+  const auto y = f.dataset("/bodies/" + ws + "/y");
+  if (!y || y->empty()) return;
+  const auto s = f.dataset("/bodies/" + ws + "/s");
+  for (std::size_t i = 0; i < y->size(); ++i) {
+    const double centre =
+        rails.s.empty() || !s || i >= s->size() ? 0.0 : interpClamped(rails.s, rails.y, (*s)[i]);
+    e.ymax = std::max(e.ymax, std::abs((*y)[i] - centre));
+  }
+  if (ws != "ws1" && ws != "ws") return;
+  std::size_t from = 0;
+  const std::size_t n = std::min(t.size(), y->size());
+  while (from < n && t[from] < t.back() - 1.0) ++from;
+  r.ws1_y_pp_last_mm = from < n ? peakToPeak(*y, from, n) * 1e3 : kNaN;
+}
+
+// One wheel's forces (group /contact/<ws>/<side>/).
+void wheelExtremes(const io::ResultReader& f, const std::string& g, Extremes& e) {
+  const auto normal = f.dataset(g + "normal_force");
+  if (!normal || normal->empty()) return;
+  for (double x : *normal) {
+    e.nmax = std::max(e.nmax, x);
+    e.nmin = std::min(e.nmin, x);
+  }
+  const auto ff = f.dataset(g + "flange_force");
+  const auto nf = f.dataset(g + "normal_flange");
+  e.fmax = maxOf(ff, e.fmax, false);
+  e.nfmax = maxOf(nf, e.nfmax, false);
+  const std::size_t n = e.inFlange.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if ((ff && ff->size() == n && (*ff)[i] > 0.0) || (nf && nf->size() == n && (*nf)[i] > 0.0))
+      e.inFlange[i] = 1;
+  e.imax = maxOf(f.dataset(g + "flange_indentation"), e.imax, false);
+  e.yqmax = maxOf(f.dataset(g + "y_over_q"), e.yqmax, true);
+}
+
 // The extremes over every wheelset and wheel (ResultCheck's max_* and min_normal_kN).
 void extremes(const io::ResultReader& f, const std::string& path, const std::vector<double>& t,
               ResultCheck& r) {
-  double ymax = 0.0, nmax = 0.0, fmax = 0.0, nfmax = 0.0, imax = 0.0, yqmax = 0.0;
-  double nmin = std::numeric_limits<double>::infinity();
-  std::vector<char> inFlange(t.size(), 0);
+  Extremes e;
+  e.inFlange.assign(t.size(), 0);
   const RailCentre rails = railCentre(f, path, r.problems);
-  const auto maxOf = [](const std::optional<std::vector<double>>& v, double m, bool abs) {
-    if (v)
-      for (double x : *v) m = std::max(m, abs ? std::abs(x) : x);
-    return m;
-  };
   for (const auto& ws : f.members("/contact")) {
-    const auto y = f.dataset("/bodies/" + ws + "/y");
-    if (y && !y->empty()) {
-      const auto s = f.dataset("/bodies/" + ws + "/s");
-      for (std::size_t i = 0; i < y->size(); ++i) {
-        const double centre = rails.s.empty() || !s || i >= s->size()
-                                  ? 0.0
-                                  : interpClamped(rails.s, rails.y, (*s)[i]);
-        ymax = std::max(ymax, std::abs((*y)[i] - centre));
-      }
-      if (ws == "ws1" || ws == "ws") {
-        std::size_t from = 0;
-        const std::size_t n = std::min(t.size(), y->size());
-        while (from < n && t[from] < t.back() - 1.0) ++from;
-        r.ws1_y_pp_last_mm = from < n ? peakToPeak(*y, from, n) * 1e3 : kNaN;
-      }
-    }
-    for (const char* side : {"left", "right"}) {
-      const std::string g = "/contact/" + ws + "/" + side + "/";
-      const auto normal = f.dataset(g + "normal_force");
-      if (!normal || normal->empty()) continue;
-      for (double x : *normal) {
-        nmax = std::max(nmax, x);
-        nmin = std::min(nmin, x);
-      }
-      const auto ff = f.dataset(g + "flange_force");
-      const auto nf = f.dataset(g + "normal_flange");
-      fmax = maxOf(ff, fmax, false);
-      nfmax = maxOf(nf, nfmax, false);
-      for (std::size_t i = 0; i < inFlange.size(); ++i)
-        if ((ff && ff->size() == inFlange.size() && (*ff)[i] > 0.0) ||
-            (nf && nf->size() == inFlange.size() && (*nf)[i] > 0.0))
-          inFlange[i] = 1;
-      imax = maxOf(f.dataset(g + "flange_indentation"), imax, false);
-      yqmax = maxOf(f.dataset(g + "y_over_q"), yqmax, true);
-    }
+    wheelsetExtremes(f, ws, rails, t, e, r);
+    for (const char* side : {"left", "right"})
+      wheelExtremes(f, "/contact/" + ws + "/" + side + "/", e);
   }
-  r.max_abs_y_mm = ymax * 1e3;
-  r.max_normal_kN = nmax / 1e3;
-  r.min_normal_kN = (std::isfinite(nmin) ? nmin : 0.0) / 1e3;
-  r.max_flange_kN = fmax / 1e3;
-  r.max_normal_flange_kN = nfmax / 1e3;
-  r.flange_time_share = t.empty()
-                            ? 0.0
-                            : static_cast<double>(std::count(inFlange.begin(), inFlange.end(), 1)) /
-                                  static_cast<double>(t.size());
-  r.max_indent_mm = imax * 1e3;
-  r.max_abs_yq = yqmax;
+  r.max_abs_y_mm = e.ymax * 1e3;
+  r.max_normal_kN = e.nmax / 1e3;
+  r.min_normal_kN = (std::isfinite(e.nmin) ? e.nmin : 0.0) / 1e3;
+  r.max_flange_kN = e.fmax / 1e3;
+  r.max_normal_flange_kN = e.nfmax / 1e3;
+  r.flange_time_share =
+      t.empty() ? 0.0
+                : static_cast<double>(std::count(e.inFlange.begin(), e.inFlange.end(), 1)) /
+                      static_cast<double>(t.size());
+  r.max_indent_mm = e.imax * 1e3;
+  r.max_abs_yq = e.yqmax;
 }
 
 // The plausibility bounds on the extremes.

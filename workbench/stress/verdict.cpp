@@ -217,6 +217,40 @@ std::string cellText(const StressRow* r) {
   return t;
 }
 
+// One axis of the map: value x integrator setting, columns padded to their widest cell.
+std::string axisTable(const std::vector<StressRow>& rows, const std::string& axis) {
+  std::vector<std::string> values, integrators;
+  std::map<std::pair<std::string, std::string>, const StressRow*> cells;
+  for (const auto& r : rows) {
+    if (r.axis != axis) continue;
+    if (std::find(values.begin(), values.end(), r.value_label) == values.end())
+      values.push_back(r.value_label);
+    if (std::find(integrators.begin(), integrators.end(), r.integrator) == integrators.end())
+      integrators.push_back(r.integrator);
+    cells[{r.value_label, r.integrator}] = &r;
+  }
+  std::vector<std::vector<std::string>> table{{axis}};
+  table[0].insert(table[0].end(), integrators.begin(), integrators.end());
+  for (const auto& v : values) {
+    std::vector<std::string> line{v};
+    for (const auto& i : integrators) {
+      const auto it = cells.find({v, i});
+      line.push_back(cellText(it == cells.end() ? nullptr : it->second));
+    }
+    table.push_back(std::move(line));
+  }
+  std::vector<std::size_t> width(table[0].size(), 0);
+  for (const auto& line : table)
+    for (std::size_t k = 0; k < line.size(); ++k) width[k] = std::max(width[k], line[k].size());
+  std::string out;
+  for (const auto& line : table) {
+    for (std::size_t k = 0; k < line.size(); ++k)
+      out += (k ? "  " : "") + line[k] + std::string(width[k] - line[k].size(), ' ');
+    out += "\n";
+  }
+  return out;
+}
+
 std::string number(double v) {
   return std::isfinite(v) ? formatNumber(v, 12) : std::string();
 }
@@ -336,38 +370,7 @@ std::string textMap(const std::vector<StressRow>& rows, double tol) {
   std::vector<std::string> axes;
   for (const auto& r : rows)
     if (std::find(axes.begin(), axes.end(), r.axis) == axes.end()) axes.push_back(r.axis);
-  for (const auto& axis : axes) {
-    std::vector<std::string> values, integrators;
-    std::map<std::pair<std::string, std::string>, const StressRow*> cells;
-    for (const auto& r : rows) {
-      if (r.axis != axis) continue;
-      if (std::find(values.begin(), values.end(), r.value_label) == values.end())
-        values.push_back(r.value_label);
-      if (std::find(integrators.begin(), integrators.end(), r.integrator) == integrators.end())
-        integrators.push_back(r.integrator);
-      cells[{r.value_label, r.integrator}] = &r;
-    }
-    std::vector<std::vector<std::string>> table{{axis}};
-    table[0].insert(table[0].end(), integrators.begin(), integrators.end());
-    for (const auto& v : values) {
-      std::vector<std::string> line{v};
-      for (const auto& i : integrators) {
-        const auto it = cells.find({v, i});
-        line.push_back(cellText(it == cells.end() ? nullptr : it->second));
-      }
-      table.push_back(std::move(line));
-    }
-    std::vector<std::size_t> width(table[0].size(), 0);
-    for (const auto& line : table)
-      for (std::size_t k = 0; k < line.size(); ++k) width[k] = std::max(width[k], line[k].size());
-    out << "\n";
-    for (const auto& line : table) {
-      std::string text;
-      for (std::size_t k = 0; k < line.size(); ++k)
-        text += (k ? "  " : "") + line[k] + std::string(width[k] - line[k].size(), ' ');
-      out << text << "\n";
-    }
-  }
+  for (const auto& axis : axes) out << "\n" << axisTable(rows, axis);
   std::vector<std::string> counts;
   for (const auto& e : kOutcomeNames)
     counts.push_back(
