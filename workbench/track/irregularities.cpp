@@ -15,7 +15,6 @@
 
 namespace rb::track {
 
-
 const char* channelName(Channel c) {
   switch (c) {
     case Channel::Alignment:

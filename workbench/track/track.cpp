@@ -13,7 +13,6 @@
 
 namespace rb::track {
 
-
 namespace {
 
 // Limits (documented in track.hpp).
