@@ -183,18 +183,20 @@ def _read(f) -> Optional[Assessment]:
     return a
 
 
-def read_assessment(path: str) -> Optional[Assessment]:
-    """/assessment of the result file at `path`; None when the file has none."""
+def read_assessment(path: str, prefix: str = "") -> Optional[Assessment]:
+    """/assessment of the result file at `path` (of the vehicle at `prefix`, "/vehicles/<name>",
+    in a run of several); None when the file has none."""
     import h5py
     with h5py.File(path, "r") as f:
-        return _read(f)
+        return _read(f[prefix] if prefix else f)
 
 
 def result_assessment(result) -> Optional[Assessment]:
     """The Assessment of a loaded Result, read once and kept in result.extra."""
     if "assessment" not in result.extra:
         has = "assessment" in (result.groups or [])
-        result.extra["assessment"] = read_assessment(result.path) if has else None
+        result.extra["assessment"] = (read_assessment(result.path, result.prefix) if has
+                                      else None)
     return result.extra["assessment"]
 
 

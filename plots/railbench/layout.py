@@ -85,7 +85,7 @@ def add_failure_banner(fig, text: str, max_chars: Optional[int] = None, max_line
 
 
 def _run_info(result: Result) -> str:
-    parts = [result.stem]
+    parts = [result.stem + (f" {result.vehicle}" if result.vehicle else "")]
     m = result.contact_method
     if m:
         parts.append(f"{m.upper()} contact")

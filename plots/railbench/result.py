@@ -192,6 +192,15 @@ class Result:
     element_units: Dict[str, Dict[str, str]] = field(default_factory=dict)    # their units
     stats: Optional[Dict[str, object]] = None               # /stats attributes
     schema: Schema = field(default_factory=Schema)          # /schema (empty in older files)
+    # A run of several vehicles (train{}): their names (/vehicles/<name>), and the one whose
+    # groups this Result holds ("" for the file's root groups: the track and the run's /stats).
+    vehicles: List[str] = field(default_factory=list)
+    vehicle: str = ""
+
+    @property
+    def prefix(self) -> str:
+        """Where this Result's vehicle groups are: "" or "/vehicles/<name>"."""
+        return f"/vehicles/{self.vehicle}" if self.vehicle else ""
 
     @property
     def stem(self) -> str:
@@ -205,7 +214,8 @@ class Result:
     def contact_method(self) -> Optional[str]:
         """The wheel/rail contact method ("kec", "lut"); None without contact (track-only
         runs, and guided runs, whose file says "none (wheelsets guided)")."""
-        m = self.attrs.get("contact_method")
+        # A vehicle of a run of several: its own /contact (the root attribute is the first's).
+        m = None if self.vehicle else self.attrs.get("contact_method")
         if not m and self.contact is not None:
             m = self.contact.attrs.get("method")
         m = str(m).strip() if m else ""
@@ -214,6 +224,8 @@ class Result:
     @property
     def guided(self) -> bool:
         """A vehicle run whose wheelsets follow the track (no contact block)."""
+        if self.vehicle:
+            return self.contact is None and any(b.kind == "wheelset" for b in self.bodies.values())
         return str(self.attrs.get("contact_method", "")).strip().lower().startswith("none")
 
     def label(self) -> str:
@@ -284,14 +296,19 @@ def _read_series(group, where: str, schema: Schema) -> Dict[str, np.ndarray]:
     return out
 
 
-def _load_dynamics(f, res: Result) -> None:
-    """Optional groups /time, /bodies, /contact, /elements, /stats into `res`."""
+def _load_dynamics(root, res: Result) -> None:
+    """Optional groups /time, /stats and the vehicle's /bodies, /contact, /elements (under
+    res.prefix in a run of several vehicles) into `res`."""
     import h5py
     ragged: List[str] = []
     n_t = None
-    if "time" in f and isinstance(f["time"], h5py.Dataset):
-        res.time = _read_ds(f, "time", "", res.schema.units.get("/time"))
+    if "time" in root and isinstance(root["time"], h5py.Dataset):
+        res.time = _read_ds(root, "time", "", res.schema.units.get("/time"))
         n_t = res.time.size
+    if "stats" in root:
+        res.stats = _attrs(root["stats"])
+    pre = res.prefix
+    f = root[pre] if pre else root
 
     def note_len(where, arrays):
         if n_t is not None:
@@ -309,8 +326,8 @@ def _load_dynamics(f, res: Result) -> None:
         for n in order:
             bg = g[n]
             kind = _str(bg.attrs["kind"]).strip().lower() if "kind" in bg.attrs else _guess_kind(n)
-            data = _read_series(bg, f"/bodies/{n}", res.schema)
-            note_len(f"/bodies/{n}", data)
+            data = _read_series(bg, f"{pre}/bodies/{n}", res.schema)
+            note_len(f"{pre}/bodies/{n}", data)
             res.bodies[n] = Body(name=n, kind=kind, data=data)
         if res.bodies and not any("s" in b.data for b in res.bodies.values()):
             print(f"railbench: warning: {res.path}: no body has an 's' dataset (distance); "
@@ -327,23 +344,21 @@ def _load_dynamics(f, res: Result) -> None:
             sides = {}
             for side in ("left", "right"):
                 if side in wg and isinstance(wg[side], h5py.Group):
-                    sides[side] = _read_series(wg[side], f"/contact/{w}/{side}", res.schema)
-                    note_len(f"/contact/{w}/{side}", sides[side])
-            data = _read_series(wg, f"/contact/{w}", res.schema)
-            note_len(f"/contact/{w}", data)
+                    sides[side] = _read_series(wg[side], f"{pre}/contact/{w}/{side}",
+                                               res.schema)
+                    note_len(f"{pre}/contact/{w}/{side}", sides[side])
+            data = _read_series(wg, f"{pre}/contact/{w}", res.schema)
+            note_len(f"{pre}/contact/{w}", data)
             cws[w] = WheelsetContact(name=w, sides=sides, data=data)
         res.contact = Contact(attrs=_attrs(g), wheelsets=cws)
 
     if "elements" in f and isinstance(f["elements"], h5py.Group):
         for k, v in f["elements"].items():
             if isinstance(v, h5py.Group):
-                res.elements[k] = _read_series(v, f"/elements/{k}", res.schema)
+                res.elements[k] = _read_series(v, f"{pre}/elements/{k}", res.schema)
                 res.element_units[k] = {d: _str(v[d].attrs["units"]).strip()
                                         for d in res.elements[k] if "units" in v[d].attrs}
-                note_len(f"/elements/{k}", res.elements[k])
-
-    if "stats" in f:
-        res.stats = _attrs(f["stats"])
+                note_len(f"{pre}/elements/{k}", res.elements[k])
 
     if ragged:
         print(f"railbench: warning: {res.path}: {len(ragged)} time series differ in length "
@@ -436,17 +451,27 @@ def _read_track(path: str, g, res: Result) -> None:
                                             channels=channels)
 
 
-def load_result(path: str) -> Result:
+def load_result(path: str, vehicle: str = "") -> Result:
     """Open and validate a result file. Raises ResultFileError with a one-line message. A /track
     that references a track store file (attribute `stored_in`) is read from that file; the
     track's attributes are the store's with the result's own (build_time_s, stored_in,
-    track_hash) on top."""
+    track_hash) on top. In a run of several vehicles (/vehicles), `vehicle` names the one whose
+    groups are read ("": the root groups, which hold the track and /stats only)."""
     hint = " (a run still in progress writes '<name>.tmp')" if os.path.exists(path + ".tmp") else ""
     f = open_h5(path, ResultFileError, "result file", hint)
     try:
         with f:
-            res = Result(path=path, attrs=_attrs(f), groups=sorted(f.keys()),
-                         schema=_read_schema(f))
+            vehicles = []
+            if "vehicles" in f:  # in the run's order, front to rear (attribute `names`)
+                g = f["vehicles"]
+                listed = _names_attr(g.attrs["names"]) if "names" in g.attrs else []
+                vehicles = [n for n in listed if n in g] + sorted(n for n in g if n not in listed)
+            if vehicle and vehicle not in vehicles:
+                raise ResultFileError(f"{path}: no vehicle '{vehicle}' (vehicles: "
+                                      f"{', '.join(vehicles) or 'none'})")
+            base = f[f"vehicles/{vehicle}"] if vehicle else f
+            res = Result(path=path, attrs=_attrs(f), groups=sorted(base.keys()),
+                         schema=_read_schema(f), vehicles=vehicles, vehicle=vehicle)
             if "track" not in f:
                 raise ResultFileError(f"{path}: no /track group (not a railbench result file?)")
             g = f["track"]

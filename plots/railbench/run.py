@@ -220,10 +220,22 @@ def build_figure(result: Result, spec) -> "plt.Figure":
     return fig
 
 
+TRACK_FIGURES = ("track_plan", "track_curvature_cant", "irregularities", "irregularity_psd")
+
+
 def make_figures(result: Result, outdir: Optional[str] = None, stem: Optional[str] = None,
                  dpi: int = DPI, fmt: str = "png") -> List[str]:
-    """Write every figure the result's content allows; return the written paths."""
-    return write_figures(FIGURES, result, outdir, stem, dpi, fmt, build_figure)
+    """Write every figure the result's content allows; return the written paths. A run of several
+    vehicles: the track's figures once, then every vehicle's as <stem>_<vehicle>_<suffix>."""
+    paths = write_figures(FIGURES, result, outdir, stem, dpi, fmt, build_figure)
+    if result.vehicle:
+        return paths
+    vehicle_specs = [f for f in FIGURES if f.suffix not in TRACK_FIGURES]
+    for name in result.vehicles:
+        one = load_result(result.path, vehicle=name)
+        paths += write_figures(vehicle_specs, one, outdir, f"{stem or result.stem}_{name}", dpi,
+                               fmt, build_figure)
+    return paths
 
 
 def main(argv=None) -> int:

@@ -28,6 +28,7 @@ from railbench import run as run_command
 from railbench.dynamics_figs import acceleration_bodies
 from railbench.psd import (default_nperseg, interp_loglog, octave_band_ratios, welch_psd,
                            welch_segment_starts)
+from railbench.h5 import ResultFileError
 from railbench.result import load_result
 from railbench.run import FIGURES, build_figure, panel_points, stats_summary, steady_state
 from railbench.style import A4_WIDTH_IN, DPI, plt
@@ -58,6 +59,8 @@ RUNS = {
     "guided": ("scenarios/vehicle/manchester_guided_r500.lua",
                ["vehicle.start=120", "run.duration=0.5"], 0),
     "nocreep": ("tests/plots/contact_short.lua", ["contact.creep=none", "run.duration=0.05"], 0),
+    # Two wagons in a train{} (/vehicles/front, /vehicles/rear).
+    "train": ("tests/run/data/train_two_wagons.lua", ["run.duration=0.1"], 0),
     "fail": ("tests/plots/contact_short.lua",
              ["solver.method=rk4", "solver.step=0.01", "run.output.every=0.01",
               "solver.accept_unstable_step=true"], 2),
@@ -343,6 +346,30 @@ def test_e_cli_contact_run_figures_and_stats_line():
         small = p.endswith("_elements.png")
         check(os.path.getsize(p) > (20_000 if small else 40_000) and ink > (0.05 if small else 0.15),
               f"{os.path.basename(p)}: {os.path.getsize(p)} bytes, {ink:.0%} ink")
+
+
+def test_e_train_figures_per_vehicle():
+    """A run of several vehicles: the track's figures once, every vehicle's figures under its
+    name, each read from its /vehicles/<name> groups with its own contact method in the title."""
+    root = res("train")
+    check(root.vehicles == ["front", "rear"] and not root.bodies, f"root: {root.vehicles}")
+    rear = load_result(_f("train"), vehicle="rear")
+    check(sorted(rear.bodies) == sorted(["car", "bogie1", "bogie2"] + WS) and
+          rear.contact is not None and rear.contact_method == "kec", "rear's groups")
+    check(rear.time is not None and rear.stats is not None, "time and stats from the root")
+    try:
+        load_result(_f("train"), vehicle="nope")
+        check(False, "an unknown vehicle was accepted")
+    except ResultFileError as e:
+        check("no vehicle 'nope'" in str(e), str(e))
+    out = os.path.join(TMP, "train_figs")
+    r = run_cli(_f("train"), "--outdir", out)
+    check(r.returncode == 0, f"exit {r.returncode}: {r.stderr.strip()}")
+    names = {os.path.basename(ln) for ln in r.stdout.splitlines() if ln.endswith(".png")}
+    for want in ("train_track_plan.png", "train_front_wheelsets.png",
+                 "train_rear_contact_forces.png", "train_rear_assessment.png"):
+        check(want in names, f"{want} not drawn: {sorted(names)}")
+    check(not any(n.startswith("train_front_track") for n in names), "track figures once")
 
 
 def test_e_y_over_q_drawn_for_every_wheel():

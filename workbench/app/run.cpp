@@ -187,12 +187,17 @@ int runScenario(const RunOptions& options) {
     for (const auto& line : res.assessment_summary) std::cout << line << "\n";
     if (res.assessment_summary.empty())
       for (const auto& n : res.assessment_notes) std::cout << n << "\n";
-    const vehicle::VehicleModel& v = c.lead().vehicle;
-    if (c.hasContact())
-      msg << "; vehicle " << v.name << " with " << nameOf(c.lead().contact->method) << " contact";
-    else
-      msg << "; vehicle " << v.name << " (" << v.bodies.size() << " bodies, " << v.elementCount()
-          << " elements)";
+    // Every vehicle of the run (a train: each under its name, front to rear).
+    for (std::size_t k = 0; k < c.vehicles.size(); ++k) {
+      const run::RunVehicle& rv = c.vehicles[k];
+      const vehicle::VehicleModel& v = rv.vehicle;
+      msg << (k == 0 ? "; vehicle " : ", ")
+          << (rv.name.empty() ? v.name : rv.name + " (" + v.name + ")");
+      if (rv.contact)
+        msg << " with " << nameOf(rv.contact->method) << " contact";
+      else
+        msg << " (" << v.bodies.size() << " bodies, " << v.elementCount() << " elements)";
+    }
     if (!res.result.ok) {
       std::cerr << c.spec.file << ": run failed: " << res.result.message << "\n";
       rc = 2;

@@ -474,6 +474,7 @@ Plan makePlan(const PrecisionOptions& o) {
   const double t_end = checkOptionOverrides(o, adaptive, lengths);
   lo.overrides = p.base;
   const scenario::ScenarioSpec spec = scenario::loadScenario(p.scenario, lo);
+  scenario::refuseTrain(spec, "precision");
   if (!spec.has_vehicle)
     throw InputError({o.scenario, 0},
                      "precision needs a vehicle{} block: nothing is integrated without one");

@@ -192,26 +192,48 @@ void compileParts(const CompileOptions& o, Model& c, Diagnostics& d) {
     c.solver.method = integ::kAbm;
     c.solver.step = 1e-3;
   }
-  if (spec.has_vehicle && c.track) {
+  if (!spec.has_vehicle || !c.track) return;
+  // One vehicle{} block, or every vehicle of train{} (each with its own profiles and contact).
+  std::vector<scenario::TrainVehicleSpec> entries = spec.train;
+  if (entries.empty())
+    entries.push_back({"", spec.vehicle, spec.has_profiles, spec.profiles, spec.has_contact,
+                       spec.guided, spec.contact, spec.vehicle.loc});
+  dynamics::TableCache cache =
+      o.table_cache.empty() ? dynamics::TableCache() : dynamics::TableCache(o.table_cache);
+  for (const auto& e : entries) {
     try {
       RunVehicle v;
-      v.vehicle = vehicle::compileVehicle(spec.vehicle, *c.track);
-      v.initial = spec.vehicle.initial;
+      v.name = e.name;
+      v.vehicle = vehicle::compileVehicle(e.vehicle, *c.track);
+      v.initial = e.vehicle.initial;
+      if (e.has_contact)
+        v.contact = dynamics::compileContact(e.profiles, e.contact, v.vehicle, *c.track, &cache);
       c.vehicles.push_back(std::move(v));
-    } catch (const InputError& e) {
-      d.add(e);
+    } catch (const InputError& err) {
+      d.add(err);
     }
   }
-  if (c.hasVehicle() && spec.has_contact) {
-    try {
-      dynamics::TableCache cache =
-          o.table_cache.empty() ? dynamics::TableCache() : dynamics::TableCache(o.table_cache);
-      RunVehicle& v = c.vehicles.front();
-      v.contact =
-          dynamics::compileContact(spec.profiles, spec.contact, v.vehicle, *c.track, &cache);
-    } catch (const InputError& e) {
-      d.add(e);
-    }
+  // A vehicle that did not compile leaves the run incomplete: nothing after this may assume the
+  // train's vehicles are all there.
+  if (c.vehicles.size() != entries.size()) c.vehicles.clear();
+}
+
+// The vehicles of a train behind the first: each behind the one before it without overlap (the
+// foremost body of each behind the rearmost body of the one in front). The track range of the
+// whole train is checkTrackRange's: from the last vehicle's rearmost body to the first's
+// foremost.
+void checkTrainPlaces(const Model& c, Diagnostics& d) {
+  for (std::size_t k = 1; k < c.vehicles.size(); ++k) {
+    const RunVehicle& v = c.vehicles[k];
+    const RunVehicle& front = c.vehicles[k - 1];
+    const SourceLoc& loc = c.spec.train[k].loc;
+    const double lead = v.vehicle.start + v.leadingX();
+    const double front_rear = front.vehicle.start + front.trailingX();
+    if (!(lead < front_rear))
+      d.add(loc, "train: vehicle '" + v.name + "' overlaps '" + front.name +
+                     "': its foremost body starts at s = " + formatNumber(lead) +
+                     " m, not behind the rearmost body of '" + front.name +
+                     "' at s = " + formatNumber(front_rear) + " m");
   }
 }
 
@@ -228,12 +250,18 @@ void checkWithoutVehicle(const Model& c, Diagnostics& d) {
 // The element outputs by name, the speed ramp, the end time, the track range and the outputs.
 void checkVehicleRun(Model& c, Diagnostics& d) {
   const auto& spec = c.spec;
-  const vehicle::VehicleModel& v = c.lead().vehicle;
+  // An element named in run.output.elements is written for every vehicle that has one of that
+  // name (in a train, vehicles of the same file share their names); a name no vehicle has is an
+  // error.
   for (const auto& name : spec.run.output_elements) {
-    if (auto id = v.findElement(name)) {
-      c.vehicles.front().output_elements.push_back(*id);
-      continue;
-    }
+    bool found = false;
+    for (auto& rv : c.vehicles)
+      if (auto id = rv.vehicle.findElement(name)) {
+        rv.output_elements.push_back(*id);
+        found = true;
+      }
+    if (found) continue;
+    const vehicle::VehicleModel& v = c.lead().vehicle;
     std::vector<std::string> names;
     for (auto id : v.elements()) names.push_back(v.elementName(id));
     std::string hint = closestMatch(name, names);
@@ -248,6 +276,7 @@ void checkVehicleRun(Model& c, Diagnostics& d) {
   if (d.empty()) {
     c.t_end = endTime(c);
     checkTrackRange(c, d);
+    checkTrainPlaces(c, d);
   }
   if (d.empty()) checkOutputs(c, d);
 }
@@ -375,8 +404,9 @@ int wheelOffTread(dynamics::ContactVehicleOde& ode, const std::vector<int>& trea
 // wheel within milliseconds (or at once: a negative constraint normal force), which would show
 // as a confusing failure of the run. The flangeway is found by bisection on the scale of the
 // offsets (wheel outputs only, about 30 evaluations, only when a wheel leaves its tread).
-void checkFlangeway(const Model& c, dynamics::ContactVehicleOde& ode,
-                    const Eigen::VectorXd& equilibrium, const Eigen::VectorXd& y0, Diagnostics& d) {
+void checkFlangeway(const std::vector<vehicle::InitialCondition>& initial,
+                    dynamics::ContactVehicleOde& ode, const Eigen::VectorXd& equilibrium,
+                    const Eigen::VectorXd& y0, Diagnostics& d) {
   std::vector<dynamics::WheelOutput> wo(2 * static_cast<std::size_t>(ode.layout().n_ws));
   if (ode.wheelOutputs(0.0, equilibrium.data(), wo) != 0) return;
   std::vector<int> tread(wo.size());
@@ -389,7 +419,6 @@ void checkFlangeway(const Model& c, dynamics::ContactVehicleOde& ode,
     const Eigen::VectorXd y = equilibrium + mid * (y0 - equilibrium);
     (wheelOffTread(ode, tread, y, wo) < 0 ? lo : hi) = mid;
   }
-  const auto& initial = c.spec.vehicle.initial;
   const int w = wheel / 2;
   const std::string body = ode.model().bodies[ode.layout().wheelset(w)].name;
   std::string limit = "the wheels stay on their treads up to " + formatNumber(lo) + " times them";
@@ -411,16 +440,15 @@ void checkFlangeway(const Model& c, dynamics::ContactVehicleOde& ode,
 // the tables, or a wheel lifted (contact.min_normal_force), or a wheel moved off its tread onto
 // its flange (checkFlangeway), reported here before anything runs rather than as a failure at
 // the start. y0 becomes the start state.
-void checkInitialState(const Model& c, vehicle::VehicleOde& ode, Eigen::VectorXd& y0,
-                       Diagnostics& d) {
-  const auto& initial = c.spec.vehicle.initial;
+void checkInitialState(const std::vector<vehicle::InitialCondition>& initial,
+                       vehicle::VehicleOde& ode, Eigen::VectorXd& y0, Diagnostics& d) {
   if (initial.empty()) return;
   vehicle::checkInitialConditions(ode, initial, d);
   if (!d.empty()) return;
   const Eigen::VectorXd equilibrium = y0;
   vehicle::applyInitialConditions(ode, initial, y0);
   if (auto* contact = dynamic_cast<dynamics::ContactVehicleOde*>(&ode)) {
-    checkFlangeway(c, *contact, equilibrium, y0, d);
+    checkFlangeway(initial, *contact, equilibrium, y0, d);
     if (!d.empty()) return;
   }
   Eigen::VectorXd ydot(y0.size());
@@ -488,10 +516,22 @@ Model compile(const CompileOptions& o) {
   // (the contact points inside the tables, no wheel lift), a guided vehicle's on its suspension.
   // The run computes it again on its own system (the lagged normal-force memory starts there).
   // A fixed step must also be stable on the stiffest mode there (step_limit.hpp).
-  if (c.hasVehicle()) {
+  if (c.vehicles.size() == 1) {
     const std::unique_ptr<vehicle::VehicleOde> ode = makeVehicleOde(c);
     Eigen::VectorXd y0 = ode->initialState(0.0);
-    checkInitialState(c, *ode, y0, d);
+    checkInitialState(c.lead().initial, *ode, y0, d);
+    d.throwIfAny();
+    checkStepLimit(c, *ode, y0, d);
+    d.throwIfAny();
+  } else if (c.hasVehicle()) {
+    // A train: every vehicle's start state, and the fixed step on the stiffest mode of all.
+    const std::unique_ptr<train::TrainOde> ode = makeRunOde(c);
+    Eigen::VectorXd y0(ode->size());
+    for (int k = 0; k < ode->vehicles(); ++k) {
+      Eigen::VectorXd yk = ode->vehicle(k).initialState(0.0);
+      checkInitialState(c.vehicles[static_cast<std::size_t>(k)].initial, ode->vehicle(k), yk, d);
+      y0.segment(ode->offset(k), yk.size()) = yk;
+    }
     d.throwIfAny();
     checkStepLimit(c, *ode, y0, d);
     d.throwIfAny();

@@ -21,7 +21,34 @@ std::string notAmong(const std::string& what, const std::string& x,
 
 }  // namespace
 
+std::string signalProblem(const scenario::ScenarioSpec& spec, const std::string& path);
+
 namespace {
+
+std::vector<std::string> trainNames(const scenario::ScenarioSpec& spec) {
+  std::vector<std::string> names;
+  for (const auto& e : spec.train) names.push_back(e.name);
+  return names;
+}
+
+// /vehicles/<name>/<group>/...: the path of that vehicle's group as its own run would write it.
+std::string trainSignalProblem(const scenario::ScenarioSpec& spec,
+                               const std::vector<std::string>& p) {
+  if (spec.train.empty()) return "only a scenario with train{} writes /vehicles";
+  if (p.size() < 3) return "a train vehicle's signal is /vehicles/<name>/<group>/...";
+  const auto names = trainNames(spec);
+  const auto it = std::find(names.begin(), names.end(), p[1]);
+  if (it == names.end()) return notAmong("vehicle", p[1], names);
+  const scenario::TrainVehicleSpec& e = spec.train[static_cast<std::size_t>(it - names.begin())];
+  scenario::ScenarioSpec one = spec;
+  one.train.clear();
+  one.vehicle = e.vehicle;
+  one.has_contact = e.has_contact;
+  one.guided = e.guided;
+  one.contact = e.contact;
+  const std::vector<std::string> rest(p.begin() + 2, p.end());
+  return signalProblem(one, "/" + join(rest, "/"));
+}
 
 bool among(const std::string& x, const std::vector<std::string>& names) {
   return std::find(names.begin(), names.end(), x) != names.end();
@@ -85,9 +112,13 @@ std::string signalProblem(const scenario::ScenarioSpec& spec, const std::string&
   if (path.size() < 2 || path[0] != '/') return {};
   const std::vector<std::string> p = pathParts(path);
   const std::string& group = p[0];
+  if (group == "vehicles") return trainSignalProblem(spec, p);
   if (group != "vehicle" && group != "bodies" && group != "elements" && group != "contact")
     return {};
   if (!spec.has_vehicle) return "the scenario has no vehicle, so its result has no /" + group;
+  if (!spec.train.empty() && group != "vehicle")
+    return "a train writes each vehicle's /" + group + " under /vehicles/<name>/" + group +
+           " (vehicles: " + join(trainNames(spec), ", ") + ")";
   if (group == "vehicle")
     return p.size() == 2 && p[1] == "speed" ? std::string()
                                             : "the vehicle group holds /vehicle/speed only";

@@ -15,6 +15,9 @@ void buildProfiles(const Node& n, LuaHost& host, dynamics::ProfilesSpec& p, Diag
 // contact{}; returns true for method = "guided" (no contact model: c is left at its defaults).
 bool buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d);
 void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d);
+// train{} into spec.train; profiles{} and contact{} of `spec` (built before) are the entries'
+// defaults.
+void buildTrain(const Node& n, LuaHost& host, ScenarioSpec& spec, Diagnostics& d);
 void buildSolver(const Node& n, integ::SolverSpec& s, Diagnostics& d);
 void buildRun(const Node& n, RunSpec& run, Diagnostics& d);
 // run.effects = { name = true|false, ... } (effect_names.hpp) into run.effects[].given / .on.

@@ -157,10 +157,25 @@ void buildEffects(const Node& n, EffectSwitches& effects, Diagnostics& d) {
 }
 
 void applyEffectSwitches(ScenarioSpec& spec, Diagnostics& d) {
+  // The train's vehicles behind the first as scenes of their own (their vehicle and contact
+  // model): an effect is present when any vehicle has it, and a switch acts on every vehicle.
+  std::vector<ScenarioSpec> others;
+  for (std::size_t k = 1; k < spec.train.size(); ++k) {
+    ScenarioSpec v;
+    v.track = spec.track;
+    v.run = spec.run;
+    v.has_vehicle = true;
+    v.vehicle = spec.train[k].vehicle;
+    v.has_contact = spec.train[k].has_contact;
+    v.contact = spec.train[k].contact;
+    others.push_back(std::move(v));
+  }
   for (const auto& entry : kEffectSwitches) {
     const Effect e = entry.effect;
     EffectSwitch& sw = spec.run.effects[effectIndex(e)];
-    sw.present = present(spec, e);
+    sw.present =
+        present(spec, e) || std::any_of(others.begin(), others.end(),
+                                        [&](const ScenarioSpec& v) { return present(v, e); });
     if (sw.on) {
       sw.on = sw.present;
       continue;
@@ -174,8 +189,14 @@ void applyEffectSwitches(ScenarioSpec& spec, Diagnostics& d) {
     else if (!sw.present)
       d.add(sw.loc,
             key + " = false: nothing to switch off, " + absentReason(e) + "; remove the switch");
-    else
+    else {
       switchOff(spec, e);
+      for (auto& v : others) switchOff(v, e);
+    }
+  }
+  for (std::size_t k = 1; k < spec.train.size(); ++k) {
+    spec.train[k].vehicle = std::move(others[k - 1].vehicle);
+    spec.train[k].contact = std::move(others[k - 1].contact);
   }
 }
 

@@ -28,8 +28,8 @@ namespace fs = std::filesystem;
 namespace rb::scenario {
 
 const std::vector<std::string>& topLevelBlocks() {
-  static const std::vector<std::string> names = {"track",  "profiles", "vehicle", "contact",
-                                                 "solver", "run",      "study"};
+  static const std::vector<std::string> names = {"track",   "profiles", "vehicle", "train",
+                                                 "contact", "solver",   "run",     "study"};
   return names;
 }
 

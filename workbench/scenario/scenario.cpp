@@ -13,13 +13,14 @@ namespace {
 // Wheelsets without a contact{} block would run guided (no wheel/rail forces) and write a
 // plausible result: the wheel/rail model is never assumed, it is named, contact { method = "kec" }
 // or "lut" for contact, "guided" for wheelsets that follow the track kinematically.
-void checkWheelsetContact(const ScenarioSpec& spec, Diagnostics& d) {
-  if (!spec.has_vehicle || spec.has_contact || spec.guided) return;
+void checkWheelsetContact(const vehicle::VehicleSpec& v, bool has_contact, bool guided,
+                          Diagnostics& d) {
+  if (has_contact || guided) return;
   int wheelsets = 0;
-  for (const auto& b : spec.vehicle.bodies)
+  for (const auto& b : v.bodies)
     if (b.kind == vehicle::BodyKind::Wheelset) ++wheelsets;
   if (wheelsets == 0) return;
-  d.add(spec.vehicle.loc,
+  d.add(v.loc,
         "vehicle: " + std::to_string(wheelsets) + (wheelsets == 1 ? " wheelset" : " wheelsets") +
             " and no contact{} block: give contact { method = \"kec\" } (or \"lut\") for "
             "wheel/rail contact, or contact { method = \"guided\" } for wheelsets that follow "
@@ -80,10 +81,30 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
     spec.has_vehicle = true;
     buildVehicle(*v, spec.vehicle, d);
   }
+  if (const Node* t = root.field("train")) {
+    if (const Node* v = root.field("vehicle"))
+      d.add(v->loc,
+            "vehicle{}: a scenario with train{} gives its vehicles there (train.vehicles[k]."
+            "vehicle); remove the vehicle{} block");
+    buildTrain(*t, host, spec, d);
+    // The first vehicle leads: it is the scenario's vehicle for everything that works on one.
+    if (!spec.train.empty()) {
+      const TrainVehicleSpec& lead = spec.train.front();
+      spec.has_vehicle = true;
+      spec.vehicle = lead.vehicle;
+      spec.has_profiles = lead.has_profiles;
+      spec.profiles = lead.profiles;
+      spec.has_contact = lead.has_contact;
+      spec.guided = lead.guided;
+      spec.contact = lead.contact;
+    }
+  }
   // A block left unchecked still exists: no error about it being absent.
-  spec.has_vehicle = spec.has_vehicle || unchecked("vehicle");
+  spec.has_vehicle = spec.has_vehicle || unchecked("vehicle") || unchecked("train");
   spec.has_contact = spec.has_contact || unchecked("contact");
-  checkWheelsetContact(spec, d);
+  if (spec.train.empty() && spec.has_vehicle)
+    checkWheelsetContact(spec.vehicle, spec.has_contact, spec.guided, d);
+  for (const auto& e : spec.train) checkWheelsetContact(e.vehicle, e.has_contact, e.guided, d);
   if (spec.guided && spec.has_profiles)
     d.add(spec.profiles.loc,
           "profiles{} has no effect with contact { method = \"guided\" } (no wheel/rail "
@@ -94,6 +115,11 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   }
   if (const Node* r = root.field("run")) buildRun(*r, spec.run, d);
   applyEffectSwitches(spec, d);
+  // The leading vehicle's Specs after the switches are its train entry's.
+  if (!spec.train.empty()) {
+    spec.train.front().vehicle = spec.vehicle;
+    spec.train.front().contact = spec.contact;
+  }
   // Blocks that a scenario would otherwise silently ignore.
   if (const Node* st = root.field("study"))
     d.add(st->loc,
@@ -103,6 +129,14 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
     d.add(s->loc, "solver{} has no effect without a vehicle{} block (nothing is integrated)");
   d.throwIfAny();
   return spec;
+}
+
+void refuseTrain(const ScenarioSpec& spec, const std::string& command) {
+  if (spec.train.empty()) return;
+  throw InputError(spec.train.front().loc,
+                   "train: `workbench " + command + "` works on a single vehicle; this scenario " +
+                       "has a train of " + std::to_string(spec.train.size()) +
+                       " vehicles (run it with `workbench run`, or give one vehicle{} block)");
 }
 
 }  // namespace rb::scenario

@@ -28,6 +28,20 @@ struct RunSpec {
   SourceLoc loc;
 };
 
+// One vehicle of train{}: its name (its outputs' group /vehicles/<name>), its vehicle (placed
+// by its own vehicle.start) and the profiles and contact model it runs on: the entry's own, else
+// the scenario's profiles{} and contact{}.
+struct TrainVehicleSpec {
+  std::string name;
+  vehicle::VehicleSpec vehicle;
+  bool has_profiles = false;
+  dynamics::ProfilesSpec profiles;
+  bool has_contact = false;  // a contact model; false for guided wheelsets (or none)
+  bool guided = false;
+  dynamics::ContactSpec contact;
+  SourceLoc loc;
+};
+
 struct ScenarioSpec {
   std::string file;  // as given by the user
   std::string text;  // full text of the scenario file (provenance)
@@ -44,6 +58,10 @@ struct ScenarioSpec {
   bool guided = false;
   bool has_vehicle = false;
   vehicle::VehicleSpec vehicle;
+  // train{}: the vehicles of the run, front to rear (empty without a train{} block). The first
+  // is also vehicle, profiles and contact above (with has_*), the leading vehicle that the
+  // analyses of one vehicle work on.
+  std::vector<TrainVehicleSpec> train;
   bool has_solver = false;
   integ::SolverSpec solver;
   RunSpec run;
@@ -60,5 +78,10 @@ struct LoadOptions {
 
 // Throws InputError listing every problem found, each as file:line: message.
 ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options);
+
+// The analyses of one vehicle (precision, stress, effects, modes, critical-speed) on a scenario
+// with train{}: InputError at the train's first entry naming `command`, since their quantities,
+// hardened cases and linearisation are those of a single vehicle.
+void refuseTrain(const ScenarioSpec& spec, const std::string& command);
 
 }  // namespace rb::scenario

@@ -659,12 +659,47 @@ void addRunBlocks(std::vector<BlockSpec>& s) {
   addAssessmentBlock(s);
 }
 
+// train{}: several vehicles on one track (a run of vehicles, run/compile.hpp).
+void addTrainBlocks(std::vector<BlockSpec>& s) {
+  s.push_back(
+      {"train",
+       "Several vehicles on one track, front to rear, instead of one vehicle{} block. Each runs at "
+       "its own place (its vehicle's start) on the track section it is on, with its own profiles "
+       "and contact model if it gives them, at the same prescribed speed as the first. No "
+       "connections (buffers, couplers) are modelled yet: the vehicles do not interact. Outputs "
+       "and assessment of each vehicle go to /vehicles/<name>.",
+       {typed("vehicles", ValueType::Table, "-",
+              "the vehicles, front to rear: { { name = \"loco\", vehicle = v1 }, { name = "
+              "\"wagon1\", vehicle = v2, contact = { method = \"elastic\" } }, ... } (2 to "
+              "100 entries, train.vehicle)",
+              true)}});
+  s.push_back(
+      {"train.vehicle",
+       "One vehicle of train.vehicles (a plain table).",
+       {typed("name", ValueType::String, "-",
+              "the vehicle's name in the run: 1-64 letters, digits, '_' or '-', each its own",
+              true),
+        typed("vehicle", ValueType::Table, "-",
+              "the vehicle, as a vehicle{} block takes it (require \"vehicles.manchester_wagon1\" "
+              "{ speed = 20, start = 60 }); its start places it",
+              true),
+        blockKey("profiles", ValueType::Block, {},
+                 "its own wheel/rail profiles (a plain table with the keys of profiles{}); "
+                 "default: the scenario's profiles{}",
+                 "profiles"),
+        blockKey("contact", ValueType::Block, {},
+                 "its own contact model (a plain table with the keys of contact{}); default: the "
+                 "scenario's contact{}",
+                 "contact")}});
+}
+
 std::vector<BlockSpec> build() {
   std::vector<BlockSpec> s;
   addTrackBlocks(s);
   addIrregularityBlocks(s);
   addContactBlocks(s);
   addVehicleBlocks(s);
+  addTrainBlocks(s);
   addStudyBlock(s);
   addSolverBlock(s);
   addRunBlocks(s);

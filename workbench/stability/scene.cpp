@@ -123,14 +123,20 @@ StabilityScene loadStabilityScene(const std::string& path, const std::string& co
   scenario::LoadOptions lo;
   lo.root = root;
   lo.overrides = scene.overrides;
+  bool loaded = false;
   try {
     scene.spec = scenario::loadScenario(path, lo);
-    return scene;
+    loaded = true;
   } catch (const InputError& e) {
     // Overrides (--set solver.method=bdf) add complaints of their own about a file without
     // blocks: whether the file is a vehicle file is decided on the file alone.
     if (!looksLikeVehicleFile(e) && !(scene.overrides.size() > 0 && isVehicleFile(path, root)))
       throw;
+  }
+  if (loaded) {
+    // The modes and the critical speed are those of one vehicle.
+    scenario::refuseTrain(scene.spec, "modes / critical-speed");
+    return scene;
   }
   // A vehicle file: write the scene around it.
   std::error_code ec;

@@ -253,6 +253,7 @@ int runStress(const StressOptions& o) {
       o.expect.empty() ? std::vector<Expectation>{} : readExpectations(o.expect);
   std::vector<std::string> common = o.overrides;
   scenario::ScenarioSpec spec = loadCommandScenario(o, common);
+  scenario::refuseTrain(spec, "stress");
   if (!spec.has_vehicle)
     throw InputError({o.scenario, 0}, "stress needs a vehicle scenario (no vehicle block)");
   if (o.quick) {

@@ -1,0 +1,185 @@
+// train{} (docs/trains.md): several vehicles of one scenario, each with its own vehicle file,
+// place, profiles and contact model, without connections. A train of two wagons is each wagon's
+// single run bit for bit (fixed step: every update is component-wise), a vehicle with its own
+// contact model runs on it, and what a train cannot be is refused at its file:line before
+// anything runs; the analyses of one vehicle refuse a train.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "tests/run/run_files.hpp"
+#include "workbench/core/error.hpp"
+#include "workbench/io/result_reader.hpp"
+#include "workbench/run/compile.hpp"
+#include "workbench/run/vehicle_run.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kTrain = "tests/run/data/train_two_wagons.lua";
+
+bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+// Every dataset of the single run's vehicle groups is in the train's file under `prefix`, bit
+// for bit; how many were compared.
+int expectSameVehicle(const std::string& single, const std::string& train,
+                      const std::string& prefix) {
+  const rb::io::ResultReader s(single), t(train);
+  std::vector<std::string> paths;
+  for (const char* g : {"/bodies", "/elements", "/contact", "/assessment"})
+    rb::test::datasets(s, g, paths);
+  int compared = 0;
+  for (const auto& p : paths) {
+    const auto a = s.dataset(p), b = t.dataset(prefix + p);
+    EXPECT_TRUE(b) << prefix + p << " is not written";
+    if (!a || !b) continue;
+    EXPECT_TRUE(sameBits(*a, *b)) << prefix + p;
+    ++compared;
+  }
+  return compared;
+}
+
+std::string run(const rb::run::Model& m, const std::string& name) {
+  const rb::test::RunFile f = rb::test::runInto(m, "rb_test_train", name);
+  EXPECT_TRUE(f.result.result.ok) << f.result.result.message;
+  return f.path;
+}
+
+// The default scene's single wagon at `start` as the train's vehicles run (0.3 s, one element).
+std::string single(double start, const std::string& name) {
+  rb::run::Model m =
+      rb::test::compiled("scenarios/default/case3_kec_fast.lua",
+                         {"run.duration=0.3", "vehicle.start=" + std::to_string(start)});
+  const auto id = m.lead().vehicle.findElement("prim_y_ws1_l");
+  EXPECT_TRUE(id);
+  if (id) m.vehicles.front().output_elements = {*id};
+  return run(m, name);
+}
+
+TEST(Train, TwoWagonsAreEachTheirSingleRunBitForBit) {
+  const rb::run::Model m = rb::test::compiled(kTrain);
+  ASSERT_EQ(m.vehicles.size(), 2u);
+  EXPECT_EQ(m.vehicles[0].name, "front");
+  EXPECT_EQ(m.vehicles[1].name, "rear");
+  EXPECT_EQ(m.vehicles[1].vehicle.start, 15.0);
+  ASSERT_EQ(m.vehicles[1].output_elements.size(), 1u) << "run.output.elements per vehicle";
+  const std::string train = run(m, "train.h5");
+  EXPECT_GT(expectSameVehicle(single(40.0, "front.h5"), train, "/vehicles/front"), 500);
+  EXPECT_GT(expectSameVehicle(single(15.0, "rear.h5"), train, "/vehicles/rear"), 500);
+}
+
+TEST(Train, AVehicleRunsOnItsOwnContactModel) {
+  // The rear wagon on elastic contact, the front one on the scenario's KEC.
+  // (ABM's 1.25 ms is beyond the stability limit of the elastic wagon's series dampers: the check
+  // refuses it, 0.25 ms is inside.)
+  const rb::run::Model m = rb::test::compiled(
+      kTrain, {"train.vehicles[2].contact.method=elastic", "solver.step=2.5e-4"});
+  ASSERT_EQ(m.vehicles.size(), 2u);
+  ASSERT_TRUE(m.vehicles[0].contact && m.vehicles[1].contact);
+  EXPECT_EQ(m.vehicles[0].contact->method, rb::dynamics::ContactMethod::Kec);
+  EXPECT_EQ(m.vehicles[1].contact->method, rb::dynamics::ContactMethod::Elastic);
+  const rb::io::ResultReader t(run(m, "mixed.h5"));
+  EXPECT_EQ(t.text("/vehicles/front/contact", "method").value_or(""), "kec");
+  EXPECT_EQ(t.text("/vehicles/rear/contact", "method").value_or(""), "elastic");
+  // The elastic contact writes its patch count per wheel; the wheels carry the wagon.
+  const auto q = t.dataset("/vehicles/rear/contact/ws1/left/normal_force");
+  ASSERT_TRUE(q && !q->empty());
+  EXPECT_GT(q->back(), 40e3);
+  EXPECT_LT(q->back(), 70e3);
+}
+
+// The problems of the train scenario with `replace` put in place of its train{} block, as one
+// text.
+std::string problems(const std::string& trainBlock, const std::vector<std::string>& sets = {}) {
+  std::ifstream in(std::string(RB_SOURCE_DIR) + "/" + kTrain);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto a = text.find("train {");
+  const auto b = text.find("} }\n", a) + 4;
+  text = text.substr(0, a) + trainBlock + "\n" + text.substr(b);
+  const fs::path file = fs::temp_directory_path() / "rb_test_train_bad.lua";
+  std::ofstream(file) << text;
+  try {
+    (void)rb::test::compiled(file.string(), sets);
+  } catch (const rb::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Train, WhatATrainCannotBeIsRefusedAtItsLine) {
+  const std::string w = "wagon { speed = 20, start = ";
+  struct Case {
+    std::string block, expect;
+  };
+  const std::vector<Case> cases = {
+      {"train { vehicles = { { name = \"a\", vehicle = " + w + "40 } } } }", "2 to 100"},
+      {"train { vehicles = { { name = \"a\", vehicle = " + w +
+           "40 } }, { name = \"a\", vehicle = " + w + "10 } } } }",
+       "name 'a' is given twice"},
+      {"train { vehicles = { { name = \"a b\", vehicle = " + w +
+           "40 } }, { name = \"c\", vehicle = " + w + "10 } } } }",
+       "name 'a b' must be"},
+      {"train { vehicles = { { name = \"a\", vehicle = " + w +
+           "10 } }, { name = \"b\", vehicle = " + w + "40 } } } }",
+       "must be behind the vehicles before it"},
+      {"train { vehicles = { { name = \"a\", vehicle = " + w +
+           "40 } }, { name = \"b\", vehicle = " + "wagon { speed = 25, start = 10 } } } }",
+       "every vehicle of a train runs at the first one's"},
+      {"train { vehicles = { { name = \"a\", vehicle = " + w +
+           "40 } }, { name = \"b\", vehicle = " + w + "30 } } } }",
+       "overlaps 'a'"},
+      {"train { vehicles = { { name = \"a\", vehicle = " + w +
+           "40 } }, { name = \"b\", vehicle = 3 "
+           "} } }",
+       "vehicle must be a vehicle table"},
+      {"train { vehicles = { { name = \"a\", vehicle = " + w +
+           "40 } }, { name = \"b\", vehicle = " + w + "10 }, colour = 1 } } }",
+       "colour"},
+      {"vehicle (" + w + "40 })\ntrain { vehicles = { { name = \"a\", vehicle = " + w +
+           "40 } }, { name = \"b\", vehicle = " + w + "10 } } } }",
+       "remove the vehicle{} block"},
+  };
+  for (const auto& c : cases) {
+    const std::string p = problems(c.block);
+    EXPECT_NE(p.find(c.expect), std::string::npos) << c.block << "\n-> " << p;
+    EXPECT_NE(p.find("rb_test_train_bad.lua:"), std::string::npos) << p;
+  }
+}
+
+TEST(Train, SignalPathsNameTheVehicle) {
+  // What a study's metrics may read of a train: each vehicle's groups under /vehicles/<name>.
+  const rb::run::Model m = rb::test::compiled(kTrain);
+  EXPECT_EQ(rb::run::signalProblem(m.spec, "/vehicles/rear/bodies/ws1/y"), "");
+  EXPECT_EQ(rb::run::signalProblem(m.spec, "/vehicles/front/contact/ws2/left/normal_force"), "");
+  EXPECT_EQ(rb::run::signalProblem(m.spec, "/vehicle/speed"), "");
+  EXPECT_NE(rb::run::signalProblem(m.spec, "/bodies/ws1/y").find("/vehicles/<name>/bodies"),
+            std::string::npos);
+  EXPECT_NE(rb::run::signalProblem(m.spec, "/vehicles/back/bodies/ws1/y").find("no vehicle"),
+            std::string::npos);
+  EXPECT_NE(rb::run::signalProblem(m.spec, "/vehicles/rear/bodies/ws9/y").find("no body"),
+            std::string::npos);
+}
+
+TEST(Train, TheAnalysesOfOneVehicleRefuseATrain) {
+  const rb::run::Model m = rb::test::compiled(kTrain);
+  for (const char* command : {"precision", "stress", "effects"}) {
+    try {
+      rb::scenario::refuseTrain(m.spec, command);
+      FAIL() << command << " accepted a train";
+    } catch (const rb::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("`workbench ") + command + "`"),
+                std::string::npos);
+      EXPECT_NE(std::string(e.what()).find("train_two_wagons.lua:"), std::string::npos);
+    }
+  }
+}
+
+}  // namespace
