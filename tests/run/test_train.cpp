@@ -89,6 +89,12 @@ TEST(Train, AVehicleRunsOnItsOwnContactModel) {
   const rb::io::ResultReader t(run(m, "mixed.h5"));
   EXPECT_EQ(t.text("/vehicles/front/contact", "method").value_or(""), "kec");
   EXPECT_EQ(t.text("/vehicles/rear/contact", "method").value_or(""), "elastic");
+  // The run's record of its effects names both models (the summary's "effects" line).
+  EXPECT_NE(t.text("/stats", "effects").value_or("").find("contact: kec+elastic"),
+            std::string::npos);
+  const std::string root = t.text("/", "effects").value_or("");
+  EXPECT_NE(root.find("contact:kec"), std::string::npos);
+  EXPECT_NE(root.find("contact:elastic"), std::string::npos);
   // The elastic contact writes its patch count per wheel; the wheels carry the wagon.
   const auto q = t.dataset("/vehicles/rear/contact/ws1/left/normal_force");
   ASSERT_TRUE(q && !q->empty());

@@ -1,4 +1,5 @@
 // Root provenance attributes and the /track group of a result file (vehicle_run.hpp).
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <vector>
@@ -33,14 +34,17 @@ std::string writeProvenance(const Model& c, io::ResultFile& f, const std::string
     if (c.spec.track.irregularities.source == track::IrregularitySource::Psd)
       seeds = "track.irregularities.seed=" + std::to_string(c.spec.track.irregularities.seed);
   }
-  // The effects of the leading vehicle (the vehicles of a run share the scenario's suspension
-  // kinds, contact method and creep law).
-  if (c.hasVehicle())
-    for (const auto& k : c.lead().vehicle.element_kinds) effects.push_back("suspension:" + k);
-  if (c.hasContact()) {
-    const dynamics::ContactModel& cm = *c.lead().contact;
-    effects.push_back(std::string("contact:") + dynamics::ContactModel::methodName(cm.method));
-    effects.push_back(std::string("creep:") + dynamics::ContactModel::creepName(cm.creep));
+  // The suspension kinds, contact methods and creep laws of the run's vehicles, each once (a
+  // train's vehicles may differ; one vehicle's list is its own).
+  const auto add = [&](const std::string& e) {
+    if (std::find(effects.begin(), effects.end(), e) == effects.end()) effects.push_back(e);
+  };
+  for (const auto& rv : c.vehicles)
+    for (const auto& k : rv.vehicle.element_kinds) add("suspension:" + k);
+  for (const auto& rv : c.vehicles) {
+    if (!rv.contact) continue;
+    add(std::string("contact:") + dynamics::ContactModel::methodName(rv.contact->method));
+    add(std::string("creep:") + dynamics::ContactModel::creepName(rv.contact->creep));
   }
   f.attr("/", "effects", join(effects, "\n"));
   f.attr("/", "seeds", seeds);

@@ -28,6 +28,21 @@ void contactEffects(const dynamics::ContactModel& c, std::vector<EffectUse>& out
   out.push_back({Effect::WheelsetSpin, std::string(nameOf(c.spin))});
 }
 
+// `add` into `out` by effect: an effect already there with another detail lists both, in the
+// order they came ("kec+elastic": a train whose vehicles run on different contact models).
+void mergeEffects(std::vector<EffectUse>& out, const std::vector<EffectUse>& add) {
+  for (const auto& e : add) {
+    const auto it = std::find_if(out.begin(), out.end(),
+                                 [&](const EffectUse& o) { return o.effect == e.effect; });
+    if (it == out.end()) {
+      out.push_back(e);
+      continue;
+    }
+    const std::string joined = "+" + it->detail + "+";
+    if (joined.find("+" + e.detail + "+") == std::string::npos) it->detail += "+" + e.detail;
+  }
+}
+
 std::string assessmentGroups(const assessment::AssessmentSpec& a) {
   std::string out;
   const std::pair<bool, const char*> groups[] = {
@@ -56,25 +71,38 @@ std::string percent(double share) {
 
 std::vector<EffectUse> compiledEffects(const Model& m) {
   std::vector<EffectUse> out;
-  // The effects of the leading vehicle: the vehicles of a run share the scenario's.
   if (!m.hasVehicle()) return out;
-  const vehicle::VehicleModel& v = m.lead().vehicle;
-  if (m.hasContact())
-    contactEffects(*m.lead().contact, out);
-  else
-    out.push_back({Effect::GuidedWheelsets, ""});
+  // Every vehicle's contact model (a train's may differ) and the elements of all of them.
+  std::size_t spring_dampers = 0, series = 0, shear = 0, bending = 0, bumpstops = 0, outputs = 0;
+  bool patches = false;
+  for (const auto& rv : m.vehicles) {
+    std::vector<EffectUse> own;
+    if (rv.contact)
+      contactEffects(*rv.contact, own);
+    else
+      own.push_back({Effect::GuidedWheelsets, ""});
+    mergeEffects(out, own);
+    const vehicle::VehicleModel& v = rv.vehicle;
+    spring_dampers += v.spring_dampers.size();
+    series += v.series_dampers.size();
+    shear += v.shear_springs.size();
+    bending += v.bending_springs.size();
+    bumpstops += v.bumpstops.size();
+    outputs += rv.output_elements.size();
+    patches = patches || (rv.contact && m.spec.run.output_patches);
+  }
   if (m.track && m.track->irregularities())
     out.push_back({Effect::Irregularities,
                    m.spec.track.irregularities.source == track::IrregularitySource::Psd
                        ? "psd"
                        : "measured"});
-  addCount(out, Effect::SpringDampers, v.spring_dampers.size());
-  addCount(out, Effect::SeriesDampers, v.series_dampers.size());
-  addCount(out, Effect::ShearSprings, v.shear_springs.size());
-  addCount(out, Effect::BendingSprings, v.bending_springs.size());
-  addCount(out, Effect::BumpStops, v.bumpstops.size());
-  if (m.hasContact() && m.spec.run.output_patches) out.push_back({Effect::Patches, ""});
-  addCount(out, Effect::ElementOutputs, m.lead().output_elements.size());
+  addCount(out, Effect::SpringDampers, spring_dampers);
+  addCount(out, Effect::SeriesDampers, series);
+  addCount(out, Effect::ShearSprings, shear);
+  addCount(out, Effect::BendingSprings, bending);
+  addCount(out, Effect::BumpStops, bumpstops);
+  if (patches) out.push_back({Effect::Patches, ""});
+  addCount(out, Effect::ElementOutputs, outputs);
   if (m.spec.run.body_accelerations) out.push_back({Effect::BodyAccelerations, ""});
   const assessment::AssessmentSpec a = applicableAssessment(m);
   if (a.any()) out.push_back({Effect::Assessment, assessmentGroups(a)});
