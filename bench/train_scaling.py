@@ -113,8 +113,9 @@ def main(argv=None) -> int:
     base = next((r for r in rows if r["vehicles"] == 1 and r["instructions"] != ""), None)
     for r in rows:
         if base and r["instructions"] != "":
-            r["relative_per_vehicle"] = (f"{float(r['instructions_per_eval_per_vehicle']) / "
-                                         f"float(base['instructions_per_eval_per_vehicle']):.3f}")
+            ratio = (float(r["instructions_per_eval_per_vehicle"]) /
+                     float(base["instructions_per_eval_per_vehicle"]))
+            r["relative_per_vehicle"] = f"{ratio:.3f}"
     os.makedirs(os.path.dirname(os.path.abspath(a.csv)), exist_ok=True)
     with open(a.csv, "w", newline="") as f:
         w = csv.DictWriter(f, list(rows[0].keys()))
