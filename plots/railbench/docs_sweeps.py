@@ -233,6 +233,27 @@ def throughput_block(outdir: str) -> str:
     return "\n".join(parts)
 
 
+TRAIN_SCALING = "train_scaling"
+
+
+def train_scaling_block(outdir: str) -> str:
+    """docs/trains.md "Cost": per number of wagons the rhs evaluations, CPU and instructions per
+    evaluation per vehicle (bench/train_scaling.py)."""
+    rows = read_csv(os.path.join(outdir, TRAIN_SCALING, "train_scaling.csv"))
+    if not rows:
+        return missing(f"{outdir}/{TRAIN_SCALING}/train_scaling.csv "
+                       f"(./wb studies --only {TRAIN_SCALING})")
+    body = [[r["vehicles"], r["rhs_evals"], fmt(num(r["us_per_eval"]), "{:.1f}"),
+             fmt(num(r["us_per_eval_per_vehicle"]), "{:.1f}"),
+             fmt(num(r["instructions_per_eval"]), "{:.0f}"),
+             fmt(num(r["instructions_per_eval_per_vehicle"]), "{:.0f}"),
+             fmt(num(r["relative_per_vehicle"]), "{:.3f}")] for r in rows]
+    return table(["wagons", "rhs evaluations", "CPU per evaluation [us]",
+                  "CPU per evaluation per wagon [us]", "instructions per evaluation",
+                  "instructions per evaluation per wagon", "per wagon / one wagon's"], body)
+
+
 def sweep_blocks(outdir: str) -> Dict[str, Dict[str, str]]:
     return {"studies.md": {SWEEP: sweep_block(outdir)},
-            "performance.md": {THROUGHPUT: throughput_block(outdir)}}
+            "performance.md": {THROUGHPUT: throughput_block(outdir)},
+            "trains.md": {TRAIN_SCALING: train_scaling_block(outdir)}}
