@@ -1,6 +1,9 @@
 #pragma once
 // The run library's tests that read what a run wrote: a compiled model run into a fresh result
 // file under the temporary folder, and the numeric datasets of a group.
+#include <gtest/gtest.h>
+
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -48,6 +51,29 @@ inline void datasets(const io::ResultReader& r, const std::string& group,
     else
       datasets(r, p, out);
   }
+}
+
+inline bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+// Every dataset of the single run's vehicle groups is in the file of a run of several vehicles
+// under `prefix` (/vehicles/<name>), bit for bit; returns how many were compared.
+inline int expectSameVehicle(const std::string& single, const std::string& several,
+                             const std::string& prefix) {
+  const io::ResultReader s(single), t(several);
+  std::vector<std::string> paths;
+  for (const char* g : {"/bodies", "/elements", "/contact", "/assessment"}) datasets(s, g, paths);
+  int compared = 0;
+  for (const auto& p : paths) {
+    const auto a = s.dataset(p), b = t.dataset(prefix + p);
+    EXPECT_TRUE(b) << prefix + p << " is not written";
+    if (!a || !b) continue;
+    EXPECT_TRUE(sameBits(*a, *b)) << prefix + p;
+    ++compared;
+  }
+  return compared;
 }
 
 }  // namespace rb::test

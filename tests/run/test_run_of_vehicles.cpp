@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -42,30 +41,8 @@ std::string runInto(const rb::run::Model& m, const std::string& name) {
   return run.path;
 }
 
-using rb::test::datasets;
-
-bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() &&
-         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
-}
-
-// Every dataset of the single run's vehicle groups is in the run of two under `prefix`, bit for
-// bit; returns how many were compared.
-int expectSameVehicle(const std::string& single, const std::string& train,
-                      const std::string& prefix) {
-  const rb::io::ResultReader s(single), t(train);
-  std::vector<std::string> paths;
-  for (const char* g : {"/bodies", "/elements", "/contact", "/assessment"}) datasets(s, g, paths);
-  int compared = 0;
-  for (const auto& p : paths) {
-    const auto a = s.dataset(p), b = t.dataset(prefix + p);
-    EXPECT_TRUE(b) << prefix + p << " is not written";
-    if (!a || !b) continue;
-    EXPECT_TRUE(sameBits(*a, *b)) << prefix + p;
-    ++compared;
-  }
-  return compared;
-}
+using rb::test::expectSameVehicle;
+using rb::test::sameBits;
 
 TEST(RunOfVehicles, TwoUncoupledWagonsAreEachTheirSingleRunBitForBit) {
   const rb::run::Model front = compiled(40.0), rear = compiled(20.0);

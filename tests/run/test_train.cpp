@@ -5,7 +5,6 @@
 // anything runs; the analyses of one vehicle refuse a train.
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -23,29 +22,7 @@ namespace fs = std::filesystem;
 
 const std::string kTrain = "tests/run/data/train_two_wagons.lua";
 
-bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() &&
-         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
-}
-
-// Every dataset of the single run's vehicle groups is in the train's file under `prefix`, bit
-// for bit; how many were compared.
-int expectSameVehicle(const std::string& single, const std::string& train,
-                      const std::string& prefix) {
-  const rb::io::ResultReader s(single), t(train);
-  std::vector<std::string> paths;
-  for (const char* g : {"/bodies", "/elements", "/contact", "/assessment"})
-    rb::test::datasets(s, g, paths);
-  int compared = 0;
-  for (const auto& p : paths) {
-    const auto a = s.dataset(p), b = t.dataset(prefix + p);
-    EXPECT_TRUE(b) << prefix + p << " is not written";
-    if (!a || !b) continue;
-    EXPECT_TRUE(sameBits(*a, *b)) << prefix + p;
-    ++compared;
-  }
-  return compared;
-}
+using rb::test::expectSameVehicle;
 
 std::string run(const rb::run::Model& m, const std::string& name) {
   const rb::test::RunFile f = rb::test::runInto(m, "rb_test_train", name);
