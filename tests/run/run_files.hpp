@@ -53,6 +53,18 @@ inline void datasets(const io::ResultReader& r, const std::string& group,
   }
 }
 
+// The default scene (ABM, fixed step, KEC contact, assessment on), 0.3 s, the wagon's reference
+// point at `start`, with one suspension element written (what run.output.elements gives): the
+// single run a vehicle of a run of several is compared with.
+inline run::Model defaultSceneWagon(double start) {
+  run::Model m = compiled("scenarios/default/case3_kec_fast.lua",
+                          {"run.duration=0.3", "vehicle.start=" + std::to_string(start)});
+  const auto id = m.lead().vehicle.findElement("prim_y_ws1_l");
+  EXPECT_TRUE(id);
+  if (id) m.vehicles.front().output_elements = {*id};
+  return m;
+}
+
 inline bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() &&
          (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);

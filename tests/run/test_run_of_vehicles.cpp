@@ -22,17 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The default scene (ABM, fixed step, KEC contact, assessment on), 0.3 s, the wagon's reference
-// point at `start`, with one suspension element written.
 rb::run::Model compiled(double start) {
-  rb::run::Model m =
-      rb::test::compiled("scenarios/default/case3_kec_fast.lua",
-                         {"run.duration=0.3", "vehicle.start=" + std::to_string(start)});
-  // One element written too (what run.output.elements gives).
-  const auto id = m.lead().vehicle.findElement("prim_y_ws1_l");
-  EXPECT_TRUE(id);
-  if (id) m.vehicles.front().output_elements = {*id};
-  return m;
+  return rb::test::defaultSceneWagon(start);
 }
 
 std::string runInto(const rb::run::Model& m, const std::string& name) {

@@ -32,13 +32,7 @@ std::string run(const rb::run::Model& m, const std::string& name) {
 
 // The default scene's single wagon at `start` as the train's vehicles run (0.3 s, one element).
 std::string single(double start, const std::string& name) {
-  rb::run::Model m =
-      rb::test::compiled("scenarios/default/case3_kec_fast.lua",
-                         {"run.duration=0.3", "vehicle.start=" + std::to_string(start)});
-  const auto id = m.lead().vehicle.findElement("prim_y_ws1_l");
-  EXPECT_TRUE(id);
-  if (id) m.vehicles.front().output_elements = {*id};
-  return run(m, name);
+  return run(rb::test::defaultSceneWagon(start), name);
 }
 
 TEST(Train, TwoWagonsAreEachTheirSingleRunBitForBit) {
