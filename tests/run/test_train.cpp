@@ -145,6 +145,36 @@ TEST(Train, SignalPathsNameTheVehicle) {
             std::string::npos);
 }
 
+TEST(Train, NamedParametersReachOneVehicle) {
+  // A group of the second wagon's own table (its anti-roll bars), its bodies by name: the first
+  // wagon keeps its values.
+  const rb::run::Model m =
+      rb::test::compiled(kTrain, {"train.vehicles[2].vehicle.groups.anti_roll.stiffness=12345",
+                                  "train.vehicles[2].vehicle.bodies.car.mass=40000"});
+  auto stiffness = [&](std::size_t k) {
+    for (const auto& e : m.spec.train[k].vehicle.elements)
+      if (e.name == "anti_roll_bogie1") return e.stiffness;
+    return -1.0;
+  };
+  auto carMass = [&](std::size_t k) {
+    for (const auto& b : m.spec.train[k].vehicle.bodies)
+      if (b.name == "car") return b.mass;
+    return -1.0;
+  };
+  EXPECT_EQ(stiffness(1), 12345.0);
+  EXPECT_NE(stiffness(0), 12345.0);
+  EXPECT_GT(stiffness(0), 0.0);
+  EXPECT_EQ(carMass(1), 40000.0);
+  EXPECT_EQ(carMass(0), 32000.0);
+  // A group the vehicle does not have, and an entry the train does not have, are refused.
+  EXPECT_THROW(
+      (void)rb::test::compiled(kTrain, {"train.vehicles[2].vehicle.groups.anti_rol.stiffness=1"}),
+      rb::InputError);
+  EXPECT_THROW(
+      (void)rb::test::compiled(kTrain, {"train.vehicles[3].vehicle.groups.anti_roll.stiffness=1"}),
+      rb::InputError);
+}
+
 TEST(Train, TheAnalysesOfOneVehicleRefuseATrain) {
   const rb::run::Model m = rb::test::compiled(kTrain);
   for (const char* command : {"precision", "stress", "effects"}) {

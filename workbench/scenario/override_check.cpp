@@ -292,32 +292,59 @@ void checkStudyOverrides(const StudySpec& study, const std::string& studyText,
   d.throwIfAny();
 }
 
+// The named parameters of one vehicle table; `path` is what its --set paths begin with
+// ("vehicle", or "train.vehicles[2].vehicle").
+void vehicleParameters(std::ostream& os, const Node& v, const std::string& path,
+                       const std::string& scenarioPath) {
+  Diagnostics d;
+  vehicle::VehicleSpec spec;
+  buildVehicle(v, spec, d);
+  d.throwIfAny();
+  os << "Named parameters of the vehicle '" << spec.name << "' of " << scenarioPath
+     << (path == "vehicle" ? std::string() : " at " + path)
+     << " (--set paths for run, check and study; SI units):\n";
+  os << "\nBodies (--set " << path
+     << ".bodies.NAME.KEY=VALUE; keys: " << join(settableKeys("body"), " ") << "):\n";
+  for (const auto& b : spec.bodies)
+    os << "  " << b.name << " (" << nameOf(b.kind) << "): mass=" << formatNumber(b.mass) << "\n";
+  os << "\nElements (--set " << path << ".elements.NAME.KEY=VALUE):\n";
+  if (const Node* elements = v.field("elements"))
+    for (const Node& e : elements->items)
+      os << "  " << itemName(e) << " (" << e.kind << "): " << keysWithValues(e) << "\n";
+  std::ostringstream groups;
+  listGroups(groups, v);
+  std::string text = groups.str();
+  // The group paths of a train's vehicle begin with its own path.
+  for (std::size_t at = 0; (at = text.find("--set vehicle.", at)) != std::string::npos;
+       at += path.size())
+    text.replace(at + 6, 7, path);
+  os << text;
+}
+
 std::string vehicleParametersText(const std::string& scenarioPath, const std::string& root) {
   HostOptions ho;
   ho.root = root;
   LuaHost host(ho);
   const Node tree = host.runFile(scenarioPath);
-  const Node* v = tree.field("vehicle");
-  if (v == nullptr)
-    throw InputError({scenarioPath, 0},
-                     "no vehicle{} block: give a scenario that uses the vehicle, e.g. "
-                     "scenarios/studies/case3_base.lua");
-  Diagnostics d;
-  vehicle::VehicleSpec spec;
-  buildVehicle(*v, spec, d);
-  d.throwIfAny();
   std::ostringstream os;
-  os << "Named parameters of the vehicle '" << spec.name << "' of " << scenarioPath
-     << " (--set paths for run, check and study; SI units):\n";
-  os << "\nBodies (--set vehicle.bodies.NAME.KEY=VALUE; keys: " << join(settableKeys("body"), " ")
-     << "):\n";
-  for (const auto& b : spec.bodies)
-    os << "  " << b.name << " (" << nameOf(b.kind) << "): mass=" << formatNumber(b.mass) << "\n";
-  os << "\nElements (--set vehicle.elements.NAME.KEY=VALUE):\n";
-  if (const Node* elements = v->field("elements"))
-    for (const Node& e : elements->items)
-      os << "  " << itemName(e) << " (" << e.kind << "): " << keysWithValues(e) << "\n";
-  listGroups(os, *v);
+  if (const Node* v = tree.field("vehicle")) {
+    vehicleParameters(os, *v, "vehicle", scenarioPath);
+    return os.str();
+  }
+  // A train: every vehicle's, under its own path.
+  const Node* train = tree.field("train");
+  const Node* list = train != nullptr ? train->field("vehicles") : nullptr;
+  if (list == nullptr || list->items.empty())
+    throw InputError({scenarioPath, 0},
+                     "no vehicle{} or train{} block: give a scenario that uses the vehicle, e.g. "
+                     "scenarios/studies/case3_base.lua");
+  for (std::size_t k = 0; k < list->items.size(); ++k) {
+    const Node* v = list->items[k].field("vehicle");
+    if (v == nullptr) continue;
+    if (k > 0) os << "\n";
+    vehicleParameters(os, *v, "train.vehicles[" + std::to_string(k + 1) + "].vehicle",
+                      scenarioPath);
+  }
   return os.str();
 }
 

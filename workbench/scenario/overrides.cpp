@@ -335,6 +335,19 @@ std::optional<std::string> overrideProblem(Node& root, const std::string& assign
   if (!node) return problem;
   const std::string value = assignment.substr(eq + 1);
   if (tokens[0] == "vehicle" && tokens[1] == "groups") return setGroup(*node, tokens, value, loc);
+  // train.vehicles[k].vehicle.groups.GROUP.KEY: the group of that vehicle's own table.
+  if (tokens[0] == "train" && tokens.size() >= 5 && tokens[1] == "vehicles" &&
+      isIndexToken(tokens[2]) && tokens[3] == "vehicle" && tokens[4] == "groups") {
+    Node* list = node->field("vehicles");
+    const std::size_t k = std::stoul(tokens[2]);
+    if (list == nullptr || k < 1 || k > list->items.size())
+      return "train.vehicles has no entry " + tokens[2];
+    Node* vehicle = list->items[k - 1].field("vehicle");
+    if (vehicle == nullptr || vehicle->type != Node::Type::Table)
+      return "train.vehicles[" + tokens[2] + "] has no vehicle table";
+    return setGroup(*vehicle, std::vector<std::string>(tokens.begin() + 3, tokens.end()), value,
+                    loc);
+  }
   return setPath(node, tokens, 1, value, loc);
 }
 
