@@ -7,8 +7,6 @@
 #include <iomanip>
 #include <limits>
 #include <map>
-#include <optional>
-#include <regex>
 #include <sstream>
 
 #include "workbench/core/error.hpp"

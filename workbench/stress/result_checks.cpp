@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 namespace {
 
 template <class... A>
-std::string printf(const char* format, A... args) {
+std::string formatted(const char* format, A... args) {
   char buf[512];
   std::snprintf(buf, sizeof buf, format, args...);
   return buf;
@@ -100,7 +100,7 @@ void checkConsistency(const io::ResultReader& f, int exitCode, ResultCheck& r,
   if (exitCode == 0) {
     if (r.status != "ok") p.push_back("exit 0 but /stats/status = '" + r.status + "'");
     if (t_end > 0.0 && !t.empty() && std::abs(t.back() - t_end) > 1e-6 * std::max(1.0, t_end))
-      p.push_back(printf("ok run ends at t = %g, not %g", t.back(), t_end));
+      p.push_back(formatted("ok run ends at t = %g, not %g", t.back(), t_end));
     return;
   }
   if (r.status != "failed") p.push_back("exit 2 but /stats/status = '" + r.status + "'");
@@ -111,7 +111,7 @@ void checkConsistency(const io::ResultReader& f, int exitCode, ResultCheck& r,
     p.push_back("failure record without failure time: '" + head + "'");
   if (!f.number("/stats", "failure_s")) p.emplace_back("failure record without distance");
   if (t_end > 0.0 && !(r.t_reached < t_end))
-    p.push_back(printf("failed but t_reached = %g >= t_end", r.t_reached));
+    p.push_back(formatted("failed but t_reached = %g >= t_end", r.t_reached));
   if (!t.empty() && t.back() > r.t_reached + 1e-9)
     p.emplace_back("partial output beyond t_reached");
 }
@@ -220,17 +220,17 @@ void extremes(const io::ResultReader& f, const std::string& path, const std::vec
 std::vector<std::string> implausible(const ResultCheck& r, const Bounds& b) {
   std::vector<std::string> p;
   if (r.max_abs_y_mm > b.y_mm)
-    p.push_back(printf("|y| relative to the rails = %.2f mm > %.1f mm", r.max_abs_y_mm, b.y_mm));
+    p.push_back(formatted("|y| relative to the rails = %.2f mm > %.1f mm", r.max_abs_y_mm, b.y_mm));
   if (r.max_normal_kN > b.normal_kN)
-    p.push_back(printf("normal force %.0f kN > %.0f kN", r.max_normal_kN, b.normal_kN));
+    p.push_back(formatted("normal force %.0f kN > %.0f kN", r.max_normal_kN, b.normal_kN));
   if (-r.min_normal_kN > b.lift_kN)
     p.push_back(
-        printf("normal force %.0f kN (wheel lift beyond %.0f kN)", r.min_normal_kN, b.lift_kN));
+        formatted("normal force %.0f kN (wheel lift beyond %.0f kN)", r.min_normal_kN, b.lift_kN));
   if (r.max_flange_kN > b.flange_kN)
-    p.push_back(printf("flange force %.0f kN > %.0f kN", r.max_flange_kN, b.flange_kN));
+    p.push_back(formatted("flange force %.0f kN > %.0f kN", r.max_flange_kN, b.flange_kN));
   if (r.max_indent_mm > b.indent_mm)
-    p.push_back(printf("flange indentation %.3f mm > %.1f mm", r.max_indent_mm, b.indent_mm));
-  if (r.max_abs_yq > b.yq) p.push_back(printf("|Y/Q| = %.2f > %.1f", r.max_abs_yq, b.yq));
+    p.push_back(formatted("flange indentation %.3f mm > %.1f mm", r.max_indent_mm, b.indent_mm));
+  if (r.max_abs_yq > b.yq) p.push_back(formatted("|Y/Q| = %.2f > %.1f", r.max_abs_yq, b.yq));
   return p;
 }
 

@@ -138,7 +138,7 @@ std::string cleanFailure(const CaseRun& run, const Classified& c) {
   return run.failureText();
 }
 
-// A reference's error (for a failed run: up to where it stopped) as the map's message.
+// The reference run of a hardened case and its own outcome, against which its runs are judged.
 struct Reference {
   const CaseRun* run = nullptr;
   Outcome outcome = Outcome::FailedBadly;
