@@ -321,7 +321,7 @@ TEST(NamedParameters, HelpListsTheNamedParameters) {
   } catch (const rb::InputError& e) {
     noVehicle = e.what();
   }
-  EXPECT_TRUE(contains(noVehicle, "no vehicle{} block")) << noVehicle;
+  EXPECT_TRUE(contains(noVehicle, "no vehicle{} or train{} block")) << noVehicle;
   // The command line prints the same listing.
   const std::string cmd = std::string(RB_BINARY_DIR) + "/workbench/app/workbench --root " +
                           RB_SOURCE_DIR + " help vehicle " + kDir + "wagon.lua";
