@@ -124,7 +124,8 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, intern
   // Only the integrator's evaluations are timed: outputs belong to the observer's share.
   vehicle::StageClock* clock = mode == EvalMode::Rhs && stages_.start() ? &stages_ : nullptr;
   const ContactModels models{*model_, *contact_, layout_, irr_};
-  const StageInput in{t, y, model_->speedAt(t), model_->acceleration, mode};
+  const vehicle::ForwardMotion fm = vehicle::forwardMotion(*model_, work.bodies, t);
+  const StageInput in{t, y, fm.speed, fm.acceleration, mode, fm.travel};
   if (const int rc = internal::setIndependentCoordinates(models, in, work); rc != 0) return rc;
   if (clock) clock->mark(Stage::Coordinates);
   if (const int rc = internal::solveConstraints(models, in, work); rc != 0) return rc;

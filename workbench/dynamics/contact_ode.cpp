@@ -112,6 +112,12 @@ integ::ModelFailure ContactVehicleOde::lastFailure() const {
 const vehicle::Workspace& ContactVehicleOde::workspace() const {
   return work_->bodies;
 }
+vehicle::Workspace& ContactVehicleOde::bodyWorkspace() {
+  return work_->bodies;
+}
+void ContactVehicleOde::inputsChanged() {
+  work_->next_valid = false;
+}
 const ContactStats& ContactVehicleOde::stats() const {
   return work_->stats;
 }
@@ -143,7 +149,8 @@ void ContactVehicleOde::shareOutputEvaluations(bool on) {
 
 int ContactVehicleOde::setCoordinates(double t, const double* y) {
   const ContactModels models{*model_, *contact_, layout_, irr_};
-  const StageInput in{t, y, model_->speedAt(t), model_->acceleration, EvalMode::Output};
+  const vehicle::ForwardMotion fm = vehicle::forwardMotion(*model_, work_->bodies, t);
+  const StageInput in{t, y, fm.speed, fm.acceleration, EvalMode::Output, fm.travel};
   if (const int rc = internal::setIndependentCoordinates(models, in, *work_); rc != 0) return rc;
   return internal::solveConstraints(models, in, *work_);
 }

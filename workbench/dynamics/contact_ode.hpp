@@ -224,6 +224,11 @@ class ContactVehicleOde final : public vehicle::VehicleOde {
   ~ContactVehicleOde() override;
   ContactVehicleOde(ContactVehicleOde&&) noexcept;
 
+ protected:
+  vehicle::Workspace& bodyWorkspace() override;
+  // The right-hand side kept by outputs() was made with the old train inputs.
+  void inputsChanged() override;
+
  private:
   int evaluate(double t, const double* y, double* ydot, internal::EvalMode mode);
   int setCoordinates(double t, const double* y);

@@ -188,7 +188,7 @@ void setWheelsetCoordinates(const ContactModels& models, const StageInput& in, i
   }
   if (!l.spinFree()) {
     const double rc = models.contact.centredRadius();
-    q[kPitch] = models.vehicle.travel(in.t) / rc;
+    q[kPitch] = in.travel / rc;
     qd[kPitch] = in.speed / rc;
   }
 }
@@ -204,7 +204,7 @@ int setIndependentCoordinates(const ContactModels& models, const StageInput& in,
     vehicle::Vector6d& qd = work.bodies.qd[b];
     q.setZero();
     qd.setZero();
-    q[kS] = m.bodyS(static_cast<int>(b), in.t);
+    q[kS] = m.start + m.bodies[b].x + in.travel;  // VehicleModel::bodyS
     qd[kS] = in.speed;
     const int k = l.freeSlot(b);
     if (k < 0) continue;

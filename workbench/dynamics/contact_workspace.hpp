@@ -53,6 +53,7 @@ struct StageInput {
   double speed = 0.0;         // [m/s] V(t)
   double acceleration = 0.0;  // [m/s^2] a = sddot of every body
   EvalMode mode = EvalMode::Rhs;
+  double travel = 0.0;  // [m] distance from vehicle.start: s of body b = start + x_b + travel
 };
 
 // One contact patch of a wheel during an evaluation.

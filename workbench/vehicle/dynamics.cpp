@@ -225,6 +225,12 @@ void evaluate(const VehicleModel& m, const double* series_f, Workspace& ws) {
   }
   for (std::size_t b = 0; b < m.bodies.size(); ++b)
     pointResultantsToQ(ws.kin[b], ws.susp_force[b], ws.susp_moment[b], ws.force[b]);
+  // Forces from outside the vehicle (a train's buffers and couplers), at their points.
+  for (const AppliedLoad& a : ws.applied) {
+    const BodyKinematics& k = ws.kin[static_cast<std::size_t>(a.body)];
+    addPointForce(k, k.attach.A * a.u, k.tf.A.transpose() * a.force,
+                  ws.force[static_cast<std::size_t>(a.body)]);
+  }
 
   // Bending springs: relative rotation of the attachment frames in the master track frame.
   // theta_dot = T1 (A_ij omega_j - w_i sdot_i) - T2 (omega_i - w_i sdot_i), omega = absolute

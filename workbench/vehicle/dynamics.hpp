@@ -12,6 +12,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "workbench/vehicle/kinematics.hpp"
@@ -39,9 +40,33 @@ struct PointPairMotion {
   Eigen::Vector3d w_delta = Eigen::Vector3d::Zero();  // w_i x delta (the s column of J_i)
 };
 
+// The motion of a vehicle along the track when a train computes it (its longitudinal equation,
+// train/train_ode.hpp) instead of the model's prescribed V(t) = V0 + a t: the distance travelled
+// from vehicle.start, the speed and the acceleration, shared by every body of the vehicle.
+struct ForwardMotion {
+  double travel = 0.0;        // [m]
+  double speed = 0.0;         // [m/s]
+  double acceleration = 0.0;  // [m/s^2]
+  bool operator==(const ForwardMotion&) const = default;
+};
+
+// A force on a body from outside the vehicle (a buffer or coupler of the next vehicle): applied at
+// the point u of the body's attachment frame (relative to its CoM), global components.
+struct AppliedLoad {
+  int body = 0;
+  Eigen::Vector3d u = Eigen::Vector3d::Zero();      // [m]
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();  // [N]
+  bool operator==(const AppliedLoad&) const = default;
+};
+
 struct Workspace {
   // Inputs: full coordinates and rates of every body (set by the ODE adapter).
   std::vector<Vector6d> q, qd;
+  // Inputs set by a train (none for a vehicle alone): the forward motion that replaces the
+  // model's prescribed one, and the forces from the vehicles next to it, added to Q by
+  // evaluate() as point forces (addPointForce).
+  std::optional<ForwardMotion> motion;
+  std::vector<AppliedLoad> applied;
   // Outputs of evaluate():
   std::vector<BodyKinematics> kin;
   std::vector<Matrix6d> mass;   // M_i
@@ -64,6 +89,13 @@ struct Workspace {
 };
 
 Workspace makeWorkspace(const VehicleModel& model);
+
+// The forward motion at t: the train's when it set one (ws.motion), else the model's prescribed
+// travel(t), speedAt(t), acceleration.
+inline ForwardMotion forwardMotion(const VehicleModel& m, const Workspace& ws, double t) {
+  if (ws.motion) return *ws.motion;
+  return {m.travel(t), m.speedAt(t), m.acceleration};
+}
 
 // The relative motion of the attachment points of element g computed from the element's own
 // geometry, at the body kinematics and body-pair placements of the last evaluate(): equal to

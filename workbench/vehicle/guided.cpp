@@ -17,13 +17,14 @@ VehicleLayout guidedLayout(const VehicleModel& m) {
 
 void guidedCoordinates(const VehicleModel& m, const VehicleLayout& l, double t, const double* y,
                        Workspace& ws) {
-  const double V = m.speedAt(t);
+  const ForwardMotion fm = forwardMotion(m, ws, t);
+  const double V = fm.speed;
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
     Vector6d& q = ws.q[b];
     Vector6d& qd = ws.qd[b];
     q.setZero();
     qd.setZero();
-    q[kS] = m.bodyS(static_cast<int>(b), t);
+    q[kS] = m.start + m.bodies[b].x + fm.travel;  // VehicleModel::bodyS
     qd[kS] = V;
     const int k = l.freeSlot(b);
     if (k >= 0) {
@@ -33,7 +34,7 @@ void guidedCoordinates(const VehicleModel& m, const VehicleLayout& l, double t, 
       }
     } else if (m.bodies[b].kind == BodyKind::Wheelset) {
       // Rolling without slip on r0: theta = travel / r0, theta_dot = V(t) / r0.
-      q[kPitch] = m.travel(t) / m.wheel_radius;
+      q[kPitch] = fm.travel / m.wheel_radius;
       qd[kPitch] = V / m.wheel_radius;
     }
   }
@@ -47,6 +48,7 @@ int guidedRhs(const VehicleModel& m, const VehicleLayout& l, double t, const dou
   if (clock) clock->mark(Stage::Coordinates);
   evaluate(m, l.n_series > 0 ? y + l.series(0) : nullptr, ws);
   if (clock) clock->mark(Stage::VehicleForces);
+  const double acceleration = forwardMotion(m, ws, t).acceleration;
   for (int k = 0; k < l.n_free; ++k) {
     const std::size_t b = l.freeBody(k);
     const Matrix6d& M = ws.mass[b];
@@ -57,7 +59,7 @@ int guidedRhs(const VehicleModel& m, const VehicleLayout& l, double t, const dou
     const Eigen::LLT<Eigen::Matrix<double, 5, 5>> llt(Mpp);
     if (llt.info() != Eigen::Success) return 1;
     const Eigen::Matrix<double, 5, 1> acc =
-        llt.solve(ws.force[b].segment<5>(1) - M.block<5, 1>(1, kS) * m.acceleration);
+        llt.solve(ws.force[b].segment<5>(1) - M.block<5, 1>(1, kS) * acceleration);
     for (int c = 0; c < 5; ++c) {
       ydot[l.position(k, c)] = y[l.rate(k, c)];
       ydot[l.rate(k, c)] = acc[c];
@@ -128,9 +130,9 @@ int GuidedVehicleOde::bodyCoordinates(double t, const double* y, std::span<Vecto
 
 Vector6d GuidedVehicleOde::accelerationOf(std::size_t b) const {
   Vector6d qdd = Vector6d::Zero();
-  qdd[kS] = model_->acceleration;
-  if (model_->bodies[b].kind == BodyKind::Wheelset)
-    qdd[kPitch] = model_->acceleration / model_->wheel_radius;
+  const double a = ws_.motion ? ws_.motion->acceleration : model_->acceleration;
+  qdd[kS] = a;
+  if (model_->bodies[b].kind == BodyKind::Wheelset) qdd[kPitch] = a / model_->wheel_radius;
   const int k = layout_.freeSlot(b);
   if (k >= 0)
     for (int c = 0; c < 5; ++c) qdd[1 + c] = scratch_[static_cast<std::size_t>(layout_.rate(k, c))];

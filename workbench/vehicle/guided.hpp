@@ -82,6 +82,9 @@ class GuidedVehicleOde final : public VehicleOde {
   // The workspace after the last evaluation (rhs or an output function).
   const Workspace& workspace() const override { return ws_; }
 
+ protected:
+  Workspace& bodyWorkspace() override { return ws_; }
+
  private:
   // Generalised accelerations of body b after guidedRhs into scratch_.
   Vector6d accelerationOf(std::size_t b) const;

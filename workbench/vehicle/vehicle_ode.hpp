@@ -3,6 +3,7 @@
 // on wheel/rail contact (dynamics::ContactVehicleOde), with one state layout (VehicleLayout) and
 // one naming scheme for the states ("car.y", "ws1.theta_dot", "series[3].f").
 #include <Eigen/Dense>
+#include <algorithm>
 #include <span>
 #include <string>
 #include <utility>
@@ -61,12 +62,33 @@ class VehicleOde : public integ::OdeSystem {
   // The vehicle workspace of the last evaluation (element values, forces, body kinematics).
   virtual const Workspace& workspace() const = 0;
 
+  // Inputs a train sets before every evaluation (train/train_ode.hpp): the forward motion that
+  // replaces the prescribed one, and the forces of the neighbouring vehicles' buffers and
+  // couplers. A vehicle alone has neither. Allocation-free once the loads' count is reached.
+  void setForwardMotion(const ForwardMotion& motion) {
+    Workspace& ws = bodyWorkspace();
+    if (ws.motion && *ws.motion == motion) return;
+    ws.motion = motion;
+    inputsChanged();
+  }
+  void setAppliedLoads(std::span<const AppliedLoad> loads) {
+    Workspace& ws = bodyWorkspace();
+    if (std::equal(loads.begin(), loads.end(), ws.applied.begin(), ws.applied.end())) return;
+    ws.applied.assign(loads.begin(), loads.end());
+    inputsChanged();
+  }
+
   // Sampled timing of the rhs stages (stage_clock.hpp): rhs() evaluations only, not the outputs
   // and initial-state evaluations. setStageSampling(0) turns it off.
   const StageClock& stageClock() const { return stages_; }
   void setStageSampling(unsigned period) { stages_.setPeriod(period); }
 
  protected:
+  // The workspace the evaluations read the train's inputs from.
+  virtual Workspace& bodyWorkspace() = 0;
+  // Called when those inputs change: what was computed for the old ones is stale.
+  virtual void inputsChanged() {}
+
   VehicleOde(const VehicleModel& model, VehicleLayout layout)
       : model_(&model), layout_(std::move(layout)) {}
 
