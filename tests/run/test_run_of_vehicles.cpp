@@ -145,7 +145,10 @@ TEST(RunOfVehicles, WhatARunOfSeveralCannotBeIsRefused) {
     rb::run::RunVehicle v = rear.vehicles.front();
     v.name = "rear";
     rb::run::addVehicle(m, v);
-    m.connections.push_back({0, 1});  // buffers and couplers are not modelled yet
+    rb::train::Connection c;  // rear to front: a connection joins a vehicle to the one behind it
+    c.front = 1;
+    c.rear = 0;
+    m.connections.push_back(c);
     EXPECT_THROW((void)rb::run::makeRunOde(m), std::logic_error);
   }
 }

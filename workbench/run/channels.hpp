@@ -15,6 +15,7 @@
 #include "workbench/dynamics/contact_ode.hpp"
 #include "workbench/dynamics/names.hpp"
 #include "workbench/io/schema.hpp"
+#include "workbench/train/train_ode.hpp"
 
 namespace rb::run {
 
@@ -178,6 +179,42 @@ inline constexpr ChannelRow<BodySample> kBodyAccelerationChannels[] = {
      [](const BodySample& b) { return b.a[1]; }},
     {"az", "m/s^2", "absolute centre-of-mass acceleration, body track-frame z",
      [](const BodySample& b) { return b.a[2]; }},
+};
+
+// Per connection of a train, /train/connections/<front>-<rear>/<name>.
+inline constexpr ChannelRow<train::ConnectionState> kConnectionChannels[] = {
+    {"gap", "m", "gap between the buffer faces on the centre line (< 0: buffers pressed)",
+     [](const train::ConnectionState& c) { return c.gap; }},
+    {"force", "N", "longitudinal force of the connection: draw gear - buffers (tension > 0)",
+     [](const train::ConnectionState& c) { return c.longitudinal; }},
+    {"buffer_left", "N", "compressive force of the left buffer pair",
+     [](const train::ConnectionState& c) { return c.buffer_left; }},
+    {"buffer_right", "N", "compressive force of the right buffer pair",
+     [](const train::ConnectionState& c) { return c.buffer_right; }},
+    {"draw_gear", "N", "tensile force of the draw gear",
+     [](const train::ConnectionState& c) { return c.draw_gear; }},
+    {"lateral_front", "N",
+     "lateral force of the connection on the front car body, its track frame (left > 0)",
+     [](const train::ConnectionState& c) { return c.lateral_front; }},
+    {"lateral_rear", "N", "lateral force of the connection on the rear car body, its track frame",
+     [](const train::ConnectionState& c) { return c.lateral_rear; }},
+};
+
+// Per vehicle of a train whose motion is a state, /vehicles/<name>/motion/<name>.
+inline constexpr ChannelRow<train::VehicleMotion> kMotionChannels[] = {
+    {"travel", "m", "distance travelled from vehicle.start",
+     [](const train::VehicleMotion& m) { return m.travel; }},
+    {"speed", "m/s", "speed along the track", [](const train::VehicleMotion& m) { return m.speed; }},
+    {"acceleration", "m/s^2", "acceleration along the track",
+     [](const train::VehicleMotion& m) { return m.acceleration; }},
+    {"traction", "N", "traction (> 0) or braking (< 0) force",
+     [](const train::VehicleMotion& m) { return m.traction; }},
+    {"resistance", "N", "running resistance (Davis)",
+     [](const train::VehicleMotion& m) { return m.resistance; }},
+    {"grade_force", "N", "the weight's component along the track (uphill > 0)",
+     [](const train::VehicleMotion& m) { return m.grade; }},
+    {"connection_force", "N", "the connections' force along the track on the vehicle",
+     [](const train::VehicleMotion& m) { return m.connections; }},
 };
 
 }  // namespace rb::run

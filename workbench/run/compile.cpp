@@ -159,11 +159,30 @@ double RunVehicle::trailingX() const {
   return rear;
 }
 
+double Model::maxTravel(const RunVehicle& v, double t) const {
+  if (!longitudinal.spec.on) return v.vehicle.travel(t);
+  // The motion is computed: bounded by the train as one mass (its connections are internal)
+  // under every vehicle's largest traction and the steepest downhill slope of the track, from V0;
+  // the run itself refuses a vehicle past the track's end.
+  double traction = 0.0, mass = 0.0;
+  for (std::size_t k = 0; k < vehicles.size(); ++k) {
+    mass += train::longitudinalMass(vehicles[k].vehicle);
+    double most = 0.0;
+    for (const double f : longitudinal.traction[k].force) most = std::max(most, f);
+    traction += most;
+  }
+  double downhill = 0.0;
+  const track::TrackGeometry& g = track->geometry();
+  for (double s = 0.0; s <= g.length(); s += 10.0) downhill = std::max(downhill, -g.at(s).gradient);
+  const double a = traction / mass + v.vehicle.gravity * downhill;
+  return v.vehicle.speedAt(0.0) * t + 0.5 * a * t * t;
+}
+
 Model::Stretch Model::coveredStretch() const {
   Stretch out{1e300, -1e300};
   for (const auto& v : vehicles) {
     out.s_from = std::min(out.s_from, v.vehicle.start + v.trailingX());
-    out.s_to = std::max(out.s_to, v.vehicle.start + v.leadingX() + v.vehicle.travel(t_end));
+    out.s_to = std::max(out.s_to, v.vehicle.start + v.leadingX() + maxTravel(v, t_end));
   }
   return out;
 }
@@ -197,7 +216,7 @@ void compileParts(const CompileOptions& o, Model& c, Diagnostics& d) {
   std::vector<scenario::TrainVehicleSpec> entries = spec.train;
   if (entries.empty())
     entries.push_back({"", spec.vehicle, spec.has_profiles, spec.profiles, spec.has_contact,
-                       spec.guided, spec.contact, spec.vehicle.loc});
+                       spec.guided, spec.contact, spec.vehicle.loc, {}, {}});
   dynamics::TableCache cache =
       o.table_cache.empty() ? dynamics::TableCache() : dynamics::TableCache(o.table_cache);
   for (const auto& e : entries) {
@@ -234,6 +253,91 @@ void checkTrainPlaces(const Model& c, Diagnostics& d) {
                      "': its foremost body starts at s = " + formatNumber(lead) +
                      " m, not behind the rearmost body of '" + front.name +
                      "' at s = " + formatNumber(front_rear) + " m");
+  }
+}
+
+// The car body a connection acts on: by name, or the vehicle's only car body.
+int connectionBody(const RunVehicle& v, const std::string& name, const SourceLoc& loc,
+                   const std::string& what, Diagnostics& d) {
+  const vehicle::VehicleModel& m = v.vehicle;
+  if (!name.empty()) {
+    const int b = m.findBody(name);
+    if (b < 0 || (m.bodies[static_cast<std::size_t>(b)].kind != vehicle::BodyKind::CarBody &&
+                  m.bodies[static_cast<std::size_t>(b)].kind != vehicle::BodyKind::Bogie))
+      d.add(loc, what + ": vehicle '" + v.name + "' has no car body or bogie named '" + name + "'");
+    return b;
+  }
+  int found = -1, count = 0;
+  for (std::size_t b = 0; b < m.bodies.size(); ++b)
+    if (m.bodies[b].kind == vehicle::BodyKind::CarBody) {
+      found = static_cast<int>(b);
+      ++count;
+    }
+  if (count != 1)
+    d.add(loc, what + ": vehicle '" + v.name + "' has " + std::to_string(count) +
+                   " car bodies: name the one the connection acts on (front_body, rear_body)");
+  return found;
+}
+
+// train.connections and train.longitudinal on the compiled vehicles.
+void compileTrain(Model& c, Diagnostics& d) {
+  const auto& spec = c.spec;
+  const auto place = [&](const std::string& name) {
+    for (std::size_t k = 0; k < c.vehicles.size(); ++k)
+      if (c.vehicles[k].name == name) return static_cast<int>(k);
+    return -1;
+  };
+  for (const auto& cs : spec.train_connections) {
+    train::validateConnection(cs, d);
+    train::Connection con;
+    con.name = cs.front + "-" + cs.rear;
+    con.front = place(cs.front);
+    con.rear = place(cs.rear);
+    if (con.front < 0 || con.rear != con.front + 1) continue;  // refused by the scenario check
+    const std::string what = "train.connections '" + con.name + "'";
+    const RunVehicle& f = c.vehicles[static_cast<std::size_t>(con.front)];
+    const RunVehicle& r = c.vehicles[static_cast<std::size_t>(con.rear)];
+    con.front_body = connectionBody(f, cs.front_body, cs.loc, what, d);
+    con.rear_body = connectionBody(r, cs.rear_body, cs.loc, what, d);
+    if (con.front_body < 0 || con.rear_body < 0) continue;
+    // The buffer faces' gap at the start, along the track: they may touch, not overlap.
+    const double gap = f.vehicle.start +
+                       f.vehicle.bodies[static_cast<std::size_t>(con.front_body)].x +
+                       cs.front_end -
+                       (r.vehicle.start + r.vehicle.bodies[static_cast<std::size_t>(con.rear_body)].x +
+                        cs.rear_end);
+    if (gap < -1e-9)
+      d.add(cs.loc, what + ": the buffer faces overlap by " + formatNumber(-gap) +
+                        " m at the start (place '" + r.name + "' so that they touch: its start " +
+                        formatNumber(r.vehicle.start + gap) + " m or less)");
+    else if (gap > 1.0)
+      d.add(cs.loc, what + ": the buffer faces are " + formatNumber(gap) +
+                        " m apart at the start (more than 1 m: are the vehicles' starts and the "
+                        "headstocks' x right?)");
+    con.spec = cs;
+    c.connections.push_back(std::move(con));
+  }
+  c.longitudinal.spec = spec.train_longitudinal;
+  if (!spec.train_longitudinal.on) return;
+  if (!(spec.run.duration > 0))
+    d.add(spec.train_longitudinal.loc,
+          "train.longitudinal: give run.duration (the distance a train with a computed motion "
+          "covers is not known before it runs)");
+  for (std::size_t k = 0; k < c.vehicles.size(); ++k) {
+    const auto& e = spec.train[k];
+    const std::string what = "train.vehicles[" + std::to_string(k + 1) + "]";
+    train::validateTraction(e.traction, what, d);
+    train::validateResistance(e.resistance, what, d);
+    c.longitudinal.traction.push_back(e.traction);
+    c.longitudinal.resistance.push_back(e.resistance);
+    const vehicle::VehicleModel& m = c.vehicles[k].vehicle;
+    int ref = 0;
+    for (std::size_t b = 0; b < m.bodies.size(); ++b)
+      if (m.bodies[b].kind == vehicle::BodyKind::CarBody) {
+        ref = static_cast<int>(b);
+        break;
+      }
+    c.longitudinal.reference_body.push_back(ref);
   }
 }
 
@@ -459,6 +563,36 @@ void checkInitialState(const std::vector<vehicle::InitialCondition>& initial,
             why + "); give smaller offsets");
 }
 
+// The start of a train is each vehicle's equilibrium: a connection loaded there (buffers
+// pressed, a draw gear stretched beyond its slack) would not be one; the vehicles' starts place
+// them.
+constexpr double kStartForceTolerance = 1.0;  // [N]
+
+void checkTrainStart(const Model& c, train::TrainOde& ode, const Eigen::VectorXd& y0,
+                     Diagnostics& d) {
+  if (ode.prepare(0.0, y0.data()) != 0) {
+    d.add(c.spec.vehicle.loc, "train: the start state cannot be evaluated: " + ode.lastError());
+    return;
+  }
+  for (std::size_t i = 0; i < ode.connections().size(); ++i) {
+    const train::ConnectionState& st = ode.connectionState(static_cast<int>(i));
+    const train::Connection& con = ode.connections()[i];
+    // 1 N: the rounding of touching faces gives forces of 1e-27 N, a real preload kilonewtons.
+    if (std::max({st.buffer_left, st.buffer_right, st.draw_gear}) > kStartForceTolerance)
+      d.add(con.spec.loc, "train.connections '" + con.name + "': loaded at the start (gap " +
+                              formatNumber(st.gap) + " m: buffers " +
+                              formatNumber(st.buffer_left) + " N and " +
+                              formatNumber(st.buffer_right) + " N, draw gear " +
+                              formatNumber(st.draw_gear) +
+                              " N), so the start is not an equilibrium; place the vehicles so "
+                              "that the buffer faces touch or stand apart by at most the draw "
+                              "gear's slack");
+  }
+  Eigen::VectorXd ydot(y0.size());
+  if (ode.rhs(0.0, y0.data(), ydot.data()) != 0 || !ydot.allFinite())
+    d.add(c.spec.vehicle.loc, "train: the start state cannot be evaluated: " + ode.lastError());
+}
+
 }  // namespace
 
 std::unique_ptr<vehicle::VehicleOde> makeVehicleOde(const Model& m, std::size_t k) {
@@ -473,7 +607,7 @@ std::unique_ptr<train::TrainOde> makeRunOde(const Model& m) {
   std::vector<train::TrainOde::Part> parts;
   for (std::size_t k = 0; k < m.vehicles.size(); ++k)
     parts.push_back({m.vehicles[k].name, makeVehicleOde(m, k)});
-  return std::make_unique<train::TrainOde>(std::move(parts), m.connections);
+  return std::make_unique<train::TrainOde>(std::move(parts), m.connections, m.longitudinal);
 }
 
 void addVehicle(Model& m, RunVehicle v) {
@@ -505,6 +639,7 @@ Model compile(const CompileOptions& o) {
   c.spec = scenario::loadScenario(o.scenario, lo);
   Diagnostics d;
   compileParts(o, c, d);
+  if (c.vehicles.size() > 1) compileTrain(c, d);
   if (!c.spec.has_vehicle) checkWithoutVehicle(c, d);
   if (c.hasVehicle()) checkVehicleRun(c, d);
   d.throwIfAny();
@@ -532,6 +667,9 @@ Model compile(const CompileOptions& o) {
       checkInitialState(c.vehicles[static_cast<std::size_t>(k)].initial, ode->vehicle(k), yk, d);
       y0.segment(ode->offset(k), yk.size()) = yk;
     }
+    ode->initialLongitudinal(y0);
+    d.throwIfAny();
+    checkTrainStart(c, *ode, y0, d);
     d.throwIfAny();
     checkStepLimit(c, *ode, y0, d);
     d.throwIfAny();

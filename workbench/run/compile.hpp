@@ -58,9 +58,10 @@ struct Model {
   // distance are measured at its foremost body). Empty: a track-only scenario. A scenario gives
   // one vehicle; a run of several is built by adding vehicles (addVehicle) to a compiled one.
   std::vector<RunVehicle> vehicles;
-  // Force elements between the vehicles (buffers, couplers): none yet (train::TrainOde refuses
-  // them), so the vehicles of a run move independently.
+  // Buffers and draw gear between neighbouring vehicles (train.connections), and the vehicles'
+  // longitudinal motion when it is a state (train.longitudinal).
   std::vector<train::Connection> connections;
+  train::Longitudinal longitudinal;
   integ::SolverSpec solver;           // the scenario's, or the paper's default (ABM, 1 ms)
   double track_build_s = 0.0;         // [s] wall time of the track build
   double t_end = 0.0;                 // [s] simulated time of a vehicle run
@@ -85,6 +86,9 @@ struct Model {
     double s_from = 0.0, s_to = 0.0;  // [m]
   };
   Stretch coveredStretch() const;
+  // Distance vehicle v travels by t: its prescribed travel, or with a longitudinal motion an upper
+  // bound of it.
+  double maxTravel(const RunVehicle& v, double t) const;
 };
 
 // Throws InputError with every problem found.

@@ -149,6 +149,29 @@ void finishAssessments(const Model& m, const std::vector<RunPart>& parts, std::s
   for (auto& n : out.assessment_notes) out.assessment_summary.push_back("  " + n);
 }
 
+// The connections' channels, then every vehicle's motion when it is a state.
+void declareTrainChannels(const train::TrainOde& ode, std::vector<OutputChannel>& out) {
+  for (const auto& c : ode.connections())
+    for (const auto& row : kConnectionChannels)
+      out.push_back({"/train/connections/" + c.name + "/" + std::string(row.name),
+                     std::string(row.unit), std::string(row.meaning), ""});
+  if (!ode.longitudinal()) return;
+  for (int k = 0; k < ode.vehicles(); ++k)
+    for (const auto& row : kMotionChannels)
+      out.push_back({"/vehicles/" + ode.name(k) + "/motion/" + std::string(row.name),
+                     std::string(row.unit), std::string(row.meaning), ""});
+}
+
+double* sampleTrain(const train::TrainOde& ode, double* out) {
+  for (std::size_t i = 0; i < ode.connections().size(); ++i)
+    for (const auto& row : kConnectionChannels)
+      *out++ = row.get(ode.connectionState(static_cast<int>(i)));
+  if (!ode.longitudinal()) return out;
+  for (int k = 0; k < ode.vehicles(); ++k)
+    for (const auto& row : kMotionChannels) *out++ = row.get(ode.motion(k));
+  return out;
+}
+
 // The contact models' counters summed over the vehicles, and the largest creepage of any.
 void writeContactCounters(const Model& m, const std::vector<RunPart>& parts, io::ResultFile& f,
                           VehicleRunResult& out) {
@@ -181,14 +204,16 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   r.system = ode.get();
   r.solver = m.solver;
   r.y0 = startState(parts, ode->size(), f);
+  ode->initialLongitudinal(r.y0);
+  train::TrainOde* train = ode.get();
   r.t_end = m.t_end;
   r.output_every = m.spec.run.output_every;
   r.progress = o.progress;
   // Arc length of the leading body, the body compile() runs to the track end, so that a failure's
   // distance is where the first wheelset was.
   const double lead_s = parts.front().lead;
-  r.distance = [lead_s, &lead](double t, const Eigen::VectorXd&) {
-    return lead_s + lead.travel(t);
+  r.distance = [lead_s, &lead, train](double t, const Eigen::VectorXd& y) {
+    return lead_s + (train->longitudinal() ? y[train->travelIndex(0)] : lead.travel(t));
   };
 
   // Channels, in the order the sampler fills them: the run's speed, then vehicle by vehicle.
@@ -199,10 +224,14 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     for (const auto& v : m.vehicles) names += (names.empty() ? "" : "\n") + v.name;
     f.attr("/vehicles", "names", names);
   }
+  declareTrainChannels(*train, r.outputs);
   writeSeriesSchema(r.outputs, contact, f);
   r.sample = [&](double t, const Eigen::VectorXd& y, double* out) {
-    *out++ = lead.speedAt(t);
+    // The vehicles' forward motion and the connections' loads at this state first.
+    (void)train->prepare(t, y.data());
+    *out++ = train->longitudinal() ? train->motion(0).speed : lead.speedAt(t);
     for (auto& p : parts) out = p.outputs->sample(t, y.data() + p.offset, out);
+    out = sampleTrain(*train, out);
   };
   f.attr("/", "solver", m.solver.method);
   f.attr("/", "contact_method",
@@ -223,10 +252,14 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
   if (assess) {
     extra.every = parts.front().assessment.signals.dt;
     extra.sample = [&](double t, const Eigen::VectorXd& y) {
-      for (auto& p : parts) {
+      (void)train->prepare(t, y.data());
+      for (std::size_t k = 0; k < parts.size(); ++k) {
+        RunPart& p = parts[k];
         p.outputs->state().at(t, y.data() + p.offset);
+        const double travel = train->longitudinal() ? train->motion(static_cast<int>(k)).travel
+                                                    : p.v->vehicle.travel(t);
         sampleAssessment(p.assessment, p.outputs->state(), p.outputs->contact() != nullptr, t,
-                         p.lead + p.v->vehicle.travel(t));
+                         p.lead + travel);
       }
     };
     r.extra = &extra;

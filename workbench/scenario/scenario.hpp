@@ -9,6 +9,8 @@
 #include "workbench/integrators/spec.hpp"
 #include "workbench/scenario/effect_names.hpp"
 #include "workbench/track/spec.hpp"
+#include "workbench/train/connection.hpp"
+#include "workbench/train/longitudinal.hpp"
 #include "workbench/vehicle/spec.hpp"
 
 namespace rb::scenario {
@@ -40,6 +42,8 @@ struct TrainVehicleSpec {
   bool guided = false;
   dynamics::ContactSpec contact;
   SourceLoc loc;
+  train::TractionSpec traction;  // train.longitudinal only
+  train::ResistanceSpec resistance;
 };
 
 struct ScenarioSpec {
@@ -62,6 +66,8 @@ struct ScenarioSpec {
   // is also vehicle, profiles and contact above (with has_*), the leading vehicle that the
   // analyses of one vehicle work on.
   std::vector<TrainVehicleSpec> train;
+  std::vector<train::ConnectionSpec> train_connections;
+  train::LongitudinalSpec train_longitudinal;
   bool has_solver = false;
   integ::SolverSpec solver;
   RunSpec run;

@@ -665,14 +665,83 @@ void addTrainBlocks(std::vector<BlockSpec>& s) {
       {"train",
        "Several vehicles on one track, front to rear, instead of one vehicle{} block. Each runs at "
        "its own place (its vehicle's start) on the track section it is on, with its own profiles "
-       "and contact model if it gives them, at the same prescribed speed as the first. No "
-       "connections (buffers, couplers) are modelled yet: the vehicles do not interact. Outputs "
-       "and assessment of each vehicle go to /vehicles/<name>.",
+       "and contact model if it gives them, starting at the first one's speed. Buffers and draw "
+       "gear between neighbours (connections) act on their car bodies; with longitudinal{} every "
+       "vehicle's motion along the track is a state driven by its traction or braking, running "
+       "resistance, the track's slope and the connections (else the speed is prescribed). "
+       "Outputs and assessment of each vehicle go to /vehicles/<name>, the connections' to "
+       "/train/connections/<front>-<rear> (docs/trains.md).",
        {typed("vehicles", ValueType::Table, "-",
               "the vehicles, front to rear: { { name = \"loco\", vehicle = v1 }, { name = "
               "\"wagon1\", vehicle = v2, contact = { method = \"elastic\" } }, ... } (2 to "
               "100 entries, train.vehicle)",
-              true)}});
+              true),
+        typed("connections", ValueType::Table, "-",
+              "buffers and draw gear between neighbouring vehicles: { { front = \"loco\", rear = "
+              "\"wagon1\", front_end = -6.5, rear_end = 6.5, buffers = {...}, draw_gear = {...} "
+              "}, ... } (train.connection); default: none, the vehicles do not interact"),
+        blockKey("longitudinal", ValueType::Block, {},
+                 "the vehicles' motion along the track as states (train.longitudinal); default: "
+                 "the speed prescribed by the vehicles' speed and acceleration",
+                 "train.longitudinal")}});
+  s.push_back(
+      {"train.connection",
+       "One connection of train.connections (a plain table): buffers and draw gear between the "
+       "car bodies of two neighbouring vehicles, their headstocks at front_end and rear_end. The "
+       "gap between the buffer faces is zero when they touch; the vehicles' starts place them.",
+       {typed("front", ValueType::String, "-", "the front vehicle's name", true),
+        typed("rear", ValueType::String, "-", "the name of the vehicle right behind it", true),
+        typed("front_body", ValueType::String, "-",
+              "the front vehicle's car body the connection acts on (default: its only car body)"),
+        typed("rear_body", ValueType::String, "-", "the rear vehicle's car body (default: its only)"),
+        required(num("front_end", "m", 0.0,
+                     "x of the front vehicle's rear headstock (buffer faces) from its car body's "
+                     "centre of mass, < 0",
+                     -50.0, 0.0, false)),
+        required(num("rear_end", "m", 0.0,
+                     "x of the rear vehicle's front headstock from its car body's centre, > 0",
+                     0.0, 50.0, false)),
+        blockKey("buffers", ValueType::Block, {}, "side buffers (train.buffers)", "train.buffers"),
+        blockKey("draw_gear", ValueType::Block, {}, "draw gear (train.draw_gear)",
+                 "train.draw_gear")}});
+  s.push_back(
+      {"train.buffers",
+       "The side buffers of a connection (a plain table): one buffer's force against its stroke, "
+       "loading and unloading; the two buffers of each side act in series.",
+       {typed("loading", ValueType::PairList, "m, N",
+              "{{stroke, force}, ...} while the buffer is pressed, from {0, 0}", true),
+        typed("unloading", ValueType::PairList, "m, N",
+              "{{stroke, force}, ...} while it is released, at most the loading force", true),
+        required(num("spacing", "m", 0.0, "lateral distance between the two buffers", 0.0, 5.0,
+                     true)),
+        required(num("height", "m", 0.0, "buffer height above the top of rail", 0.0, 5.0, true)),
+        num("friction", "-", 0.0, "buffer-head friction coefficient", 0.0, 1.0)}});
+  s.push_back(
+      {"train.draw_gear",
+       "The draw gear of a connection (a plain table): tension once the gap between the buffer "
+       "faces exceeds the slack.",
+       {required(num("stiffness", "N/m", 0.0, "stiffness in tension", 0.0, kInf, true)),
+        num("slack", "m", 0.0, "gap at which the draw gear takes tension", 0.0, 1.0),
+        num("friction", "-", 0.0,
+            "hysteresis ratio: the force is k e (1 + friction) stretching, (1 - friction) "
+            "releasing",
+            0.0, 1.0),
+        required(num("height", "m", 0.0, "draw gear height above the top of rail", 0.0, 5.0,
+                     true))}});
+  s.push_back({"train.longitudinal",
+               "The vehicles' motion along the track as states (a plain table): each vehicle a "
+               "rigid mass driven by its traction, resistance, the track's slope and the "
+               "connections.",
+               {num("min_speed", "m/s", 1.0,
+                    "a vehicle slower than this ends the run (the creepages are referred to the "
+                    "forward speed)",
+                    0.1, kInf)}});
+  s.push_back({"train.resistance",
+               "Running resistance of a vehicle in the Davis form a + b v + c v^2 (a plain "
+               "table).",
+               {num("a", "N", 0.0, "constant term", 0.0, kInf),
+                num("b", "N s/m", 0.0, "term in v", 0.0, kInf),
+                num("c", "N s^2/m^2", 0.0, "term in v^2", 0.0, kInf)}});
   s.push_back(
       {"train.vehicle",
        "One vehicle of train.vehicles (a plain table).",
@@ -690,7 +759,14 @@ void addTrainBlocks(std::vector<BlockSpec>& s) {
         blockKey("contact", ValueType::Block, {},
                  "its own contact model (a plain table with the keys of contact{}); default: the "
                  "scenario's contact{}",
-                 "contact")}});
+                 "contact"),
+        typed("traction", ValueType::PairList, "s, N",
+              "{{t, force}, ...}: traction (> 0) or braking (< 0) at the rails against time, "
+              "linear between points, held beyond (train.longitudinal only)"),
+        typed("traction_by_distance", ValueType::PairList, "m, N",
+              "{{distance travelled, force}, ...}: the same against the distance"),
+        blockKey("resistance", ValueType::Block, {}, "running resistance (train.resistance)",
+                 "train.resistance")}});
 }
 
 std::vector<BlockSpec> build() {

@@ -1,24 +1,164 @@
 #include "workbench/train/train_ode.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
 namespace rb::train {
 
-TrainOde::TrainOde(std::vector<Part> parts, const std::vector<Connection>& connections)
-    : parts_(std::move(parts)) {
+double longitudinalMass(const vehicle::VehicleModel& m) {
+  double mass = 0.0;
+  for (const auto& b : m.bodies) {
+    if (b.kind == vehicle::BodyKind::Frame) continue;
+    mass += b.mass;
+    if (b.kind == vehicle::BodyKind::Wheelset)
+      mass += b.inertia.y() / (m.wheel_radius * m.wheel_radius);
+  }
+  return mass;
+}
+
+namespace {
+
+// The generalised force on s of point loads on one body (addPointForce's s row).
+double sForce(const vehicle::BodyKinematics& k, const std::vector<vehicle::AppliedLoad>& loads) {
+  vehicle::Vector6d Q = vehicle::Vector6d::Zero();
+  for (const auto& l : loads)
+    vehicle::addPointForce(k, k.attach.A * l.u, k.tf.A.transpose() * l.force, Q);
+  return Q[vehicle::kS];
+}
+
+}  // namespace
+
+TrainOde::TrainOde(std::vector<Part> parts, std::vector<Connection> connections,
+                   Longitudinal longitudinal)
+    : parts_(std::move(parts)),
+      connections_(std::move(connections)),
+      longitudinal_(std::move(longitudinal)) {
   if (parts_.empty()) throw std::logic_error("TrainOde: a train needs a vehicle");
-  // Buffers and couplers would add forces between the parts' bodies (and off-diagonal blocks to
-  // the Jacobian pattern); until they are modelled a connection is refused, never ignored.
-  if (!connections.empty())
-    throw std::logic_error("TrainOde: connections between vehicles are not modelled");
   for (const auto& p : parts_) {
     offsets_.push_back(size_);
     size_ += p.ode->size();
   }
+  const int n = static_cast<int>(parts_.size());
+  for (const auto& c : connections_) {
+    if (c.front < 0 || c.rear != c.front + 1 || c.rear >= n)
+      throw std::logic_error("TrainOde: a connection joins neighbouring vehicles");
+    if (vehicle(c.front).layout().freeSlot(static_cast<std::size_t>(c.front_body)) < 0 ||
+        vehicle(c.rear).layout().freeSlot(static_cast<std::size_t>(c.rear_body)) < 0)
+      throw std::logic_error("TrainOde: a connection acts on car bodies or bogies");
+  }
+  longitudinal_offset_ = size_;
+  if (longitudinal_.spec.on) {
+    if (longitudinal_.traction.size() != parts_.size() ||
+        longitudinal_.resistance.size() != parts_.size() ||
+        longitudinal_.reference_body.size() != parts_.size())
+      throw std::logic_error("TrainOde: longitudinal motion needs every vehicle's forces");
+    size_ += 2 * n;
+  }
+  motion_.resize(parts_.size());
+  for (int k = 0; k < n; ++k) motion_[static_cast<std::size_t>(k)].mass =
+      longitudinalMass(vehicle(k).model());
+  states_.resize(connections_.size());
+  kin_.resize(2 * connections_.size());
+  loads_.resize(parts_.size());
+}
+
+void TrainOde::initialLongitudinal(Eigen::VectorXd& y) const {
+  if (!longitudinal()) return;
+  for (int k = 0; k < vehicles(); ++k) {
+    y[travelIndex(k)] = 0.0;
+    y[speedIndex(k)] = vehicle(k).model().speedAt(0.0);
+  }
+}
+
+int TrainOde::prepare(double t, const double* y) {
+  const int n = vehicles();
+  for (int k = 0; k < n; ++k) {
+    VehicleMotion& mo = motion_[static_cast<std::size_t>(k)];
+    const vehicle::VehicleModel& m = vehicle(k).model();
+    if (longitudinal()) {
+      mo.travel = y[travelIndex(k)];
+      mo.speed = y[speedIndex(k)];
+      if (!(mo.speed >= longitudinal_.spec.min_speed)) {
+        std::ostringstream os;
+        os << "vehicle '" << name(k) << "' slowed to " << mo.speed << " m/s at t = " << t
+           << " s, below train.longitudinal.min_speed = " << longitudinal_.spec.min_speed
+           << " m/s (the contact creepages are referred to the forward speed: a train is not "
+              "simulated to a stand)";
+        error_ = os.str();
+        return 1;
+      }
+    } else {
+      mo.travel = m.travel(t);
+      mo.speed = m.speedAt(t);
+      mo.acceleration = m.acceleration;
+    }
+    mo.connections = 0.0;
+    loads_[static_cast<std::size_t>(k)].clear();
+  }
+  error_.clear();
+  // The connections on the car bodies at their current motion.
+  for (std::size_t i = 0; i < connections_.size(); ++i) {
+    const Connection& c = connections_[i];
+    vehicle::BodyKinematics* kin[2] = {&kin_[2 * i], &kin_[2 * i + 1]};
+    const int veh[2] = {c.front, c.rear}, body[2] = {c.front_body, c.rear_body};
+    for (int e = 0; e < 2; ++e) {
+      const vehicle::VehicleOde& ode = vehicle(veh[e]);
+      const vehicle::VehicleModel& m = ode.model();
+      const vehicle::VehicleLayout& l = ode.layout();
+      const auto b = static_cast<std::size_t>(body[e]);
+      const int slot = l.freeSlot(b);
+      const double* yk = y + offset(veh[e]);
+      vehicle::Vector6d q = vehicle::Vector6d::Zero(), qd = vehicle::Vector6d::Zero();
+      q[vehicle::kS] = m.start + m.bodies[b].x + motion_[static_cast<std::size_t>(veh[e])].travel;
+      qd[vehicle::kS] = motion_[static_cast<std::size_t>(veh[e])].speed;
+      for (int cc = 0; cc < vehicle::kFreeBodyDof; ++cc) {
+        q[1 + cc] = yk[l.position(slot, cc)];
+        qd[1 + cc] = yk[l.rate(slot, cc)];
+      }
+      vehicle::bodyKinematics(m.geometry, m.bodies[b].rotation, m.bodies[b].height, q, qd,
+                              *kin[e]);
+    }
+    ConnectionState& st = states_[i];
+    connectionForces(c.spec, *kin[0], c.front_body,
+                     vehicle(c.front).model().bodies[static_cast<std::size_t>(c.front_body)].height,
+                     *kin[1], c.rear_body,
+                     vehicle(c.rear).model().bodies[static_cast<std::size_t>(c.rear_body)].height,
+                     st);
+    motion_[static_cast<std::size_t>(c.front)].connections += sForce(*kin[0], st.on_front);
+    motion_[static_cast<std::size_t>(c.rear)].connections += sForce(*kin[1], st.on_rear);
+    auto& lf = loads_[static_cast<std::size_t>(c.front)];
+    auto& lr = loads_[static_cast<std::size_t>(c.rear)];
+    lf.insert(lf.end(), st.on_front.begin(), st.on_front.end());
+    lr.insert(lr.end(), st.on_rear.begin(), st.on_rear.end());
+  }
+  for (int k = 0; k < n; ++k) {
+    VehicleMotion& mo = motion_[static_cast<std::size_t>(k)];
+    if (longitudinal()) {
+      const vehicle::VehicleModel& m = vehicle(k).model();
+      const auto ref = static_cast<std::size_t>(longitudinal_.reference_body[static_cast<std::size_t>(k)]);
+      const double gradient = m.geometry.at(m.start + m.bodies[ref].x + mo.travel).gradient;
+      mo.traction = tractionForce(longitudinal_.traction[static_cast<std::size_t>(k)], t, mo.travel);
+      mo.resistance = resistanceForce(longitudinal_.resistance[static_cast<std::size_t>(k)], mo.speed);
+      // The slope's share of the weight along the track: gradient = tan(slope), uphill > 0.
+      mo.grade = mo.mass * m.gravity * gradient / std::sqrt(1.0 + gradient * gradient);
+      mo.acceleration =
+          (mo.traction - mo.resistance - mo.grade + mo.connections) / mo.mass;
+      vehicle(k).setForwardMotion({mo.travel, mo.speed, mo.acceleration});
+    }
+    if (!connections_.empty()) vehicle(k).setAppliedLoads(loads_[static_cast<std::size_t>(k)]);
+  }
+  return 0;
 }
 
 int TrainOde::rhs(double t, const double* y, double* ydot) {
+  if (prepare(t, y) != 0) {
+    failed_ = vehicles();  // the train's own failure
+    return 1;
+  }
   for (std::size_t k = 0; k < parts_.size(); ++k) {
     const int rc = parts_[k].ode->rhs(t, y + offsets_[k], ydot + offsets_[k]);
     if (rc != 0) {
@@ -26,12 +166,63 @@ int TrainOde::rhs(double t, const double* y, double* ydot) {
       return rc;
     }
   }
+  if (longitudinal())
+    for (int k = 0; k < vehicles(); ++k) {
+      ydot[travelIndex(k)] = y[speedIndex(k)];
+      ydot[speedIndex(k)] = motion_[static_cast<std::size_t>(k)].acceleration;
+    }
   failed_ = -1;
   return 0;
 }
 
+void TrainOde::addConnectionPattern(integ::JacobianPattern& out) const {
+  for (const Connection& c : connections_) {
+    // Columns: both car bodies' positions and rates (and the vehicles' travel and speed);
+    // rows: both car bodies' rates, or with a longitudinal motion every row of both vehicles
+    // (the connection forces enter their accelerations) and their speeds.
+    std::vector<int> cols, rows;
+    for (const auto& [k, b] : {std::pair{c.front, c.front_body}, std::pair{c.rear, c.rear_body}}) {
+      const vehicle::VehicleLayout& l = vehicle(k).layout();
+      const int slot = l.freeSlot(static_cast<std::size_t>(b));
+      for (int cc = 0; cc < vehicle::kFreeBodyDof; ++cc) {
+        cols.push_back(offset(k) + l.position(slot, cc));
+        cols.push_back(offset(k) + l.rate(slot, cc));
+        if (!longitudinal()) rows.push_back(offset(k) + l.rate(slot, cc));
+      }
+      if (longitudinal()) {
+        cols.push_back(travelIndex(k));
+        cols.push_back(speedIndex(k));
+        for (int i = 0; i < vehicle(k).size(); ++i) rows.push_back(offset(k) + i);
+        rows.push_back(speedIndex(k));
+      }
+    }
+    for (const int j : cols) {
+      auto& r = out.rows[static_cast<std::size_t>(j)];
+      std::set<int> all(r.begin(), r.end());
+      all.insert(rows.begin(), rows.end());
+      r.assign(all.begin(), all.end());
+    }
+  }
+}
+
+void TrainOde::addLongitudinalPattern(integ::JacobianPattern& out) const {
+  for (int k = 0; k < vehicles(); ++k) {
+    // Every row of the vehicle depends on its travel (where on the track) and speed; its speed
+    // row on both (traction by distance, slope, resistance).
+    std::vector<int> rows;
+    for (int i = 0; i < vehicle(k).size(); ++i) rows.push_back(offset(k) + i);
+    rows.push_back(speedIndex(k));
+    out.rows[static_cast<std::size_t>(travelIndex(k))] = rows;
+    rows.insert(rows.end() - 1, travelIndex(k));  // the travel row is the speed itself
+    out.rows[static_cast<std::size_t>(speedIndex(k))] = rows;
+    out.copy_of[static_cast<std::size_t>(travelIndex(k))] = speedIndex(k);
+    out.copy_of[static_cast<std::size_t>(speedIndex(k))] = -1;
+  }
+}
+
 integ::JacobianPattern TrainOde::jacobianPattern() const {
-  if (parts_.size() == 1) return parts_.front().ode->jacobianPattern();
+  if (parts_.size() == 1 && connections_.empty() && !longitudinal())
+    return parts_.front().ode->jacobianPattern();
   integ::JacobianPattern out;
   for (std::size_t k = 0; k < parts_.size(); ++k) {
     const integ::JacobianPattern p = parts_[k].ode->jacobianPattern();
@@ -52,6 +243,10 @@ integ::JacobianPattern TrainOde::jacobianPattern() const {
       out.copy_of.push_back(c < 0 ? -1 : o + c);
     }
   }
+  out.rows.resize(static_cast<std::size_t>(size_));
+  out.copy_of.resize(static_cast<std::size_t>(size_), -1);
+  if (longitudinal()) addLongitudinalPattern(out);
+  addConnectionPattern(out);
   return out;
 }
 
@@ -63,6 +258,11 @@ std::vector<int> TrainOde::stiffComponents() const {
 }
 
 std::string TrainOde::componentName(int i) const {
+  if (i >= longitudinal_offset_) {
+    const auto k = static_cast<std::size_t>((i - longitudinal_offset_) / 2);
+    const std::string what = (i - longitudinal_offset_) % 2 == 0 ? "travel" : "speed";
+    return parts_[k].name.empty() ? what : parts_[k].name + "." + what;
+  }
   std::size_t k = parts_.size() - 1;
   while (k > 0 && i < offsets_[k]) --k;
   const auto& p = parts_[k];
@@ -71,7 +271,7 @@ std::string TrainOde::componentName(int i) const {
 }
 
 integ::ModelFailure TrainOde::lastFailure() const {
-  if (failed_ < 0) return {};
+  if (failed_ < 0 || failed_ >= vehicles()) return {};
   const auto& p = parts_[static_cast<std::size_t>(failed_)];
   integ::ModelFailure f = p.ode->lastFailure();
   if (!p.name.empty() && !f.body.empty()) f.body = p.name + "." + f.body;
@@ -80,6 +280,7 @@ integ::ModelFailure TrainOde::lastFailure() const {
 
 std::string TrainOde::lastError() const {
   if (failed_ < 0) return {};
+  if (failed_ >= vehicles()) return error_;
   const auto& p = parts_[static_cast<std::size_t>(failed_)];
   const std::string e = p.ode->lastError();
   return p.name.empty() || e.empty() ? e : p.name + ": " + e;

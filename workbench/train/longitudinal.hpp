@@ -1,0 +1,55 @@
+#pragma once
+// The longitudinal motion of a train's vehicles (train_ode.hpp): each vehicle moves along the track
+// as one rigid mass, with its distance travelled and speed as states,
+//   m_k dv_k/dt = F_traction,k(t or s) - (A_k + B_k v_k + C_k v_k^2) - m_k g sin(slope)
+//                 + (the connections' forces along the track),
+// the running resistance in the Davis form (Davis 1926; the coefficients per vehicle as the user
+// gives them), the slope from the track's vertical alignment under the car body. The mass is the
+// vehicle's bodies' plus the rotating-mass allowance of its wheelsets, sum I_yy / r0^2 (they roll
+// with the travel).
+//
+// Traction and braking: a force per vehicle at the rails (traction > 0, braking < 0) against time
+// or distance travelled, linear between points and held beyond them. It acts on the vehicle's
+// longitudinal equation; the wheel/rail creep forces do not carry it (the bodies of one vehicle
+// share one longitudinal motion, so the wheelsets cannot slip against the car body), which is
+// stated wherever the results are shown.
+#include <vector>
+
+#include "workbench/core/error.hpp"
+
+namespace rb::train {
+
+struct TractionSpec {
+  bool by_distance = false;  // at = distance travelled [m] (else time [s])
+  std::vector<double> at, force;
+  SourceLoc loc;
+  bool given() const { return !at.empty(); }
+};
+
+struct ResistanceSpec {
+  double a = 0.0;  // [N]
+  double b = 0.0;  // [N s/m]
+  double c = 0.0;  // [N s^2/m^2]
+  SourceLoc loc;
+};
+
+// What train.longitudinal and the vehicles' traction and resistance give.
+struct LongitudinalSpec {
+  bool on = false;
+  // [m/s] a vehicle slower than this ends the run: the creepages of the contact models are
+  // referred to the forward speed, and the train is not simulated to a stand.
+  double min_speed = 1.0;
+  SourceLoc loc;
+};
+
+void validateTraction(const TractionSpec& t, const std::string& what, Diagnostics& d);
+void validateResistance(const ResistanceSpec& r, const std::string& what, Diagnostics& d);
+
+// F(t) or F(s) of the table; 0 when none is given.
+double tractionForce(const TractionSpec& t, double time, double travel);
+// Davis running resistance at speed v >= 0 [N].
+inline double resistanceForce(const ResistanceSpec& r, double v) {
+  return r.a + r.b * v + r.c * v * v;
+}
+
+}  // namespace rb::train
