@@ -1,6 +1,6 @@
 -- A rake of three Manchester wagons 1 braking on level tangent track: the leading wagon brakes
 -- with 60 kN (ramped in over 0.5 s from t = 0.2 s), the two behind it are unbraked and push it
--- through their buffers (tests/train/test_connections.cpp checks the in-train forces against the
+-- through their buffers (tests/run/test_train_connections.cpp checks the in-train forces against the
 -- decelerating masses). Perfect track, KEC, Polach; the buffer and draw-gear data are the
 -- ASSUMPTIONS of scenarios/train/couplings.lua.
 local c = require "validation.common"

@@ -1,0 +1,226 @@
+// Buffers, draw gear and the longitudinal motion of a train (docs/trains.md): the force laws on
+// known values, a braking rake against the hand calculation of its decelerating masses, the
+// run-in over a buffer gap as a force peak, and every connection input that cannot be refused at
+// its file:line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "tests/run/run_files.hpp"
+#include "workbench/core/error.hpp"
+#include "workbench/io/result_reader.hpp"
+#include "workbench/run/compile.hpp"
+#include "workbench/train/connection.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kRake = "tests/run/data/train_braking_rake.lua";
+
+rb::train::BufferSpec buffer() {
+  rb::train::BufferSpec b;
+  b.load_stroke = {0.0, 0.05, 0.1};
+  b.load_force = {0.0, 100e3, 400e3};
+  b.unload_stroke = {0.0, 0.1};
+  b.unload_force = {0.0, 100e3};
+  b.spacing = 1.75;
+  b.height = 1.06;
+  return b;
+}
+
+TEST(TrainConnections, ForceLaws) {
+  const rb::train::BufferSpec b = buffer();
+  EXPECT_EQ(rb::train::curveForce(b.load_stroke, b.load_force, 0.025), 50e3);
+  EXPECT_EQ(rb::train::curveForce(b.load_stroke, b.load_force, -0.01), 0.0);
+  EXPECT_NEAR(rb::train::curveForce(b.load_stroke, b.load_force, 0.12), 520e3, 1e-6);
+  // Two buffers in series share the compression: the pair at 0.1 m is one buffer at 0.05 m.
+  EXPECT_NEAR(rb::train::bufferPairForce(b, 0.1, 1.0), 100e3, 1e-6);  // loading
+  EXPECT_NEAR(rb::train::bufferPairForce(b, 0.1, -1.0), 50e3, 1e-6);  // unloading
+  EXPECT_NEAR(rb::train::bufferPairForce(b, 0.1, 0.0), 75e3, 1e-6);   // at rest: the mean
+  EXPECT_EQ(rb::train::bufferPairForce(b, -0.01, 1.0), 0.0);           // apart
+  rb::train::DrawGearSpec g;
+  g.stiffness = 5e6;
+  g.slack = 0.02;
+  g.friction = 0.2;
+  g.height = 1.06;
+  EXPECT_EQ(rb::train::drawGearForce(g, 0.015, 1.0), 0.0);  // inside the slack
+  EXPECT_NEAR(rb::train::drawGearForce(g, 0.03, 0.0), 50e3, 1e-6);
+  EXPECT_NEAR(rb::train::drawGearForce(g, 0.03, 1.0), 60e3, 1e-3);
+  EXPECT_NEAR(rb::train::drawGearForce(g, 0.03, -1.0), 40e3, 1e-3);
+}
+
+double meanOver(const std::vector<double>& t, const std::vector<double>& v, double from) {
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= from) {
+      sum += v[i];
+      ++n;
+    }
+  return sum / n;
+}
+
+// The mass of a vehicle's longitudinal equation computed here from the scenario's bodies: its
+// bodies and the rotating mass I_yy / r0^2 of its wheelsets.
+double vehicleMass(const rb::vehicle::VehicleModel& m) {
+  double mass = 0.0;
+  for (const auto& b : m.bodies) {
+    mass += b.mass;
+    if (b.kind == rb::vehicle::BodyKind::Wheelset) mass += b.inertia.y() / 0.46 / 0.46;
+  }
+  return mass;
+}
+
+TEST(TrainConnections, BrakingRakeForcesAreTheDeceleratingMasses) {
+  // The leading wagon brakes with 60 kN; once the run-in has died away the unbraked wagons
+  // behind it decelerate with the whole rake, so the connection behind the leading wagon carries
+  // (m2 + m3) a and the one behind the second m3 a, a = -60 kN / (m1 + m2 + m3) (level track,
+  // no resistance).
+  const rb::run::Model m = rb::test::compiled(kRake);
+  ASSERT_EQ(m.vehicles.size(), 3u);
+  ASSERT_EQ(m.connections.size(), 2u);
+  const double mv = vehicleMass(m.vehicles[0].vehicle);
+  const double a = -60e3 / (3.0 * mv);
+  const rb::test::RunFile f = rb::test::runInto(m, "rb_test_train_connections", "rake.h5");
+  ASSERT_TRUE(f.result.result.ok) << f.result.result.message;
+  const rb::io::ResultReader r(f.path);
+  const auto t = *r.dataset("/time");
+  const double f12 = meanOver(t, *r.dataset("/train/connections/w1-w2/force"), 2.0);
+  const double f23 = meanOver(t, *r.dataset("/train/connections/w2-w3/force"), 2.0);
+  EXPECT_NEAR(f12, 2.0 * mv * a, 0.01 * 2.0 * mv * -a) << "hand calculation " << 2.0 * mv * a;
+  EXPECT_NEAR(f23, mv * a, 0.01 * mv * -a) << "hand calculation " << mv * a;
+  for (const char* v : {"w1", "w2", "w3"}) {
+    const double acc =
+        meanOver(t, *r.dataset("/vehicles/" + std::string(v) + "/motion/acceleration"), 2.0);
+    EXPECT_NEAR(acc, a, 0.01 * -a) << v;
+  }
+  // Buffers carry the compression, the draw gear nothing; both buffers alike on tangent track.
+  const auto left = *r.dataset("/train/connections/w1-w2/buffer_left");
+  const auto right = *r.dataset("/train/connections/w1-w2/buffer_right");
+  const auto draw = *r.dataset("/train/connections/w1-w2/draw_gear");
+  EXPECT_LT(*std::max_element(draw.begin(), draw.end()), 1.0);
+  EXPECT_NEAR(left.back(), right.back(), 1e-6 * left.back());
+  // Speed integrates the acceleration: 20 m/s + a (t - ramp) within the run-in's wobble.
+  const auto v = *r.dataset("/vehicles/w1/motion/speed");
+  EXPECT_NEAR(v.back(), 20.0 + a * (3.0 - 0.45), 0.02);
+}
+
+TEST(TrainConnections, RunInOverABufferGapIsAForcePeak) {
+  // The same rake with 20 mm between the buffer faces (and 30 mm draw-gear slack): the wagons
+  // behind run into the braked one and the buffers meet with a closing speed, a force peak well
+  // above the steady force; the slack-free rake's peak is the smaller.
+  const auto peak = [](const rb::run::Model& m, const std::string& name) {
+    const rb::test::RunFile f = rb::test::runInto(m, "rb_test_train_connections", name);
+    EXPECT_TRUE(f.result.result.ok) << f.result.result.message;
+    const auto force = *rb::io::ResultReader(f.path).dataset("/train/connections/w1-w2/force");
+    return -*std::min_element(force.begin(), force.end());
+  };
+  const double tight = peak(rb::test::compiled(kRake), "tight.h5");
+  const double gap = peak(rb::test::compiled(kRake, {"train.vehicles[2].vehicle.start=54.98",
+                                                     "train.vehicles[3].vehicle.start=29.96",
+                                                     "train.connections[1].draw_gear.slack=0.03",
+                                                     "train.connections[2].draw_gear.slack=0.03"}),
+                          "gap.h5");
+  const rb::run::Model m = rb::test::compiled(kRake);
+  const double steady = 2.0 * vehicleMass(m.vehicles[0].vehicle) * 60e3 /
+                        (3.0 * vehicleMass(m.vehicles[0].vehicle));
+  EXPECT_GT(gap, 1.5 * steady) << "tight " << tight << " N";
+  EXPECT_GT(gap, tight);
+}
+
+// The problems of the rake with its train{} block replaced.
+std::string problems(const std::string& trainBlock, const std::vector<std::string>& sets = {}) {
+  std::ifstream in(std::string(RB_SOURCE_DIR) + "/" + kRake);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto a = text.find("train {");
+  const auto b = text.find("\n}\n", a) + 3;
+  text = text.substr(0, a) + trainBlock + "\n" + text.substr(b);
+  const fs::path file = fs::temp_directory_path() / "rb_test_connections_bad.lua";
+  std::ofstream(file) << text;
+  try {
+    (void)rb::test::compiled(file.string(), sets);
+  } catch (const rb::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(TrainConnections, BadConnectionsAreRefusedAtTheirLine) {
+  const std::string v =
+      "vehicles = { { name = \"a\", vehicle = wagon { speed = 20, start = 80 } },\n"
+      "{ name = \"b\", vehicle = wagon { speed = 20, start = 55 } },\n"
+      "{ name = \"c\", vehicle = wagon { speed = 20, start = 30 } } },\n";
+  const auto conn = [](const std::string& f, const std::string& r, const std::string& extra = "") {
+    return "couplings.screw(\"" + f + "\", \"" + r + "\", {" + extra + "})";
+  };
+  struct Case {
+    std::string block, expect;
+    std::vector<std::string> sets = {};
+  };
+  const std::vector<Case> cases = {
+      {"train { " + v + "connections = { " + conn("a", "c") + " } }", "not the vehicle right behind"},
+      {"train { " + v + "connections = { " + conn("a", "x") + " } }", "no vehicle named 'x'"},
+      {"train { " + v + "connections = { " + conn("a", "b") + ", " + conn("a", "b") + " } }",
+       "connected twice"},
+      {"train { " + v + "connections = { " + conn("a", "b") + " }, longitudinal = {} }",
+       "'b' and 'c' have no connection"},
+      {"train { " + v + "connections = { " + conn("a", "b", "half_length = 12.6") + " } }",
+       "overlap by"},
+      {"train { " + v + "connections = { " + conn("a", "b", "half_length = 11") + " } }",
+       "m apart at the start"},
+      {"train { " + v + "connections = { " + conn("a", "b", "half_length = 12.49") + " } }",
+       "loaded at the start"},
+      {"train { vehicles = { { name = \"a\", vehicle = wagon { speed = 20, start = 80 }, "
+       "traction = { { 0, -1e3 } } }, { name = \"b\", vehicle = wagon { speed = 20, start = 55 "
+       "} } } }",
+       "traction and resistance act through train.longitudinal"},
+      {"train { vehicles = { { name = \"a\", vehicle = wagon { speed = 20, start = 80 } }, { "
+       "name = \"b\", vehicle = wagon { speed = 20, start = 55 } } }, connections = { " +
+           conn("a", "b") + " }, longitudinal = {} }",
+       "acceleration must be 0 with train.longitudinal",
+       {"train.vehicles[1].vehicle.acceleration=-0.1", "train.vehicles[2].vehicle.acceleration=-0.1"}},
+      {"train { " + v + "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
+       "rear_end = 12.5 } } }",
+       "give buffers, a draw_gear or both"},
+      {"train { " + v + "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
+       "rear_end = 12.5, buffers = { loading = { { 0, 0 }, { 0.1, 1e5 } }, unloading = { { 0, 0 "
+       "}, { 0.1, 2e5 } }, spacing = 1.75, height = 1.06 } } } }",
+       "exceeds the loading force"},
+      {"train { " + v + "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
+       "rear_end = 12.5, buffers = { loading = { { 0, 0 }, { 0.1, 1e5 }, { 0.05, 2e5 } }, "
+       "unloading = { { 0, 0 }, { 0.1, 1e4 } }, spacing = 1.75, height = 1.06 } } } }",
+       "strictly ascending"},
+      {"train { " + v + "connections = { { front = \"a\", rear = \"b\", front_end = 12.5, "
+       "rear_end = 12.5, draw_gear = { stiffness = 1e6, height = 1 } } } }",
+       "front_end"},
+      {"train { " + v + "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
+       "rear_end = 12.5, draw_gear = { stiffness = -1, height = 1 } } } }",
+       "stiffness"},
+      {"train { " + v + "connections = { " + conn("a", "b") + ", " + conn("b", "c") +
+           " }, longitudinal = {} }",
+       "give run.duration", {"run.duration=0"}},
+      {"train { vehicles = { { name = \"a\", vehicle = wagon { speed = 20, start = 80 }, "
+       "traction = { { 0, -1e3 }, { 0, 1 } } }, { name = \"b\", vehicle = wagon { speed = 20, "
+       "start = 55 } } }, connections = { " +
+           conn("a", "b") + " }, longitudinal = {} }",
+       "strictly ascending"},
+      {"train { vehicles = { { name = \"a\", vehicle = wagon { speed = 20, start = 80 }, "
+       "traction = { { 0, 1 } }, traction_by_distance = { { 0, 1 } } }, { name = \"b\", vehicle "
+       "= wagon { speed = 20, start = 55 } } }, connections = { " +
+           conn("a", "b") + " }, longitudinal = {} }",
+       "not both"},
+  };
+  for (const auto& c : cases) {
+    const std::string p = problems(c.block, c.sets);
+    EXPECT_NE(p.find(c.expect), std::string::npos) << c.block << "\n-> " << p;
+    EXPECT_NE(p.find("rb_test_connections_bad.lua:"), std::string::npos) << c.block << "\n" << p;
+  }
+}
+
+}  // namespace
