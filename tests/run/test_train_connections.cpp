@@ -134,6 +134,44 @@ TEST(TrainConnections, RunInOverABufferGapIsAForcePeak) {
   EXPECT_GT(gap, tight);
 }
 
+TEST(TrainConnections, CoupledWagonsCurveAsTheSingleWagon) {
+  // Two wagons coupled by buffers and draw gear at a prescribed 20 m/s in the R = 500 m curve
+  // (the draw gear takes about 13 kN of tension there and the inner buffers 10 kN: the faces
+  // rotate against each other): each wagon's steady curving against the single wagon's, which is
+  // the same train with a draw gear of 1 mN/m and the buffers on the centre line (they do not
+  // touch: a train whose vehicles do not interact is each vehicle's single run, test_train.cpp). The
+  // buffer couple turns the car bodies a little; the wheelsets' lateral positions stay within
+  // 0.1 mm and the leading wheelsets' outer-wheel Y within 2 % of the single wagon's (measured:
+  // 0.03 mm, 0.8 %; the trailing wheelsets' smaller Y moves by up to 4 %).
+  const rb::test::RunFile train = rb::test::runInto(
+      rb::test::compiled("tests/run/data/train_coupled_r500.lua"), "rb_test_train_connections",
+      "coupled.h5");
+  ASSERT_TRUE(train.result.result.ok) << train.result.result.message;
+  const rb::test::RunFile single = rb::test::runInto(
+      rb::test::compiled("tests/run/data/train_coupled_r500.lua",
+                         {"train.connections[1].draw_gear.stiffness=1e-3",
+                          "train.connections[1].buffers.spacing=0.01"}),
+      "rb_test_train_connections", "loose.h5");
+  ASSERT_TRUE(single.result.result.ok) << single.result.result.message;
+  const rb::io::ResultReader c(train.path), s(single.path);
+  const auto t = *c.dataset("/time");
+  EXPECT_GT(meanOver(t, *c.dataset("/train/connections/front-rear/draw_gear"), 12.0), 5e3);
+  for (const char* v : {"front", "rear"})
+    for (const char* ws : {"ws1", "ws2", "ws3", "ws4"}) {
+      const std::string p = "/vehicles/" + std::string(v);
+      const std::string b = std::string("/bodies/") + ws + "/y";
+      EXPECT_NEAR(meanOver(t, *c.dataset(p + b), 12.0), meanOver(t, *s.dataset(p + b), 12.0),
+                  1e-4)
+          << v << " " << ws;
+    }
+  for (const char* v : {"front", "rear"})
+    for (const char* ws : {"ws1", "ws3"}) {
+      const std::string y = "/vehicles/" + std::string(v) + "/contact/" + ws + "/right/Y";
+      const double ys = meanOver(t, *s.dataset(y), 12.0);
+      EXPECT_NEAR(meanOver(t, *c.dataset(y), 12.0), ys, 0.02 * ys) << v << " " << ws;
+    }
+}
+
 // The problems of the rake with its train{} block replaced.
 std::string problems(const std::string& trainBlock, const std::vector<std::string>& sets = {}) {
   std::ifstream in(std::string(RB_SOURCE_DIR) + "/" + kRake);
