@@ -253,7 +253,25 @@ def train_scaling_block(outdir: str) -> str:
                   "instructions per evaluation per wagon", "per wagon / one wagon's"], body)
 
 
+TRAIN_BRAKING = "train_braking"
+
+
+def train_braking_block(outdir: str) -> str:
+    """docs/trains.md "Buffers, draw gear and braking": the braking train's in-train forces and
+    their lateral effect against the evenly braked train, and the rake's hand calculation
+    (bench/train_braking.py)."""
+    rows = read_csv(os.path.join(outdir, TRAIN_BRAKING, "train_braking.csv"))
+    if not rows:
+        return missing(f"{outdir}/{TRAIN_BRAKING}/train_braking.csv "
+                       f"(./wb studies --only {TRAIN_BRAKING})")
+    body = [[r["quantity"], fmt(num(r["braking"]), "{:.5g}"), fmt(num(r["coasting"]), "{:.5g}"),
+             r["unit"]] for r in rows]
+    return table(["quantity", "leading vehicle brakes (the scene)",
+                  "evenly braked / hand calculation", "unit"], body)
+
+
 def sweep_blocks(outdir: str) -> Dict[str, Dict[str, str]]:
     return {"studies.md": {SWEEP: sweep_block(outdir)},
             "performance.md": {THROUGHPUT: throughput_block(outdir)},
-            "trains.md": {TRAIN_SCALING: train_scaling_block(outdir)}}
+            "trains.md": {TRAIN_SCALING: train_scaling_block(outdir),
+                          TRAIN_BRAKING: train_braking_block(outdir)}}

@@ -4,7 +4,8 @@
 -- two-axle wagon (scenarios/vehicles/two_axle_wagon.lua, stated assumptions) on elastic
 -- multi-point contact. Each vehicle stands at its own vehicle start, the leading wagon's
 -- reference point at 60 m; the gaps between the outermost wheelsets are ASSUMPTIONS (no
--- connections are modelled: the vehicles do not interact, buffers and couplers are to come).
+-- connections in this scene: the vehicles do not interact; scenarios/train/loco_braking_r500.lua
+-- couples its vehicles with buffers and draw gear).
 -- Each vehicle's outputs and assessment: /vehicles/<name>.
 local c = require "validation.common"
 local lib = require "tracks.lib"

@@ -43,7 +43,7 @@ TEST(TrainConnections, ForceLaws) {
   EXPECT_NEAR(rb::train::bufferPairForce(b, 0.1, 1.0), 100e3, 1e-6);  // loading
   EXPECT_NEAR(rb::train::bufferPairForce(b, 0.1, -1.0), 50e3, 1e-6);  // unloading
   EXPECT_NEAR(rb::train::bufferPairForce(b, 0.1, 0.0), 75e3, 1e-6);   // at rest: the mean
-  EXPECT_EQ(rb::train::bufferPairForce(b, -0.01, 1.0), 0.0);           // apart
+  EXPECT_EQ(rb::train::bufferPairForce(b, -0.01, 1.0), 0.0);          // apart
   rb::train::DrawGearSpec g;
   g.stiffness = 5e6;
   g.slack = 0.02;
@@ -128,8 +128,8 @@ TEST(TrainConnections, RunInOverABufferGapIsAForcePeak) {
                                                      "train.connections[2].draw_gear.slack=0.03"}),
                           "gap.h5");
   const rb::run::Model m = rb::test::compiled(kRake);
-  const double steady = 2.0 * vehicleMass(m.vehicles[0].vehicle) * 60e3 /
-                        (3.0 * vehicleMass(m.vehicles[0].vehicle));
+  const double steady =
+      2.0 * vehicleMass(m.vehicles[0].vehicle) * 60e3 / (3.0 * vehicleMass(m.vehicles[0].vehicle));
   EXPECT_GT(gap, 1.5 * steady) << "tight " << tight << " N";
   EXPECT_GT(gap, tight);
 }
@@ -139,19 +139,19 @@ TEST(TrainConnections, CoupledWagonsCurveAsTheSingleWagon) {
   // (the draw gear takes about 13 kN of tension there and the inner buffers 10 kN: the faces
   // rotate against each other): each wagon's steady curving against the single wagon's, which is
   // the same train with a draw gear of 1 mN/m and the buffers on the centre line (they do not
-  // touch: a train whose vehicles do not interact is each vehicle's single run, test_train.cpp). The
-  // buffer couple turns the car bodies a little; the wheelsets' lateral positions stay within
+  // touch: a train whose vehicles do not interact is each vehicle's single run, test_train.cpp).
+  // The buffer couple turns the car bodies a little; the wheelsets' lateral positions stay within
   // 0.1 mm and the leading wheelsets' outer-wheel Y within 2 % of the single wagon's (measured:
   // 0.03 mm, 0.8 %; the trailing wheelsets' smaller Y moves by up to 4 %).
-  const rb::test::RunFile train = rb::test::runInto(
-      rb::test::compiled("tests/run/data/train_coupled_r500.lua"), "rb_test_train_connections",
-      "coupled.h5");
+  const rb::test::RunFile train =
+      rb::test::runInto(rb::test::compiled("tests/run/data/train_coupled_r500.lua"),
+                        "rb_test_train_connections", "coupled.h5");
   ASSERT_TRUE(train.result.result.ok) << train.result.result.message;
-  const rb::test::RunFile single = rb::test::runInto(
-      rb::test::compiled("tests/run/data/train_coupled_r500.lua",
-                         {"train.connections[1].draw_gear.stiffness=1e-3",
-                          "train.connections[1].buffers.spacing=0.01"}),
-      "rb_test_train_connections", "loose.h5");
+  const rb::test::RunFile single =
+      rb::test::runInto(rb::test::compiled("tests/run/data/train_coupled_r500.lua",
+                                           {"train.connections[1].draw_gear.stiffness=1e-3",
+                                            "train.connections[1].buffers.spacing=0.01"}),
+                        "rb_test_train_connections", "loose.h5");
   ASSERT_TRUE(single.result.result.ok) << single.result.result.message;
   const rb::io::ResultReader c(train.path), s(single.path);
   const auto t = *c.dataset("/time");
@@ -160,8 +160,7 @@ TEST(TrainConnections, CoupledWagonsCurveAsTheSingleWagon) {
     for (const char* ws : {"ws1", "ws2", "ws3", "ws4"}) {
       const std::string p = "/vehicles/" + std::string(v);
       const std::string b = std::string("/bodies/") + ws + "/y";
-      EXPECT_NEAR(meanOver(t, *c.dataset(p + b), 12.0), meanOver(t, *s.dataset(p + b), 12.0),
-                  1e-4)
+      EXPECT_NEAR(meanOver(t, *c.dataset(p + b), 12.0), meanOver(t, *s.dataset(p + b), 12.0), 1e-4)
           << v << " " << ws;
     }
   for (const char* v : {"front", "rear"})
@@ -202,7 +201,8 @@ TEST(TrainConnections, BadConnectionsAreRefusedAtTheirLine) {
     std::vector<std::string> sets = {};
   };
   const std::vector<Case> cases = {
-      {"train { " + v + "connections = { " + conn("a", "c") + " } }", "not the vehicle right behind"},
+      {"train { " + v + "connections = { " + conn("a", "c") + " } }",
+       "not the vehicle right behind"},
       {"train { " + v + "connections = { " + conn("a", "x") + " } }", "no vehicle named 'x'"},
       {"train { " + v + "connections = { " + conn("a", "b") + ", " + conn("a", "b") + " } }",
        "connected twice"},
@@ -222,27 +222,35 @@ TEST(TrainConnections, BadConnectionsAreRefusedAtTheirLine) {
        "name = \"b\", vehicle = wagon { speed = 20, start = 55 } } }, connections = { " +
            conn("a", "b") + " }, longitudinal = {} }",
        "acceleration must be 0 with train.longitudinal",
-       {"train.vehicles[1].vehicle.acceleration=-0.1", "train.vehicles[2].vehicle.acceleration=-0.1"}},
-      {"train { " + v + "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
-       "rear_end = 12.5 } } }",
+       {"train.vehicles[1].vehicle.acceleration=-0.1",
+        "train.vehicles[2].vehicle.acceleration=-0.1"}},
+      {"train { " + v +
+           "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
+           "rear_end = 12.5 } } }",
        "give buffers, a draw_gear or both"},
-      {"train { " + v + "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
-       "rear_end = 12.5, buffers = { loading = { { 0, 0 }, { 0.1, 1e5 } }, unloading = { { 0, 0 "
-       "}, { 0.1, 2e5 } }, spacing = 1.75, height = 1.06 } } } }",
+      {"train { " + v +
+           "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
+           "rear_end = 12.5, buffers = { loading = { { 0, 0 }, { 0.1, 1e5 } }, unloading = { { 0, "
+           "0 "
+           "}, { 0.1, 2e5 } }, spacing = 1.75, height = 1.06 } } } }",
        "exceeds the loading force"},
-      {"train { " + v + "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
-       "rear_end = 12.5, buffers = { loading = { { 0, 0 }, { 0.1, 1e5 }, { 0.05, 2e5 } }, "
-       "unloading = { { 0, 0 }, { 0.1, 1e4 } }, spacing = 1.75, height = 1.06 } } } }",
+      {"train { " + v +
+           "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
+           "rear_end = 12.5, buffers = { loading = { { 0, 0 }, { 0.1, 1e5 }, { 0.05, 2e5 } }, "
+           "unloading = { { 0, 0 }, { 0.1, 1e4 } }, spacing = 1.75, height = 1.06 } } } }",
        "strictly ascending"},
-      {"train { " + v + "connections = { { front = \"a\", rear = \"b\", front_end = 12.5, "
-       "rear_end = 12.5, draw_gear = { stiffness = 1e6, height = 1 } } } }",
+      {"train { " + v +
+           "connections = { { front = \"a\", rear = \"b\", front_end = 12.5, "
+           "rear_end = 12.5, draw_gear = { stiffness = 1e6, height = 1 } } } }",
        "front_end"},
-      {"train { " + v + "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
-       "rear_end = 12.5, draw_gear = { stiffness = -1, height = 1 } } } }",
+      {"train { " + v +
+           "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
+           "rear_end = 12.5, draw_gear = { stiffness = -1, height = 1 } } } }",
        "stiffness"},
       {"train { " + v + "connections = { " + conn("a", "b") + ", " + conn("b", "c") +
            " }, longitudinal = {} }",
-       "give run.duration", {"run.duration=0"}},
+       "give run.duration",
+       {"run.duration=0"}},
       {"train { vehicles = { { name = \"a\", vehicle = wagon { speed = 20, start = 80 }, "
        "traction = { { 0, -1e3 }, { 0, 1 } } }, { name = \"b\", vehicle = wagon { speed = 20, "
        "start = 55 } } }, connections = { " +

@@ -204,7 +204,8 @@ inline constexpr ChannelRow<train::ConnectionState> kConnectionChannels[] = {
 inline constexpr ChannelRow<train::VehicleMotion> kMotionChannels[] = {
     {"travel", "m", "distance travelled from vehicle.start",
      [](const train::VehicleMotion& m) { return m.travel; }},
-    {"speed", "m/s", "speed along the track", [](const train::VehicleMotion& m) { return m.speed; }},
+    {"speed", "m/s", "speed along the track",
+     [](const train::VehicleMotion& m) { return m.speed; }},
     {"acceleration", "m/s^2", "acceleration along the track",
      [](const train::VehicleMotion& m) { return m.acceleration; }},
     {"traction", "N", "traction (> 0) or braking (< 0) force",

@@ -215,8 +215,16 @@ void compileParts(const CompileOptions& o, Model& c, Diagnostics& d) {
   // One vehicle{} block, or every vehicle of train{} (each with its own profiles and contact).
   std::vector<scenario::TrainVehicleSpec> entries = spec.train;
   if (entries.empty())
-    entries.push_back({"", spec.vehicle, spec.has_profiles, spec.profiles, spec.has_contact,
-                       spec.guided, spec.contact, spec.vehicle.loc, {}, {}});
+    entries.push_back({"",
+                       spec.vehicle,
+                       spec.has_profiles,
+                       spec.profiles,
+                       spec.has_contact,
+                       spec.guided,
+                       spec.contact,
+                       spec.vehicle.loc,
+                       {},
+                       {}});
   dynamics::TableCache cache =
       o.table_cache.empty() ? dynamics::TableCache() : dynamics::TableCache(o.table_cache);
   for (const auto& e : entries) {
@@ -302,10 +310,9 @@ void compileTrain(Model& c, Diagnostics& d) {
     if (con.front_body < 0 || con.rear_body < 0) continue;
     // The buffer faces' gap at the start, along the track: they may touch, not overlap.
     const double gap = f.vehicle.start +
-                       f.vehicle.bodies[static_cast<std::size_t>(con.front_body)].x +
-                       cs.front_end -
-                       (r.vehicle.start + r.vehicle.bodies[static_cast<std::size_t>(con.rear_body)].x +
-                        cs.rear_end);
+                       f.vehicle.bodies[static_cast<std::size_t>(con.front_body)].x + cs.front_end -
+                       (r.vehicle.start +
+                        r.vehicle.bodies[static_cast<std::size_t>(con.rear_body)].x + cs.rear_end);
     if (gap < -1e-9)
       d.add(cs.loc, what + ": the buffer faces overlap by " + formatNumber(-gap) +
                         " m at the start (place '" + r.name + "' so that they touch: its start " +
@@ -580,9 +587,8 @@ void checkTrainStart(const Model& c, train::TrainOde& ode, const Eigen::VectorXd
     // 1 N: the rounding of touching faces gives forces of 1e-27 N, a real preload kilonewtons.
     if (std::max({st.buffer_left, st.buffer_right, st.draw_gear}) > kStartForceTolerance)
       d.add(con.spec.loc, "train.connections '" + con.name + "': loaded at the start (gap " +
-                              formatNumber(st.gap) + " m: buffers " +
-                              formatNumber(st.buffer_left) + " N and " +
-                              formatNumber(st.buffer_right) + " N, draw gear " +
+                              formatNumber(st.gap) + " m: buffers " + formatNumber(st.buffer_left) +
+                              " N and " + formatNumber(st.buffer_right) + " N, draw gear " +
                               formatNumber(st.draw_gear) +
                               " N), so the start is not an equilibrium; place the vehicles so "
                               "that the buffer faces touch or stand apart by at most the draw "

@@ -46,8 +46,7 @@ void buildEntry(const Node& item, const std::string& what, LuaHost& host, const 
   }
   const auto traction = [&](const char* key, bool by_distance) {
     if (!r.has(key)) return;
-    if (e.traction.given())
-      r.error(item, "give traction or traction_by_distance, not both");
+    if (e.traction.given()) r.error(item, "give traction or traction_by_distance, not both");
     e.traction = train::TractionSpec{};
     e.traction.by_distance = by_distance;
     e.traction.loc = r.value(key)->loc;
@@ -74,8 +73,7 @@ void buildBuffers(const Node& n, const std::string& what, train::BufferSpec& b, 
   b.friction = r.number("friction");
 }
 
-void buildDrawGear(const Node& n, const std::string& what, train::DrawGearSpec& g,
-                   Diagnostics& d) {
+void buildDrawGear(const Node& n, const std::string& what, train::DrawGearSpec& g, Diagnostics& d) {
   Reader r(n, block("train.draw_gear"), what + ".draw_gear", d);
   g.loc = n.loc;
   g.stiffness = r.number("stiffness");
@@ -109,7 +107,8 @@ void buildConnections(const Node& list, ScenarioSpec& spec, Diagnostics& d) {
     c.front_end = r.number("front_end");
     c.rear_end = r.number("rear_end");
     if (const Node* b = r.blockValue("buffers")) buildBuffers(*b, what, c.buffers.emplace(), d);
-    if (const Node* g = r.blockValue("draw_gear")) buildDrawGear(*g, what, c.draw_gear.emplace(), d);
+    if (const Node* g = r.blockValue("draw_gear"))
+      buildDrawGear(*g, what, c.draw_gear.emplace(), d);
     spec.train_connections.push_back(std::move(c));
   }
 }
@@ -191,11 +190,13 @@ void buildTrain(const Node& n, LuaHost& host, ScenarioSpec& spec, Diagnostics& d
     // A train starts at one speed; without train.longitudinal it keeps the first vehicle's
     // prescribed motion, with it the motion is computed (no prescribed acceleration).
     if (spec.train_longitudinal.on && e.vehicle.acceleration != 0.0)
-      d.add(item.loc, what + ": vehicle.acceleration must be 0 with train.longitudinal (the "
-                             "motion is computed from traction, braking and resistance)");
+      d.add(item.loc, what +
+                          ": vehicle.acceleration must be 0 with train.longitudinal (the "
+                          "motion is computed from traction, braking and resistance)");
     if (!spec.train_longitudinal.on && (e.traction.given() || e.resistance.loc.line > 0))
-      d.add(item.loc, what + ": traction and resistance act through train.longitudinal{}, which "
-                             "the train does not give (its speed is prescribed)");
+      d.add(item.loc, what +
+                          ": traction and resistance act through train.longitudinal{}, which "
+                          "the train does not give (its speed is prescribed)");
     if (!spec.train.empty()) {
       const auto& lead = spec.train.front().vehicle;
       if (e.vehicle.speed != lead.speed || e.vehicle.acceleration != lead.acceleration)

@@ -693,14 +693,15 @@ void addTrainBlocks(std::vector<BlockSpec>& s) {
         typed("rear", ValueType::String, "-", "the name of the vehicle right behind it", true),
         typed("front_body", ValueType::String, "-",
               "the front vehicle's car body the connection acts on (default: its only car body)"),
-        typed("rear_body", ValueType::String, "-", "the rear vehicle's car body (default: its only)"),
+        typed("rear_body", ValueType::String, "-",
+              "the rear vehicle's car body (default: its only)"),
         required(num("front_end", "m", 0.0,
                      "x of the front vehicle's rear headstock (buffer faces) from its car body's "
                      "centre of mass, < 0",
                      -50.0, 0.0, false)),
         required(num("rear_end", "m", 0.0,
-                     "x of the rear vehicle's front headstock from its car body's centre, > 0",
-                     0.0, 50.0, false)),
+                     "x of the rear vehicle's front headstock from its car body's centre, > 0", 0.0,
+                     50.0, false)),
         blockKey("buffers", ValueType::Block, {}, "side buffers (train.buffers)", "train.buffers"),
         blockKey("draw_gear", ValueType::Block, {}, "draw gear (train.draw_gear)",
                  "train.draw_gear")}});
@@ -712,8 +713,8 @@ void addTrainBlocks(std::vector<BlockSpec>& s) {
               "{{stroke, force}, ...} while the buffer is pressed, from {0, 0}", true),
         typed("unloading", ValueType::PairList, "m, N",
               "{{stroke, force}, ...} while it is released, at most the loading force", true),
-        required(num("spacing", "m", 0.0, "lateral distance between the two buffers", 0.0, 5.0,
-                     true)),
+        required(
+            num("spacing", "m", 0.0, "lateral distance between the two buffers", 0.0, 5.0, true)),
         required(num("height", "m", 0.0, "buffer height above the top of rail", 0.0, 5.0, true)),
         num("friction", "-", 0.0, "buffer-head friction coefficient", 0.0, 1.0)}});
   s.push_back(
@@ -726,8 +727,8 @@ void addTrainBlocks(std::vector<BlockSpec>& s) {
             "hysteresis ratio: the force is k e (1 + friction) stretching, (1 - friction) "
             "releasing",
             0.0, 1.0),
-        required(num("height", "m", 0.0, "draw gear height above the top of rail", 0.0, 5.0,
-                     true))}});
+        required(
+            num("height", "m", 0.0, "draw gear height above the top of rail", 0.0, 5.0, true))}});
   s.push_back({"train.longitudinal",
                "The vehicles' motion along the track as states (a plain table): each vehicle a "
                "rigid mass driven by its traction, resistance, the track's slope and the "

@@ -9,7 +9,9 @@ namespace rb::train {
 
 namespace {
 
-bool finiteNonNegative(double v) { return std::isfinite(v) && v >= 0.0; }
+bool finiteNonNegative(double v) {
+  return std::isfinite(v) && v >= 0.0;
+}
 
 void validateCurve(const std::vector<double>& x, const std::vector<double>& f,
                    const std::string& what, const SourceLoc& loc, Diagnostics& d) {
@@ -58,8 +60,7 @@ void validateDrawGear(const DrawGearSpec& g, const std::string& what, Diagnostic
   if (!(g.slack >= 0.0 && g.slack < 1.0))
     d.add(g.loc, what + ".draw_gear.slack must be in [0, 1) m, got " + formatNumber(g.slack));
   if (!(g.friction >= 0.0 && g.friction < 1.0))
-    d.add(g.loc,
-          what + ".draw_gear.friction must be in [0, 1), got " + formatNumber(g.friction));
+    d.add(g.loc, what + ".draw_gear.friction must be in [0, 1), got " + formatNumber(g.friction));
   if (!(g.height > 0.0 && g.height < 5.0))
     d.add(g.loc, what + ".draw_gear.height must be in (0, 5) m, got " + formatNumber(g.height));
 }
@@ -81,16 +82,19 @@ PointMotion pointMotion(const vehicle::BodyKinematics& k, const Eigen::Vector3d&
 void validateConnection(const ConnectionSpec& c, Diagnostics& d) {
   const std::string what = "train.connections '" + c.front + "-" + c.rear + "'";
   if (!(c.front_end < 0.0 && c.front_end > -50.0))
-    d.add(c.loc, what + ": front_end (the front vehicle's rear headstock, x from its car body's "
-                        "centre) must be in (-50, 0) m, got " +
+    d.add(c.loc, what +
+                     ": front_end (the front vehicle's rear headstock, x from its car body's "
+                     "centre) must be in (-50, 0) m, got " +
                      formatNumber(c.front_end));
   if (!(c.rear_end > 0.0 && c.rear_end < 50.0))
-    d.add(c.loc, what + ": rear_end (the rear vehicle's front headstock) must be in (0, 50) m, "
-                        "got " +
+    d.add(c.loc, what +
+                     ": rear_end (the rear vehicle's front headstock) must be in (0, 50) m, "
+                     "got " +
                      formatNumber(c.rear_end));
   if (!c.buffers && !c.draw_gear)
-    d.add(c.loc, what + ": give buffers, a draw_gear or both (a connection without either "
-                        "transmits nothing)");
+    d.add(c.loc, what +
+                     ": give buffers, a draw_gear or both (a connection without either "
+                     "transmits nothing)");
   if (c.buffers) validateBuffers(*c.buffers, what, d);
   if (c.draw_gear) validateDrawGear(*c.draw_gear, what, d);
 }

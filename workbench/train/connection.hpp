@@ -81,13 +81,13 @@ double drawGearForce(const DrawGearSpec& g, double gap, double gap_dot);
 
 // The state of a connection at one evaluation.
 struct ConnectionState {
-  double gap = 0.0;                    // [m] at the centre line (draw gear height)
-  double buffer_left = 0.0;            // [N] compression of the left buffer pair
-  double buffer_right = 0.0;           // [N]
-  double draw_gear = 0.0;              // [N] tension
-  double longitudinal = 0.0;           // [N] draw gear - buffers: tension > 0
-  double lateral_front = 0.0;          // [N] lateral force on the front car body, its track frame
-  double lateral_rear = 0.0;           // [N] on the rear car body
+  double gap = 0.0;            // [m] at the centre line (draw gear height)
+  double buffer_left = 0.0;    // [N] compression of the left buffer pair
+  double buffer_right = 0.0;   // [N]
+  double draw_gear = 0.0;      // [N] tension
+  double longitudinal = 0.0;   // [N] draw gear - buffers: tension > 0
+  double lateral_front = 0.0;  // [N] lateral force on the front car body, its track frame
+  double lateral_rear = 0.0;   // [N] on the rear car body
   Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
   // The point loads on the two car bodies (attachment-frame points, global forces), up to three
   // each (two buffers and the draw gear).

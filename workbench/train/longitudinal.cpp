@@ -26,8 +26,8 @@ void validateTraction(const TractionSpec& t, const std::string& what, Diagnostic
 void validateResistance(const ResistanceSpec& r, const std::string& what, Diagnostics& d) {
   for (const auto& [name, v] : {std::pair<const char*, double>{"a", r.a}, {"b", r.b}, {"c", r.c}})
     if (!std::isfinite(v) || v < 0.0)
-      d.add(r.loc, what + ".resistance." + name + " must be finite and >= 0, got " +
-                       formatNumber(v));
+      d.add(r.loc,
+            what + ".resistance." + name + " must be finite and >= 0, got " + formatNumber(v));
 }
 
 double tractionForce(const TractionSpec& t, double time, double travel) {

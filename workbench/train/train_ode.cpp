@@ -59,8 +59,8 @@ TrainOde::TrainOde(std::vector<Part> parts, std::vector<Connection> connections,
     size_ += 2 * n;
   }
   motion_.resize(parts_.size());
-  for (int k = 0; k < n; ++k) motion_[static_cast<std::size_t>(k)].mass =
-      longitudinalMass(vehicle(k).model());
+  for (int k = 0; k < n; ++k)
+    motion_[static_cast<std::size_t>(k)].mass = longitudinalMass(vehicle(k).model());
   states_.resize(connections_.size());
   kin_.resize(2 * connections_.size());
   loads_.resize(parts_.size());
@@ -119,8 +119,7 @@ int TrainOde::prepare(double t, const double* y) {
         q[1 + cc] = yk[l.position(slot, cc)];
         qd[1 + cc] = yk[l.rate(slot, cc)];
       }
-      vehicle::bodyKinematics(m.geometry, m.bodies[b].rotation, m.bodies[b].height, q, qd,
-                              *kin[e]);
+      vehicle::bodyKinematics(m.geometry, m.bodies[b].rotation, m.bodies[b].height, q, qd, *kin[e]);
     }
     ConnectionState& st = states_[i];
     connectionForces(c.spec, *kin[0], c.front_body,
@@ -139,14 +138,16 @@ int TrainOde::prepare(double t, const double* y) {
     VehicleMotion& mo = motion_[static_cast<std::size_t>(k)];
     if (longitudinal()) {
       const vehicle::VehicleModel& m = vehicle(k).model();
-      const auto ref = static_cast<std::size_t>(longitudinal_.reference_body[static_cast<std::size_t>(k)]);
+      const auto ref =
+          static_cast<std::size_t>(longitudinal_.reference_body[static_cast<std::size_t>(k)]);
       const double gradient = m.geometry.at(m.start + m.bodies[ref].x + mo.travel).gradient;
-      mo.traction = tractionForce(longitudinal_.traction[static_cast<std::size_t>(k)], t, mo.travel);
-      mo.resistance = resistanceForce(longitudinal_.resistance[static_cast<std::size_t>(k)], mo.speed);
+      mo.traction =
+          tractionForce(longitudinal_.traction[static_cast<std::size_t>(k)], t, mo.travel);
+      mo.resistance =
+          resistanceForce(longitudinal_.resistance[static_cast<std::size_t>(k)], mo.speed);
       // The slope's share of the weight along the track: gradient = tan(slope), uphill > 0.
       mo.grade = mo.mass * m.gravity * gradient / std::sqrt(1.0 + gradient * gradient);
-      mo.acceleration =
-          (mo.traction - mo.resistance - mo.grade + mo.connections) / mo.mass;
+      mo.acceleration = (mo.traction - mo.resistance - mo.grade + mo.connections) / mo.mass;
       vehicle(k).setForwardMotion({mo.travel, mo.speed, mo.acceleration});
     }
     if (!connections_.empty()) vehicle(k).setAppliedLoads(loads_[static_cast<std::size_t>(k)]);

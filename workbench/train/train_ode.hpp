@@ -32,8 +32,8 @@ struct Connection {
 // The longitudinal motion of every vehicle (longitudinal.hpp): off, the prescribed V0 + a t.
 struct Longitudinal {
   LongitudinalSpec spec;
-  std::vector<TractionSpec> traction;       // per vehicle
-  std::vector<ResistanceSpec> resistance;   // per vehicle
+  std::vector<TractionSpec> traction;      // per vehicle
+  std::vector<ResistanceSpec> resistance;  // per vehicle
   // The body each vehicle's slope is read under (its car body or first body).
   std::vector<int> reference_body;
 };
@@ -42,7 +42,7 @@ struct Longitudinal {
 struct VehicleMotion {
   double travel = 0.0, speed = 0.0, acceleration = 0.0;
   double traction = 0.0, resistance = 0.0, grade = 0.0, connections = 0.0;  // [N] forces
-  double mass = 0.0;                                                         // [kg]
+  double mass = 0.0;                                                        // [kg]
 };
 
 // The mass of a vehicle's longitudinal equation: its bodies' plus the rotating-mass allowance of
@@ -106,7 +106,7 @@ class TrainOde final : public integ::OdeSystem {
   Longitudinal longitudinal_;
   int longitudinal_offset_ = 0;
   int size_ = 0;
-  int failed_ = -1;  // the vehicle whose rhs returned non-zero last, -1: none
+  int failed_ = -1;    // the vehicle whose rhs returned non-zero last, -1: none
   std::string error_;  // the train's own failure (a vehicle too slow)
   std::vector<VehicleMotion> motion_;
   std::vector<ConnectionState> states_;
