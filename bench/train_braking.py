@@ -103,7 +103,7 @@ def main(argv=None) -> int:
                 last(c, p + "/bodies/car/y"), "m")
             row(f"{v}: speed at the end", float(b[p + "/motion/speed"][-1]),
                 float(c[p + "/motion/speed"][-1]), "m/s")
-        for label, f in (("braking", b), ("coasting", c)):
+        for label, f in (("braking", b), ("evenly braked", c)):
             st = f["stats"].attrs
             row(f"{label} run: CPU time ({f['/time'][-1]:.0f} s simulated)",
                 float(st["cpu_time_s"]), None, "s")
