@@ -5,10 +5,13 @@
 
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "workbench/core/error.hpp"
 #include "workbench/io/result_reader.hpp"
 #include "workbench/run/compile.hpp"
 #include "workbench/run/vehicle_run.hpp"
@@ -22,6 +25,27 @@ inline run::Model compiled(const std::string& scenario, std::vector<std::string>
   o.root = RB_SOURCE_DIR;
   o.overrides = std::move(sets);
   return run::compile(o);
+}
+
+// The problems (InputError text, "" if none) of `scenario` with the text from its first `from` up
+// to and including the next `to` after it replaced by `replacement`, written to <temp>/<file>.
+inline std::string problemsWithReplaced(const std::string& scenario, const std::string& from,
+                                        const std::string& to, const std::string& replacement,
+                                        const std::string& file,
+                                        const std::vector<std::string>& sets = {}) {
+  std::ifstream in(std::string(RB_SOURCE_DIR) + "/" + scenario);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto a = text.find(from);
+  const auto b = text.find(to, a) + to.size();
+  text = text.substr(0, a) + replacement + "\n" + text.substr(b);
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / file;
+  std::ofstream(path) << text;
+  try {
+    (void)compiled(path.string(), sets);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 // m run into <temp>/<folder>/<name> (provenance, outputs, /stats); the path and the run's result.

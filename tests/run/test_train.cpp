@@ -76,19 +76,8 @@ TEST(Train, AVehicleRunsOnItsOwnContactModel) {
 // The problems of the train scenario with `replace` put in place of its train{} block, as one
 // text.
 std::string problems(const std::string& trainBlock, const std::vector<std::string>& sets = {}) {
-  std::ifstream in(std::string(RB_SOURCE_DIR) + "/" + kTrain);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto a = text.find("train {");
-  const auto b = text.find("} }\n", a) + 4;
-  text = text.substr(0, a) + trainBlock + "\n" + text.substr(b);
-  const fs::path file = fs::temp_directory_path() / "rb_test_train_bad.lua";
-  std::ofstream(file) << text;
-  try {
-    (void)rb::test::compiled(file.string(), sets);
-  } catch (const rb::InputError& e) {
-    return e.what();
-  }
-  return "";
+  return rb::test::problemsWithReplaced(kTrain, "train {", "} }\n", trainBlock,
+                                        "rb_test_train_bad.lua", sets);
 }
 
 TEST(Train, WhatATrainCannotBeIsRefusedAtItsLine) {

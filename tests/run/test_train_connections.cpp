@@ -173,19 +173,8 @@ TEST(TrainConnections, CoupledWagonsCurveAsTheSingleWagon) {
 
 // The problems of the rake with its train{} block replaced.
 std::string problems(const std::string& trainBlock, const std::vector<std::string>& sets = {}) {
-  std::ifstream in(std::string(RB_SOURCE_DIR) + "/" + kRake);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto a = text.find("train {");
-  const auto b = text.find("\n}\n", a) + 3;
-  text = text.substr(0, a) + trainBlock + "\n" + text.substr(b);
-  const fs::path file = fs::temp_directory_path() / "rb_test_connections_bad.lua";
-  std::ofstream(file) << text;
-  try {
-    (void)rb::test::compiled(file.string(), sets);
-  } catch (const rb::InputError& e) {
-    return e.what();
-  }
-  return "";
+  return rb::test::problemsWithReplaced(kRake, "train {", "\n}\n", trainBlock,
+                                        "rb_test_connections_bad.lua", sets);
 }
 
 TEST(TrainConnections, BadConnectionsAreRefusedAtTheirLine) {
