@@ -100,6 +100,13 @@ TEST(TrainConnections, BrakingRakeForcesAreTheDeceleratingMasses) {
         meanOver(t, *r.dataset("/vehicles/" + std::string(v) + "/motion/acceleration"), 2.0);
     EXPECT_NEAR(acc, a, 0.01 * -a) << v;
   }
+  // The creep forces carry the braking (traction_at = "wheelsets", the default): the braked
+  // wagon's wheel/rail forces along the track are the 60 kN less what decelerates its four
+  // wheelsets' spin, I_yy a / r0^2 each; an unbraked wagon's are that spin share alone.
+  const double spin = 4.0 * 112.0 / 0.46 / 0.46 * a;
+  EXPECT_NEAR(meanOver(t, *r.dataset("/vehicles/w1/motion/rail_force"), 2.0), -60e3 - spin,
+              0.002 * 60e3);
+  EXPECT_NEAR(meanOver(t, *r.dataset("/vehicles/w2/motion/rail_force"), 2.0), -spin, 0.01 * -spin);
   // Buffers carry the compression, the draw gear nothing; both buffers alike on tangent track.
   const auto left = *r.dataset("/train/connections/w1-w2/buffer_left");
   const auto right = *r.dataset("/train/connections/w1-w2/buffer_right");
@@ -245,6 +252,12 @@ TEST(TrainConnections, BadConnectionsAreRefusedAtTheirLine) {
        "start = 55 } } }, connections = { " +
            conn("a", "b") + " }, longitudinal = {} }",
        "strictly ascending"},
+      {"train { vehicles = { { name = \"a\", vehicle = wagon { speed = 20, start = 80 }, "
+       "traction = { { 0, -1e3 } } }, { name = \"b\", vehicle = wagon { speed = 20, start = 55 "
+       "} } }, connections = { " +
+           conn("a", "b") + " }, longitudinal = {} }",
+       "needs wheel/rail contact with a free wheelset spin",
+       {"contact.wheelset_spin=prescribed"}},
       {"train { vehicles = { { name = \"a\", vehicle = wagon { speed = 20, start = 80 }, "
        "traction = { { 0, 1 } }, traction_by_distance = { { 0, 1 } } }, { name = \"b\", vehicle "
        "= wagon { speed = 20, start = 55 } } }, connections = { " +

@@ -108,6 +108,29 @@ inline int wheelsetStages(const ContactModels& models, const StageInput& in, int
   }
 }
 
+// The contact forces of every active patch along the track (track-frame x), summed over the
+// wheelsets: F = Q n + f_x e_x + f_y e_y per patch, Q at the solved multipliers (the elastic
+// method's patches have none: Q = q0).
+template <ContactMethod kMethod>
+double railForceAlongTrack(const ContactWorkspace& work) {
+  double sum = 0.0;
+  const auto add = [&sum](const Patch& p, const Eigen::Vector2d& lambda) {
+    sum += p.normalAt(lambda) * p.n.x() + p.fx * p.ex.x() + p.fy * p.ey.x();
+  };
+  for (const WheelsetWork& ww : work.wheelsets) {
+    if constexpr (kMethod == ContactMethod::Elastic) {
+      for (const ElasticWheelWork& ew : ww.elastic)
+        for (int k = 0; k < ew.geometry.count; ++k)
+          add(ew.patch[static_cast<std::size_t>(k)], Eigen::Vector2d::Zero());
+    } else {
+      for (const auto& wheel : ww.patch)
+        for (const Patch& p : wheel)
+          if (p.active) add(p, ww.lambda);
+    }
+  }
+  return sum;
+}
+
 }  // namespace internal
 
 // ---- The evaluation ----------------------------------------------------------------------------
@@ -141,6 +164,7 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, intern
         rc != 0)
       return rc;
   if (lift) ++work.stats.lift_evaluations;
+  if (work.bodies.motion) work.rail_force = internal::railForceAlongTrack<kMethod>(work);
   internal::writeSeriesRates(layout_, work, ydot);
   if (clock) {
     clock->mark(Stage::SeriesRates);

@@ -112,6 +112,9 @@ integ::ModelFailure ContactVehicleOde::lastFailure() const {
 const vehicle::Workspace& ContactVehicleOde::workspace() const {
   return work_->bodies;
 }
+double ContactVehicleOde::railForce() const {
+  return work_->rail_force;
+}
 vehicle::Workspace& ContactVehicleOde::bodyWorkspace() {
   return work_->bodies;
 }

@@ -217,6 +217,7 @@ class ContactVehicleOde final : public vehicle::VehicleOde {
                      std::span<vehicle::ElementValue> out) override;
   // Vehicle workspace of the last evaluation (element values, forces).
   const vehicle::Workspace& workspace() const override;
+  double railForce() const override;
 
   const ContactStats& stats() const;
   void resetStats();

@@ -166,6 +166,10 @@ struct ContactWorkspace {
   std::vector<WheelOutput> wheels;      // [2w + side], filled by Output evaluations
   std::vector<vehicle::Vector6d> qdd;   // body accelerations of the last Output evaluation
   std::vector<double> scratch;          // ydot of output and initial-state evaluations
+  // Sum over the wheelsets of the contact forces' component along the track [N] (track-frame x:
+  // creep and normal forces), for the longitudinal equation of a train; evaluated only when a
+  // train sets the forward motion (bodies.motion).
+  double rail_force = 0.0;
   // The right-hand side of a RhsOutput evaluation at (next_t, next_y), kept for the integrator's
   // next call (ContactVehicleOde::rhs) when it is at the same state, bit for bit.
   bool next_valid = false;

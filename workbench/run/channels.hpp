@@ -216,6 +216,9 @@ inline constexpr ChannelRow<train::VehicleMotion> kMotionChannels[] = {
      [](const train::VehicleMotion& m) { return m.grade; }},
     {"connection_force", "N", "the connections' force along the track on the vehicle",
      [](const train::VehicleMotion& m) { return m.connections; }},
+    {"rail_force", "N",
+     "the wheel/rail contact forces along the track (with traction_at = \"wheelsets\"; else 0)",
+     [](const train::VehicleMotion& m) { return m.rail; }},
 };
 
 }  // namespace rb::run

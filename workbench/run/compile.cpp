@@ -166,7 +166,7 @@ double Model::maxTravel(const RunVehicle& v, double t) const {
   // the run itself refuses a vehicle past the track's end.
   double traction = 0.0, mass = 0.0;
   for (std::size_t k = 0; k < vehicles.size(); ++k) {
-    mass += train::longitudinalMass(vehicles[k].vehicle);
+    mass += train::longitudinalMass(vehicles[k].vehicle, false);
     double most = 0.0;
     for (const double f : longitudinal.traction[k].force) most = std::max(most, f);
     traction += most;
@@ -335,6 +335,14 @@ void compileTrain(Model& c, Diagnostics& d) {
     const std::string what = "train.vehicles[" + std::to_string(k + 1) + "]";
     train::validateTraction(e.traction, what, d);
     train::validateResistance(e.resistance, what, d);
+    const RunVehicle& rv = c.vehicles[k];
+    if (e.traction.given() &&
+        spec.train_longitudinal.traction_at == train::TractionPath::Wheelsets &&
+        !(rv.contact && rv.contact->spin == dynamics::WheelsetSpin::Free))
+      d.add(e.loc, what +
+                       ": traction at the wheelsets (train.longitudinal.traction_at) needs "
+                       "wheel/rail contact with a free wheelset spin (contact.wheelset_spin = "
+                       "\"free\"); give traction_at = \"vehicle\" to apply it as a force");
     c.longitudinal.traction.push_back(e.traction);
     c.longitudinal.resistance.push_back(e.resistance);
     const vehicle::VehicleModel& m = c.vehicles[k].vehicle;

@@ -231,6 +231,7 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     (void)train->prepare(t, y.data());
     *out++ = train->longitudinal() ? train->motion(0).speed : lead.speedAt(t);
     for (auto& p : parts) out = p.outputs->sample(t, y.data() + p.offset, out);
+    train->updateAccelerations();  // from the contact forces the outputs just evaluated
     out = sampleTrain(*train, out);
   };
   f.attr("/", "solver", m.solver.method);

@@ -156,6 +156,7 @@ void buildTrain(const Node& n, LuaHost& host, ScenarioSpec& spec, Diagnostics& d
     spec.train_longitudinal.on = true;
     spec.train_longitudinal.loc = l->loc;
     spec.train_longitudinal.min_speed = lr.number("min_speed");
+    spec.train_longitudinal.traction_at = lr.choiceOf<train::TractionPath>("traction_at");
   }
   const Node* connections = r.value("connections");
   const Node* list = r.value("vehicles");

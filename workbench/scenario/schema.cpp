@@ -15,6 +15,7 @@
 #include "workbench/profiles/nominal.hpp"
 #include "workbench/scenario/effect_names.hpp"
 #include "workbench/track/names.hpp"
+#include "workbench/train/longitudinal.hpp"
 #include "workbench/vehicle/names.hpp"
 
 namespace rb::scenario {
@@ -736,7 +737,9 @@ void addTrainBlocks(std::vector<BlockSpec>& s) {
                {num("min_speed", "m/s", 1.0,
                     "a vehicle slower than this ends the run (the creepages are referred to the "
                     "forward speed)",
-                    0.1, kInf)}});
+                    0.1, kInf),
+                enumChoice("traction_at", train::TractionPath::Wheelsets,
+                           "where traction and braking act (docs/trains.md)")}});
   s.push_back({"train.resistance",
                "Running resistance of a vehicle in the Davis form a + b v + c v^2 (a plain "
                "table).",

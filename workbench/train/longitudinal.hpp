@@ -9,15 +9,39 @@
 // with the travel).
 //
 // Traction and braking: a force per vehicle at the rails (traction > 0, braking < 0) against time
-// or distance travelled, linear between points and held beyond them. It acts on the vehicle's
-// longitudinal equation; the wheel/rail creep forces do not carry it (the bodies of one vehicle
-// share one longitudinal motion, so the wheelsets cannot slip against the car body), which is
-// stated wherever the results are shown.
+// or distance travelled, linear between points and held beyond them, applied one of two ways
+// (TractionPath):
+// - wheelsets: as a torque F r0 / n on each of the vehicle's n wheelsets (free spin), reacted on
+//   the body its primary suspension hangs from (the bogie frame: brake rigging and traction
+//   motors are mounted there). The wheels' creep forces then carry the effort, and the
+//   longitudinal equation takes the contact forces along the track (creep and normal forces of
+//   every wheel) instead of F: wheel slide at the adhesion limit and the curving resistance are
+//   in it. The vehicle's own equations use the acceleration with the nominal F for their inertia
+//   of the longitudinal acceleration (the terms M_qs a, a small coupling on curves), so that the
+//   right-hand side stays a function of the state; they differ from the state's acceleration
+//   only while the creep forces differ from F.
+// - vehicle: as a force on the longitudinal equation directly (guided wheelsets, or a prescribed
+//   spin); the contact forces along the track are then not in it.
+// The bodies of one vehicle share one longitudinal motion: a vehicle's longitudinal suspension
+// does not deflect, so the load transfer between bogies from the car body's inertia under
+// braking is not modelled (the brake torque's reaction on each bogie is).
+#include <array>
 #include <vector>
 
 #include "workbench/core/error.hpp"
+#include "workbench/core/names.hpp"
 
 namespace rb::train {
+
+enum class TractionPath { Wheelsets, Vehicle };
+inline constexpr std::array<NameEntry<TractionPath>, 2> kTractionPathNames = {{
+    {TractionPath::Wheelsets, "wheelsets",
+     "a torque on every wheelset's spin, reacted on its bogie: the creep forces carry it"},
+    {TractionPath::Vehicle, "vehicle", "a force on the vehicle's longitudinal equation"},
+}};
+constexpr const auto& nameTable(TractionPath /*tag*/) {
+  return kTractionPathNames;
+}
 
 struct TractionSpec {
   bool by_distance = false;  // at = distance travelled [m] (else time [s])
@@ -39,6 +63,7 @@ struct LongitudinalSpec {
   // [m/s] a vehicle slower than this ends the run: the creepages of the contact models are
   // referred to the forward speed, and the train is not simulated to a stand.
   double min_speed = 1.0;
+  TractionPath traction_at = TractionPath::Wheelsets;
   SourceLoc loc;
 };
 

@@ -9,12 +9,12 @@
 
 namespace rb::train {
 
-double longitudinalMass(const vehicle::VehicleModel& m) {
+double longitudinalMass(const vehicle::VehicleModel& m, bool rotating) {
   double mass = 0.0;
   for (const auto& b : m.bodies) {
     if (b.kind == vehicle::BodyKind::Frame) continue;
     mass += b.mass;
-    if (b.kind == vehicle::BodyKind::Wheelset)
+    if (rotating && b.kind == vehicle::BodyKind::Wheelset)
       mass += b.inertia.y() / (m.wheel_radius * m.wheel_radius);
   }
   return mass;
@@ -28,6 +28,29 @@ double sForce(const vehicle::BodyKinematics& k, const std::vector<vehicle::Appli
   for (const auto& l : loads)
     vehicle::addPointForce(k, k.attach.A * l.u, k.tf.A.transpose() * l.force, Q);
   return Q[vehicle::kS];
+}
+
+// Each wheelset of m with the body its primary suspension hangs from (the first element joining it
+// to a body that is not a wheelset); -1 when none does.
+std::vector<std::array<int, 2>> drivesOf(const vehicle::VehicleModel& m) {
+  std::vector<std::array<int, 2>> out;
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    if (m.bodies[b].kind != vehicle::BodyKind::Wheelset) continue;
+    int carrier = -1;
+    for (const vehicle::ElementId id : m.elements()) {
+      const vehicle::ElementGeometry& g = m.element(id);
+      const int other = g.body1 == static_cast<int>(b)   ? g.body2
+                        : g.body2 == static_cast<int>(b) ? g.body1
+                                                         : -1;
+      if (other >= 0 &&
+          m.bodies[static_cast<std::size_t>(other)].kind != vehicle::BodyKind::Wheelset) {
+        carrier = other;
+        break;
+      }
+    }
+    out.push_back({static_cast<int>(b), carrier});
+  }
+  return out;
 }
 
 }  // namespace
@@ -59,11 +82,26 @@ TrainOde::TrainOde(std::vector<Part> parts, std::vector<Connection> connections,
     size_ += 2 * n;
   }
   motion_.resize(parts_.size());
+  const bool at_wheelsets =
+      longitudinal_.spec.on && longitudinal_.spec.traction_at == TractionPath::Wheelsets;
   for (int k = 0; k < n; ++k)
-    motion_[static_cast<std::size_t>(k)].mass = longitudinalMass(vehicle(k).model());
+    motion_[static_cast<std::size_t>(k)].mass =
+        longitudinalMass(vehicle(k).model(), !(at_wheelsets && vehicle(k).layout().spinFree()));
   states_.resize(connections_.size());
   kin_.resize(2 * connections_.size());
   loads_.resize(parts_.size());
+  moments_.resize(parts_.size());
+  drives_.resize(parts_.size());
+  if (longitudinal_.spec.on && longitudinal_.spec.traction_at == TractionPath::Wheelsets)
+    for (int k = 0; k < n; ++k) {
+      if (!longitudinal_.traction[static_cast<std::size_t>(k)].given()) continue;
+      drives_[static_cast<std::size_t>(k)] = drivesOf(vehicle(k).model());
+      for (const auto& d : drives_[static_cast<std::size_t>(k)])
+        if (d[1] < 0 || !vehicle(k).layout().spinFree())
+          throw std::logic_error(
+              "TrainOde: traction at the wheelsets needs free wheelset spins and a body every "
+              "wheelset hangs from");
+    }
 }
 
 void TrainOde::initialLongitudinal(Eigen::VectorXd& y) const {
@@ -147,12 +185,36 @@ int TrainOde::prepare(double t, const double* y) {
           resistanceForce(longitudinal_.resistance[static_cast<std::size_t>(k)], mo.speed);
       // The slope's share of the weight along the track: gradient = tan(slope), uphill > 0.
       mo.grade = mo.mass * m.gravity * gradient / std::sqrt(1.0 + gradient * gradient);
+      // The nominal acceleration; with the traction at the wheelsets the state's is the contact
+      // forces' (updateAccelerations), this one the vehicle's inertia terms use.
       mo.acceleration = (mo.traction - mo.resistance - mo.grade + mo.connections) / mo.mass;
       vehicle(k).setForwardMotion({mo.travel, mo.speed, mo.acceleration});
+      auto& moments = moments_[static_cast<std::size_t>(k)];
+      moments.clear();
+      const auto& drives = drives_[static_cast<std::size_t>(k)];
+      if (!drives.empty()) {
+        const double torque = mo.traction * m.wheel_radius / static_cast<double>(drives.size());
+        for (const auto& d : drives) {
+          moments.push_back({d[0], d[0], torque});
+          moments.push_back({d[1], d[0], -torque});
+        }
+      }
     }
-    if (!connections_.empty()) vehicle(k).setAppliedLoads(loads_[static_cast<std::size_t>(k)]);
+    if (!connections_.empty() || !moments_[static_cast<std::size_t>(k)].empty())
+      vehicle(k).setAppliedLoads(loads_[static_cast<std::size_t>(k)],
+                                 moments_[static_cast<std::size_t>(k)]);
   }
   return 0;
+}
+
+void TrainOde::updateAccelerations() {
+  if (!longitudinal() || longitudinal_.spec.traction_at != TractionPath::Wheelsets) return;
+  for (int k = 0; k < vehicles(); ++k) {
+    VehicleMotion& mo = motion_[static_cast<std::size_t>(k)];
+    mo.rail = vehicle(k).railForce();
+    // A vehicle without traction has no torques: its effort is zero either way.
+    mo.acceleration = (mo.rail - mo.resistance - mo.grade + mo.connections) / mo.mass;
+  }
 }
 
 int TrainOde::rhs(double t, const double* y, double* ydot) {
@@ -167,6 +229,7 @@ int TrainOde::rhs(double t, const double* y, double* ydot) {
       return rc;
     }
   }
+  updateAccelerations();
   if (longitudinal())
     for (int k = 0; k < vehicles(); ++k) {
       ydot[travelIndex(k)] = y[speedIndex(k)];

@@ -9,6 +9,7 @@
 // block-diagonal and a fixed-step method integrates each vehicle exactly as it would alone (every
 // update of a fixed-step method is component-wise). A train of one vehicle is that vehicle's
 // ODE with unchanged component names.
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,12 +43,17 @@ struct Longitudinal {
 struct VehicleMotion {
   double travel = 0.0, speed = 0.0, acceleration = 0.0;
   double traction = 0.0, resistance = 0.0, grade = 0.0, connections = 0.0;  // [N] forces
-  double mass = 0.0;                                                        // [kg]
+  // [N] the wheel/rail contact forces along the track (traction at the wheelsets: what carries
+  // the traction there).
+  double rail = 0.0;
+  double mass = 0.0;  // [kg]
 };
 
-// The mass of a vehicle's longitudinal equation: its bodies' plus the rotating-mass allowance of
-// its wheelsets, sum I_yy / r0^2.
-double longitudinalMass(const vehicle::VehicleModel& m);
+// The mass of a vehicle's longitudinal equation: its bodies', plus the rotating-mass allowance of
+// its wheelsets, sum I_yy / r0^2, when their spin follows the travel (guided, prescribed spin, or
+// traction applied to the vehicle). A free spin whose creep forces enter the equation brings its
+// own inertia: its creep forces are the rotating mass's share.
+double longitudinalMass(const vehicle::VehicleModel& m, bool rotating = true);
 
 class TrainOde final : public integ::OdeSystem {
  public:
@@ -95,6 +101,9 @@ class TrainOde final : public integ::OdeSystem {
   }
   // The start state of the longitudinal components: travel 0 and each vehicle's speed V0.
   void initialLongitudinal(Eigen::VectorXd& y) const;
+  // With the traction at the wheelsets: every vehicle's acceleration from the contact forces of
+  // its last evaluation (rhs() calls it after the vehicles; the outputs after evaluating them).
+  void updateAccelerations();
 
  private:
   void addConnectionPattern(integ::JacobianPattern& out) const;
@@ -111,7 +120,10 @@ class TrainOde final : public integ::OdeSystem {
   std::vector<VehicleMotion> motion_;
   std::vector<ConnectionState> states_;
   std::vector<vehicle::BodyKinematics> kin_;  // per connection end: 2 i (front), 2 i + 1 (rear)
-  std::vector<std::vector<vehicle::AppliedLoad>> loads_;  // per vehicle
+  std::vector<std::vector<vehicle::AppliedLoad>> loads_;      // per vehicle
+  std::vector<std::vector<vehicle::AppliedMoment>> moments_;  // per vehicle
+  // Per vehicle, its wheelsets and the bodies their brake or traction torques react on.
+  std::vector<std::vector<std::array<int, 2>>> drives_;
 };
 
 }  // namespace rb::train

@@ -231,6 +231,15 @@ void evaluate(const VehicleModel& m, const double* series_f, Workspace& ws) {
     addPointForce(k, k.attach.A * a.u, k.tf.A.transpose() * a.force,
                   ws.force[static_cast<std::size_t>(a.body)]);
   }
+  // Moments: on the angles through the body frame's angular-velocity map, omega (track comps)
+  // = Abar G alpha_dot, so Q_alpha = (Abar G)^T M (the spin of a wheelset included).
+  for (const AppliedMoment& a : ws.moments) {
+    const BodyKinematics& k = ws.kin[static_cast<std::size_t>(a.body)];
+    const BodyKinematics& ax = ws.kin[static_cast<std::size_t>(a.axis)];
+    const Eigen::Vector3d moment = ax.tf.A * ax.attach.A.col(1) * a.torque;  // global
+    ws.force[static_cast<std::size_t>(a.body)].segment<3>(kRoll).noalias() +=
+        (k.body.A * k.body.G).transpose() * (k.tf.A.transpose() * moment);
+  }
 
   // Bending springs: relative rotation of the attachment frames in the master track frame.
   // theta_dot = T1 (A_ij omega_j - w_i sdot_i) - T2 (omega_i - w_i sdot_i), omega = absolute

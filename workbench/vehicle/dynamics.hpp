@@ -59,6 +59,16 @@ struct AppliedLoad {
   bool operator==(const AppliedLoad&) const = default;
 };
 
+// A moment on a body from outside its suspension: `torque` about the y axis of the attachment
+// frame of body `axis` (a wheelset's axle), so that a wheelset's brake or traction torque and its
+// reaction on the bogie act about one axis and balance exactly.
+struct AppliedMoment {
+  int body = 0;
+  int axis = 0;
+  double torque = 0.0;  // [N m]
+  bool operator==(const AppliedMoment&) const = default;
+};
+
 struct Workspace {
   // Inputs: full coordinates and rates of every body (set by the ODE adapter).
   std::vector<Vector6d> q, qd;
@@ -67,6 +77,7 @@ struct Workspace {
   // evaluate() as point forces (addPointForce).
   std::optional<ForwardMotion> motion;
   std::vector<AppliedLoad> applied;
+  std::vector<AppliedMoment> moments;
   // Outputs of evaluate():
   std::vector<BodyKinematics> kin;
   std::vector<Matrix6d> mass;   // M_i

@@ -71,12 +71,20 @@ class VehicleOde : public integ::OdeSystem {
     ws.motion = motion;
     inputsChanged();
   }
-  void setAppliedLoads(std::span<const AppliedLoad> loads) {
+  void setAppliedLoads(std::span<const AppliedLoad> loads,
+                       std::span<const AppliedMoment> moments = {}) {
     Workspace& ws = bodyWorkspace();
-    if (std::equal(loads.begin(), loads.end(), ws.applied.begin(), ws.applied.end())) return;
+    if (std::equal(loads.begin(), loads.end(), ws.applied.begin(), ws.applied.end()) &&
+        std::equal(moments.begin(), moments.end(), ws.moments.begin(), ws.moments.end()))
+      return;
     ws.applied.assign(loads.begin(), loads.end());
+    ws.moments.assign(moments.begin(), moments.end());
     inputsChanged();
   }
+
+  // The wheel/rail contact forces along the track of the last evaluation with a forward motion
+  // set [N]; 0 for a vehicle without contact (guided wheelsets follow the track).
+  virtual double railForce() const { return 0.0; }
 
   // Sampled timing of the rhs stages (stage_clock.hpp): rhs() evaluations only, not the outputs
   // and initial-state evaluations. setStageSampling(0) turns it off.
