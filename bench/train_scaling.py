@@ -2,7 +2,7 @@
 """Cost of a train against its number of vehicles (docs/trains.md, "Cost").
 
 usage: bench/train_scaling.py [CSV] [--workbench BIN] [--vehicles 1,2,4,10] [--duration 0.5]
-                              [--no-callgrind]
+                              [--no-callgrind] [--coupled]
 
 Trains of N Manchester wagons 1 (KEC, the default scene's set-up: case 3 track with ORE B176 low
 irregularities, ABM 1.25 ms with exponential stiff components, every output and the assessment)
@@ -10,6 +10,12 @@ run for `duration` simulated seconds, the leading wagon's reference point at 260
 25 m behind it (N = 1: the same wagon in a vehicle{} block). Without connections the vehicles are
 independent, so the cost per rhs evaluation should grow as N: instructions per evaluation per
 vehicle equal to one vehicle's.
+
+--coupled: the wagons joined by buffers and draw gear (scenarios/train/couplings.lua, 50 mm
+between the buffer faces and 60 mm slack, so that no connection is loaded at the start), with
+their motion along the track as states and the leading wagon braking with 30 kN at its
+wheelsets, on a track whose first 300 m are tangent (the leading wagon at 280 m): the cost of the
+connections, the longitudinal states and the brake torques on top of the vehicles'.
 
 Per N the run is made twice: plainly (CPU time from /stats) and under valgrind's callgrind,
 collecting inside rb::integ::integrate only (the right-hand sides, the integrator and the output
@@ -50,6 +56,33 @@ run {{ output = {{ every = 0.01 }}, duration = {duration},
 """
 
 
+COUPLED_TRACK = """track { segments = { tangent { length = 300 },
+  transition { length = 50, radius = 500, side = "left" },
+  curve { length = 300, radius = 500, side = "left" } }, step = 0.5,
+  irregularities = psd { spectrum = "ore_b176_low", seed = 42, wavelengths = { 3, 70 },
+                         step = 0.1, fade_in = 0 } }
+"""
+
+
+def coupled(n: int, duration: float) -> str:
+    head = HEAD.format(n=n)
+    text = (head[:head.index("track {")] + "local couplings = require \"train.couplings\"\n" +
+            COUPLED_TRACK + head[head.index("c.profiles()"):])
+    if n == 1:
+        text += "vehicle (wagon { speed = 20, start = 280 })\n"
+        return text + TAIL.format(duration=duration)
+    entries = []
+    for k in range(n):
+        brake = ", traction = { { 0, 0 }, { 0.1, -30e3 } }" if k == 0 else ""
+        entries.append(f'  {{ name = "w{k + 1}", vehicle = wagon {{ speed = 20, '
+                       f'start = {280 - 25.05 * k:.2f} }}{brake} }}')
+    links = ",\n".join(f'  couplings.screw("w{k + 1}", "w{k + 2}", {{ slack = 0.06 }})'
+                        for k in range(n - 1))
+    text += ("train { vehicles = {\n" + ",\n".join(entries) + "\n},\nconnections = {\n" + links +
+             "\n},\nlongitudinal = {} }\n")
+    return text + TAIL.format(duration=duration)
+
+
 def scenario(n: int, duration: float) -> str:
     text = HEAD.format(n=n)
     if n == 1:
@@ -80,6 +113,7 @@ def main(argv=None) -> int:
     ap.add_argument("--vehicles", default="1,2,4,10")
     ap.add_argument("--duration", type=float, default=0.5)
     ap.add_argument("--no-callgrind", action="store_true")
+    ap.add_argument("--coupled", action="store_true")
     a = ap.parse_args(argv)
     counts = [int(v) for v in a.vehicles.split(",")]
     if not counts or min(counts) < 1 or max(counts) > 10:
@@ -91,7 +125,7 @@ def main(argv=None) -> int:
         for n in counts:
             lua = os.path.join(tmp, f"train_{n}.lua")
             with open(lua, "w") as f:
-                f.write(scenario(n, a.duration))
+                f.write(coupled(n, a.duration) if a.coupled else scenario(n, a.duration))
             out = os.path.join(tmp, f"train_{n}.h5")
             evals, cpu = run([a.workbench, "run", lua, "--out", out, "--quiet"], out)
             row = dict(vehicles=n, rhs_evals=evals, cpu_s=f"{cpu:.4f}",

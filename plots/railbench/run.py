@@ -81,6 +81,7 @@ from .layout import _num, _pair, add_failure_banner, failure_text
 from .vehicle_figs import _CONTACT_ROWS, _CREEP_ROWS, _ROW_FLANGE, _ROW_INDENT, _contact_rows, _row_present, fig_bodies_car, fig_contact_forces, fig_creep, fig_flange_contact, fig_wheelsets
 from .dynamics_figs import _element_names, acceleration_bodies, fig_accelerations, fig_elements
 from .assessment import fig_assessment, has_assessment
+from .train_figs import fig_train, train_connections
 
 
 def panel_points(fig) -> Dict[str, int]:
@@ -201,6 +202,8 @@ FIGURES: List[FigureSpec] = [
     # Groups of /assessment the run did not write are panels left out (assessment.py).
     FigureSpec("assessment", has_assessment, fig_assessment,
                "assessment: Y/Q, track shift force, wheel unloading, comfort, stability, wear"),
+    FigureSpec("train", lambda r: bool(train_connections(r)), fig_train,
+               "in-train forces per connection against distance, and the vehicles' speeds"),
     # /stats is summarised in text (stats_summary, printed by `railbench run`), not drawn.
 ]
 
@@ -220,7 +223,8 @@ def build_figure(result: Result, spec) -> "plt.Figure":
     return fig
 
 
-TRACK_FIGURES = ("track_plan", "track_curvature_cant", "irregularities", "irregularity_psd")
+TRACK_FIGURES = ("track_plan", "track_curvature_cant", "irregularities", "irregularity_psd",
+                 "train")
 
 
 def make_figures(result: Result, outdir: Optional[str] = None, stem: Optional[str] = None,

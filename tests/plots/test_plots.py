@@ -33,6 +33,7 @@ from railbench.result import load_result
 from railbench.run import FIGURES, build_figure, panel_points, stats_summary, steady_state
 from railbench.style import A4_WIDTH_IN, DPI, plt
 from railbench.track_figs import fig_irregularities, fig_irregularity_psd
+from railbench.train_figs import train_connections
 from railbench.vehicle_figs import fig_contact_forces, nadal_from_file
 
 TRACK_FIGS = ["track_plan", "track_curvature_cant"]
@@ -61,6 +62,7 @@ RUNS = {
     "nocreep": ("tests/plots/contact_short.lua", ["contact.creep=none", "run.duration=0.05"], 0),
     # Two wagons in a train{} (/vehicles/front, /vehicles/rear).
     "train": ("tests/run/data/train_two_wagons.lua", ["run.duration=0.1"], 0),
+    "rake": ("tests/run/data/train_braking_rake.lua", ["run.duration=0.8"], 0),
     "fail": ("tests/plots/contact_short.lua",
              ["solver.method=rk4", "solver.step=0.01", "run.output.every=0.01",
               "solver.accept_unstable_step=true"], 2),
@@ -370,6 +372,29 @@ def test_e_train_figures_per_vehicle():
                  "train_rear_contact_forces.png", "train_rear_assessment.png"):
         check(want in names, f"{want} not drawn: {sorted(names)}")
     check(not any(n.startswith("train_front_track") for n in names), "track figures once")
+
+
+def test_e_train_connections_figure():
+    """A train with connections and its motion as states: the train figure once (not per
+    vehicle), with one line per connection drawn from the file's forces, and the speeds; a train
+    without connections has none."""
+    import h5py
+    out = os.path.join(TMP, "rake_figs")
+    r = run_cli(_f("rake"), "--outdir", out)
+    check(r.returncode == 0, f"exit {r.returncode}: {r.stderr.strip()}")
+    names = {os.path.basename(ln) for ln in r.stdout.splitlines() if ln.endswith(".png")}
+    check("rake_train.png" in names, f"no train figure: {sorted(names)}")
+    check(not any(n.startswith("rake_w1_train") for n in names), "the train figure once")
+    fig = build_figure(res("rake"), "train")
+    lines = fig.axes[0].get_lines()
+    forces = [ln for ln in lines if ln.get_label() in ("w1-w2", "w2-w3")]
+    check(len(forces) == 2, f"one line per connection: {[ln.get_label() for ln in lines]}")
+    with h5py.File(_f("rake"), "r") as f:
+        want = f["/train/connections/w1-w2/force"][()] * 1e-3
+    got = [ln for ln in forces if ln.get_label() == "w1-w2"][0].get_ydata()
+    check(np.allclose(got, want), "the force line is the file's force in kN")
+    check(len(fig.axes) == 3 and len(fig.axes[2].get_lines()) == 3, "a speed line per vehicle")
+    check(not train_connections(res("train")), "no connections: no train figure")
 
 
 def test_e_y_over_q_drawn_for_every_wheel():
