@@ -236,13 +236,15 @@ def throughput_block(outdir: str) -> str:
 TRAIN_SCALING = "train_scaling"
 
 
-def train_scaling_block(outdir: str) -> str:
+TRAIN_SCALING_COUPLED = "train_scaling_coupled"
+
+
+def train_scaling_block(outdir: str, study: str = TRAIN_SCALING) -> str:
     """docs/trains.md "Cost": per number of wagons the rhs evaluations, CPU and instructions per
-    evaluation per vehicle (bench/train_scaling.py)."""
-    rows = read_csv(os.path.join(outdir, TRAIN_SCALING, "train_scaling.csv"))
+    evaluation per vehicle (bench/train_scaling.py; study train_scaling_coupled: --coupled)."""
+    rows = read_csv(os.path.join(outdir, study, f"{study}.csv"))
     if not rows:
-        return missing(f"{outdir}/{TRAIN_SCALING}/train_scaling.csv "
-                       f"(./wb studies --only {TRAIN_SCALING})")
+        return missing(f"{outdir}/{study}/{study}.csv (./wb studies --only {study})")
     body = [[r["vehicles"], r["rhs_evals"], fmt(num(r["us_per_eval"]), "{:.1f}"),
              fmt(num(r["us_per_eval_per_vehicle"]), "{:.1f}"),
              fmt(num(r["instructions_per_eval"]), "{:.0f}"),
@@ -274,4 +276,5 @@ def sweep_blocks(outdir: str) -> Dict[str, Dict[str, str]]:
     return {"studies.md": {SWEEP: sweep_block(outdir)},
             "performance.md": {THROUGHPUT: throughput_block(outdir)},
             "trains.md": {TRAIN_SCALING: train_scaling_block(outdir),
+                          TRAIN_SCALING_COUPLED: train_scaling_block(outdir, TRAIN_SCALING_COUPLED),
                           TRAIN_BRAKING: train_braking_block(outdir)}}

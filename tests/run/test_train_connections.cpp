@@ -118,6 +118,26 @@ TEST(TrainConnections, BrakingRakeForcesAreTheDeceleratingMasses) {
   EXPECT_NEAR(v.back(), 20.0 + a * (3.0 - 0.45), 0.02);
 }
 
+TEST(TrainConnections, CoastingUphillTheSlopeDecelerates) {
+  // Two coupled wagons without traction or resistance up a 2 % gradient: the bodies' weight along
+  // the track decelerates the bodies and, through the creep forces, the wheelsets' spin, a =
+  // -m_b g sin(atan 0.02) / (m_b + 4 I_yy / r0^2), and the connection carries nothing.
+  const rb::test::RunFile f =
+      rb::test::runInto(rb::test::compiled("tests/run/data/train_uphill.lua"),
+                        "rb_test_train_connections", "uphill.h5");
+  ASSERT_TRUE(f.result.result.ok) << f.result.result.message;
+  const rb::io::ResultReader r(f.path);
+  const auto t = *r.dataset("/time");
+  const double mb = 32000.0 + 2 * 2615.0 + 4 * 1813.0, rot = 4 * 112.0 / 0.46 / 0.46;
+  const double a = -mb * 9.81 * 0.02 / std::sqrt(1.0 + 0.02 * 0.02) / (mb + rot);
+  for (const char* v : {"w1", "w2"})
+    EXPECT_NEAR(
+        meanOver(t, *r.dataset("/vehicles/" + std::string(v) + "/motion/acceleration"), 1.0), a,
+        0.002 * -a)
+        << v;
+  EXPECT_LT(std::abs(meanOver(t, *r.dataset("/train/connections/w1-w2/force"), 1.0)), 50.0);
+}
+
 TEST(TrainConnections, RunInOverABufferGapIsAForcePeak) {
   // The same rake with 20 mm between the buffer faces (and 30 mm draw-gear slack): the wagons
   // behind run into the braked one and the buffers meet with a closing speed, a force peak well

@@ -84,9 +84,12 @@ TrainOde::TrainOde(std::vector<Part> parts, std::vector<Connection> connections,
   motion_.resize(parts_.size());
   const bool at_wheelsets =
       longitudinal_.spec.on && longitudinal_.spec.traction_at == TractionPath::Wheelsets;
-  for (int k = 0; k < n; ++k)
-    motion_[static_cast<std::size_t>(k)].mass =
+  for (int k = 0; k < n; ++k) {
+    VehicleMotion& mo = motion_[static_cast<std::size_t>(k)];
+    mo.mass =
         longitudinalMass(vehicle(k).model(), !(at_wheelsets && vehicle(k).layout().spinFree()));
+    mo.body_mass = longitudinalMass(vehicle(k).model(), false);
+  }
   states_.resize(connections_.size());
   kin_.resize(2 * connections_.size());
   loads_.resize(parts_.size());
@@ -144,6 +147,13 @@ int TrainOde::prepare(double t, const double* y) {
     vehicle::BodyKinematics* kin[2] = {&kin_[2 * i], &kin_[2 * i + 1]};
     const int veh[2] = {c.front, c.rear}, body[2] = {c.front_body, c.rear_body};
     for (int e = 0; e < 2; ++e) {
+      // A vehicle between two connections on one body: its kinematics once (the rear end of the
+      // connection before is this one's front end).
+      if (e == 0 && i > 0 && connections_[i - 1].rear == c.front &&
+          connections_[i - 1].rear_body == c.front_body) {
+        *kin[0] = kin_[2 * i - 1];
+        continue;
+      }
       const vehicle::VehicleOde& ode = vehicle(veh[e]);
       const vehicle::VehicleModel& m = ode.model();
       const vehicle::VehicleLayout& l = ode.layout();
@@ -178,13 +188,14 @@ int TrainOde::prepare(double t, const double* y) {
       const vehicle::VehicleModel& m = vehicle(k).model();
       const auto ref =
           static_cast<std::size_t>(longitudinal_.reference_body[static_cast<std::size_t>(k)]);
-      const double gradient = m.geometry.at(m.start + m.bodies[ref].x + mo.travel).gradient;
+      const double gradient = slopeUnder(k, ref, m.start + m.bodies[ref].x + mo.travel);
       mo.traction =
           tractionForce(longitudinal_.traction[static_cast<std::size_t>(k)], t, mo.travel);
       mo.resistance =
           resistanceForce(longitudinal_.resistance[static_cast<std::size_t>(k)], mo.speed);
       // The slope's share of the weight along the track: gradient = tan(slope), uphill > 0.
-      mo.grade = mo.mass * m.gravity * gradient / std::sqrt(1.0 + gradient * gradient);
+      // (the bodies' weight: the rotating-mass allowance is inertia, not weight)
+      mo.grade = mo.body_mass * m.gravity * gradient / std::sqrt(1.0 + gradient * gradient);
       // The nominal acceleration; with the traction at the wheelsets the state's is the contact
       // forces' (updateAccelerations), this one the vehicle's inertia terms use.
       mo.acceleration = (mo.traction - mo.resistance - mo.grade + mo.connections) / mo.mass;
@@ -205,6 +216,18 @@ int TrainOde::prepare(double t, const double* y) {
                                  moments_[static_cast<std::size_t>(k)]);
   }
   return 0;
+}
+
+double TrainOde::slopeUnder(int k, std::size_t body, double s) const {
+  // The body's track frame of this evaluation, when a connection end computed it.
+  for (std::size_t i = 0; i < connections_.size(); ++i) {
+    const Connection& c = connections_[i];
+    if (c.front == k && static_cast<std::size_t>(c.front_body) == body)
+      return kin_[2 * i].tf.gradient;
+    if (c.rear == k && static_cast<std::size_t>(c.rear_body) == body)
+      return kin_[2 * i + 1].tf.gradient;
+  }
+  return vehicle(k).model().geometry.at(s).gradient;
 }
 
 void TrainOde::updateAccelerations() {

@@ -46,7 +46,8 @@ struct VehicleMotion {
   // [N] the wheel/rail contact forces along the track (traction at the wheelsets: what carries
   // the traction there).
   double rail = 0.0;
-  double mass = 0.0;  // [kg]
+  double mass = 0.0;       // [kg] of the longitudinal equation (longitudinalMass)
+  double body_mass = 0.0;  // [kg] the bodies' alone: what the slope pulls on
 };
 
 // The mass of a vehicle's longitudinal equation: its bodies', plus the rotating-mass allowance of
@@ -107,6 +108,8 @@ class TrainOde final : public integ::OdeSystem {
 
  private:
   void addConnectionPattern(integ::JacobianPattern& out) const;
+  // The track's gradient under body `body` of vehicle k at arc length s.
+  double slopeUnder(int k, std::size_t body, double s) const;
   void addLongitudinalPattern(integ::JacobianPattern& out) const;
 
   std::vector<Part> parts_;
