@@ -84,6 +84,28 @@ BLOCK_SOURCES = {
 BENCH_OUTPUTS = {"bench": "bench_wagon", "bench_integrators": "bench_integrators"}
 
 
+def source_files(name: str, outdir: str, build: str) -> List[str]:
+    """The files whose modification says a block's runs were made anew: its study folders'
+    provenance records, a benchmark's record, or the hard-case record; [] for the blocks of the
+    build tree's tests and of the invocation's own record."""
+    src = BLOCK_SOURCES.get(name)
+    if src == "hard":
+        return [os.path.join(build, "hard", "hard_cases.csv")]
+    if src in (None, "build"):
+        return []
+    if isinstance(src, tuple):
+        return [os.path.join(outdir, f, "provenance.json") for f in src]
+    if src in BENCH_OUTPUTS:
+        return [os.path.join(outdir, BENCH_OUTPUTS[src] + ".provenance.json")]
+    return [os.path.join(outdir, src, "provenance.json")]
+
+
+def made_since(name: str, outdir: str, build: str, since: float) -> bool:
+    """Whether a block's runs were made at or after `since` (seconds since the epoch)."""
+    return any(os.path.exists(f) and os.path.getmtime(f) >= since
+               for f in source_files(name, outdir, build))
+
+
 def block_provenance(name: str, outdir: str, build: str) -> List[dict]:
     src = BLOCK_SOURCES.get(name)
     if src == "build":  # written by the tests of the build tree now being documented
@@ -249,6 +271,10 @@ def main(argv=None) -> int:
     ap.add_argument("--only", choices=("contact_dynamics",),
                     help="regenerate only the blocks of docs/NAME.md (inputs from --build, no "
                          "studies needed)")
+    ap.add_argument("--since", type=float, metavar="EPOCH",
+                    help="rewrite only the blocks whose runs were made at or after this time "
+                         "(`./wb studies --only`: the other blocks keep what an earlier run "
+                         "wrote)")
     ap.add_argument("--pages", nargs="+", metavar="PAGE",
                     help="rewrite only these pages (e.g. validation.md hard_cases.md) after a "
                          "partial ./wb studies run; the other pages keep their blocks")
@@ -283,6 +309,8 @@ def main(argv=None) -> int:
         with open(path) as f:
             text = f.read()
         for name, body in items.items():
+            if a.since is not None and not made_since(name, a.outdir, a.build, a.since):
+                continue
             stamp = provenance.stamp(block_provenance(name, a.outdir, a.build))
             try:
                 text = replace_block(text, name, body, stamp)

@@ -173,6 +173,27 @@ def test_blocks_replaced_between_markers():
           "--pages leaves the pages not named alone")
     check(update_docs([out, "--docs", docs, "--pages", "nosuch.md"]) == 1,
           "--pages with an unknown page is an error")
+    # --since (`./wb studies --only`): only the blocks whose runs were made since then; a block
+    # whose study did not run keeps what an earlier run wrote, even one whose input is missing.
+    import time
+    since = time.time() + 3600.0  # later than every study folder of this test
+    check(update_docs([out, "--build", os.path.join(TMP, "nobuild"), "--docs", docs, "--since",
+                       str(since)]) == 0, "--since returns 0")
+    check("(KEPT)" in open(os.path.join(docs, "studies.md")).read(),
+          "--since leaves the blocks of studies not run since alone")
+    speed_record = os.path.join(out, "speed", "provenance.json")
+    os.makedirs(os.path.dirname(speed_record), exist_ok=True)
+    provenance.record(speed_record, entry={"commit": "abc1234", "dirty": False,
+                                           "date": "2026-12-01"})
+    os.utime(speed_record, (since + 1.0, since + 1.0))
+    check(update_docs([out, "--build", os.path.join(TMP, "nobuild"), "--docs", docs, "--since",
+                       str(since)]) == 0, "--since returns 0 (a study run since)")
+    perf = open(os.path.join(docs, "performance.md")).read()
+    check("`abc1234`" in perf.split("generated: speed")[1].split("end: speed")[0],
+          "--since rewrites the block of a study run since")
+    check("(KEPT)" in open(os.path.join(docs, "studies.md")).read(),
+          "and still nothing else")
+    os.remove(speed_record)
     with open(os.path.join(docs, "studies.md"), "w") as f:
         f.write(before)
 
