@@ -204,7 +204,7 @@ int setIndependentCoordinates(const ContactModels& models, const StageInput& in,
     vehicle::Vector6d& qd = work.bodies.qd[b];
     q.setZero();
     qd.setZero();
-    q[kS] = m.start + m.bodies[b].x + in.travel;  // VehicleModel::bodyS
+    q[kS] = m.bodySAt(b, in.travel);
     qd[kS] = in.speed;
     const int k = l.freeSlot(b);
     if (k < 0) continue;

@@ -159,30 +159,32 @@ double RunVehicle::trailingX() const {
   return rear;
 }
 
-double Model::maxTravel(const RunVehicle& v, double t) const {
-  if (!longitudinal.spec.on) return v.vehicle.travel(t);
-  // The motion is computed: bounded by the train as one mass (its connections are internal)
-  // under every vehicle's largest traction and the steepest downhill slope of the track, from V0;
-  // the run itself refuses a vehicle past the track's end.
-  double traction = 0.0, mass = 0.0;
-  for (std::size_t k = 0; k < vehicles.size(); ++k) {
-    mass += train::longitudinalMass(vehicles[k].vehicle, false);
-    double most = 0.0;
-    for (const double f : longitudinal.traction[k].force) most = std::max(most, f);
-    traction += most;
-  }
-  double downhill = 0.0;
-  const track::TrackGeometry& g = track->geometry();
-  for (double s = 0.0; s <= g.length(); s += 10.0) downhill = std::max(downhill, -g.at(s).gradient);
-  const double a = traction / mass + v.vehicle.gravity * downhill;
-  return v.vehicle.speedAt(0.0) * t + 0.5 * a * t * t;
-}
-
 Model::Stretch Model::coveredStretch() const {
+  // A computed motion (train.longitudinal) is bounded by the train as one mass (its connections
+  // are internal) under every vehicle's largest traction and the steepest downhill slope of the
+  // track, from V0; the run itself refuses a vehicle past the track's end.
+  double bound = 0.0;  // [m/s^2]
+  if (longitudinal.spec.on) {
+    double traction = 0.0, mass = 0.0;
+    for (std::size_t k = 0; k < vehicles.size(); ++k) {
+      mass += train::longitudinalMass(vehicles[k].vehicle, false);
+      double most = 0.0;
+      for (const double f : longitudinal.traction[k].force) most = std::max(most, f);
+      traction += most;
+    }
+    double downhill = 0.0;
+    const track::TrackGeometry& g = track->geometry();
+    for (double s = 0.0; s <= g.length(); s += 10.0)
+      downhill = std::max(downhill, -g.at(s).gradient);
+    bound = traction / mass + vehicles.front().vehicle.gravity * downhill;
+  }
   Stretch out{1e300, -1e300};
   for (const auto& v : vehicles) {
+    const double travel = longitudinal.spec.on
+                              ? v.vehicle.speedAt(0.0) * t_end + 0.5 * bound * t_end * t_end
+                              : v.vehicle.travel(t_end);
     out.s_from = std::min(out.s_from, v.vehicle.start + v.trailingX());
-    out.s_to = std::max(out.s_to, v.vehicle.start + v.leadingX() + maxTravel(v, t_end));
+    out.s_to = std::max(out.s_to, v.vehicle.start + v.leadingX() + travel);
   }
   return out;
 }
@@ -345,14 +347,6 @@ void compileTrain(Model& c, Diagnostics& d) {
                        "\"free\"); give traction_at = \"vehicle\" to apply it as a force");
     c.longitudinal.traction.push_back(e.traction);
     c.longitudinal.resistance.push_back(e.resistance);
-    const vehicle::VehicleModel& m = c.vehicles[k].vehicle;
-    int ref = 0;
-    for (std::size_t b = 0; b < m.bodies.size(); ++b)
-      if (m.bodies[b].kind == vehicle::BodyKind::CarBody) {
-        ref = static_cast<int>(b);
-        break;
-      }
-    c.longitudinal.reference_body.push_back(ref);
   }
 }
 

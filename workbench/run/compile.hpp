@@ -85,10 +85,8 @@ struct Model {
   struct Stretch {
     double s_from = 0.0, s_to = 0.0;  // [m]
   };
+  // With a longitudinal motion (computed, not prescribed) s_to is an upper bound.
   Stretch coveredStretch() const;
-  // Distance vehicle v travels by t: its prescribed travel, or with a longitudinal motion an upper
-  // bound of it.
-  double maxTravel(const RunVehicle& v, double t) const;
 };
 
 // Throws InputError with every problem found.

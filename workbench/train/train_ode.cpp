@@ -53,6 +53,13 @@ std::vector<std::array<int, 2>> drivesOf(const vehicle::VehicleModel& m) {
   return out;
 }
 
+// The body a vehicle's slope is read under: its first car body, else its first body.
+int slopeBody(const vehicle::VehicleModel& m) {
+  for (std::size_t b = 0; b < m.bodies.size(); ++b)
+    if (m.bodies[b].kind == vehicle::BodyKind::CarBody) return static_cast<int>(b);
+  return 0;
+}
+
 }  // namespace
 
 TrainOde::TrainOde(std::vector<Part> parts, std::vector<Connection> connections,
@@ -76,8 +83,7 @@ TrainOde::TrainOde(std::vector<Part> parts, std::vector<Connection> connections,
   longitudinal_offset_ = size_;
   if (longitudinal_.spec.on) {
     if (longitudinal_.traction.size() != parts_.size() ||
-        longitudinal_.resistance.size() != parts_.size() ||
-        longitudinal_.reference_body.size() != parts_.size())
+        longitudinal_.resistance.size() != parts_.size())
       throw std::logic_error("TrainOde: longitudinal motion needs every vehicle's forces");
     size_ += 2 * n;
   }
@@ -95,7 +101,18 @@ TrainOde::TrainOde(std::vector<Part> parts, std::vector<Connection> connections,
   loads_.resize(parts_.size());
   moments_.resize(parts_.size());
   drives_.resize(parts_.size());
-  if (longitudinal_.spec.on && longitudinal_.spec.traction_at == TractionPath::Wheelsets)
+  for (int k = 0; k < n; ++k) {
+    const int body = slopeBody(vehicle(k).model());
+    int slot = -1;
+    for (std::size_t i = 0; i < connections_.size() && slot < 0; ++i) {
+      const Connection& c = connections_[i];
+      if (c.front == k && c.front_body == body) slot = static_cast<int>(2 * i);
+      if (c.rear == k && c.rear_body == body) slot = static_cast<int>(2 * i + 1);
+    }
+    slope_body_.push_back(body);
+    slope_kin_.push_back(slot);
+  }
+  if (at_wheelsets)
     for (int k = 0; k < n; ++k) {
       if (!longitudinal_.traction[static_cast<std::size_t>(k)].given()) continue;
       drives_[static_cast<std::size_t>(k)] = drivesOf(vehicle(k).model());
@@ -161,7 +178,7 @@ int TrainOde::prepare(double t, const double* y) {
       const int slot = l.freeSlot(b);
       const double* yk = y + offset(veh[e]);
       vehicle::Vector6d q = vehicle::Vector6d::Zero(), qd = vehicle::Vector6d::Zero();
-      q[vehicle::kS] = m.start + m.bodies[b].x + motion_[static_cast<std::size_t>(veh[e])].travel;
+      q[vehicle::kS] = m.bodySAt(b, motion_[static_cast<std::size_t>(veh[e])].travel);
       qd[vehicle::kS] = motion_[static_cast<std::size_t>(veh[e])].speed;
       for (int cc = 0; cc < vehicle::kFreeBodyDof; ++cc) {
         q[1 + cc] = yk[l.position(slot, cc)];
@@ -186,9 +203,7 @@ int TrainOde::prepare(double t, const double* y) {
     VehicleMotion& mo = motion_[static_cast<std::size_t>(k)];
     if (longitudinal()) {
       const vehicle::VehicleModel& m = vehicle(k).model();
-      const auto ref =
-          static_cast<std::size_t>(longitudinal_.reference_body[static_cast<std::size_t>(k)]);
-      const double gradient = slopeUnder(k, ref, m.start + m.bodies[ref].x + mo.travel);
+      const double gradient = slopeUnder(k, mo.travel);
       mo.traction =
           tractionForce(longitudinal_.traction[static_cast<std::size_t>(k)], t, mo.travel);
       mo.resistance =
@@ -218,16 +233,13 @@ int TrainOde::prepare(double t, const double* y) {
   return 0;
 }
 
-double TrainOde::slopeUnder(int k, std::size_t body, double s) const {
-  // The body's track frame of this evaluation, when a connection end computed it.
-  for (std::size_t i = 0; i < connections_.size(); ++i) {
-    const Connection& c = connections_[i];
-    if (c.front == k && static_cast<std::size_t>(c.front_body) == body)
-      return kin_[2 * i].tf.gradient;
-    if (c.rear == k && static_cast<std::size_t>(c.rear_body) == body)
-      return kin_[2 * i + 1].tf.gradient;
-  }
-  return vehicle(k).model().geometry.at(s).gradient;
+double TrainOde::slopeUnder(int k, double travel) const {
+  const int slot = slope_kin_[static_cast<std::size_t>(k)];
+  if (slot >= 0) return kin_[static_cast<std::size_t>(slot)].tf.gradient;
+  const vehicle::VehicleModel& m = vehicle(k).model();
+  return m.geometry
+      .at(m.bodySAt(static_cast<std::size_t>(slope_body_[static_cast<std::size_t>(k)]), travel))
+      .gradient;
 }
 
 void TrainOde::updateAccelerations() {

@@ -35,8 +35,6 @@ struct Longitudinal {
   LongitudinalSpec spec;
   std::vector<TractionSpec> traction;      // per vehicle
   std::vector<ResistanceSpec> resistance;  // per vehicle
-  // The body each vehicle's slope is read under (its car body or first body).
-  std::vector<int> reference_body;
 };
 
 // The longitudinal motion of vehicle k at the last prepare().
@@ -108,8 +106,9 @@ class TrainOde final : public integ::OdeSystem {
 
  private:
   void addConnectionPattern(integ::JacobianPattern& out) const;
-  // The track's gradient under body `body` of vehicle k at arc length s.
-  double slopeUnder(int k, std::size_t body, double s) const;
+  // The track's gradient under vehicle k's slope body at its travel (the connection end's track
+  // frame of this evaluation when one computed it).
+  double slopeUnder(int k, double travel) const;
   void addLongitudinalPattern(integ::JacobianPattern& out) const;
 
   std::vector<Part> parts_;
@@ -127,6 +126,9 @@ class TrainOde final : public integ::OdeSystem {
   std::vector<std::vector<vehicle::AppliedMoment>> moments_;  // per vehicle
   // Per vehicle, its wheelsets and the bodies their brake or traction torques react on.
   std::vector<std::vector<std::array<int, 2>>> drives_;
+  // Per vehicle, the body its slope is read under (its first car body, else its first body) and
+  // the kin_ slot of a connection end on that body, -1 if none.
+  std::vector<int> slope_body_, slope_kin_;
 };
 
 }  // namespace rb::train

@@ -24,7 +24,7 @@ void guidedCoordinates(const VehicleModel& m, const VehicleLayout& l, double t, 
     Vector6d& qd = ws.qd[b];
     q.setZero();
     qd.setZero();
-    q[kS] = m.start + m.bodies[b].x + fm.travel;  // VehicleModel::bodyS
+    q[kS] = m.bodySAt(b, fm.travel);
     qd[kS] = V;
     const int k = l.freeSlot(b);
     if (k >= 0) {

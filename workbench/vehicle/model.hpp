@@ -145,7 +145,9 @@ struct VehicleModel {
   // error, not clamped).
   double speedAt(double t) const { return speed + acceleration * t; }
   double travel(double t) const { return speed * t + 0.5 * acceleration * t * t; }
-  double bodyS(int b, double t) const { return start + bodies[b].x + travel(t); }
+  double bodyS(int b, double t) const { return bodySAt(b, travel(t)); }
+  // The same after a given distance travelled (a train's longitudinal state).
+  double bodySAt(std::size_t b, double travelled) const { return start + bodies[b].x + travelled; }
 };
 
 // Adds every problem of `spec` to `diags`. Does not throw.
