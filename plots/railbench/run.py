@@ -81,7 +81,7 @@ from .layout import _num, _pair, add_failure_banner, failure_text
 from .vehicle_figs import _CONTACT_ROWS, _CREEP_ROWS, _ROW_FLANGE, _ROW_INDENT, _contact_rows, _row_present, fig_bodies_car, fig_contact_forces, fig_creep, fig_flange_contact, fig_wheelsets
 from .dynamics_figs import _element_names, acceleration_bodies, fig_accelerations, fig_elements
 from .assessment import fig_assessment, has_assessment
-from .train_figs import fig_train, train_connections
+from .train_figs import fig_train, fig_train_assessment, train_assessed, train_connections
 
 
 def panel_points(fig) -> Dict[str, int]:
@@ -204,6 +204,8 @@ FIGURES: List[FigureSpec] = [
                "assessment: Y/Q, track shift force, wheel unloading, comfort, stability, wear"),
     FigureSpec("train", lambda r: bool(train_connections(r)), fig_train,
                "in-train forces per connection against distance, and the vehicles' speeds"),
+    FigureSpec("train_assessment", lambda r: bool(train_assessed(r)), fig_train_assessment,
+               "the whole train's assessment along the track, one line per vehicle"),
     # /stats is summarised in text (stats_summary, printed by `railbench run`), not drawn.
 ]
 
@@ -224,7 +226,7 @@ def build_figure(result: Result, spec) -> "plt.Figure":
 
 
 TRACK_FIGURES = ("track_plan", "track_curvature_cant", "irregularities", "irregularity_psd",
-                 "train")
+                 "train", "train_assessment")
 
 
 def make_figures(result: Result, outdir: Optional[str] = None, stem: Optional[str] = None,

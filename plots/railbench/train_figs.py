@@ -13,7 +13,7 @@ from typing import List
 import numpy as np
 
 from .result import Result
-from .style import plt
+from .style import RUN_COLORS, plt
 
 
 def train_connections(result: Result) -> List[str]:
@@ -77,3 +77,108 @@ def _datasets(result: Result) -> set:
     with h5py.File(result.path, "r") as f:
         f.visit(lambda p: out.add("/" + p))
     return out
+
+
+def train_assessed(result: Result) -> List[str]:
+    """The vehicles of a run of several whose file has an assessment; [] otherwise."""
+    if result.vehicle or len(result.vehicles) < 2:
+        return []
+    import h5py
+    with h5py.File(result.path, "r") as f:
+        return [v for v in result.vehicles if f"/vehicles/{v}/assessment" in f]
+
+
+def _envelope(series, signed: bool = False):
+    """The largest |value| (signed: value) of several (s, value) series on the first one's s
+    (each series interpolated onto it, NaN outside its own range); (None, None) without
+    data."""
+    series = [(np.asarray(s, float), np.asarray(v, float)) for s, v in series
+              if s is not None and v is not None and len(s) > 1 and len(s) == len(v)]
+    if not series:
+        return None, None
+    grid = series[0][0]
+    stack = []
+    for s, v in series:
+        ok = np.isfinite(s) & np.isfinite(v)
+        if ok.sum() < 2:
+            continue
+        order = np.argsort(s[ok])
+        stack.append(np.interp(grid, s[ok][order], (v if signed else np.abs(v))[ok][order], left=np.nan,
+                               right=np.nan))
+    if not stack:
+        return None, None
+    with np.errstate(all="ignore"):
+        import warnings
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            return grid, np.nanmax(np.vstack(stack), axis=0)
+
+
+def train_assessment_envelopes(result: Result):
+    """Per assessed vehicle, the envelope along the track of its wheels' |Y/Q| (2 m), its
+    wheelsets' |Sum Y|_2m over their own limits, its wheels' unloading dQ/Q0 (> 0 unloads), and its car body's lateral
+    floor acceleration at the centre: {vehicle: {panel: (s, value)}}, and the Y/Q and dQ/Q0
+    limits."""
+    from .assessment import _own, _limits, read_assessment
+    out, yq_limits, dq_limits = {}, set(), set()
+    for v in train_assessed(result):
+        a = read_assessment(result.path, f"/vehicles/{v}")
+        if a is None:
+            continue
+        panels = {}
+        panels["y_over_q"] = _envelope(
+            [(q.series("s") if q.series("s") is not None else a.safety_s, q.series("value"))
+             for q in a.y_over_q.values()])
+        ratios = []
+        for q in a.sum_y.values():
+            lim = _limits([q])
+            val = q.series("value")
+            if lim and val is not None and lim[0] > 0:
+                ratios.append((q.series("s") if q.series("s") is not None else a.safety_s,
+                               val / lim[0]))
+        panels["sum_y"] = _envelope(ratios)
+        panels["dq_over_q"] = _envelope(
+            [(_own(a, a.distance, ws, side), q.series("value"))
+             for (ws, side), q in a.dq_over_q.items()], signed=True)
+        centre = a.comfort.get("centre") or next(iter(a.comfort.values()), None)
+        panels["a_y"] = (_envelope([(a.distance, centre.series("a_y"))]) if centre
+                         else (None, None))
+        yq_limits.update(_limits(a.y_over_q.values()))
+        dq_limits.update(_limits(a.dq_over_q.values()))
+        out[v] = panels
+    return out, sorted(yq_limits), sorted(dq_limits)
+
+
+_TRAIN_PANELS = (
+    ("y_over_q", "|Y/Q|$_{2m}$ [-]", "(a) derailment quotient, largest of the vehicle's wheels"),
+    ("sum_y", "(ΣY)$_{2m}$ / limit [-]",
+     "(b) track shift force over its limit, largest of the vehicle's wheelsets"),
+    ("dq_over_q", "ΔQ/Q$_0$ [-]", "(c) wheel unloading, largest of the vehicle's wheels"),
+    ("a_y", "|a$_y$| [m/s$^2$]", "(d) car body lateral acceleration at the floor centre"),
+)
+
+
+def fig_train_assessment(result: Result):
+    """The whole train's assessment along the track: one line per vehicle and panel, each the
+    envelope of that vehicle's wheels or wheelsets, against the track position s, so where along
+    the track each vehicle of the train comes nearest its limits shows on one page."""
+    env, yq_limits, dq_limits = train_assessment_envelopes(result)
+    fig, ax = plt.subplots(len(_TRAIN_PANELS), 1, figsize=(10, 2.6 * len(_TRAIN_PANELS)),
+                           sharex=True)
+    limits = {"y_over_q": yq_limits, "sum_y": [1.0], "dq_over_q": dq_limits}
+    for a, (key, ylabel, title) in zip(ax, _TRAIN_PANELS):
+        for k, (v, panels) in enumerate(env.items()):
+            s, val = panels.get(key, (None, None))
+            if s is not None:
+                a.plot(s, val, lw=0.9, color=RUN_COLORS[k % len(RUN_COLORS)], label=v)
+        for lim in limits.get(key, []):
+            a.axhline(lim, color="k", ls="--", lw=0.8, label=f"limit {lim:g}")
+        a.set_ylabel(ylabel)
+        a.set_title(title, fontsize=9, loc="left")
+        a.grid(True, alpha=0.3)
+        a.legend(fontsize=7, ncol=6, loc="upper left")
+    ax[-1].set_xlabel("track position s [m]")
+    fig.suptitle("Train: assessment along the track, vehicle by vehicle — " +
+                 f"{result.stem}", fontsize=10)
+    fig.tight_layout()
+    return fig

@@ -33,7 +33,7 @@ from railbench.result import load_result
 from railbench.run import FIGURES, build_figure, panel_points, stats_summary, steady_state
 from railbench.style import A4_WIDTH_IN, DPI, plt
 from railbench.track_figs import fig_irregularities, fig_irregularity_psd
-from railbench.train_figs import train_connections
+from railbench.train_figs import train_assessed, train_connections
 from railbench.vehicle_figs import fig_contact_forces, nadal_from_file
 
 TRACK_FIGS = ["track_plan", "track_curvature_cant"]
@@ -63,6 +63,8 @@ RUNS = {
     # Two wagons in a train{} (/vehicles/front, /vehicles/rear).
     "train": ("tests/run/data/train_two_wagons.lua", ["run.duration=0.1"], 0),
     "rake": ("tests/run/data/train_braking_rake.lua", ["run.duration=0.8"], 0),
+    # Long enough (6 m) for the running-safety assessment of both wagons.
+    "train_assess": ("tests/run/data/train_two_wagons.lua", ["run.duration=0.3"], 0),
     "fail": ("tests/plots/contact_short.lua",
              ["solver.method=rk4", "solver.step=0.01", "run.output.every=0.01",
               "solver.accept_unstable_step=true"], 2),
@@ -395,6 +397,33 @@ def test_e_train_connections_figure():
     check(np.allclose(got, want), "the force line is the file's force in kN")
     check(len(fig.axes) == 3 and len(fig.axes[2].get_lines()) == 3, "a speed line per vehicle")
     check(not train_connections(res("train")), "no connections: no train figure")
+
+
+def test_e_train_assessment_figure():
+    """A train with an assessment: the whole-train assessment figure once, a line per vehicle in
+    each panel; the unloading line is the envelope of the vehicle's wheels (at least the first
+    wheel's value at its own positions, at most the largest of any wheel); a train without an
+    assessment has none."""
+    import h5py
+    out = os.path.join(TMP, "train_assess_figs")
+    r = run_cli(_f("train_assess"), "--outdir", out)
+    check(r.returncode == 0, f"exit {r.returncode}: {r.stderr.strip()}")
+    names = {os.path.basename(ln) for ln in r.stdout.splitlines() if ln.endswith(".png")}
+    check("train_assess_train_assessment.png" in names, f"no train assessment figure: {sorted(names)}")
+    check(not any(n.startswith("train_assess_front_train_assessment") for n in names), "drawn once")
+    fig = build_figure(res("train_assess"), "train_assessment")
+    check(len(fig.axes) == 4, f"four panels: {len(fig.axes)}")
+    dq = {ln.get_label(): ln for ln in fig.axes[2].get_lines()}
+    check({"front", "rear"} <= set(dq), f"a line per vehicle: {sorted(dq)}")
+    with h5py.File(_f("train_assess"), "r") as f:
+        g = f["/vehicles/front/assessment/safety"]
+        values = [g[ws][side]["dq_over_q"]["value"][()] for ws in g if ws.startswith("ws")
+                  for side in ("left", "right") if side in g[ws]]
+    env = np.asarray(dq["front"].get_ydata(), float)
+    check(np.all(env >= values[0] - 1e-12), "the envelope reaches the first wheel's values")
+    check(np.nanmax(env) <= max(np.max(v) for v in values) + 1e-12,
+          "the envelope stays within the wheels' values")
+    check(not train_assessed(res("rake")), "no assessment: no train assessment figure")
 
 
 def test_e_y_over_q_drawn_for_every_wheel():

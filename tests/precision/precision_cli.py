@@ -19,6 +19,7 @@ import h5py
 
 SMALL = "scenarios/validation/case1_R300_kec.lua"
 ELASTIC = "scenarios/validation/case1_R500_elastic.lua"
+TRAIN = "tests/run/data/train_two_wagons.lua"
 
 
 def run(wb, scenario, out, *extra):
@@ -149,6 +150,18 @@ def default_suite(wb, out):
                     problems.append("--model-reference: not recorded")
                 if "y_model_error_max_mm" in g["elastic"].attrs:
                     problems.append("--model-reference: the reference has a model error")
+    # A train (two wagons, 0.1 s): the matrix runs, and the errors cover both vehicles (a train's
+    # series are "<vehicle>/<body>"): every case's error is a finite number, not empty.
+    train = os.path.join(out, "train")
+    code, text = run(wb, TRAIN, train, "--quick", "--duration", "0.1", "--methods", "kec")
+    if code != 0:
+        problems.append(f"train: exit {code}: {text[-2000:]}")
+    else:
+        problems += [f"train: {p}" for p in check_outputs(train, text)]
+        cases = [r for r in rows(os.path.join(train, "precision.csv")) if r["status"] == "ok"]
+        errors = [r.get("y_total_max_mm", "") for r in cases]
+        if not cases or not all(e and math.isfinite(float(e)) for e in errors):
+            problems.append(f"train: the y errors are not all numbers: {errors[:6]}")
     code, text = run(wb, SMALL, os.path.join(out, "bad"), "--quick", "--model-reference", "fem")
     if code != 1 or "--model-reference" not in text:
         problems.append(f"--model-reference fem: exit {code}: {text[-500:]}")

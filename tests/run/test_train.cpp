@@ -5,6 +5,7 @@
 // anything runs; the analyses of one vehicle refuse a train.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -15,6 +16,7 @@
 #include "workbench/io/result_reader.hpp"
 #include "workbench/run/compile.hpp"
 #include "workbench/run/vehicle_run.hpp"
+#include "workbench/study/run_error.hpp"
 
 namespace {
 
@@ -164,9 +166,38 @@ TEST(Train, NamedParametersReachOneVehicle) {
       rb::InputError);
 }
 
+// The error of a run against a reference (precision, stress, the studies' summaries) covers
+// every vehicle of a train: a train against itself has zero error, against a looser run of the
+// same train a positive one, and a single vehicle's file shares no series with a train's.
+TEST(Train, RunErrorsCoverEveryVehicle) {
+  const rb::test::RunFile a = rb::test::runInto(rb::test::compiled(kTrain, {"run.duration=0.1"}),
+                                                "rb_test_train_errors", "a.h5");
+  const rb::test::RunFile b =
+      rb::test::runInto(rb::test::compiled(kTrain, {"run.duration=0.1", "solver.method=dopri5",
+                                                    "solver.rtol=1e-3", "solver.atol=1e-4"}),
+                        "rb_test_train_errors", "b.h5");
+  ASSERT_TRUE(a.result.result.ok && b.result.result.ok);
+  const auto y = rb::study::parseQuantities({"y"}, {}, true).front();
+  const rb::study::Error self = rb::study::fileError(a.path, a.path, y);
+  ASSERT_TRUE(self.have);
+  EXPECT_EQ(self.max, 0.0);
+  const rb::study::Error loose = rb::study::fileError(b.path, a.path, y);
+  ASSERT_TRUE(loose.have);
+  EXPECT_GT(loose.max, 0.0);
+  EXPECT_TRUE(std::isfinite(loose.max));
+  // A body quantity covers the body of that name in every vehicle.
+  const auto car = rb::study::parseQuantities({"car.y"}, {"car"}, true).front();
+  EXPECT_TRUE(rb::study::fileError(b.path, a.path, car).have);
+  const rb::test::RunFile single = rb::test::runInto(
+      rb::test::compiled("scenarios/default/case3_kec_fast.lua", {"run.duration=0.1"}),
+      "rb_test_train_errors", "single.h5");
+  ASSERT_TRUE(single.result.result.ok);
+  EXPECT_FALSE(rb::study::fileError(single.path, a.path, y).have);
+}
+
 TEST(Train, TheAnalysesOfOneVehicleRefuseATrain) {
   const rb::run::Model m = rb::test::compiled(kTrain);
-  for (const char* command : {"precision", "stress", "effects"}) {
+  for (const char* command : {"stress", "effects"}) {
     try {
       rb::scenario::refuseTrain(m.spec, command);
       FAIL() << command << " accepted a train";

@@ -55,6 +55,120 @@ TEST(TrainConnections, ForceLaws) {
   EXPECT_NEAR(rb::train::drawGearForce(g, 0.03, -1.0), 40e3, 1e-3);
 }
 
+// A car body at rest at global position R with yaw psi, track frame = global frame.
+rb::vehicle::BodyKinematics bodyAt(const Eigen::Vector3d& R, double psi = 0.0) {
+  rb::vehicle::BodyKinematics k;
+  k.tf.R = R;
+  k.body.A = Eigen::AngleAxisd(psi, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  k.attach = k.body;
+  return k;
+}
+
+rb::train::ConnectionSpec couplerOnly(double slack, bool compression, double stop_stiffness) {
+  rb::train::ConnectionSpec c;
+  c.front_end = -6.5;
+  c.rear_end = 6.5;
+  rb::train::CouplerSpec& g = c.coupler.emplace();
+  g.stiffness = 1e7;
+  g.slack = slack;
+  g.height = 1.0;
+  g.pivot = 1.0;
+  g.compression = compression;
+  g.angle_stop = 0.05;
+  g.stop_stiffness = stop_stiffness;
+  return c;
+}
+
+struct Resultant {
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+};
+// Resultant force and moment about the origin of a body's loads (points in its attachment frame).
+Resultant resultant(const rb::vehicle::BodyKinematics& k,
+                    const std::vector<rb::vehicle::AppliedLoad>& loads) {
+  Resultant r;
+  for (const auto& l : loads) {
+    const Eigen::Vector3d at = k.tf.R + k.tf.A * (k.rbar + k.attach.A * l.u);
+    r.force += l.force;
+    r.moment += at.cross(l.force);
+  }
+  return r;
+}
+
+// The coupler link between two car bodies 0.2 m apart sideways (CoM heights 1 m: the link is
+// level): its axial force along the link, its lateral components N sin(angle), the stops'
+// restoring pair, and the massless link's balance (the loads on the two bodies sum to no force and
+// no moment).
+TEST(TrainConnections, CouplerLinkForcesAndAnglingStops) {
+  const auto front = bodyAt({0.0, 0.0, 1.0});
+  const auto rear = bodyAt({-13.05, 0.2, 1.0});
+  // Pivots at x = -5.5 (front) and -13.05 + 5.5 (rear): the link is (2.05, -0.2).
+  const double length = std::hypot(2.05, 0.2), angle = std::atan2(-0.2, 2.05);
+  rb::train::ConnectionState st;
+  {
+    SCOPED_TRACE("tension, stops not reached");
+    auto c = couplerOnly(0.01, true, 0.0);
+    rb::train::connectionForces(c, front, 0, 1.0, rear, 0, 1.0, st);
+    const double N = 1e7 * (length - 2.0 - 0.01);
+    EXPECT_NEAR(st.draw_gear, N, 1e-6 * N);
+    EXPECT_NEAR(st.angle_front, angle, 1e-12);
+    EXPECT_NEAR(st.angle_rear, angle, 1e-12);
+    EXPECT_NEAR(st.longitudinal, N, 1e-6 * N);
+    // Pulled towards each other: the front body to +y (where the rear one is), the rear to -y.
+    EXPECT_NEAR(st.lateral_front, N * 0.2 / length, 1e-6 * N);
+    EXPECT_NEAR(st.lateral_rear, -N * 0.2 / length, 1e-6 * N);
+  }
+  {
+    SCOPED_TRACE("a central coupler pressed pushes the bodies apart sideways");
+    const auto closer = bodyAt({-12.95, 0.2, 1.0});
+    auto c = couplerOnly(0.0, true, 0.0);
+    rb::train::connectionForces(c, front, 0, 1.0, closer, 0, 1.0, st);
+    const double l = std::hypot(1.95, 0.2);
+    const double N = 1e7 * (l - 2.0);
+    ASSERT_LT(N, 0.0);
+    EXPECT_NEAR(st.draw_gear, N, 1e-6 * std::abs(N));
+    EXPECT_NEAR(st.lateral_front, N * 0.2 / l, 1e-6 * std::abs(N));  // < 0: away from the rear
+    EXPECT_GT(st.lateral_rear, 0.0);
+    // A tension-only coupler carries nothing there.
+    auto t = couplerOnly(0.0, false, 0.0);
+    rb::train::connectionForces(t, front, 0, 1.0, closer, 0, 1.0, st);
+    EXPECT_EQ(st.draw_gear, 0.0);
+    EXPECT_TRUE(st.on_front.empty());
+  }
+  {
+    SCOPED_TRACE("stops alone: a restoring pair, balanced by the link");
+    const double k = 2e6;
+    auto c = couplerOnly(0.5, true, k);  // the slack takes the axial force away
+    rb::train::connectionForces(c, front, 0, 1.0, rear, 0, 1.0, st);
+    EXPECT_EQ(st.draw_gear, 0.0);
+    // Each stop's torque on the link opposes the angle; their pair over the link's length pushes
+    // the rear body back towards the front one's line (-y) and the front body the other way.
+    const double tau = k * (std::abs(angle) - 0.05);
+    const double pair = 2.0 * tau / length;
+    EXPECT_NEAR(st.lateral_rear, -pair * 2.05 / length, 1e-9 * pair);
+    EXPECT_NEAR(st.lateral_front, pair * 2.05 / length, 1e-9 * pair);
+    const Resultant f = resultant(front, st.on_front), r = resultant(rear, st.on_rear);
+    EXPECT_NEAR((f.force + r.force).norm(), 0.0, 1e-9 * pair);
+    EXPECT_NEAR((f.moment + r.moment).norm(), 0.0, 1e-9 * pair);
+    // The rear body also takes its stop's reaction torque -tau (about z): it yaws with the link.
+    const Eigen::Vector3d pivot_r(-13.05 + 5.5, 0.2, 1.0);
+    const double about_pivot = r.moment.z() - pivot_r.cross(r.force).z();
+    EXPECT_NEAR(about_pivot, -tau, 1e-9 * tau);
+  }
+  {
+    SCOPED_TRACE("tension and stops together stay balanced");
+    auto c = couplerOnly(0.0, true, 5e6);
+    const auto yawed = bodyAt({-13.05, 0.2, 1.0}, 0.03);
+    rb::train::connectionForces(c, front, 0, 1.0, yawed, 0, 1.0, st);
+    const Resultant f = resultant(front, st.on_front), r = resultant(yawed, st.on_rear);
+    const double scale = f.force.norm();
+    ASSERT_GT(scale, 1e3);
+    EXPECT_NEAR((f.force + r.force).norm(), 0.0, 1e-9 * scale);
+    EXPECT_NEAR((f.moment + r.moment).norm(), 0.0, 1e-6 * scale);
+  }
+  EXPECT_EQ(rb::train::stopTorque(couplerOnly(0.0, true, 1e6).coupler.value(), 0.04), 0.0);
+  EXPECT_NEAR(rb::train::stopTorque(couplerOnly(0.0, true, 1e6).coupler.value(), -0.07), 2e4, 1e-6);
+}
+
 double meanOver(const std::vector<double>& t, const std::vector<double>& v, double from) {
   double sum = 0.0;
   int n = 0;
@@ -198,6 +312,30 @@ TEST(TrainConnections, CoupledWagonsCurveAsTheSingleWagon) {
     }
 }
 
+// A central coupler through the R = 500 m curve: the link joins pivots symmetric about the
+// headstocks' junction, so it lies along the track's tangent there, which is turned by 12.5 m / R
+// against each car body's own tangent (the bodies' yaw against the track is ~1e-4 rad): the
+// front body sees the link at -0.025 rad, the rear one at +0.025 rad (or the mirror in a right
+// curve). The link's length shortens by the chord's sagitta, inside the slack: no force.
+TEST(TrainConnections, CouplerAnglesAreTheCurvesGeometry) {
+  const rb::test::RunFile run =
+      rb::test::runInto(rb::test::compiled("tests/run/data/train_central_r500.lua"),
+                        "rb_test_train_connections", "central.h5");
+  ASSERT_TRUE(run.result.result.ok) << run.result.result.message;
+  const rb::io::ResultReader r(run.path);
+  const auto t = *r.dataset("/time");
+  const std::string g = "/train/connections/front-rear/";
+  const double front = meanOver(t, *r.dataset(g + "coupler_angle_front"), 12.0);
+  const double rear = meanOver(t, *r.dataset(g + "coupler_angle_rear"), 12.0);
+  EXPECT_NEAR(std::abs(front), 12.5 / 500.0, 0.02 * 12.5 / 500.0);
+  EXPECT_NEAR(rear, -front, 0.02 * std::abs(front));
+  // On tangent track at the start the link is straight.
+  EXPECT_NEAR((*r.dataset(g + "coupler_angle_front"))[0], 0.0, 1e-6);
+  const auto force = r.dataset(g + "draw_gear");
+  ASSERT_TRUE(force.has_value());
+  for (double f : *force) ASSERT_EQ(f, 0.0);
+}
+
 // The problems of the rake with its train{} block replaced.
 std::string problems(const std::string& trainBlock, const std::vector<std::string>& sets = {}) {
   return rb::test::problemsWithReplaced(kRake, "train {", "\n}\n", trainBlock,
@@ -243,7 +381,29 @@ TEST(TrainConnections, BadConnectionsAreRefusedAtTheirLine) {
       {"train { " + v +
            "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
            "rear_end = 12.5 } } }",
-       "give buffers, a draw_gear or both"},
+       "give buffers, a draw_gear or a coupler"},
+      {"train { " + v +
+           "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, rear_end = 12.5, "
+           "draw_gear = { stiffness = 1e6, height = 1 }, coupler = { stiffness = 1e6, height = 1, "
+           "pivot = 1, angle_stop = 0.1 } } } }",
+       "not both"},
+      {"train { " + v +
+           "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, rear_end = 12.5, "
+           "coupler = { stiffness = 1e6, height = 1, pivot = 1 } } } }",
+       "angle_stop"},
+      {"train { " + v +
+           "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, rear_end = 12.5, "
+           "coupler = { stiffness = 1e6, height = 1, pivot = 1, angle_stop = 0.1, compression = "
+           "1 } } } }",
+       "compression"},
+      {"train { " + v +
+           "connections = { { front = \"a\", rear = \"b\", front_end = -1, rear_end = 12.5, "
+           "coupler = { stiffness = 1e6, height = 1, pivot = 2, angle_stop = 0.1 } } } }",
+       "inside both car bodies"},
+      {"train { " + v +
+           "connections = { { front = \"a\", rear = \"b\", front_end = -12.4, rear_end = 12.5, "
+           "coupler = { stiffness = 1e6, height = 1, pivot = 1, angle_stop = 0.1 } } } }",
+       "loaded at the start"},
       {"train { " + v +
            "connections = { { front = \"a\", rear = \"b\", front_end = -12.5, "
            "rear_end = 12.5, buffers = { loading = { { 0, 0 }, { 0.1, 1e5 } }, unloading = { { 0, "

@@ -474,7 +474,16 @@ Plan makePlan(const PrecisionOptions& o) {
   const double t_end = checkOptionOverrides(o, adaptive, lengths);
   lo.overrides = p.base;
   const scenario::ScenarioSpec spec = scenario::loadScenario(p.scenario, lo);
-  scenario::refuseTrain(spec, "precision");
+  // A train's contact models are compared through contact.method, the scenario's contact{}:
+  // a vehicle with its own would keep its method in every model of the matrix.
+  for (const auto& v : spec.train)
+    if (v.own_contact)
+      throw InputError(v.loc,
+                       "train: `workbench precision` compares contact methods through the "
+                       "scenario's contact{} block; vehicle '" +
+                           v.name +
+                           "' gives its own, which no model of the matrix would change "
+                           "(give the train one contact{} block)");
   if (!spec.has_vehicle)
     throw InputError({o.scenario, 0},
                      "precision needs a vehicle{} block: nothing is integrated without one");
@@ -484,6 +493,11 @@ Plan makePlan(const PrecisionOptions& o) {
   p.quantities = o.quantities.empty() ? std::vector<std::string>{"y", "yaw"}
                                       : splitList(o.quantities, "--quantities");
   for (const auto& b : spec.vehicle.bodies) p.bodies.push_back(b.name);
+  // A train's body quantities cover every vehicle that has the body.
+  for (const auto& v : spec.train)
+    for (const auto& b : v.vehicle.bodies)
+      if (std::find(p.bodies.begin(), p.bodies.end(), b.name) == p.bodies.end())
+        p.bodies.push_back(b.name);
   // Every quantity is checked now, before any run: a mistyped one must not cost the matrix.
   (void)parseQuantities(p.quantities, p.bodies, p.contact);
   p.levels = o.levels.empty() ? kLevels : splitNumbers(o.levels, "--levels");

@@ -223,6 +223,7 @@ void compileParts(const CompileOptions& o, Model& c, Diagnostics& d) {
                        spec.profiles,
                        spec.has_contact,
                        spec.guided,
+                       false,
                        spec.contact,
                        spec.vehicle.loc,
                        {},
@@ -587,14 +588,23 @@ void checkTrainStart(const Model& c, train::TrainOde& ode, const Eigen::VectorXd
     const train::ConnectionState& st = ode.connectionState(static_cast<int>(i));
     const train::Connection& con = ode.connections()[i];
     // 1 N: the rounding of touching faces gives forces of 1e-27 N, a real preload kilonewtons.
-    if (std::max({st.buffer_left, st.buffer_right, st.draw_gear}) > kStartForceTolerance)
+    if (std::max({st.buffer_left, st.buffer_right, std::abs(st.draw_gear)}) > kStartForceTolerance)
       d.add(con.spec.loc, "train.connections '" + con.name + "': loaded at the start (gap " +
                               formatNumber(st.gap) + " m: buffers " + formatNumber(st.buffer_left) +
-                              " N and " + formatNumber(st.buffer_right) + " N, draw gear " +
+                              " N and " + formatNumber(st.buffer_right) + " N, " +
+                              (con.spec.coupler ? "coupler " : "draw gear ") +
                               formatNumber(st.draw_gear) +
                               " N), so the start is not an equilibrium; place the vehicles so "
-                              "that the buffer faces touch or stand apart by at most the draw "
-                              "gear's slack");
+                              "that the buffer faces touch or stand apart by at most the " +
+                              (con.spec.coupler ? "coupler's" : "draw gear's") + " slack");
+    if (const auto& g = con.spec.coupler; g && (train::stopTorque(*g, st.angle_front) != 0.0 ||
+                                                train::stopTorque(*g, st.angle_rear) != 0.0))
+      d.add(g->loc, "train.connections '" + con.name +
+                        "': the coupler is against its stop at "
+                        "the start (angles " +
+                        formatNumber(st.angle_front) + " and " + formatNumber(st.angle_rear) +
+                        " rad, angle_stop " + formatNumber(g->angle_stop) +
+                        " rad), so the start is not an equilibrium; give a larger angle_stop");
   }
   Eigen::VectorXd ydot(y0.size());
   if (ode.rhs(0.0, y0.data(), ydot.data()) != 0 || !ydot.allFinite())

@@ -40,6 +40,7 @@ void buildEntry(const Node& item, const std::string& what, LuaHost& host, const 
   e.guided = spec.guided;
   e.contact = spec.contact;
   if (const Node* c = r.blockValue("contact")) {
+    e.own_contact = true;
     e.contact = dynamics::ContactSpec{};
     e.guided = buildContact(*c, e.contact, d);
     e.has_contact = !e.guided;
@@ -82,6 +83,19 @@ void buildDrawGear(const Node& n, const std::string& what, train::DrawGearSpec& 
   g.height = r.number("height");
 }
 
+void buildCoupler(const Node& n, const std::string& what, train::CouplerSpec& g, Diagnostics& d) {
+  Reader r(n, block("train.coupler"), what + ".coupler", d);
+  g.loc = n.loc;
+  g.stiffness = r.number("stiffness");
+  g.slack = r.number("slack");
+  g.friction = r.number("friction");
+  g.height = r.number("height");
+  g.pivot = r.number("pivot");
+  g.compression = r.boolean("compression");
+  g.angle_stop = r.number("angle_stop");
+  g.stop_stiffness = r.number("stop_stiffness");
+}
+
 // train.connections: each joins a vehicle to the one right behind it, once.
 void buildConnections(const Node& list, ScenarioSpec& spec, Diagnostics& d) {
   if (list.type != Node::Type::Table || !list.fields.empty()) {
@@ -109,6 +123,7 @@ void buildConnections(const Node& list, ScenarioSpec& spec, Diagnostics& d) {
     if (const Node* b = r.blockValue("buffers")) buildBuffers(*b, what, c.buffers.emplace(), d);
     if (const Node* g = r.blockValue("draw_gear"))
       buildDrawGear(*g, what, c.draw_gear.emplace(), d);
+    if (const Node* g = r.blockValue("coupler")) buildCoupler(*g, what, c.coupler.emplace(), d);
     spec.train_connections.push_back(std::move(c));
   }
 }

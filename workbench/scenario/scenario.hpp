@@ -40,6 +40,7 @@ struct TrainVehicleSpec {
   dynamics::ProfilesSpec profiles;
   bool has_contact = false;  // a contact model; false for guided wheelsets (or none)
   bool guided = false;
+  bool own_contact = false;  // its own contact{} block (else the scenario's)
   dynamics::ContactSpec contact;
   SourceLoc loc;
   train::TractionSpec traction;  // train.longitudinal only

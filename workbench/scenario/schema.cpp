@@ -705,7 +705,10 @@ void addTrainBlocks(std::vector<BlockSpec>& s) {
                      50.0, false)),
         blockKey("buffers", ValueType::Block, {}, "side buffers (train.buffers)", "train.buffers"),
         blockKey("draw_gear", ValueType::Block, {}, "draw gear (train.draw_gear)",
-                 "train.draw_gear")}});
+                 "train.draw_gear"),
+        blockKey("coupler", ValueType::Block, {},
+                 "a coupler link with angling stops instead of the draw gear (train.coupler)",
+                 "train.coupler")}});
   s.push_back(
       {"train.buffers",
        "The side buffers of a connection (a plain table): one buffer's force against its stroke, "
@@ -730,6 +733,29 @@ void addTrainBlocks(std::vector<BlockSpec>& s) {
             0.0, 1.0),
         required(
             num("height", "m", 0.0, "draw gear height above the top of rail", 0.0, 5.0, true))}});
+  s.push_back(
+      {"train.coupler",
+       "The coupler of a connection (a plain table), instead of a draw gear: a link between two "
+       "pivots behind the headstocks, its axial force along the link (so it pushes or pulls the "
+       "car bodies sideways when they are offset or in a curve), its angle to each car body free "
+       "up to the stops (docs/trains.md).",
+       {required(num("stiffness", "N/m", 0.0, "axial stiffness", 0.0, kInf, true)),
+        num("slack", "m", 0.0, "free play of the link's length, each way", 0.0, 1.0),
+        num("friction", "-", 0.0,
+            "hysteresis ratio: the force is k e (1 + friction) loading, (1 - friction) releasing",
+            0.0, 1.0),
+        required(num("height", "m", 0.0, "coupler height above the top of rail", 0.0, 5.0, true)),
+        required(num("pivot", "m", 0.0,
+                     "each pivot's distance behind its headstock (the link is 2 pivot long when "
+                     "the faces touch)",
+                     0.0, 5.0, true)),
+        boolean("compression", true,
+                "the coupler carries compression too (a central coupler); false: tension only"),
+        required(num("angle_stop", "rad", 0.0,
+                     "free angle each way between the link and each car body's axis", 0.0, 1.0,
+                     true)),
+        num("stop_stiffness", "N m/rad", 0.0,
+            "torque of a stop per radian past angle_stop (0: no stops)", 0.0, kInf)}});
   s.push_back({"train.longitudinal",
                "The vehicles' motion along the track as states (a plain table): each vehicle a "
                "rigid mass driven by its traction, resistance, the track's slope and the "

@@ -55,13 +55,16 @@ std::vector<std::string> lines(const std::string& text) {
   return out;
 }
 
-// {series name: values in SI} of quantity q in a result file.
-std::map<std::string, std::vector<double>> series(const io::ResultReader& f, const Quantity& q) {
-  std::map<std::string, std::vector<double>> out;
-  const std::vector<std::string> names = lines(f.text("/bodies", "names").value_or(""));
-  auto kind = [&](const std::string& n) { return f.text("/bodies/" + n, "kind").value_or(""); };
-  auto put = [&](const std::string& key, const std::string& path) {
-    if (auto v = f.dataset(path)) out[key] = std::move(*v);
+// {series name: values in SI} of quantity q of one vehicle whose groups are under `root` ("" for
+// a single vehicle, "/vehicles/<name>" in a run of several), the names prefixed by `key`.
+void vehicleSeries(const io::ResultReader& f, const Quantity& q, const std::string& root,
+                   const std::string& key, std::map<std::string, std::vector<double>>& out) {
+  const std::vector<std::string> names = lines(f.text(root + "/bodies", "names").value_or(""));
+  auto kind = [&](const std::string& n) {
+    return f.text(root + "/bodies/" + n, "kind").value_or("");
+  };
+  auto put = [&](const std::string& name, const std::string& path) {
+    if (auto v = f.dataset(root + path)) out[key + name] = std::move(*v);
   };
   if (q.group == "body") {
     put(q.body, "/bodies/" + q.body + "/" + q.dataset);
@@ -73,9 +76,21 @@ std::map<std::string, std::vector<double>> series(const io::ResultReader& f, con
   } else {
     // Guided wheelsets follow the track kinematically (no error of their own): on a vehicle
     // without contact the quantity covers every other body.
-    const bool contact = f.has("/contact");
+    const bool contact = f.has(root + "/contact");
     for (const auto& n : names)
       if ((kind(n) == "wheelset") == contact) put(n, "/bodies/" + n + "/" + q.dataset);
+  }
+}
+
+// {series name: values in SI} of quantity q in a result file: of its one vehicle, or of every
+// vehicle of a run of several ("<vehicle>/<series>").
+std::map<std::string, std::vector<double>> series(const io::ResultReader& f, const Quantity& q) {
+  std::map<std::string, std::vector<double>> out;
+  if (f.has("/bodies")) {
+    vehicleSeries(f, q, "", "", out);
+  } else {
+    for (const auto& v : f.members("/vehicles"))
+      vehicleSeries(f, q, "/vehicles/" + v, v + "/", out);
   }
   return out;
 }

@@ -65,6 +65,26 @@ void validateDrawGear(const DrawGearSpec& g, const std::string& what, Diagnostic
     d.add(g.loc, what + ".draw_gear.height must be in (0, 5) m, got " + formatNumber(g.height));
 }
 
+void validateCoupler(const CouplerSpec& c, const std::string& what, Diagnostics& d) {
+  if (!(c.stiffness > 0.0 && std::isfinite(c.stiffness)))
+    d.add(c.loc, what + ".coupler.stiffness must be positive and finite, got " +
+                     formatNumber(c.stiffness));
+  if (!(c.slack >= 0.0 && c.slack < 1.0))
+    d.add(c.loc, what + ".coupler.slack must be in [0, 1) m, got " + formatNumber(c.slack));
+  if (!(c.friction >= 0.0 && c.friction < 1.0))
+    d.add(c.loc, what + ".coupler.friction must be in [0, 1), got " + formatNumber(c.friction));
+  if (!(c.height > 0.0 && c.height < 5.0))
+    d.add(c.loc, what + ".coupler.height must be in (0, 5) m, got " + formatNumber(c.height));
+  if (!(c.pivot > 0.0 && c.pivot < 5.0))
+    d.add(c.loc, what + ".coupler.pivot must be in (0, 5) m, got " + formatNumber(c.pivot));
+  if (!(c.angle_stop > 0.0 && c.angle_stop < 1.0))
+    d.add(c.loc,
+          what + ".coupler.angle_stop must be in (0, 1) rad, got " + formatNumber(c.angle_stop));
+  if (!(c.stop_stiffness >= 0.0 && std::isfinite(c.stop_stiffness)))
+    d.add(c.loc, what + ".coupler.stop_stiffness must be non-negative and finite, got " +
+                     formatNumber(c.stop_stiffness));
+}
+
 // Global position and velocity of the point u (attachment frame) of a body.
 struct PointMotion {
   Eigen::Vector3d au, r, v;
@@ -91,12 +111,21 @@ void validateConnection(const ConnectionSpec& c, Diagnostics& d) {
                      ": rear_end (the rear vehicle's front headstock) must be in (0, 50) m, "
                      "got " +
                      formatNumber(c.rear_end));
-  if (!c.buffers && !c.draw_gear)
+  if (!c.buffers && !c.draw_gear && !c.coupler)
     d.add(c.loc, what +
-                     ": give buffers, a draw_gear or both (a connection without either "
+                     ": give buffers, a draw_gear or a coupler (a connection without any "
                      "transmits nothing)");
+  if (c.draw_gear && c.coupler)
+    d.add(c.loc, what + ": give a draw_gear or a coupler, not both (each is the tension link)");
   if (c.buffers) validateBuffers(*c.buffers, what, d);
   if (c.draw_gear) validateDrawGear(*c.draw_gear, what, d);
+  if (c.coupler) {
+    validateCoupler(*c.coupler, what, d);
+    if (c.coupler->pivot >= std::min(-c.front_end, c.rear_end))
+      d.add(c.coupler->loc, what + ".coupler.pivot (" + formatNumber(c.coupler->pivot) +
+                                " m) must lie inside both car bodies: less than -front_end and "
+                                "rear_end");
+  }
 }
 
 double curveForce(const std::vector<double>& stroke, const std::vector<double>& force, double x) {
@@ -120,6 +149,21 @@ double drawGearForce(const DrawGearSpec& g, double gap, double gap_dot) {
   const double e = gap - g.slack;
   if (e <= 0.0) return 0.0;
   return g.stiffness * e * (1.0 + g.friction * std::tanh(gap_dot / kRegularisingSpeed));
+}
+
+double couplerForce(const CouplerSpec& c, double e, double e_dot) {
+  if (e > c.slack)
+    return c.stiffness * (e - c.slack) * (1.0 + c.friction * std::tanh(e_dot / kRegularisingSpeed));
+  if (c.compression && e < -c.slack)
+    return c.stiffness * (e + c.slack) *
+           (1.0 + c.friction * std::tanh(-e_dot / kRegularisingSpeed));
+  return 0.0;
+}
+
+double stopTorque(const CouplerSpec& c, double theta) {
+  const double past = std::abs(theta) - c.angle_stop;
+  if (past <= 0.0) return 0.0;
+  return -std::copysign(c.stop_stiffness * past, theta);
 }
 
 void connectionForces(const ConnectionSpec& c, const vehicle::BodyKinematics& kf, int bf, double hf,
@@ -158,8 +202,11 @@ void connectionForces(const ConnectionSpec& c, const vehicle::BodyKinematics& kf
       apply(uf, ur, F);
     }
   }
+  const double h = c.draw_gear ? c.draw_gear->height
+                   : c.coupler ? c.coupler->height
+                   : c.buffers ? c.buffers->height
+                               : 1.0;
   {
-    const double h = c.draw_gear ? c.draw_gear->height : (c.buffers ? c.buffers->height : 1.0);
     const Eigen::Vector3d uf(c.front_end, 0.0, h - hf), ur(c.rear_end, 0.0, h - hr);
     const PointMotion P = pointMotion(kf, uf), Q = pointMotion(kr, ur);
     out.gap = (P.r - Q.r).dot(e);
@@ -167,6 +214,41 @@ void connectionForces(const ConnectionSpec& c, const vehicle::BodyKinematics& kf
       out.draw_gear = drawGearForce(*c.draw_gear, out.gap, (P.v - Q.v).dot(e));
       if (out.draw_gear > 0.0) apply(uf, ur, -out.draw_gear * e);
     }
+  }
+  out.angle_front = out.angle_rear = 0.0;
+  if (c.coupler) {
+    const CouplerSpec& g = *c.coupler;
+    const Eigen::Vector3d uf(c.front_end + g.pivot, 0.0, h - hf),
+        ur(c.rear_end - g.pivot, 0.0, h - hr);
+    const PointMotion P = pointMotion(kf, uf), Q = pointMotion(kr, ur);
+    const Eigen::Vector3d r = P.r - Q.r;
+    const double length = r.norm();
+    const Eigen::Vector3d d = r / length;  // from the rear pivot to the front one
+    const Eigen::Matrix3d Rf = kf.rotation(), Rr = kr.rotation();
+    out.angle_front = std::atan2(d.dot(Rf.col(1)), d.dot(Rf.col(0)));
+    out.angle_rear = std::atan2(d.dot(Rr.col(1)), d.dot(Rr.col(0)));
+    out.draw_gear = couplerForce(g, length - 2.0 * g.pivot, (P.v - Q.v).dot(d));
+    // The stops' torques on the link about the vertical, and the lateral pair s n at the pivots
+    // (on the link: +s n at the front pivot) that balances them: r x (s n) = s |r| z.
+    const Eigen::Vector3d z = (Rf.col(2) + Rr.col(2)).normalized();
+    const Eigen::Vector3d n = z.cross(d).normalized();
+    const double tau_f = stopTorque(g, out.angle_front), tau_r = stopTorque(g, out.angle_rear);
+    const double s = -(tau_f + tau_r) / length;
+    // On the bodies: the link's axial force (tension pulls the front body back) and the pair's
+    // reaction, then each stop's reaction torque -tau as a couple of forces 2a apart.
+    if (out.draw_gear != 0.0 || s != 0.0) apply(uf, ur, -out.draw_gear * d - s * n);
+    constexpr double a = 0.5;  // [m] half the couple's arm
+    const auto couple = [&](std::vector<vehicle::AppliedLoad>& on, int body,
+                            const Eigen::Vector3d& u, const Eigen::Vector3d& x_body,
+                            double torque) {
+      if (torque == 0.0) return;
+      const Eigen::Vector3d x_flat = (x_body - x_body.dot(z) * z).normalized();
+      const Eigen::Vector3d F = torque / (2.0 * a) * z.cross(x_flat);
+      on.push_back({body, u + Eigen::Vector3d(a, 0.0, 0.0), F});
+      on.push_back({body, u - Eigen::Vector3d(a, 0.0, 0.0), -F});
+    };
+    couple(out.on_front, bf, uf, Rf.col(0), -tau_f);
+    couple(out.on_rear, br, ur, Rr.col(0), -tau_r);
   }
   out.longitudinal = out.draw_gear - out.buffer_left - out.buffer_right;
   out.lateral_front = kf.tf.A.col(1).dot(total_front);

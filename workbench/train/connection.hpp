@@ -22,8 +22,17 @@
 // - Draw gear: tension once the gap exceeds the slack, F = k (gap - slack) (1 + f tanh(gap_dot /
 //   v_reg)), f the friction ratio of its hysteresis; no force in compression (the buffers carry
 //   it).
-// Coupler angling stops and a coupler that carries compression (central couplers) are not
-// modelled.
+// - Coupler (instead of the draw gear): a massless link between two pivots, each `pivot` behind
+//   its car body's headstock on the centre line, so its direction d follows the two car bodies'
+//   relative lateral position and yaw. Its axial force N (tension > 0) follows the draw gear's
+//   law in its elongation e = |P - Q| - 2 pivot and, for a coupler that carries compression
+//   (central couplers), the mirror law below -slack. N acts along d on both bodies: in a curve or
+//   with offset car bodies a coupler force has the lateral component N sin(angle) that a
+//   compressed train exerts on its wagons. The link's angle to each car body's axis, theta =
+//   atan2(d . y_body, d . x_body), is free up to angle_stop; beyond it the stop acts with
+//   torque k_stop (|theta| - angle_stop) between link and body, and a massless link balances the
+//   torques tau_f + tau_r of its two stops by a lateral force pair of (tau_f + tau_r) / |P - Q| at
+//   its pivots, perpendicular to d (the torque balance of the link about one pivot).
 #include <Eigen/Dense>
 #include <optional>
 #include <string>
@@ -57,6 +66,19 @@ struct DrawGearSpec {
   SourceLoc loc;
 };
 
+// A coupler link with angling stops (see the header comment).
+struct CouplerSpec {
+  double stiffness = 0.0;       // [N/m] axial
+  double slack = 0.0;           // [m] free play of the elongation, each way
+  double friction = 0.0;        // [-] hysteresis ratio, 0 <= f < 1
+  double height = 0.0;          // [m] above the top of rail
+  double pivot = 0.0;           // [m] each pivot's distance behind its headstock, > 0
+  bool compression = true;      // carries compression (central coupler), else tension only
+  double angle_stop = 0.0;      // [rad] free angle each way between link and car body, > 0
+  double stop_stiffness = 0.0;  // [N m/rad] torque of a stop per radian past it
+  SourceLoc loc;
+};
+
 // One connection of train.connections, by the vehicles' names.
 struct ConnectionSpec {
   std::string front, rear;            // vehicle names, front one first
@@ -65,6 +87,7 @@ struct ConnectionSpec {
   double rear_end = 0.0;              // [m] x of the rear vehicle's front headstock (> 0)
   std::optional<BufferSpec> buffers;
   std::optional<DrawGearSpec> draw_gear;
+  std::optional<CouplerSpec> coupler;  // instead of draw_gear
   SourceLoc loc;
 };
 
@@ -78,19 +101,26 @@ double curveForce(const std::vector<double>& stroke, const std::vector<double>& 
 double bufferPairForce(const BufferSpec& b, double c, double c_dot);
 // The draw gear's force [N] (tension > 0) at gap [m] and its rate.
 double drawGearForce(const DrawGearSpec& g, double gap, double gap_dot);
+// The coupler's axial force [N] (tension > 0, compression < 0) at elongation e [m] and its rate.
+double couplerForce(const CouplerSpec& c, double e, double e_dot);
+// The torque [N m] a stop exerts on the link at angle theta [rad] (opposing theta; 0 inside the
+// free angle).
+double stopTorque(const CouplerSpec& c, double theta);
 
 // The state of a connection at one evaluation.
 struct ConnectionState {
   double gap = 0.0;            // [m] at the centre line (draw gear height)
   double buffer_left = 0.0;    // [N] compression of the left buffer pair
   double buffer_right = 0.0;   // [N]
-  double draw_gear = 0.0;      // [N] tension
+  double draw_gear = 0.0;      // [N] draw gear or coupler: tension > 0 (a coupler: < 0 pressed)
+  double angle_front = 0.0;    // [rad] coupler link against the front car body's axis (left > 0)
+  double angle_rear = 0.0;     // [rad] against the rear car body's axis
   double longitudinal = 0.0;   // [N] draw gear - buffers: tension > 0
   double lateral_front = 0.0;  // [N] lateral force on the front car body, its track frame
   double lateral_rear = 0.0;   // [N] on the rear car body
   Eigen::Vector3d axis = Eigen::Vector3d::UnitX();
-  // The point loads on the two car bodies (attachment-frame points, global forces), up to three
-  // each (two buffers and the draw gear).
+  // The point loads on the two car bodies (attachment-frame points, global forces): the two
+  // buffers, the draw gear or the coupler's pivot force, and a stop's torque as a force couple.
   std::vector<vehicle::AppliedLoad> on_front, on_rear;
 };
 
