@@ -8,6 +8,7 @@ every vehicle's speed against time.
 """
 from __future__ import annotations
 
+import warnings
 from typing import List
 
 import numpy as np
@@ -107,11 +108,9 @@ def _envelope(series, signed: bool = False):
                                right=np.nan))
     if not stack:
         return None, None
-    with np.errstate(all="ignore"):
-        import warnings
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", RuntimeWarning)
-            return grid, np.nanmax(np.vstack(stack), axis=0)
+    with warnings.catch_warnings():  # a position no series covers: NaN, not a warning
+        warnings.simplefilter("ignore", RuntimeWarning)
+        return grid, np.nanmax(np.vstack(stack), axis=0)
 
 
 def train_assessment_envelopes(result: Result):

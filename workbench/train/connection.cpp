@@ -54,27 +54,23 @@ void validateBuffers(const BufferSpec& b, const std::string& what, Diagnostics& 
     d.add(b.loc, what + ".buffers.friction must be in [0, 1], got " + formatNumber(b.friction));
 }
 
-void validateDrawGear(const DrawGearSpec& g, const std::string& what, Diagnostics& d) {
+// The axial law's keys, shared by the draw gear and the coupler (`block`: what.draw_gear or
+// what.coupler).
+template <class Axial>
+void validateAxial(const Axial& g, const std::string& block, Diagnostics& d) {
   if (!(g.stiffness > 0.0 && std::isfinite(g.stiffness)))
-    d.add(g.loc, what + ".draw_gear.stiffness must be > 0, got " + formatNumber(g.stiffness));
+    d.add(g.loc,
+          block + ".stiffness must be positive and finite, got " + formatNumber(g.stiffness));
   if (!(g.slack >= 0.0 && g.slack < 1.0))
-    d.add(g.loc, what + ".draw_gear.slack must be in [0, 1) m, got " + formatNumber(g.slack));
+    d.add(g.loc, block + ".slack must be in [0, 1) m, got " + formatNumber(g.slack));
   if (!(g.friction >= 0.0 && g.friction < 1.0))
-    d.add(g.loc, what + ".draw_gear.friction must be in [0, 1), got " + formatNumber(g.friction));
+    d.add(g.loc, block + ".friction must be in [0, 1), got " + formatNumber(g.friction));
   if (!(g.height > 0.0 && g.height < 5.0))
-    d.add(g.loc, what + ".draw_gear.height must be in (0, 5) m, got " + formatNumber(g.height));
+    d.add(g.loc, block + ".height must be in (0, 5) m, got " + formatNumber(g.height));
 }
 
 void validateCoupler(const CouplerSpec& c, const std::string& what, Diagnostics& d) {
-  if (!(c.stiffness > 0.0 && std::isfinite(c.stiffness)))
-    d.add(c.loc, what + ".coupler.stiffness must be positive and finite, got " +
-                     formatNumber(c.stiffness));
-  if (!(c.slack >= 0.0 && c.slack < 1.0))
-    d.add(c.loc, what + ".coupler.slack must be in [0, 1) m, got " + formatNumber(c.slack));
-  if (!(c.friction >= 0.0 && c.friction < 1.0))
-    d.add(c.loc, what + ".coupler.friction must be in [0, 1), got " + formatNumber(c.friction));
-  if (!(c.height > 0.0 && c.height < 5.0))
-    d.add(c.loc, what + ".coupler.height must be in (0, 5) m, got " + formatNumber(c.height));
+  validateAxial(c, what + ".coupler", d);
   if (!(c.pivot > 0.0 && c.pivot < 5.0))
     d.add(c.loc, what + ".coupler.pivot must be in (0, 5) m, got " + formatNumber(c.pivot));
   if (!(c.angle_stop > 0.0 && c.angle_stop < 1.0))
@@ -83,6 +79,12 @@ void validateCoupler(const CouplerSpec& c, const std::string& what, Diagnostics&
   if (!(c.stop_stiffness >= 0.0 && std::isfinite(c.stop_stiffness)))
     d.add(c.loc, what + ".coupler.stop_stiffness must be non-negative and finite, got " +
                      formatNumber(c.stop_stiffness));
+}
+
+// The draw gear's law in tension: k (e - slack) (1 + f tanh(e_dot / v_reg)) past the slack.
+double tensionLaw(double stiffness, double slack, double friction, double e, double e_dot) {
+  if (e <= slack) return 0.0;
+  return stiffness * (e - slack) * (1.0 + friction * std::tanh(e_dot / kRegularisingSpeed));
 }
 
 // Global position and velocity of the point u (attachment frame) of a body.
@@ -118,7 +120,7 @@ void validateConnection(const ConnectionSpec& c, Diagnostics& d) {
   if (c.draw_gear && c.coupler)
     d.add(c.loc, what + ": give a draw_gear or a coupler, not both (each is the tension link)");
   if (c.buffers) validateBuffers(*c.buffers, what, d);
-  if (c.draw_gear) validateDrawGear(*c.draw_gear, what, d);
+  if (c.draw_gear) validateAxial(*c.draw_gear, what + ".draw_gear", d);
   if (c.coupler) {
     validateCoupler(*c.coupler, what, d);
     if (c.coupler->pivot >= std::min(-c.front_end, c.rear_end))
@@ -146,18 +148,12 @@ double bufferPairForce(const BufferSpec& b, double c, double c_dot) {
 }
 
 double drawGearForce(const DrawGearSpec& g, double gap, double gap_dot) {
-  const double e = gap - g.slack;
-  if (e <= 0.0) return 0.0;
-  return g.stiffness * e * (1.0 + g.friction * std::tanh(gap_dot / kRegularisingSpeed));
+  return tensionLaw(g.stiffness, g.slack, g.friction, gap, gap_dot);
 }
 
 double couplerForce(const CouplerSpec& c, double e, double e_dot) {
-  if (e > c.slack)
-    return c.stiffness * (e - c.slack) * (1.0 + c.friction * std::tanh(e_dot / kRegularisingSpeed));
-  if (c.compression && e < -c.slack)
-    return c.stiffness * (e + c.slack) *
-           (1.0 + c.friction * std::tanh(-e_dot / kRegularisingSpeed));
-  return 0.0;
+  if (e >= 0.0 || !c.compression) return tensionLaw(c.stiffness, c.slack, c.friction, e, e_dot);
+  return -tensionLaw(c.stiffness, c.slack, c.friction, -e, -e_dot);  // the mirror law, pressed
 }
 
 double stopTorque(const CouplerSpec& c, double theta) {
