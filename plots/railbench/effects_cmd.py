@@ -61,19 +61,37 @@ def _any_dataset(f, group: str, leaf: str) -> bool:
     return bool(found)
 
 
+def _scopes(f) -> List:
+    """Where a vehicle's outputs are: the file's root, or each /vehicles/<name> of a train."""
+    vehicles = f.get("vehicles")
+    if isinstance(vehicles, h5py.Group):
+        return [g for g in vehicles.values() if isinstance(g, h5py.Group)]
+    return [f]
+
+
+def _patches(g) -> bool:
+    return _any_dataset(g, "contact", "patch0") or any(
+        k.startswith("patch") for ws in g.get("contact", {}).values()
+        if isinstance(ws, h5py.Group) for side in ws.values() if isinstance(side, h5py.Group)
+        for k in side.keys())
+
+
+# A vehicle's outputs are checked in every vehicle of a train: an effect is on when any has it.
+VEHICLE_CHECKS = {
+    "element_outputs": lambda g: "elements" in g and len(g["elements"]) > 0,
+    "patches": _patches,
+    "body_accelerations": lambda g: _any_dataset(g, "bodies", "ax"),
+    "assessment": lambda g: "assessment" in g and len(g["assessment"]) > 0,
+}
+
 CHECKS = {
     "irregularities": lambda f: "irregularities" in _effects_attr(f),
     "bump_stops": lambda f: "suspension:bumpstop" in _effects_attr(f),
     "series_dampers": lambda f: "suspension:series_damper" in _effects_attr(f),
-    "element_outputs": lambda f: "elements" in f and len(f["elements"]) > 0,
     "creep_forces": lambda f: any(e.startswith("creep:") and e != "creep:none"
                                   for e in _effects_attr(f)),
-    "patches": lambda f: _any_dataset(f, "contact", "patch0") or any(
-        k.startswith("patch") for ws in f.get("contact", {}).values()
-        if isinstance(ws, h5py.Group) for side in ws.values() if isinstance(side, h5py.Group)
-        for k in side.keys()),
-    "body_accelerations": lambda f: _any_dataset(f, "bodies", "ax"),
-    "assessment": lambda f: "assessment" in f and len(f["assessment"]) > 0,
+    **{name: (lambda f, c=check: any(c(g) for g in _scopes(f)))
+       for name, check in VEHICLE_CHECKS.items()},
 }
 
 

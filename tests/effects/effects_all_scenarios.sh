@@ -11,6 +11,7 @@ trap 'rm -rf "$TMP"' EXIT
 export RAILBENCH_TABLE_CACHE="$TMP/.table-cache"
 bad=0
 for s in scenarios/validation/case*.lua scenarios/validation/variants/*.lua scenarios/hard/*.lua \
+         scenarios/train/three_wagons.lua scenarios/train/loco_braking_r500.lua \
          scenarios/vehicle/manchester_guided_r500.lua scenarios/studies/case3_base.lua; do
   case "$s" in */lib.lua) continue ;; esac
   out="$TMP/$(echo "$s" | tr '/' '_')"

@@ -195,9 +195,9 @@ TEST(Train, RunErrorsCoverEveryVehicle) {
   EXPECT_FALSE(rb::study::fileError(single.path, a.path, y).have);
 }
 
-TEST(Train, TheAnalysesOfOneVehicleRefuseATrain) {
+TEST(Train, TheLinearisationOfOneVehicleRefusesATrain) {
   const rb::run::Model m = rb::test::compiled(kTrain);
-  for (const char* command : {"stress", "effects"}) {
+  for (const char* command : {"modes / critical-speed"}) {
     try {
       rb::scenario::refuseTrain(m.spec, command);
       FAIL() << command << " accepted a train";

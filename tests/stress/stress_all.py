@@ -23,7 +23,8 @@ def scenarios():
                     "scenarios/hard/*.lua", "scenarios/vehicle/*.lua"):
         out += sorted(os.path.relpath(p, ROOT) for p in glob.glob(os.path.join(ROOT, pattern)))
     out = [p for p in out if not p.endswith("/lib.lua")]
-    return out + ["scenarios/studies/case3_base.lua", WHEEL_LIFT]
+    return out + ["scenarios/studies/case3_base.lua", "scenarios/train/three_wagons.lua",
+                  "scenarios/train/loco_braking_r500.lua", WHEEL_LIFT]
 
 
 def main():

@@ -120,7 +120,6 @@ int runEffects(const EffectsOptions& options) {
     o.no_callgrind = true;
   }
   const scenario::ScenarioSpec scene = loadCommandScenario(o, o.overrides);
-  scenario::refuseTrain(scene, "effects");
   if (!scene.has_vehicle)
     throw InputError({o.scenario, 0},
                      "the scenario has no vehicle{} block: nothing is simulated, "

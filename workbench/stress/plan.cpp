@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <optional>
 #include <sstream>
 
 #include "workbench/core/error.hpp"
@@ -43,24 +44,69 @@ std::string factorLabel(double v) {
   return "x" + compactNumber(v);
 }
 
+// One contact model the contact axes change, and the key prefix of its --set overrides: the
+// scenario's contact{} ("contact."), and in a train every vehicle's own contact{} block
+// ("train.vehicles[k].contact."), so that a hardened case hardens every vehicle of the train.
+struct ContactTarget {
+  std::string prefix;
+  dynamics::ContactMethod method;
+};
+
+std::vector<ContactTarget> contactTargets(const ScenarioSpec& s) {
+  if (s.train.empty())
+    return s.has_contact ? std::vector<ContactTarget>{{"contact.", s.contact.method}}
+                         : std::vector<ContactTarget>{};
+  std::vector<ContactTarget> out;
+  bool scene = false;
+  for (std::size_t k = 0; k < s.train.size(); ++k) {
+    const auto& v = s.train[k];
+    if (!v.has_contact) continue;
+    if (v.own_contact)
+      out.push_back({"train.vehicles[" + std::to_string(k + 1) + "].contact.", v.contact.method});
+    else if (!scene)
+      out.push_back({"contact.", v.contact.method});
+    scene = scene || !v.own_contact;
+  }
+  return out;
+}
+
+bool anyMethod(const ScenarioSpec& s, dynamics::ContactMethod m) {
+  const auto t = contactTargets(s);
+  return std::any_of(t.begin(), t.end(), [&](const ContactTarget& c) { return c.method == m; });
+}
+
+// `key=value` for every contact model of `method` (every one when `method` is empty).
+std::vector<std::string> contactOverrides(const ScenarioSpec& s,
+                                          std::optional<dynamics::ContactMethod> method,
+                                          const std::vector<std::pair<std::string, double>>& kv) {
+  std::vector<std::string> o;
+  for (const auto& t : contactTargets(s))
+    if (!method || t.method == *method)
+      for (const auto& [key, v] : kv) o.push_back(t.prefix + key + "=" + formatNumber(v, 12));
+  return o;
+}
+
 std::string contactNote(const ScenarioSpec& s) {
-  return s.has_contact ? "" : "no wheel/rail contact in the scenario (guided wheelsets)";
+  return contactTargets(s).empty()
+             ? "no wheel/rail contact in the scenario (guided wheelsets)"
+             : "";
+}
+
+std::string methodNote(const ScenarioSpec& s, dynamics::ContactMethod m, const char* why) {
+  if (const auto n = contactNote(s); !n.empty()) return n;
+  if (anyMethod(s, m)) return "";
+  return (s.train.empty() ? "the contact method is " + std::string(nameOf(s.contact.method))
+                          : "no vehicle of the train runs on " + std::string(nameOf(m))) +
+         " (" + why + ")";
 }
 
 std::string lutNote(const ScenarioSpec& s) {
-  if (!s.has_contact) return contactNote(s);
-  return s.contact.method == dynamics::ContactMethod::Lut
-             ? ""
-             : "the contact method is " + std::string(nameOf(s.contact.method)) +
-                   " (the Hertz flange stiffness belongs to the LUT)";
+  return methodNote(s, dynamics::ContactMethod::Lut, "the Hertz flange stiffness belongs to the LUT");
 }
 
 std::string kecNote(const ScenarioSpec& s) {
-  if (!s.has_contact) return contactNote(s);
-  return s.contact.method == dynamics::ContactMethod::Kec
-             ? ""
-             : "the contact method is " + std::string(nameOf(s.contact.method)) +
-                   " (the transition lengths dhat, dbar belong to the KEC)";
+  return methodNote(s, dynamics::ContactMethod::Kec,
+                    "the transition lengths dhat, dbar belong to the KEC");
 }
 
 std::string speedNote(const ScenarioSpec& s) {
@@ -89,7 +135,12 @@ std::string curveNote(const ScenarioSpec& s) {
 }
 
 std::vector<std::string> speedOverrides(const ScenarioSpec& s, double f) {
-  std::vector<std::string> o = {"vehicle.speed=" + formatNumber(s.vehicle.speed * f, 12)};
+  // A train starts at one speed: every vehicle's is scaled.
+  std::vector<std::string> o;
+  if (s.train.empty()) o.push_back("vehicle.speed=" + formatNumber(s.vehicle.speed * f, 12));
+  for (std::size_t k = 0; k < s.train.size(); ++k)
+    o.push_back("train.vehicles[" + std::to_string(k + 1) +
+                "].vehicle.speed=" + formatNumber(s.train[k].vehicle.speed * f, 12));
   // A run given by duration keeps its length of track: faster, shorter in time.
   if (s.run.duration > 0) o.push_back("run.duration=" + formatNumber(s.run.duration / f, 12));
   return o;
@@ -114,18 +165,16 @@ const std::vector<Axis>& axes() {
       {"flange_stiffness",
        {1e11, 1e12, kHertzK},
        lutNote,
-       [](const ScenarioSpec&, double k) {
-         return std::vector<std::string>{
-             "contact.flange_stiffness=" + formatNumber(k, 12),
-             "contact.flange_damping=" + formatNumber(k * kDampingOverK, 12)};
+       [](const ScenarioSpec& s, double k) {
+         return contactOverrides(s, dynamics::ContactMethod::Lut,
+                                 {{"flange_stiffness", k}, {"flange_damping", k * kDampingOverK}});
        },
        compactNumber},
       {"transition",
        {0.5e-3, 0.25e-3, 0.1e-3},
        kecNote,
-       [](const ScenarioSpec&, double d) {
-         return std::vector<std::string>{"contact.dhat=" + formatNumber(d, 12),
-                                         "contact.dbar=" + formatNumber(d, 12)};
+       [](const ScenarioSpec& s, double d) {
+         return contactOverrides(s, dynamics::ContactMethod::Kec, {{"dhat", d}, {"dbar", d}});
        },
        [](double d) { return compactNumber(d * 1e3) + " mm"; }},
       {"speed", {1.25, 1.5, 2.0}, speedNote, speedOverrides, factorLabel},
@@ -140,8 +189,8 @@ const std::vector<Axis>& axes() {
       {"friction",
        {0.1, 0.4, 0.6},
        contactNote,
-       [](const ScenarioSpec&, double mu) {
-         return std::vector<std::string>{"contact.mu=" + formatNumber(mu, 12)};
+       [](const ScenarioSpec& s, double mu) {
+         return contactOverrides(s, std::nullopt, {{"mu", mu}});
        },
        compactNumber},
       {"curve_radius", {0.75, 0.5}, curveNote, radiusOverrides, factorLabel},
@@ -222,8 +271,8 @@ std::vector<std::string> split(const std::string& s, char sep) {
 
 }  // namespace
 
-Setting parseSetting(const std::string& text, bool hasContact, const std::string& option,
-                     double maxStep) {
+Setting parseSetting(const std::string& text, const std::vector<std::string>& couplings,
+                     const std::string& option, double maxStep) {
   const auto parts = split(text, ':');
   auto bad = [&](const std::string& why) {
     return InputError(
@@ -262,15 +311,19 @@ Setting parseSetting(const std::string& text, bool hasContact, const std::string
         formatNumber(maxStep > 0 && maxStep < kPaperMaxStep ? maxStep : kPaperMaxStep, 12));
   }
   const bool implicit = m == "bdf" || m == "ida";
-  if (hasContact && (paper || implicit))
-    s.overrides.push_back(std::string("contact.normal_forces=") +
-                          (paper && !implicit ? "lagged" : "consistent"));
+  if (paper || implicit)
+    for (const auto& prefix : couplings)
+      s.overrides.push_back(prefix + "normal_forces=" +
+                            (paper && !implicit ? "lagged" : "consistent"));
   if (paper) s.label += " paper";
   return s;
 }
 
-bool hasNormalForceCoupling(const ScenarioSpec& spec) {
-  return spec.has_contact && dynamics::methodInfo(spec.contact.method).coupling;
+std::vector<std::string> normalForceCouplings(const ScenarioSpec& spec) {
+  std::vector<std::string> out;
+  for (const auto& t : contactTargets(spec))
+    if (dynamics::methodInfo(t.method).coupling) out.push_back(t.prefix);
+  return out;
 }
 
 std::vector<std::string> shortenRun(const ScenarioSpec& spec, double seconds) {

@@ -51,11 +51,14 @@ Plan planAxes(const scenario::ScenarioSpec& spec, const PlanRequest& request);
 // maximum step of 1 ms (section 5.4), or the scenario's `maxStep` when smaller: without it a
 // step-size controller may step over a short excitation of a track that starts in equilibrium.
 // Throws InputError naming `option`.
-// Whether the scenario's contact method has a normal-force coupling to set (the constraint
-// methods; the elastic method's normal forces follow from the approach).
-bool hasNormalForceCoupling(const scenario::ScenarioSpec& spec);
-Setting parseSetting(const std::string& text, bool hasContact, const std::string& option,
-                     double maxStep);
+// `couplings`: the key prefixes of the contact models that have a normal-force coupling to set
+// (normalForceCouplings).
+Setting parseSetting(const std::string& text, const std::vector<std::string>& couplings,
+                     const std::string& option, double maxStep);
+// The key prefixes ("contact.", in a train also "train.vehicles[k].contact." of a vehicle's own
+// contact{}) of the contact models with a normal-force coupling (the constraint methods; the
+// elastic method's normal forces follow from the approach).
+std::vector<std::string> normalForceCouplings(const scenario::ScenarioSpec& spec);
 
 // Overrides that shorten the run to at most `seconds` (quick mode): run.duration, or run.distance
 // for a run given by distance; empty when it is already that short.

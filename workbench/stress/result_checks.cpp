@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <sstream>
 
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
@@ -122,9 +123,23 @@ double peakToPeak(const std::vector<double>& y, std::size_t from, std::size_t to
   return *hi - *lo;
 }
 
-// Hunting of ws1 (ResultCheck::ws1_y_pp_last_mm, onset_t, onset_speed).
-void hunting(const io::ResultReader& f, const std::vector<double>& t, ResultCheck& r) {
-  const auto y1 = f.dataset("/bodies/ws1/y");
+// Where the outputs of each vehicle are: "" for a run of one vehicle, "/vehicles/<name>" for
+// each vehicle of a train, front to rear (the order of /vehicles' attribute `names`).
+std::vector<std::string> vehicleGroups(const io::ResultReader& f) {
+  if (!f.has("/vehicles")) return {""};
+  std::vector<std::string> out;
+  std::istringstream names(f.text("/vehicles", "names").value_or(""));
+  for (std::string n; std::getline(names, n);)
+    if (!n.empty()) out.push_back("/vehicles/" + n);
+  if (out.empty())
+    for (const auto& n : f.members("/vehicles")) out.push_back("/vehicles/" + n);
+  return out;
+}
+
+// Hunting of the leading vehicle's ws1 (ResultCheck::ws1_y_pp_last_mm, onset_t, onset_speed).
+void hunting(const io::ResultReader& f, const std::string& lead, const std::vector<double>& t,
+             ResultCheck& r) {
+  const auto y1 = f.dataset(lead + "/bodies/ws1/y");
   if (!y1 || t.size() < 2) return;
   const std::size_t n = std::min(t.size(), y1->size());
   if (n < 2) return;
@@ -154,18 +169,20 @@ double maxOf(const std::optional<std::vector<double>>& v, double m, bool abs) {
   return m;
 }
 
-// A wheelset's |y| against the centre of its rails, and ws1's peak-to-peak over the last second.
-void wheelsetExtremes(const io::ResultReader& f, const std::string& ws, const RailCentre& rails,
-                      const std::vector<double>& t, Extremes& e, ResultCheck& r) {
-  const auto y = f.dataset("/bodies/" + ws + "/y");
+// A wheelset's |y| against the centre of its rails, and the leading vehicle's ws1 peak-to-peak
+// over the last second. `g`: the vehicle's group.
+void wheelsetExtremes(const io::ResultReader& f, const std::string& g, bool lead,
+                      const std::string& ws, const RailCentre& rails, const std::vector<double>& t,
+                      Extremes& e, ResultCheck& r) {
+  const auto y = f.dataset(g + "/bodies/" + ws + "/y");
   if (!y || y->empty()) return;
-  const auto s = f.dataset("/bodies/" + ws + "/s");
+  const auto s = f.dataset(g + "/bodies/" + ws + "/s");
   for (std::size_t i = 0; i < y->size(); ++i) {
     const double centre =
         rails.s.empty() || !s || i >= s->size() ? 0.0 : interpClamped(rails.s, rails.y, (*s)[i]);
     e.ymax = std::max(e.ymax, std::abs((*y)[i] - centre));
   }
-  if (ws != "ws1" && ws != "ws") return;
+  if (!lead || (ws != "ws1" && ws != "ws")) return;
   std::size_t from = 0;
   const std::size_t n = std::min(t.size(), y->size());
   while (from < n && t[from] < t.back() - 1.0) ++from;
@@ -192,17 +209,20 @@ void wheelExtremes(const io::ResultReader& f, const std::string& g, Extremes& e)
   e.yqmax = maxOf(f.dataset(g + "y_over_q"), e.yqmax, true);
 }
 
-// The extremes over every wheelset and wheel (ResultCheck's max_* and min_normal_kN).
-void extremes(const io::ResultReader& f, const std::string& path, const std::vector<double>& t,
+// The extremes over every wheelset and wheel of every vehicle (ResultCheck's max_* and
+// min_normal_kN).
+void extremes(const io::ResultReader& f, const std::string& path,
+              const std::vector<std::string>& vehicles, const std::vector<double>& t,
               ResultCheck& r) {
   Extremes e;
   e.inFlange.assign(t.size(), 0);
   const RailCentre rails = railCentre(f, path, r.problems);
-  for (const auto& ws : f.members("/contact")) {
-    wheelsetExtremes(f, ws, rails, t, e, r);
-    for (const char* side : {"left", "right"})
-      wheelExtremes(f, "/contact/" + ws + "/" + side + "/", e);
-  }
+  for (const auto& g : vehicles)
+    for (const auto& ws : f.members(g + "/contact")) {
+      wheelsetExtremes(f, g, g == vehicles.front(), ws, rails, t, e, r);
+      for (const char* side : {"left", "right"})
+        wheelExtremes(f, g + "/contact/" + ws + "/" + side + "/", e);
+    }
   r.max_abs_y_mm = e.ymax * 1e3;
   r.max_normal_kN = e.nmax / 1e3;
   r.min_normal_kN = (std::isfinite(e.nmin) ? e.nmin : 0.0) / 1e3;
@@ -391,8 +411,9 @@ ResultCheck checkResult(const std::string& path, int exitCode, const Bounds& bou
     r.problems.push_back("NaN/Inf in " + join(bad, ", "));
   const std::vector<double> t = f.dataset("/time").value_or(std::vector<double>{});
   checkConsistency(f, exitCode, r, t);
-  extremes(f, path, t, r);
-  hunting(f, t, r);
+  const std::vector<std::string> vehicles = vehicleGroups(f);
+  extremes(f, path, vehicles, t, r);
+  if (!vehicles.empty()) hunting(f, vehicles.front(), t, r);
   const std::vector<std::string> odd = implausible(r, bounds);
   if (exitCode == 0) {
     r.problems.insert(r.problems.end(), odd.begin(), odd.end());

@@ -108,7 +108,7 @@ std::vector<stress::Setting> settings(const StressOptions& o, const scenario::Sc
                     : std::vector<std::string>{"rk4:1e-3", "abm:1e-3", "dopri5:1e-6", "bdf:1e-6"};
   std::vector<stress::Setting> out;
   for (const auto& g : given)
-    out.push_back(stress::parseSetting(g, stress::hasNormalForceCoupling(spec), "--integrators",
+    out.push_back(stress::parseSetting(g, stress::normalForceCouplings(spec), "--integrators",
                                        spec.solver.max_step));
   return out;
 }
@@ -253,7 +253,6 @@ int runStress(const StressOptions& o) {
       o.expect.empty() ? std::vector<Expectation>{} : readExpectations(o.expect);
   std::vector<std::string> common = o.overrides;
   scenario::ScenarioSpec spec = loadCommandScenario(o, common);
-  scenario::refuseTrain(spec, "stress");
   if (!spec.has_vehicle)
     throw InputError({o.scenario, 0}, "stress needs a vehicle scenario (no vehicle block)");
   if (o.quick) {
@@ -267,7 +266,7 @@ int runStress(const StressOptions& o) {
   if (plan.cases.empty()) throw InputError({"--axes", 0}, "no axis applies to " + o.scenario);
   const auto runs = settings(o, spec);
   stress::Setting reference = stress::parseSetting(
-      o.reference, stress::hasNormalForceCoupling(spec), "--reference", spec.solver.max_step);
+      o.reference, stress::normalForceCouplings(spec), "--reference", spec.solver.max_step);
   // The reference has to reach the end of every hardened case: at its tight tolerance the
   // solver's default work limit (500 internal steps per output interval) stops BDF in flange
   // contact ("too much work") where nothing is wrong with the case. The same limit as precision's.
