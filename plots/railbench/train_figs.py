@@ -4,7 +4,7 @@ run of several vehicles whose file has /train/connections.
 Panels against the distance the front vehicle of each connection has travelled (its first body's
 s less its start): the connection's longitudinal force (draw gear - buffers, tension > 0), the
 lateral force it exerts on the rear car body, and, when the motion along the track is a state,
-every vehicle's speed against time.
+every vehicle's speed and its jerk over 1 s (/vehicles/<name>/motion/jerk_1s) against time.
 """
 from __future__ import annotations
 
@@ -44,7 +44,7 @@ def _front_distance(result: Result, name: str) -> np.ndarray:
 def fig_train(result: Result):
     names = train_connections(result)
     motion = [v for v in result.vehicles if f"/vehicles/{v}/motion/speed" in _datasets(result)]
-    rows = 3 if motion else 2
+    rows = 4 if motion else 2
     fig, ax = plt.subplots(rows, 1, figsize=(10, 3 * rows), sharex=False)
     for name in names:
         g = result.read_group(f"/train/connections/{name}")
@@ -62,10 +62,15 @@ def fig_train(result: Result):
         for v in motion:
             g = result.read_group(f"/vehicles/{v}/motion")
             ax[2].plot(result.time, g["speed"], label=v)
-        ax[2].set_xlabel("time [s]")
+            if "jerk_1s" in g:
+                ax[3].plot(result.time, g["jerk_1s"], label=v)
         ax[2].set_ylabel("speed [m/s]")
-        ax[2].legend(fontsize=8, ncol=4)
-        ax[2].grid(True, alpha=0.3)
+        ax[3].set_ylabel("jerk over 1 s [m/s$^3$]")
+        ax[3].axhline(0.0, color="0.6", lw=0.6)
+        for a in ax[2:]:
+            a.set_xlabel("time [s]")
+            a.legend(fontsize=8, ncol=4)
+            a.grid(True, alpha=0.3)
     fig.suptitle("Train: in-train forces and motion — " + ", ".join(result.vehicles) +
                  f" ({result.stem})", fontsize=10)
     fig.tight_layout()

@@ -378,8 +378,8 @@ def test_e_train_figures_per_vehicle():
 
 def test_e_train_connections_figure():
     """A train with connections and its motion as states: the train figure once (not per
-    vehicle), with one line per connection drawn from the file's forces, and the speeds; a train
-    without connections has none."""
+    vehicle), with one line per connection drawn from the file's forces, the speeds and the jerks;
+    a train without connections has none."""
     import h5py
     out = os.path.join(TMP, "rake_figs")
     r = run_cli(_f("rake"), "--outdir", out)
@@ -395,7 +395,14 @@ def test_e_train_connections_figure():
         want = f["/train/connections/w1-w2/force"][()] * 1e-3
     got = [ln for ln in forces if ln.get_label() == "w1-w2"][0].get_ydata()
     check(np.allclose(got, want), "the force line is the file's force in kN")
-    check(len(fig.axes) == 3 and len(fig.axes[2].get_lines()) == 3, "a speed line per vehicle")
+    check(len(fig.axes) == 4 and len(fig.axes[2].get_lines()) == 3, "a speed line per vehicle")
+    # The jerk over 1 s, one line per vehicle (and the zero line), drawn from the file's.
+    jerks = [ln for ln in fig.axes[3].get_lines() if ln.get_label() in ("w1", "w2", "w3")]
+    check(len(jerks) == 3, f"a jerk line per vehicle: {[ln.get_label() for ln in jerks]}")
+    with h5py.File(_f("rake"), "r") as f:
+        want = f["/vehicles/w2/motion/jerk_1s"][()]
+    got = [ln for ln in jerks if ln.get_label() == "w2"][0].get_ydata()
+    check(np.allclose(got, want), "the jerk line is the file's jerk_1s")
     check(not train_connections(res("train")), "no connections: no train figure")
 
 

@@ -16,6 +16,7 @@
 #include "workbench/io/result_reader.hpp"
 #include "workbench/run/compile.hpp"
 #include "workbench/train/connection.hpp"
+#include "workbench/train/longitudinal.hpp"
 
 namespace {
 
@@ -32,6 +33,38 @@ rb::train::BufferSpec buffer() {
   b.spacing = 1.75;
   b.height = 1.06;
   return b;
+}
+
+TEST(TrainConnections, JerkOfASampledAcceleration) {
+  // a = 0.3 t^2 at uneven samples: the central difference of a parabola is exact at the midpoint
+  // of its two neighbours, the one-sided end differences are the secants.
+  const std::vector<double> t = {0.0, 0.1, 0.25, 0.5, 1.0, 1.5, 2.0, 3.0};
+  std::vector<double> a;
+  for (double x : t) a.push_back(0.3 * x * x);
+  const auto j = rb::train::jerk(t, a, 0.0);
+  ASSERT_EQ(j.size(), t.size());
+  for (std::size_t i = 1; i + 1 < t.size(); ++i)
+    EXPECT_NEAR(j[i], 0.3 * (t[i + 1] + t[i - 1]), 1e-12) << i;
+  EXPECT_NEAR(j.front(), 0.3 * t[1], 1e-12);
+  EXPECT_NEAR(j.back(), 0.3 * (t[7] + t[6]), 1e-12);
+  // A ramp of acceleration from 0 to -0.6 m/s^2 between 1 s and 1.5 s, sampled every 10 ms: the
+  // 1 s window centred in the ramp sees all of it, -0.6 m/s^3; the raw rate is the ramp's
+  // -1.2 m/s^3; far from the ramp both are 0; the window is shortened at the run's ends.
+  std::vector<double> ts, as;
+  for (int k = 0; k <= 400; ++k) {
+    ts.push_back(0.01 * k);
+    as.push_back(-0.6 * std::clamp((ts.back() - 1.0) / 0.5, 0.0, 1.0));
+  }
+  const auto raw = rb::train::jerk(ts, as, 0.0);
+  const auto comfort = rb::train::jerk(ts, as, 1.0);
+  EXPECT_NEAR(raw[125], -1.2, 1e-9);
+  EXPECT_NEAR(comfort[125], -0.6, 1e-9);
+  EXPECT_NEAR(raw[300], 0.0, 1e-12);
+  EXPECT_NEAR(comfort[300], 0.0, 1e-12);
+  EXPECT_NEAR(comfort[0], 0.0, 1e-12);  // [0, 0.5 s]: before the ramp
+  // Too few samples: zeros, never a division by a zero interval.
+  EXPECT_EQ(rb::train::jerk({1.0}, {2.0}, 1.0), std::vector<double>{0.0});
+  EXPECT_TRUE(rb::train::jerk({}, {}, 0.0).empty());
 }
 
 TEST(TrainConnections, ForceLaws) {
@@ -230,6 +263,24 @@ TEST(TrainConnections, BrakingRakeForcesAreTheDeceleratingMasses) {
   // Speed integrates the acceleration: 20 m/s + a (t - ramp) within the run-in's wobble.
   const auto v = *r.dataset("/vehicles/w1/motion/speed");
   EXPECT_NEAR(v.back(), 20.0 + a * (3.0 - 0.45), 0.02);
+  // Jerk, one value per output time: the braking ramp (0.2 s to 0.7 s) takes the rake's
+  // acceleration from 0 to a, so the change over the 1 s centred in it (0 to 0.95 s, shortened
+  // at the start) is about a / 0.95 s in every wagon; once the run-in has died away the
+  // acceleration is steady and so is the jerk.
+  for (const char* w : {"w1", "w2", "w3"}) {
+    const std::string g = "/vehicles/" + std::string(w) + "/motion/";
+    const auto raw = *r.dataset(g + "jerk");
+    const auto comfort = *r.dataset(g + "jerk_1s");
+    ASSERT_EQ(raw.size(), t.size());
+    ASSERT_EQ(comfort.size(), t.size());
+    const auto mid = static_cast<std::size_t>(std::lround(0.45 / 0.005));
+    EXPECT_NEAR(comfort[mid], a / 0.95, 0.15 * -a / 0.95) << w;
+    double late = 0.0;  // the largest |jerk_1s| after 2 s
+    for (std::size_t i = 0; i < t.size(); ++i)
+      if (t[i] > 2.0) late = std::max(late, std::abs(comfort[i]));
+    EXPECT_LT(late, 0.05) << w;
+  }
+  EXPECT_TRUE(r.has("/schema/series"));
 }
 
 TEST(TrainConnections, CoastingUphillTheSlopeDecelerates) {

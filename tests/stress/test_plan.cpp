@@ -60,7 +60,8 @@ TEST(StressPlan, ATrainIsHardenedInEveryVehicle) {
   // The KEC transition belongs to the scenario's contact{} only (the elastic wagon has none).
   const auto* kec = find(p, "transition");
   ASSERT_NE(kec, nullptr);
-  EXPECT_EQ(kec->overrides, (std::vector<std::string>{"contact.dhat=0.0001", "contact.dbar=0.0001"}));
+  EXPECT_EQ(kec->overrides,
+            (std::vector<std::string>{"contact.dhat=0.0001", "contact.dbar=0.0001"}));
   EXPECT_EQ(find(p, "flange_stiffness"), nullptr);
   EXPECT_TRUE(noted(p, "no vehicle of the train runs on lut"));
   // A train starts at one speed: every vehicle's is scaled, none left at the old one.

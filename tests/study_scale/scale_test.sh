@@ -71,6 +71,17 @@ cat >"$TMP/slow.lua" <<LUA
 study { base = "$ROOT/scenarios/studies/case3_base.lua",
         matrix = { ["run.distance"] = { 40, 80, 120, 160, 200, 240 } } }
 LUA
+# A train of two wagons (tests/run/data/train_two_wagons.lua) with a parameter of one vehicle
+# named by its name and a metric on the rear wagon's outputs: 4 runs of 0.05 s.
+cat >"$TMP/train.lua" <<LUA
+study { base = "$ROOT/tests/run/data/train_two_wagons.lua",
+        matrix = { ["run.duration"] = { 0.05 }, ["contact.mu"] = { 0.2, 0.3 },
+                   ["train.vehicles.rear.vehicle.bodies.car.mass"] = { 32000, 36000 } },
+        metrics = {
+          { name = "rear_q_rms", signal = "/vehicles/rear/contact/ws1/left/Q", stat = "rms" },
+          { name = "front_y_max", signal = "/vehicles/front/bodies/ws1/y", stat = "max_abs" },
+        } }
+LUA
 results() { find "$1" -maxdepth 1 -regex '.*_r[0-9]+\.h5' 2>/dev/null | sort; }
 nresults() { results "$1" | wc -l; }
 # name inode mtime(ns) of every result file
@@ -113,6 +124,38 @@ PYEOF
 }
 
 case "$MODE" in
+train)
+  # A study of a train: local, as 2 shards + --summarize and, when built with MPI, as the farm,
+  # the same summaries; the metrics read each vehicle's outputs.
+  wb study "$TMP/train.lua" --out "$TMP/tlocal" --jobs 2 >/dev/null 2>"$TMP/e"; rc=$?
+  [ $rc -eq 0 ] && summary_ok "$TMP/tlocal" 4 && ok "local run of a train study" \
+    || bad "train local ($rc): $(cat "$TMP/e")"
+  "$PY" - "$TMP/tlocal" <<'PY' && ok "the rear wagon's mass changes its wheel load" || bad "train metrics"
+import csv, os, sys
+rows = list(csv.DictReader(open(os.path.join(sys.argv[1], "summary.csv"))))
+q = {}
+for r in rows:
+    mass = next(t for t in r["overrides"].split() if "car.mass=" in t).split("=")[1]
+    q.setdefault(float(mass), []).append(float(r["metric_rear_q_rms"]))
+    assert float(r["metric_front_y_max"]) >= 0.0, r
+light, heavy = min(q[32000.0]), min(q[36000.0])
+# A quarter of 4 t more on each of 8 wheels: about 4.9 kN more wheel load.
+assert 3.5e3 < heavy - light < 6.5e3, (light, heavy)
+PY
+  for k in 1 2; do
+    wb study "$TMP/train.lua" --out "$TMP/tshards" --shard "$k/2" --jobs 1 >/dev/null 2>"$TMP/e$k" \
+      || bad "train shard $k/2: $(cat "$TMP/e$k")"
+  done
+  wb study "$TMP/train.lua" --out "$TMP/tshards" --summarize >/dev/null 2>"$TMP/e"
+  "$PY" "$HERE/compare_summaries.py" "$TMP/tshards" "$TMP/tlocal" 4 \
+    && ok "train: shards + --summarize, the local summaries" || bad "train shards differ from local"
+  if [ "$MPI_BUILT" = 1 ]; then
+    "${mpi[@]}" -np 3 "$WB" --root "$ROOT" study "$TMP/train.lua" --out "$TMP/tmpi" --mpi \
+      </dev/null >/dev/null 2>"$TMP/e"; rc=$?
+    [ $rc -eq 0 ] && "$PY" "$HERE/compare_summaries.py" "$TMP/tmpi" "$TMP/tlocal" 4 \
+      && ok "train: the MPI farm, the local summaries" || bad "train MPI ($rc): $(cat "$TMP/e")"
+  fi
+  ;;
 same)
   wb study "$TMP/six.lua" --out "$TMP/local" --jobs 2 >/dev/null 2>"$TMP/e"; rc=$?
   [ $rc -eq 0 ] && summary_ok "$TMP/local" 6 && ok "local run of 6 runs" || bad "local ($rc): $(cat "$TMP/e")"

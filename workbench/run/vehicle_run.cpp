@@ -20,9 +20,11 @@ namespace {
 
 // /schema/series: /time and every output channel, before the run so that the partial file of a
 // failed run has it too.
-void writeSeriesSchema(const std::vector<OutputChannel>& outputs, bool contact, io::ResultFile& f) {
+void writeSeriesSchema(const std::vector<OutputChannel>& outputs,
+                       const std::vector<OutputChannel>& derived, bool contact, io::ResultFile& f) {
   std::vector<io::SchemaEntry> rows = {{"/time", "s", "output time", ""}};
   for (const auto& o : outputs) rows.push_back({o.path, o.units, o.meaning, o.codes});
+  for (const auto& o : derived) rows.push_back({o.path, o.units, o.meaning, o.codes});
   std::vector<std::pair<std::string, std::string>> enums;
   if (contact) enums.emplace_back(kRegimeEnum, io::codesOf<dynamics::ContactRegime>());
   // The names the failure record (/stats failure_kind, failure_reason) takes, in their tables.
@@ -162,6 +164,55 @@ void declareTrainChannels(const train::TrainOde& ode, std::vector<OutputChannel>
                      std::string(row.unit), std::string(row.meaning), ""});
 }
 
+// The jerk of each vehicle whose motion is a state: series computed after the run from its sampled
+// acceleration (train::jerk), one value per output time.
+constexpr double kComfortJerkWindow = 1.0;  // [s] the ramp comfort limits are stated over
+
+struct JerkSeries {
+  const char* name;
+  double window;
+  const char* meaning;
+};
+inline constexpr JerkSeries kJerkSeries[] = {
+    {"jerk", 0.0,
+     "rate of change of the acceleration along the track at the output interval (central "
+     "differences of the sampled acceleration)"},
+    {"jerk_1s", kComfortJerkWindow,
+     "change of the acceleration along the track over 1 s centred on the sample, per second "
+     "(the window shortened at the run's ends)"},
+};
+
+std::vector<OutputChannel> jerkChannels(const train::TrainOde& ode) {
+  std::vector<OutputChannel> out;
+  if (!ode.longitudinal()) return out;
+  for (int k = 0; k < ode.vehicles(); ++k)
+    for (const auto& j : kJerkSeries)
+      out.push_back({"/vehicles/" + ode.name(k) + "/motion/" + j.name, "m/s^3", j.meaning, ""});
+  return out;
+}
+
+// The samples' times and each vehicle's acceleration, as the sampler saw them.
+struct AccelerationRecord {
+  std::vector<double> t;
+  std::vector<std::vector<double>> a;  // per vehicle
+};
+
+void writeJerk(const train::TrainOde& ode, AccelerationRecord rec, double t_reached,
+               io::ResultFile& f) {
+  // A sample the run did not write (non-finite, past the failure) is not the file's.
+  std::size_t n = 0;
+  while (n < rec.t.size() && rec.t[n] <= t_reached + 1e-12 * std::max(1.0, std::abs(t_reached)))
+    ++n;
+  rec.t.resize(n);
+  for (int k = 0; k < ode.vehicles(); ++k) {
+    auto& a = rec.a[static_cast<std::size_t>(k)];
+    a.resize(n);
+    for (const auto& j : kJerkSeries)
+      f.dataset("/vehicles/" + ode.name(k) + "/motion/" + j.name, train::jerk(rec.t, a, j.window),
+                "m/s^3");
+  }
+}
+
 double* sampleTrain(const train::TrainOde& ode, double* out) {
   for (std::size_t i = 0; i < ode.connections().size(); ++i)
     for (const auto& row : kConnectionChannels)
@@ -225,7 +276,9 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     f.attr("/vehicles", "names", names);
   }
   declareTrainChannels(*train, r.outputs);
-  writeSeriesSchema(r.outputs, contact, f);
+  writeSeriesSchema(r.outputs, jerkChannels(*train), contact, f);
+  AccelerationRecord accelerations;
+  accelerations.a.resize(train->longitudinal() ? static_cast<std::size_t>(train->vehicles()) : 0);
   r.sample = [&](double t, const Eigen::VectorXd& y, double* out) {
     // The vehicles' forward motion and the connections' loads at this state first.
     (void)train->prepare(t, y.data());
@@ -233,6 +286,10 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     for (auto& p : parts) out = p.outputs->sample(t, y.data() + p.offset, out);
     train->updateAccelerations();  // from the contact forces the outputs just evaluated
     out = sampleTrain(*train, out);
+    if (accelerations.a.empty()) return;
+    accelerations.t.push_back(t);
+    for (int k = 0; k < train->vehicles(); ++k)
+      accelerations.a[static_cast<std::size_t>(k)].push_back(train->motion(k).acceleration);
   };
   f.attr("/", "solver", m.solver.method);
   f.attr("/", "contact_method",
@@ -266,6 +323,8 @@ VehicleRunResult runVehicle(const Model& m, io::ResultFile& f, const VehicleRunO
     r.extra = &extra;
   }
   out.result = simulate(r, f);
+  if (!accelerations.a.empty())
+    writeJerk(*train, std::move(accelerations), out.result.t_reached, f);
   if (assess) finishAssessments(m, parts, extra.samples, f, out);
   if (contact) writeContactCounters(m, parts, f, out);
   out.effects = compiledEffects(m);

@@ -87,9 +87,8 @@ std::vector<std::string> contactOverrides(const ScenarioSpec& s,
 }
 
 std::string contactNote(const ScenarioSpec& s) {
-  return contactTargets(s).empty()
-             ? "no wheel/rail contact in the scenario (guided wheelsets)"
-             : "";
+  return contactTargets(s).empty() ? "no wheel/rail contact in the scenario (guided wheelsets)"
+                                   : "";
 }
 
 std::string methodNote(const ScenarioSpec& s, dynamics::ContactMethod m, const char* why) {
@@ -101,7 +100,8 @@ std::string methodNote(const ScenarioSpec& s, dynamics::ContactMethod m, const c
 }
 
 std::string lutNote(const ScenarioSpec& s) {
-  return methodNote(s, dynamics::ContactMethod::Lut, "the Hertz flange stiffness belongs to the LUT");
+  return methodNote(s, dynamics::ContactMethod::Lut,
+                    "the Hertz flange stiffness belongs to the LUT");
 }
 
 std::string kecNote(const ScenarioSpec& s) {
@@ -313,8 +313,8 @@ Setting parseSetting(const std::string& text, const std::vector<std::string>& co
   const bool implicit = m == "bdf" || m == "ida";
   if (paper || implicit)
     for (const auto& prefix : couplings)
-      s.overrides.push_back(prefix + "normal_forces=" +
-                            (paper && !implicit ? "lagged" : "consistent"));
+      s.overrides.push_back(prefix +
+                            "normal_forces=" + (paper && !implicit ? "lagged" : "consistent"));
   if (paper) s.label += " paper";
   return s;
 }

@@ -265,8 +265,8 @@ int runStress(const StressOptions& o) {
   for (const auto& n : plan.notes) std::cout << "stress: " << n << "\n";
   if (plan.cases.empty()) throw InputError({"--axes", 0}, "no axis applies to " + o.scenario);
   const auto runs = settings(o, spec);
-  stress::Setting reference = stress::parseSetting(
-      o.reference, stress::normalForceCouplings(spec), "--reference", spec.solver.max_step);
+  stress::Setting reference = stress::parseSetting(o.reference, stress::normalForceCouplings(spec),
+                                                   "--reference", spec.solver.max_step);
   // The reference has to reach the end of every hardened case: at its tight tolerance the
   // solver's default work limit (500 internal steps per output interval) stops BDF in flange
   // contact ("too much work") where nothing is wrong with the case. The same limit as precision's.

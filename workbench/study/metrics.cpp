@@ -29,32 +29,45 @@ std::string parentOf(const std::string& p) {
   return p.substr(0, p.rfind('/'));
 }
 
-// The body names of the file, in the vehicle's order.
-std::vector<std::string> bodies(const io::ResultReader& r) {
+// The body names of the vehicle whose outputs are under `vehicle` ("" for a run of one vehicle,
+// "/vehicles/<name>" in a train), in the vehicle's order.
+std::vector<std::string> bodies(const io::ResultReader& r, const std::string& vehicle) {
   std::vector<std::string> out;
-  if (auto names = r.text("/bodies", "names")) {
+  if (auto names = r.text(vehicle + "/bodies", "names")) {
     std::istringstream in(*names);
     std::string n;
     while (std::getline(in, n, '\n'))
       if (!n.empty()) out.push_back(n);
   }
-  if (out.empty()) out = r.members("/bodies");
+  if (out.empty()) out = r.members(vehicle + "/bodies");
   return out;
 }
 
+// The vehicle group a path lies in: "/vehicles/<name>" for a train's vehicle, else "".
+std::string vehicleOf(const std::string& path) {
+  const std::string head = "/vehicles/";
+  if (path.rfind(head, 0) != 0) return "";
+  const auto end = path.find('/', head.size());
+  return end == std::string::npos ? "" : path.substr(0, end);
+}
+
 // The distance axis of `path`: the `s` beside it, the s of a body its path names, the
-// assessment's distance axes, else the first body's s; each only with as many samples.
+// assessment's distance axes, else the first body's s; each only with as many samples, and in a
+// train each of the vehicle the path belongs to.
 std::optional<std::vector<double>> distanceAxis(const io::ResultReader& r, const std::string& path,
                                                 std::size_t n) {
+  const std::string v = vehicleOf(path);
+  const std::string local = path.substr(v.size());
   std::vector<std::string> candidates = {parentOf(path) + "/s"};
-  const auto names = bodies(r);
+  const auto names = bodies(r, v);
   for (const auto& b : names)
-    if (path.find("/" + b + "/") != std::string::npos) candidates.push_back("/bodies/" + b + "/s");
-  if (path.rfind("/assessment/", 0) == 0) {
-    candidates.emplace_back("/assessment/distance");
-    candidates.emplace_back("/assessment/safety/s");
+    if (local.find("/" + b + "/") != std::string::npos)
+      candidates.push_back(v + "/bodies/" + b + "/s");
+  if (local.rfind("/assessment/", 0) == 0) {
+    candidates.push_back(v + "/assessment/distance");
+    candidates.push_back(v + "/assessment/safety/s");
   }
-  for (const auto& b : names) candidates.push_back("/bodies/" + b + "/s");
+  for (const auto& b : names) candidates.push_back(v + "/bodies/" + b + "/s");
   for (const auto& c : candidates)
     if (auto x = r.dataset(c); x && x->size() == n && c != path) return x;
   return std::nullopt;
@@ -69,7 +82,7 @@ Signal readSignal(const io::ResultReader& r, const std::string& path, const std:
   }
   std::optional<std::vector<double>> x;
   if (along == "time") {
-    for (const char* t : {"/time", "/assessment/time"})
+    for (const std::string& t : {std::string("/time"), vehicleOf(path) + "/assessment/time"})
       if (!x)
         if (auto c = r.dataset(t); c && c->size() == y->size()) x = c;
   } else {

@@ -1,5 +1,6 @@
 #include "workbench/train/longitudinal.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "workbench/core/strings.hpp"
@@ -39,6 +40,39 @@ double tractionForce(const TractionSpec& t, double time, double travel) {
   while (x > t.at[i]) ++i;
   const double w = (x - t.at[i - 1]) / (t.at[i] - t.at[i - 1]);
   return t.force[i - 1] + w * (t.force[i] - t.force[i - 1]);
+}
+
+namespace {
+
+// a at time x, linear between the samples (x inside [t.front(), t.back()]).
+double at(const std::vector<double>& t, const std::vector<double>& a, double x) {
+  const auto hi = std::upper_bound(t.begin(), t.end(), x);
+  if (hi == t.end()) return a.back();
+  if (hi == t.begin()) return a.front();
+  const auto i = static_cast<std::size_t>(hi - t.begin());
+  const double u = (x - t[i - 1]) / (t[i] - t[i - 1]);
+  return a[i - 1] + u * (a[i] - a[i - 1]);
+}
+
+}  // namespace
+
+std::vector<double> jerk(const std::vector<double>& t, const std::vector<double>& a,
+                         double window) {
+  const std::size_t n = std::min(t.size(), a.size());
+  std::vector<double> j(n, 0.0);
+  if (n < 2) return j;
+  for (std::size_t i = 0; i < n; ++i) {
+    double lo = 0.0, hi = 0.0;
+    if (window > 0.0) {
+      lo = std::max(t[i] - 0.5 * window, t.front());
+      hi = std::min(t[i] + 0.5 * window, t[n - 1]);
+    } else {
+      lo = t[i == 0 ? 0 : i - 1];
+      hi = t[i + 1 == n ? n - 1 : i + 1];
+    }
+    j[i] = hi > lo ? (at(t, a, hi) - at(t, a, lo)) / (hi - lo) : 0.0;
+  }
+  return j;
 }
 
 }  // namespace rb::train

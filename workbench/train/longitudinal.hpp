@@ -77,4 +77,13 @@ inline double resistanceForce(const ResistanceSpec& r, double v) {
   return r.a + r.b * v + r.c * v * v;
 }
 
+// The jerk da/dt [m/s^3] of an acceleration a sampled at the times t (increasing), one value per
+// sample. window = 0: at the samples' own spacing (central differences, one-sided at the ends),
+// the rate the output resolves, a slack run-in's spike included. window > 0: the change of
+// acceleration over `window` seconds centred on each sample, (a(t + w/2) - a(t - w/2)) / w with a
+// interpolated linearly and the window shortened to fit inside the samples at the ends: the jerk
+// that comfort limits for passengers (about 1 to 1.5 m/s^3) are stated over, a ramp of about one
+// second. Fewer than two samples: zeros.
+std::vector<double> jerk(const std::vector<double>& t, const std::vector<double>& a, double window);
+
 }  // namespace rb::train
