@@ -141,6 +141,38 @@ def two_axle_wagon(wb, out, failures):
     check("unstable" in header, "two-axle wagon: modes.csv has no unstable column", failures)
 
 
+TRAIN = "tests/modes/data/train_coupled_tangent.lua"
+
+
+def train(wb, out, failures):
+    """A train's modes: the command runs on train{}, its coordinates and dominant coordinates
+    name the vehicle, its figures are drawn; critical-speed (one vehicle's speed ramps) refuses a
+    train at its first entry, running nothing."""
+    d = os.path.join(out, "train")
+    rc, so, se = run(wb, [TRAIN, "--speeds", "20:40:3", "--out", d])
+    check(rc == 0, f"train: exit {rc}: {se}", failures)
+    if rc == 0:
+        with h5py.File(os.path.join(d, "modes.h5"), "r") as f:
+            notes = f["modes"].attrs["notes"]
+            check(b"train of 2 vehicles" in notes, f"train: no note on the train: {notes}",
+                  failures)
+            coords = [c.decode() for c in f["modes/speed_0/coordinates"][()]]
+            dominant = [c.decode() for c in f["modes/speed_0/dominant"][()]]
+        check(coords and all(c.startswith(("w1.", "w2.")) for c in coords),
+              f"train: coordinates not named by vehicle: {coords[:3]}", failures)
+        check(any(c.startswith("w2.") for c in dominant), "train: no mode of the second wagon",
+              failures)
+        for name in ("modes_root_locus.png", "modes_damping.png"):
+            check(os.path.isfile(os.path.join(d, name)), f"train: {name} missing", failures)
+    c = os.path.join(out, "train_critical")
+    p = subprocess.run([wb, "critical-speed", TRAIN, "--out", c], capture_output=True, text=True,
+                       timeout=300)
+    check(p.returncode == 1 and "train_coupled_tangent.lua:" in p.stderr
+          and "`workbench critical-speed`" in p.stderr,
+          f"critical-speed on a train: exit {p.returncode}: {p.stderr.strip()}", failures)
+    check(not os.path.exists(os.path.join(c, "runs")), "critical-speed on a train ran", failures)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--workbench", required=True)
@@ -150,6 +182,7 @@ def main():
     hostile(a.workbench, a.out, failures)
     vehicle_file_with_overrides(a.workbench, a.out, failures)
     two_axle_wagon(a.workbench, a.out, failures)
+    train(a.workbench, a.out, failures)
     for contact in ("kec", "lut"):
         command(a.workbench, a.out, contact, failures)
     for f in failures:

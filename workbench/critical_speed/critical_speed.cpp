@@ -590,6 +590,9 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
   const study::StudyOptions so = commandStudyOptions(o, "critical_speed");
   const stability::StabilityScene scene =
       stability::loadStabilityScene(o.scenario, o.contact, o.overrides, o.root, so.out);
+  // Its runs ramp one vehicle's speed (vehicle.speed, vehicle.acceleration); `workbench modes`
+  // gives a train's linear stability.
+  scenario::refuseTrain(scene.spec, "critical-speed");
   if (!scene.spec.has_vehicle) refuse(o.scenario, "has no vehicle");
   if (o.criterion == "en14363" && !hasBogie(scene))
     refuse("--criterion",

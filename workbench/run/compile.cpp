@@ -649,6 +649,16 @@ void addVehicle(Model& m, RunVehicle v) {
   m.vehicles.push_back(std::move(v));
 }
 
+Model compileModel(scenario::ScenarioSpec spec, const CompileOptions& o) {
+  Model c;
+  c.spec = std::move(spec);
+  Diagnostics d;
+  compileParts(o, c, d);
+  if (c.vehicles.size() > 1) compileTrain(c, d);
+  d.throwIfAny();
+  return c;
+}
+
 Model compile(const CompileOptions& o) {
   scenario::LoadOptions lo;
   lo.root = o.root;

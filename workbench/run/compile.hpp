@@ -92,6 +92,14 @@ struct Model {
 // Throws InputError with every problem found.
 Model compile(const CompileOptions& options);
 
+// The track, the vehicles of a loaded `spec` (its vehicle{}, or every vehicle of train{}) with
+// their contact models, and the train's connections and longitudinal motion: the model alone,
+// without the checks of a run (its length on the track, its outputs, its step, its start), for
+// analyses that evaluate it at states of their own (the linearised stability of a train).
+// options.table_cache is used; scenario and overrides are not (the spec is loaded). Throws
+// InputError.
+Model compileModel(scenario::ScenarioSpec spec, const CompileOptions& options);
+
 // The vehicle ODE of vehicle k of a compiled model: on wheel/rail contact when it has a contact
 // model, guided otherwise. compile() and runVehicle() both build theirs here.
 std::unique_ptr<vehicle::VehicleOde> makeVehicleOde(const Model& model, std::size_t k = 0);

@@ -86,9 +86,9 @@ struct LoadOptions {
 // Throws InputError listing every problem found, each as file:line: message.
 ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options);
 
-// The analyses of one vehicle (precision, stress, effects, modes, critical-speed) on a scenario
-// with train{}: InputError at the train's first entry naming `command`, since their quantities,
-// hardened cases and linearisation are those of a single vehicle.
+// An analysis of one vehicle (critical-speed, whose runs ramp one vehicle's speed) on a scenario
+// with train{}: InputError at the train's first entry naming `command`, instead of an answer for
+// the first vehicle alone.
 void refuseTrain(const ScenarioSpec& spec, const std::string& command);
 
 }  // namespace rb::scenario

@@ -13,8 +13,10 @@
 #include "workbench/dynamics/contact_ode.hpp"
 #include "workbench/integrators/integrator.hpp"
 #include "workbench/integrators/registry.hpp"
+#include "workbench/run/compile.hpp"
 #include "workbench/stability/stability.hpp"
 #include "workbench/track/track.hpp"
+#include "workbench/train/train_ode.hpp"
 #include "workbench/vehicle/modal.hpp"
 #include "workbench/vehicle/model.hpp"
 
@@ -28,38 +30,62 @@ double cpuSeconds() {
   return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
 }
 
+// The linearised system: one vehicle's ODE, or a train's (train::TrainOde) whose vehicles'
+// states follow one another. Each part is a vehicle with its layout, where its states begin and
+// the prefix of its coordinates' names ("wagon2." in a train, "" alone).
+struct System {
+  struct Part {
+    vehicle::VehicleOde* ode = nullptr;
+    dynamics::ContactVehicleOde* contact = nullptr;
+    int offset = 0;
+    std::string prefix;
+  };
+  integ::OdeSystem* ode = nullptr;
+  std::vector<Part> parts;
+  int size() const { return ode->size(); }
+};
+
 // Every state but the wheelset spin angles (cyclic coordinates).
-std::vector<int> keptStates(const vehicle::VehicleLayout& l) {
+std::vector<int> keptStates(const System& sys) {
   std::vector<int> spin;
-  for (int w = 0; w < l.n_ws; ++w)
-    if (l.wsPosition(w, 1) >= 0) spin.push_back(l.wsPosition(w, 1));
+  for (const auto& p : sys.parts) {
+    const vehicle::VehicleLayout& l = p.ode->layout();
+    for (int w = 0; w < l.n_ws; ++w)
+      if (l.wsPosition(w, 1) >= 0) spin.push_back(p.offset + l.wsPosition(w, 1));
+  }
   std::vector<int> keep;
-  for (int i = 0; i < l.size; ++i)
+  for (int i = 0; i < sys.size(); ++i)
     if (std::find(spin.begin(), spin.end(), i) == spin.end()) keep.push_back(i);
   return keep;
 }
 
 // The finite-difference step of every state (StepRule).
-VectorXd fdSteps(const vehicle::VehicleLayout& l, const VectorXd& y, double scale) {
+VectorXd fdSteps(const System& sys, const VectorXd& y, double scale) {
   const StepRule r;
-  VectorXd h(l.size);
-  const int np = l.positions();
-  for (int i = 0; i < l.size; ++i) {
-    if (i < np)
-      h[i] = r.position;
-    else if (i < 2 * np)
-      h[i] = r.rate * std::max(1.0, std::abs(y[i]));
-    else
-      h[i] = r.series * std::max(1.0, std::abs(y[i]) / r.series_ref);
+  VectorXd h = VectorXd::Constant(sys.size(), r.position);
+  for (const auto& p : sys.parts) {
+    const vehicle::VehicleLayout& l = p.ode->layout();
+    const int np = l.positions();
+    for (int j = 0; j < l.size; ++j) {
+      const int i = p.offset + j;
+      if (j < np)
+        h[i] = r.position;
+      else if (j < 2 * np)
+        h[i] = r.rate * std::max(1.0, std::abs(y[i]));
+      else
+        h[i] = r.series * std::max(1.0, std::abs(y[i]) / r.series_ref);
+    }
   }
   return h * scale;
 }
 
 // Scale of each rhs row in the convergence test: velocities [m/s] and accelerations [m/s^2] as
 // they are, series-force rates [N/s] against 1e6 N/s (a series spring of 1e6 N/m at 1 m/s).
-VectorXd residualScale(const vehicle::VehicleLayout& l) {
-  VectorXd s = VectorXd::Ones(l.size);
-  for (int e = 0; e < l.n_series; ++e) s[l.series(e)] = 1e6;
+VectorXd residualScale(const System& sys) {
+  VectorXd s = VectorXd::Ones(sys.size());
+  for (const auto& p : sys.parts)
+    for (int e = 0; e < p.ode->layout().n_series; ++e)
+      s[p.offset + p.ode->layout().series(e)] = 1e6;
   return s;
 }
 
@@ -86,17 +112,16 @@ Residual residual(integ::OdeSystem& ode, double t, const VectorXd& y, const std:
 }
 
 // Newton on the kept states with a backtracking line search. Returns true when converged.
-bool newton(dynamics::ContactVehicleOde& ode, Steady& st, const std::vector<int>& keep,
-            const Options& o, long* evals) {
-  const vehicle::VehicleLayout& l = ode.layout();
-  const VectorXd scale = residualScale(l);
+bool newton(System& sys, Steady& st, const std::vector<int>& keep, const Options& o, long* evals) {
+  integ::OdeSystem& ode = *sys.ode;
+  const VectorXd scale = residualScale(sys);
   Residual r = residual(ode, st.t, st.y, keep, scale);
   if (!r.ok) return false;
   for (int it = 0; it < o.max_newton; ++it) {
     st.residual = r.scaled;
     st.residual_raw = r.raw;
     if (r.scaled < o.newton_tol) return true;
-    const VectorXd h = fdSteps(l, st.y, o.step_scale);
+    const VectorXd h = fdSteps(sys, st.y, o.step_scale);
     const Eigen::MatrixXd J = vehicle::finiteDifferenceJacobian(ode, st.t, st.y, h, keep, evals);
     const VectorXd dz = J.fullPivLu().solve(-r.f);
     ++st.iterations;
@@ -120,7 +145,7 @@ bool newton(dynamics::ContactVehicleOde& ode, Steady& st, const std::vector<int>
 }
 
 // Fallback: let the transients die with BDF, then Newton again from there.
-bool settle(dynamics::ContactVehicleOde& ode, Steady& st, const Options& o, std::string& why) {
+bool settle(integ::OdeSystem& ode, Steady& st, const Options& o, std::string& why) {
   integ::SolverSpec s;
   s.method = integ::kBdf;
   s.rtol = 1e-6;
@@ -148,7 +173,7 @@ bool settle(dynamics::ContactVehicleOde& ode, Steady& st, const Options& o, std:
 // constant-radius curve with a constant cant from t0 to t1 (a fixed point in the track frame
 // exists only there); throws Failure naming the body otherwise.
 double uniformCurvature(const vehicle::VehicleModel& vm, const track::TrackGeometry& g, double t0,
-                        double t1) {
+                        double t1, const std::string& prefix = "") {
   double kappa = 0.0, cant = 0.0;
   bool first = true;
   for (std::size_t b = 0; b < vm.bodies.size(); ++b)
@@ -157,7 +182,7 @@ double uniformCurvature(const vehicle::VehicleModel& vm, const track::TrackGeome
       const track::Segment& seg = g.segments()[g.segmentIndex(s)];
       const bool same = first || (seg.kappa0 == kappa && seg.u0 == cant);
       if (seg.kappa0 != seg.kappa1 || seg.u0 != seg.u1 || !same)
-        throw Failure("no steady state: body '" + vm.bodies[b].name +
+        throw Failure("no steady state: body '" + prefix + vm.bodies[b].name +
                       "' at s = " + formatNumber(s) +
                       " m is not on the tangent or constant-radius curve of the rest of the "
                       "vehicle (a transition, or a change of radius or cant); choose a distance "
@@ -169,9 +194,9 @@ double uniformCurvature(const vehicle::VehicleModel& vm, const track::TrackGeome
   return kappa;
 }
 
-std::vector<Coordinate> bodyCoordinates(const vehicle::VehicleOde& ode) {
+void addBodyCoordinates(const vehicle::VehicleOde& ode, int offset, const std::string& prefix,
+                        std::vector<Coordinate>& out) {
   const vehicle::VehicleModel& m = ode.model();
-  std::vector<Coordinate> out;
   for (std::size_t b = 0; b < m.bodies.size(); ++b) {
     const vehicle::Body& body = m.bodies[b];
     for (int c = vehicle::kY; c <= vehicle::kYaw; ++c) {
@@ -181,14 +206,19 @@ std::vector<Coordinate> bodyCoordinates(const vehicle::VehicleOde& ode) {
       k.body = static_cast<int>(b);
       k.kind = static_cast<int>(body.kind);
       k.coord = c;
-      k.rate_index = r;
+      k.rate_index = offset + r;
       const bool spin = body.kind == vehicle::BodyKind::Wheelset && c == vehicle::kPitch;
-      k.name =
-          body.name + "." + (spin ? "spin" : vehicle::kCoordNames[static_cast<std::size_t>(c)]);
+      k.name = prefix + body.name + "." +
+               (spin ? "spin" : vehicle::kCoordNames[static_cast<std::size_t>(c)]);
       k.weight = c <= vehicle::kZ ? body.mass : body.inertia[c - vehicle::kRoll];
       out.push_back(std::move(k));
     }
   }
+}
+
+std::vector<Coordinate> bodyCoordinates(const System& sys) {
+  std::vector<Coordinate> out;
+  for (const auto& p : sys.parts) addBodyCoordinates(*p.ode, p.offset, p.prefix, out);
   return out;
 }
 
@@ -206,19 +236,37 @@ Eig eigen(const Eigen::MatrixXd& J, bool vectors) {
   return e;
 }
 
-// The modes (one per real eigenvalue and per conjugate pair) with shares and labels.
-std::vector<Mode> modesOf(const Eig& e, const dynamics::ContactVehicleOde& ode,
-                          const std::vector<Coordinate>& coords, const std::vector<int>& keep) {
-  const vehicle::VehicleLayout& l = ode.layout();
-  std::vector<int> pos(static_cast<std::size_t>(l.size), -1);
+// The car body's lateral and roll rate components of each part (-1: the part has no car body).
+struct CarRates {
+  int y = -1, roll = -1;
+};
+
+// The modes (one per real eigenvalue and per conjugate pair) with shares and labels. The sway
+// of a car body is told from the car body of the vehicle with the largest share of the mode.
+std::vector<Mode> modesOf(const Eig& e, const System& sys, const std::vector<Coordinate>& coords,
+                          const std::vector<int>& keep) {
+  std::vector<int> pos(static_cast<std::size_t>(sys.size()), -1);
   for (std::size_t i = 0; i < keep.size(); ++i)
     pos[static_cast<std::size_t>(keep[i])] = static_cast<int>(i);
-  int car = -1;
-  for (std::size_t b = 0; b < ode.model().bodies.size() && car < 0; ++b)
-    if (ode.model().bodies[b].kind == vehicle::BodyKind::CarBody) car = static_cast<int>(b);
-  const int car_y = car < 0 ? -1 : pos[static_cast<std::size_t>(ode.index(car, vehicle::kY, true))];
-  const int car_r =
-      car < 0 ? -1 : pos[static_cast<std::size_t>(ode.index(car, vehicle::kRoll, true))];
+  std::vector<CarRates> cars;
+  std::vector<std::size_t> part_of;  // per coordinate, its part
+  for (std::size_t k = 0; k < sys.parts.size(); ++k) {
+    const auto& p = sys.parts[k];
+    int car = -1;
+    for (std::size_t b = 0; b < p.ode->model().bodies.size() && car < 0; ++b)
+      if (p.ode->model().bodies[b].kind == vehicle::BodyKind::CarBody) car = static_cast<int>(b);
+    CarRates c;
+    if (car >= 0) {
+      c.y = pos[static_cast<std::size_t>(p.offset + p.ode->index(car, vehicle::kY, true))];
+      c.roll = pos[static_cast<std::size_t>(p.offset + p.ode->index(car, vehicle::kRoll, true))];
+    }
+    cars.push_back(c);
+  }
+  for (const Coordinate& c : coords) {
+    std::size_t k = 0;
+    while (k + 1 < sys.parts.size() && c.rate_index >= sys.parts[k + 1].offset) ++k;
+    part_of.push_back(k);
+  }
   std::vector<Mode> out;
   for (Eigen::Index i = 0; i < e.values.size(); ++i) {
     const std::complex<double> lam = e.values[i];
@@ -230,20 +278,28 @@ std::vector<Mode> modesOf(const Eig& e, const dynamics::ContactVehicleOde& ode,
     m.damping_ratio = std::abs(lam) > 0.0 ? -lam.real() / std::abs(lam) : 0.0;
     const Eigen::VectorXcd v = e.vectors.col(i);
     double kinetic = 0.0;
-    for (const Coordinate& c : coords) {
+    std::vector<double> by_part(sys.parts.size(), 0.0);
+    for (std::size_t j = 0; j < coords.size(); ++j) {
+      const Coordinate& c = coords[j];
       const double s = c.weight * std::norm(v[pos[static_cast<std::size_t>(c.rate_index)]]);
       m.participation.push_back(s);
+      by_part[part_of[j]] += s;
       kinetic += s;
     }
     double spring = 0.0;
-    for (int k = 0; k < l.n_series; ++k)
-      spring += std::norm(v[pos[static_cast<std::size_t>(l.series(k))]]) /
-                ode.model().series_dampers[static_cast<std::size_t>(k)].series_stiffness;
+    for (const auto& p : sys.parts)
+      for (int k = 0; k < p.ode->layout().n_series; ++k)
+        spring +=
+            std::norm(v[pos[static_cast<std::size_t>(p.offset + p.ode->layout().series(k))]]) /
+            p.ode->model().series_dampers[static_cast<std::size_t>(k)].series_stiffness;
     // Kinetic energy of the rates 1/2 M |v|^2 against the series springs' 1/2 |f|^2 / K.
     m.series_share = spring + kinetic > 0.0 ? spring / (spring + kinetic) : 0.0;
     if (kinetic > 0.0)
       for (double& p : m.participation) p /= kinetic;
-    labelMode(m, coords, car_y < 0 ? 0.0 : v[car_y], car_r < 0 ? 0.0 : v[car_r]);
+    const auto most = static_cast<std::size_t>(std::max_element(by_part.begin(), by_part.end()) -
+                                               by_part.begin());
+    const CarRates& car = cars[most];
+    labelMode(m, coords, car.y < 0 ? 0.0 : v[car.y], car.roll < 0 ? 0.0 : v[car.roll]);
     out.push_back(std::move(m));
   }
   std::sort(out.begin(), out.end(), [](const Mode& a, const Mode& b) {
@@ -302,6 +358,9 @@ std::string describe(const Mode& m) {
 struct Analyser::Impl {
   std::optional<track::TrackModel> track;
   dynamics::TableCache cache;
+  // A train: its vehicles, contact models and connections, compiled once (the speed is set on
+  // the vehicles for each analysis).
+  std::optional<run::Model> train;
 };
 
 Analyser::Analyser(scenario::ScenarioSpec spec, Options options)
@@ -313,45 +372,129 @@ Analyser::Analyser(scenario::ScenarioSpec spec, Options options)
   spec_.run.effects[scenario::effectIndex(scenario::Effect::Irregularities)].on = false;
   spec_.vehicle.acceleration = 0.0;
   spec_.contact.normal_forces = dynamics::NormalForceCoupling::Consistent;
+  if (spec_.train.size() > 1) {
+    // Every vehicle on wheel/rail contact at the constant speed of the analysis: a fixed point
+    // of the train exists only when no vehicle accelerates.
+    for (auto& e : spec_.train) {
+      if (!e.has_contact)
+        throw Failure("vehicle '" + e.name +
+                      "' of the train has guided wheelsets: the modes need every vehicle on "
+                      "wheel/rail contact");
+      e.vehicle.acceleration = 0.0;
+      e.contact.normal_forces = dynamics::NormalForceCoupling::Consistent;
+    }
+    spec_.train_longitudinal.on = false;
+    run::CompileOptions co;
+    co.table_cache = options_.table_cache;
+    impl_->train.emplace(run::compileModel(spec_, co));
+    return;
+  }
   impl_->track.emplace(track::compileTrack(spec_.track));
   if (!options_.table_cache.empty()) impl_->cache = dynamics::TableCache(options_.table_cache);
 }
 
 Analyser::~Analyser() = default;
 
+namespace {
+
+// The contact methods (creep laws, spin models) of a train's vehicles: one name when they agree,
+// else every vehicle's joined by "+".
+std::string joined(const run::Model& m, const char* (*name)(const dynamics::ContactModel&)) {
+  std::vector<std::string> out;
+  for (const auto& v : m.vehicles) {
+    const std::string n = name(*v.contact);
+    if (std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
+  }
+  return join(out, "+");
+}
+
+}  // namespace
+
 Analysis Analyser::analyse(double speed) {
   const double cpu0 = cpuSeconds();
-  scenario::ScenarioSpec s = spec_;
-  s.vehicle.speed = speed;
-  const track::TrackModel& tr = *impl_->track;
-  const vehicle::VehicleModel vm = vehicle::compileVehicle(s.vehicle, tr);
-  const dynamics::ContactModel cm =
-      dynamics::compileContact(s.profiles, s.contact, vm, tr, &impl_->cache);
-  dynamics::ContactVehicleOde ode(vm, cm, tr);
   Analysis a;
   a.speed = speed;
-  a.method = dynamics::ContactModel::methodName(cm.method);
-  a.creep = dynamics::ContactModel::creepName(cm.creep);
-  a.spin = dynamics::ContactModel::spinName(cm.spin);
+  System sys;
+  // One vehicle: its model and ODE here; a train: the compiled train at this speed.
+  std::optional<vehicle::VehicleModel> vm;
+  std::optional<dynamics::ContactModel> cm;
+  std::unique_ptr<dynamics::ContactVehicleOde> single;
+  std::unique_ptr<train::TrainOde> train;
+  const track::TrackModel& tr = impl_->train ? *impl_->train->track : *impl_->track;
+  if (!impl_->train) {
+    scenario::ScenarioSpec s = spec_;
+    s.vehicle.speed = speed;
+    vm.emplace(vehicle::compileVehicle(s.vehicle, tr));
+    cm.emplace(dynamics::compileContact(s.profiles, s.contact, *vm, tr, &impl_->cache));
+    single = std::make_unique<dynamics::ContactVehicleOde>(*vm, *cm, tr);
+    sys.ode = single.get();
+    sys.parts.push_back({single.get(), single.get(), 0, ""});
+    a.method = dynamics::ContactModel::methodName(cm->method);
+    a.creep = dynamics::ContactModel::creepName(cm->creep);
+    a.spin = dynamics::ContactModel::spinName(cm->spin);
+  } else {
+    run::Model& m = *impl_->train;
+    for (auto& v : m.vehicles) v.vehicle.speed = speed;
+    train = run::makeRunOde(m);
+    sys.ode = train.get();
+    for (int k = 0; k < train->vehicles(); ++k) {
+      vehicle::VehicleOde& v = train->vehicle(k);
+      sys.parts.push_back({&v, dynamic_cast<dynamics::ContactVehicleOde*>(&v), train->offset(k),
+                           train->name(k) + "."});
+      RB_CHECK(sys.parts.back().contact != nullptr, "a train's modes need contact vehicles");
+    }
+    a.method = joined(m, [](const dynamics::ContactModel& c) {
+      return dynamics::ContactModel::methodName(c.method);
+    });
+    a.creep = joined(m, [](const dynamics::ContactModel& c) {
+      return dynamics::ContactModel::creepName(c.creep);
+    });
+    a.spin = joined(m, [](const dynamics::ContactModel& c) {
+      return dynamics::ContactModel::spinName(c.spin);
+    });
+    a.notes.push_back("train of " + std::to_string(m.vehicles.size()) +
+                      " vehicles and their connections, at a constant speed (no longitudinal "
+                      "motion): its modes together");
+  }
   a.notes.push_back(
       "normal-force coupling: consistent (the lagged coupling gives the rhs a memory)");
   a.notes.push_back("irregularities off");
   Steady& st = a.steady;
   st.t = options_.distance / speed;
   try {
-    st.y = ode.initialState(st.t);
+    st.y = VectorXd::Zero(sys.size());
+    for (const auto& p : sys.parts) {
+      const VectorXd yk = p.ode->initialState(st.t);
+      st.y.segment(p.offset, yk.size()) = yk;
+    }
   } catch (const InputError& e) {
     throw Failure(std::string("no static equilibrium to start from: ") + e.what());
   }
-  const std::vector<int> keep = keptStates(ode.layout());
+  const std::vector<int> keep = keptStates(sys);
   long fd_evals = 0;
+  // The track's curvature under every vehicle at [t0, t1]: one tangent or curve for all.
+  const auto curvature = [&](double t0, double t1) {
+    std::optional<double> kappa;
+    for (const auto& p : sys.parts) {
+      const double k = uniformCurvature(p.ode->model(), tr.geometry(), t0, t1, p.prefix);
+      if (kappa && k != *kappa)
+        throw Failure(
+            "no steady state: the vehicles of the train are not on one tangent or "
+            "constant-radius curve ('" +
+            p.prefix.substr(0, p.prefix.size() - 1) +
+            "' is not where the first is); choose a distance with the whole train on "
+            "one");
+      kappa = k;
+    }
+    return kappa.value_or(0.0);
+  };
   try {
     // On a tangent the centred start is the steady state up to the suspension's static
     // deflections: Newton from it. In a curve the wheelsets must first find their rolling-radius
     // difference (often on the flange): settle with BDF first, then Newton.
-    const double kappa = uniformCurvature(vm, tr.geometry(), st.t, st.t);
+    const double kappa = curvature(st.t, st.t);
     const VectorXd y0 = st.y;
-    const bool converged = kappa == 0.0 && newton(ode, st, keep, options_, &fd_evals);
+    const bool converged = kappa == 0.0 && newton(sys, st, keep, options_, &fd_evals);
     if (!converged) {
       st.fallback = true;
       st.y = y0;  // the settle starts where Newton started, not where it got stuck
@@ -359,30 +502,31 @@ Analysis Analyser::analyse(double speed) {
                                        "BDF settle, then Newton"
                                      : "curve: BDF settle from the static equilibrium, then "
                                        "Newton");
-      (void)uniformCurvature(vm, tr.geometry(), st.t, st.t + options_.settle_time);
+      (void)curvature(st.t, st.t + options_.settle_time);
       std::string why;
-      if (!settle(ode, st, options_, why))
+      if (!settle(*sys.ode, st, options_, why))
         throw Failure("no steady state at " + formatNumber(speed) + " m/s: the BDF settle of " +
                       formatNumber(options_.settle_time) + " s failed: " + why);
-      if (!newton(ode, st, keep, options_, &fd_evals))
+      if (!newton(sys, st, keep, options_, &fd_evals))
         throw Failure("no steady state at " + formatNumber(speed) +
                       " m/s: Newton did not converge after a BDF settle of " +
                       formatNumber(options_.settle_time) + " s (scaled residual " +
                       formatNumber(st.residual) + " after " + std::to_string(st.iterations) +
                       " iterations)");
     }
-    for (int w = 0; w < ode.layout().n_ws; ++w)
-      st.max_ws_lateral =
-          std::max(st.max_ws_lateral, std::abs(st.y[ode.layout().wsPosition(w, 0)]));
-    const VectorXd h = fdSteps(ode.layout(), st.y, options_.step_scale);
+    for (const auto& p : sys.parts)
+      for (int w = 0; w < p.ode->layout().n_ws; ++w)
+        st.max_ws_lateral = std::max(st.max_ws_lateral,
+                                     std::abs(st.y[p.offset + p.ode->layout().wsPosition(w, 0)]));
+    const VectorXd h = fdSteps(sys, st.y, options_.step_scale);
     const Eigen::MatrixXd J =
-        vehicle::finiteDifferenceJacobian(ode, st.t, st.y, h, keep, &fd_evals);
+        vehicle::finiteDifferenceJacobian(*sys.ode, st.t, st.y, h, keep, &fd_evals);
     a.states = static_cast<int>(J.rows());
-    a.coordinates = bodyCoordinates(ode);
-    a.modes = modesOf(eigen(J, true), ode, a.coordinates, keep);
+    a.coordinates = bodyCoordinates(sys);
+    a.modes = modesOf(eigen(J, true), sys, a.coordinates, keep);
     if (options_.step_check) {
       const Eigen::MatrixXd J10 = vehicle::finiteDifferenceJacobian(
-          ode, st.t, st.y, h / options_.step_check_ratio, keep, &fd_evals);
+          *sys.ode, st.t, st.y, h / options_.step_check_ratio, keep, &fd_evals);
       stepCheck(a, eigen(J10, false).values, options_);
     }
   } catch (const std::runtime_error& e) {
@@ -404,7 +548,7 @@ Analysis Analyser::analyse(double speed) {
       a.least_damped = static_cast<int>(i);
     }
   }
-  a.rhs_evaluations = ode.stats().evaluations;
+  for (const auto& p : sys.parts) a.rhs_evaluations += p.contact->stats().evaluations;
   a.cpu_s = cpuSeconds() - cpu0;
   return a;
 }

@@ -133,11 +133,7 @@ StabilityScene loadStabilityScene(const std::string& path, const std::string& co
     if (!looksLikeVehicleFile(e) && !(scene.overrides.size() > 0 && isVehicleFile(path, root)))
       throw;
   }
-  if (loaded) {
-    // The modes and the critical speed are those of one vehicle.
-    scenario::refuseTrain(scene.spec, "modes / critical-speed");
-    return scene;
-  }
+  if (loaded) return scene;
   // A vehicle file: write the scene around it.
   std::error_code ec;
   fs::create_directories(out, ec);
