@@ -110,8 +110,9 @@ def main(argv=None) -> int:
                 float(c[p + "/motion/speed"][-1]), "m/s")
             # After the first second: the start transient on irregular rails (docs/trains.md)
             # is out of the 1 s window by then.
-            row(f"{v}: largest jerk over 1 s (absolute), t >= 1 s", peak_after(b, p + "/motion/jerk_1s"),
-                peak_after(c, p + "/motion/jerk_1s"), "m/s^3")
+            jerk = p + "/motion/jerk_1s"
+            row(f"{v}: largest jerk over 1 s (absolute), t >= 1 s", peak_after(b, jerk),
+                peak_after(c, jerk), "m/s^3")
         for label, f in (("braking", b), ("evenly braked", c)):
             st = f["stats"].attrs
             row(f"{label} run: CPU time ({f['/time'][-1]:.0f} s simulated)",
