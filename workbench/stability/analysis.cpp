@@ -257,8 +257,10 @@ std::vector<Mode> modesOf(const Eig& e, const System& sys, const std::vector<Coo
       if (p.ode->model().bodies[b].kind == vehicle::BodyKind::CarBody) car = static_cast<int>(b);
     CarRates c;
     if (car >= 0) {
-      c.y = pos[static_cast<std::size_t>(p.offset + p.ode->index(car, vehicle::kY, true))];
-      c.roll = pos[static_cast<std::size_t>(p.offset + p.ode->index(car, vehicle::kRoll, true))];
+      const int y = p.offset + p.ode->index(car, vehicle::kY, true);
+      const int roll = p.offset + p.ode->index(car, vehicle::kRoll, true);
+      c.y = pos[static_cast<std::size_t>(y)];
+      c.roll = pos[static_cast<std::size_t>(roll)];
     }
     cars.push_back(c);
   }
@@ -288,10 +290,11 @@ std::vector<Mode> modesOf(const Eig& e, const System& sys, const std::vector<Coo
     }
     double spring = 0.0;
     for (const auto& p : sys.parts)
-      for (int k = 0; k < p.ode->layout().n_series; ++k)
-        spring +=
-            std::norm(v[pos[static_cast<std::size_t>(p.offset + p.ode->layout().series(k))]]) /
-            p.ode->model().series_dampers[static_cast<std::size_t>(k)].series_stiffness;
+      for (int k = 0; k < p.ode->layout().n_series; ++k) {
+        const int row = p.offset + p.ode->layout().series(k);
+        spring += std::norm(v[pos[static_cast<std::size_t>(row)]]) /
+                  p.ode->model().series_dampers[static_cast<std::size_t>(k)].series_stiffness;
+      }
     // Kinetic energy of the rates 1/2 M |v|^2 against the series springs' 1/2 |f|^2 / K.
     m.series_share = spring + kinetic > 0.0 ? spring / (spring + kinetic) : 0.0;
     if (kinetic > 0.0)
@@ -327,6 +330,42 @@ void stepCheck(Analysis& a, const Eigen::VectorXcd& finer, const Options& o) {
     if (relevant(m)) a.step_check = std::max(a.step_check, m.step_change);
   }
   a.step_check_ok = a.step_check <= o.step_check_limit;
+}
+
+// The track's curvature under every vehicle at [t0, t1]: one tangent or curve for all, else
+// Failure naming the vehicle.
+double commonCurvature(const System& sys, const track::TrackGeometry& g, double t0, double t1) {
+  std::optional<double> kappa;
+  for (const auto& p : sys.parts) {
+    const double k = uniformCurvature(p.ode->model(), g, t0, t1, p.prefix);
+    if (kappa && k != *kappa)
+      throw Failure(
+          "no steady state: the vehicles of the train are not on one tangent or "
+          "constant-radius curve ('" +
+          p.prefix.substr(0, p.prefix.size() - 1) +
+          "' is not where the first is); choose a distance with the whole train on one");
+    kappa = k;
+  }
+  return kappa.value_or(0.0);
+}
+
+// Analysis::least_hunting and least_damped.
+void findLeastDamped(Analysis& a) {
+  double least = std::numeric_limits<double>::infinity();
+  double least_any = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < a.modes.size(); ++i) {
+    if (a.modes[i].hunting && a.modes[i].damping_ratio < least) {
+      least = a.modes[i].damping_ratio;
+      a.least_hunting = static_cast<int>(i);
+    }
+    // A neutral mode (|Re lambda| within the floor: a real eigenvalue of round-off size has the
+    // damping ratio +-1 by its sign alone) neither grows nor decays in any run: it decides nothing.
+    const bool neutral = std::abs(a.modes[i].eigenvalue.real()) <= kUnstableFloor;
+    if (!neutral && a.modes[i].damping_ratio < least_any) {
+      least_any = a.modes[i].damping_ratio;
+      a.least_damped = static_cast<int>(i);
+    }
+  }
 }
 
 }  // namespace
@@ -472,21 +511,8 @@ Analysis Analyser::analyse(double speed) {
   }
   const std::vector<int> keep = keptStates(sys);
   long fd_evals = 0;
-  // The track's curvature under every vehicle at [t0, t1]: one tangent or curve for all.
   const auto curvature = [&](double t0, double t1) {
-    std::optional<double> kappa;
-    for (const auto& p : sys.parts) {
-      const double k = uniformCurvature(p.ode->model(), tr.geometry(), t0, t1, p.prefix);
-      if (kappa && k != *kappa)
-        throw Failure(
-            "no steady state: the vehicles of the train are not on one tangent or "
-            "constant-radius curve ('" +
-            p.prefix.substr(0, p.prefix.size() - 1) +
-            "' is not where the first is); choose a distance with the whole train on "
-            "one");
-      kappa = k;
-    }
-    return kappa.value_or(0.0);
+    return commonCurvature(sys, tr.geometry(), t0, t1);
   };
   try {
     // On a tangent the centred start is the steady state up to the suspension's static
@@ -533,21 +559,7 @@ Analysis Analyser::analyse(double speed) {
     if (dynamic_cast<const Failure*>(&e) != nullptr) throw;
     throw Failure(std::string("the model cannot be evaluated near the steady state: ") + e.what());
   }
-  double least = std::numeric_limits<double>::infinity();
-  double least_any = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < a.modes.size(); ++i) {
-    if (a.modes[i].hunting && a.modes[i].damping_ratio < least) {
-      least = a.modes[i].damping_ratio;
-      a.least_hunting = static_cast<int>(i);
-    }
-    // A neutral mode (|Re lambda| within the floor: a real eigenvalue of round-off size has the
-    // damping ratio +-1 by its sign alone) neither grows nor decays in any run: it decides nothing.
-    const bool neutral = std::abs(a.modes[i].eigenvalue.real()) <= kUnstableFloor;
-    if (!neutral && a.modes[i].damping_ratio < least_any) {
-      least_any = a.modes[i].damping_ratio;
-      a.least_damped = static_cast<int>(i);
-    }
-  }
+  findLeastDamped(a);
   for (const auto& p : sys.parts) a.rhs_evaluations += p.contact->stats().evaluations;
   a.cpu_s = cpuSeconds() - cpu0;
   return a;
