@@ -25,7 +25,8 @@ namespace {
 // profiles{} block, followed by the reader's own file:line diagnostics.
 std::shared_ptr<const profiles::Profile> loadProfile(const std::string& source,
                                                      profiles::ProfileKind kind, double r0,
-                                                     const SourceLoc& loc, Diagnostics& d) {
+                                                     const SourceLoc& loc, Diagnostics& d,
+                                                     const char* key = nullptr) {
   const bool wheel = kind == profiles::ProfileKind::Wheel;
   const std::string builtin = wheel ? "s1002" : "60e1";
   try {
@@ -39,8 +40,11 @@ std::shared_ptr<const profiles::Profile> loadProfile(const std::string& source,
     return std::make_shared<const profiles::Profile>(
         profiles::readProfileFile(source, kind, profiles::LengthUnit::Millimetre, opt));
   } catch (const InputError& e) {
-    d.add(loc,
-          std::string("profiles.") + (wheel ? "wheel" : "rail") + ": cannot use '" + source + "'");
+    d.add(loc, std::string("profiles.") +
+                   (key != nullptr ? key
+                    : wheel        ? "wheel"
+                                   : "rail") +
+                   ": cannot use '" + source + "'");
     d.add(e);
   }
   return nullptr;
@@ -228,14 +232,22 @@ contact::ContactGeometryConfig contactGeometryConfig(const ProfilesSpec& p, cons
   d.throwIfAny();
 
   auto lw = loadProfile(p.wheel, profiles::ProfileKind::Wheel, p.r0, p.loc, d);
+  // A wheelset of two different wheels: each side's own profile, drawn as a left wheel.
+  auto own = [&](const std::string& source, const char* key) {
+    return source.empty() || source == p.wheel
+               ? lw
+               : loadProfile(source, profiles::ProfileKind::Wheel, p.r0, p.loc, d, key);
+  };
+  auto left_wheel = own(p.wheel_left, "wheel_left");
+  auto right_wheel = own(p.wheel_right, "wheel_right");
   auto lr = loadProfile(p.rail, profiles::ProfileKind::Rail, p.r0, p.loc, d);
   d.throwIfAny();
   checkDrawnInclination(p, *lr, d);
   d.throwIfAny();
 
   contact::ContactGeometryConfig g;
-  g.left_wheel = lw;
-  g.right_wheel = std::make_shared<const profiles::Profile>(lw->mirrored());
+  g.left_wheel = left_wheel;
+  g.right_wheel = std::make_shared<const profiles::Profile>(right_wheel->mirrored());
   g.left_rail = lr;
   g.right_rail = std::make_shared<const profiles::Profile>(lr->mirrored());
   g.beta = p.inclination;
@@ -414,7 +426,9 @@ std::shared_ptr<const ElasticContactModel> compileElastic(const ContactSpec& c,
   const double m_w = 0.5 * ws_mass / static_cast<double>(m.wheelsets.size());
   e->vertical_frequency = std::sqrt(k_lin / m_w) / (2.0 * std::numbers::pi);
   e->damping = 2.0 * e->damping_ratio * std::sqrt(k_lin * m_w) / e->static_load;
-  e->flange_height = flangeHeight(*m.geometry.left_wheel);
+  // The lower flange of the two wheels: a wheel risen by half of it has left its rail.
+  e->flange_height =
+      std::min(flangeHeight(*m.geometry.left_wheel), flangeHeight(*m.geometry.right_wheel));
   e->derailment_lift =
       c.elastic.derailment_lift < 0.0 ? 0.5 * e->flange_height : c.elastic.derailment_lift;
   return e;

@@ -16,6 +16,9 @@ namespace rb::dynamics {
 // Wheel and rail profiles and their positioning (paper Table 1, ../docs/profiles.md).
 struct ProfilesSpec {
   std::string wheel = "s1002";  // built-in "s1002", or a resolved path to a .prw / text file
+  // The left and right wheels' own profiles (a wheelset with two different wheels: worn,
+  // measured, another diameter), each drawn as a left wheel like `wheel`; empty: `wheel`.
+  std::string wheel_left, wheel_right;
   std::string rail = "60e1";    // built-in "60e1", or a resolved path to a .prr / text file
   double back_to_back = 1.360;  // [m] B; Lw = B/2 + flange-back distance (70 mm for S1002)
   // [m] G measured 14 mm below the rail top; Lr = G/2 + offset

@@ -30,6 +30,9 @@ void buildProfiles(const Node& n, LuaHost& host, dynamics::ProfilesSpec& p, Diag
   p.loc = n.loc;
   const dynamics::ProfilesSpec builtin;
   p.wheel = profileSource(r, n, "wheel", builtin.wheel, host);
+  for (auto [key, target] :
+       {std::pair{"wheel_left", &p.wheel_left}, std::pair{"wheel_right", &p.wheel_right}})
+    if (r.has(key)) *target = profileSource(r, n, key, builtin.wheel, host);
   p.rail = profileSource(r, n, "rail", builtin.rail, host);
   p.back_to_back = r.number("back_to_back");
   p.gauge = r.number("gauge");

@@ -248,6 +248,11 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
        "geometry, so 60E1 at 1:40 is the default (docs/profiles.md).",
        {typed("wheel", ValueType::String, "-",
               "\"s1002\" or a wheel profile file (.prw or two-column text) below the scenario"),
+        typed("wheel_left", ValueType::String, "-",
+              "the left wheels' own profile (default: wheel), drawn as a left wheel like wheel"),
+        typed("wheel_right", ValueType::String, "-",
+              "the right wheels' own profile (default: wheel), drawn as a left wheel like wheel "
+              "and mirrored (a wheelset with two different wheels: docs/profiles.md)"),
         typed("rail", ValueType::String, "-",
               "\"60e1\" or a rail profile file (.prr or two-column text) below the scenario"),
         num("back_to_back", "m", 1.36, "back-to-back distance B (Lw = B/2 + 70 mm for S1002)",
