@@ -84,6 +84,26 @@ TEST(StudyHash, ChangesWithEveryInputAndOnlyWithThem) {
   EXPECT_NE(hashOf(base, {}, "build:b"), h0);        // another build of the workbench
 }
 
+TEST(StudyHash, ChangesWithEachWheelSidesOwnProfile) {
+  // profiles.wheel_right names a file of its own: its bytes are an input of the case (a worn
+  // wheel edited between two runs of a study is a new case, never a resumed stale result).
+  TempDir d;
+  d.write("mod.lua", "return { length = 100 }\n");
+  d.write("irr.csv", "s,alignment,vertical,gauge,cross_level\n0,0,0,0,0\n100,0,0,0,0\n");
+  d.write("wheel.txt", "0 0\n1 1\n");
+  d.write("right.txt", "0 0\n1 1\n");
+  std::string text = kBase;
+  const std::string from = "profiles { wheel = \"wheel.txt\" }";
+  text.replace(text.find(from), from.size(),
+               "profiles { wheel = \"wheel.txt\", wheel_right = \"right.txt\" }");
+  const std::string base = d.write("base.lua", text);
+  const std::string h0 = hashOf(base);
+  d.write("right.txt", "0 0\n1 2\n");
+  EXPECT_NE(hashOf(base), h0);
+  d.write("right.txt", "0 0\n1 1\n");
+  EXPECT_EQ(hashOf(base), h0);
+}
+
 TEST(StudyHash, BuildIdIsTheProgramContent) {
   TempDir d;
   const std::string a = d.write("a", "program one"), b = d.write("b", "program two");

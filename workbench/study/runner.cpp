@@ -124,8 +124,19 @@ std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string&
     auto bytes = readRegularFile(path, why);
     h.field("data " + role, bytes ? *bytes : "unreadable: " + why);
   };
-  if (spec.profiles.wheel != "s1002") data("wheel", spec.profiles.wheel);
-  if (spec.profiles.rail != "60e1") data("rail", spec.profiles.rail);
+  // Every profile file a vehicle runs on: the scenario's, each wheel side's own, and each train
+  // vehicle's own profiles{} (a file edited between two runs of a study is a new case).
+  auto profileFiles = [&](const std::string& prefix, const dynamics::ProfilesSpec& p) {
+    if (p.wheel != "s1002") data(prefix + "wheel", p.wheel);
+    if (p.rail != "60e1") data(prefix + "rail", p.rail);
+    for (const auto& [side, path] :
+         {std::pair{"wheel_left", &p.wheel_left}, std::pair{"wheel_right", &p.wheel_right}})
+      if (!path->empty() && *path != "s1002") data(prefix + side, *path);
+  };
+  profileFiles("", spec.profiles);
+  for (std::size_t k = 1; k < spec.train.size(); ++k)
+    if (spec.train[k].has_profiles)
+      profileFiles("train[" + std::to_string(k + 1) + "] ", spec.train[k].profiles);
   if (spec.track.irregularities.source == track::IrregularitySource::Csv)
     data("irregularities", spec.track.irregularities.csv_path);
   return hex16(h.value());
