@@ -494,6 +494,10 @@ Analysis Analyser::analyse(double speed) {
     a.notes.push_back("train of " + std::to_string(m.vehicles.size()) +
                       " vehicles and their connections, at a constant speed (no longitudinal "
                       "motion): its modes together");
+    if (spec_.train_longitudinal.loc.line > 0)
+      a.notes.push_back(
+          "train.longitudinal is off in the analysis: its traction, braking, resistance and "
+          "gradient forces are not in the steady state");
   }
   a.notes.push_back(
       "normal-force coupling: consistent (the lagged coupling gives the rhs a memory)");
