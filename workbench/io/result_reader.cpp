@@ -192,6 +192,20 @@ std::vector<std::string> ResultReader::members(const std::string& group) const {
   return out;
 }
 
+std::vector<std::string> ResultReader::vehicleGroups() const {
+  if (!has("/vehicles")) return {""};
+  std::vector<std::string> out;
+  const std::string names = text("/vehicles", "names").value_or("");
+  for (std::size_t at = 0; at < names.size();) {
+    const std::size_t end = std::min(names.find('\n', at), names.size());
+    if (end > at) out.push_back("/vehicles/" + names.substr(at, end - at));
+    at = end + 1;
+  }
+  if (out.empty())
+    for (const auto& n : members("/vehicles")) out.push_back("/vehicles/" + n);
+  return out;
+}
+
 std::vector<std::string> ResultReader::nonFinite(std::size_t limit) const {
   std::vector<std::string> out;
   if (file_ < 0 || limit == 0) return out;

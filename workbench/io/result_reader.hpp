@@ -30,6 +30,10 @@ class ResultReader {
   std::optional<std::string> text(const std::string& object, const std::string& name) const;
   // Names of the members of a group (sorted), empty when it is not a group.
   std::vector<std::string> members(const std::string& group) const;
+  // Where each vehicle's groups (/bodies, /contact, /assessment, ...) are: {""} for a run of one
+  // vehicle, "/vehicles/<name>" for each vehicle of a run of several, front to rear (the order
+  // of the attribute `names` of /vehicles; sorted by name when it is missing).
+  std::vector<std::string> vehicleGroups() const;
   // The floating-point datasets and attributes that hold a NaN or an infinity, in the order of
   // the file's name index ("/bodies/ws1/y", an attribute as "/stats@t_reached"), at most `limit`
   // of them. Every element of every dataset is read: the cost is one pass over the file.

@@ -352,6 +352,12 @@ void compileTrain(Model& c, Diagnostics& d) {
 }
 
 // Blocks and outputs that need a vehicle in a scene that has none.
+// The model of a loaded scenario: its parts, and a train's connections and longitudinal motion.
+void compileModelParts(const CompileOptions& o, Model& c, Diagnostics& d) {
+  compileParts(o, c, d);
+  if (c.vehicles.size() > 1) compileTrain(c, d);
+}
+
 void checkWithoutVehicle(const Model& c, Diagnostics& d) {
   const auto& spec = c.spec;
   if (spec.has_contact) d.add(spec.contact.loc, "contact: needs a vehicle { ... } block");
@@ -653,8 +659,7 @@ Model compileModel(scenario::ScenarioSpec spec, const CompileOptions& o) {
   Model c;
   c.spec = std::move(spec);
   Diagnostics d;
-  compileParts(o, c, d);
-  if (c.vehicles.size() > 1) compileTrain(c, d);
+  compileModelParts(o, c, d);
   d.throwIfAny();
   return c;
 }
@@ -666,8 +671,7 @@ Model compile(const CompileOptions& o) {
   Model c;
   c.spec = scenario::loadScenario(o.scenario, lo);
   Diagnostics d;
-  compileParts(o, c, d);
-  if (c.vehicles.size() > 1) compileTrain(c, d);
+  compileModelParts(o, c, d);
   if (!c.spec.has_vehicle) checkWithoutVehicle(c, d);
   if (c.hasVehicle()) checkVehicleRun(c, d);
   d.throwIfAny();

@@ -515,14 +515,11 @@ Analysis Analyser::analyse(double speed) {
   }
   const std::vector<int> keep = keptStates(sys);
   long fd_evals = 0;
-  const auto curvature = [&](double t0, double t1) {
-    return commonCurvature(sys, tr.geometry(), t0, t1);
-  };
   try {
     // On a tangent the centred start is the steady state up to the suspension's static
     // deflections: Newton from it. In a curve the wheelsets must first find their rolling-radius
     // difference (often on the flange): settle with BDF first, then Newton.
-    const double kappa = curvature(st.t, st.t);
+    const double kappa = commonCurvature(sys, tr.geometry(), st.t, st.t);
     const VectorXd y0 = st.y;
     const bool converged = kappa == 0.0 && newton(sys, st, keep, options_, &fd_evals);
     if (!converged) {
@@ -532,7 +529,7 @@ Analysis Analyser::analyse(double speed) {
                                        "BDF settle, then Newton"
                                      : "curve: BDF settle from the static equilibrium, then "
                                        "Newton");
-      (void)curvature(st.t, st.t + options_.settle_time);
+      (void)commonCurvature(sys, tr.geometry(), st.t, st.t + options_.settle_time);
       std::string why;
       if (!settle(*sys.ode, st, options_, why))
         throw Failure("no steady state at " + formatNumber(speed) + " m/s: the BDF settle of " +

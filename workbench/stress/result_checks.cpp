@@ -7,7 +7,6 @@
 #include <filesystem>
 #include <map>
 #include <optional>
-#include <sstream>
 
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
@@ -121,19 +120,6 @@ double peakToPeak(const std::vector<double>& y, std::size_t from, std::size_t to
   const auto [lo, hi] = std::minmax_element(y.begin() + static_cast<std::ptrdiff_t>(from),
                                             y.begin() + static_cast<std::ptrdiff_t>(to));
   return *hi - *lo;
-}
-
-// Where the outputs of each vehicle are: "" for a run of one vehicle, "/vehicles/<name>" for
-// each vehicle of a train, front to rear (the order of /vehicles' attribute `names`).
-std::vector<std::string> vehicleGroups(const io::ResultReader& f) {
-  if (!f.has("/vehicles")) return {""};
-  std::vector<std::string> out;
-  std::istringstream names(f.text("/vehicles", "names").value_or(""));
-  for (std::string n; std::getline(names, n);)
-    if (!n.empty()) out.push_back("/vehicles/" + n);
-  if (out.empty())
-    for (const auto& n : f.members("/vehicles")) out.push_back("/vehicles/" + n);
-  return out;
 }
 
 // Hunting of the leading vehicle's ws1 (ResultCheck::ws1_y_pp_last_mm, onset_t, onset_speed).
@@ -411,7 +397,7 @@ ResultCheck checkResult(const std::string& path, int exitCode, const Bounds& bou
     r.problems.push_back("NaN/Inf in " + join(bad, ", "));
   const std::vector<double> t = f.dataset("/time").value_or(std::vector<double>{});
   checkConsistency(f, exitCode, r, t);
-  const std::vector<std::string> vehicles = vehicleGroups(f);
+  const std::vector<std::string> vehicles = f.vehicleGroups();
   extremes(f, path, vehicles, t, r);
   if (!vehicles.empty()) hunting(f, vehicles.front(), t, r);
   const std::vector<std::string> odd = implausible(r, bounds);

@@ -86,12 +86,9 @@ void vehicleSeries(const io::ResultReader& f, const Quantity& q, const std::stri
 // vehicle of a run of several ("<vehicle>/<series>").
 std::map<std::string, std::vector<double>> series(const io::ResultReader& f, const Quantity& q) {
   std::map<std::string, std::vector<double>> out;
-  if (f.has("/bodies")) {
-    vehicleSeries(f, q, "", "", out);
-  } else {
-    for (const auto& v : f.members("/vehicles"))
-      vehicleSeries(f, q, "/vehicles/" + v, v + "/", out);
-  }
+  const std::string head = "/vehicles/";
+  for (const auto& g : f.vehicleGroups())
+    vehicleSeries(f, q, g, g.empty() ? "" : g.substr(head.size()) + "/", out);
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include <set>
 #include <string_view>
 #include <thread>
+#include <tuple>
 
 #include "railbench/version.hpp"
 #include "workbench/contact/table_io.hpp"
@@ -124,14 +125,17 @@ std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string&
     auto bytes = readRegularFile(path, why);
     h.field("data " + role, bytes ? *bytes : "unreadable: " + why);
   };
-  // Every profile file a vehicle runs on: the scenario's, each wheel side's own, and each train
-  // vehicle's own profiles{} (a file edited between two runs of a study is a new case).
+  // Every profile file a vehicle runs on, once: the leading vehicle's (the scenario's profiles),
+  // each wheel side's own, and those of the train's other vehicles (a file edited between two
+  // runs of a study is a new case).
+  std::set<std::string> hashed;
   auto profileFiles = [&](const std::string& prefix, const dynamics::ProfilesSpec& p) {
-    if (p.wheel != "s1002") data(prefix + "wheel", p.wheel);
-    if (p.rail != "60e1") data(prefix + "rail", p.rail);
-    for (const auto& [side, path] :
-         {std::pair{"wheel_left", &p.wheel_left}, std::pair{"wheel_right", &p.wheel_right}})
-      if (!path->empty() && *path != "s1002") data(prefix + side, *path);
+    for (const auto& [role, path, builtin] :
+         {std::tuple{"wheel", &p.wheel, "s1002"}, std::tuple{"rail", &p.rail, "60e1"},
+          std::tuple{"wheel_left", &p.wheel_left, "s1002"},
+          std::tuple{"wheel_right", &p.wheel_right, "s1002"}})
+      if (!path->empty() && *path != builtin && hashed.insert(*path).second)
+        data(prefix + role, *path);
   };
   profileFiles("", spec.profiles);
   for (std::size_t k = 1; k < spec.train.size(); ++k)
