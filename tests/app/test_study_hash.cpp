@@ -104,6 +104,26 @@ TEST(StudyHash, ChangesWithEachWheelSidesOwnProfile) {
   EXPECT_EQ(hashOf(base), h0);
 }
 
+TEST(StudyHash, ChangesWithEachRailSlicesProfile) {
+  // profiles.rail_slices names files of their own: each one's bytes are an input of the case.
+  TempDir d;
+  d.write("mod.lua", "return { length = 100 }\n");
+  d.write("irr.csv", "s,alignment,vertical,gauge,cross_level\n0,0,0,0,0\n100,0,0,0,0\n");
+  d.write("wheel.txt", "0 0\n1 1\n");
+  d.write("blade.txt", "0 0\n1 1\n");
+  std::string text = kBase;
+  const std::string from = "profiles { wheel = \"wheel.txt\" }";
+  text.replace(text.find(from), from.size(),
+               "profiles { wheel = \"wheel.txt\", rail_slices = { right = { { s = 1, rail = "
+               "\"60e1\" }, { s = 5, rail = \"blade.txt\" } } } }");
+  const std::string base = d.write("base.lua", text);
+  const std::string h0 = hashOf(base);
+  d.write("blade.txt", "0 0\n1 2\n");
+  EXPECT_NE(hashOf(base), h0);
+  d.write("blade.txt", "0 0\n1 1\n");
+  EXPECT_EQ(hashOf(base), h0);
+}
+
 TEST(StudyHash, BuildIdIsTheProgramContent) {
   TempDir d;
   const std::string a = d.write("a", "program one"), b = d.write("b", "program two");

@@ -93,9 +93,11 @@ struct ElasticContactSearch::PoseTrig {
   double r[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   double rho = 1.0, ceps = 1.0, seps = 0.0;
   double oy = 0.0, oz = 0.0;  // rail profile origin
+  double blend = 0.0;         // rail_next's share (0 on a prismatic rail)
   PoseTrig(const ElasticPose& p, const WheelRailPair& pair, double sigma, EulerOrder order) {
     y = p.y;
     z = p.z;
+    if (pair.rail_next) blend = p.blend;
     const double cps = std::cos(p.psi), sps = std::sin(p.psi);
     const double cph = std::cos(p.phi), sph = std::sin(p.phi);
     if (order == EulerOrder::RollYaw) {  // Rx(phi) Rz(psi)
@@ -180,19 +182,35 @@ ElasticContactSearch::ElasticContactSearch(WheelRailPair pair, ElasticSearchSpec
   for (double s : s_) l_max = std::max(l_max, std::abs(sigma_ * pair_.wheel_lw + s));
   wheel_xmax_ = std::hypot(wheel_hmax_, l_max) + 1e-3;  // |X| = sqrt(h^2 + L^2) at any sample
   // Rail bins over the rail and kRailBinPad beyond its ends (at() extrapolates the end cubics).
+  // A blended rail (rail_next) is a convex combination of the two slices at every u: each bound
+  // of its derivatives is the larger of the two slices' bounds.
   const profiles::Profile& r = *pair_.rail;
-  const std::vector<double> rk = r.knots();
-  rail_bin0_ = r.sMin() - kRailBinPad;
-  const auto nb =
-      static_cast<std::size_t>(std::ceil((r.sMax() - r.sMin() + 2.0 * kRailBinPad) / rail_bin_));
+  rail_smin_ = r.sMin();
+  rail_smax_ = r.sMax();
+  if (pair_.rail_next) {
+    rail_smin_ = std::max(rail_smin_, pair_.rail_next->sMin());
+    rail_smax_ = std::min(rail_smax_, pair_.rail_next->sMax());
+    if (!(rail_smax_ > rail_smin_)) {
+      throw InputError(SourceLoc{}, "elastic contact search: the two rail slices '" + r.name() +
+                                        "' and '" + pair_.rail_next->name() +
+                                        "' have no profile parameter in common");
+    }
+  }
+  rail_bin0_ = rail_smin_ - kRailBinPad;
+  const auto nb = static_cast<std::size_t>(
+      std::ceil((rail_smax_ - rail_smin_ + 2.0 * kRailBinPad) / rail_bin_));
   std::vector<double> r1(nb, 0.0), r2(nb, 0.0), r2_hi(nb, 0.0), r2_neg(nb, 0.0);
-  for (std::size_t b = 0; b < nb; ++b) {
-    const double u0 = rail_bin0_ + static_cast<double>(b) * rail_bin_;
-    const ProfileBound pb = profileBounds(r, rk, u0, u0 + rail_bin_);
-    r1[b] = pb.d1;
-    r2[b] = pb.d2;
-    r2_hi[b] = pb.d2_hi;
-    r2_neg[b] = pb.d2_neg;
+  for (const profiles::Profile* rp : {pair_.rail.get(), pair_.rail_next.get()}) {
+    if (rp == nullptr) continue;
+    const std::vector<double> rk = rp->knots();
+    for (std::size_t b = 0; b < nb; ++b) {
+      const double u0 = rail_bin0_ + static_cast<double>(b) * rail_bin_;
+      const ProfileBound pb = profileBounds(*rp, rk, u0, u0 + rail_bin_);
+      r1[b] = std::max(r1[b], pb.d1);
+      r2[b] = std::max(r2[b], pb.d2);
+      r2_hi[b] = rp == pair_.rail.get() ? pb.d2_hi : std::max(r2_hi[b], pb.d2_hi);
+      r2_neg[b] = rp == pair_.rail.get() ? pb.d2_neg : std::max(r2_neg[b], pb.d2_neg);
+    }
   }
   rail_d1_.build(r1);
   rail_d2_.build(r2);
@@ -215,6 +233,17 @@ double ElasticContactSearch::RangeMax::operator()(std::size_t a, std::size_t b) 
   const auto l = static_cast<std::size_t>(std::bit_width(b - a) - 1);
   const std::vector<double>& q = level[l];
   return std::max(q[a], q[b - (std::size_t{1} << l)]);
+}
+
+profiles::ProfilePoint ElasticContactSearch::railAt(const PoseTrig& t, double u) const {
+  profiles::ProfilePoint a = pair_.rail->at(u);
+  if (!pair_.rail_next) return a;
+  // a + b (next - a): exactly a where the two slices are the same profile.
+  const profiles::ProfilePoint n = pair_.rail_next->at(u);
+  a.h += t.blend * (n.h - a.h);
+  a.dh += t.blend * (n.dh - a.dh);
+  a.d2h += t.blend * (n.d2h - a.d2h);
+  return a;
 }
 
 ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const ElasticPose& pose,
@@ -267,10 +296,9 @@ ElasticContactSearch::SampleOnRail ElasticContactSearch::sampleOnRail(const Pose
   const double py = t.py(p.h, L, p.st, p.ct) - t.oy;
   const double pz = t.pz(p.h, L, p.st, p.ct) - t.oz;
   p.u = cb_ * py + sb_ * pz;
-  const profiles::Profile& r = *pair_.rail;
-  if (p.u < r.sMin() || p.u > r.sMax()) return p;
+  if (p.u < rail_smin_ || p.u > rail_smax_) return p;
   p.v = -sb_ * py + cb_ * pz;
-  p.rp = r.at(p.u);
+  p.rp = railAt(t, p.u);
   p.over = true;
   return p;
 }
@@ -304,11 +332,10 @@ double ElasticContactSearch::sampledGap(const PoseTrig& t, std::size_t i, double
 
 int ElasticContactSearch::refine(const PoseTrig& t, double& s_w, double& s_r) const {
   const profiles::Profile& wp = *pair_.wheel;
-  const profiles::Profile& rpf = *pair_.rail;
   const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
   for (int it = 0; it < spec_.newton_max_iter; ++it) {
     const LocusPoint w = locus(t, s_w, false);
-    const profiles::ProfilePoint r = rpf.at(s_r);
+    const profiles::ProfilePoint r = railAt(t, s_r);
     const double ry = oy + cb_ * s_r - sb_ * r.h, rz = oz + sb_ * s_r + cb_ * r.h;
     const double ty = cb_ - sb_ * r.dh, tz = sb_ + cb_ * r.dh;      // rail tangent
     const double dty = -sb_ * r.d2h, dtz = cb_ * r.d2h;             // its derivative
@@ -333,7 +360,7 @@ int ElasticContactSearch::refine(const PoseTrig& t, double& s_w, double& s_r) co
     s_w += dsw;
     s_r += dsr;
     if (s_w < wp.sMin() - kDomainSlack || s_w > wp.sMax() + kDomainSlack ||
-        s_r < rpf.sMin() - kDomainSlack || s_r > rpf.sMax() + kDomainSlack) {
+        s_r < rail_smin_ - kDomainSlack || s_r > rail_smax_ + kDomainSlack) {
       return -1;
     }
     if (std::max(std::abs(dsw), std::abs(dsr)) <= spec_.newton_tol) return it + 1;
@@ -343,11 +370,10 @@ int ElasticContactSearch::refine(const PoseTrig& t, double& s_w, double& s_r) co
 
 double ElasticContactSearch::gapAt(const PoseTrig& t, double s_w, double& s_r, double* dgap) const {
   const LocusPoint w = locus(t, s_w, false);
-  const profiles::Profile& rpf = *pair_.rail;
   const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
   // Foot point on the rail: (W - R(s_r)) . t_r(s_r) = 0 (Newton, well conditioned while the
   // distance is far below the rail's radius of curvature).
-  profiles::ProfilePoint r = rpf.at(s_r);
+  profiles::ProfilePoint r = railAt(t, s_r);
   for (int it = 0; it < spec_.newton_max_iter; ++it) {
     const double ry = oy + cb_ * s_r - sb_ * r.h, rz = oz + sb_ * s_r + cb_ * r.h;
     const double ty = cb_ - sb_ * r.dh, tz = sb_ + cb_ * r.dh;
@@ -357,8 +383,8 @@ double ElasticContactSearch::gapAt(const PoseTrig& t, double s_w, double& s_r, d
     const double df = -(ty * ty + tz * tz) + dy * dty + dz * dtz;
     double step = df != 0.0 ? -f / df : 0.0;
     step = std::clamp(step, -kMaxStep, kMaxStep);
-    s_r = std::clamp(s_r + step, rpf.sMin(), rpf.sMax());
-    r = rpf.at(s_r);
+    s_r = std::clamp(s_r + step, rail_smin_, rail_smax_);
+    r = railAt(t, s_r);
     if (std::abs(step) <= spec_.newton_tol) break;
   }
   const double ry = oy + cb_ * s_r - sb_ * r.h, rz = oz + sb_ * s_r + cb_ * r.h;
@@ -408,14 +434,13 @@ int ElasticContactSearch::refineBracketed(const PoseTrig& t, double lo, double h
 bool ElasticContactSearch::separation(const PoseTrig& t, double y0, double z0, double ny, double nz,
                                       double off, double s_w, double s_r, double& sep) const {
   const double ty = nz, tz = -ny;  // a unit tangent (either direction: sep(+-off) is symmetric)
-  const profiles::Profile& rpf = *pair_.rail;
   const profiles::Profile& wpf = *pair_.wheel;
   const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
   // Rail point with (R(s) - R0) . tau = off.
   double lam_r = 0.0, lam_w = 0.0;
   bool ok = false;
   for (int it = 0; it < spec_.newton_max_iter; ++it) {
-    const profiles::ProfilePoint r = rpf.at(s_r);
+    const profiles::ProfilePoint r = railAt(t, s_r);
     const double ry = oy + cb_ * s_r - sb_ * r.h - y0, rz = oz + sb_ * s_r + cb_ * r.h - z0;
     const double f = ry * ty + rz * tz - off;
     const double df = (cb_ - sb_ * r.dh) * ty + (sb_ + cb_ * r.dh) * tz;
@@ -426,7 +451,7 @@ bool ElasticContactSearch::separation(const PoseTrig& t, double y0, double z0, d
     }
     if (df == 0.0) return false;
     s_r -= std::clamp(f / df, -kMaxStep, kMaxStep);
-    if (!rpf.inside(s_r)) return false;
+    if (!railInside(s_r)) return false;
   }
   if (!ok) return false;
   ok = false;
@@ -452,7 +477,7 @@ ElasticPatchGeometry ElasticContactSearch::describe(const PoseTrig& t, double s_
                                                     double s_r) const {
   const LocusPoint w = locus(t, s_w);
   const profiles::ProfilePoint wp = pair_.wheel->at(s_w);
-  const profiles::ProfilePoint r = pair_.rail->at(s_r);
+  const profiles::ProfilePoint r = railAt(t, s_r);
   const double oy = sigma_ * pair_.rail_lr + pair_.rail_dy, oz = pair_.rail_dz;
   ElasticPatchGeometry g;
   g.s_w = s_w;
@@ -471,6 +496,8 @@ ElasticPatchGeometry ElasticContactSearch::describe(const PoseTrig& t, double s_
   g.gap_depth = -((w.y - g.y) * g.n_y + (w.z - g.z) * g.n_z);
   g.approach = g.gap_depth;
   const double qw = 1.0 + wp.dh * wp.dh, qr = 1.0 + r.dh * r.dh;
+  if (pair_.rail_next)
+    g.rail_rise = (pair_.rail_next->at(s_r).h - pair_.rail->at(s_r).h) / std::sqrt(qr);
   g.k_wheel_trans = -wp.d2h / (qw * std::sqrt(qw));
   g.k_wheel_rolling = 1.0 / (wp.h * std::sqrt(qw));
   g.k_rail_trans = -r.d2h / (qr * std::sqrt(qr));
@@ -751,7 +778,6 @@ void ElasticContactSearch::poseShift(const PoseTrig& t, const ElasticScanCert& c
 void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::size_t i_hi,
                                       ElasticWheelGeometry& out, ElasticSearchWorkspace& ws) const {
   const double threshold = spec_.candidate_gap * (1.0 + 1e-9) + 1e-12;
-  const profiles::Profile& rail = *pair_.rail;
   ScanTrack track;
   auto exact = [&](std::size_t i) {
     ScanNode n{i, 0.0, 0.0, 0.0, 0.0};
@@ -767,13 +793,15 @@ void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::
   std::uint64_t shift_ref = 0;
   double shift_fixed = 0.0, shift_slope = 0.0;
   auto certified = [&](const ElasticScanCert& c, std::size_t a, std::size_t b, double& lb) {
+    if (std::bit_cast<std::uint64_t>(c.blend) != std::bit_cast<std::uint64_t>(t.blend))
+      return false;
     if (c.ref_id != shift_ref) {
       poseShift(t, c, shift_fixed, shift_slope);
       shift_ref = c.ref_id;
     }
     const double dp = shift_fixed + shift_slope * wheel_d1_(a, b);
     const double u_lo = c.u_lo - dp - 1e-12, u_hi = c.u_hi + dp + 1e-12;
-    if (!(u_lo > rail.sMin() && u_hi < rail.sMax())) return false;  // may leave the rail
+    if (!(u_lo > rail_smin_ && u_hi < rail_smax_)) return false;  // may leave the rail
     const double lo = (u_lo - rail_bin0_) / rail_bin_, hi = (u_hi - rail_bin0_) / rail_bin_;
     if (!(lo >= 0.0 && hi < static_cast<double>(rail_bins_))) return false;
     const auto b_lo = static_cast<std::size_t>(lo), b_hi = static_cast<std::size_t>(hi) + 1;
@@ -814,6 +842,7 @@ void ElasticContactSearch::scanPruned(const PoseTrig& t, std::size_t i_lo, std::
         cert->g_abs = track.g_abs;
         cert->u_lo = track.u_lo;
         cert->u_hi = track.u_hi;
+        cert->blend = t.blend;
         cert->ref = {t.y,       t.z,       t.r[1][0],         t.r[1][1], t.r[1][2], t.r[2][0],
                      t.r[2][1], t.r[2][2], t.r[0][1] / t.rho, t.ceps,    t.seps};
       }
@@ -830,7 +859,8 @@ void ElasticContactSearch::search(const ElasticPose& pose, ElasticWheelGeometry&
   auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
   const ElasticPose& q = ws.last_pose;
   if (!seed && ws.last_model == id_ && bits(pose.y) == bits(q.y) && bits(pose.z) == bits(q.z) &&
-      bits(pose.phi) == bits(q.phi) && bits(pose.psi) == bits(q.psi)) {
+      bits(pose.phi) == bits(q.phi) && bits(pose.psi) == bits(q.psi) &&
+      (!pair_.rail_next || bits(pose.blend) == bits(q.blend))) {
     out = ws.last_out;
     return;
   }
@@ -862,8 +892,8 @@ void ElasticContactSearch::searchFull(const ElasticPose& pose, ElasticWheelGeome
   // range is still checked exactly (sampledGap returns +inf off the rail).
   constexpr double kMargin = 5e-3;  // [m]
   const double offset = t.y + sigma_ * pair_.wheel_lw - t.oy - t.r[1][2] * h_.front();
-  const double s_lo = pair_.rail->sMin() - offset - kMargin;
-  const double s_hi = pair_.rail->sMax() - offset + kMargin;
+  const double s_lo = rail_smin_ - offset - kMargin;
+  const double s_hi = rail_smax_ - offset + kMargin;
   const double step = spec_.sample_step, s0 = s_.front();
   const auto i_lo = static_cast<std::size_t>(
       std::clamp(std::floor((s_lo - s0) / step), 0.0, static_cast<double>(n - 1)));

@@ -96,6 +96,9 @@ struct ElasticPose {
   double z = 0.0;    // [m] axle centre height above the track frame
   double phi = 0.0;  // [rad] roll about X (left wheel up for phi > 0)
   double psi = 0.0;  // [rad] yaw about Z (nose to the left for psi > 0)
+  // [-] WheelRailPair::rail_next's share of the rail under the wheel (ignored, taken as 0, when
+  // the pair has no rail_next).
+  double blend = 0.0;
 };
 
 // One wheel over one rail: the geometry set-up of config.hpp for one side.
@@ -107,6 +110,10 @@ struct WheelRailPair {
   double beta = 1.0 / 40.0;  // [rad] rail inclination (the rail frame is rotated by sigma beta)
   double rail_dy = 0.0;      // [m] rail profile origin offset (irregularity, gauge), track Y
   double rail_dz = 0.0;      // [m] rail profile origin offset, track Z
+  // A rail that changes along the track (sliced_rail.hpp): the rail between two profile slices is
+  // h_r(u) + b (h_next(u) - h_r(u)) in the same rail frame, b = ElasticPose::blend in [0, 1],
+  // over the part of the profile parameter both slices cover. Null: a prismatic rail.
+  std::shared_ptr<const profiles::Profile> rail_next;
 };
 // The two pairs of a ContactGeometryConfig (left, right), the same placement the LUT/KEC use.
 std::array<WheelRailPair, 2> wheelRailPairs(const ContactGeometryConfig& config);
@@ -159,6 +166,10 @@ struct ElasticPatchGeometry {
   // could not be measured).
   double B_span = 0.0;
   bool refined = true;  // Newton converged (false: the sampled point is used)
+  // [m] rise of the rail surface along n per unit of ElasticPose::blend at the contact,
+  // (h_next - h_r)(s_r) / sqrt(1 + h_r'^2): the rail surface's normal velocity is
+  // V d(blend)/ds times this (0 on a prismatic rail).
+  double rail_rise = 0.0;
 };
 
 inline constexpr int kMaxElasticPatches = 8;
@@ -178,6 +189,8 @@ struct ElasticWheelGeometry {
 struct ElasticScanCert {
   std::uint64_t model = 0;   // ElasticContactSearch::id(); 0: none
   std::uint64_t ref_id = 0;  // the search (ElasticSearchWorkspace::searches) that made it
+  double blend = 0.0;        // ElasticPose::blend of the reference pose (a certificate holds
+                             // for that rail only)
   double lb = 0.0, g_abs = 0.0, u_lo = 0.0, u_hi = 0.0;
   // The reference pose: y, z, rows Y and Z of the rotation, R01 / rho, cos(eps), sin(eps).
   std::array<double, 11> ref{};
@@ -261,6 +274,9 @@ class ElasticContactSearch {
   int refine(const PoseTrig& t, double& s_w, double& s_r) const;
   int refineBracketed(const PoseTrig& t, double lo, double hi, double& s_w, double& s_r) const;
   ElasticPatchGeometry describe(const PoseTrig& t, double s_w, double s_r) const;
+  // The rail profile at u: WheelRailPair::rail, blended with rail_next by the pose's blend.
+  profiles::ProfilePoint railAt(const PoseTrig& t, double u) const;
+  bool railInside(double u) const { return u >= rail_smin_ && u <= rail_smax_; }
   // Normal separation of wheel and rail at tangent offset t from the rail point (y0, z0) with unit
   // normal (ny, nz) (false when a side cannot be reached).
   bool separation(const PoseTrig& t, double y0, double z0, double ny, double nz, double off,
@@ -341,6 +357,8 @@ class ElasticContactSearch {
   RangeMax wheel_d2_hi_, wheel_d2_neg_, rail_d2_hi_, rail_d2_neg_;
   double wheel_xmax_ = 0.0;  // bound of |X| = sqrt(h^2 + L^2) over the wheel
   double wheel_hmax_ = 0.0, rail_bin0_ = 0.0, rail_bin_ = 0.25e-3;
+  // [m] the rail's profile parameter range (with rail_next: the part both slices cover)
+  double rail_smin_ = 0.0, rail_smax_ = 0.0;
   std::size_t rail_bins_ = 0;
 };
 

@@ -46,6 +46,7 @@ namespace rb::dynamics::internal {
 struct RailOffset {
   double y = 0.0, z = 0.0;      // [m]
   double y_s = 0.0, z_s = 0.0;  // [-] d/ds
+  double blend_s = 0.0;         // [1/m] d(blend)/ds of a rail changing along the track
 };
 inline RailOffset railOffset(const track::IrregularityPoint& r, int side) {
   return side == 0 ? RailOffset{r.y_l, r.z_l, r.y_l_s, r.z_l_s}
@@ -68,7 +69,9 @@ double setupElasticPatch(Patch& p, const contact::ElasticPatchGeometry& g, doubl
   const Eigen::Vector3d sp = f.axle.cross(au);
   p.gn = wheelPointForce(f, au, sp, p.n);
   const Eigen::Vector3d v = vehicle::pointVelocity(*f.kin, au) + sp * f.spin_rate;
-  const double delta_dot = -(v.y() - V * rail.y_s) * p.n.y() - (v.z() - V * rail.z_s) * p.n.z();
+  double delta_dot = -(v.y() - V * rail.y_s) * p.n.y() - (v.z() - V * rail.z_s) * p.n.z();
+  // A rail changing along the track rises under the moving contact at V db/ds rail_rise.
+  if (rail.blend_s != 0.0) delta_dot += V * rail.blend_s * g.rail_rise;
   p.k = contact::policyCurvatures(g, e.normal);
   p.shape = c.hertz_shapes->shape(p.k.A, p.k.B);
   const double K = creep::hertzStiffness(c.material, p.k, p.shape);
@@ -110,10 +113,17 @@ void elasticPatches(const ContactModels& models, const StageInput& in, WheelsetW
   for (int side = 0; side < 2; ++side) {
     ElasticWheelWork& ew = ww.elastic[side];
     const double sigma = contact::kSideSign[side];
-    const RailOffset rail = railOffset(ww.irr, side);
-    const contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + ww.height - rail.z,
-                                    q[vehicle::kRoll], q[vehicle::kYaw]};
-    e.search[static_cast<std::size_t>(side)].search(pose, ew.geometry, ew.search);
+    RailOffset rail = railOffset(ww.irr, side);
+    contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + ww.height - rail.z,
+                              q[vehicle::kRoll], q[vehicle::kYaw]};
+    const contact::ElasticContactSearch* search = &e.search[static_cast<std::size_t>(side)];
+    if (const auto& sliced = e.sliced[static_cast<std::size_t>(side)]) {
+      const contact::SlicedRailSearch::Place at = sliced->at(q[vehicle::kS]);
+      search = at.search;
+      pose.blend = at.blend;
+      rail.blend_s = at.blend_ds;
+    }
+    search->search(pose, ew.geometry, ew.search);
     ew.lift = wheelLift(c, q, ww.height, rail, sigma);
     const int n = ew.geometry.count;
     ++work.stats.elastic_searches;

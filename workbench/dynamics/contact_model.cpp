@@ -373,7 +373,51 @@ double flangeHeight(const profiles::Profile& wheel) {
 
 // The elastic method's searches, normal policy, Hertz-derived damping and derailment criterion
 // (ElasticContactModel).
-std::shared_ptr<const ElasticContactModel> compileElastic(const ContactSpec& c,
+// The rails of profiles.rail_slices, one SlicedRailSearch per side with slices (the right side's
+// slices mirrored as the rail is).
+void compileSlicedRails(const ProfilesSpec& p, const contact::ElasticSearchSpec& search,
+                        const ContactModel& m, ElasticContactModel& e) {
+  Diagnostics d;
+  std::map<std::string, std::shared_ptr<const profiles::Profile>> loaded;
+  const std::array<contact::WheelRailPair, 2> pairs = contact::wheelRailPairs(m.geometry);
+  for (std::size_t side = 0; side < 2; ++side) {
+    const std::vector<RailSliceSpec>& spec = p.rail_slices[side];
+    if (spec.empty()) continue;
+    std::vector<contact::RailSlice> slices;
+    for (const RailSliceSpec& sl : spec) {
+      auto& left = loaded[sl.rail];
+      if (!left)
+        left = loadProfile(sl.rail, profiles::ProfileKind::Rail, p.r0, sl.loc, d, "rail_slices");
+      if (!left) continue;
+      slices.push_back(
+          {sl.s, side == 0 ? left : std::make_shared<const profiles::Profile>(left->mirrored())});
+    }
+    d.throwIfAny();
+    const std::string key = std::string("profiles.rail_slices.") + (side == 0 ? "left" : "right");
+    for (std::size_t k = 1; k < slices.size(); ++k) {
+      const profiles::Profile& a = *slices[k - 1].rail;
+      const profiles::Profile& b = *slices[k].rail;
+      if (std::max(a.sMin(), b.sMin()) < std::min(a.sMax(), b.sMax())) continue;
+      d.add(spec[k].loc, key + "[" + std::to_string(k + 1) +
+                             "]: its rail and the slice before "
+                             "it (at s = " +
+                             formatNumber(spec[k - 1].s) +
+                             " m) cover no common part of the profile (lateral) parameter: "
+                             "there is nothing to blend between them");
+    }
+    d.throwIfAny();
+    try {
+      e.sliced[side] =
+          std::make_shared<const contact::SlicedRailSearch>(pairs[side], std::move(slices), search);
+    } catch (const InputError& err) {
+      d.add(spec.front().loc, key + ": " + err.diagnostics().front().message);
+    }
+  }
+  d.throwIfAny();
+}
+
+std::shared_ptr<const ElasticContactModel> compileElastic(const ProfilesSpec& p,
+                                                          const ContactSpec& c,
                                                           const vehicle::VehicleModel& v,
                                                           const ContactModel& m) {
   auto e = std::make_shared<ElasticContactModel>();
@@ -383,6 +427,7 @@ std::shared_ptr<const ElasticContactModel> compileElastic(const ContactSpec& c,
   search.sample_step = c.elastic.sample_step;
   for (const contact::WheelRailPair& pair : contact::wheelRailPairs(m.geometry))
     e->search.emplace_back(pair, search);
+  compileSlicedRails(p, search, m, *e);
   e->normal.material = m.material;
   e->normal.min_ratio = c.elastic.min_curvature_ratio;
   e->damping_ratio = c.elastic.damping_ratio;
@@ -453,6 +498,12 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
     d.add(c.loc, "contact: vehicle '" + v.name +
                      "' has no wheelset (a body with kind = \"wheelset\"): nothing to put on the "
                      "rails");
+  if (c.method != ContactMethod::Elastic &&
+      (!p.rail_slices[0].empty() || !p.rail_slices[1].empty()))
+    d.add(p.loc, std::string("profiles.rail_slices: a rail that changes along the track needs "
+                             "contact.method = \"elastic\" (the ") +
+                     ContactModel::methodName(c.method) +
+                     " method's tables hold one rail profile for the whole track)");
   // The ranges of the scenario schema (dynamics/limits.hpp), for callers without a scenario.
   const auto check = [&](const char* key, double value, const Range& r) {
     if (!r.contains(value))
@@ -536,7 +587,7 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
   m.centred_radius[1] = c0.right.radius;
 
   gaugeWarnings(m, track);
-  if (m.method == ContactMethod::Elastic) m.elastic = compileElastic(c, v, m);
+  if (m.method == ContactMethod::Elastic) m.elastic = compileElastic(p, c, v, m);
 
   // Gauge variation beyond the LUT's xi_g range is extrapolated (and reported by the rhs as a
   // recoverable failure); say so before the run.

@@ -13,6 +13,7 @@
 // that do not touch when centred). Table build problems that do not stop the build (short KEC
 // transitions, unresolved jumps) are kept as warnings in ContactModel::warnings, with the table
 // statistics (build time, bytes) in tableStats().
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -25,6 +26,7 @@
 #include "workbench/contact/geometry.hpp"
 #include "workbench/contact/kec.hpp"
 #include "workbench/contact/lut.hpp"
+#include "workbench/contact/sliced_rail.hpp"
 #include "workbench/core/spline.hpp"
 #include "workbench/creep/hertz.hpp"
 #include "workbench/creep/polach.hpp"
@@ -54,6 +56,9 @@ class HertzShapeTable {
 // the derailment criterion.
 struct ElasticContactModel {
   std::vector<contact::ElasticContactSearch> search;  // [side]: left, right
+  // [side]: the rail as slices along the track (profiles.rail_slices; null: the prismatic rail of
+  // `search`, which then also serves the compile-time quantities below).
+  std::array<std::shared_ptr<const contact::SlicedRailSearch>, 2> sliced;
   contact::ElasticNormalSpec normal;
   // Hunt-Crossley damping N = K_H delta^1.5 (1 + damping delta_dot) [s/m], derived from
   // ElasticSpec::damping_ratio at the nominal static wheel load of the centred tread contact:

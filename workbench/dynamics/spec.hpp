@@ -1,7 +1,9 @@
 #pragma once
 // Plain input structs for wheel/rail profiles and the contact model built by
 // workbench/scenario from the profiles{} and contact{} blocks. SI units.
+#include <array>
 #include <string>
+#include <vector>
 
 #include "workbench/contact/interpolation.hpp"
 #include "workbench/core/error.hpp"
@@ -14,6 +16,13 @@
 namespace rb::dynamics {
 
 // Wheel and rail profiles and their positioning (paper Table 1, ../docs/profiles.md).
+// One rail profile slice of a rail that changes along the track (contact/sliced_rail.hpp).
+struct RailSliceSpec {
+  double s = 0.0;    // [m] track arc length
+  std::string rail;  // "60e1" or a resolved path, drawn as a left rail like ProfilesSpec::rail
+  SourceLoc loc;
+};
+
 struct ProfilesSpec {
   std::string wheel = "s1002";  // built-in "s1002", or a resolved path to a .prw / text file
   // The left and right wheels' own profiles (a wheelset with two different wheels: worn,
@@ -28,6 +37,10 @@ struct ProfilesSpec {
   double lw = 0.0;                            // [m] explicit Lw (0: from back_to_back)
   double lr = 0.0;                            // [m] explicit Lr (0: from gauge)
   bool refined_tables = false;                // paper Tables 9-10 refined grids
+  // Rails that change along the track (elastic contact only): per side (left, right) the rail
+  // profile slices at strictly increasing s, linearly blended between (sliced_rail.hpp); empty:
+  // `rail` everywhere. The positioning (Lr from the gauge) stays that of `rail`.
+  std::array<std::vector<RailSliceSpec>, 2> rail_slices;
   SourceLoc loc;
 };
 

@@ -269,7 +269,14 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
             dynamics::kLwRange),
         num("lr", "m", 0, "explicit Lr, 0 = from gauge (paper Table 1: 0.7555)",
             dynamics::kLrRange),
-        boolean("refined_tables", false, "use the refined LUT/KEC grids of paper Tables 9-10")}});
+        boolean("refined_tables", false, "use the refined LUT/KEC grids of paper Tables 9-10"),
+        typed("rail_slices", ValueType::Table, "-",
+              "a rail that changes along the track (elastic contact only): { left = { { s = 0, "
+              "rail = \"60e1\" }, { s = 12, rail = \"blade.txt\" }, ... }, right = { ... } }, "
+              "profile slices at strictly increasing track arc lengths s [m], each drawn as a "
+              "left rail like rail, blended linearly between slices at fixed lateral "
+              "coordinate; before the first and after the last slice the rail is that slice "
+              "(docs/sliced_rails.md)")}});
   s.push_back(
       {"contact",
        "Wheel/rail contact: constraint method (paper section 2.3-2.4), LUT flange Hertz contact "

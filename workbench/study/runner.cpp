@@ -136,6 +136,10 @@ std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string&
           std::tuple{"wheel_right", &p.wheel_right, "s1002"}})
       if (!path->empty() && *path != builtin && hashed.insert(*path).second)
         data(prefix + role, *path);
+    for (const auto& side : p.rail_slices)
+      for (const dynamics::RailSliceSpec& sl : side)
+        if (sl.rail != "60e1" && hashed.insert(sl.rail).second)
+          data(prefix + "rail_slice", sl.rail);
   };
   profileFiles("", spec.profiles);
   for (std::size_t k = 1; k < spec.train.size(); ++k)

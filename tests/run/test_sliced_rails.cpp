@@ -1,0 +1,97 @@
+// Rails that change along the track (profiles.rail_slices, contact/sliced_rail.hpp) in runs of the
+// Manchester wagon on elastic contact (tests/run/data/sliced_rails_*.lua): slices that are all the
+// same rail are the prismatic rail bit for bit; rails lowered over a ramp carry the wheelsets down
+// with them, both rails by the lowering, one rail by half of it with the roll of the cross level.
+// docs/sliced_rails.md.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "tests/run/run_files.hpp"
+#include "workbench/io/result_reader.hpp"
+
+namespace {
+
+constexpr double kBeta = 0.025;    // the scenes' rail inclination [rad]
+constexpr double kLowered = 3e-3;  // rails/60e1_low3.txt: rails/60e1_a.txt with z - 3 mm
+
+rb::test::RunFile run(const std::string& scene) {
+  rb::test::RunFile f =
+      rb::test::runInto(rb::test::compiled("tests/run/data/sliced_rails_" + scene + ".lua"),
+                        "rb_test_sliced_rails", scene + ".h5");
+  EXPECT_TRUE(f.result.result.ok) << f.result.result.message;
+  return f;
+}
+
+TEST(SlicedRails, IdenticalSlicesAreThePrismaticRailBitForBit) {
+  // Six slices alternating between two files of the same rail: each piece blends two different
+  // profile objects, and its every result is the plain run's.
+  const rb::test::RunFile plain = run("plain");
+  const rb::test::RunFile sliced = run("identical");
+  const rb::io::ResultReader a(plain.path), b(sliced.path);
+  std::vector<std::string> names;
+  rb::test::datasets(a, "/bodies", names);
+  rb::test::datasets(a, "/contact", names);
+  ASSERT_GT(names.size(), 40U);
+  for (const std::string& n : names) {
+    const auto x = a.dataset(n), y = b.dataset(n);
+    ASSERT_TRUE(x && y) << n;
+    EXPECT_EQ(*x, *y) << n;
+  }
+}
+
+struct Wheelsets {
+  std::vector<double> t;
+  std::vector<std::vector<double>> s, z, roll, y;
+};
+Wheelsets read(const std::string& path) {
+  const rb::io::ResultReader r(path);
+  Wheelsets w;
+  w.t = *r.dataset("/time");
+  for (const char* ws : {"ws1", "ws2", "ws3", "ws4"}) {
+    const std::string g = std::string("/bodies/") + ws + "/";
+    w.s.push_back(*r.dataset(g + "s"));
+    w.z.push_back(*r.dataset(g + "z"));
+    w.roll.push_back(*r.dataset(g + "roll"));
+    w.y.push_back(*r.dataset(g + "y"));
+  }
+  return w;
+}
+
+TEST(SlicedRails, LoweredRailsCarryTheWheelsetsDown) {
+  // Both rails lowered by 3 mm over s = 60 .. 100 m. The slices are drawn in the inclined rail
+  // frame: each rail moves 3 cos(beta) down and 3 sin(beta) outward (the gauge widens by
+  // 0.15 mm, which lowers the wheelsets by a further fraction of a micrometre).
+  const Wheelsets w = read(run("lowered").path);
+  const double drop = kLowered * std::cos(kBeta);
+  for (std::size_t k = 0; k < 4; ++k) {
+    const double z0 = w.z[k].front();
+    ASSERT_GT(w.s[k].back(), 105.0);
+    EXPECT_NEAR(w.z[k].back() - z0, -drop, 1e-6) << "ws" << k + 1;
+    // On the ramp (1:13333) the wheelset follows the blend of the two slices.
+    for (std::size_t i = 0; i < w.t.size(); i += 10) {
+      const double s = w.s[k][i];
+      if (s < 62.0 || s > 98.0) continue;
+      const double b = (s - 60.0) / 40.0;
+      EXPECT_NEAR(w.z[k][i] - z0, -b * drop, 0.01 * drop) << "ws" << k + 1 << " at s = " << s;
+    }
+  }
+}
+
+TEST(SlicedRails, OneLoweredRailRollsTheWheelsets) {
+  // The left rail alone lowered by 3 mm: a cross level of 3 cos(beta) over the distance of the two
+  // contact points (about 1.5 m), half of it in the wheelset's height; the vehicle leans and moves
+  // toward the lower rail (y > 0) under the gravity component of the cant.
+  const Wheelsets w = read(run("lowered_left").path);
+  const double drop = kLowered * std::cos(kBeta);
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_NEAR(w.z[k].back() - w.z[k].front(), -0.5 * drop, 0.03 * 0.5 * drop) << k + 1;
+    EXPECT_NEAR(w.roll[k].back() - w.roll[k].front(), -drop / 1.5, 0.03 * drop / 1.5) << k + 1;
+    EXPECT_GT(w.y[k].back(), 0.5e-3) << k + 1;
+    EXPECT_LT(w.y[k].back(), 3e-3) << k + 1;
+  }
+}
+
+}  // namespace
