@@ -183,6 +183,33 @@ TEST(SlicedRail, PiecesAlongTheTrack) {
   EXPECT_EQ(first.search->pair().rail_next, b);
 }
 
+TEST(SlicedRail, ABoundedRailExistsBetweenItsSlicesAndItsOffsetsInterpolate) {
+  const WheelRailPair base = leftPair();
+  RailSlice a{100.0, base.rail, 0.0, -0.01};
+  RailSlice b{104.0, base.rail, 0.008, 0.0};
+  const SlicedRailSearch r(base, {a, b}, {}, true);
+  EXPECT_TRUE(r.bounded());
+  EXPECT_EQ(r.at(99.99).search, nullptr);
+  EXPECT_EQ(r.at(104.01).search, nullptr);
+  const auto first = r.at(100.0);
+  ASSERT_NE(first.search, nullptr);
+  EXPECT_EQ(first.dz, -0.01);
+  const auto mid = r.at(101.0);
+  EXPECT_DOUBLE_EQ(mid.dy, 0.002);
+  EXPECT_DOUBLE_EQ(mid.dz, -0.0075);
+  EXPECT_DOUBLE_EQ(mid.dy_ds, 0.002);
+  EXPECT_DOUBLE_EQ(mid.dz_ds, 0.0025);
+  const auto last = r.at(104.0);  // the last slice still belongs to the rail
+  ASSERT_NE(last.search, nullptr);
+  EXPECT_EQ(last.dy, 0.008);
+  EXPECT_EQ(last.dy_ds, 0.0);
+  // Unbounded, the ends run on at the end slices' offsets.
+  const SlicedRailSearch u(base, {a, b}, {});
+  EXPECT_EQ(u.at(50.0).dz, -0.01);
+  EXPECT_EQ(u.at(500.0).dy, 0.008);
+  EXPECT_NE(u.at(500.0).search, nullptr);
+}
+
 TEST(SlicedRail, RefusesSlicesWithoutCommonProfileOrOrder) {
   const WheelRailPair base = leftPair();
   std::vector<double> h(200, 0.0);

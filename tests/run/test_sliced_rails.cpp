@@ -5,6 +5,7 @@
 // docs/sliced_rails.md.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -91,6 +92,49 @@ TEST(SlicedRails, OneLoweredRailRollsTheWheelsets) {
     EXPECT_NEAR(w.roll[k].back() - w.roll[k].front(), -drop / 1.5, 0.03 * drop / 1.5) << k + 1;
     EXPECT_GT(w.y[k].back(), 0.5e-3) << k + 1;
     EXPECT_LT(w.y[k].back(), 3e-3) << k + 1;
+  }
+}
+
+TEST(SlicedRails, TheLoadMovesToTheHigherOfTwoRails) {
+  // A second rail of the same profile on the right (profiles.extra_rails) rises from 2 mm below
+  // while the running rail drops by 2 mm, over s = 60 .. 100 m: the two are level at s = 80 m,
+  // where each carries half the wheel load (the two surfaces are the same there); before it the
+  // running rail carries the wheel, after it the second rail, at the same lateral position, and
+  // the wheel load moves across without a jump.
+  const rb::test::RunFile f = run("transfer");
+  const rb::io::ResultReader r(f.path);
+  for (const char* ws : {"ws1", "ws2", "ws3", "ws4"}) {
+    const std::string c = std::string("/contact/") + ws + "/right/";
+    const auto s = *r.dataset(std::string("/bodies/") + ws + "/s");
+    const auto a = *r.dataset(c + "rails/rail/normal_force");
+    const auto b = *r.dataset(c + "rails/nose/normal_force");
+    const auto ya = *r.dataset(c + "rails/rail/y");
+    const auto yb = *r.dataset(c + "rails/nose/y");
+    const auto n = *r.dataset(c + "normal_force");
+    double cross = 0.0, y_before = 0.0, y_after = 0.0, lo = 1e9, hi = 0.0;
+    for (std::size_t i = 1; i < s.size(); ++i) {
+      EXPECT_NEAR(a[i] + b[i], n[i], 1e-6 * n[i]) << ws;
+      if (a[i - 1] >= b[i - 1] && a[i] < b[i])
+        cross = s[i - 1] + (s[i] - s[i - 1]) * (a[i - 1] - b[i - 1]) /
+                               ((a[i - 1] - b[i - 1]) - (a[i] - b[i]));
+      if (s[i] > 70.0 && s[i] < 75.0) y_before = ya[i];
+      if (s[i] > 85.0 && s[i] < 90.0) y_after = yb[i];
+      if (s[i] > 75.0 && s[i] < 85.0) {
+        lo = std::min(lo, n[i]);
+        hi = std::max(hi, n[i]);
+      }
+      if (s[i] < 78.0) {
+        EXPECT_EQ(b[i], 0.0) << ws << " at s = " << s[i];
+      }
+      if (s[i] > 82.0) {
+        EXPECT_EQ(a[i], 0.0) << ws << " at s = " << s[i];
+      }
+    }
+    EXPECT_NEAR(cross, 80.0, 0.1) << ws;
+    EXPECT_NEAR(y_after, y_before, 0.2e-3) << ws;
+    // The wheel load through the transfer: within 2 % of its mean (the wagon's own dynamics
+    // move it by about 1 %).
+    EXPECT_LT(hi - lo, 0.02 * 0.5 * (hi + lo)) << ws;
   }
 }
 

@@ -26,6 +26,11 @@ namespace rb::contact {
 struct RailSlice {
   double s = 0.0;  // [m] track arc length of the slice
   std::shared_ptr<const profiles::Profile> rail;
+  // [m] offset of the slice's rail frame: dy toward the field side (+Y for the left rail, -Y for
+  // the right), dz up; interpolated linearly between slices like the heights (a rail that moves
+  // sideways, a nose or blade that rises, is the same profile at other offsets: an exact
+  // translation, not a blend of two shapes).
+  double dy = 0.0, dz = 0.0;
 };
 
 class SlicedRailSearch {
@@ -33,26 +38,33 @@ class SlicedRailSearch {
   // `pair` gives the wheel, side and placement; its rail is replaced by the slices (sorted by
   // strictly increasing s, at least one). Throws InputError when two neighbouring slices share
   // no profile parameter.
+  // bounded: the rail exists only from its first slice to its last (a switch blade, a crossing
+  // nose, a check rail); otherwise it runs on, prismatic, before the first and after the last.
   SlicedRailSearch(const WheelRailPair& pair, std::vector<RailSlice> slices,
-                   const ElasticSearchSpec& spec);
+                   const ElasticSearchSpec& spec, bool bounded = false);
 
-  // The rail under a wheel at track arc length s: the search of its piece, the blend b and
-  // db/ds [1/m] (0 on the prismatic ends).
+  // The rail under a wheel at track arc length s: the search of its piece (null where a bounded
+  // rail does not exist), the blend b and db/ds [1/m] (0 on the prismatic ends), the offsets and
+  // their slopes along the track.
   struct Place {
     const ElasticContactSearch* search = nullptr;
     double blend = 0.0;
     double blend_ds = 0.0;
+    double dy = 0.0, dz = 0.0;      // [m]
+    double dy_ds = 0.0, dz_ds = 0.0;  // [-]
     int piece = 0;  // 0: before the first slice, k: between slices k-1 and k, n: after the last
   };
   Place at(double s) const;
 
   const std::vector<RailSlice>& slices() const { return slices_; }
+  bool bounded() const { return bounded_; }
   std::size_t pieces() const { return pieces_.size(); }
   const ElasticContactSearch& piece(std::size_t k) const { return pieces_[k]; }
 
  private:
   std::vector<RailSlice> slices_;
   std::vector<ElasticContactSearch> pieces_;
+  bool bounded_ = false;
 };
 
 }  // namespace rb::contact

@@ -43,11 +43,6 @@
 namespace rb::dynamics::internal {
 
 // The irregular rail of one side at the wheelset: its displacement and slope along the track.
-struct RailOffset {
-  double y = 0.0, z = 0.0;      // [m]
-  double y_s = 0.0, z_s = 0.0;  // [-] d/ds
-  double blend_s = 0.0;         // [1/m] d(blend)/ds of a rail changing along the track
-};
 inline RailOffset railOffset(const track::IrregularityPoint& r, int side) {
   return side == 0 ? RailOffset{r.y_l, r.z_l, r.y_l_s, r.z_l_s}
                    : RailOffset{r.y_r, r.z_r, r.y_r_s, r.z_r_s};
@@ -113,18 +108,63 @@ void elasticPatches(const ContactModels& models, const StageInput& in, WheelsetW
   for (int side = 0; side < 2; ++side) {
     ElasticWheelWork& ew = ww.elastic[side];
     const double sigma = contact::kSideSign[side];
-    RailOffset rail = railOffset(ww.irr, side);
-    contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + ww.height - rail.z,
-                              q[vehicle::kRoll], q[vehicle::kYaw]};
-    const contact::ElasticContactSearch* search = &e.search[static_cast<std::size_t>(side)];
-    if (const auto& sliced = e.sliced[static_cast<std::size_t>(side)]) {
-      const contact::SlicedRailSearch::Place at = sliced->at(q[vehicle::kS]);
-      search = at.search;
-      pose.blend = at.blend;
+    const auto sd = static_cast<std::size_t>(side);
+    const RailOffset irr = railOffset(ww.irr, side);
+    // The search of one rail at the wheelset's s: the pose relative to its displaced profile
+    // origin (irregularity, and a sliced rail's offsets toward the field side and up).
+    const auto searchRail = [&](const contact::SlicedRailSearch::Place& at,
+                                contact::ElasticWheelGeometry& out,
+                                contact::ElasticSearchWorkspace& sw, RailOffset& rail) {
+      rail = irr;
+      rail.y += sigma * at.dy;
+      rail.z += at.dz;
+      rail.y_s += sigma * at.dy_ds;
+      rail.z_s += at.dz_ds;
       rail.blend_s = at.blend_ds;
+      contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + ww.height - rail.z,
+                                q[vehicle::kRoll], q[vehicle::kYaw]};
+      pose.blend = at.blend;
+      at.search->search(pose, out, sw);
+    };
+    RailOffset& rail = ew.rail_offset[0];
+    if (const auto& sliced = e.sliced[sd]) {
+      searchRail(sliced->at(q[vehicle::kS]), ew.geometry, ew.search, rail);
+    } else {
+      rail = irr;
+      const contact::ElasticPose pose{q[vehicle::kY] - rail.y,
+                                      q[vehicle::kZ] + ww.height - rail.z, q[vehicle::kRoll],
+                                      q[vehicle::kYaw]};
+      e.search[sd].search(pose, ew.geometry, ew.search);
     }
-    search->search(pose, ew.geometry, ew.search);
-    ew.lift = wheelLift(c, q, ww.height, rail, sigma);
+    ew.patch_rail.fill(0);
+    // Further rails: their patches join the wheel's (the deepest kMaxElasticPatches kept).
+    for (std::size_t r = 0; r < e.extra[sd].size(); ++r) {
+      const contact::SlicedRailSearch::Place at = e.extra[sd][r]->at(q[vehicle::kS]);
+      if (at.search == nullptr) continue;
+      contact::ElasticWheelGeometry& g = ew.extra_geometry;
+      searchRail(at, g, ew.extra_search[r], ew.rail_offset[r + 1]);
+      ew.geometry.min_gap = std::min(ew.geometry.min_gap, g.min_gap);
+      ew.geometry.truncated = ew.geometry.truncated || g.truncated;
+      ew.geometry.newton_iterations += g.newton_iterations;
+      for (int k = 0; k < g.count; ++k) {
+        const contact::ElasticPatchGeometry& pg = g.patch[static_cast<std::size_t>(k)];
+        int slot = ew.geometry.count;
+        if (slot == contact::kMaxElasticPatches) {
+          ew.geometry.truncated = true;
+          slot = 0;  // the shallowest kept patch, if this one is deeper
+          for (int j = 1; j < ew.geometry.count; ++j)
+            if (ew.geometry.patch[static_cast<std::size_t>(j)].approach <
+                ew.geometry.patch[static_cast<std::size_t>(slot)].approach)
+              slot = j;
+          if (!(ew.geometry.patch[static_cast<std::size_t>(slot)].approach < pg.approach)) continue;
+        } else {
+          ++ew.geometry.count;
+        }
+        ew.geometry.patch[static_cast<std::size_t>(slot)] = pg;
+        ew.patch_rail[static_cast<std::size_t>(slot)] = static_cast<int>(r) + 1;
+      }
+    }
+    ew.lift = wheelLift(c, q, ww.height, irr, sigma);
     const int n = ew.geometry.count;
     ++work.stats.elastic_searches;
     work.stats.elastic_patches += n;
@@ -136,8 +176,9 @@ void elasticPatches(const ContactModels& models, const StageInput& in, WheelsetW
         p.active = false;
         continue;
       }
-      const double N = setupElasticPatch<Law>(p, ew.geometry.patch[static_cast<std::size_t>(k)],
-                                              sigma, c, wf, in.speed, rail);
+      const double N = setupElasticPatch<Law>(
+          p, ew.geometry.patch[static_cast<std::size_t>(k)], sigma, c, wf, in.speed,
+          ew.rail_offset[static_cast<std::size_t>(ew.patch_rail[static_cast<std::size_t>(k)])]);
       Q.noalias() += N * p.gn;
       if constexpr (Law::kCreep) creepForce<Law>(p, N, c, Q);
       (p.on_flange ? flange : tread) = true;

@@ -373,47 +373,64 @@ double flangeHeight(const profiles::Profile& wheel) {
 
 // The elastic method's searches, normal policy, Hertz-derived damping and derailment criterion
 // (ElasticContactModel).
-// The rails of profiles.rail_slices, one SlicedRailSearch per side with slices (the right side's
-// slices mirrored as the rail is).
+// One rail of slices (profiles.rail_slices.<side> or an extra rail's slices; `key` names it in
+// messages), the right side's profiles mirrored as the rail is; profiles read once per file.
+std::shared_ptr<const contact::SlicedRailSearch> slicedRail(
+    const ProfilesSpec& p, const std::vector<RailSliceSpec>& spec, std::size_t side,
+    const std::string& key, bool bounded, const contact::WheelRailPair& pair,
+    const contact::ElasticSearchSpec& search,
+    std::map<std::string, std::shared_ptr<const profiles::Profile>>& loaded) {
+  Diagnostics d;
+  std::vector<contact::RailSlice> slices;
+  for (const RailSliceSpec& sl : spec) {
+    auto& left = loaded[sl.rail];
+    if (!left) left = loadProfile(sl.rail, profiles::ProfileKind::Rail, p.r0, sl.loc, d, "rail_slices");
+    if (!left) continue;
+    slices.push_back(
+        {sl.s, side == 0 ? left : std::make_shared<const profiles::Profile>(left->mirrored()),
+         sl.dy, sl.dz});
+  }
+  d.throwIfAny();
+  for (std::size_t k = 1; k < slices.size(); ++k) {
+    const profiles::Profile& a = *slices[k - 1].rail;
+    const profiles::Profile& b = *slices[k].rail;
+    if (std::max(a.sMin(), b.sMin()) < std::min(a.sMax(), b.sMax())) continue;
+    d.add(spec[k].loc, key + "[" + std::to_string(k + 1) +
+                           "]: its rail and the slice before it (at s = " +
+                           formatNumber(spec[k - 1].s) +
+                           " m) cover no common part of the profile (lateral) parameter: there is "
+                           "nothing to blend between them");
+  }
+  d.throwIfAny();
+  try {
+    return std::make_shared<const contact::SlicedRailSearch>(pair, std::move(slices), search,
+                                                             bounded);
+  } catch (const InputError& err) {
+    d.add(spec.front().loc, key + ": " + err.diagnostics().front().message);
+  }
+  d.throwIfAny();
+  return nullptr;
+}
+
+// The rails of profiles.rail_slices and profiles.extra_rails (ElasticContactModel::sliced,
+// ::extra).
 void compileSlicedRails(const ProfilesSpec& p, const contact::ElasticSearchSpec& search,
                         const ContactModel& m, ElasticContactModel& e) {
-  Diagnostics d;
   std::map<std::string, std::shared_ptr<const profiles::Profile>> loaded;
   const std::array<contact::WheelRailPair, 2> pairs = contact::wheelRailPairs(m.geometry);
   for (std::size_t side = 0; side < 2; ++side) {
-    const std::vector<RailSliceSpec>& spec = p.rail_slices[side];
-    if (spec.empty()) continue;
-    std::vector<contact::RailSlice> slices;
-    for (const RailSliceSpec& sl : spec) {
-      auto& left = loaded[sl.rail];
-      if (!left)
-        left = loadProfile(sl.rail, profiles::ProfileKind::Rail, p.r0, sl.loc, d, "rail_slices");
-      if (!left) continue;
-      slices.push_back(
-          {sl.s, side == 0 ? left : std::make_shared<const profiles::Profile>(left->mirrored())});
-    }
-    d.throwIfAny();
-    const std::string key = std::string("profiles.rail_slices.") + (side == 0 ? "left" : "right");
-    for (std::size_t k = 1; k < slices.size(); ++k) {
-      const profiles::Profile& a = *slices[k - 1].rail;
-      const profiles::Profile& b = *slices[k].rail;
-      if (std::max(a.sMin(), b.sMin()) < std::min(a.sMax(), b.sMax())) continue;
-      d.add(spec[k].loc, key + "[" + std::to_string(k + 1) +
-                             "]: its rail and the slice before "
-                             "it (at s = " +
-                             formatNumber(spec[k - 1].s) +
-                             " m) cover no common part of the profile (lateral) parameter: "
-                             "there is nothing to blend between them");
-    }
-    d.throwIfAny();
-    try {
-      e.sliced[side] =
-          std::make_shared<const contact::SlicedRailSearch>(pairs[side], std::move(slices), search);
-    } catch (const InputError& err) {
-      d.add(spec.front().loc, key + ": " + err.diagnostics().front().message);
+    const std::string name = side == 0 ? "left" : "right";
+    if (!p.rail_slices[side].empty())
+      e.sliced[side] = slicedRail(p, p.rail_slices[side], side, "profiles.rail_slices." + name,
+                                  false, pairs[side], search, loaded);
+    for (std::size_t k = 0; k < p.extra_rails[side].size(); ++k) {
+      const ExtraRailSpec& r = p.extra_rails[side][k];
+      e.extra[side].push_back(slicedRail(
+          p, r.slices, side, "profiles.extra_rails." + name + "[" + std::to_string(k + 1) + "].slices",
+          true, pairs[side], search, loaded));
+      e.extra_names[side].push_back(r.name);
     }
   }
-  d.throwIfAny();
 }
 
 std::shared_ptr<const ElasticContactModel> compileElastic(const ProfilesSpec& p,
@@ -499,8 +516,9 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
                      "' has no wheelset (a body with kind = \"wheelset\"): nothing to put on the "
                      "rails");
   if (c.method != ContactMethod::Elastic &&
-      (!p.rail_slices[0].empty() || !p.rail_slices[1].empty()))
-    d.add(p.loc, std::string("profiles.rail_slices: a rail that changes along the track needs "
+      (!p.rail_slices[0].empty() || !p.rail_slices[1].empty() || !p.extra_rails[0].empty() ||
+       !p.extra_rails[1].empty()))
+    d.add(p.loc, std::string("profiles.rail_slices / extra_rails: a rail that changes along the track needs "
                              "contact.method = \"elastic\" (the ") +
                      ContactModel::methodName(c.method) +
                      " method's tables hold one rail profile for the whole track)");

@@ -59,6 +59,10 @@ struct ElasticContactModel {
   // [side]: the rail as slices along the track (profiles.rail_slices; null: the prismatic rail of
   // `search`, which then also serves the compile-time quantities below).
   std::array<std::shared_ptr<const contact::SlicedRailSearch>, 2> sliced;
+  // [side]: further rails (profiles.extra_rails: blades, noses, check rails), each present from
+  // its first slice to its last, with their names (outputs /contact/<ws>/<side>/rails/<name>).
+  std::array<std::vector<std::shared_ptr<const contact::SlicedRailSearch>>, 2> extra;
+  std::array<std::vector<std::string>, 2> extra_names;
   contact::ElasticNormalSpec normal;
   // Hunt-Crossley damping N = K_H delta^1.5 (1 + damping delta_dot) [s/m], derived from
   // ElasticSpec::damping_ratio at the nominal static wheel load of the centred tread contact:

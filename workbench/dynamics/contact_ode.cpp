@@ -64,14 +64,18 @@ ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
         const profiles::Profile& wheel = *search.pair().wheel;
         const auto n = static_cast<std::size_t>(
             (wheel.sMax() - wheel.sMin()) / search.spec().sample_step + 3.0);
-        contact::ElasticSearchWorkspace& sw = ww.elastic[side].search;
-        sw.gap.reserve(n);
-        sw.bound.reserve(n);
-        sw.minima.reserve(n);
-        sw.depth.reserve(n);
-        sw.sw.reserve(n);
-        sw.sr.reserve(n);
-        sw.ok.reserve(n);
+        const auto reserve = [n](contact::ElasticSearchWorkspace& sw) {
+          sw.gap.reserve(n);
+          sw.bound.reserve(n);
+          sw.minima.reserve(n);
+          sw.depth.reserve(n);
+          sw.sw.reserve(n);
+          sw.sr.reserve(n);
+          sw.ok.reserve(n);
+        };
+        reserve(ww.elastic[side].search);
+        for (std::size_t r = 0; r < contact.elastic->extra[side].size(); ++r)
+          reserve(ww.elastic[side].extra_search[r]);
       }
     }
   }

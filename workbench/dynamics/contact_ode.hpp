@@ -42,6 +42,7 @@
 // finite; lastError() names the wheelset, the time and the cause. Outputs are computed on demand
 // (wheelOutputs, bodyCoordinates, bodyAccelerations, elementOutputs) without changing the state the
 // integration depends on.
+#include <array>
 #include <Eigen/Dense>
 #include <memory>
 #include <span>
@@ -149,6 +150,10 @@ struct WheelOutput {
   double wheel_lift = 0.0;  // [m]
   bool derailed = false;
   double creep_x = 0.0, creep_y = 0.0;  // [N] creep forces summed over the patches
+  // Elastic contact on several rails (profiles.extra_rails): per rail (0 the running rail, k the
+  // k-th further rail) the normal force summed over its patches, the largest one's and the
+  // track-frame lateral position of that patch (0 where the wheel does not touch the rail).
+  std::array<double, 1 + kMaxExtraRails> rail_normal{}, rail_normal_max{}, rail_y{};
 };
 
 // Work counters (since construction or resetStats()).

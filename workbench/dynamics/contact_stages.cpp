@@ -443,8 +443,15 @@ void elasticWheelsetOutputs(const ContactModels& models, const StageInput& in, i
       PatchOutput extra;
       PatchOutput& po = k == best[0] ? o.patch[0] : (k == best[1] ? o.patch[1] : extra);
       patchOutput(p, none, creep, sigma, in.speed, po, o, F);
-      // The search's contact point is relative to the irregular rail's displaced origin.
-      po.y = ew.geometry.patch[static_cast<std::size_t>(k)].y + (s == 0 ? ww.irr.y_l : ww.irr.y_r);
+      // The search's contact point is relative to its rail's displaced origin.
+      const auto r = static_cast<std::size_t>(ew.patch_rail[static_cast<std::size_t>(k)]);
+      po.y = ew.geometry.patch[static_cast<std::size_t>(k)].y + ew.rail_offset[r].y;
+      // Per rail: the normal force, and the lateral position of its strongest patch.
+      if (p.q0 > o.rail_normal_max[r]) {
+        o.rail_normal_max[r] = p.q0;
+        o.rail_y[r] = po.y;
+      }
+      o.rail_normal[r] += p.q0;
     }
     o.regime = ww.regime[s];
     o.force_y = F.y();

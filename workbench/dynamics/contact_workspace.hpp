@@ -119,9 +119,24 @@ struct DescribedPoint {
 };
 
 // Elastic contact, one wheel: the search's patches (deepest first) and the wheel's lift.
+// The rail of one side at the wheelset: its displacement (irregularity, and the offsets of a
+// sliced rail) and its slope along the track.
+struct RailOffset {
+  double y = 0.0, z = 0.0;      // [m]
+  double y_s = 0.0, z_s = 0.0;  // [-] d/ds
+  double blend_s = 0.0;         // [1/m] d(blend)/ds of a rail changing along the track
+};
+
 struct ElasticWheelWork {
   contact::ElasticSearchWorkspace search;  // the search's scratch, per wheel (successive poses)
-  contact::ElasticWheelGeometry geometry;
+  contact::ElasticWheelGeometry geometry;  // every patch of the wheel, on every rail
+  // Further rails (ElasticContactModel::extra): a search workspace and result per rail, and the
+  // rail of each patch of `geometry` (0 the running rail, k the k-th further rail) with that
+  // rail's displacement.
+  std::array<contact::ElasticSearchWorkspace, kMaxExtraRails> extra_search;
+  contact::ElasticWheelGeometry extra_geometry;
+  std::array<int, contact::kMaxElasticPatches> patch_rail{};
+  std::array<RailOffset, 1 + kMaxExtraRails> rail_offset{};
   std::array<Patch, contact::kMaxElasticPatches> patch;
   double lift = 0.0;  // [m] rise of the wheel's tape circle above its centred height over its rail
 };

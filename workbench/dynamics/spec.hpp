@@ -20,8 +20,27 @@ namespace rb::dynamics {
 struct RailSliceSpec {
   double s = 0.0;    // [m] track arc length
   std::string rail;  // "60e1" or a resolved path, drawn as a left rail like ProfilesSpec::rail
+  double dy = 0.0;   // [m] offset of its rail frame toward the field side
+  double dz = 0.0;   // [m] offset of its rail frame, up
   SourceLoc loc;
 };
+
+// A further rail on one side (a switch blade, a crossing nose, a check rail): its own slices; it
+// exists from its first slice to its last (contact/sliced_rail.hpp).
+inline constexpr std::size_t kMaxExtraRails = 3;  // per side
+struct ExtraRailSpec {
+  std::string name;  // 1-32 letters, digits, '_'; not "rail" (the running rail)
+  std::vector<RailSliceSpec> slices;
+  SourceLoc loc;
+};
+// A rail's name in outputs (/contact/<ws>/<side>/rails/<name>).
+inline bool validRailName(const std::string& n) {
+  if (n.empty() || n.size() > 32) return false;
+  for (char c : n)
+    if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'))
+      return false;
+  return true;
+}
 
 struct ProfilesSpec {
   std::string wheel = "s1002";  // built-in "s1002", or a resolved path to a .prw / text file
@@ -41,6 +60,9 @@ struct ProfilesSpec {
   // profile slices at strictly increasing s, linearly blended between (sliced_rail.hpp); empty:
   // `rail` everywhere. The positioning (Lr from the gauge) stays that of `rail`.
   std::array<std::vector<RailSliceSpec>, 2> rail_slices;
+  // Further rails per side, each its own slices, searched by the elastic method with the running
+  // rail (their patches are the wheel's patches too).
+  std::array<std::vector<ExtraRailSpec>, 2> extra_rails;
   SourceLoc loc;
 };
 

@@ -28,6 +28,15 @@ void absoluteAccelerations(StateOutputs& state, std::vector<Eigen::Vector3d>& a)
 
 // Values per wheel and output time, with its two patches.
 constexpr std::size_t kWheelValues = kWheelChannelCount + 2 * kPatchChannelCount;
+
+// The rails of a side with further rails (profiles.extra_rails): "rail" (the running rail) and
+// theirs; none for a side with the running rail alone.
+std::vector<std::string> railNames(const dynamics::ContactModel& cm, std::size_t side) {
+  if (!cm.elastic || cm.elastic->extra_names[side].empty()) return {};
+  std::vector<std::string> out = {"rail"};
+  for (const std::string& n : cm.elastic->extra_names[side]) out.push_back(n);
+  return out;
+}
 // The conventions of the track-frame forces (dynamics::TrackForces) and of the patches.
 void writeContactConventions(io::ResultFile& f, const std::string& contact,
                              dynamics::ContactMethod method) {
@@ -110,11 +119,22 @@ void addContactChannels(const Model& m, const RunVehicle& rv, io::ResultFile& f,
     for (const char* side : {"left", "right"}) {
       const std::string base = contact + "/" + v.bodies[w].name + "/" + side + "/";
       addChannels(base, kWheelChannels, outputs);
-      if (!m.spec.run.output_patches) continue;
-      for (int p = 0; p < 2; ++p) {
-        const std::string patch = base + "patch" + std::to_string(p);
-        f.attr(patch, "role", std::string(info.patch_role[static_cast<std::size_t>(p)]));
-        addChannels(patch + "/", kPatchChannels, outputs);
+      if (m.spec.run.output_patches)
+        for (int p = 0; p < 2; ++p) {
+          const std::string patch = base + "patch" + std::to_string(p);
+          f.attr(patch, "role", std::string(info.patch_role[static_cast<std::size_t>(p)]));
+          addChannels(patch + "/", kPatchChannels, outputs);
+        }
+      // A side with further rails (profiles.extra_rails): the wheel's contact per rail.
+      const std::vector<std::string> rails = railNames(cm, side[0] == 'l' ? 0 : 1);
+      for (std::size_t r = 0; r < rails.size(); ++r) {
+        const std::string rb = base + "rails/" + rails[r] + "/";
+        outputs.push_back({rb + "normal_force", "N",
+                           "normal force of the wheel's patches on this rail (0: no contact)", ""});
+        outputs.push_back({rb + "y", "m",
+                           "lateral track-frame position of the strongest patch on this rail, "
+                           "positive to the left (0: no contact)",
+                           ""});
       }
     }
   writeContactConventions(f, contact, cm.method);
@@ -158,10 +178,13 @@ double* samplePatch(const dynamics::PatchOutput& p, double* out) {
   return out;
 }
 
-// Per-wheel values (kWheelChannels order, then its patches); returns the next output slot.
+// Per-wheel values (kWheelChannels order, then its patches, then its rails when its side has
+// further rails); returns the next output slot.
 double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t, double* out,
-                     CreepageMaximum& creepage, bool patches) {
-  for (const auto& w : wheels) {
+                     CreepageMaximum& creepage, bool patches,
+                     const std::array<std::size_t, 2>& rails) {
+  for (std::size_t i = 0; i < wheels.size(); ++i) {
+    const dynamics::WheelOutput& w = wheels[i];
     // The dominant patch (largest normal force) gives creepages and contact position.
     const auto& p = std::abs(w.patch[1].normal) > std::abs(w.patch[0].normal) && w.patch[1].active
                         ? w.patch[1]
@@ -170,6 +193,10 @@ double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t,
     for (const auto& c : kWheelChannels) *out++ = c.get(sample);
     if (patches)
       for (const auto& patch : w.patch) out = samplePatch(patch, out);
+    for (std::size_t r = 0; r < rails[i % 2]; ++r) {
+      *out++ = w.rail_normal[r];
+      *out++ = w.rail_y[r];
+    }
     creepage.update(w, t);
   }
   return out;
@@ -207,7 +234,9 @@ VehicleOutputs::VehicleOutputs(const Model& m, const RunVehicle& v, vehicle::Veh
       state_(ode, contact_),
       q_(v.vehicle.bodies.size()),
       a_(v.vehicle.bodies.size()),
-      values_(v.output_elements.size()) {}
+      values_(v.output_elements.size()) {
+  if (v.contact) rails_ = {railNames(*v.contact, 0).size(), railNames(*v.contact, 1).size()};
+}
 
 void VehicleOutputs::declare(io::ResultFile& f, std::vector<OutputChannel>& outputs) const {
   addVehicleChannels(m_, v_, f, outputs);
@@ -235,11 +264,12 @@ double* VehicleOutputs::sample(double t, const double* y, double* out) {
   const bool patches = m_.spec.run.output_patches;
   if (!wheels) {
     const std::size_t n =
-        state_.wheelOutputs().size() * (patches ? kWheelValues : kWheelChannelCount);
+        state_.wheelOutputs().size() * (patches ? kWheelValues : kWheelChannelCount) +
+        state_.wheelOutputs().size() / 2 * 2 * (rails_[0] + rails_[1]);
     for (std::size_t k = 0; k < n; ++k) *out++ = std::numeric_limits<double>::quiet_NaN();
     return out;
   }
-  return sampleWheels(state_.wheelOutputs(), t, out, creepage_, patches);
+  return sampleWheels(state_.wheelOutputs(), t, out, creepage_, patches, rails_);
 }
 
 }  // namespace rb::run

@@ -4,6 +4,7 @@
 // channel rows (channels.hpp), and its values at an output time from one evaluation of the model
 // (StateOutputs). The paths of the only vehicle of a run are the file's /bodies, /elements and
 // /contact; in a run of several, each vehicle's are under /vehicles/<name>.
+#include <array>
 #include <span>
 #include <string>
 #include <vector>
@@ -50,6 +51,8 @@ class VehicleOutputs {
   std::vector<vehicle::Vector6d> q_;
   std::vector<Eigen::Vector3d> a_;
   std::vector<vehicle::ElementValue> values_;
+  // Rails written per wheel of each side (profiles.extra_rails; 0: the running rail alone).
+  std::array<std::size_t, 2> rails_{};
 };
 
 }  // namespace rb::run

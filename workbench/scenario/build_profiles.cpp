@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include "workbench/core/strings.hpp"
@@ -25,79 +26,156 @@ std::string profileSource(Reader& r, const Node& n, const std::string& key,
   }
 }
 
-// profiles.rail_slices = { left = { { s = 0, rail = "60e1" }, ... }, right = { ... } }.
-constexpr std::size_t kMaxRailSlices = 2000;  // per side: a turnout needs tens
+// profiles.rail_slices = { left = { { s = 0, rail = "60e1", dy = 0, dz = 0 }, ... }, right = ... }
+// and profiles.extra_rails = { right = { { name = "nose", slices = { ... } }, ... } }.
+constexpr std::size_t kMaxRailSlices = 2000;  // per rail: a turnout needs tens
+constexpr double kMaxRailOffset = 0.5;        // [m] |dy|, |dz| of a slice
 
-void railSlices(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
-  const Node* v = r.value("rail_slices");
-  if (!v) return;
-  const std::string form =
-      "rail_slices must be a table { left = { { s = s0, rail = \"file\" }, ... }, right = "
-      "{ ... } } (s the track arc length [m], strictly increasing)";
-  if (v->type != Node::Type::Table || !v->items.empty() || v->fields.empty()) {
-    r.error(*v, form + ", got " + v->describe());
+// One side's list of slices ("what" names it in messages); false when malformed.
+bool sliceList(Reader& r, LuaHost& host, const Node& list, const std::string& what,
+               std::vector<dynamics::RailSliceSpec>& out) {
+  const std::string form = "{ s = <m>, rail = \"60e1\" or a rail profile file, dy = <m>, dz = <m> }";
+  if (list.type != Node::Type::Table || !list.fields.empty() || list.items.empty()) {
+    r.error(list, what + " must be a non-empty list of slices " + form + ", got " + list.describe());
+    return false;
+  }
+  if (list.items.size() > kMaxRailSlices) {
+    r.error(list, what + ": at most " + std::to_string(kMaxRailSlices) + " slices, got " +
+                      std::to_string(list.items.size()));
+    return false;
+  }
+  bool ok = true;
+  for (std::size_t i = 0; i < list.items.size(); ++i) {
+    const Node& item = list.items[i];
+    const std::string at = what + "[" + std::to_string(i + 1) + "]";
+    const bool table = item.type == Node::Type::Table && item.items.empty();
+    const Node* s = table ? item.field("s") : nullptr;
+    const Node* rail = table ? item.field("rail") : nullptr;
+    bool known = table;
+    if (table)
+      for (const auto& [key, value] : item.fields)
+        known = known && (key == "s" || key == "rail" || key == "dy" || key == "dz");
+    if (!s || !rail || !known) {
+      r.error(item, at + " must be " + form + " (dy, dz optional), got " + item.describe());
+      ok = false;
+      continue;
+    }
+    if (s->type != Node::Type::Number || !std::isfinite(s->number) || s->number < 0.0) {
+      r.error(*s, at + ".s must be a track arc length >= 0 [m], got " + s->describe());
+      ok = false;
+      continue;
+    }
+    if (rail->type != Node::Type::String || rail->string.empty()) {
+      r.error(*rail, at + ".rail must be \"60e1\" or a rail profile file, got " + rail->describe());
+      ok = false;
+      continue;
+    }
+    if (!out.empty() && !(s->number > out.back().s)) {
+      r.error(*s, at + ".s = " + formatNumber(s->number) +
+                      " m: the slices' s must increase strictly (the one before is at " +
+                      formatNumber(out.back().s) + " m)");
+      ok = false;
+      continue;
+    }
+    dynamics::RailSliceSpec sl;
+    sl.s = s->number;
+    sl.loc = item.loc;
+    for (auto [key, target] : {std::pair{"dy", &sl.dy}, std::pair{"dz", &sl.dz}}) {
+      const Node* o = item.field(key);
+      if (!o) continue;
+      if (o->type != Node::Type::Number || !(std::abs(o->number) <= kMaxRailOffset)) {
+        r.error(*o, at + "." + key + " must be an offset of at most " +
+                        formatNumber(kMaxRailOffset) + " m, got " + o->describe());
+        ok = false;
+        continue;
+      }
+      *target = o->number;
+    }
+    if (rail->string == "60e1") {
+      sl.rail = "60e1";
+    } else {
+      try {
+        sl.rail = host.resolveDataFile(rail->string, item.loc);
+      } catch (const InputError& e) {
+        r.error(*rail, at + ".rail: " + e.diagnostics().front().message);
+        ok = false;
+        continue;
+      }
+    }
+    out.push_back(std::move(sl));
+  }
+  return ok;
+}
+
+// The sides of a { left = ..., right = ... } table; each side's value goes to `side`.
+template <class Side>
+void eachSide(Reader& r, const Node& v, const std::string& key, const std::string& form,
+              Side side) {
+  if (v.type != Node::Type::Table || !v.items.empty() || v.fields.empty()) {
+    r.error(v, key + " must be a table " + form + ", got " + v.describe());
     return;
   }
-  for (const auto& [name, list] : v->fields) {
+  for (const auto& [name, list] : v.fields) {
     if (name != "left" && name != "right") {
-      r.error(list, "rail_slices: unknown side '" + name + "' (left or right)");
+      r.error(list, key + ": unknown side '" + name + "' (left or right)");
       continue;
     }
-    const std::size_t side = name == "left" ? 0 : 1;
-    const std::string what = "rail_slices." + name;
-    if (list.type != Node::Type::Table || !list.fields.empty() || list.items.empty()) {
-      r.error(list, what + " must be a non-empty list { { s = s0, rail = \"file\" }, ... }, got " +
-                        list.describe());
-      continue;
-    }
-    if (list.items.size() > kMaxRailSlices) {
-      r.error(list, what + ": at most " + std::to_string(kMaxRailSlices) + " slices, got " +
-                        std::to_string(list.items.size()));
-      continue;
-    }
-    std::vector<dynamics::RailSliceSpec> out;
-    for (std::size_t i = 0; i < list.items.size(); ++i) {
-      const Node& item = list.items[i];
-      const std::string at = what + "[" + std::to_string(i + 1) + "]";
-      const Node* s = item.type == Node::Type::Table ? item.field("s") : nullptr;
-      const Node* rail = item.type == Node::Type::Table ? item.field("rail") : nullptr;
-      if (!s || !rail || item.fields.size() != 2 || !item.items.empty()) {
-        r.error(item, at + " must be { s = <m>, rail = \"60e1\" or a rail profile file }, got " +
-                          item.describe());
-        continue;
-      }
-      if (s->type != Node::Type::Number || !std::isfinite(s->number) || s->number < 0.0) {
-        r.error(*s, at + ".s must be a track arc length >= 0 [m], got " + s->describe());
-        continue;
-      }
-      if (rail->type != Node::Type::String || rail->string.empty()) {
-        r.error(*rail,
-                at + ".rail must be \"60e1\" or a rail profile file, got " + rail->describe());
-        continue;
-      }
-      if (!out.empty() && !(s->number > out.back().s)) {
-        r.error(*s, at + ".s = " + formatNumber(s->number) +
-                        " m: the slices' s must increase strictly (the one before is at " +
-                        formatNumber(out.back().s) + " m)");
-        continue;
-      }
-      dynamics::RailSliceSpec sl;
-      sl.s = s->number;
-      sl.loc = item.loc;
-      if (rail->string == "60e1") {
-        sl.rail = "60e1";
-      } else {
-        try {
-          sl.rail = host.resolveDataFile(rail->string, item.loc);
-        } catch (const InputError& e) {
-          r.error(*rail, at + ".rail: " + e.diagnostics().front().message);
-          continue;
-        }
-      }
-      out.push_back(std::move(sl));
-    }
-    p.rail_slices[side] = std::move(out);
+    side(name == "left" ? std::size_t{0} : std::size_t{1}, key + "." + name, list);
   }
+}
+
+void railSlices(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
+  if (const Node* v = r.value("rail_slices"))
+    eachSide(r, *v, "rail_slices",
+             "{ left = { { s = s0, rail = \"file\" }, ... }, right = { ... } } (s the track arc "
+             "length [m], strictly increasing)",
+             [&](std::size_t side, const std::string& what, const Node& list) {
+               std::vector<dynamics::RailSliceSpec> out;
+               if (sliceList(r, host, list, what, out)) p.rail_slices[side] = std::move(out);
+             });
+  constexpr std::size_t kMaxExtra = dynamics::kMaxExtraRails;
+  if (const Node* v = r.value("extra_rails"))
+    eachSide(
+        r, *v, "extra_rails",
+        "{ right = { { name = \"nose\", slices = { { s = s0, rail = \"file\" }, ... } }, ... } }",
+        [&](std::size_t side, const std::string& what, const Node& list) {
+          if (list.type != Node::Type::Table || !list.fields.empty() || list.items.empty() ||
+              list.items.size() > kMaxExtra) {
+            r.error(list, what + " must be a list of 1 to " + std::to_string(kMaxExtra) +
+                              " rails { name = \"...\", slices = { ... } }, got " +
+                              list.describe());
+            return;
+          }
+          std::vector<dynamics::ExtraRailSpec> rails;
+          for (std::size_t i = 0; i < list.items.size(); ++i) {
+            const Node& item = list.items[i];
+            const std::string at = what + "[" + std::to_string(i + 1) + "]";
+            const Node* name = item.type == Node::Type::Table ? item.field("name") : nullptr;
+            const Node* slices = item.type == Node::Type::Table ? item.field("slices") : nullptr;
+            if (!name || !slices || item.fields.size() != 2 || !item.items.empty() ||
+                name->type != Node::Type::String || !dynamics::validRailName(name->string)) {
+              r.error(item, at + " must be { name = \"nose\" (1-32 letters, digits or '_'), "
+                                 "slices = { ... } }, got " + item.describe());
+              continue;
+            }
+            const bool twice = name->string == "rail" ||
+                               std::any_of(rails.begin(), rails.end(), [&](const auto& o) {
+                                 return o.name == name->string;
+                               });
+            if (twice) {
+              r.error(*name, at + ".name '" + name->string +
+                                 "' is taken (\"rail\" is the running rail's, the others must "
+                                 "differ)");
+              continue;
+            }
+            dynamics::ExtraRailSpec rail;
+            rail.name = name->string;
+            rail.loc = item.loc;
+            if (sliceList(r, host, *slices, at + ".slices", rail.slices))
+              rails.push_back(std::move(rail));
+          }
+          p.extra_rails[side] = std::move(rails);
+        });
 }
 
 }  // namespace

@@ -276,7 +276,13 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
               "profile slices at strictly increasing track arc lengths s [m], each drawn as a "
               "left rail like rail, blended linearly between slices at fixed lateral "
               "coordinate; before the first and after the last slice the rail is that slice "
-              "(docs/sliced_rails.md)")}});
+              "(docs/sliced_rails.md); a slice may move its rail by dy (toward the field side) and "
+              "dz (up) [m], interpolated between slices"),
+        typed("extra_rails", ValueType::Table, "-",
+              "further rails per side (elastic contact only), each with its own slices and "
+              "present from its first slice to its last: { right = { { name = \"nose\", slices "
+              "= { { s = 10, rail = \"nose.txt\", dz = -0.01 }, ... } } } }; at most 3 per "
+              "side; their normal forces are written per rail (docs/sliced_rails.md)")}});
   s.push_back(
       {"contact",
        "Wheel/rail contact: constraint method (paper section 2.3-2.4), LUT flange Hertz contact "

@@ -1,4 +1,4 @@
--- hostile: expect="rail_slices_constraint_method.lua:9: profiles.rail_slices: a rail that changes along the track needs contact.method = \"elastic\""
+-- hostile: expect="rail_slices_constraint_method.lua:9: profiles.rail_slices / extra_rails: a rail that changes along the track needs contact.method = \"elastic\""
 -- hostile: expect="kec method's tables hold one rail profile"
 -- Rail slices on a constraint contact method: refused where the slices are given, before any
 -- table is built.
