@@ -272,9 +272,24 @@ def train_braking_block(outdir: str) -> str:
                   "evenly braked / hand calculation", "unit"], body)
 
 
+TURNOUT = "turnout"
+
+
+def turnout_block(outdir: str) -> str:
+    """docs/turnouts.md: the shipped turnout scene against the same track with a plain rail, and
+    the sliced-rail validation scenes against their references (bench/turnout.py)."""
+    rows = read_csv(os.path.join(outdir, TURNOUT, "turnout.csv"))
+    if not rows:
+        return missing(f"{outdir}/{TURNOUT}/turnout.csv (./wb studies --only {TURNOUT})")
+    body = [[r["quantity"], fmt(num(r["value"]), "{:.5g}"), fmt(num(r["reference"]), "{:.5g}"),
+             r["unit"]] for r in rows]
+    return table(["quantity", "value", "reference", "unit"], body)
+
+
 def sweep_blocks(outdir: str) -> Dict[str, Dict[str, str]]:
     return {"studies.md": {SWEEP: sweep_block(outdir)},
             "performance.md": {THROUGHPUT: throughput_block(outdir)},
             "trains.md": {TRAIN_SCALING: train_scaling_block(outdir),
                           TRAIN_SCALING_COUPLED: train_scaling_block(outdir, TRAIN_SCALING_COUPLED),
-                          TRAIN_BRAKING: train_braking_block(outdir)}}
+                          TRAIN_BRAKING: train_braking_block(outdir)},
+            "turnouts.md": {TURNOUT: turnout_block(outdir)}}

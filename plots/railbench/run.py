@@ -76,6 +76,7 @@ from .common import FigureSpec, figure_command, write_figures
 from .h5 import ResultFileError
 from .style import DPI, KINEMATIC_KINDS, plt
 from .result import Result, load_result
+from .rails_figs import fig_rails, rail_sides
 from .track_figs import fig_curvature_cant, fig_irregularities, fig_irregularity_psd, fig_track_plan
 from .layout import _num, _pair, add_failure_banner, failure_text
 from .vehicle_figs import _CONTACT_ROWS, _CREEP_ROWS, _ROW_FLANGE, _ROW_INDENT, _contact_rows, _row_present, fig_bodies_car, fig_contact_forces, fig_creep, fig_flange_contact, fig_wheelsets
@@ -202,6 +203,9 @@ FIGURES: List[FigureSpec] = [
     # Groups of /assessment the run did not write are panels left out (assessment.py).
     FigureSpec("assessment", has_assessment, fig_assessment,
                "assessment: Y/Q, track shift force, wheel unloading, comfort, stability, wear"),
+    FigureSpec("rails", lambda r: bool(rail_sides(r)), fig_rails,
+               "normal force and contact position of every wheel on every rail of a side with "
+               "several rails (a switch blade, a crossing nose)"),
     FigureSpec("train", lambda r: bool(train_connections(r)), fig_train,
                "in-train forces per connection against distance, and the vehicles' speeds"),
     FigureSpec("train_assessment", lambda r: bool(train_assessed(r)), fig_train_assessment,

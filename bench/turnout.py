@@ -1,0 +1,147 @@
+#!/usr/bin/env python3
+"""The shipped turnout scene and the sliced-rail validations, measured (docs/turnouts.md).
+
+usage: bench/turnout.py [CSV] [--workbench BIN]
+
+Runs scenarios/turnout/diverging_r190.lua (the Manchester wagon into the diverging route of a
+60E1-190 switch at 40 km/h) and reads, for the leading wheelset's left (outer) wheel, where the
+switch blade takes over the wheel from the stock rail, the forces on the blade and the
+derailment quotient there; then the same wagon on the same track with a plain rail (the scene
+without its slices and further rails) for the cost of the turnout's rails and for how the
+contact differs; then the validation scenes of tests/run/test_sliced_rails.cpp (rails lowered
+along the track, the load moving between two rails).
+
+Rows of the CSV (default out/studies/turnout/turnout.csv): quantity, value, reference, unit,
+commit.
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "plots"))
+from railbench import provenance  # noqa: E402
+
+SCENE = "scenarios/turnout/diverging_r190.lua"
+TOE = 60.0  # [m] the scene's toe
+LEFT_RADIUS = 190 + 1.435 / 2  # [m] scenarios/turnout/lib.lua
+
+
+def run(wb, lua, out):
+    r = subprocess.run([wb, "--root", ROOT, "run", lua, "--out", out, "--quiet"], cwd=ROOT,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    if r.returncode != 0:
+        raise RuntimeError(f"{lua}: exit {r.returncode}: {r.stderr[-500:]}")
+    return h5py.File(out, "r")
+
+
+def crossing(s, a, b):
+    """The first s where a - b changes sign from > 0 to <= 0 (linear between samples)."""
+    d = a - b
+    for i in range(1, len(s)):
+        if d[i - 1] > 0 >= d[i]:
+            return float(s[i - 1] + (s[i] - s[i - 1]) * d[i - 1] / (d[i - 1] - d[i]))
+    return math.nan
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("csv", nargs="?", default=os.path.join(ROOT, "out", "studies", "turnout",
+                                                          "turnout.csv"))
+    ap.add_argument("--workbench", default=os.path.join(ROOT, "build", "workbench", "app",
+                                                        "workbench"))
+    a = ap.parse_args(argv)
+    commit = provenance.tag(provenance.current())
+    rows = []
+
+    def row(q, value, reference, unit):
+        rows.append(dict(quantity=q, value=f"{value:.6g}",
+                         reference="" if reference is None else f"{reference:.6g}", unit=unit,
+                         commit=commit))
+
+    with tempfile.TemporaryDirectory(prefix="rb_turnout_") as tmp:
+        text = open(os.path.join(ROOT, SCENE)).read()
+        plain_text, n = re.subn(r",\n\s*rail_slices = \{ left = stock \}, extra_rails = "
+                                r"\{ left = \{ blade \} \}", "", text)
+        if n != 1:
+            raise RuntimeError(f"{SCENE}: its rails are not where this study expects them")
+        plain_lua = os.path.join(ROOT, "scenarios", "turnout", ".plain_tmp.lua")
+        try:
+            with open(plain_lua, "w") as f:
+                f.write(plain_text)
+            t = run(a.workbench, SCENE, os.path.join(tmp, "turnout.h5"))
+            p = run(a.workbench, plain_lua, os.path.join(tmp, "plain.h5"))
+        finally:
+            os.remove(plain_lua)
+        g = "/contact/ws1/left/"
+        s = t["/bodies/ws1/s"][:]
+        stock, blade = t[g + "rails/rail/normal_force"][:], t[g + "rails/blade/normal_force"][:]
+        on_blade = blade > 0
+        first = float(s[np.argmax(on_blade)]) if on_blade.any() else math.nan
+        width = lambda x: (x - TOE) ** 2 / (2 * LEFT_RADIUS) * 1e3  # noqa: E731  [mm]
+        row("ws1 left wheel: first contact with the blade (x after the toe)", first - TOE, None,
+            "m")
+        row("... the blade's width there (the stock rail's offset x^2 / 2 R_L)", width(first),
+            None, "mm")
+        last_stock = float(s[np.nonzero(stock > 0)[0][-1]]) if (stock > 0).any() else math.nan
+        row("ws1 left wheel: last contact with the stock rail (x after the toe)",
+            last_stock - TOE, None, "m")
+        row("... the blade's width there", width(last_stock), None, "mm")
+        Y, Q = t[g + "Y"][:], t[g + "Q"][:]
+        row("ws1 left wheel: largest lateral force Y while on the blade", float(Y[on_blade].max()),
+            None, "N")
+        row("ws1 left wheel: largest Y/Q (instantaneous, 200 Hz samples) while on the blade",
+            float((Y[on_blade] / Q[on_blade]).max()), None, "-")
+        row("ws1 left wheel: largest normal force on the blade", float(blade.max()), None, "N")
+        tp = p["/contact/ws1/left/"]
+        sp = p["/bodies/ws1/s"][:]
+        row("plain rail, same track: ws1 left wheel's largest Y after the toe",
+            float(tp["Y"][:][sp > TOE].max()), None, "N")
+        row("plain rail, same track: ws1 left wheel's largest Y/Q after the toe",
+            float((tp["Y"][:] / tp["Q"][:])[sp > TOE].max()), None, "-")
+        for label, f in (("turnout rails", t), ("plain rail", p)):
+            st = f["stats"].attrs
+            row(f"{label}: CPU time ({f['/time'][-1]:.2f} s simulated)", float(st["cpu_time_s"]),
+                None, "s")
+            row(f"{label}: rhs evaluations", float(st["rhs_evals"]), None, "-")
+        # Validation scenes (tests/run/test_sliced_rails.cpp).
+        beta = 0.025
+        lw = run(a.workbench, "tests/run/data/sliced_rails_lowered.lua",
+                 os.path.join(tmp, "lowered.h5"))
+        drops = [float(lw[f"/bodies/{w}/z"][-1] - lw[f"/bodies/{w}/z"][0])
+                 for w in ("ws1", "ws2", "ws3", "ws4")]
+        row("both rails lowered 3 mm: wheelsets' drop (mean of 4; reference 3 cos(beta))",
+            -np.mean(drops) * 1e3, 3 * math.cos(beta), "mm")
+        ll = run(a.workbench, "tests/run/data/sliced_rails_lowered_left.lua",
+                 os.path.join(tmp, "lowered_left.h5"))
+        rolls = [float(ll[f"/bodies/{w}/roll"][-1] - ll[f"/bodies/{w}/roll"][0])
+                 for w in ("ws1", "ws2", "ws3", "ws4")]
+        row("left rail lowered 3 mm: wheelsets' roll (mean of 4; reference 3 cos(beta) / 1.5 m)",
+            -np.mean(rolls) * 1e3, 3 * math.cos(beta) / 1.5, "mrad")
+        tr = run(a.workbench, "tests/run/data/sliced_rails_transfer.lua",
+                 os.path.join(tmp, "transfer.h5"))
+        for w in ("ws1", "ws4"):
+            c = f"/contact/{w}/right/rails/"
+            x = crossing(tr[f"/bodies/{w}/s"][:], tr[c + "rail/normal_force"][:],
+                         tr[c + "nose/normal_force"][:])
+            row(f"two rails level at s = 80 m: {w}'s load half on each at", x, 80.0, "m")
+    os.makedirs(os.path.dirname(os.path.abspath(a.csv)), exist_ok=True)
+    with open(a.csv, "w", newline="") as f:
+        w = csv.DictWriter(f, list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)
+    for r_ in rows:
+        print(r_["quantity"], r_["value"], r_["reference"], r_["unit"])
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
