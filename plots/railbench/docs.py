@@ -44,7 +44,7 @@ from .docs_blocks import ROUTE, route_sections_block, assessment_cases_block, ac
 from .docs_paper import PAPER_TABLES, flange_paper_block, paper_table_blocks, tables_9_10_block
 from .docs_stability import FOLDERS as STABILITY, stability_blocks
 from .docs_stress import stress_hard_block
-from .docs_sweeps import SWEEP, THROUGHPUT, TRAIN_BRAKING, TRAIN_SCALING, TRAIN_SCALING_COUPLED, sweep_blocks
+from .docs_sweeps import SWEEP, THROUGHPUT, TRAIN_BRAKING, TRAIN_SCALING, TRAIN_SCALING_COUPLED, TURNOUT, sweep_blocks
 from .docs_three_asks import EFFECTS, PRECISION, STRESS, STRESS_KEC, three_asks_blocks
 from .docs_three_way import FOLDER as THREE_WAY, three_way_blocks
 from .docs_tables import tables_block
@@ -72,7 +72,7 @@ BLOCK_SOURCES = {
     "stability_wagon": ("stability_kec", "stability_lut"), "stability_modes":
     ("stability_kec", "stability_lut"), "stability_method": STABILITY,
     "stability_verification": "build", SWEEP: SWEEP, THROUGHPUT: THROUGHPUT,
-    TRAIN_SCALING: TRAIN_SCALING, TRAIN_BRAKING: TRAIN_BRAKING,
+    TRAIN_SCALING: TRAIN_SCALING, TRAIN_BRAKING: TRAIN_BRAKING, TURNOUT: TURNOUT,
     TRAIN_SCALING_COUPLED: TRAIN_SCALING_COUPLED,
     **{b: THREE_WAY for b in ("three_way_steady", "three_way_extremes", "three_way_dynamic",
                               "three_way_cost", "three_way_trial",
