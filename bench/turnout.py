@@ -29,6 +29,8 @@ import numpy as np
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "plots"))
 from railbench import provenance  # noqa: E402
+from railbench.result import load_result  # noqa: E402
+from railbench.run import build_figure  # noqa: E402
 
 SCENE = "scenarios/turnout/diverging_r190.lua"
 TOE = 60.0  # [m] the scene's toe
@@ -81,6 +83,9 @@ def main(argv=None) -> int:
             p = run(a.workbench, plain_lua, os.path.join(tmp, "plain.h5"))
         finally:
             os.remove(plain_lua)
+        # The scene's rails figure, for docs/turnouts.md (figures/turnout_rails.png).
+        fig = build_figure(load_result(os.path.join(tmp, "turnout.h5")), "rails")
+        fig.savefig(os.path.join(os.path.dirname(os.path.abspath(a.csv)), "rails.png"), dpi=110)
         g = "/contact/ws1/left/"
         s = t["/bodies/ws1/s"][:]
         stock, blade = t[g + "rails/rail/normal_force"][:], t[g + "rails/blade/normal_force"][:]

@@ -188,7 +188,7 @@ def coupling_block(build: str) -> Optional[str]:
 
 STUDIES = ("efficiency_case3", "flange_stiffness", "refinement", "work_precision", "effects",
            "speed", "default_scene", "paper_settings_flange", "paper_settings", "validation", "tables", PRECISION,
-           STRESS_KEC, STRESS, EFFECTS, SWEEP, ROUTE, THREE_WAY) + STABILITY
+           STRESS_KEC, STRESS, EFFECTS, SWEEP, ROUTE, THREE_WAY, TURNOUT) + STABILITY
 
 
 def copy_figures(outdir: str, docs: str, pages) -> List[str]:
