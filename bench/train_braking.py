@@ -17,31 +17,20 @@ every run.
 
 Rows of the CSV (default out/studies/train_braking.csv): quantity, braking, coasting, unit, commit.
 """
-import argparse
-import csv
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
-import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "plots"))
-from railbench import provenance  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scene_runs  # noqa: E402
 
 SCENE = "scenarios/train/loco_braking_r500.lua"
 RAKE = "tests/run/data/train_braking_rake.lua"
-
-
-def run(wb, lua, out):
-    r = subprocess.run([wb, "--root", ROOT, "run", lua, "--out", out, "--quiet"], cwd=ROOT,
-                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    if r.returncode != 0:
-        raise RuntimeError(f"{lua}: exit {r.returncode}: {r.stderr[-500:]}")
-    return h5py.File(out, "r")
 
 
 def last(f, path, seconds=2.0):
@@ -55,13 +44,8 @@ def peak_after(f, path, t0=1.0):
 
 
 def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("csv", nargs="?", default=os.path.join(ROOT, "out", "studies",
-                                                          "train_braking.csv"))
-    ap.add_argument("--workbench", default=os.path.join(ROOT, "build", "workbench", "app",
-                                                        "workbench"))
-    a = ap.parse_args(argv)
-    commit = provenance.tag(provenance.current())
+    a = scene_runs.arguments(__doc__, "train_braking.csv", argv)
+    commit = scene_runs.commit()
     rows = []
 
     def row(q, braking, coasting, unit):
@@ -89,8 +73,8 @@ def main(argv=None) -> int:
         try:
             with open(coast_lua, "w") as f:
                 f.write(coast_text)
-            b = run(a.workbench, SCENE, os.path.join(tmp, "braking.h5"))
-            c = run(a.workbench, coast_lua, os.path.join(tmp, "coasting.h5"))
+            b = scene_runs.run(a.workbench, SCENE, os.path.join(tmp, "braking.h5"))
+            c = scene_runs.run(a.workbench, coast_lua, os.path.join(tmp, "coasting.h5"))
         finally:
             os.remove(coast_lua)
         for name in ("loco-wagon1", "wagon1-wagon2", "wagon2-wagon3"):
@@ -118,7 +102,7 @@ def main(argv=None) -> int:
             row(f"{label} run: CPU time ({f['/time'][-1]:.0f} s simulated)",
                 float(st["cpu_time_s"]), None, "s")
             row(f"{label} run: rhs evaluations", float(st["rhs_evals"]), None, "-")
-        r = run(a.workbench, RAKE, os.path.join(tmp, "rake.h5"))
+        r = scene_runs.run(a.workbench, RAKE, os.path.join(tmp, "rake.h5"))
         # The hand calculation: 60 kN decelerate three equal wagons (bodies plus the wheelsets'
         # rotating mass I_yy / r0^2 = 112 / 0.46^2 kg each, scenarios/vehicles/
         # manchester_wagon1.lua).
@@ -139,13 +123,7 @@ def main(argv=None) -> int:
             float(r["/vehicles/w2/motion/jerk_1s"][mid]), acc / 0.95, "m/s^3")
         row("rake: w1-w2 most compressive force (the run-in)",
             float(r["/train/connections/w1-w2/force"][:].min()), 2 * mv * acc, "N")
-    os.makedirs(os.path.dirname(os.path.abspath(a.csv)), exist_ok=True)
-    with open(a.csv, "w", newline="") as f:
-        w = csv.DictWriter(f, list(rows[0].keys()))
-        w.writeheader()
-        w.writerows(rows)
-    for r_ in rows:
-        print(r_["quantity"], r_["braking"], r_["coasting"], r_["unit"])
+    scene_runs.write_rows(a.csv, rows, ("quantity", "braking", "coasting", "unit"))
     return 0
 
 

@@ -14,35 +14,24 @@ along the track, the load moving between two rails).
 Rows of the CSV (default out/studies/turnout/turnout.csv): quantity, value, reference, unit,
 commit.
 """
-import argparse
-import csv
 import math
 import os
 import re
-import subprocess
 import sys
 import tempfile
 
-import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "plots"))
-from railbench import provenance  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import scene_runs  # noqa: E402
 from railbench.result import load_result  # noqa: E402
 from railbench.run import build_figure  # noqa: E402
 
 SCENE = "scenarios/turnout/diverging_r190.lua"
 TOE = 60.0  # [m] the scene's toe
 LEFT_RADIUS = 190 + 1.435 / 2  # [m] scenarios/turnout/lib.lua
-
-
-def run(wb, lua, out):
-    r = subprocess.run([wb, "--root", ROOT, "run", lua, "--out", out, "--quiet"], cwd=ROOT,
-                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    if r.returncode != 0:
-        raise RuntimeError(f"{lua}: exit {r.returncode}: {r.stderr[-500:]}")
-    return h5py.File(out, "r")
 
 
 def crossing(s, a, b):
@@ -55,13 +44,8 @@ def crossing(s, a, b):
 
 
 def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("csv", nargs="?", default=os.path.join(ROOT, "out", "studies", "turnout",
-                                                          "turnout.csv"))
-    ap.add_argument("--workbench", default=os.path.join(ROOT, "build", "workbench", "app",
-                                                        "workbench"))
-    a = ap.parse_args(argv)
-    commit = provenance.tag(provenance.current())
+    a = scene_runs.arguments(__doc__, "turnout/turnout.csv", argv)
+    commit = scene_runs.commit()
     rows = []
 
     def row(q, value, reference, unit):
@@ -79,8 +63,8 @@ def main(argv=None) -> int:
         try:
             with open(plain_lua, "w") as f:
                 f.write(plain_text)
-            t = run(a.workbench, SCENE, os.path.join(tmp, "turnout.h5"))
-            p = run(a.workbench, plain_lua, os.path.join(tmp, "plain.h5"))
+            t = scene_runs.run(a.workbench, SCENE, os.path.join(tmp, "turnout.h5"))
+            p = scene_runs.run(a.workbench, plain_lua, os.path.join(tmp, "plain.h5"))
         finally:
             os.remove(plain_lua)
         # The scene's rails figure, for docs/turnouts.md (figures/turnout_rails.png).
@@ -119,32 +103,26 @@ def main(argv=None) -> int:
             row(f"{label}: rhs evaluations", float(st["rhs_evals"]), None, "-")
         # Validation scenes (tests/run/test_sliced_rails.cpp).
         beta = 0.025
-        lw = run(a.workbench, "tests/run/data/sliced_rails_lowered.lua",
+        lw = scene_runs.run(a.workbench, "tests/run/data/sliced_rails_lowered.lua",
                  os.path.join(tmp, "lowered.h5"))
         drops = [float(lw[f"/bodies/{w}/z"][-1] - lw[f"/bodies/{w}/z"][0])
                  for w in ("ws1", "ws2", "ws3", "ws4")]
         row("both rails lowered 3 mm: wheelsets' drop (mean of 4; reference 3 cos(beta))",
             -np.mean(drops) * 1e3, 3 * math.cos(beta), "mm")
-        ll = run(a.workbench, "tests/run/data/sliced_rails_lowered_left.lua",
+        ll = scene_runs.run(a.workbench, "tests/run/data/sliced_rails_lowered_left.lua",
                  os.path.join(tmp, "lowered_left.h5"))
         rolls = [float(ll[f"/bodies/{w}/roll"][-1] - ll[f"/bodies/{w}/roll"][0])
                  for w in ("ws1", "ws2", "ws3", "ws4")]
         row("left rail lowered 3 mm: wheelsets' roll (mean of 4; reference 3 cos(beta) / 1.5 m)",
             -np.mean(rolls) * 1e3, 3 * math.cos(beta) / 1.5, "mrad")
-        tr = run(a.workbench, "tests/run/data/sliced_rails_transfer.lua",
+        tr = scene_runs.run(a.workbench, "tests/run/data/sliced_rails_transfer.lua",
                  os.path.join(tmp, "transfer.h5"))
         for w in ("ws1", "ws4"):
             c = f"/contact/{w}/right/rails/"
             x = crossing(tr[f"/bodies/{w}/s"][:], tr[c + "rail/normal_force"][:],
                          tr[c + "nose/normal_force"][:])
             row(f"two rails level at s = 80 m: {w}'s load half on each at", x, 80.0, "m")
-    os.makedirs(os.path.dirname(os.path.abspath(a.csv)), exist_ok=True)
-    with open(a.csv, "w", newline="") as f:
-        w = csv.DictWriter(f, list(rows[0].keys()))
-        w.writeheader()
-        w.writerows(rows)
-    for r_ in rows:
-        print(r_["quantity"], r_["value"], r_["reference"], r_["unit"])
+    scene_runs.write_rows(a.csv, rows, ("quantity", "value", "reference", "unit"))
     return 0
 
 

@@ -12,7 +12,8 @@ export RAILBENCH_TABLE_CACHE="$TMP/.table-cache"
 bad=0
 for s in scenarios/validation/case*.lua scenarios/validation/variants/*.lua scenarios/hard/*.lua \
          scenarios/train/three_wagons.lua scenarios/train/loco_braking_r500.lua \
-         scenarios/vehicle/manchester_guided_r500.lua scenarios/studies/case3_base.lua; do
+         scenarios/vehicle/manchester_guided_r500.lua scenarios/studies/case3_base.lua \
+         scenarios/turnout/diverging_r190.lua; do
   case "$s" in */lib.lua) continue ;; esac
   out="$TMP/$(echo "$s" | tr '/' '_')"
   "$BIN" effects "$s" --quick --jobs 2 --out "$out" >"$out.log" 2>&1

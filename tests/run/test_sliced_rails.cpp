@@ -115,8 +115,8 @@ TEST(SlicedRails, TheLoadMovesToTheHigherOfTwoRails) {
     for (std::size_t i = 1; i < s.size(); ++i) {
       EXPECT_NEAR(a[i] + b[i], n[i], 1e-6 * n[i]) << ws;
       if (a[i - 1] >= b[i - 1] && a[i] < b[i])
-        cross = s[i - 1] + (s[i] - s[i - 1]) * (a[i - 1] - b[i - 1]) /
-                               ((a[i - 1] - b[i - 1]) - (a[i] - b[i]));
+        cross = s[i - 1] +
+                (s[i] - s[i - 1]) * (a[i - 1] - b[i - 1]) / ((a[i - 1] - b[i - 1]) - (a[i] - b[i]));
       if (s[i] > 70.0 && s[i] < 75.0) y_before = ya[i];
       if (s[i] > 85.0 && s[i] < 90.0) y_after = yb[i];
       if (s[i] > 75.0 && s[i] < 85.0) {

@@ -24,7 +24,8 @@ def scenarios():
         out += sorted(os.path.relpath(p, ROOT) for p in glob.glob(os.path.join(ROOT, pattern)))
     out = [p for p in out if not p.endswith("/lib.lua")]
     return out + ["scenarios/studies/case3_base.lua", "scenarios/train/three_wagons.lua",
-                  "scenarios/train/loco_braking_r500.lua", WHEEL_LIFT]
+                  "scenarios/train/loco_braking_r500.lua", "scenarios/turnout/diverging_r190.lua",
+                  WHEEL_LIFT]
 
 
 def main():

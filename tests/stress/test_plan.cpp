@@ -47,6 +47,20 @@ TEST(StressPlan, ASingleVehicleIsHardenedThroughItsContactAndSpeed) {
   EXPECT_EQ(rb::stress::normalForceCouplings(spec), std::vector<std::string>{"contact."});
 }
 
+TEST(StressPlan, ATurnoutsCurveIsNotScaledUnderItsRails) {
+  // The turnout's stock rail and blade are laid by slices for its 190 m radius: the curve_radius
+  // axis would scale the track and leave the rails where they were. Speed and friction stay.
+  const auto spec = load("scenarios/turnout/diverging_r190.lua");
+  const auto p = rb::stress::planAxes(spec, {{}, {}, true});
+  EXPECT_EQ(find(p, "curve_radius"), nullptr);
+  EXPECT_TRUE(noted(p, "rails laid along the track by slices"));
+  EXPECT_NE(find(p, "speed"), nullptr);
+  EXPECT_NE(find(p, "friction"), nullptr);
+  // The same track without slices has its curve scaled.
+  const auto plain = load("scenarios/default/case3_kec_fast.lua");
+  EXPECT_NE(find(rb::stress::planAxes(plain, {{}, {}, true}), "curve_radius"), nullptr);
+}
+
 TEST(StressPlan, ATrainIsHardenedInEveryVehicle) {
   // Two Manchester wagons on the scenario's KEC contact{} and a two-axle wagon on its own
   // elastic contact{}.

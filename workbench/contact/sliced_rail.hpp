@@ -50,7 +50,7 @@ class SlicedRailSearch {
     const ElasticContactSearch* search = nullptr;
     double blend = 0.0;
     double blend_ds = 0.0;
-    double dy = 0.0, dz = 0.0;      // [m]
+    double dy = 0.0, dz = 0.0;        // [m]
     double dy_ds = 0.0, dz_ds = 0.0;  // [-]
     int piece = 0;  // 0: before the first slice, k: between slices k-1 and k, n: after the last
   };

@@ -131,9 +131,8 @@ void elasticPatches(const ContactModels& models, const StageInput& in, WheelsetW
       searchRail(sliced->at(q[vehicle::kS]), ew.geometry, ew.search, rail);
     } else {
       rail = irr;
-      const contact::ElasticPose pose{q[vehicle::kY] - rail.y,
-                                      q[vehicle::kZ] + ww.height - rail.z, q[vehicle::kRoll],
-                                      q[vehicle::kYaw]};
+      const contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + ww.height - rail.z,
+                                      q[vehicle::kRoll], q[vehicle::kYaw]};
       e.search[sd].search(pose, ew.geometry, ew.search);
     }
     ew.patch_rail.fill(0);

@@ -384,7 +384,8 @@ std::shared_ptr<const contact::SlicedRailSearch> slicedRail(
   std::vector<contact::RailSlice> slices;
   for (const RailSliceSpec& sl : spec) {
     auto& left = loaded[sl.rail];
-    if (!left) left = loadProfile(sl.rail, profiles::ProfileKind::Rail, p.r0, sl.loc, d, "rail_slices");
+    if (!left)
+      left = loadProfile(sl.rail, profiles::ProfileKind::Rail, p.r0, sl.loc, d, "rail_slices");
     if (!left) continue;
     slices.push_back(
         {sl.s, side == 0 ? left : std::make_shared<const profiles::Profile>(left->mirrored()),
@@ -395,11 +396,11 @@ std::shared_ptr<const contact::SlicedRailSearch> slicedRail(
     const profiles::Profile& a = *slices[k - 1].rail;
     const profiles::Profile& b = *slices[k].rail;
     if (std::max(a.sMin(), b.sMin()) < std::min(a.sMax(), b.sMax())) continue;
-    d.add(spec[k].loc, key + "[" + std::to_string(k + 1) +
-                           "]: its rail and the slice before it (at s = " +
-                           formatNumber(spec[k - 1].s) +
-                           " m) cover no common part of the profile (lateral) parameter: there is "
-                           "nothing to blend between them");
+    d.add(spec[k].loc,
+          key + "[" + std::to_string(k + 1) +
+              "]: its rail and the slice before it (at s = " + formatNumber(spec[k - 1].s) +
+              " m) cover no common part of the profile (lateral) parameter: there is "
+              "nothing to blend between them");
   }
   d.throwIfAny();
   try {
@@ -425,9 +426,10 @@ void compileSlicedRails(const ProfilesSpec& p, const contact::ElasticSearchSpec&
                                   false, pairs[side], search, loaded);
     for (std::size_t k = 0; k < p.extra_rails[side].size(); ++k) {
       const ExtraRailSpec& r = p.extra_rails[side][k];
-      e.extra[side].push_back(slicedRail(
-          p, r.slices, side, "profiles.extra_rails." + name + "[" + std::to_string(k + 1) + "].slices",
-          true, pairs[side], search, loaded));
+      e.extra[side].push_back(
+          slicedRail(p, r.slices, side,
+                     "profiles.extra_rails." + name + "[" + std::to_string(k + 1) + "].slices",
+                     true, pairs[side], search, loaded));
       e.extra_names[side].push_back(r.name);
     }
   }
@@ -518,10 +520,12 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
   if (c.method != ContactMethod::Elastic &&
       (!p.rail_slices[0].empty() || !p.rail_slices[1].empty() || !p.extra_rails[0].empty() ||
        !p.extra_rails[1].empty()))
-    d.add(p.loc, std::string("profiles.rail_slices / extra_rails: a rail that changes along the track needs "
-                             "contact.method = \"elastic\" (the ") +
-                     ContactModel::methodName(c.method) +
-                     " method's tables hold one rail profile for the whole track)");
+    d.add(
+        p.loc,
+        std::string("profiles.rail_slices / extra_rails: a rail that changes along the track needs "
+                    "contact.method = \"elastic\" (the ") +
+            ContactModel::methodName(c.method) +
+            " method's tables hold one rail profile for the whole track)");
   // The ranges of the scenario schema (dynamics/limits.hpp), for callers without a scenario.
   const auto check = [&](const char* key, double value, const Range& r) {
     if (!r.contains(value))

@@ -42,8 +42,8 @@
 // finite; lastError() names the wheelset, the time and the cause. Outputs are computed on demand
 // (wheelOutputs, bodyCoordinates, bodyAccelerations, elementOutputs) without changing the state the
 // integration depends on.
-#include <array>
 #include <Eigen/Dense>
+#include <array>
 #include <memory>
 #include <span>
 #include <string>

@@ -34,9 +34,11 @@ constexpr double kMaxRailOffset = 0.5;        // [m] |dy|, |dz| of a slice
 // One side's list of slices ("what" names it in messages); false when malformed.
 bool sliceList(Reader& r, LuaHost& host, const Node& list, const std::string& what,
                std::vector<dynamics::RailSliceSpec>& out) {
-  const std::string form = "{ s = <m>, rail = \"60e1\" or a rail profile file, dy = <m>, dz = <m> }";
+  const std::string form =
+      "{ s = <m>, rail = \"60e1\" or a rail profile file, dy = <m>, dz = <m> }";
   if (list.type != Node::Type::Table || !list.fields.empty() || list.items.empty()) {
-    r.error(list, what + " must be a non-empty list of slices " + form + ", got " + list.describe());
+    r.error(list,
+            what + " must be a non-empty list of slices " + form + ", got " + list.describe());
     return false;
   }
   if (list.items.size() > kMaxRailSlices) {
@@ -154,14 +156,15 @@ void railSlices(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
             const Node* slices = item.type == Node::Type::Table ? item.field("slices") : nullptr;
             if (!name || !slices || item.fields.size() != 2 || !item.items.empty() ||
                 name->type != Node::Type::String || !dynamics::validRailName(name->string)) {
-              r.error(item, at + " must be { name = \"nose\" (1-32 letters, digits or '_'), "
-                                 "slices = { ... } }, got " + item.describe());
+              r.error(item, at +
+                                " must be { name = \"nose\" (1-32 letters, digits or '_'), "
+                                "slices = { ... } }, got " +
+                                item.describe());
               continue;
             }
             const bool twice = name->string == "rail" ||
-                               std::any_of(rails.begin(), rails.end(), [&](const auto& o) {
-                                 return o.name == name->string;
-                               });
+                               std::any_of(rails.begin(), rails.end(),
+                                           [&](const auto& o) { return o.name == name->string; });
             if (twice) {
               r.error(*name, at + ".name '" + name->string +
                                  "' is taken (\"rail\" is the running rail's, the others must "
