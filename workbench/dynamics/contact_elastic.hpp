@@ -95,6 +95,76 @@ inline double wheelLift(const ContactModel& c, const vehicle::Vector6d& q, doubl
   return z - (c.centred_z + sigma * lw * std::sin(c.centred_phi));
 }
 
+// The search of one wheel over one rail at the wheelset's s: the pose relative to the rail's
+// displaced profile origin (irregularity `irr`, and a sliced rail's offsets toward the field side
+// and up at `at`); `rail` receives that displacement.
+inline void searchRail(const contact::SlicedRailSearch::Place& at, const vehicle::Vector6d& q,
+                       double height, const RailOffset& irr, double sigma,
+                       contact::ElasticWheelGeometry& out, contact::ElasticSearchWorkspace& sw,
+                       RailOffset& rail) {
+  rail = irr;
+  rail.y += sigma * at.dy;
+  rail.z += at.dz;
+  rail.y_s += sigma * at.dy_ds;
+  rail.z_s += at.dz_ds;
+  rail.blend_s = at.blend_ds;
+  contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + height - rail.z,
+                            q[vehicle::kRoll], q[vehicle::kYaw]};
+  pose.blend = at.blend;
+  at.search->search(pose, out, sw);
+}
+
+// The patches of a further rail (index r + 1 of ElasticWheelWork::patch_rail) join the wheel's;
+// beyond kMaxElasticPatches the shallowest kept patch gives way to a deeper one.
+inline void mergeRailPatches(const contact::ElasticWheelGeometry& g, int r, ElasticWheelWork& ew) {
+  contact::ElasticWheelGeometry& w = ew.geometry;
+  w.min_gap = std::min(w.min_gap, g.min_gap);
+  w.truncated = w.truncated || g.truncated;
+  w.newton_iterations += g.newton_iterations;
+  for (int k = 0; k < g.count; ++k) {
+    const contact::ElasticPatchGeometry& pg = g.patch[static_cast<std::size_t>(k)];
+    int slot = w.count;
+    if (slot == contact::kMaxElasticPatches) {
+      w.truncated = true;
+      slot = 0;
+      for (int j = 1; j < w.count; ++j)
+        if (w.patch[static_cast<std::size_t>(j)].approach <
+            w.patch[static_cast<std::size_t>(slot)].approach)
+          slot = j;
+      if (!(w.patch[static_cast<std::size_t>(slot)].approach < pg.approach)) continue;
+    } else {
+      ++w.count;
+    }
+    w.patch[static_cast<std::size_t>(slot)] = pg;
+    ew.patch_rail[static_cast<std::size_t>(slot)] = r + 1;
+  }
+}
+
+// Every rail of one side under wheel ew: the running rail (prismatic, or its slices) and the
+// further rails present at the wheelset's s, their patches in ew.geometry.
+inline void searchWheelRails(const ElasticContactModel& e, const vehicle::Vector6d& q,
+                             double height, const RailOffset& irr, std::size_t sd,
+                             ElasticWheelWork& ew) {
+  const double sigma = contact::kSideSign[sd];
+  RailOffset& rail = ew.rail_offset[0];
+  if (const auto& sliced = e.sliced[sd]) {
+    searchRail(sliced->at(q[vehicle::kS]), q, height, irr, sigma, ew.geometry, ew.search, rail);
+  } else {
+    rail = irr;
+    const contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + height - rail.z,
+                                    q[vehicle::kRoll], q[vehicle::kYaw]};
+    e.search[sd].search(pose, ew.geometry, ew.search);
+  }
+  ew.patch_rail.fill(0);
+  for (std::size_t r = 0; r < e.extra[sd].size(); ++r) {
+    const contact::SlicedRailSearch::Place at = e.extra[sd][r]->at(q[vehicle::kS]);
+    if (at.search == nullptr) continue;
+    searchRail(at, q, height, irr, sigma, ew.extra_geometry, ew.extra_search[r],
+               ew.rail_offset[r + 1]);
+    mergeRailPatches(ew.extra_geometry, static_cast<int>(r), ew);
+  }
+}
+
 // Stage 5 (elastic): the search and every patch of both wheels of wheelset ww, their normal and
 // creep forces, summed into the generalised force Q (y, z, phi, theta, psi).
 template <class Law>
@@ -110,59 +180,7 @@ void elasticPatches(const ContactModels& models, const StageInput& in, WheelsetW
     const double sigma = contact::kSideSign[side];
     const auto sd = static_cast<std::size_t>(side);
     const RailOffset irr = railOffset(ww.irr, side);
-    // The search of one rail at the wheelset's s: the pose relative to its displaced profile
-    // origin (irregularity, and a sliced rail's offsets toward the field side and up).
-    const auto searchRail = [&](const contact::SlicedRailSearch::Place& at,
-                                contact::ElasticWheelGeometry& out,
-                                contact::ElasticSearchWorkspace& sw, RailOffset& rail) {
-      rail = irr;
-      rail.y += sigma * at.dy;
-      rail.z += at.dz;
-      rail.y_s += sigma * at.dy_ds;
-      rail.z_s += at.dz_ds;
-      rail.blend_s = at.blend_ds;
-      contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + ww.height - rail.z,
-                                q[vehicle::kRoll], q[vehicle::kYaw]};
-      pose.blend = at.blend;
-      at.search->search(pose, out, sw);
-    };
-    RailOffset& rail = ew.rail_offset[0];
-    if (const auto& sliced = e.sliced[sd]) {
-      searchRail(sliced->at(q[vehicle::kS]), ew.geometry, ew.search, rail);
-    } else {
-      rail = irr;
-      const contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + ww.height - rail.z,
-                                      q[vehicle::kRoll], q[vehicle::kYaw]};
-      e.search[sd].search(pose, ew.geometry, ew.search);
-    }
-    ew.patch_rail.fill(0);
-    // Further rails: their patches join the wheel's (the deepest kMaxElasticPatches kept).
-    for (std::size_t r = 0; r < e.extra[sd].size(); ++r) {
-      const contact::SlicedRailSearch::Place at = e.extra[sd][r]->at(q[vehicle::kS]);
-      if (at.search == nullptr) continue;
-      contact::ElasticWheelGeometry& g = ew.extra_geometry;
-      searchRail(at, g, ew.extra_search[r], ew.rail_offset[r + 1]);
-      ew.geometry.min_gap = std::min(ew.geometry.min_gap, g.min_gap);
-      ew.geometry.truncated = ew.geometry.truncated || g.truncated;
-      ew.geometry.newton_iterations += g.newton_iterations;
-      for (int k = 0; k < g.count; ++k) {
-        const contact::ElasticPatchGeometry& pg = g.patch[static_cast<std::size_t>(k)];
-        int slot = ew.geometry.count;
-        if (slot == contact::kMaxElasticPatches) {
-          ew.geometry.truncated = true;
-          slot = 0;  // the shallowest kept patch, if this one is deeper
-          for (int j = 1; j < ew.geometry.count; ++j)
-            if (ew.geometry.patch[static_cast<std::size_t>(j)].approach <
-                ew.geometry.patch[static_cast<std::size_t>(slot)].approach)
-              slot = j;
-          if (!(ew.geometry.patch[static_cast<std::size_t>(slot)].approach < pg.approach)) continue;
-        } else {
-          ++ew.geometry.count;
-        }
-        ew.geometry.patch[static_cast<std::size_t>(slot)] = pg;
-        ew.patch_rail[static_cast<std::size_t>(slot)] = static_cast<int>(r) + 1;
-      }
-    }
+    searchWheelRails(e, q, ww.height, irr, sd, ew);
     ew.lift = wheelLift(c, q, ww.height, irr, sigma);
     const int n = ew.geometry.count;
     ++work.stats.elastic_searches;
