@@ -84,44 +84,46 @@ TEST(StudyHash, ChangesWithEveryInputAndOnlyWithThem) {
   EXPECT_NE(hashOf(base, {}, "build:b"), h0);        // another build of the workbench
 }
 
+namespace {
+
+// The base scenario with its profiles{} replaced by `profiles`, which names the data file `file`:
+// editing that file's bytes is a new case, restoring them the same case again.
+void expectHashFollowsFile(const std::string& profiles, const std::string& file) {
+  TempDir d;
+  d.write("mod.lua", "return { length = 100 }\n");
+  d.write("irr.csv", "s,alignment,vertical,gauge,cross_level\n0,0,0,0,0\n100,0,0,0,0\n");
+  d.write("wheel.txt", "0 0\n1 1\n");
+  d.write(file, "0 0\n1 1\n");
+  std::string text = kBase;
+  const std::string from = "profiles { wheel = \"wheel.txt\" }";
+  text.replace(text.find(from), from.size(), profiles);
+  const std::string base = d.write("base.lua", text);
+  const std::string h0 = hashOf(base);
+  d.write(file, "0 0\n1 2\n");
+  EXPECT_NE(hashOf(base), h0) << file;
+  d.write(file, "0 0\n1 1\n");
+  EXPECT_EQ(hashOf(base), h0) << file;
+}
+
+}  // namespace
+
 TEST(StudyHash, ChangesWithEachWheelSidesOwnProfile) {
   // profiles.wheel_right names a file of its own: its bytes are an input of the case (a worn
   // wheel edited between two runs of a study is a new case, never a resumed stale result).
-  TempDir d;
-  d.write("mod.lua", "return { length = 100 }\n");
-  d.write("irr.csv", "s,alignment,vertical,gauge,cross_level\n0,0,0,0,0\n100,0,0,0,0\n");
-  d.write("wheel.txt", "0 0\n1 1\n");
-  d.write("right.txt", "0 0\n1 1\n");
-  std::string text = kBase;
-  const std::string from = "profiles { wheel = \"wheel.txt\" }";
-  text.replace(text.find(from), from.size(),
-               "profiles { wheel = \"wheel.txt\", wheel_right = \"right.txt\" }");
-  const std::string base = d.write("base.lua", text);
-  const std::string h0 = hashOf(base);
-  d.write("right.txt", "0 0\n1 2\n");
-  EXPECT_NE(hashOf(base), h0);
-  d.write("right.txt", "0 0\n1 1\n");
-  EXPECT_EQ(hashOf(base), h0);
+  expectHashFollowsFile("profiles { wheel = \"wheel.txt\", wheel_right = \"right.txt\" }",
+                        "right.txt");
 }
 
 TEST(StudyHash, ChangesWithEachRailSlicesProfile) {
-  // profiles.rail_slices names files of their own: each one's bytes are an input of the case.
-  TempDir d;
-  d.write("mod.lua", "return { length = 100 }\n");
-  d.write("irr.csv", "s,alignment,vertical,gauge,cross_level\n0,0,0,0,0\n100,0,0,0,0\n");
-  d.write("wheel.txt", "0 0\n1 1\n");
-  d.write("blade.txt", "0 0\n1 1\n");
-  std::string text = kBase;
-  const std::string from = "profiles { wheel = \"wheel.txt\" }";
-  text.replace(text.find(from), from.size(),
-               "profiles { wheel = \"wheel.txt\", rail_slices = { right = { { s = 1, rail = "
-               "\"60e1\" }, { s = 5, rail = \"blade.txt\" } } } }");
-  const std::string base = d.write("base.lua", text);
-  const std::string h0 = hashOf(base);
-  d.write("blade.txt", "0 0\n1 2\n");
-  EXPECT_NE(hashOf(base), h0);
-  d.write("blade.txt", "0 0\n1 1\n");
-  EXPECT_EQ(hashOf(base), h0);
+  // profiles.rail_slices and extra_rails name files of their own: each one's bytes are an input.
+  expectHashFollowsFile(
+      "profiles { wheel = \"wheel.txt\", rail_slices = { right = { { s = 1, rail = \"60e1\" }, "
+      "{ s = 5, rail = \"blade.txt\" } } } }",
+      "blade.txt");
+  expectHashFollowsFile(
+      "profiles { wheel = \"wheel.txt\", extra_rails = { left = { { name = \"nose\", slices = "
+      "{ { s = 1, rail = \"nose.txt\" } } } } } }",
+      "nose.txt");
 }
 
 TEST(StudyHash, BuildIdIsTheProgramContent) {

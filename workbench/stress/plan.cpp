@@ -137,9 +137,9 @@ bool hasSlicedRails(const dynamics::ProfilesSpec& p) {
 }
 
 std::string curveNote(const ScenarioSpec& s) {
-  if (hasSlicedRails(s.profiles) ||
-      std::any_of(s.train.begin(), s.train.end(),
-                  [](const auto& v) { return v.has_profiles && hasSlicedRails(v.profiles); }))
+  if (hasSlicedRails(s.profiles) || std::any_of(s.train.begin(), s.train.end(), [](const auto& v) {
+        return v.has_profiles && hasSlicedRails(v.profiles);
+      }))
     return "rails laid along the track by slices (profiles.rail_slices / extra_rails), placed "
            "for its curves: a scaled radius would not move them";
   return std::any_of(s.track.segments.begin(), s.track.segments.end(), hasRadius)

@@ -136,10 +136,16 @@ std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string&
           std::tuple{"wheel_right", &p.wheel_right, "s1002"}})
       if (!path->empty() && *path != builtin && hashed.insert(*path).second)
         data(prefix + role, *path);
-    for (const auto& side : p.rail_slices)
-      for (const dynamics::RailSliceSpec& sl : side)
+    // Rails along the track: every slice file of the running rails and of the further rails.
+    auto slices = [&](const std::vector<dynamics::RailSliceSpec>& list) {
+      for (const dynamics::RailSliceSpec& sl : list)
         if (sl.rail != "60e1" && hashed.insert(sl.rail).second)
           data(prefix + "rail_slice", sl.rail);
+    };
+    for (std::size_t side = 0; side < 2; ++side) {
+      slices(p.rail_slices[side]);
+      for (const dynamics::ExtraRailSpec& r : p.extra_rails[side]) slices(r.slices);
+    }
   };
   profileFiles("", spec.profiles);
   for (std::size_t k = 1; k < spec.train.size(); ++k)
