@@ -11,6 +11,7 @@
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/critical_speed/runs.hpp"
+#include "workbench/dynamics/rails_along_track.hpp"
 #include "workbench/integrators/registry.hpp"
 #include "workbench/io/critical_speed_file.hpp"
 #include "workbench/io/result_file.hpp"
@@ -594,6 +595,11 @@ int runCriticalSpeed(const CriticalSpeedOptions& o) {
   // gives a train's linear stability.
   scenario::refuseTrain(scene.spec, "critical-speed");
   if (!scene.spec.has_vehicle) refuse(o.scenario, "has no vehicle");
+  // Its runs need a track that is the same everywhere along the ramp.
+  if (dynamics::railsAlongTrack(scene.spec.profiles))
+    refuse(o.scenario,
+           "has rails that change along the track (profiles.rail_slices / extra_rails): a "
+           "critical speed needs the same rails everywhere along its runs");
   if (o.criterion == "en14363" && !hasBogie(scene))
     refuse("--criterion",
            "en14363 needs a bogie frame (EN 14363 bogie-frame acceleration); the "

@@ -6,10 +6,12 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
+#include "workbench/dynamics/rails_along_track.hpp"
 #include "workbench/io/modes_file.hpp"
 #include "workbench/stability/scene.hpp"
 #include "workbench/stability/stability.hpp"
@@ -243,7 +245,19 @@ int runModes(const ModesOptions& o) {
   stability::Options so_opts;
   so_opts.step_scale = o.fd_scale;
   so_opts.distance = o.distance;
-  stability::Analyser an(scene.spec, so_opts);
+  // A scene the analysis cannot take (rails along the track, a train with guided wheelsets) is an
+  // input problem of the scene: nothing is run.
+  if (dynamics::railsAlongTrack(scene.spec.profiles))
+    throw InputError(scene.spec.profiles.loc,
+                     "profiles: the rails change along the track (rail_slices / extra_rails): "
+                     "there is no steady state to linearise about; run the scene instead");
+  std::optional<stability::Analyser> analyser;
+  try {
+    analyser.emplace(scene.spec, so_opts);
+  } catch (const stability::Failure& e) {
+    throw InputError({scene.file, 0}, e.what());
+  }
+  stability::Analyser& an = *analyser;
   std::vector<stability::Analysis> sweep;
   std::string failure;
   for (double v : speeds) {

@@ -11,6 +11,7 @@
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/contact_model.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
+#include "workbench/dynamics/rails_along_track.hpp"
 #include "workbench/integrators/integrator.hpp"
 #include "workbench/integrators/registry.hpp"
 #include "workbench/run/compile.hpp"
@@ -406,6 +407,14 @@ Analyser::Analyser(scenario::ScenarioSpec spec, Options options)
     : spec_(std::move(spec)), options_(std::move(options)), impl_(std::make_unique<Impl>()) {
   if (!spec_.has_vehicle || !spec_.has_contact)
     throw Failure("the scenario needs a vehicle{} and a contact{} block (wheel/rail contact)");
+  // Rails that change along the track (a turnout) have no steady state to linearise about.
+  if (dynamics::railsAlongTrack(spec_.profiles) ||
+      std::any_of(spec_.train.begin(), spec_.train.end(), [](const auto& v) {
+        return v.has_profiles && dynamics::railsAlongTrack(v.profiles);
+      }))
+    throw Failure(
+        "the rails change along the track (profiles.rail_slices / extra_rails): there is no "
+        "steady state to linearise about; run the scene (workbench run) instead");
   // Irregularities off: the steady state is a fixed point of the rhs only on the design track.
   spec_.track.irregularities = track::IrregularitySpec{};
   spec_.run.effects[scenario::effectIndex(scenario::Effect::Irregularities)].on = false;

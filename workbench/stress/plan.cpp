@@ -8,6 +8,7 @@
 #include "workbench/core/error.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/names.hpp"
+#include "workbench/dynamics/rails_along_track.hpp"
 
 namespace rb::stress {
 
@@ -128,17 +129,11 @@ bool hasRadius(const track::SegmentSpec& g) {
   return g.kind != track::SegmentKind::Tangent && g.radius > 0;
 }
 
-// Rails laid along the track by slices (a turnout's stock rail and blade follow its radius):
-// scaling the radius would not move them.
-bool hasSlicedRails(const dynamics::ProfilesSpec& p) {
-  for (std::size_t side = 0; side < 2; ++side)
-    if (!p.rail_slices[side].empty() || !p.extra_rails[side].empty()) return true;
-  return false;
-}
-
 std::string curveNote(const ScenarioSpec& s) {
-  if (hasSlicedRails(s.profiles) || std::any_of(s.train.begin(), s.train.end(), [](const auto& v) {
-        return v.has_profiles && hasSlicedRails(v.profiles);
+  // Rails laid along the track by slices (a turnout's stock rail and blade follow its radius).
+  if (dynamics::railsAlongTrack(s.profiles) ||
+      std::any_of(s.train.begin(), s.train.end(), [](const auto& v) {
+        return v.has_profiles && dynamics::railsAlongTrack(v.profiles);
       }))
     return "rails laid along the track by slices (profiles.rail_slices / extra_rails), placed "
            "for its curves: a scaled radius would not move them";
