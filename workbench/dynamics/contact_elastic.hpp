@@ -146,15 +146,11 @@ inline void searchWheelRails(const ElasticContactModel& e, const vehicle::Vector
                              double height, const RailOffset& irr, std::size_t sd,
                              ElasticWheelWork& ew) {
   const double sigma = contact::kSideSign[sd];
-  RailOffset& rail = ew.rail_offset[0];
-  if (const auto& sliced = e.sliced[sd]) {
-    searchRail(sliced->at(q[vehicle::kS]), q, height, irr, sigma, ew.geometry, ew.search, rail);
-  } else {
-    rail = irr;
-    const contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + height - rail.z,
-                                    q[vehicle::kRoll], q[vehicle::kYaw]};
-    e.search[sd].search(pose, ew.geometry, ew.search);
-  }
+  // The running rail: its slices at s, or the prismatic rail (no offset, no blend).
+  const contact::SlicedRailSearch::Place running =
+      e.sliced[sd] ? e.sliced[sd]->at(q[vehicle::kS])
+                   : contact::SlicedRailSearch::Place{&e.search[sd]};
+  searchRail(running, q, height, irr, sigma, ew.geometry, ew.search, ew.rail_offset[0]);
   ew.patch_rail.fill(0);
   for (std::size_t r = 0; r < e.extra[sd].size(); ++r) {
     const contact::SlicedRailSearch::Place at = e.extra[sd][r]->at(q[vehicle::kS]);

@@ -4,6 +4,7 @@
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/limits.hpp"
 #include "workbench/dynamics/names.hpp"
+#include "workbench/dynamics/rails_along_track.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -517,9 +518,7 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
     d.add(c.loc, "contact: vehicle '" + v.name +
                      "' has no wheelset (a body with kind = \"wheelset\"): nothing to put on the "
                      "rails");
-  if (c.method != ContactMethod::Elastic &&
-      (!p.rail_slices[0].empty() || !p.rail_slices[1].empty() || !p.extra_rails[0].empty() ||
-       !p.extra_rails[1].empty()))
+  if (c.method != ContactMethod::Elastic && railsAlongTrack(p))
     d.add(
         p.loc,
         std::string("profiles.rail_slices / extra_rails: a rail that changes along the track needs "
