@@ -152,6 +152,9 @@ struct ElasticPatchGeometry {
   double x_w = 0.0;                  // [m] longitudinal shift in the wheelset frame, h sin(theta)
   double theta = 0.0;                // [rad] angle of the contact point on its wheel circle
   double n_y = 0.0, n_z = 1.0;       // [-] unit rail normal (out of the rail), track frame
+  // [-] its X component: 0 on a prismatic rail; a rail that rises or moves sideways along the
+  // track (rail_slope.hpp) tilts its normal by its slope
+  double n_x = 0.0;
   double gamma = 0.0;      // [rad] contact angle, positive toward the track centre (geometry.hpp)
   double radius = 0.0;     // [m] rolling radius h_w(s_w)
   double gap_depth = 0.0;  // [m] delta_g = penetration of the undeformed surfaces, > 0

@@ -35,6 +35,7 @@
 #include <sstream>
 
 #include "workbench/contact/elastic_normal.hpp"
+#include "workbench/contact/rail_slope.hpp"
 #include "workbench/dynamics/augmented.hpp"
 #include "workbench/dynamics/contact_coupling.hpp"
 #include "workbench/dynamics/contact_patches.hpp"
@@ -56,7 +57,7 @@ double setupElasticPatch(Patch& p, const contact::ElasticPatchGeometry& g, doubl
                          const RailOffset& rail) {
   const ElasticContactModel& e = *c.elastic;
   placePatch(p, g.s_w, g.s_r, g.gamma, g.radius, sigma, c);
-  p.n = Eigen::Vector3d(0.0, g.n_y, g.n_z);
+  p.n = Eigen::Vector3d(g.n_x, g.n_y, g.n_z);
   p.ql.setZero();
   const Eigen::Vector3d u(g.x_w, sigma * c.geometry.wheel_lw + g.s_w,
                           -g.radius * std::cos(g.theta));
@@ -64,7 +65,11 @@ double setupElasticPatch(Patch& p, const contact::ElasticPatchGeometry& g, doubl
   const Eigen::Vector3d sp = f.axle.cross(au);
   p.gn = wheelPointForce(f, au, sp, p.n);
   const Eigen::Vector3d v = vehicle::pointVelocity(*f.kin, au) + sp * f.spin_rate;
-  double delta_dot = -(v.y() - V * rail.y_s) * p.n.y() - (v.z() - V * rail.z_s) * p.n.z();
+  // On a rail that rises or moves sideways the normal leans (n_x = -(y_s n_y + z_s n_z)): the
+  // rail's velocity under the contact, V (y_s n_y + z_s n_z), is then exactly -V n_x of the rail
+  // material passing at -V e_X, plus the wheel point's own slip along X.
+  double delta_dot =
+      -(v.y() - V * rail.y_s) * p.n.y() - (v.z() - V * rail.z_s) * p.n.z() - v.x() * p.n.x();
   // A rail changing along the track rises under the moving contact at V db/ds rail_rise.
   if (rail.blend_s != 0.0) delta_dot += V * rail.blend_s * g.rail_rise;
   p.k = contact::policyCurvatures(g, e.normal);
@@ -74,13 +79,20 @@ double setupElasticPatch(Patch& p, const contact::ElasticPatchGeometry& g, doubl
   const double N = K * d * std::sqrt(d) * std::max(0.0, 1.0 + e.damping * delta_dot);
   p.q0 = N;
   if constexpr (Law::kCreep) {
-    p.ex = Eigen::Vector3d::UnitX();
-    p.ey = Eigen::Vector3d(0.0, p.n.z(), -p.n.y());  // n x e_x
+    if (g.n_x == 0.0) {
+      p.ex = Eigen::Vector3d::UnitX();
+      p.ey = Eigen::Vector3d(0.0, p.n.z(), -p.n.y());  // n x e_x
+    } else {
+      // Along the rail in the tangent plane: e_x with its normal part removed.
+      p.ex = (Eigen::Vector3d::UnitX() - g.n_x * p.n).normalized();
+      p.ey = p.n.cross(p.ex);
+    }
     p.gx = wheelPointForce(f, au, sp, p.ex);
     p.gy = wheelPointForce(f, au, sp, p.ey);
     const Eigen::Vector3d bgn = f.BG.transpose() * p.n;
     p.gm << 0.0, 0.0, bgn(0), bgn(1), bgn(2);
-    p.cr = creep::creepagesFromKinematics(v.x(), v.dot(p.ey), f.omega.dot(p.n), V);
+    const double vx = g.n_x == 0.0 ? v.x() : v.dot(p.ex);
+    p.cr = creep::creepagesFromKinematics(vx, v.dot(p.ey), f.omega.dot(p.n), V);
     p.pc = creep::patchConstants(c.material, p.k, p.shape);
   }
   return N;
@@ -101,7 +113,7 @@ inline double wheelLift(const ContactModel& c, const vehicle::Vector6d& q, doubl
 inline void searchRail(const contact::SlicedRailSearch::Place& at, const vehicle::Vector6d& q,
                        double height, const RailOffset& irr, double sigma,
                        contact::ElasticWheelGeometry& out, contact::ElasticSearchWorkspace& sw,
-                       RailOffset& rail) {
+                       contact::ElasticSearchWorkspace& sloped, RailOffset& rail) {
   rail = irr;
   rail.y += sigma * at.dy;
   rail.z += at.dz;
@@ -111,7 +123,11 @@ inline void searchRail(const contact::SlicedRailSearch::Place& at, const vehicle
   contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + height - rail.z,
                             q[vehicle::kRoll], q[vehicle::kYaw]};
   pose.blend = at.blend;
-  at.search->search(pose, out, sw);
+  // The slices' slope along the track is in the search's geometry (rail_slope.hpp); the
+  // irregularity's is not (its r p^2 / 2 is below a micrometre) and stays in the damping's rail
+  // velocity.
+  const contact::RailSlope slope{sigma * at.dy_ds, at.dz_ds, at.blend_ds};
+  contact::searchSlopedRail(*at.search, pose, slope, out, sw, sloped);
 }
 
 // The patches of a further rail (index r + 1 of ElasticWheelWork::patch_rail) join the wheel's;
@@ -150,13 +166,14 @@ inline void searchWheelRails(const ElasticContactModel& e, const vehicle::Vector
   const contact::SlicedRailSearch::Place running =
       e.sliced[sd] ? e.sliced[sd]->at(q[vehicle::kS])
                    : contact::SlicedRailSearch::Place{&e.search[sd]};
-  searchRail(running, q, height, irr, sigma, ew.geometry, ew.search, ew.rail_offset[0]);
+  searchRail(running, q, height, irr, sigma, ew.geometry, ew.search, ew.sloped_search[0],
+             ew.rail_offset[0]);
   ew.patch_rail.fill(0);
   for (std::size_t r = 0; r < e.extra[sd].size(); ++r) {
     const contact::SlicedRailSearch::Place at = e.extra[sd][r]->at(q[vehicle::kS]);
     if (at.search == nullptr) continue;
     searchRail(at, q, height, irr, sigma, ew.extra_geometry, ew.extra_search[r],
-               ew.rail_offset[r + 1]);
+               ew.sloped_search[r + 1], ew.rail_offset[r + 1]);
     mergeRailPatches(ew.extra_geometry, static_cast<int>(r), ew);
   }
 }

@@ -134,6 +134,9 @@ struct ElasticWheelWork {
   // rail of each patch of `geometry` (0 the running rail, k the k-th further rail) with that
   // rail's displacement.
   std::array<contact::ElasticSearchWorkspace, kMaxExtraRails> extra_search;
+  // The second search over a rail that rises or moves sideways along the track (rail_slope.hpp),
+  // per rail (0 the running rail).
+  std::array<contact::ElasticSearchWorkspace, 1 + kMaxExtraRails> sloped_search;
   contact::ElasticWheelGeometry extra_geometry;
   std::array<int, contact::kMaxElasticPatches> patch_rail{};
   std::array<RailOffset, 1 + kMaxExtraRails> rail_offset{};

@@ -1,0 +1,150 @@
+#include "workbench/contact/rail_slope.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace rb::contact {
+namespace {
+
+using Vec3 = std::array<double, 3>;
+using Mat3 = std::array<std::array<double, 3>, 3>;
+
+Vec3 mul(const Mat3& m, const Vec3& v) {
+  return {m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2],
+          m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
+          m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2]};
+}
+Vec3 mulT(const Mat3& m, const Vec3& v) {
+  return {m[0][0] * v[0] + m[1][0] * v[1] + m[2][0] * v[2],
+          m[0][1] * v[0] + m[1][1] * v[1] + m[2][1] * v[2],
+          m[0][2] * v[0] + m[1][2] * v[1] + m[2][2] * v[2]};
+}
+Mat3 mulTm(const Mat3& a, const Mat3& b) {  // a^T b
+  Mat3 m{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) m[i][j] += a[k][i] * b[k][j];
+  return m;
+}
+// Wheelset -> track rotation of a pose (ElasticSearchSpec::angles; the spin left out).
+Mat3 wheelsetRotation(double phi, double psi, EulerOrder order) {
+  const double cps = std::cos(psi), sps = std::sin(psi);
+  const double cph = std::cos(phi), sph = std::sin(phi);
+  if (order == EulerOrder::RollYaw)  // Rx(phi) Rz(psi)
+    return Mat3{{{cps, -sps, 0.0}, {cph * sps, cph * cps, -sph}, {sph * sps, sph * cps, cph}}};
+  return Mat3{{{cps, -sps * cph, sps * sph}, {sps, cps * cph, -cps * sph}, {0.0, sph, cph}}};
+}
+
+// The roll and yaw whose wheelset rotation has axle a (unit): the pose of a body of revolution.
+void anglesOfAxle(const Vec3& a, EulerOrder order, double& phi, double& psi) {
+  if (order == EulerOrder::RollYaw) {  // a = (-sin psi, cos psi cos phi, cos psi sin phi)
+    psi = -std::asin(std::clamp(a[0], -1.0, 1.0));
+    phi = std::atan2(a[2], a[1]);
+  } else {  // a = (-sin psi cos phi, cos psi cos phi, sin phi)
+    phi = std::asin(std::clamp(a[2], -1.0, 1.0));
+    psi = std::atan2(-a[0], a[1]);
+  }
+}
+
+// The rail's frame: R = Rz(psi) Ry(-alpha) Rx(kappa), psi = atan t_y, alpha = atan2(t_z,
+// sqrt(1 + t_y^2)), takes e_X to t / |t|. A slice point Q = (0, Y, Z) (relative to the pivot) has
+// the coordinates R^T Q across the rail (its projection along t): with kappa = 0 they are
+// (cos psi Y, cos alpha Z - sin psi sin alpha Y), a slice sheared by the product of the yaw and the
+// pitch; kappa = -atan(tan psi sin alpha) removes that shear from the heights, leaving
+// (Y - psi alpha Z, Z) to first order: the heights across the rail are the slice's.
+Mat3 railRotation(double t_y, double t_z) {
+  const double h = std::sqrt(1.0 + t_y * t_y);
+  const double cpsi = 1.0 / h, spsi = t_y / h;
+  const double len = std::sqrt(h * h + t_z * t_z);
+  const double ca = h / len, sa = t_z / len;
+  const double kappa = -std::atan(t_y * sa);
+  const double ck = std::cos(kappa), sk = std::sin(kappa);
+  // Rz(psi) Ry(-alpha) = [[cpsi ca, -spsi, -cpsi sa], [spsi ca, cpsi, -spsi sa], [sa, 0, ca]],
+  // times Rx(kappa) = [[1, 0, 0], [0, ck, -sk], [0, sk, ck]].
+  return Mat3{{{cpsi * ca, -spsi * ck - cpsi * sa * sk, spsi * sk - cpsi * sa * ck},
+               {spsi * ca, cpsi * ck - spsi * sa * sk, -cpsi * sk - spsi * sa * ck},
+               {sa, ca * sk, ca * ck}}};
+}
+
+// One search in the frame of a rail along t = (1, t_y, t_z), pivoting at (0, py, pz) (pose
+// coordinates); the patches come back to the track frame.
+void searchInRailFrame(const ElasticContactSearch& search, const ElasticPose& pose, double t_y,
+                       double t_z, double py, double pz, ElasticWheelGeometry& out,
+                       ElasticSearchWorkspace& ws) {
+  const EulerOrder order = search.spec().angles;
+  const Mat3 R = railRotation(t_y, t_z);
+  const Vec3 P{0.0, py, pz};
+  const Vec3 c = mulT(R, Vec3{0.0, pose.y - py, pose.z - pz});
+  const Mat3 Rw = wheelsetRotation(pose.phi, pose.psi, order);
+  const Vec3 a = mulT(R, Vec3{Rw[0][1], Rw[1][1], Rw[2][1]});
+  ElasticPose q = pose;
+  q.y = py + c[1];
+  q.z = pz + c[2];
+  anglesOfAxle(a, order, q.phi, q.psi);
+  search.search(q, out, ws);
+  // The searched wheel frame R' and the wheelset's, seen in the rail frame (R^T Rw): they differ by
+  // a spin chi about the axle, M = R'^T R^T Rw = Ry(chi), and a wheel point X' of the search is
+  // X = M^T X' in the wheelset's frame.
+  const Mat3 M = mulTm(wheelsetRotation(q.phi, q.psi, order), mulTm(R, Rw));
+  for (int k = 0; k < out.count; ++k) {
+    ElasticPatchGeometry& g = out.patch[static_cast<std::size_t>(k)];
+    const Vec3 p = mul(R, Vec3{c[0] + g.x, g.y - py, g.z - pz});
+    g.x = p[0];
+    g.y = P[1] + p[1];
+    g.z = P[2] + p[2];
+    const Vec3 n = mul(R, Vec3{0.0, g.n_y, g.n_z});
+    g.n_x = n[0];
+    g.n_y = n[1];
+    g.n_z = n[2];
+    const double st = std::sin(g.theta), ct = std::cos(g.theta);
+    const Vec3 X = mulT(M, Vec3{g.radius * st, 0.0, -g.radius * ct});
+    g.x_w = X[0];
+    g.theta = std::atan2(X[0], -X[2]);
+  }
+}
+
+}  // namespace
+
+void searchSlopedRail(const ElasticContactSearch& search, const ElasticPose& pose,
+                      const RailSlope& slope, ElasticWheelGeometry& out,
+                      ElasticSearchWorkspace& first, ElasticSearchWorkspace& second) {
+  const WheelRailPair& pair = search.pair();
+  const double sigma = search.sigma();
+  const double sb = sigma * std::sin(pair.beta), cb = std::cos(pair.beta);
+  const double oy = sigma * pair.rail_lr + pair.rail_dy, oz = pair.rail_dz;
+  const bool blended = pair.rail_next && slope.blend_s != 0.0;
+  // The blended rail's rise per unit s at profile parameter u (0 where the slices agree).
+  auto rise = [&](double u) {
+    return blended ? slope.blend_s * (pair.rail_next->at(u).h - pair.rail->at(u).h) : 0.0;
+  };
+  // First search: pivot on the rail below the wheel's tape circle, with the blend's slope there.
+  double u0 = 0.0, rise0 = 0.0;
+  if (blended) {
+    const double lo = std::max(pair.rail->sMin(), pair.rail_next->sMin());
+    const double hi = std::min(pair.rail->sMax(), pair.rail_next->sMax());
+    u0 = std::clamp(cb * (pose.y + sigma * pair.wheel_lw - oy), lo, hi);
+    rise0 = rise(u0);
+  }
+  const bool tilted = slope.y_s != 0.0 || slope.z_s != 0.0 || rise0 != 0.0;
+  if (tilted) {
+    const double h0 = blended ? pair.rail->at(u0).h +
+                                    pose.blend * (pair.rail_next->at(u0).h - pair.rail->at(u0).h)
+                              : 0.0;
+    searchInRailFrame(search, pose, slope.y_s - sb * rise0, slope.z_s + cb * rise0,
+                      oy + cb * u0 - sb * h0, oz + sb * u0 + cb * h0, out, first);
+  } else {
+    search.search(pose, out, first);
+  }
+  if (out.count == 0) return;
+  // Second search: pivot on the deepest patch's rail point (patches are sorted deepest first),
+  // carried back to X = 0 along the rail, with the blend's slope there.
+  const ElasticPatchGeometry& g = out.patch[0];
+  const double r = rise(g.s_r);
+  if (!tilted && r == 0.0) return;
+  const double t_y = slope.y_s - sb * r, t_z = slope.z_s + cb * r;
+  const double py = g.y - g.x * t_y, pz = g.z - g.x * t_z;
+  searchInRailFrame(search, pose, t_y, t_z, py, pz, out, second);
+}
+
+}  // namespace rb::contact
