@@ -90,6 +90,13 @@ def main(argv=None) -> int:
         row("ws1 left wheel: largest Y/Q (instantaneous, 200 Hz samples) while on the blade",
             float((Y[on_blade] / Q[on_blade]).max()), None, "-")
         row("ws1 left wheel: largest normal force on the blade", float(blade.max()), None, "N")
+        bq = t[g + "rails/blade/Q"][:]
+        carried = bq > 0.5 * bq.max()
+        row("ws1 left wheel: the blade's own Y/Q (rails/blade/y_over_q), largest where the blade "
+            "carries more than half its largest Q", float(t[g + "rails/blade/y_over_q"][:][carried].max()),
+            None, "-")
+        row("ws1 left wheel: largest wear number T gamma on the blade",
+            float(t[g + "rails/blade/t_gamma"][:].max()), None, "N")
         tp = p["/contact/ws1/left/"]
         sp = p["/bodies/ws1/s"][:]
         row("plain rail, same track: ws1 left wheel's largest Y after the toe",

@@ -159,6 +159,12 @@ TEST(ResultSchema, ChannelRowsAreComplete) {
     EXPECT_TRUE(names.insert(c.name).second) << c.name;
     EXPECT_FALSE(c.unit.empty()) << c.name;
   }
+  names.clear();
+  for (const auto& c : rb::run::kRailChannels) {
+    EXPECT_TRUE(names.insert(c.name).second) << c.name;
+    EXPECT_FALSE(c.unit.empty()) << c.name;
+    EXPECT_FALSE(c.meaning.empty()) << c.name;
+  }
   for (std::size_t k = 0; k < 6; ++k)
     EXPECT_EQ(rb::run::kBodyCoordChannels[k].name, rb::vehicle::kCoordNames[k]);
 }

@@ -12,6 +12,8 @@
 
 #include "tests/run/run_files.hpp"
 #include "workbench/io/result_reader.hpp"
+#include "workbench/run/channels.hpp"
+#include "workbench/run/vehicle_run.hpp"
 
 namespace {
 
@@ -111,9 +113,26 @@ TEST(SlicedRails, TheLoadMovesToTheHigherOfTwoRails) {
     const auto ya = *r.dataset(c + "rails/rail/y");
     const auto yb = *r.dataset(c + "rails/nose/y");
     const auto n = *r.dataset(c + "normal_force");
+    const auto xa = *r.dataset(c + "rails/rail/x");
+    const auto xb = *r.dataset(c + "rails/nose/x");
     double cross = 0.0, y_before = 0.0, y_after = 0.0, lo = 1e9, hi = 0.0;
+    int both = 0;
     for (std::size_t i = 1; i < s.size(); ++i) {
       EXPECT_NEAR(a[i] + b[i], n[i], 1e-6 * n[i]) << ws;
+      // The rails' forces add up to the wheel's.
+      for (const char* q : {"X", "Y", "Q"}) {
+        const double sum =
+            (*r.dataset(c + "rails/rail/" + q))[i] + (*r.dataset(c + "rails/nose/" + q))[i];
+        EXPECT_NEAR(sum, (*r.dataset(c + q))[i], 1e-6 * n[i]) << ws << " " << q;
+      }
+      // Where both rails carry the wheel (the same profile at the same height, the same wheel
+      // point) the contacts differ only by the rails' slopes (2 mm / 40 m, up and down): the one
+      // on the rising rail lies r sin(atan p) ahead of the axle, the other as far behind it.
+      if (a[i] > 0.0 && b[i] > 0.0) {
+        const double lead = 0.46 * 0.002 / 40.0;
+        EXPECT_NEAR(xb[i] - xa[i], 2.0 * lead, 0.05 * lead) << ws << " at s = " << s[i];
+        ++both;
+      }
       if (a[i - 1] >= b[i - 1] && a[i] < b[i])
         cross = s[i - 1] +
                 (s[i] - s[i - 1]) * (a[i - 1] - b[i - 1]) / ((a[i - 1] - b[i - 1]) - (a[i] - b[i]));
@@ -131,11 +150,29 @@ TEST(SlicedRails, TheLoadMovesToTheHigherOfTwoRails) {
       }
     }
     EXPECT_NEAR(cross, 80.0, 0.1) << ws;
+    EXPECT_GT(both, 0) << ws;
     EXPECT_NEAR(y_after, y_before, 0.2e-3) << ws;
     // The wheel load through the transfer: within 2 % of its mean (the wagon's own dynamics
     // move it by about 1 %).
     EXPECT_LT(hi - lo, 0.02 * 0.5 * (hi + lo)) << ws;
   }
+}
+
+// A study's metric may read a rail's channels (signalProblem): the rails of a side with further
+// rails and every channel the run writes for them, nothing else.
+TEST(SlicedRails, RailSignalsAreKnownToTheMetrics) {
+  const rb::run::Model m = rb::test::compiled("tests/run/data/sliced_rails_transfer.lua");
+  for (const auto& c : rb::run::kRailChannels)
+    EXPECT_EQ(
+        rb::run::signalProblem(m.spec, "/contact/ws2/right/rails/nose/" + std::string(c.name)), "")
+        << c.name;
+  EXPECT_EQ(rb::run::signalProblem(m.spec, "/contact/ws1/right/rails/rail/y_over_q"), "");
+  EXPECT_NE(rb::run::signalProblem(m.spec, "/contact/ws1/right/rails/noze/x").find("'nose'"),
+            std::string::npos);
+  EXPECT_NE(rb::run::signalProblem(m.spec, "/contact/ws1/right/rails/nose/yq").find("rail signal"),
+            std::string::npos);
+  EXPECT_NE(rb::run::signalProblem(m.spec, "/contact/ws1/left/rails/rail/x").find("no further"),
+            std::string::npos);
 }
 
 }  // namespace

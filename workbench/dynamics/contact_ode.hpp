@@ -101,6 +101,18 @@ struct PatchOutput {
   double t_gamma = 0.0, power = 0.0;
 };
 
+// A wheel's contact with one rail of its side (elastic contact on several rails): the sums over
+// the wheel's patches on that rail, and the strongest one's position and creepages.
+struct RailContactOutput {
+  double normal = 0.0;      // [N] normal force, sum over the rail's patches
+  double normal_max = 0.0;  // [N] the strongest patch's
+  double x = 0.0, y = 0.0;  // [m] its contact point: along the track from the axle, and the
+                            // lateral track-frame position (left +)
+  TrackForces force;        // sum of the rail's patches' forces (EN 14363 X, Y, Q, y_track)
+  double sx = 0.0, sy = 0.0, spin = 0.0;  // [-], [-], [1/m] the strongest patch's creepages
+  double t_gamma = 0.0;                   // [N] wear number, sum over the rail's patches
+};
+
 // Contact regime of a wheel, from the patches in contact: WheelOutput::regime holds its code.
 enum class ContactRegime { Tread = 0, TwoPoint = 1, Flange = 2 };
 
@@ -151,9 +163,8 @@ struct WheelOutput {
   bool derailed = false;
   double creep_x = 0.0, creep_y = 0.0;  // [N] creep forces summed over the patches
   // Elastic contact on several rails (profiles.extra_rails): per rail (0 the running rail, k the
-  // k-th further rail) the normal force summed over its patches, the largest one's and the
-  // track-frame lateral position of that patch (0 where the wheel does not touch the rail).
-  std::array<double, 1 + kMaxExtraRails> rail_normal{}, rail_normal_max{}, rail_y{};
+  // k-th further rail), RailContactOutput (all 0 where the wheel does not touch the rail).
+  std::array<RailContactOutput, 1 + kMaxExtraRails> rail{};
 };
 
 // Work counters (since construction or resetStats()).

@@ -446,12 +446,22 @@ void elasticWheelsetOutputs(const ContactModels& models, const StageInput& in, i
       // The search's contact point is relative to its rail's displaced origin.
       const auto r = static_cast<std::size_t>(ew.patch_rail[static_cast<std::size_t>(k)]);
       po.y = ew.geometry.patch[static_cast<std::size_t>(k)].y + ew.rail_offset[r].y;
-      // Per rail: the normal force, and the lateral position of its strongest patch.
-      if (p.q0 > o.rail_normal_max[r]) {
-        o.rail_normal_max[r] = p.q0;
-        o.rail_y[r] = po.y;
+      // Per rail: sums over its patches, and its strongest patch's position and creepages.
+      RailContactOutput& rc = o.rail[r];
+      if (p.q0 > rc.normal_max) {
+        rc.normal_max = p.q0;
+        rc.x = ew.geometry.patch[static_cast<std::size_t>(k)].x;
+        rc.y = po.y;
+        rc.sx = po.sx;
+        rc.sy = po.sy;
+        rc.spin = po.spin;
       }
-      o.rail_normal[r] += p.q0;
+      rc.normal += p.q0;
+      rc.force.X += po.force.X;
+      rc.force.Y += po.force.Y;
+      rc.force.Q += po.force.Q;
+      rc.force.y_track += po.force.y_track;
+      rc.t_gamma += po.t_gamma;
     }
     o.regime = ww.regime[s];
     o.force_y = F.y();

@@ -147,7 +147,42 @@ inline constexpr ChannelRow<dynamics::PatchOutput> kPatchChannels[] = {
      [](const dynamics::PatchOutput& p) { return p.power; }},
 };
 
+// Per rail of a side with further rails (profiles.extra_rails), /contact/<wheelset>/<side>/rails/
+// <rail>/<name>: the wheel's contact with that rail (zeros where it does not touch it), for the
+// load transfer between rails (stock rail to blade, wing rail to nose) and Y/Q on a blade.
+inline constexpr ChannelRow<dynamics::RailContactOutput> kRailChannels[] = {
+    {"normal_force", "N", "normal force of the wheel's patches on this rail (0: no contact)",
+     [](const dynamics::RailContactOutput& r) { return r.normal; }},
+    {"y", "m",
+     "lateral track-frame position of the strongest patch on this rail, positive to the left (0: "
+     "no contact)",
+     [](const dynamics::RailContactOutput& r) { return r.y; }},
+    {"x", "m",
+     "longitudinal position of the strongest patch on this rail from the axle, positive forward "
+     "(ahead of the axle on a rail that rises)",
+     [](const dynamics::RailContactOutput& r) { return r.x; }},
+    {"X", "N", "longitudinal force of this rail on the wheel, track frame",
+     [](const dynamics::RailContactOutput& r) { return r.force.X; }},
+    {"Y", "N", "lateral force of this rail on the wheel, positive toward the track centre",
+     [](const dynamics::RailContactOutput& r) { return r.force.Y; }},
+    {"Q", "N", "force of this rail on the wheel perpendicular to the track plane, upward",
+     [](const dynamics::RailContactOutput& r) { return r.force.Q; }},
+    {"y_over_q", "-", "Y/Q of this rail's forces alone (0 where Q = 0)",
+     [](const dynamics::RailContactOutput& r) {
+       return std::abs(r.force.Q) > 0.0 ? r.force.Y / r.force.Q : 0.0;
+     }},
+    {"creepage_x", "-", "longitudinal creepage of the strongest patch on this rail",
+     [](const dynamics::RailContactOutput& r) { return r.sx; }},
+    {"creepage_y", "-", "lateral creepage of the strongest patch on this rail",
+     [](const dynamics::RailContactOutput& r) { return r.sy; }},
+    {"spin", "1/m", "spin creepage of the strongest patch on this rail",
+     [](const dynamics::RailContactOutput& r) { return r.spin; }},
+    {"t_gamma", "N", "wear number T gamma, sum over the patches on this rail",
+     [](const dynamics::RailContactOutput& r) { return r.t_gamma; }},
+};
+
 inline constexpr std::size_t kWheelChannelCount = std::size(kWheelChannels);
+inline constexpr std::size_t kRailChannelCount = std::size(kRailChannels);
 inline constexpr std::size_t kPatchChannelCount = std::size(kPatchChannels);
 
 // One body's coordinates and absolute centre-of-mass acceleration at an output time.

@@ -100,8 +100,20 @@ std::string contactSignalProblem(const scenario::ScenarioSpec& spec,
     for (const auto& c : kWheelChannels) q.emplace_back(c.name);
     return among(p[3], q) ? std::string() : notAmong("wheel signal", p[3], q);
   }
+  if (p.size() == 6 && p[3] == "rails") {
+    // Written for a side with further rails (elastic contact): "rail" and their names.
+    const auto& extra = spec.profiles.extra_rails[p[2] == "left" ? 0 : 1];
+    if (extra.empty())
+      return "the " + p[2] + " side has no further rails (profiles.extra_rails), so no /rails";
+    std::vector<std::string> rails = {"rail"};
+    for (const auto& r : extra) rails.push_back(r.name);
+    if (!among(p[4], rails)) return notAmong("rail", p[4], rails);
+    for (const auto& c : kRailChannels) q.emplace_back(c.name);
+    return among(p[5], q) ? std::string() : notAmong("rail signal", p[5], q);
+  }
   if (p.size() != 5 || (p[3] != "patch0" && p[3] != "patch1"))
-    return "a patch's signal is /contact/<wheelset>/<side>/patch0|patch1/<quantity>";
+    return "a patch's signal is /contact/<wheelset>/<side>/patch0|patch1/<quantity> (or, on a "
+           "side with further rails, /contact/<wheelset>/<side>/rails/<rail>/<quantity>)";
   for (const auto& c : kPatchChannels) q.emplace_back(c.name);
   return among(p[4], q) ? std::string() : notAmong("patch signal", p[4], q);
 }

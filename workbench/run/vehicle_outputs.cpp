@@ -127,15 +127,8 @@ void addContactChannels(const Model& m, const RunVehicle& rv, io::ResultFile& f,
         }
       // A side with further rails (profiles.extra_rails): the wheel's contact per rail.
       const std::vector<std::string> rails = railNames(cm, side[0] == 'l' ? 0 : 1);
-      for (std::size_t r = 0; r < rails.size(); ++r) {
-        const std::string rb = base + "rails/" + rails[r] + "/";
-        outputs.push_back({rb + "normal_force", "N",
-                           "normal force of the wheel's patches on this rail (0: no contact)", ""});
-        outputs.push_back({rb + "y", "m",
-                           "lateral track-frame position of the strongest patch on this rail, "
-                           "positive to the left (0: no contact)",
-                           ""});
-      }
+      for (const std::string& rail : rails)
+        addChannels(base + "rails/" + rail + "/", kRailChannels, outputs);
     }
   writeContactConventions(f, contact, cm.method);
   f.attr(contact, "method", std::string(dynamics::ContactModel::methodName(cm.method)));
@@ -193,10 +186,8 @@ double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t,
     for (const auto& c : kWheelChannels) *out++ = c.get(sample);
     if (patches)
       for (const auto& patch : w.patch) out = samplePatch(patch, out);
-    for (std::size_t r = 0; r < rails[i % 2]; ++r) {
-      *out++ = w.rail_normal[r];
-      *out++ = w.rail_y[r];
-    }
+    for (std::size_t r = 0; r < rails[i % 2]; ++r)
+      for (const auto& c : kRailChannels) *out++ = c.get(w.rail[r]);
     creepage.update(w, t);
   }
   return out;
@@ -265,7 +256,7 @@ double* VehicleOutputs::sample(double t, const double* y, double* out) {
   if (!wheels) {
     const std::size_t n =
         state_.wheelOutputs().size() * (patches ? kWheelValues : kWheelChannelCount) +
-        state_.wheelOutputs().size() / 2 * 2 * (rails_[0] + rails_[1]);
+        state_.wheelOutputs().size() / 2 * kRailChannelCount * (rails_[0] + rails_[1]);
     for (std::size_t k = 0; k < n; ++k) *out++ = std::numeric_limits<double>::quiet_NaN();
     return out;
   }
