@@ -82,6 +82,8 @@ VEHICLE_CHECKS = {
     "patches": _patches,
     "body_accelerations": lambda g: _any_dataset(g, "bodies", "ax"),
     "assessment": lambda g: "assessment" in g and len(g["assessment"]) > 0,
+    # The track under the rail: /contact/<ws>/<side>/track/rail_z.
+    "track_support": lambda g: _any_dataset(g, "contact", "rail_z"),
 }
 
 CHECKS = {

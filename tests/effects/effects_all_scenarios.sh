@@ -14,7 +14,9 @@ for s in scenarios/validation/case*.lua scenarios/validation/variants/*.lua scen
          scenarios/train/three_wagons.lua scenarios/train/loco_braking_r500.lua \
          scenarios/vehicle/manchester_guided_r500.lua scenarios/studies/case3_base.lua \
          scenarios/turnout/diverging_r190.lua; do
-  case "$s" in */lib.lua) continue ;; esac
+  # elastic_derailment.lua derails by design in every variant (its own ctest checks the stop):
+  # effects has no ok run to compare.
+  case "$s" in */lib.lua | */elastic_derailment.lua) continue ;; esac
   out="$TMP/$(echo "$s" | tr '/' '_')"
   "$BIN" effects "$s" --quick --jobs 2 --out "$out" >"$out.log" 2>&1
   rc=$?

@@ -40,6 +40,7 @@
 #include "workbench/dynamics/contact_coupling.hpp"
 #include "workbench/dynamics/contact_patches.hpp"
 #include "workbench/dynamics/contact_stages.hpp"
+#include "workbench/dynamics/rail_support.hpp"
 
 namespace rb::dynamics::internal {
 
@@ -68,8 +69,9 @@ double setupElasticPatch(Patch& p, const contact::ElasticPatchGeometry& g, doubl
   // On a rail that rises or moves sideways the normal leans (n_x = -(y_s n_y + z_s n_z)): the
   // rail's velocity under the contact, V (y_s n_y + z_s n_z), is then exactly -V n_x of the rail
   // material passing at -V e_X, plus the wheel point's own slip along X.
-  double delta_dot =
-      -(v.y() - V * rail.y_s) * p.n.y() - (v.z() - V * rail.z_s) * p.n.z() - v.x() * p.n.x();
+  // The rail mass under a supported rail moves with (vy, vz) (0 on rigid rails).
+  double delta_dot = -(v.y() - V * rail.y_s - rail.vy) * p.n.y() -
+                     (v.z() - V * rail.z_s - rail.vz) * p.n.z() - v.x() * p.n.x();
   // A rail changing along the track rises under the moving contact at V db/ds rail_rise.
   if (rail.blend_s != 0.0) delta_dot += V * rail.blend_s * g.rail_rise;
   p.k = contact::policyCurvatures(g, e.normal);
@@ -91,8 +93,10 @@ double setupElasticPatch(Patch& p, const contact::ElasticPatchGeometry& g, doubl
     p.gy = wheelPointForce(f, au, sp, p.ey);
     const Eigen::Vector3d bgn = f.BG.transpose() * p.n;
     p.gm << 0.0, 0.0, bgn(0), bgn(1), bgn(2);
-    const double vx = g.n_x == 0.0 ? v.x() : v.dot(p.ex);
-    p.cr = creep::creepagesFromKinematics(vx, v.dot(p.ey), f.omega.dot(p.n), V);
+    // The slip velocity relative to the rail (its mass moves on a supported track).
+    const Eigen::Vector3d vr(v.x(), v.y() - rail.vy, v.z() - rail.vz);
+    const double vx = g.n_x == 0.0 ? vr.x() : vr.dot(p.ex);
+    p.cr = creep::creepagesFromKinematics(vx, vr.dot(p.ey), f.omega.dot(p.n), V);
     p.pc = creep::patchConstants(c.material, p.k, p.shape);
   }
   return N;
@@ -188,11 +192,29 @@ void elasticPatches(const ContactModels& models, const StageInput& in, WheelsetW
   const vehicle::Vector6d& q = work.bodies.q[ww.body];
   const WheelsetFrame wf = wheelsetFrame(work.bodies.kin[ww.body], work.bodies.qd[ww.body]);
   resetPatches(ww);
+  const vehicle::VehicleLayout& l = models.layout;
+  const bool supported = l.rail_masses > 0;
+  const int w = l.wheelsetSlot(ww.body);
+  const RailSupportPoint support =
+      supported ? railSupportAt(e.support, q[vehicle::kS]) : RailSupportPoint{};
   for (int side = 0; side < 2; ++side) {
     ElasticWheelWork& ew = ww.elastic[side];
     const double sigma = contact::kSideSign[side];
     const auto sd = static_cast<std::size_t>(side);
-    const RailOffset irr = railOffset(ww.irr, side);
+    RailOffset irr = railOffset(ww.irr, side);
+    if (supported) {
+      // The rail mass under the wheel moves the rail as an irregularity does, and its velocity is
+      // the rail surface's.
+      for (int k = 0; k < 2; ++k) {
+        ew.rail_q[k] = in.y[l.railPosition(w, side, k)];
+        ew.rail_qd[k] = in.y[l.railRate(w, side, k)];
+        ew.wheel_force[k] = 0.0;
+      }
+      irr.y += ew.rail_q[0];
+      irr.z += ew.rail_q[1];
+      irr.vy = ew.rail_qd[0];
+      irr.vz = ew.rail_qd[1];
+    }
     searchWheelRails(e, q, ww.height, irr, sd, ew);
     ew.lift = wheelLift(c, q, ww.height, irr, sigma);
     const int n = ew.geometry.count;
@@ -212,9 +234,33 @@ void elasticPatches(const ContactModels& models, const StageInput& in, WheelsetW
       Q.noalias() += N * p.gn;
       if constexpr (Law::kCreep) creepForce<Law>(p, N, c, Q);
       (p.on_flange ? flange : tread) = true;
+      if (supported) {
+        Eigen::Vector3d F = N * p.n;
+        if constexpr (Law::kCreep) F += p.fx * p.ex + p.fy * p.ey;
+        ew.wheel_force[0] -= F.y();  // the wheel's force on the rail
+        ew.wheel_force[1] -= F.z();
+      }
     }
     ww.regime[side] = contactRegime(tread, flange);
+    if (supported) {
+      // The rail mass: m q'' = -k q - c q' + (the wheel's force on it), laterally and vertically.
+      const double k[2] = {support.k_y, support.k_z}, cd[2] = {support.c_y, support.c_z};
+      for (int j = 0; j < 2; ++j) {
+        ew.support_force[j] = -k[j] * ew.rail_q[j] - cd[j] * ew.rail_qd[j];
+        ew.rail_qdd[j] = (ew.support_force[j] + ew.wheel_force[j]) / support.mass;
+      }
+    }
   }
+}
+
+// The rates of wheelset w's rail masses (the track under the rail).
+inline void writeRailMassRates(const vehicle::VehicleLayout& l, int w, const double* y,
+                               const WheelsetWork& ww, double* ydot) {
+  for (int side = 0; side < 2; ++side)
+    for (int k = 0; k < 2; ++k) {
+      ydot[l.railPosition(w, side, k)] = y[l.railRate(w, side, k)];
+      ydot[l.railRate(w, side, k)] = ww.elastic[side].rail_qdd[k];
+    }
 }
 
 // Stage 8 (elastic): derailment of a wheel of wheelset ww (ElasticWheelWork::lift beyond the
@@ -298,6 +344,7 @@ int elasticWheelsetStages(const ContactModels& models, const StageInput& in, int
   Vec5 qdd;
   if (const int rc = elasticAccelerations(models, in, ww, work, Q, qdd); rc != 0) return rc;
   if (ydot) writeElasticRates(models.layout, w, in.y, qdd, ydot);
+  if (ydot && models.layout.rail_masses > 0) writeRailMassRates(models.layout, w, in.y, ww, ydot);
   if (const int rc = checkDerailment(models, in, ww, work); rc != 0) return rc;
   if (fillsOutputs(in.mode)) elasticWheelsetOutputs(models, in, w, ww, qdd, Law::kCreep, work);
   if (clock) clock->mark(Stage::Checks);

@@ -451,6 +451,7 @@ std::shared_ptr<const ElasticContactModel> compileElastic(const ProfilesSpec& p,
   e->normal.material = m.material;
   e->normal.min_ratio = c.elastic.min_curvature_ratio;
   e->damping_ratio = c.elastic.damping_ratio;
+  e->support = c.elastic.rail_support;
 
   // Nominal static wheel load and the centred tread's Hertz contact at it.
   double mass = 0.0, ws_mass = 0.0;

@@ -76,6 +76,9 @@ struct ElasticContactModel {
   double vertical_frequency = 0.0;  // [Hz] sqrt(k / m_w) / 2 pi of that wheel at N0
   double flange_height = 0.0;       // [m] wheel radius at the flange tip minus r(s_w = 0)
   double derailment_lift = 0.0;     // [m] a wheel risen more than this above its rail derails
+  // The track under the rail (contact.elastic.rail_support; empty: rigid rails): a rail mass per
+  // wheel on its support, by track position (railSupportAt, rail_support.hpp).
+  std::vector<RailSupportPoint> support;
 };
 
 struct ContactModel {

@@ -8,6 +8,7 @@
 #include "workbench/dynamics/contact_evaluate.hpp"
 #include "workbench/dynamics/contact_methods.hpp"
 #include "workbench/dynamics/names.hpp"
+#include "workbench/dynamics/rail_support.hpp"
 #include "workbench/vehicle/equilibrium.hpp"
 
 namespace rb::dynamics {
@@ -20,14 +21,21 @@ using internal::Vec7;
 using internal::WheelsetWork;
 
 vehicle::VehicleLayout contactLayout(const vehicle::VehicleModel& m, WheelsetSpin spin,
-                                     ContactMethod method) {
+                                     ContactMethod method, bool rail_masses) {
   const bool prescribed = spin == WheelsetSpin::Prescribed;
-  return vehicle::vehicleLayout(m, methodInfo(method).wheelset_dof[prescribed ? 1 : 0]);
+  vehicle::VehicleLayout l =
+      vehicle::vehicleLayout(m, methodInfo(method).wheelset_dof[prescribed ? 1 : 0]);
+  if (rail_masses) {
+    l.rail_masses = l.n_ws;
+    l.size += 8 * l.n_ws;
+  }
+  return l;
 }
 
 ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
                                      const ContactModel& contact, const track::TrackModel& track)
-    : VehicleOde(vehicle, contactLayout(vehicle, contact.spin, contact.method)),
+    : VehicleOde(vehicle, contactLayout(vehicle, contact.spin, contact.method,
+                                        contact.elastic && !contact.elastic->support.empty())),
       contact_(&contact),
       work_(std::make_unique<ContactWorkspace>()) {
   RB_CHECK(layout_.n_ws > 0, "ContactVehicleOde: the vehicle has no wheelset");
@@ -208,6 +216,19 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
       unknowns.push_back(l.wsPosition(w, 3));
       unknowns.push_back(l.wsPosition(w, 4));
     }
+    // The track under the rail: each rail mass at its equilibrium under the wheel too (from the
+    // static deflection of the nominal wheel load), and the wheelset down with it.
+    if (l.rail_masses > 0) {
+      const RailSupportPoint sp =
+          railSupportAt(contact_->elastic->support, m.bodyS(static_cast<int>(l.wheelset(w)), t0));
+      const double sag = contact_->elastic->static_load / sp.k_z;
+      y[l.wsPosition(w, 3)] -= sag;
+      for (int side = 0; side < 2; ++side) {
+        y[l.railPosition(w, side, 1)] = -sag;
+        unknowns.push_back(l.railPosition(w, side, 0));
+        unknowns.push_back(l.railPosition(w, side, 1));
+      }
+    }
   }
   Eigen::VectorXd yd(l.size);
   const auto fail = [&](const std::string& why) {
@@ -217,7 +238,7 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
   if (n > 0) {
     // Static equilibrium of the car bodies and bogies (and, on elastic contact, of the wheelsets'
     // height and roll) on the wheelsets placed above: the accelerations of the unknowns vanish.
-    const auto rateOf = [&](int position) { return position + l.positions(); };
+    const auto rateOf = [&](int position) { return l.rateOf(position); };
     Eigen::VectorXd full = y;
     const auto residual = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
       for (int i = 0; i < n; ++i) full[unknowns[static_cast<std::size_t>(i)]] = x[i];

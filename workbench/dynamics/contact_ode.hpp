@@ -59,10 +59,11 @@
 namespace rb::dynamics {
 
 // The layout of a vehicle on wheel/rail contact (ws_dof = 3 with a free spin, 2 prescribed; the
-// elastic method adds z and phi: 5 and 4).
+// elastic method adds z and phi: 5 and 4; rail_masses: the track under the rail's states).
 vehicle::VehicleLayout contactLayout(const vehicle::VehicleModel& model,
                                      WheelsetSpin spin = WheelsetSpin::Free,
-                                     ContactMethod method = ContactMethod::Kec);
+                                     ContactMethod method = ContactMethod::Kec,
+                                     bool rail_masses = false);
 
 // Wheel/rail forces in the track frame (EN 14363 Y and Q): components of the force of the rail on
 // the wheel in the wheelset's track frame (Eq. 1-2: x along the track, y to the left, z up, turned
@@ -165,6 +166,10 @@ struct WheelOutput {
   // Elastic contact on several rails (profiles.extra_rails): per rail (0 the running rail, k the
   // k-th further rail), RailContactOutput (all 0 where the wheel does not touch the rail).
   std::array<RailContactOutput, 1 + kMaxExtraRails> rail{};
+  // The track under the rail (contact.elastic.rail_support): the rail mass's displacement under
+  // the wheel (lateral, vertical; track frame) and the force of its support on it.
+  double rail_mass_y = 0.0, rail_mass_z = 0.0;          // [m]
+  double support_force_y = 0.0, support_force_z = 0.0;  // [N]
 };
 
 // Work counters (since construction or resetStats()).

@@ -471,6 +471,10 @@ void elasticWheelsetOutputs(const ContactModels& models, const StageInput& in, i
     o.lift = false;
     o.wheel_lift = ew.lift;
     o.derailed = std::abs(ew.lift) > models.contact.elastic->derailment_lift;
+    o.rail_mass_y = ew.rail_q[0];
+    o.rail_mass_z = ew.rail_q[1];
+    o.support_force_y = ew.support_force[0];
+    o.support_force_z = ew.support_force[1];
   }
 }
 

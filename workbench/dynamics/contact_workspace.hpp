@@ -125,6 +125,7 @@ struct RailOffset {
   double y = 0.0, z = 0.0;      // [m]
   double y_s = 0.0, z_s = 0.0;  // [-] d/ds
   double blend_s = 0.0;         // [1/m] d(blend)/ds of a rail changing along the track
+  double vy = 0.0, vz = 0.0;    // [m/s] velocity of the rail mass under the wheel (track support)
 };
 
 struct ElasticWheelWork {
@@ -142,6 +143,10 @@ struct ElasticWheelWork {
   std::array<RailOffset, 1 + kMaxExtraRails> rail_offset{};
   std::array<Patch, contact::kMaxElasticPatches> patch;
   double lift = 0.0;  // [m] rise of the wheel's tape circle above its centred height over its rail
+  // The track under the rail (ElasticContactModel::support): the rail mass's displacement and
+  // rate (y, z), the force of the wheel on it and of its support, and its acceleration.
+  double rail_q[2] = {0.0, 0.0}, rail_qd[2] = {0.0, 0.0};
+  double wheel_force[2] = {0.0, 0.0}, support_force[2] = {0.0, 0.0}, rail_qdd[2] = {0.0, 0.0};
 };
 
 // Per wheelset: the constraints, patches and normal forces of the evaluation.

@@ -27,5 +27,10 @@ inline constexpr Range kElasticDampingRatioRange{0.0, 2.0};     // [-] zeta
 inline constexpr Range kElasticSampleStepRange{0.02e-3, 2e-3};  // [m] scan step
 inline constexpr Range kDerailmentLiftRange{1e-3, 0.1};         // [m] (< 0: the default)
 inline constexpr Range kElasticCurvatureRatioRange{0.01, 1.0};  // [-] B floor / A
+// The track under the rail (contact.elastic.rail_support): a rail mass per wheel and its support.
+inline constexpr Range kRailSupportMassRange{1.0, 1e4};        // [kg]
+inline constexpr Range kRailSupportStiffnessRange{1e5, 1e11};  // [N/m]
+inline constexpr Range kRailSupportDampingRange{0.0, 1e8};     // [N s/m]
+inline constexpr std::size_t kMaxRailSupportPoints = 2000;
 
 }  // namespace rb::dynamics

@@ -77,6 +77,17 @@ enum class NormalForceCoupling { Lagged, Consistent };
 // state and the spin reaction torque (traction/braking at the wheel) is a constraint reaction.
 enum class WheelsetSpin { Free, Prescribed };
 
+// The track under the rail at a track position (contact.elastic.rail_support; docs/
+// track_support.md): per wheel a rail mass travelling with its wheelset on a spring and a damper to
+// the ground, laterally and vertically.
+struct RailSupportPoint {
+  double s = 0.0;               // [m] track arc length (one point: everywhere)
+  double mass = 0.0;            // [kg] rail mass moving with the wheel
+  double k_y = 0.0, c_y = 0.0;  // [N/m], [N s/m] lateral support
+  double k_z = 0.0, c_z = 0.0;  // [N/m], [N s/m] vertical support
+  SourceLoc loc;
+};
+
 // The elastic contact method's parameters (contact.elastic{}; docs/elastic_contact.md).
 struct ElasticSpec {
   // Damping of the normal contact (Hunt-Crossley: N = K_H delta^1.5 (1 + c_d delta_dot)), given
@@ -88,6 +99,9 @@ struct ElasticSpec {
   // climb, a lifted wheel) stops the run; < 0: half the wheel's flange height.
   double derailment_lift = -1.0;
   double min_curvature_ratio = 0.1;  // lateral relative curvature floored smoothly at this * A
+  // The track under the rail: empty (default) rigid rails; one point, the same support everywhere;
+  // several, strictly increasing s, linear between them and the end points' beyond.
+  std::vector<RailSupportPoint> rail_support;
   SourceLoc loc;
 };
 

@@ -251,6 +251,10 @@ int runModes(const ModesOptions& o) {
     throw InputError(scene.spec.profiles.loc,
                      "profiles: the rails change along the track (rail_slices / extra_rails): "
                      "there is no steady state to linearise about; run the scene instead");
+  if (!scene.spec.contact.elastic.rail_support.empty())
+    throw InputError(scene.spec.contact.elastic.loc,
+                     "contact.elastic.rail_support (the track under the rail) is not part of the "
+                     "modes analysis: remove it for the modes, or run the scene instead");
   std::optional<stability::Analyser> analyser;
   try {
     analyser.emplace(scene.spec, so_opts);

@@ -181,7 +181,21 @@ inline constexpr ChannelRow<dynamics::RailContactOutput> kRailChannels[] = {
      [](const dynamics::RailContactOutput& r) { return r.t_gamma; }},
 };
 
+// Per wheel on the track under the rail (contact.elastic.rail_support),
+// /contact/<wheelset>/<side>/track/<name>.
+inline constexpr ChannelRow<dynamics::WheelOutput> kTrackChannels[] = {
+    {"rail_y", "m", "lateral displacement of the rail mass under the wheel (left +)",
+     [](const dynamics::WheelOutput& w) { return w.rail_mass_y; }},
+    {"rail_z", "m", "vertical displacement of the rail mass under the wheel (up +)",
+     [](const dynamics::WheelOutput& w) { return w.rail_mass_z; }},
+    {"support_force_y", "N", "lateral force of the support on the rail mass (left +)",
+     [](const dynamics::WheelOutput& w) { return w.support_force_y; }},
+    {"support_force_z", "N", "vertical force of the support on the rail mass (up +)",
+     [](const dynamics::WheelOutput& w) { return w.support_force_z; }},
+};
+
 inline constexpr std::size_t kWheelChannelCount = std::size(kWheelChannels);
+inline constexpr std::size_t kTrackChannelCount = std::size(kTrackChannels);
 inline constexpr std::size_t kRailChannelCount = std::size(kRailChannels);
 inline constexpr std::size_t kPatchChannelCount = std::size(kPatchChannels);
 

@@ -127,6 +127,8 @@ void addContactChannels(const Model& m, const RunVehicle& rv, io::ResultFile& f,
         }
       // A side with further rails (profiles.extra_rails): the wheel's contact per rail.
       const std::vector<std::string> rails = railNames(cm, side[0] == 'l' ? 0 : 1);
+      if (cm.elastic && !cm.elastic->support.empty())
+        addChannels(base + "track/", kTrackChannels, outputs);
       for (const std::string& rail : rails)
         addChannels(base + "rails/" + rail + "/", kRailChannels, outputs);
     }
@@ -171,11 +173,11 @@ double* samplePatch(const dynamics::PatchOutput& p, double* out) {
   return out;
 }
 
-// Per-wheel values (kWheelChannels order, then its patches, then its rails when its side has
-// further rails); returns the next output slot.
+// Per-wheel values (kWheelChannels order, then its patches, its track under the rail when the run
+// has one, then its rails when its side has further rails); returns the next output slot.
 double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t, double* out,
                      CreepageMaximum& creepage, bool patches,
-                     const std::array<std::size_t, 2>& rails) {
+                     const std::array<std::size_t, 2>& rails, bool track) {
   for (std::size_t i = 0; i < wheels.size(); ++i) {
     const dynamics::WheelOutput& w = wheels[i];
     // The dominant patch (largest normal force) gives creepages and contact position.
@@ -186,6 +188,8 @@ double* sampleWheels(const std::vector<dynamics::WheelOutput>& wheels, double t,
     for (const auto& c : kWheelChannels) *out++ = c.get(sample);
     if (patches)
       for (const auto& patch : w.patch) out = samplePatch(patch, out);
+    if (track)
+      for (const auto& c : kTrackChannels) *out++ = c.get(w);
     for (std::size_t r = 0; r < rails[i % 2]; ++r)
       for (const auto& c : kRailChannels) *out++ = c.get(w.rail[r]);
     creepage.update(w, t);
@@ -226,7 +230,10 @@ VehicleOutputs::VehicleOutputs(const Model& m, const RunVehicle& v, vehicle::Veh
       q_(v.vehicle.bodies.size()),
       a_(v.vehicle.bodies.size()),
       values_(v.output_elements.size()) {
-  if (v.contact) rails_ = {railNames(*v.contact, 0).size(), railNames(*v.contact, 1).size()};
+  if (v.contact) {
+    rails_ = {railNames(*v.contact, 0).size(), railNames(*v.contact, 1).size()};
+    track_ = v.contact->elastic && !v.contact->elastic->support.empty();
+  }
 }
 
 void VehicleOutputs::declare(io::ResultFile& f, std::vector<OutputChannel>& outputs) const {
@@ -256,11 +263,12 @@ double* VehicleOutputs::sample(double t, const double* y, double* out) {
   if (!wheels) {
     const std::size_t n =
         state_.wheelOutputs().size() * (patches ? kWheelValues : kWheelChannelCount) +
-        state_.wheelOutputs().size() / 2 * kRailChannelCount * (rails_[0] + rails_[1]);
+        state_.wheelOutputs().size() / 2 * kRailChannelCount * (rails_[0] + rails_[1]) +
+        (track_ ? state_.wheelOutputs().size() * kTrackChannelCount : 0);
     for (std::size_t k = 0; k < n; ++k) *out++ = std::numeric_limits<double>::quiet_NaN();
     return out;
   }
-  return sampleWheels(state_.wheelOutputs(), t, out, creepage_, patches, rails_);
+  return sampleWheels(state_.wheelOutputs(), t, out, creepage_, patches, rails_, track_);
 }
 
 }  // namespace rb::run

@@ -53,6 +53,7 @@ class VehicleOutputs {
   std::vector<vehicle::ElementValue> values_;
   // Rails written per wheel of each side (profiles.extra_rails; 0: the running rail alone).
   std::array<std::size_t, 2> rails_{};
+  bool track_ = false;  // the track under the rail: its channels per wheel
 };
 
 }  // namespace rb::run

@@ -1,10 +1,75 @@
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "workbench/contact/interpolation.hpp"
+#include "workbench/core/strings.hpp"
 #include "workbench/dynamics/limits.hpp"
 #include "workbench/dynamics/names.hpp"
 #include "workbench/scenario/build.hpp"
 #include "workbench/scenario/reader.hpp"
 
 namespace rb::scenario {
+namespace {
+
+// contact.elastic.rail_support: the block's values, or its `along` points (keys not given there
+// take the block's values). Every point needs a mass and both stiffnesses.
+void readRailSupport(const Node& n, std::vector<dynamics::RailSupportPoint>& out, Diagnostics& d) {
+  Reader r(n, block("contact.elastic.rail_support"), "contact.elastic.rail_support", d);
+  dynamics::RailSupportPoint base;
+  base.loc = n.loc;
+  base.mass = r.number("mass");
+  base.k_z = r.number("k_z");
+  base.c_z = r.number("c_z");
+  base.k_y = r.number("k_y");
+  base.c_y = r.number("c_y");
+  std::vector<dynamics::RailSupportPoint> points;
+  if (const Node* along = r.value("along")) {
+    if (along->type != Node::Type::Table || !along->fields.empty() || along->items.empty() ||
+        along->items.size() > dynamics::kMaxRailSupportPoints) {
+      r.error(*along,
+              "along must be a list of 1 to " + std::to_string(dynamics::kMaxRailSupportPoints) +
+                  " points { s = <m>, mass = .., k_z = .., ... }, got " + along->describe());
+      return;
+    }
+    for (std::size_t i = 0; i < along->items.size(); ++i) {
+      const Node& item = along->items[i];
+      const std::string at = "contact.elastic.rail_support.along[" + std::to_string(i + 1) + "]";
+      if (item.type != Node::Type::Table || !item.items.empty() || !item.field("s")) {
+        r.error(item, "along[" + std::to_string(i + 1) +
+                          "] must be { s = <m>, mass = .., k_z = .., ... }, got " +
+                          item.describe());
+        continue;
+      }
+      Reader o(item, block("contact.elastic.rail_support.along"), at, d);
+      dynamics::RailSupportPoint p = base;
+      p.loc = item.loc;
+      p.s = o.number("s");
+      for (auto [key, target] :
+           {std::pair{"mass", &p.mass}, std::pair{"k_z", &p.k_z}, std::pair{"c_z", &p.c_z},
+            std::pair{"k_y", &p.k_y}, std::pair{"c_y", &p.c_y}})
+        if (o.has(key)) *target = o.number(key);
+      if (!points.empty() && !(p.s > points.back().s))
+        o.error(*item.field("s"), "the points' s must increase strictly (the one before is at " +
+                                      formatNumber(points.back().s) + " m)");
+      points.push_back(p);
+    }
+  } else {
+    points.push_back(base);
+  }
+  for (const dynamics::RailSupportPoint& p : points)
+    if (!(p.mass > 0.0) || !(p.k_z > 0.0) || !(p.k_y > 0.0)) {
+      d.add(p.loc,
+            "contact.elastic.rail_support: every point needs mass, k_z and k_y (a rail mass on "
+            "springs), got mass = " +
+                formatNumber(p.mass) + " kg, k_z = " + formatNumber(p.k_z) +
+                " N/m, k_y = " + formatNumber(p.k_y) + " N/m");
+      return;
+    }
+  out = std::move(points);
+}
+
+}  // namespace
 
 bool buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
   Reader r(n, block("contact"), "contact", d);
@@ -44,6 +109,8 @@ bool buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
     c.elastic.sample_step = o.number("sample_step");
     c.elastic.derailment_lift = o.number("derailment_lift");
     c.elastic.min_curvature_ratio = o.number("min_curvature_ratio");
+    if (const Node* rs = o.blockValue("rail_support"))
+      readRailSupport(*rs, c.elastic.rail_support, d);
     if (const double lift = c.elastic.derailment_lift;
         lift >= 0.0 && !dynamics::kDerailmentLiftRange.contains(lift))
       o.error(*e->field("derailment_lift"), "derailment_lift must be in " +

@@ -43,6 +43,8 @@ bool present(const ScenarioSpec& s, Effect e) {
       return s.has_vehicle && assessmentAsked(s.run.assessment);
     case Effect::FlangeContact:
       return wheelRail;
+    case Effect::TrackSupport:
+      return wheelRail && !s.contact.elastic.rail_support.empty();
     default:
       break;  // recorded by a run, not a switch: applyEffectSwitches never asks
   }
@@ -102,6 +104,8 @@ const char* absentReason(Effect e) {
       return "run.assessment asks for no group";
     case Effect::FlangeContact:
       return "no wheel/rail contact";
+    case Effect::TrackSupport:
+      return "contact.elastic.rail_support is not given (the rails are rigid)";
     default:
       break;  // not a switch
   }
@@ -135,6 +139,9 @@ void switchOff(ScenarioSpec& s, Effect e) {
       s.run.assessment.safety = s.run.assessment.stability = false;
       s.run.assessment.comfort = s.run.assessment.wear = false;
       s.run.assessment.all = false;
+      break;
+    case Effect::TrackSupport:
+      s.contact.elastic.rail_support.clear();
       break;
     default:
       break;  // flange contact is refused in applyEffectSwitches, the others are no switches

@@ -34,11 +34,12 @@ enum class Effect {
   ElementOutputs,       // run.output.elements: deflection and force of suspension elements
   BodyAccelerations,    // run.output.body_accelerations
   Assessment,           // run.assessment: EN 14363 / EN 12299 / Sperling / wear sampling
+  TrackSupport,         // contact.elastic.rail_support: a rail mass per wheel on its support
 };
 
 // The names are the keys of run.effects and the lines of /stats/effects; the help says what a
 // recorded effect is and what its detail holds (run/run_stats.hpp).
-inline constexpr std::array<NameEntry<Effect>, 16> kEffectNames = {{
+inline constexpr std::array<NameEntry<Effect>, 17> kEffectNames = {{
     {Effect::GuidedWheelsets, "guided_wheelsets",
      "wheelsets follow the track centre line (no wheel/rail contact)"},
     {Effect::WheelRailContact, "contact", "wheel/rail contact constraints: kec or lut"},
@@ -59,6 +60,8 @@ inline constexpr std::array<NameEntry<Effect>, 16> kEffectNames = {{
     {Effect::ElementOutputs, "element_outputs", "suspension element outputs (count)"},
     {Effect::BodyAccelerations, "body_accelerations", "body acceleration outputs"},
     {Effect::Assessment, "assessment", "assessment groups sampled during the run"},
+    {Effect::TrackSupport, "track_support",
+     "the track under the rail: a rail mass per wheel on its support (moving_rail_masses)"},
 }};
 constexpr const auto& nameTable(Effect /*tag*/) {
   return kEffectNames;
@@ -73,7 +76,7 @@ struct EffectSwitchEntry {
   std::string_view help;
 };
 
-inline constexpr std::array<EffectSwitchEntry, 9> kEffectSwitches = {{
+inline constexpr std::array<EffectSwitchEntry, 10> kEffectSwitches = {{
     {Effect::Irregularities,
      "track irregularities (false: the track is built without them, nothing of them is evaluated)"},
     {Effect::BumpStops, "bumpstop elements (false: dropped from the vehicle)"},
@@ -90,6 +93,9 @@ inline constexpr std::array<EffectSwitchEntry, 9> kEffectSwitches = {{
     {Effect::Assessment,
      "the engineering assessment groups run.assessment asks for (false: none sampled or "
      "computed)"},
+    {Effect::TrackSupport,
+     "the track under the rail, contact.elastic.rail_support (false: rigid rails, eight states "
+     "fewer per wheelset)"},
     {Effect::FlangeContact,
      "always on: flange contact is part of the contact model (KEC flange regime, LUT Hertz "
      "flange); it cannot be switched off without changing the physics (false is an error)"},

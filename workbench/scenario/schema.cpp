@@ -342,7 +342,39 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
         num("min_curvature_ratio", "-", elastic.min_curvature_ratio,
             "the lateral relative curvature of a patch is floored smoothly at this times its "
             "rolling curvature (near-conformal contact, docs/elastic_contact.md)",
-            dynamics::kElasticCurvatureRatioRange)}});
+            dynamics::kElasticCurvatureRatioRange),
+        blockKey("rail_support", ValueType::Block, {},
+                 "the track under the rail: per wheel a rail mass on a spring and a damper, "
+                 "travelling with the wheelset (docs/track_support.md); absent: rigid rails",
+                 "contact.elastic.rail_support")}});
+  const auto supportKeys = [](bool along) {
+    std::vector<KeySpec> k;
+    if (along) k.push_back(num("s", "m", 0, "track arc length of this point", 0.0, 1e7));
+    const std::string dflt = along ? " (default: the block's)" : "";
+    k.push_back(num("mass", "kg", 0, "rail mass moving with each wheel" + dflt,
+                    dynamics::kRailSupportMassRange));
+    k.push_back(num("k_z", "N/m", 0, "vertical support stiffness under each wheel" + dflt,
+                    dynamics::kRailSupportStiffnessRange));
+    k.push_back(num("c_z", "N s/m", 0, "vertical support damping under each wheel" + dflt,
+                    dynamics::kRailSupportDampingRange));
+    k.push_back(num("k_y", "N/m", 0, "lateral support stiffness under each wheel" + dflt,
+                    dynamics::kRailSupportStiffnessRange));
+    k.push_back(num("c_y", "N s/m", 0, "lateral support damping under each wheel" + dflt,
+                    dynamics::kRailSupportDampingRange));
+    return k;
+  };
+  std::vector<KeySpec> support = supportKeys(false);
+  support.push_back(typed("along", ValueType::Table, "-",
+                          "support that varies along the track: a list of points { s = <m>, "
+                          "mass = .., k_z = .., ... } (keys not given: the block's values), "
+                          "linear between them, the end points' values beyond"));
+  s.push_back({"contact.elastic.rail_support",
+               "The track under the rail (a plain table inside contact.elastic{}): per wheel a "
+               "rail mass that travels with its wheelset on a spring and a damper to the ground, "
+               "laterally and vertically; mass, k_z and k_y are required (docs/track_support.md).",
+               support});
+  s.push_back({"contact.elastic.rail_support.along",
+               "One point of contact.elastic.rail_support.along.", supportKeys(true)});
   const creep::FastsimGrid fastsim;  // the defaults live in creep/fastsim.hpp
   s.push_back(
       {"contact.fastsim",

@@ -415,6 +415,14 @@ Analyser::Analyser(scenario::ScenarioSpec spec, Options options)
     throw Failure(
         "the rails change along the track (profiles.rail_slices / extra_rails): there is no "
         "steady state to linearise about; run the scene (workbench run) instead");
+  // The track under the rail adds states the linearisation does not know yet.
+  if (!spec_.contact.elastic.rail_support.empty() ||
+      std::any_of(spec_.train.begin(), spec_.train.end(), [](const auto& v) {
+        return v.has_contact && !v.contact.elastic.rail_support.empty();
+      }))
+    throw Failure(
+        "contact.elastic.rail_support (the track under the rail) is not part of the modes "
+        "analysis: remove it for the modes, or run the scene (workbench run, critical-speed)");
   // Irregularities off: the steady state is a fixed point of the rhs only on the design track.
   spec_.track.irregularities = track::IrregularitySpec{};
   spec_.run.effects[scenario::effectIndex(scenario::Effect::Irregularities)].on = false;

@@ -41,6 +41,12 @@ int VehicleLayout::index(int body, Coord c, bool is_rate) const {
 
 std::string VehicleLayout::componentName(int i, const VehicleModel& m) const {
   if (i < 0 || i >= size) return "y[" + std::to_string(i) + "]";
+  if (rail_masses > 0 && i >= railPosition(0, 0, 0)) {
+    const int j = i - railPosition(0, 0, 0);
+    const int k = j % (4 * rail_masses);
+    return m.bodies[wheelset(k / 4)].name + ((k / 2) % 2 == 0 ? ".rail_left." : ".rail_right.") +
+           (k % 2 == 0 ? "y" : "z") + (j >= 4 * rail_masses ? "_dot" : "");
+  }
   if (n_series > 0 && i >= series(0)) return "series[" + std::to_string(i - series(0)) + "].f";
   const int half = positions();
   const bool is_rate = i >= half;

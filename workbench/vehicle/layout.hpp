@@ -10,6 +10,9 @@
 //   [5 nf + d nw + 5k + c]    rate of free body coordinate                              "car.y_dot"
 //   [10 nf + d nw + d w + j]  wheelset rate                                        "ws1.theta_dot"
 //   [10 nf + 2 d nw + e]      Maxwell force of series damper e (Appendix A)         "series[3].f"
+//   [10 nf + 2 d nw + ns + 4 w + 2 side + c], then the same + 4 nw: rail mass displacement (c = 0
+//                             lateral, 1 vertical) under wheel side of wheelset w, and its rate
+//                             (contact.elastic.rail_support only)                 "ws1.rail_left.z"
 // d = 0: guided wheelsets, which follow the track kinematically (no state); d = 3: wheelsets on
 // constraint contact (KEC, LUT: z and roll are dependent) with a free spin (y, theta, psi); d = 2:
 // with a prescribed spin (y, psi); d = 5: wheelsets on elastic contact, every coordinate but s a
@@ -74,6 +77,19 @@ struct VehicleLayout {
     return j < 0 ? -1 : 10 * n_free + ws_dof * n_ws + ws_dof * w + j;
   }
   int series(int e) const { return 10 * n_free + 2 * ws_dof * n_ws + e; }
+  // The track under the rail (elastic contact with contact.elastic.rail_support): per wheelset w
+  // and side (0 left, 1 right) a rail mass's lateral (c = 0) and vertical (c = 1) displacement,
+  // after the series forces, then their rates; rail_masses = 0 without it.
+  int rail_masses = 0;  // wheelsets with rail masses (0 or n_ws)
+  int railPosition(int w, int side, int c) const {
+    return 10 * n_free + 2 * ws_dof * n_ws + n_series + 4 * w + 2 * side + c;
+  }
+  int railRate(int w, int side, int c) const { return railPosition(w, side, c) + 4 * rail_masses; }
+  // The rate state of a position state (body, wheelset or rail mass).
+  int rateOf(int position_state) const {
+    return position_state < positions() ? position_state + positions()
+                                        : position_state + 4 * rail_masses;
+  }
   // Number of position states (the rates follow them).
   int positions() const { return 5 * n_free + ws_dof * n_ws; }
 

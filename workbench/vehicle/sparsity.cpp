@@ -27,6 +27,14 @@ BodyStates bodyStates(const VehicleLayout& l, std::size_t b) {
         out.accelerations.push_back(l.wsRate(w, c));
       }
     }
+    // The rail masses under its wheels (the track under the rail) move with its contact forces.
+    if (w < l.rail_masses)
+      for (int side = 0; side < 2; ++side)
+        for (int c = 0; c < 2; ++c) {
+          out.states.push_back(l.railPosition(w, side, c));
+          out.states.push_back(l.railRate(w, side, c));
+          out.accelerations.push_back(l.railRate(w, side, c));
+        }
   }
   return out;
 }
@@ -91,6 +99,10 @@ integ::JacobianPattern jacobianPattern(const VehicleModel& model, const VehicleL
   for (int w = 0; w < layout.n_ws; ++w)
     for (int c = 0; c < kWheelsetCoordinates; ++c)
       copy(layout.wsPosition(w, c), layout.wsRate(w, c));
+  for (int w = 0; w < layout.rail_masses; ++w)
+    for (int side = 0; side < 2; ++side)
+      for (int c = 0; c < 2; ++c)
+        copy(layout.railPosition(w, side, c), layout.railRate(w, side, c));
   out.rows = dep.rowsOfColumns();
   return out;
 }
