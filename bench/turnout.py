@@ -8,7 +8,8 @@ Runs scenarios/turnout/diverging_r190.lua (the Manchester wagon into the divergi
 switch blade takes over the wheel from the stock rail, the forces on the blade and the
 derailment quotient there; then the same wagon on the same track with a plain rail (the scene
 without its slices and further rails) for the cost of the turnout's rails and for how the
-contact differs; then the validation scenes of tests/run/test_sliced_rails.cpp (rails lowered
+contact differs; the scene on a flexible track (contact.elastic.rail_support, a rail mass per
+wheel: docs/track_support.md); then the validation scenes of tests/run/test_sliced_rails.cpp (rails lowered
 along the track, the load moving between two rails).
 
 Rows of the CSV (default out/studies/turnout/turnout.csv): quantity, value, reference, unit,
@@ -31,6 +32,8 @@ from railbench.run import build_figure  # noqa: E402
 
 SCENE = "scenarios/turnout/diverging_r190.lua"
 TOE = 60.0  # [m] the scene's toe
+# The flexible track's support (docs/track_support.md): ASSUMPTION, as in the track tests.
+FLEX = "{ mass = 150, k_z = 1e8, c_z = 5e4, k_y = 4e7, c_y = 5e4 }"
 LEFT_RADIUS = 190 + 1.435 / 2  # [m] scenarios/turnout/lib.lua
 
 
@@ -59,14 +62,28 @@ def main(argv=None) -> int:
                                 r"\{ left = \{ blade \} \}", "", text)
         if n != 1:
             raise RuntimeError(f"{SCENE}: its rails are not where this study expects them")
+        # The same scene on a flexible track (docs/track_support.md; its values an ASSUMPTION, as
+        # in tests/run/data/rail_support_tangent.lua), with the smaller step the rail masses' stiff
+        # modes need.
+        flex_text, n1 = re.subn(r'contact \{ method = "elastic", creep = "polach", mu = 0\.2364 \}',
+                                'contact { method = "elastic", creep = "polach", mu = 0.2364, '
+                                'elastic = { rail_support = ' + FLEX + ' } }', text)
+        flex_text, n2 = re.subn(r"c\.abm\(speed, 2\.5e-4\)", "c.abm(speed, 1e-4)", flex_text)
+        if n1 != 1 or n2 != 1:
+            raise RuntimeError(f"{SCENE}: its contact or solver is not where this study expects it")
         plain_lua = os.path.join(ROOT, "scenarios", "turnout", ".plain_tmp.lua")
+        flex_lua = os.path.join(ROOT, "scenarios", "turnout", ".flex_tmp.lua")
         try:
-            with open(plain_lua, "w") as f:
-                f.write(plain_text)
+            for path, body in ((plain_lua, plain_text), (flex_lua, flex_text)):
+                with open(path, "w") as f:
+                    f.write(body)
             t = scene_runs.run(a.workbench, SCENE, os.path.join(tmp, "turnout.h5"))
             p = scene_runs.run(a.workbench, plain_lua, os.path.join(tmp, "plain.h5"))
+            fx = scene_runs.run(a.workbench, flex_lua, os.path.join(tmp, "flex.h5"))
         finally:
-            os.remove(plain_lua)
+            for path in (plain_lua, flex_lua):
+                if os.path.exists(path):
+                    os.remove(path)
         # The scene's rails figure, for docs/turnouts.md (figures/turnout_rails.png).
         fig = build_figure(load_result(os.path.join(tmp, "turnout.h5")), "rails")
         fig.savefig(os.path.join(os.path.dirname(os.path.abspath(a.csv)), "rails.png"), dpi=110)
@@ -103,7 +120,20 @@ def main(argv=None) -> int:
             float(tp["Y"][:][sp > TOE].max()), None, "N")
         row("plain rail, same track: ws1 left wheel's largest Y/Q after the toe",
             float((tp["Y"][:] / tp["Q"][:])[sp > TOE].max()), None, "-")
-        for label, f in (("turnout rails", t), ("plain rail", p)):
+        fg = fx[g]
+        f_on = fg["rails/blade/normal_force"][:] > 0
+        fY, fQ = fg["Y"][:], fg["Q"][:]
+        row("flexible track: ws1 left wheel: largest lateral force Y while on the blade",
+            float(fY[f_on].max()), None, "N")
+        row("flexible track: ws1 left wheel: largest Y/Q (instantaneous) while on the blade",
+            float((fY[f_on] / fQ[f_on]).max()), None, "-")
+        row("flexible track: ws1 left wheel: largest normal force on the blade",
+            float(fg["rails/blade/normal_force"][:].max()), None, "N")
+        row("flexible track: the rail mass under ws1's left wheel: largest lateral deflection",
+            float(np.abs(fg["track/rail_y"][:]).max()) * 1e3, None, "mm")
+        row("flexible track: the rail mass under ws1's left wheel: largest vertical deflection",
+            float(np.abs(fg["track/rail_z"][:]).max()) * 1e3, None, "mm")
+        for label, f in (("turnout rails", t), ("plain rail", p), ("flexible track", fx)):
             st = f["stats"].attrs
             row(f"{label}: CPU time ({f['/time'][-1]:.2f} s simulated)", float(st["cpu_time_s"]),
                 None, "s")
