@@ -8,7 +8,8 @@ Runs scenarios/turnout/diverging_r190.lua (the Manchester wagon into the divergi
 switch blade takes over the wheel from the stock rail, the forces on the blade and the
 derailment quotient there; then the same wagon on the same track with a plain rail (the scene
 without its slices and further rails) for the cost of the turnout's rails and for how the
-contact differs; the scene on a flexible track (contact.elastic.rail_support, a rail mass per
+contact differs; the crossing on the through route (scenarios/turnout/crossing_through.lua) on
+its flexible track, with a lighter rail mass and on rigid rails; the scene on a flexible track (contact.elastic.rail_support, a rail mass per
 wheel: docs/track_support.md); then the validation scenes of tests/run/test_sliced_rails.cpp (rails lowered
 along the track, the load moving between two rails).
 
@@ -31,6 +32,8 @@ from railbench.result import load_result  # noqa: E402
 from railbench.run import build_figure  # noqa: E402
 
 SCENE = "scenarios/turnout/diverging_r190.lua"
+CROSSING = "scenarios/turnout/crossing_through.lua"
+TP = 60.0  # [m] the crossing scene's theoretical point
 TOE = 60.0  # [m] the scene's toe
 # The flexible track's support (docs/track_support.md): ASSUMPTION, as in the track tests.
 FLEX = "{ mass = 150, k_z = 1e8, c_z = 5e4, k_y = 4e7, c_y = 5e4 }"
@@ -138,6 +141,44 @@ def main(argv=None) -> int:
             row(f"{label}: CPU time ({f['/time'][-1]:.2f} s simulated)", float(st["cpu_time_s"]),
                 None, "s")
             row(f"{label}: rhs evaluations", float(st["rhs_evals"]), None, "-")
+        # The crossing on the through route (scenarios/turnout/crossing_through.lua): on its
+        # flexible track, with a lighter rail mass, and on rigid rails.
+        ctext = open(os.path.join(ROOT, CROSSING)).read()
+        variants = [("crossing, flexible track (150 kg rail mass)", ctext)]
+        # (the lighter rail mass's stiffer mode needs a smaller step)
+        light, n1 = re.subn(r"mass = 150,", "mass = 50,", ctext)
+        light, n3 = re.subn(r"c\.abm\(speed, 1e-4\)", "c.abm(speed, 5e-5)", light)
+        n1 = n1 * n3
+        rigid, n2 = re.subn(r",\n\s*elastic = \{ rail_support = \{[^}]*\} \} \}", " }", ctext)
+        if n1 != 1 or n2 != 1:
+            raise RuntimeError(f"{CROSSING}: its support is not where this study expects it")
+        variants += [("crossing, flexible track (50 kg rail mass)", light),
+                     ("crossing, rigid rails", rigid)]
+        for k, (label, body) in enumerate(variants):
+            lua = os.path.join(ROOT, "scenarios", "turnout", f".crossing_tmp{k}.lua")
+            try:
+                with open(lua, "w") as f:
+                    f.write(body)
+                cx = scene_runs.run(a.workbench, lua, os.path.join(tmp, f"crossing{k}.h5"))
+            finally:
+                os.remove(lua)
+            q0 = float(cx["/contact"].attrs["elastic_static_load_N"])
+            cs = cx["/bodies/ws1/s"][:]
+            cg = cx["/contact/ws1/right/rails/"]
+            wing, nose_n = cg["rail/normal_force"][:], cg["nose/normal_force"][:]
+            x = crossing(cs, wing, nose_n) - TP
+            z = cx["/bodies/ws1/z"][:]
+            dip = z[cs < TP - 1.0][-1] - z[(cs > TP - 0.4) & (cs < TP + x + 0.01)].min()
+            row(f"{label}: ws1 right wheel from the wing rail to the nose at x after the "
+                "theoretical point", x, None, "m")
+            row(f"{label}: ... the nose's width there (x / 9)", x / 9 * 1e3, None, "mm")
+            row(f"{label}: ws1's dip before the nose", dip * 1e3, None, "mm")
+            row(f"{label}: largest normal force on the nose (ws1 right wheel)",
+                float(nose_n.max()), None, "N")
+            row(f"{label}: ... in static wheel loads", float(nose_n.max()) / q0, None, "-")
+            st = cx["stats"].attrs
+            row(f"{label}: CPU time ({cx['/time'][-1]:.2f} s simulated)",
+                float(st["cpu_time_s"]), None, "s")
         # Validation scenes (tests/run/test_sliced_rails.cpp).
         beta = 0.025
         lw = scene_runs.run(a.workbench, "tests/run/data/sliced_rails_lowered.lua",

@@ -66,4 +66,33 @@ function M.switch_rails(toe, till)
   return stock, { name = "blade", slices = blade }
 end
 
+-- The common crossing of the through route's right rail (docs/turnouts.md, "The crossing"), its
+-- theoretical point (where the nose's two gauge lines meet) at s = tp: the wing rail (the running
+-- rail's slices) runs on the wheel's line up to the knuckle, then diverges to the field side at
+-- the crossing angle (1:9); the nose (a further rail, "nose") starts where it is nose_tip wide, its
+-- gauge face on the running line and its width growing at 1:9, and runs on as the through route's
+-- rail to s = till. The flangeway between the nose's field side and the wing rail's gauge face is
+-- M.flangeway, so the knuckle lies 9 M.flangeway before the theoretical point.
+-- ASSUMPTIONS (no drawing of a crossing was available): flangeway 41 mm; the nose's actual tip 10 mm
+-- wide (0.09 m after the theoretical point); its top 6 mm below the wing rail's there, level from
+-- 40 mm width (linear in the width); the wing rail level, a 60E1 head; rigid or flexible track as
+-- the scene says.
+M.flangeway = 0.041  -- [m]
+M.nose_tip = 10      -- [mm]
+function M.crossing_rails(tp, till)
+  local knuckle = tp - 9 * M.flangeway
+  local wing = { { s = knuckle, rail = head(full) },
+                 { s = knuckle + 3, rail = head(full), dy = 3 / 9 } }
+  local function nose_dz(w) return w < 40 and -0.006 * (40 - w) / 30 or 0 end
+  local nose = {}
+  for _, w in ipairs(widths) do
+    if w >= M.nose_tip then
+      nose[#nose + 1] = { s = tp + 9 * w * 1e-3, rail = head(w), dz = nose_dz(w) }
+    end
+  end
+  nose[#nose + 1] = { s = tp + 9 * full * 1e-3, rail = head(full) }
+  nose[#nose + 1] = { s = till, rail = head(full) }
+  return wing, { name = "nose", slices = nose }
+end
+
 return M

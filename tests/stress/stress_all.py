@@ -25,7 +25,7 @@ def scenarios():
     out = [p for p in out if not p.endswith("/lib.lua")]
     return out + ["scenarios/studies/case3_base.lua", "scenarios/train/three_wagons.lua",
                   "scenarios/train/loco_braking_r500.lua", "scenarios/turnout/diverging_r190.lua",
-                  WHEEL_LIFT]
+                  "scenarios/turnout/crossing_through.lua", WHEEL_LIFT]
 
 
 def main():
