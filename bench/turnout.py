@@ -162,6 +162,10 @@ def main(argv=None) -> int:
                 cx = scene_runs.run(a.workbench, lua, os.path.join(tmp, f"crossing{k}.h5"))
             finally:
                 os.remove(lua)
+            if k == 0:  # the shipped scene's rails figure, for docs/turnouts.md
+                fig = build_figure(load_result(os.path.join(tmp, "crossing0.h5")), "rails")
+                fig.savefig(os.path.join(os.path.dirname(os.path.abspath(a.csv)),
+                                         "crossing_rails.png"), dpi=110)
             q0 = float(cx["/contact"].attrs["elastic_static_load_N"])
             cs = cx["/bodies/ws1/s"][:]
             cg = cx["/contact/ws1/right/rails/"]
