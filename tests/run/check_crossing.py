@@ -7,12 +7,11 @@ nose alone; no wheel derails, and the rails figure is drawn.
 
 usage: check_crossing.py RESULT.h5
 """
-import os
-import subprocess
 import sys
 
 import h5py
 import numpy as np
+from rails_figure import rails_figure_problem
 
 TP = 60.0  # [m] the crossing's theoretical point (the scene)
 
@@ -60,13 +59,9 @@ def main(path):
                 problems.append(f"{ws}: not settled on the nose 2 m after it")
             lines.append(f"{ws}: nose from x = {x:.3f} m ({width:.1f} mm), dip {dip * 1e3:.2f} mm, "
                          f"peak {peak / 1e3:.0f} kN")
-    out = os.path.join(os.path.dirname(os.path.abspath(path)), "crossing_figures")
-    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-    r = subprocess.run([os.path.join(root, "plots", "rbplot"), "run", path, "--outdir", out],
-                       capture_output=True, text=True)
-    stem = os.path.splitext(os.path.basename(path))[0]
-    if r.returncode != 0 or not os.path.exists(os.path.join(out, f"{stem}_rails.png")):
-        problems.append(f"no rails figure: {r.stdout[-300:]} {r.stderr[-300:]}")
+    figure = rails_figure_problem(path, "crossing_figures")
+    if figure:
+        problems.append(figure)
     for p in problems:
         print("FAIL:", p)
     if not problems:

@@ -6,12 +6,11 @@ contact per rail is written for the left side only, and the rails figure is draw
 
 usage: check_turnout.py RESULT.h5
 """
-import os
-import subprocess
 import sys
 
 import h5py
 import numpy as np
+from rails_figure import rails_figure_problem
 
 TOE = 60.0
 LEFT_RADIUS = 190 + 1.435 / 2
@@ -47,13 +46,9 @@ def main(path):
         if not (np.all(np.abs(y - 0.724) < 3e-3)):
             problems.append(f"blade contact position {y.min():.4f} .. {y.max():.4f} m, expected "
                             "the blade's gauge corner near 0.724 m")
-    out = os.path.join(os.path.dirname(os.path.abspath(path)), "turnout_figures")
-    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-    r = subprocess.run([os.path.join(root, "plots", "rbplot"), "run", path, "--outdir", out],
-                       capture_output=True, text=True)
-    stem = os.path.splitext(os.path.basename(path))[0]
-    if r.returncode != 0 or not os.path.exists(os.path.join(out, f"{stem}_rails.png")):
-        problems.append(f"no rails figure: {r.stdout[-300:]} {r.stderr[-300:]}")
+    figure = rails_figure_problem(path, "turnout_figures")
+    if figure:
+        problems.append(figure)
     for p in problems:
         print("FAIL:", p)
     if not problems:
