@@ -61,6 +61,34 @@ TEST(StressPlan, ATurnoutsCurveIsNotScaledUnderItsRails) {
   EXPECT_NE(find(rb::stress::planAxes(plain, {{}, {}, true}), "curve_radius"), nullptr);
 }
 
+TEST(StressPlan, ALoweredNoseIsLoweredFurther) {
+  // The crossing's nose is lowered toward its tip (its slices' dz < 0): rail_drop scales every
+  // lowered slice, and only those.
+  const auto spec = load("scenarios/turnout/crossing_through.lua");
+  const auto p = rb::stress::planAxes(spec, {{}, {}, true});
+  const auto* drop = find(p, "rail_drop");
+  ASSERT_NE(drop, nullptr);
+  const auto& nose = spec.profiles.extra_rails[1].at(0).slices;
+  std::size_t lowered = 0;
+  for (std::size_t j = 0; j < nose.size(); ++j) {
+    if (!(nose[j].dz < 0.0)) continue;
+    const std::string key =
+        "profiles.extra_rails.right[1].slices[" + std::to_string(j + 1) + "].dz=";
+    const auto it = std::find_if(drop->overrides.begin(), drop->overrides.end(),
+                                 [&](const std::string& o) { return o.rfind(key, 0) == 0; });
+    ASSERT_NE(it, drop->overrides.end()) << key;
+    EXPECT_NEAR(std::stod(it->substr(key.size())), 2.0 * nose[j].dz, 1e-12);
+    ++lowered;
+  }
+  EXPECT_GT(lowered, 5U);
+  EXPECT_EQ(drop->overrides.size(), lowered);
+  // A scene without lowered rails notes why the axis is left out.
+  const auto plain = load("scenarios/default/case3_kec_fast.lua");
+  const auto q = rb::stress::planAxes(plain, {{}, {}, true});
+  EXPECT_EQ(find(q, "rail_drop"), nullptr);
+  EXPECT_TRUE(noted(q, "no lowered blade or nose"));
+}
+
 TEST(StressPlan, ATrainIsHardenedInEveryVehicle) {
   // Two Manchester wagons on the scenario's KEC contact{} and a two-axle wagon on its own
   // elastic contact{}.

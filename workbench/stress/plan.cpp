@@ -163,6 +163,37 @@ std::vector<std::string> radiusOverrides(const ScenarioSpec& s, double f) {
   return o;
 }
 
+// Blades and noses whose tops are lowered (slices of profiles.extra_rails with dz < 0): the
+// rail_drop axis lowers them further, a harder transfer onto them (the scenario's own profiles;
+// a train's vehicles with their own profiles{} keep theirs).
+bool loweredRails(const dynamics::ProfilesSpec& p) {
+  for (const auto& side : p.extra_rails)
+    for (const auto& r : side)
+      for (const auto& sl : r.slices)
+        if (sl.dz < 0.0) return true;
+  return false;
+}
+
+std::string dropNote(const ScenarioSpec& s) {
+  return loweredRails(s.profiles) ? ""
+                                  : "no lowered blade or nose (profiles.extra_rails slices with dz "
+                                    "< 0) to lower further";
+}
+
+std::vector<std::string> dropOverrides(const ScenarioSpec& s, double f) {
+  std::vector<std::string> o;
+  for (std::size_t side = 0; side < 2; ++side) {
+    const auto& rails = s.profiles.extra_rails[side];
+    for (std::size_t k = 0; k < rails.size(); ++k)
+      for (std::size_t j = 0; j < rails[k].slices.size(); ++j)
+        if (const double dz = rails[k].slices[j].dz; dz < 0.0)
+          o.push_back(std::string("profiles.extra_rails.") + (side == 0 ? "left" : "right") + "[" +
+                      std::to_string(k + 1) + "].slices[" + std::to_string(j + 1) +
+                      "].dz=" + formatNumber(dz * f, 12));
+  }
+  return o;
+}
+
 const std::vector<Axis>& axes() {
   static const std::vector<Axis> all = {
       {"nominal",
@@ -202,6 +233,7 @@ const std::vector<Axis>& axes() {
        },
        compactNumber},
       {"curve_radius", {0.75, 0.5}, curveNote, radiusOverrides, factorLabel},
+      {"rail_drop", {1.5, 2.0}, dropNote, dropOverrides, factorLabel},
   };
   return all;
 }
