@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """`workbench stress --quick` on every shipped vehicle scenario (docs/stress.md): each must
-produce its stability map (exit 0) with no run that fails badly (expect_stable.csv); the
-wheel-lift reproducer must stop cleanly in every run of its nominal case (expect_wheel_lift.csv).
+produce its stability map (exit 0) with no run that fails badly (expect_stable.csv; the crossing:
+expect_crossing.csv); the wheel-lift reproducer must stop cleanly in every run of its nominal case
+(expect_wheel_lift.csv).
 
 usage: stress_all.py --workbench BIN --out-dir DIR [--only SUBSTRING]
 """
@@ -40,7 +41,9 @@ def main():
         if args.only not in scen:
             continue
         stem = os.path.splitext(scen)[0].replace("/", "_")
-        expect = "expect_wheel_lift.csv" if scen == WHEEL_LIFT else "expect_stable.csv"
+        expect = ("expect_wheel_lift.csv" if scen == WHEEL_LIFT else
+                  "expect_crossing.csv" if scen.endswith("crossing_through.lua") else
+                  "expect_stable.csv")
         cmd = [args.workbench, "stress", scen, "--quick", "--jobs", args.jobs,
                "--out", os.path.join(args.out_dir, stem), "--expect", os.path.join(HERE, expect)]
         t0 = time.monotonic()
