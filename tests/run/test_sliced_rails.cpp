@@ -150,6 +150,12 @@ TEST(SlicedRails, TheLoadMovesToTheHigherOfTwoRails) {
       }
     }
     EXPECT_NEAR(cross, 80.0, 0.1) << ws;
+    // The run's own answer (VehicleOutputs::writeRailAnswers): the same transfer, and the largest
+    // force on each rail.
+    const std::string g = c + "rails";
+    EXPECT_NEAR(*r.number(g, "transfer_s_nose"), cross, 1e-9) << ws;
+    EXPECT_EQ(*r.number(g, "peak_normal_force_nose"), *std::max_element(b.begin(), b.end())) << ws;
+    EXPECT_EQ(*r.number(g, "peak_normal_force_rail"), *std::max_element(a.begin(), a.end())) << ws;
     EXPECT_GT(both, 0) << ws;
     EXPECT_NEAR(y_after, y_before, 0.2e-3) << ws;
     // The wheel load through the transfer: within 2 % of its mean (the wagon's own dynamics

@@ -184,6 +184,7 @@ int runScenario(const RunOptions& options) {
     std::cout << "effects: " << run::effectsSummary(res.effects) << "; "
               << run::costSummary(res.costs) << "\n";
     for (const auto& w : res.warnings) std::cout << "warning: " << w << "\n";
+    for (const auto& line : res.rails_summary) std::cout << line << "\n";
     for (const auto& line : res.assessment_summary) std::cout << line << "\n";
     if (res.assessment_summary.empty())
       for (const auto& n : res.assessment_notes) std::cout << n << "\n";

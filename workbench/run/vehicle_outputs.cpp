@@ -268,7 +268,80 @@ double* VehicleOutputs::sample(double t, const double* y, double* out) {
     for (std::size_t k = 0; k < n; ++k) *out++ = std::numeric_limits<double>::quiet_NaN();
     return out;
   }
+  if (rails_[0] + rails_[1] > 0) {
+    ws_s_.clear();
+    for (int b : contact_->contact().wheelsets)
+      ws_s_.push_back(q_[static_cast<std::size_t>(b)][vehicle::kS]);
+    answers_.update(state_.wheelOutputs(), ws_s_, rails_);
+  }
   return sampleWheels(state_.wheelOutputs(), t, out, creepage_, patches, rails_, track_);
+}
+
+void VehicleOutputs::writeRailAnswers(io::ResultFile& f, std::vector<std::string>& lines) const {
+  if (contact_ == nullptr) return;
+  const dynamics::ContactModel& cm = contact_->contact();
+  for (const RailAnswers::Wheel& wh : answers_.wheels) {
+    const std::vector<std::string> names = railNames(cm, wh.side);
+    const std::string ws =
+        v_.vehicle.bodies[static_cast<std::size_t>(cm.wheelsets[wh.wheelset])].name;
+    const std::string side = wh.side == 0 ? "left" : "right";
+    const std::string group = v_.prefix() + "/contact/" + ws + "/" + side + "/rails";
+    std::string line = "  " + ws + " " + side + ":";
+    for (std::size_t r = 0; r < names.size(); ++r) {
+      line += (r > 0 ? "; " : " ") + names[r] + ":";
+      if (r > 0) {
+        if (std::isfinite(wh.transfer_s[r])) {
+          f.attr(group, "transfer_s_" + names[r], wh.transfer_s[r]);
+          line += " from s = " + formatNumber(wh.transfer_s[r], 5) + " m,";
+        } else {
+          line += " never carried more than " + names[0] + ",";
+        }
+      }
+      f.attr(group, "peak_normal_force_" + names[r], wh.peak[r]);
+      line += " largest N " + formatNumber(wh.peak[r] * 1e-3, 4) + " kN";
+      if (std::isfinite(wh.peak_s[r]) && wh.peak[r] > 0.0) {
+        f.attr(group, "peak_normal_force_s_" + names[r], wh.peak_s[r]);
+        line += " (s = " + formatNumber(wh.peak_s[r], 5) + " m)";
+      }
+    }
+    lines.push_back(line);
+  }
+}
+
+void RailAnswers::update(const std::vector<dynamics::WheelOutput>& w, const std::vector<double>& s,
+                         const std::array<std::size_t, 2>& rails) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (wheels.empty())
+    for (std::size_t i = 0; i < w.size(); ++i)
+      if (rails[i % 2] > 0) {
+        Wheel wh;
+        wh.wheelset = i / 2;
+        wh.side = i % 2;
+        wh.transfer_s.fill(nan);
+        wh.peak_s.fill(nan);
+        wheels.push_back(wh);
+      }
+  for (Wheel& wh : wheels) {
+    const dynamics::WheelOutput& o = w[2 * wh.wheelset + wh.side];
+    const double si = s[wh.wheelset];
+    for (std::size_t r = 0; r < rails[wh.side]; ++r) {
+      const double n = o.rail[r].normal;
+      if (n > wh.peak[r]) {
+        wh.peak[r] = n;
+        wh.peak_s[r] = si;
+      }
+      if (r == 0) continue;
+      const double diff = o.rail[0].normal - n;
+      // The first sample where the further rail carries more than the running rail.
+      if (wh.started && std::isnan(wh.transfer_s[r]) && wh.last_diff[r] >= 0.0 && diff < 0.0) {
+        const double f = wh.last_diff[r] / (wh.last_diff[r] - diff);
+        wh.transfer_s[r] = wh.last_s + f * (si - wh.last_s);
+      }
+      wh.last_diff[r] = diff;
+    }
+    wh.last_s = si;
+    wh.started = true;
+  }
 }
 
 }  // namespace rb::run

@@ -24,6 +24,25 @@ struct CreepageMaximum {
   void update(const dynamics::WheelOutput& w, double t_now);
 };
 
+// The answers of a run on several rails per side (profiles.extra_rails), per wheel of such a side:
+// where its load first moves from the running rail onto a further rail (the track position s,
+// linear between output samples, where the further rail's normal force first exceeds the running
+// rail's: stock rail to blade, wing rail to nose) and the largest normal force on each rail, with
+// its s (the impact at a nose). Updated at every output time.
+struct RailAnswers {
+  static constexpr std::size_t kRails = 1 + dynamics::kMaxExtraRails;
+  struct Wheel {
+    std::size_t wheelset = 0, side = 0;  // index into ContactModel::wheelsets; 0 left, 1 right
+    std::array<double, kRails> transfer_s{}, peak{}, peak_s{};
+    std::array<double, kRails> last_diff{};  // running rail's minus this rail's force, last sample
+    double last_s = 0.0;
+    bool started = false;
+  };
+  std::vector<Wheel> wheels;
+  void update(const std::vector<dynamics::WheelOutput>& w, const std::vector<double>& s,
+              const std::array<std::size_t, 2>& rails);
+};
+
 class VehicleOutputs {
  public:
   // ode: the vehicle's own ODE (its part of the run's), on wheel/rail contact when v has a
@@ -40,6 +59,11 @@ class VehicleOutputs {
   StateOutputs& state() { return state_; }
   dynamics::ContactVehicleOde* contact() const { return contact_; }
   const CreepageMaximum& creepage() const { return creepage_; }
+  const RailAnswers& railAnswers() const { return answers_; }
+  // After the run: the rail answers as attributes of each such wheel's rails group
+  // (transfer_s_<rail>, peak_normal_force_<rail>, peak_normal_force_s_<rail>; none for a
+  // transfer that did not happen) and one summary line per wheel into `lines`.
+  void writeRailAnswers(io::ResultFile& f, std::vector<std::string>& lines) const;
 
  private:
   const Model& m_;
@@ -54,6 +78,8 @@ class VehicleOutputs {
   // Rails written per wheel of each side (profiles.extra_rails; 0: the running rail alone).
   std::array<std::size_t, 2> rails_{};
   bool track_ = false;  // the track under the rail: its channels per wheel
+  RailAnswers answers_;
+  std::vector<double> ws_s_;  // s of each wheelset at the output time
 };
 
 }  // namespace rb::run

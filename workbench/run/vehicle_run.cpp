@@ -240,6 +240,18 @@ void writeContactCounters(const Model& m, const std::vector<RunPart>& parts, io:
     if (p.outputs->creepage().value > creepage.value) creepage = p.outputs->creepage();
   }
   writeContactStats(m, cs, creepage, f, out);
+  const bool several = parts.size() > 1;
+  for (const auto& p : parts) {
+    std::vector<std::string> lines;
+    p.outputs->writeRailAnswers(f, lines);
+    if (lines.empty()) continue;
+    if (several) out.rails_summary.push_back(p.v->name + ":");
+    for (auto& l : lines) out.rails_summary.push_back(std::move(l));
+  }
+  if (!out.rails_summary.empty())
+    out.rails_summary.insert(out.rails_summary.begin(),
+                             "rails (where each wheel moved onto a further rail, the largest "
+                             "normal force on each):");
 }
 
 }  // namespace

@@ -36,6 +36,9 @@ struct VehicleRunResult {
   // The printed assessment summary (empty when none was asked) and why groups were left out.
   std::vector<std::string> assessment_summary;
   std::vector<std::string> assessment_notes;
+  // Where each wheel on several rails moved onto a further rail and the largest force on each
+  // (VehicleOutputs::writeRailAnswers); empty without further rails.
+  std::vector<std::string> rails_summary;
   std::vector<EffectUse> effects;  // /stats/effects
   StageCosts costs;                // /stats/stage_*
 };
