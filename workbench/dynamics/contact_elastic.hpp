@@ -21,7 +21,9 @@
 //     theta) of the wheelset intermediate frame: the normal force's lever arm includes the
 //     contact point's longitudinal shift (the yaw moment of a yawed wheelset's contact forces);
 //   - creepages and creep forces in the rail's contact frame: x along the track (tangent to the
-//     prismatic rail at every contact), n the rail normal, y = n x x.
+//     prismatic rail at every contact; along the rail in the tangent plane where the rail rises or
+//     moves sideways, rail_slope.hpp), n the rail normal, y = n x x; the slip relative to the rail
+//     (its mass's velocity on a supported track removed, rail_support.hpp).
 //
 // Wheel lift, flange climb and two-point contact are physics here: a wheel with no penetrating
 // minimum has no patch. Derailment stops the run: a wheel whose tape circle has risen above its
