@@ -86,11 +86,20 @@ std::array<WheelRailPair, 2> wheelRailPairs(const ContactGeometryConfig& config)
   return p;
 }
 
+std::array<std::array<double, 3>, 3> wheelsetRotation(double phi, double psi, EulerOrder order) {
+  const double cps = std::cos(psi), sps = std::sin(psi);
+  const double cph = std::cos(phi), sph = std::sin(phi);
+  if (order == EulerOrder::RollYaw)  // Rx(phi) Rz(psi)
+    return {{{cps, -sps, 0.0}, {cph * sps, cph * cps, -sph}, {sph * sps, sph * cps, cph}}};
+  // Rz(psi) Rx(phi)
+  return {{{cps, -sps * cph, sps * sph}, {sps, cps * cph, -cps * sph}, {0.0, sph, cph}}};
+}
+
 // Pose-dependent constants of one search: the rotation R (wheelset -> track) and the locus
 // equation R00 sin(theta) - R02 cos(theta) = R01 h' written as rho sin(theta + eps) = R01 h'.
 struct ElasticContactSearch::PoseTrig {
   double y = 0.0, z = 0.0;
-  double r[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  std::array<std::array<double, 3>, 3> r{};
   double rho = 1.0, ceps = 1.0, seps = 0.0;
   double oy = 0.0, oz = 0.0;  // rail profile origin
   double blend = 0.0;         // rail_next's share (0 on a prismatic rail)
@@ -98,17 +107,7 @@ struct ElasticContactSearch::PoseTrig {
     y = p.y;
     z = p.z;
     if (pair.rail_next) blend = p.blend;
-    const double cps = std::cos(p.psi), sps = std::sin(p.psi);
-    const double cph = std::cos(p.phi), sph = std::sin(p.phi);
-    if (order == EulerOrder::RollYaw) {  // Rx(phi) Rz(psi)
-      const double m[3][3] = {
-          {cps, -sps, 0.0}, {cph * sps, cph * cps, -sph}, {sph * sps, sph * cps, cph}};
-      std::copy(&m[0][0], &m[0][0] + 9, &r[0][0]);
-    } else {  // Rz(psi) Rx(phi)
-      const double m[3][3] = {
-          {cps, -sps * cph, sps * sph}, {sps, cps * cph, -cps * sph}, {0.0, sph, cph}};
-      std::copy(&m[0][0], &m[0][0] + 9, &r[0][0]);
-    }
+    r = wheelsetRotation(p.phi, p.psi, order);
     const double a = r[0][0], b = -r[0][2];
     rho = std::hypot(a, b);
     ceps = a / rho;

@@ -127,6 +127,10 @@ enum class EulerOrder {
   YawRoll,  // R = Rz(psi) Rx(phi)
 };
 
+// The wheelset -> track rotation of a pose's roll and yaw in that order (the spin left out),
+// rows of the matrix.
+std::array<std::array<double, 3>, 3> wheelsetRotation(double phi, double psi, EulerOrder order);
+
 struct ElasticSearchSpec {
   EulerOrder angles = EulerOrder::RollYaw;
   double sample_step = 0.25e-3;   // [m] wheel sampling of the scan

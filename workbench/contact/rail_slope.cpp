@@ -27,15 +27,6 @@ Mat3 mulTm(const Mat3& a, const Mat3& b) {  // a^T b
       for (int k = 0; k < 3; ++k) m[i][j] += a[k][i] * b[k][j];
   return m;
 }
-// Wheelset -> track rotation of a pose (ElasticSearchSpec::angles; the spin left out).
-Mat3 wheelsetRotation(double phi, double psi, EulerOrder order) {
-  const double cps = std::cos(psi), sps = std::sin(psi);
-  const double cph = std::cos(phi), sph = std::sin(phi);
-  if (order == EulerOrder::RollYaw)  // Rx(phi) Rz(psi)
-    return Mat3{{{cps, -sps, 0.0}, {cph * sps, cph * cps, -sph}, {sph * sps, sph * cps, cph}}};
-  return Mat3{{{cps, -sps * cph, sps * sph}, {sps, cps * cph, -cps * sph}, {0.0, sph, cph}}};
-}
-
 // The roll and yaw whose wheelset rotation has axle a (unit): the pose of a body of revolution.
 void anglesOfAxle(const Vec3& a, EulerOrder order, double& phi, double& psi) {
   if (order == EulerOrder::RollYaw) {  // a = (-sin psi, cos psi cos phi, cos psi sin phi)
