@@ -103,6 +103,8 @@ struct ContactModel {
   double centred_phi = 0.0;
   double centred_radius[2] = {0.0, 0.0};
   double centredRadius() const { return 0.5 * (centred_radius[0] + centred_radius[1]); }
+  // The track under the rail: elastic contact with rail masses (ElasticContactModel::support).
+  bool railSupport() const { return elastic && !elastic->support.empty(); }
 
   // Tangential forces (section 2.5).
   creep::Material material;

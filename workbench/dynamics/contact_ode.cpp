@@ -34,8 +34,8 @@ vehicle::VehicleLayout contactLayout(const vehicle::VehicleModel& m, WheelsetSpi
 
 ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
                                      const ContactModel& contact, const track::TrackModel& track)
-    : VehicleOde(vehicle, contactLayout(vehicle, contact.spin, contact.method,
-                                        contact.elastic && !contact.elastic->support.empty())),
+    : VehicleOde(vehicle,
+                 contactLayout(vehicle, contact.spin, contact.method, contact.railSupport())),
       contact_(&contact),
       work_(std::make_unique<ContactWorkspace>()) {
   RB_CHECK(layout_.n_ws > 0, "ContactVehicleOde: the vehicle has no wheelset");

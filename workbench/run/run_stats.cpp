@@ -26,8 +26,7 @@ void contactEffects(const dynamics::ContactModel& c, std::vector<EffectUse>& out
   }
   out.push_back({Effect::FlangeContact, std::string(method.flange_contact)});
   out.push_back({Effect::WheelsetSpin, std::string(nameOf(c.spin))});
-  if (c.elastic && !c.elastic->support.empty())
-    out.push_back({Effect::TrackSupport, "moving_rail_masses"});
+  if (c.railSupport()) out.push_back({Effect::TrackSupport, "moving_rail_masses"});
 }
 
 // `add` into `out` by effect: an effect already there with another detail lists both, in the

@@ -127,8 +127,7 @@ void addContactChannels(const Model& m, const RunVehicle& rv, io::ResultFile& f,
         }
       // A side with further rails (profiles.extra_rails): the wheel's contact per rail.
       const std::vector<std::string> rails = railNames(cm, side[0] == 'l' ? 0 : 1);
-      if (cm.elastic && !cm.elastic->support.empty())
-        addChannels(base + "track/", kTrackChannels, outputs);
+      if (cm.railSupport()) addChannels(base + "track/", kTrackChannels, outputs);
       for (const std::string& rail : rails)
         addChannels(base + "rails/" + rail + "/", kRailChannels, outputs);
     }
@@ -232,7 +231,7 @@ VehicleOutputs::VehicleOutputs(const Model& m, const RunVehicle& v, vehicle::Veh
       values_(v.output_elements.size()) {
   if (v.contact) {
     rails_ = {railNames(*v.contact, 0).size(), railNames(*v.contact, 1).size()};
-    track_ = v.contact->elastic && !v.contact->elastic->support.empty();
+    track_ = v.contact->railSupport();
   }
 }
 
@@ -319,6 +318,7 @@ void RailAnswers::update(const std::vector<dynamics::WheelOutput>& w, const std:
         wh.side = i % 2;
         wh.transfer_s.fill(nan);
         wh.peak_s.fill(nan);
+        wh.last_diff.fill(nan);
         wheels.push_back(wh);
       }
   for (Wheel& wh : wheels) {
@@ -333,14 +333,13 @@ void RailAnswers::update(const std::vector<dynamics::WheelOutput>& w, const std:
       if (r == 0) continue;
       const double diff = o.rail[0].normal - n;
       // The first sample where the further rail carries more than the running rail.
-      if (wh.started && std::isnan(wh.transfer_s[r]) && wh.last_diff[r] >= 0.0 && diff < 0.0) {
+      if (std::isnan(wh.transfer_s[r]) && wh.last_diff[r] >= 0.0 && diff < 0.0) {
         const double f = wh.last_diff[r] / (wh.last_diff[r] - diff);
         wh.transfer_s[r] = wh.last_s + f * (si - wh.last_s);
       }
       wh.last_diff[r] = diff;
     }
     wh.last_s = si;
-    wh.started = true;
   }
 }
 

@@ -34,9 +34,9 @@ struct RailAnswers {
   struct Wheel {
     std::size_t wheelset = 0, side = 0;  // index into ContactModel::wheelsets; 0 left, 1 right
     std::array<double, kRails> transfer_s{}, peak{}, peak_s{};
-    std::array<double, kRails> last_diff{};  // running rail's minus this rail's force, last sample
+    // The running rail's minus this rail's force at the last sample (NaN before the first).
+    std::array<double, kRails> last_diff{};
     double last_s = 0.0;
-    bool started = false;
   };
   std::vector<Wheel> wheels;
   void update(const std::vector<dynamics::WheelOutput>& w, const std::vector<double>& s,
@@ -59,7 +59,6 @@ class VehicleOutputs {
   StateOutputs& state() { return state_; }
   dynamics::ContactVehicleOde* contact() const { return contact_; }
   const CreepageMaximum& creepage() const { return creepage_; }
-  const RailAnswers& railAnswers() const { return answers_; }
   // After the run: the rail answers as attributes of each such wheel's rails group
   // (transfer_s_<rail>, peak_normal_force_<rail>, peak_normal_force_s_<rail>; none for a
   // transfer that did not happen) and one summary line per wheel into `lines`.
