@@ -15,6 +15,7 @@
 #include "workbench/integrators/integrator.hpp"
 #include "workbench/integrators/registry.hpp"
 #include "workbench/run/compile.hpp"
+#include "workbench/scenario/any_vehicle.hpp"
 #include "workbench/stability/stability.hpp"
 #include "workbench/track/track.hpp"
 #include "workbench/train/train_ode.hpp"
@@ -408,18 +409,13 @@ Analyser::Analyser(scenario::ScenarioSpec spec, Options options)
   if (!spec_.has_vehicle || !spec_.has_contact)
     throw Failure("the scenario needs a vehicle{} and a contact{} block (wheel/rail contact)");
   // Rails that change along the track (a turnout) have no steady state to linearise about.
-  if (dynamics::railsAlongTrack(spec_.profiles) ||
-      std::any_of(spec_.train.begin(), spec_.train.end(), [](const auto& v) {
-        return v.has_profiles && dynamics::railsAlongTrack(v.profiles);
-      }))
+  if (scenario::anyProfiles(spec_, dynamics::railsAlongTrack))
     throw Failure(
         "the rails change along the track (profiles.rail_slices / extra_rails): there is no "
         "steady state to linearise about; run the scene (workbench run) instead");
   // The track under the rail adds states the linearisation does not know yet.
-  if (!spec_.contact.elastic.rail_support.empty() ||
-      std::any_of(spec_.train.begin(), spec_.train.end(), [](const auto& v) {
-        return v.has_contact && !v.contact.elastic.rail_support.empty();
-      }))
+  if (scenario::anyContact(
+          spec_, [](const dynamics::ContactSpec& c) { return !c.elastic.rail_support.empty(); }))
     throw Failure(
         "contact.elastic.rail_support (the track under the rail) is not part of the modes "
         "analysis: remove it for the modes, or run the scene (workbench run, critical-speed)");

@@ -9,6 +9,7 @@
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/names.hpp"
 #include "workbench/dynamics/rails_along_track.hpp"
+#include "workbench/scenario/any_vehicle.hpp"
 
 namespace rb::stress {
 
@@ -131,10 +132,7 @@ bool hasRadius(const track::SegmentSpec& g) {
 
 std::string curveNote(const ScenarioSpec& s) {
   // Rails laid along the track by slices (a turnout's stock rail and blade follow its radius).
-  if (dynamics::railsAlongTrack(s.profiles) ||
-      std::any_of(s.train.begin(), s.train.end(), [](const auto& v) {
-        return v.has_profiles && dynamics::railsAlongTrack(v.profiles);
-      }))
+  if (scenario::anyProfiles(s, dynamics::railsAlongTrack))
     return "rails laid along the track by slices (profiles.rail_slices / extra_rails), placed "
            "for its curves: a scaled radius would not move them";
   return std::any_of(s.track.segments.begin(), s.track.segments.end(), hasRadius)
