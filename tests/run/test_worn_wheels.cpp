@@ -19,6 +19,7 @@
 namespace {
 
 const std::string kScene = "tests/run/data/worn_wheels_tangent.lua";
+const std::string kBogieScene = "tests/run/data/worn_bogie_tangent.lua";
 
 double lastSecondMean(const std::vector<double>& t, const std::vector<double>& v) {
   double sum = 0.0;
@@ -31,10 +32,11 @@ double lastSecondMean(const std::vector<double>& t, const std::vector<double>& v
   return sum / n;
 }
 
-// The lateral displacement [m] where delta_r(y) of the rigid contact changes sign, scanning from
-// the centre toward the right flange in 1 um steps (linear between the two samples).
-double rollingEquilibrium(const rb::run::Model& m) {
-  const rb::contact::ContactSolver& s = *m.lead().contact->solver;
+// The lateral displacement [m] where delta_r(y) of the rigid contact of wheelset w changes sign,
+// scanning from the centre toward the right flange in 1 um steps (linear between the two
+// samples).
+double rollingEquilibrium(const rb::run::Model& m, std::size_t w = 0) {
+  const rb::contact::ContactSolver& s = *m.lead().contact->forWheelset(w).solver;
   double prev_y = 0.0, prev = 0.0;
   for (int k = 0; k <= 5000; ++k) {
     const double y = -1e-6 * k;
@@ -50,9 +52,9 @@ double rollingEquilibrium(const rb::run::Model& m) {
 
 // Every wheelset's lateral displacement over the last second of a run [m].
 std::vector<double> steadyOffsets(const std::vector<std::string>& overrides,
-                                  const std::string& name) {
+                                  const std::string& name, const std::string& scene = kScene) {
   const rb::test::RunFile f =
-      rb::test::runInto(rb::test::compiled(kScene, overrides), "rb_test_worn_wheels", name + ".h5");
+      rb::test::runInto(rb::test::compiled(scene, overrides), "rb_test_worn_wheels", name + ".h5");
   EXPECT_TRUE(f.result.result.ok) << f.result.result.message;
   const rb::io::ResultReader r(f.path);
   const auto t = *r.dataset("/time");
@@ -109,6 +111,69 @@ TEST(WornWheels, TheSameProfileOnBothSidesIsTheSymmetricRun) {
   EXPECT_EQ(a, b);
   // Not worn: centred to round-off.
   for (double y : a) EXPECT_LT(std::abs(y), 1e-9);
+}
+
+// Wheels per wheelset (profiles.wheelsets): only the leading bogie's wheelsets have a worn right
+// wheel. Each wheelset rolls where its own wheels' delta_r is zero: the leading bogie's at the
+// offset of the worn pair, as when the whole vehicle has it, the trailing bogie's near the centre.
+// What moves the trailing bogie at all is the car body, pulled sideways by the leading bogie
+// through the secondary suspension (about 1.3 mm with the LUT) and pulling on it in turn.
+TEST(WornWheels, EachWheelsetRollsOnItsOwnWheels) {
+  const rb::run::Model m = rb::test::compiled(kBogieScene, {});
+  const double y_star = rollingEquilibrium(m, 0);
+  ASSERT_TRUE(std::isfinite(y_star));
+  EXPECT_EQ(y_star, rollingEquilibrium(m, 1));  // ws1 and ws2 share one model
+  // The trailing bogie's new wheelsets: delta_r = 0 at the centre.
+  const rb::dynamics::ContactModel& trailing = m.lead().contact->forWheelset(2);
+  EXPECT_EQ(&trailing, &*m.lead().contact);
+  EXPECT_EQ(trailing.centred_radius[0], trailing.centred_radius[1]);
+  EXPECT_EQ(m.lead().contact->own_wheels[0], m.lead().contact->own_wheels[1]);
+  EXPECT_LT(y_star, -1e-3);
+  for (const char* method : {"lut", "elastic"}) {
+    std::vector<std::string> o = {std::string("contact.method=") + method};
+    if (std::string(method) == "elastic") o.emplace_back("solver.step=5e-4");
+    const std::vector<double> y = steadyOffsets(o, std::string("bogie_") + method, kBogieScene);
+    EXPECT_NEAR(y[0], y_star, 0.03 * -y_star) << method;
+    EXPECT_NEAR(y[1], y_star, 0.03 * -y_star) << method;
+    EXPECT_LT(std::abs(y[2]), 0.05 * -y_star) << method;
+    EXPECT_LT(std::abs(y[3]), 0.05 * -y_star) << method;
+  }
+}
+
+// Every wheelset given the vehicle's worn pair as its own is the run of the vehicle's profiles,
+// bit for bit (KEC: one table per pair, shared by the four wheelsets).
+TEST(WornWheels, WheelsetsOnTheVehiclesWheelsAreTheVehicleRun) {
+  const std::string worn = "profiles/s1002_worn_0.3mm.txt";
+  std::vector<std::string> own = {"profiles.wheel_right=s1002", "run.duration=1"};
+  for (const char* ws : {"ws1", "ws2", "ws3", "ws4"})
+    own.push_back(std::string("profiles.wheelsets.") + ws + ".wheel_right=" + worn);
+  const auto a = steadyOffsets(own, "own_wheels");
+  const auto b = steadyOffsets({"run.duration=1"}, "vehicle_wheels");
+  EXPECT_EQ(a, b);
+  EXPECT_LT(a[0], -1e-5);  // worn: the wheelsets move off centre
+}
+
+// A prescribed spin rolls each wheelset at its own centred radius: a wheelset on wheels 0.3 mm
+// smaller in radius than the others' rolls without longitudinal creep on a tangent (at the
+// vehicle's radius its creepage would be about 6.5e-4).
+TEST(WornWheels, APrescribedSpinRollsEachWheelsetAtItsOwnRadius) {
+  const rb::test::RunFile f = rb::test::runInto(
+      rb::test::compiled(
+          kScene, {"profiles.wheel_right=s1002", "contact.wheelset_spin=prescribed",
+                   "profiles.wheelsets.ws1.wheel=profiles/s1002_worn_0.3mm.txt", "run.duration=2"}),
+      "rb_test_worn_wheels", "spin.h5");
+  ASSERT_TRUE(f.result.result.ok) << f.result.result.message;
+  const rb::io::ResultReader r(f.path);
+  const auto t = *r.dataset("/time");
+  const double r1 = *r.number("/contact/ws1", "centred_radius_left");
+  const double r2 = *r.number("/contact/ws2", "centred_radius_left");
+  EXPECT_NEAR(r2 - r1, 0.3e-3, 1e-6);
+  for (const char* ws : {"ws1", "ws2"})
+    for (const char* side : {"left", "right"})
+      EXPECT_LT(std::abs(lastSecondMean(
+                    t, *r.dataset("/contact/" + std::string(ws) + "/" + side + "/creepage_x"))),
+                1e-8)
+          << ws << " " << side;
 }
 
 }  // namespace

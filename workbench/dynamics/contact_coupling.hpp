@@ -105,7 +105,7 @@ template <class Law>
 int consistentCoupling(const ContactModels& models, const StageInput& in,
                        const AugmentedSystem& system, WheelsetWork& ww, ContactWorkspace& work,
                        Vec7& x, Eigen::Matrix2d& J) {
-  const ContactModel& c = models.contact;
+  const ContactModel& c = *ww.contact;
   Eigen::Vector2d lambda;
   if (ww.memory.valid) {
     lambda = ww.memory.lambda;
@@ -170,7 +170,7 @@ int coupleNormalAndTangential(const ContactModels& models, const StageInput& in,
     const bool lagged =
         models.contact.coupling == NormalForceCoupling::Lagged && in.mode != EvalMode::Init;
     if (lagged && ww.memory.valid) {
-      laggedCoupling<Law>(models.contact, system, ww, work.stats, x);
+      laggedCoupling<Law>(*ww.contact, system, ww, work.stats, x);
     } else {
       Eigen::Matrix2d J;
       if (const int rc = consistentCoupling<Law>(models, in, system, ww, work, x, J); rc != 0)

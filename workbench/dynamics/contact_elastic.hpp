@@ -189,7 +189,7 @@ inline void searchWheelRails(const ElasticContactModel& e, const vehicle::Vector
 template <class Law>
 void elasticPatches(const ContactModels& models, const StageInput& in, WheelsetWork& ww,
                     ContactWorkspace& work, Vec5& Q) {
-  const ContactModel& c = models.contact;
+  const ContactModel& c = *ww.contact;
   const ElasticContactModel& e = *c.elastic;
   const vehicle::Vector6d& q = work.bodies.q[ww.body];
   const WheelsetFrame wf = wheelsetFrame(work.bodies.kin[ww.body], work.bodies.qd[ww.body]);
@@ -269,7 +269,7 @@ inline void writeRailMassRates(const vehicle::VehicleLayout& l, int w, const dou
 // criterion). Rhs and Init evaluations refuse the state (recoverable); Output ones only report.
 inline int checkDerailment(const ContactModels& models, const StageInput& in,
                            const WheelsetWork& ww, ContactWorkspace& work) {
-  const ElasticContactModel& e = *models.contact.elastic;
+  const ElasticContactModel& e = *ww.contact->elastic;
   for (int s = 0; s < 2; ++s) {
     const double lift = ww.elastic[s].lift;
     if (!(std::abs(lift) > e.derailment_lift) || in.mode == EvalMode::Output) continue;
@@ -296,7 +296,7 @@ inline int elasticAccelerations(const ContactModels& models, const StageInput& i
   Eigen::Matrix<double, 5, 5> M = mass.block<5, 5>(1, 1);
   Vec5 b = Q;
   if (!models.layout.spinFree()) {
-    pinSpinRhs(M.col(3), in.acceleration / models.contact.centredRadius(), b);
+    pinSpinRhs(M.col(3), in.acceleration / ww.contact->centredRadius(), b);
     pinSpinMass(M);
   }
   Cholesky5 llt;
@@ -328,9 +328,8 @@ inline void writeElasticRates(const vehicle::VehicleLayout& l, int w, const doub
 
 // Outputs of wheelset w (elastic): per wheel the strongest tread patch as patch[0], the strongest
 // flange patch as patch[1], the totals over every patch.
-void elasticWheelsetOutputs(const ContactModels& models, const StageInput& in, int w,
-                            const WheelsetWork& ww, const Vec5& qdd, bool creep,
-                            ContactWorkspace& work);
+void elasticWheelsetOutputs(const StageInput& in, int w, const WheelsetWork& ww, const Vec5& qdd,
+                            bool creep, ContactWorkspace& work);
 
 // Stages 5-8 of wheelset w with the elastic method.
 template <class Law>
@@ -348,7 +347,7 @@ int elasticWheelsetStages(const ContactModels& models, const StageInput& in, int
   if (ydot) writeElasticRates(models.layout, w, in.y, qdd, ydot);
   if (ydot && models.layout.rail_masses > 0) writeRailMassRates(models.layout, w, in.y, ww, ydot);
   if (const int rc = checkDerailment(models, in, ww, work); rc != 0) return rc;
-  if (fillsOutputs(in.mode)) elasticWheelsetOutputs(models, in, w, ww, qdd, Law::kCreep, work);
+  if (fillsOutputs(in.mode)) elasticWheelsetOutputs(in, w, ww, qdd, Law::kCreep, work);
   if (clock) clock->mark(Stage::Checks);
   return 0;
 }

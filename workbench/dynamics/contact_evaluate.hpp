@@ -58,15 +58,14 @@ template <ContactMethod kMethod>
 // Track-frame lateral position of the contact point of every active patch of wheelset w: the
 // wheel material point u = (0, sigma Lw + s_w, -r) of the wheelset intermediate frame (Eq. 7, 10;
 // as setupPatch places it), turned by the wheelset's roll and yaw, plus its lateral displacement.
-inline void contactPositions(const ContactModels& models, const WheelsetWork& ww, int w,
-                             ContactWorkspace& work) {
+inline void contactPositions(const WheelsetWork& ww, int w, ContactWorkspace& work) {
   const Eigen::Matrix3d& A = work.bodies.kin[ww.body].attach.A;
   const double y = work.bodies.q[ww.body][vehicle::kY];
-  const double lw = models.contact.geometry.wheel_lw;
+  const double lw = ww.contact->geometry.wheel_lw;
   for (int s = 0; s < 2; ++s) {
     const double sigma = contact::kSideSign[s];
     WheelOutput& wo = work.wheels[2 * static_cast<std::size_t>(w) + static_cast<std::size_t>(s)];
-    wo.wheel_lift = wheelLiftOf(models.contact, ww, work.bodies.q[ww.body], s);
+    wo.wheel_lift = wheelLiftOf(*ww.contact, ww, work.bodies.q[ww.body], s);
     for (PatchOutput& po : wo.patch) {
       if (!po.active) continue;
       const Eigen::Vector3d u(0.0, sigma * lw + po.s_w, -po.radius);
@@ -101,7 +100,7 @@ inline int wheelsetStages(const ContactModels& models, const StageInput& in, int
     if (const int rc = checkWheelLift<kMethod>(models, in, ww, work, lift); rc != 0) return rc;
     if (fillsOutputs(in.mode)) {
       wheelsetOutputs(in, w, ww, x, Law::kCreep, kMethod == ContactMethod::Lut, work);
-      contactPositions(models, ww, w, work);
+      contactPositions(ww, w, work);
     }
     if (clock) clock->mark(Stage::Checks);
     return 0;

@@ -500,13 +500,14 @@ std::shared_ptr<const ElasticContactModel> compileElastic(const ProfilesSpec& p,
   return e;
 }
 
-}  // namespace
-
-ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
-                            const vehicle::VehicleModel& v, const track::TrackModel& track,
-                            TableCache* cache) {
+// The model of one wheel pair: compileContact without profiles.wheelsets.
+ContactModel compilePair(const ProfilesSpec& p, const ContactSpec& c,
+                         const vehicle::VehicleModel& v, const track::TrackModel& track,
+                         TableCache* cache) {
   Diagnostics d;
   ContactModel m;
+  m.wheel_sources = {p.wheel_left.empty() ? p.wheel : p.wheel_left,
+                     p.wheel_right.empty() ? p.wheel : p.wheel_right};
   m.method = c.method;
   m.creep = c.creep;
   m.coupling = c.normal_forces;
@@ -624,6 +625,84 @@ ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
                            formatNumber(gmax * 1e3) + " mm, beyond the LUT gauge range [" +
                            formatNumber(gg.min * 1e3) + ", " + formatNumber(gg.max * 1e3) + "] mm");
   }
+  return m;
+}
+
+// profiles.wheelsets: the model of each wheelset with wheels of its own (ContactModel::own_wheels).
+// Each entry's profiles fall back to the vehicle's; a pair equal to the vehicle's needs no model
+// of its own, and equal pairs share one. The warnings of a wheelset's model that the vehicle's
+// model does not give already are the vehicle's too, with the wheelsets they concern.
+void compileOwnWheels(const ProfilesSpec& p, const ContactSpec& c, const vehicle::VehicleModel& v,
+                      const track::TrackModel& track, TableCache* cache, ContactModel& m) {
+  Diagnostics d;
+  std::vector<std::string> names;
+  for (int b : m.wheelsets) names.push_back(v.bodies[static_cast<std::size_t>(b)].name);
+  std::vector<bool> given(names.size(), false);
+  std::map<std::array<std::string, 2>, std::shared_ptr<const ContactModel>> pairs;
+  std::map<const ContactModel*, std::vector<std::string>> users;
+  for (const WheelsetProfilesSpec& e : p.wheelsets) {
+    const auto it = std::find(names.begin(), names.end(), e.wheelset);
+    if (it == names.end()) {
+      const std::string hint = closestMatch(e.wheelset, names);
+      d.add(e.loc, "profiles.wheelsets: vehicle '" + v.name + "' has no wheelset named '" +
+                       e.wheelset + "'" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+      continue;
+    }
+    const auto w = static_cast<std::size_t>(it - names.begin());
+    if (given[w]) {
+      d.add(e.loc, "profiles.wheelsets: wheelset '" + e.wheelset + "' is given twice");
+      continue;
+    }
+    given[w] = true;
+    const auto pick = [&](const std::string& own, std::size_t side) {
+      return !own.empty() ? own : !e.wheel.empty() ? e.wheel : m.wheel_sources[side];
+    };
+    const std::array<std::string, 2> pair = {pick(e.wheel_left, 0), pick(e.wheel_right, 1)};
+    if (pair == m.wheel_sources) continue;
+    auto& model = pairs[pair];
+    if (!model) {
+      ProfilesSpec q = p;
+      q.wheelsets.clear();
+      q.wheel_left = pair[0];
+      q.wheel_right = pair[1];
+      q.loc = e.loc;
+      try {
+        model = std::make_shared<const ContactModel>(compilePair(q, c, v, track, cache));
+      } catch (const InputError& err) {
+        d.add(e.loc, "profiles.wheelsets." + e.wheelset + ": these wheels give no contact model");
+        d.add(err);
+        pairs.erase(pair);
+        continue;
+      }
+    }
+    m.own_wheels.resize(names.size());
+    m.own_wheels[w] = model;
+    users[model.get()].push_back(e.wheelset);
+  }
+  d.throwIfAny();
+  const std::vector<std::string> vehicle_warnings = m.warnings;
+  const std::vector<std::string> vehicle_gauge = m.gauge_warnings;
+  for (const auto& [model, ws] : users) {
+    std::string who;
+    for (const std::string& n : ws) who += (who.empty() ? "" : ", ") + n;
+    const auto note = [&](const std::vector<std::string>& from, std::vector<std::string>& into,
+                          const std::vector<std::string>& vehicle) {
+      for (const std::string& w : from)
+        if (std::find(vehicle.begin(), vehicle.end(), w) == vehicle.end())
+          into.push_back(w + " (wheelset " + who + ", on its own wheels)");
+    };
+    note(model->warnings, m.warnings, vehicle_warnings);
+    note(model->gauge_warnings, m.gauge_warnings, vehicle_gauge);
+  }
+}
+
+}  // namespace
+
+ContactModel compileContact(const ProfilesSpec& p, const ContactSpec& c,
+                            const vehicle::VehicleModel& v, const track::TrackModel& track,
+                            TableCache* cache) {
+  ContactModel m = compilePair(p, c, v, track, cache);
+  if (!p.wheelsets.empty()) compileOwnWheels(p, c, v, track, cache, m);
   return m;
 }
 

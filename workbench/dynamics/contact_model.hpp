@@ -140,6 +140,16 @@ struct ContactModel {
   // ContactMethod::Elastic: its searches, normal policy, damping and derailment criterion (null
   // for the constraint methods).
   std::shared_ptr<const ElasticContactModel> elastic;
+  // The wheel profiles' sources, left and right ("s1002" or a resolved file path).
+  std::array<std::string, 2> wheel_sources;
+  // Wheelsets with wheels of their own (profiles.wheelsets), by wheelset index (the order of
+  // `wheelsets`): the model compiled for that pair, with everything that follows from the
+  // profiles (positions, tables, centred pose and radii, elastic searches, flange height); null
+  // or beyond the end: this model. Wheelsets with the same pair share one model.
+  std::vector<std::shared_ptr<const ContactModel>> own_wheels;
+  const ContactModel& forWheelset(std::size_t w) const {
+    return w < own_wheels.size() && own_wheels[w] ? *own_wheels[w] : *this;
+  }
 
   // Build statistics of the table in use (time, bytes, warnings, notes).
   const contact::TableBuildStats& tableStats() const;

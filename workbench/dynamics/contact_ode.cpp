@@ -64,11 +64,17 @@ ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
     WheelsetWork& ww = work.wheelset(w);
     ww.body = layout_.wheelset(w);
     ww.height = vehicle.bodies[ww.body].height;
-    if (contact.elastic) {
+    ww.contact = &contact.forWheelset(static_cast<std::size_t>(w));
+    RB_CHECK(ww.contact->method == contact.method && ww.contact->creep == contact.creep &&
+                 (ww.contact->elastic != nullptr) == (contact.elastic != nullptr) &&
+                 (ww.contact->kec != nullptr) == (contact.kec != nullptr) &&
+                 (ww.contact->lut != nullptr) == (contact.lut != nullptr),
+             "ContactVehicleOde: a wheelset's own contact model differs in method or law");
+    if (const ElasticContactModel* e = ww.contact->elastic.get()) {
       // The search's candidate lists hold at most one entry per wheel sample: reserved here, the
       // evaluations never allocate (their number of candidates changes from one to the next).
       for (std::size_t side = 0; side < 2; ++side) {
-        const contact::ElasticContactSearch& search = contact.elastic->search[side];
+        const contact::ElasticContactSearch& search = e->search[side];
         const profiles::Profile& wheel = *search.pair().wheel;
         const auto n = static_cast<std::size_t>(
             (wheel.sMax() - wheel.sMin()) / search.spec().sample_step + 3.0);
@@ -82,7 +88,7 @@ ContactVehicleOde::ContactVehicleOde(const vehicle::VehicleModel& vehicle,
           sw.ok.reserve(n);
         };
         reserve(ww.elastic[side].search);
-        for (std::size_t r = 0; r < contact.elastic->extra[side].size(); ++r)
+        for (std::size_t r = 0; r < e->extra[side].size(); ++r)
           reserve(ww.elastic[side].extra_search[r]);
       }
     }
@@ -177,9 +183,9 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
   const vehicle::VehicleModel& m = *model_;
   ContactWorkspace& work = *work_;
   Eigen::VectorXd y = Eigen::VectorXd::Zero(l.size);
-  const double spin = m.speedAt(t0) / contact_->centredRadius();
   if (l.spinFree())
-    for (int w = 0; w < l.n_ws; ++w) y[l.wsRate(w, 1)] = spin;
+    for (int w = 0; w < l.n_ws; ++w)
+      y[l.wsRate(w, 1)] = m.speedAt(t0) / work.wheelset(w).contact->centredRadius();
   for (WheelsetWork& ww : work.wheelsets) {
     ww.memory.forget();
     ww.kec_warm = false;
@@ -189,6 +195,7 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
   std::vector<int> unknowns;
   for (int i = 0; i < 5 * l.n_free; ++i) unknowns.push_back(i);
   for (int w = 0; w < l.n_ws; ++w) {
+    const ContactModel& c = *work.wheelset(w).contact;
     const track::IrregularityPoint rail =
         irr_ != nullptr ? irr_->at(m.bodyS(static_cast<int>(l.wheelset(w)), t0))
                         : track::IrregularityPoint{};
@@ -209,10 +216,9 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
     // contact stiffness to work with).
     if (l.wheelsetVertical()) {
       const double height = m.bodies[l.wheelset(w)].height;
-      y[l.wsPosition(w, 3)] = contact_->centred_z - height - contact_->elastic->static_approach +
-                              0.5 * (rail.z_l + rail.z_r);
-      y[l.wsPosition(w, 4)] =
-          contact_->centred_phi + (rail.z_l - rail.z_r) / (2.0 * contact_->geometry.rail_lr);
+      y[l.wsPosition(w, 3)] =
+          c.centred_z - height - c.elastic->static_approach + 0.5 * (rail.z_l + rail.z_r);
+      y[l.wsPosition(w, 4)] = c.centred_phi + (rail.z_l - rail.z_r) / (2.0 * c.geometry.rail_lr);
       unknowns.push_back(l.wsPosition(w, 3));
       unknowns.push_back(l.wsPosition(w, 4));
     }
@@ -220,8 +226,8 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
     // static deflection of the nominal wheel load), and the wheelset down with it.
     if (l.rail_masses > 0) {
       const RailSupportPoint sp =
-          railSupportAt(contact_->elastic->support, m.bodyS(static_cast<int>(l.wheelset(w)), t0));
-      const double sag = contact_->elastic->static_load / sp.k_z;
+          railSupportAt(c.elastic->support, m.bodyS(static_cast<int>(l.wheelset(w)), t0));
+      const double sag = c.elastic->static_load / sp.k_z;
       y[l.wsPosition(w, 3)] -= sag;
       for (int side = 0; side < 2; ++side) {
         y[l.railPosition(w, side, 1)] = -sag;

@@ -279,7 +279,7 @@ void lutFlangePatch(const ContactModel& c, const WheelsetFrame& wf, double V, in
 template <ContactMethod kMethod, class Law>
 int contactPatches(const ContactModels& models, const StageInput& in, WheelsetWork& ww,
                    ContactWorkspace& work) {
-  const ContactModel& c = models.contact;
+  const ContactModel& c = *ww.contact;
   const WheelsetFrame wf = wheelsetFrame(work.bodies.kin[ww.body], work.bodies.qd[ww.body]);
   resetPatches(ww);
   if constexpr (kMethod == ContactMethod::Kec) {

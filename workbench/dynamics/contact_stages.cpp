@@ -60,7 +60,7 @@ int kecConstraints(const ContactModels& models, const StageInput& in, WheelsetWo
   const track::IrregularityPoint& rail = ww.irr;
   const contact::KecInput input{q[kY], rail.y_l, rail.y_r, rail.z_l, rail.z_r};
   const contact::KecSolution sol =
-      contact::solveKec(*models.contact.kec, input, ww.kec_warm ? &ww.kec : nullptr);
+      contact::solveKec(*ww.contact->kec, input, ww.kec_warm ? &ww.kec : nullptr);
   work.stats.kec_iterations += sol.iterations;
   if (sol.status != contact::KecStatus::Ok) {
     std::ostringstream os;
@@ -129,8 +129,8 @@ double lutChainRule(const contact::LutValue& f, const RailChannels& xi, double y
 // tread contact points and flange indentations the patch stage needs.
 int lutConstraints(const ContactModels& models, const StageInput& in, WheelsetWork& ww,
                    ContactWorkspace& work, DependentCoordinates& dep) {
-  const contact::LutTable& lut = *models.contact.lut;
-  const double lr = models.contact.geometry.rail_lr;
+  const contact::LutTable& lut = *ww.contact->lut;
+  const double lr = ww.contact->geometry.rail_lr;
   const vehicle::Vector6d& q = work.bodies.q[ww.body];
   const vehicle::Vector6d& qd = work.bodies.qd[ww.body];
   const RailChannels xi = railChannels(ww.irr);
@@ -187,7 +187,7 @@ void setWheelsetCoordinates(const ContactModels& models, const StageInput& in, i
     qd[vehicle::kWheelsetCoord[c]] = in.y[l.wsRate(w, c)];
   }
   if (!l.spinFree()) {
-    const double rc = models.contact.centredRadius();
+    const double rc = work.wheelset(w).contact->centredRadius();
     q[kPitch] = in.travel / rc;
     qd[kPitch] = in.speed / rc;
   }
@@ -230,7 +230,7 @@ int solveConstraints(const ContactModels& models, const StageInput& in, ContactW
     vehicle::Vector6d& q = work.bodies.q[ww.body];
     vehicle::Vector6d& qd = work.bodies.qd[ww.body];
     if (models.irregularities)
-      updateIrregularities(*models.irregularities, q[kS], models.contact.geometry.rail_lr, ww);
+      updateIrregularities(*models.irregularities, q[kS], ww.contact->geometry.rail_lr, ww);
     if (elastic) continue;  // z and phi are states (setIndependentCoordinates)
     DependentCoordinates dep;
     const int rc =
@@ -303,7 +303,7 @@ int augmentedSystem(const ContactModels& models, const StageInput& in, const Whe
   // a constraint reaction and drops out; the other rows keep their M_{q,theta} theta_ddot
   // coupling.
   if (!system.solver.factor(mass.block<5, 5>(1, 1), ww.N, ww.G, !spin_free,
-                            spin_free ? 0.0 : in.acceleration / models.contact.centredRadius())) {
+                            spin_free ? 0.0 : in.acceleration / ww.contact->centredRadius())) {
     work.fail(ContactFailure::Singular, models.vehicle.bodies[ww.body].name,
               "wheelset '" + models.vehicle.bodies[ww.body].name +
                   "': mass matrix not positive definite at t = " + std::to_string(in.t) + " s");
@@ -417,9 +417,8 @@ void wheelsetOutputs(const StageInput& in, int w, const WheelsetWork& ww, const 
   }
 }
 
-void elasticWheelsetOutputs(const ContactModels& models, const StageInput& in, int w,
-                            const WheelsetWork& ww, const Vec5& qdd, bool creep,
-                            ContactWorkspace& work) {
+void elasticWheelsetOutputs(const StageInput& in, int w, const WheelsetWork& ww, const Vec5& qdd,
+                            bool creep, ContactWorkspace& work) {
   vehicle::Vector6d& acc = work.qdd[ww.body];
   acc.setZero();
   acc(kS) = in.acceleration;
@@ -470,7 +469,7 @@ void elasticWheelsetOutputs(const ContactModels& models, const StageInput& in, i
     o.y_over_q = std::abs(o.force.Q) > 0.0 ? o.force.Y / o.force.Q : 0.0;
     o.lift = false;
     o.wheel_lift = ew.lift;
-    o.derailed = std::abs(ew.lift) > models.contact.elastic->derailment_lift;
+    o.derailed = std::abs(ew.lift) > ww.contact->elastic->derailment_lift;
     o.rail_mass_y = ew.rail_q[0];
     o.rail_mass_z = ew.rail_q[1];
     o.support_force_y = ew.support_force[0];

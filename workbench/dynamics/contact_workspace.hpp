@@ -152,6 +152,9 @@ struct ElasticWheelWork {
 // Per wheelset: the constraints, patches and normal forces of the evaluation.
 struct WheelsetWork {
   std::size_t body = 0;
+  // The contact model of this wheelset's wheels (ContactModel::forWheelset): its profiles'
+  // tables, centred pose and radii, and elastic searches. Set once, with the workspace.
+  const ContactModel* contact = nullptr;
   double height = 0.0;  // nominal centre height h (body z = contact z - h)
   // Contact constraints at this evaluation.
   contact::KecSolution kec;

@@ -42,6 +42,15 @@ inline bool validRailName(const std::string& n) {
   return true;
 }
 
+// One wheelset's own wheels (profiles.wheelsets.<name>): a worn, measured or re-profiled pair on
+// one wheelset of the vehicle. Each profile is drawn as a left wheel like ProfilesSpec::wheel;
+// an empty one falls back to `wheel` here, then to the vehicle's wheel_left / wheel_right / wheel.
+struct WheelsetProfilesSpec {
+  std::string wheelset;  // the wheelset body's name
+  std::string wheel, wheel_left, wheel_right;
+  SourceLoc loc;
+};
+
 struct ProfilesSpec {
   std::string wheel = "s1002";  // built-in "s1002", or a resolved path to a .prw / text file
   // The left and right wheels' own profiles (a wheelset with two different wheels: worn,
@@ -63,6 +72,9 @@ struct ProfilesSpec {
   // Further rails per side, each its own slices, searched by the elastic method with the running
   // rail (their patches are the wheel's patches too).
   std::array<std::vector<ExtraRailSpec>, 2> extra_rails;
+  // Wheelsets with wheels of their own (each wheelset at most once); the others run on the
+  // profiles above.
+  std::vector<WheelsetProfilesSpec> wheelsets;
   SourceLoc loc;
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "workbench/dynamics/names.hpp"
@@ -115,6 +116,18 @@ void addContactChannels(const Model& m, const RunVehicle& rv, io::ResultFile& f,
   const auto& cm = *rv.contact;
   const std::string contact = rv.prefix() + "/contact";
   const dynamics::ContactMethodInfo& info = dynamics::methodInfo(cm.method);
+  for (std::size_t k = 0; k < cm.wheelsets.size(); ++k) {
+    // The wheelset's wheels (its own: profiles.wheelsets) by file name, and their centred
+    // rolling radii.
+    const dynamics::ContactModel& own = cm.forWheelset(k);
+    const std::string group = contact + "/" + v.bodies[cm.wheelsets[k]].name;
+    for (std::size_t side = 0; side < 2; ++side) {
+      const char* name = side == 0 ? "left" : "right";
+      f.attr(group, std::string("wheel_profile_") + name,
+             std::filesystem::path(own.wheel_sources[side]).filename().string());
+      f.attr(group, std::string("centred_radius_") + name, own.centred_radius[side]);
+    }
+  }
   for (int w : cm.wheelsets)
     for (const char* side : {"left", "right"}) {
       const std::string base = contact + "/" + v.bodies[w].name + "/" + side + "/";

@@ -181,6 +181,69 @@ void railSlices(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
         });
 }
 
+// profiles.wheelsets = { ws2 = { wheel_right = "worn.txt" }, ws3 = { wheel = "b.prw" } }: the
+// wheelsets with wheels of their own, by the wheelset body's name (checked against the vehicle
+// when the contact model is compiled).
+void wheelsetProfiles(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
+  const Node* v = r.value("wheelsets");
+  if (!v) return;
+  const std::string form =
+      "{ ws1 = { wheel = ..., wheel_left = ..., wheel_right = ... }, ... } (a wheelset's name "
+      "and its own wheels: \"s1002\" or profile files)";
+  if (v->type != Node::Type::Table || !v->items.empty() || v->fields.empty()) {
+    r.error(*v, "wheelsets must be a table " + form + ", got " + v->describe());
+    return;
+  }
+  const std::vector<std::string> keys = {"wheel", "wheel_left", "wheel_right"};
+  for (const auto& [name, entry] : v->fields) {
+    const std::string at = "wheelsets." + name;
+    if (entry.type != Node::Type::Table || !entry.items.empty() || entry.fields.empty()) {
+      r.error(entry, at +
+                         " must be { wheel = ..., wheel_left = ..., wheel_right = ... } (at "
+                         "least one), got " +
+                         entry.describe());
+      continue;
+    }
+    bool ok = true;
+    for (const auto& [key, value] : entry.fields) {
+      if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
+        const std::string hint = closestMatch(key, keys);
+        r.error(value, at + ": unknown key '" + key + "'" +
+                           (hint.empty() ? " (wheel, wheel_left, wheel_right)"
+                                         : " (did you mean '" + hint + "'?)"));
+        ok = false;
+      } else if (value.type != Node::Type::String || value.string.empty()) {
+        r.error(value, at + "." + key + " must be \"s1002\" or a wheel profile file, got " +
+                           value.describe());
+        ok = false;
+      }
+    }
+    if (!ok) continue;
+    dynamics::WheelsetProfilesSpec w;
+    w.wheelset = name;
+    w.loc = entry.loc;
+    for (auto [key, target] : {std::pair{"wheel", &w.wheel}, std::pair{"wheel_left", &w.wheel_left},
+                               std::pair{"wheel_right", &w.wheel_right}}) {
+      const Node* f = entry.field(key);
+      if (!f) continue;
+      if (f->string == "s1002") {
+        *target = "s1002";
+        continue;
+      }
+      try {
+        *target = host.resolveDataFile(f->string, f->loc);
+      } catch (const InputError& e) {
+        const std::string hint = closestMatch(f->string, {"s1002"});
+        r.error(*f,
+                at + "." + key + ": " + e.diagnostics().front().message +
+                    (hint.empty() ? "" : " (did you mean the built-in profile '" + hint + "'?)"));
+        ok = false;
+      }
+    }
+    if (ok) p.wheelsets.push_back(std::move(w));
+  }
+}
+
 }  // namespace
 
 void buildProfiles(const Node& n, LuaHost& host, dynamics::ProfilesSpec& p, Diagnostics& d) {
@@ -200,6 +263,7 @@ void buildProfiles(const Node& n, LuaHost& host, dynamics::ProfilesSpec& p, Diag
   p.lr = r.number("lr");
   p.refined_tables = r.boolean("refined_tables");
   railSlices(r, host, p);
+  wheelsetProfiles(r, host, p);
   if (r.has("lw") && r.has("back_to_back"))
     r.error(n, "give either lw or back_to_back, not both (lw overrides the positioning)");
   if (r.has("lr") && r.has("gauge"))

@@ -142,6 +142,11 @@ std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string&
         if (sl.rail != "60e1" && hashed.insert(sl.rail).second)
           data(prefix + "rail_slice", sl.rail);
     };
+    // Wheelsets on wheels of their own.
+    for (const dynamics::WheelsetProfilesSpec& w : p.wheelsets)
+      for (const std::string* path : {&w.wheel, &w.wheel_left, &w.wheel_right})
+        if (!path->empty() && *path != "s1002" && hashed.insert(*path).second)
+          data(prefix + "wheelset_wheel", *path);
     for (std::size_t side = 0; side < 2; ++side) {
       slices(p.rail_slices[side]);
       for (const dynamics::ExtraRailSpec& r : p.extra_rails[side]) slices(r.slices);
