@@ -27,7 +27,8 @@ namespace {
 std::shared_ptr<const profiles::Profile> loadProfile(const std::string& source,
                                                      profiles::ProfileKind kind, double r0,
                                                      const SourceLoc& loc, Diagnostics& d,
-                                                     const char* key = nullptr) {
+                                                     const char* key = nullptr,
+                                                     const RailSliceSpec* slice = nullptr) {
   const bool wheel = kind == profiles::ProfileKind::Wheel;
   const std::string builtin = wheel ? "s1002" : "60e1";
   try {
@@ -38,8 +39,12 @@ std::shared_ptr<const profiles::Profile> loadProfile(const std::string& source,
     }
     profiles::ProfileReadOptions opt;
     if (wheel) opt.r0 = r0;
+    if (slice != nullptr) opt.mirrorZ = slice->z_down;
+    const profiles::LengthUnit unit = slice != nullptr && slice->metres
+                                          ? profiles::LengthUnit::Metre
+                                          : profiles::LengthUnit::Millimetre;
     return std::make_shared<const profiles::Profile>(
-        profiles::readProfileFile(source, kind, profiles::LengthUnit::Millimetre, opt));
+        profiles::readProfileFile(source, kind, unit, opt));
   } catch (const InputError& e) {
     d.add(loc, std::string("profiles.") +
                    (key != nullptr ? key
@@ -384,9 +389,9 @@ std::shared_ptr<const contact::SlicedRailSearch> slicedRail(
   Diagnostics d;
   std::vector<contact::RailSlice> slices;
   for (const RailSliceSpec& sl : spec) {
-    auto& left = loaded[sl.rail];
+    auto& left = loaded[sl.rail + (sl.metres ? "|m" : "|mm") + (sl.z_down ? "|down" : "|up")];
     if (!left)
-      left = loadProfile(sl.rail, profiles::ProfileKind::Rail, p.r0, sl.loc, d, "rail_slices");
+      left = loadProfile(sl.rail, profiles::ProfileKind::Rail, p.r0, sl.loc, d, "rail_slices", &sl);
     if (!left) continue;
     slices.push_back(
         {sl.s, side == 0 ? left : std::make_shared<const profiles::Profile>(left->mirrored()),
@@ -508,6 +513,17 @@ ContactModel compilePair(const ProfilesSpec& p, const ContactSpec& c,
   ContactModel m;
   m.wheel_sources = {p.wheel_left.empty() ? p.wheel : p.wheel_left,
                      p.wheel_right.empty() ? p.wheel : p.wheel_right};
+  // What of a CONTACT slices-file railbench does not use: its surface is built along the
+  // features' parts and through kinks, ours is the linear blend at a fixed lateral coordinate.
+  for (const SliceListSpec& l : p.slice_lists)
+    if (l.features > 1 || l.kinks > 0 || l.accelerations > 0)
+      m.warnings.push_back(
+          l.loc.str() + ": warning: " + std::filesystem::path(l.path).filename().string() +
+          ": its features (NFEAT = " + std::to_string(l.features) +
+          ", NKINK = " + std::to_string(l.kinks) + ", NACCEL = " + std::to_string(l.accelerations) +
+          ") are not used: the slices are blended linearly at a fixed lateral coordinate "
+          "(docs/sliced_rails.md); a rail that moves sideways between slices differs from "
+          "CONTACT's surface there");
   m.method = c.method;
   m.creep = c.creep;
   m.coupling = c.normal_forces;

@@ -22,6 +22,18 @@ struct RailSliceSpec {
   std::string rail;  // "60e1" or a resolved path, drawn as a left rail like ProfilesSpec::rail
   double dy = 0.0;   // [m] offset of its rail frame toward the field side
   double dz = 0.0;   // [m] offset of its rail frame, up
+  // A plain-text slice file's length unit and z direction (a slice of a CONTACT slices-file:
+  // z down, as CONTACT's canonical profiles; SIMPACK files say both themselves).
+  bool metres = false;
+  bool z_down = false;
+  SourceLoc loc;
+};
+
+// A CONTACT slices-file (.slcs, profiles/slice_list.hpp) read into rail slices: its path (part of
+// a study case's content key) and what of it railbench does not use (warned about at compile).
+struct SliceListSpec {
+  std::string path;  // resolved
+  int features = 0, kinks = 0, accelerations = 0;
   SourceLoc loc;
 };
 
@@ -75,6 +87,8 @@ struct ProfilesSpec {
   // Wheelsets with wheels of their own (each wheelset at most once); the others run on the
   // profiles above.
   std::vector<WheelsetProfilesSpec> wheelsets;
+  // The slices-files the slices above were read from.
+  std::vector<SliceListSpec> slice_lists;
   SourceLoc loc;
 };
 

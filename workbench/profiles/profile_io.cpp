@@ -559,7 +559,10 @@ Profile readSimpackProfile(const std::string& path, const ProfileReadOptions& op
 
 Profile readTextProfile(const std::string& path, ProfileKind kind, LengthUnit units,
                         const ProfileReadOptions& options) {
-  return profileFromPoints(readTextPoints(path, kind, units), options, stem(path));
+  ProfilePoints points = readTextPoints(path, kind, units);
+  if (options.mirrorZ)
+    for (double& z : points.z) z = -z;
+  return profileFromPoints(points, options, stem(path));
 }
 
 Profile readProfileFile(const std::string& path, ProfileKind kind, LengthUnit units,

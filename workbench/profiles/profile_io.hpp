@@ -59,6 +59,8 @@ struct ProfileReadOptions {
   double ds = 2.0e-5;            // [m] grid step of the resulting Profile
   double maxSlope = 10.0;        // keep the longest run of points with |dz/dy| <= maxSlope
   bool mirrorY = false;          // negate y after reading (e.g. a file drawn for the right side)
+  bool mirrorZ = false;          // plain text only: negate z as read (files with z down, as
+                                 // CONTACT's canonical profiles); SIMPACK files say it themselves
   double rotate = 0.0;           // [rad] rotate the points about the file origin: y' = y cos a -
                                  // z sin a, z' = y sin a + z cos a (z up; -atan(1/40) undoes a
                                  // 1:40 cant of a rail drawn canted)

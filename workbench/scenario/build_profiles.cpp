@@ -1,7 +1,9 @@
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "workbench/core/strings.hpp"
+#include "workbench/profiles/slice_list.hpp"
 #include "workbench/scenario/build.hpp"
 #include "workbench/scenario/reader.hpp"
 
@@ -31,14 +33,110 @@ std::string profileSource(Reader& r, const Node& n, const std::string& key,
 constexpr std::size_t kMaxRailSlices = 2000;  // per rail: a turnout needs tens
 constexpr double kMaxRailOffset = 0.5;        // [m] |dy|, |dz| of a slice
 
+// A CONTACT slices-file for one rail: { slcs = "file.slcs", s = <m>, units = "mm" | "m",
+// z = "down" | "up", dy = <m>, dz = <m> }. The slices are at s + u_fc (u_fc of the file, in m),
+// each moved by dy, dz; plain-text slice files are read in `units` with z `z` (CONTACT's
+// canonical form: mm, z down), SIMPACK ones as their headers say.
+bool sliceFile(Reader& r, LuaHost& host, const Node& v, const std::string& what,
+               std::vector<dynamics::RailSliceSpec>& out,
+               std::vector<dynamics::SliceListSpec>& lists) {
+  const std::string form =
+      "{ slcs = \"file.slcs\", s = <m> (track position of the file's u = 0), units = \"mm\" "
+      "or \"m\", z = \"down\" or \"up\", dy = <m>, dz = <m> }";
+  bool ok = true;
+  for (const auto& [key, value] : v.fields)
+    if (key != "slcs" && key != "s" && key != "units" && key != "z" && key != "dy" && key != "dz") {
+      r.error(value, what + ": unknown key '" + key + "' in " + form);
+      ok = false;
+    }
+  const Node* file = v.field("slcs");
+  const Node* s0 = v.field("s");
+  if (file->type != Node::Type::String || file->string.empty()) {
+    r.error(*file, what + ".slcs must be a slices-file name, got " + file->describe());
+    return false;
+  }
+  if (!s0 || s0->type != Node::Type::Number || !std::isfinite(s0->number)) {
+    r.error(s0 ? *s0 : v, what +
+                              ".s must be the track arc length [m] of the slices-file's u = 0, "
+                              "got " +
+                              (s0 ? s0->describe() : std::string("nothing")));
+    return false;
+  }
+  dynamics::RailSliceSpec base;
+  base.loc = v.loc;
+  const auto choice = [&](const char* key, const char* a, const char* b, bool& second) {
+    const Node* n = v.field(key);
+    if (!n) return;
+    if (n->type == Node::Type::String && (n->string == a || n->string == b)) {
+      second = n->string == b;
+      return;
+    }
+    r.error(*n, what + "." + key + " must be \"" + a + "\" or \"" + b + "\", got " + n->describe());
+    ok = false;
+  };
+  choice("units", "mm", "m", base.metres);
+  bool up = false;
+  choice("z", "down", "up", up);
+  base.z_down = !up;
+  for (auto [key, target] : {std::pair{"dy", &base.dy}, std::pair{"dz", &base.dz}}) {
+    const Node* o = v.field(key);
+    if (!o) continue;
+    if (o->type != Node::Type::Number || !(std::abs(o->number) <= kMaxRailOffset)) {
+      r.error(*o, what + "." + key + " must be an offset of at most " +
+                      formatNumber(kMaxRailOffset) + " m, got " + o->describe());
+      ok = false;
+      continue;
+    }
+    *target = o->number;
+  }
+  if (!ok) return false;
+  std::string path;
+  profiles::SliceList list;
+  try {
+    path = host.resolveDataFile(file->string, file->loc);
+    list = profiles::readSliceList(path);
+  } catch (const InputError& e) {
+    // The slices-file's own problems at its own line; a name that does not resolve at the
+    // scenario's.
+    const Diagnostic& diag = e.diagnostics().front();
+    r.error(*file, what +
+                       ".slcs: " + (diag.loc.file == file->loc.file ? "" : diag.loc.str() + ": ") +
+                       diag.message);
+    return false;
+  }
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  for (const profiles::SliceListEntry& e : list.slices) {
+    dynamics::RailSliceSpec sl = base;
+    sl.s = s0->number + e.u_fc;
+    const SourceLoc at{path, e.line};
+    if (sl.s < 0.0) {
+      r.error(*s0, what + ": the slice at " + at.str() + " is at s = " + formatNumber(sl.s) +
+                       " m, before the track's start (raise " + what + ".s)");
+      return false;
+    }
+    try {
+      const std::filesystem::path f(e.file);
+      sl.rail = host.resolveDataFile((f.is_absolute() ? f : folder / f).string(), at);
+    } catch (const InputError& err) {
+      r.error(*file, what + ".slcs: " + err.diagnostics().front().loc.str() + ": " +
+                         err.diagnostics().front().message);
+      return false;
+    }
+    out.push_back(std::move(sl));
+  }
+  lists.push_back({path, list.features, list.kinks, list.accelerations, file->loc});
+  return true;
+}
+
 // One side's list of slices ("what" names it in messages); false when malformed.
 bool sliceList(Reader& r, LuaHost& host, const Node& list, const std::string& what,
                std::vector<dynamics::RailSliceSpec>& out) {
   const std::string form =
       "{ s = <m>, rail = \"60e1\" or a rail profile file, dy = <m>, dz = <m> }";
   if (list.type != Node::Type::Table || !list.fields.empty() || list.items.empty()) {
-    r.error(list,
-            what + " must be a non-empty list of slices " + form + ", got " + list.describe());
+    r.error(list, what + " must be a non-empty list of slices " + form +
+                      " or a CONTACT slices-file { slcs = \"file.slcs\", s = <m> }, got " +
+                      list.describe());
     return false;
   }
   if (list.items.size() > kMaxRailSlices) {
@@ -109,6 +207,15 @@ bool sliceList(Reader& r, LuaHost& host, const Node& list, const std::string& wh
   return ok;
 }
 
+// A rail's slices: a list (sliceList) or a CONTACT slices-file (sliceFile).
+bool oneRailSlices(Reader& r, LuaHost& host, const Node& v, const std::string& what,
+                   std::vector<dynamics::RailSliceSpec>& out,
+                   std::vector<dynamics::SliceListSpec>& lists) {
+  if (v.type == Node::Type::Table && v.items.empty() && v.field("slcs"))
+    return sliceFile(r, host, v, what, out, lists);
+  return sliceList(r, host, v, what, out);
+}
+
 // The sides of a { left = ..., right = ... } table; each side's value goes to `side`.
 template <class Side>
 void eachSide(Reader& r, const Node& v, const std::string& key, const std::string& form,
@@ -133,7 +240,8 @@ void railSlices(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
              "length [m], strictly increasing)",
              [&](std::size_t side, const std::string& what, const Node& list) {
                std::vector<dynamics::RailSliceSpec> out;
-               if (sliceList(r, host, list, what, out)) p.rail_slices[side] = std::move(out);
+               if (oneRailSlices(r, host, list, what, out, p.slice_lists))
+                 p.rail_slices[side] = std::move(out);
              });
   constexpr std::size_t kMaxExtra = dynamics::kMaxExtraRails;
   if (const Node* v = r.value("extra_rails"))
@@ -174,7 +282,7 @@ void railSlices(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
             dynamics::ExtraRailSpec rail;
             rail.name = name->string;
             rail.loc = item.loc;
-            if (sliceList(r, host, *slices, at + ".slices", rail.slices))
+            if (oneRailSlices(r, host, *slices, at + ".slices", rail.slices, p.slice_lists))
               rails.push_back(std::move(rail));
           }
           p.extra_rails[side] = std::move(rails);

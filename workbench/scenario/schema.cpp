@@ -277,7 +277,10 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
               "left rail like rail, blended linearly between slices at fixed lateral "
               "coordinate; before the first and after the last slice the rail is that slice "
               "(docs/sliced_rails.md); a slice may move its rail by dy (toward the field side) and "
-              "dz (up) [m], interpolated between slices"),
+              "dz (up) [m], interpolated between slices; or, per side, a CONTACT slices-file { "
+              "slcs = "
+              "\"file.slcs\", s = <m> (track position of its u = 0), units = \"mm\" | \"m\", "
+              "z = \"down\" | \"up\" (its plain-text slices; default CONTACT's mm, z down) }"),
         typed("extra_rails", ValueType::Table, "-",
               "further rails per side (elastic contact only), each with its own slices and "
               "present from its first slice to its last: { right = { { name = \"nose\", slices "

@@ -142,6 +142,9 @@ std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string&
         if (sl.rail != "60e1" && hashed.insert(sl.rail).second)
           data(prefix + "rail_slice", sl.rail);
     };
+    // CONTACT slices-files (their slice positions; the slice files are hashed below).
+    for (const dynamics::SliceListSpec& l : p.slice_lists)
+      if (hashed.insert(l.path).second) data(prefix + "slice_list", l.path);
     // Wheelsets on wheels of their own.
     for (const dynamics::WheelsetProfilesSpec& w : p.wheelsets)
       for (const std::string* path : {&w.wheel, &w.wheel_left, &w.wheel_right})
