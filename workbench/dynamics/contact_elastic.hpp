@@ -116,10 +116,9 @@ inline double wheelLift(const ContactModel& c, const vehicle::Vector6d& q, doubl
 // The search of one wheel over one rail at the wheelset's s: the pose relative to the rail's
 // displaced profile origin (irregularity `irr`, and a sliced rail's offsets toward the field side
 // and up at `at`); `rail` receives that displacement.
-inline void searchRail(const contact::SlicedRailSearch::Place& at, const vehicle::Vector6d& q,
-                       double height, const RailOffset& irr, double sigma,
-                       contact::ElasticWheelGeometry& out, contact::ElasticSearchWorkspace& sw,
-                       contact::ElasticSearchWorkspace& sloped, RailOffset& rail) {
+inline contact::ElasticPose railPose(const contact::SlicedRailSearch::Place& at,
+                                     const vehicle::Vector6d& q, double height,
+                                     const RailOffset& irr, double sigma, RailOffset& rail) {
   rail = irr;
   rail.y += sigma * at.dy;
   rail.z += at.dz;
@@ -129,6 +128,14 @@ inline void searchRail(const contact::SlicedRailSearch::Place& at, const vehicle
   contact::ElasticPose pose{q[vehicle::kY] - rail.y, q[vehicle::kZ] + height - rail.z,
                             q[vehicle::kRoll], q[vehicle::kYaw]};
   pose.blend = at.blend;
+  return pose;
+}
+
+inline void searchRail(const contact::SlicedRailSearch::Place& at, const vehicle::Vector6d& q,
+                       double height, const RailOffset& irr, double sigma,
+                       contact::ElasticWheelGeometry& out, contact::ElasticSearchWorkspace& sw,
+                       contact::ElasticSearchWorkspace& sloped, RailOffset& rail) {
+  const contact::ElasticPose pose = railPose(at, q, height, irr, sigma, rail);
   // The slices' slope along the track is in the search's geometry (rail_slope.hpp); the
   // irregularity's is not (its r p^2 / 2 is below a micrometre) and stays in the damping's rail
   // velocity.
@@ -178,8 +185,15 @@ inline void searchWheelRails(const ElasticContactModel& e, const vehicle::Vector
   for (std::size_t r = 0; r < e.extra[sd].size(); ++r) {
     const contact::SlicedRailSearch::Place at = e.extra[sd][r]->at(q[vehicle::kS]);
     if (at.search == nullptr) continue;
-    searchRail(at, q, height, irr, sigma, ew.extra_geometry, ew.extra_search[r],
-               ew.sloped_search[r + 1], ew.rail_offset[r + 1]);
+    if (e.extra_check[sd][r] != 0) {
+      // A check rail: its contact with the back of the flange (check_rail.hpp). Its slope along
+      // the track (a flare) is in the damping's rail velocity, not in the geometry.
+      const contact::ElasticPose pose = railPose(at, q, height, irr, sigma, ew.rail_offset[r + 1]);
+      contact::searchCheckRail(*at.search, e.flange_back[sd], pose, ew.extra_geometry);
+    } else {
+      searchRail(at, q, height, irr, sigma, ew.extra_geometry, ew.extra_search[r],
+                 ew.sloped_search[r + 1], ew.rail_offset[r + 1]);
+    }
     mergeRailPatches(ew.extra_geometry, static_cast<int>(r), ew);
   }
 }

@@ -437,8 +437,40 @@ void compileSlicedRails(const ProfilesSpec& p, const contact::ElasticSearchSpec&
                      "profiles.extra_rails." + name + "[" + std::to_string(k + 1) + "].slices",
                      true, pairs[side], search, loaded));
       e.extra_names[side].push_back(r.name);
+      e.extra_check[side].push_back(r.check ? 1 : 0);
     }
   }
+}
+
+// A check rail lies on the track-centre side of the flange back: at every slice the centred
+// wheelset (no irregularity) must clear it, or the rail stands where the wheel is (under its
+// tread or flange) and the lateral search of check_rail.hpp would press the wheel out of it.
+void checkRailClearances(const ProfilesSpec& p, const ContactModel& m,
+                         const ElasticContactModel& e) {
+  Diagnostics d;
+  for (std::size_t side = 0; side < 2; ++side)
+    for (std::size_t r = 0; r < e.extra[side].size(); ++r) {
+      if (e.extra_check[side][r] == 0) continue;
+      const ExtraRailSpec& spec = p.extra_rails[side][r];
+      for (std::size_t k = 0; k < spec.slices.size(); ++k) {
+        const contact::SlicedRailSearch::Place at = e.extra[side][r]->at(spec.slices[k].s);
+        if (at.search == nullptr) continue;
+        const double sigma = contact::kSideSign[side];
+        const contact::ElasticPose centred{-sigma * at.dy, m.centred_z - at.dz, m.centred_phi, 0.0};
+        contact::ElasticWheelGeometry g;
+        contact::searchCheckRail(*at.search, e.flange_back[side], centred, g);
+        if (g.min_gap > 0.0) continue;
+        d.add(spec.slices[k].loc,
+              "profiles.extra_rails." + std::string(side == 0 ? "left" : "right") + "[" +
+                  std::to_string(r + 1) + "] (check rail '" + spec.name + "'), slice " +
+                  std::to_string(k + 1) + " at s = " + formatNumber(spec.slices[k].s) +
+                  " m: it reaches " + formatNumber(-g.min_gap * 1e3, 4) +
+                  " mm into the back of the centred wheel's flange; a check rail lies on the "
+                  "track-centre side of the flange back (move it by dy < 0)");
+        break;
+      }
+    }
+  d.throwIfAny();
 }
 
 std::shared_ptr<const ElasticContactModel> compileElastic(const ProfilesSpec& p,
@@ -453,6 +485,14 @@ std::shared_ptr<const ElasticContactModel> compileElastic(const ProfilesSpec& p,
   for (const contact::WheelRailPair& pair : contact::wheelRailPairs(m.geometry))
     e->search.emplace_back(pair, search);
   compileSlicedRails(p, search, m, *e);
+  // The flange backs (check rails): each wheel drawn as a left wheel, its back face at the
+  // flange-back distance of the positioning (Lw = B/2 + 70 mm).
+  for (std::size_t side = 0; side < 2; ++side) {
+    const profiles::Profile& w = *e->search[side].pair().wheel;
+    e->flange_back[side] =
+        contact::FlangeBack(side == 0 ? w : w.mirrored(), -profiles::kS1002FlangeBackDistance);
+  }
+  checkRailClearances(p, m, *e);
   e->normal.material = m.material;
   e->normal.min_ratio = c.elastic.min_curvature_ratio;
   e->damping_ratio = c.elastic.damping_ratio;
@@ -505,6 +545,20 @@ std::shared_ptr<const ElasticContactModel> compileElastic(const ProfilesSpec& p,
   return e;
 }
 
+// What of a CONTACT slices-file railbench does not use: its surface is built along the
+// features' parts and through kinks, ours is the linear blend at a fixed lateral coordinate.
+void sliceListWarnings(const ProfilesSpec& p, std::vector<std::string>& warnings) {
+  for (const SliceListSpec& l : p.slice_lists)
+    if (l.features > 1 || l.kinks > 0 || l.accelerations > 0)
+      warnings.push_back(
+          l.loc.str() + ": warning: " + std::filesystem::path(l.path).filename().string() +
+          ": its features (NFEAT = " + std::to_string(l.features) +
+          ", NKINK = " + std::to_string(l.kinks) + ", NACCEL = " + std::to_string(l.accelerations) +
+          ") are not used: the slices are blended linearly at a fixed lateral coordinate "
+          "(docs/sliced_rails.md); a rail that moves sideways between slices differs from "
+          "CONTACT's surface there");
+}
+
 // The model of one wheel pair: compileContact without profiles.wheelsets.
 ContactModel compilePair(const ProfilesSpec& p, const ContactSpec& c,
                          const vehicle::VehicleModel& v, const track::TrackModel& track,
@@ -513,17 +567,7 @@ ContactModel compilePair(const ProfilesSpec& p, const ContactSpec& c,
   ContactModel m;
   m.wheel_sources = {p.wheel_left.empty() ? p.wheel : p.wheel_left,
                      p.wheel_right.empty() ? p.wheel : p.wheel_right};
-  // What of a CONTACT slices-file railbench does not use: its surface is built along the
-  // features' parts and through kinks, ours is the linear blend at a fixed lateral coordinate.
-  for (const SliceListSpec& l : p.slice_lists)
-    if (l.features > 1 || l.kinks > 0 || l.accelerations > 0)
-      m.warnings.push_back(
-          l.loc.str() + ": warning: " + std::filesystem::path(l.path).filename().string() +
-          ": its features (NFEAT = " + std::to_string(l.features) +
-          ", NKINK = " + std::to_string(l.kinks) + ", NACCEL = " + std::to_string(l.accelerations) +
-          ") are not used: the slices are blended linearly at a fixed lateral coordinate "
-          "(docs/sliced_rails.md); a rail that moves sideways between slices differs from "
-          "CONTACT's surface there");
+  sliceListWarnings(p, m.warnings);
   m.method = c.method;
   m.creep = c.creep;
   m.coupling = c.normal_forces;

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "workbench/contact/check_rail.hpp"
 #include "workbench/contact/config.hpp"
 #include "workbench/contact/elastic_normal.hpp"
 #include "workbench/contact/elastic_search.hpp"
@@ -63,6 +64,11 @@ struct ElasticContactModel {
   // its first slice to its last, with their names (outputs /contact/<ws>/<side>/rails/<name>).
   std::array<std::vector<std::shared_ptr<const contact::SlicedRailSearch>>, 2> extra;
   std::array<std::vector<std::string>, 2> extra_names;
+  // [side][rail]: 1 for a check rail (its contact is with the back of the wheel's flange,
+  // contact/check_rail.hpp), 0 for a rail under the tread and flange.
+  std::array<std::vector<int>, 2> extra_check;
+  // [side]: the back of the wheel's flange, for check rails.
+  std::array<contact::FlangeBack, 2> flange_back;
   contact::ElasticNormalSpec normal;
   // Hunt-Crossley damping N = K_H delta^1.5 (1 + damping delta_dot) [s/m], derived from
   // ElasticSpec::damping_ratio at the nominal static wheel load of the centred tread contact:

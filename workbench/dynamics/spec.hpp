@@ -43,6 +43,9 @@ inline constexpr std::size_t kMaxExtraRails = 3;  // per side
 struct ExtraRailSpec {
   std::string name;  // 1-32 letters, digits, '_'; not "rail" (the running rail)
   std::vector<RailSliceSpec> slices;
+  // A check rail: it meets the back of the wheel's flange (contact/check_rail.hpp), not its
+  // tread or flange face.
+  bool check = false;
   SourceLoc loc;
 };
 // A rail's name in outputs (/contact/<ws>/<side>/rails/<name>).

@@ -262,11 +262,13 @@ void railSlices(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
             const std::string at = what + "[" + std::to_string(i + 1) + "]";
             const Node* name = item.type == Node::Type::Table ? item.field("name") : nullptr;
             const Node* slices = item.type == Node::Type::Table ? item.field("slices") : nullptr;
-            if (!name || !slices || item.fields.size() != 2 || !item.items.empty() ||
+            const Node* check = item.type == Node::Type::Table ? item.field("check") : nullptr;
+            if (!name || !slices || item.fields.size() != (check ? 3U : 2U) ||
+                !item.items.empty() || (check != nullptr && check->type != Node::Type::Bool) ||
                 name->type != Node::Type::String || !dynamics::validRailName(name->string)) {
               r.error(item, at +
                                 " must be { name = \"nose\" (1-32 letters, digits or '_'), "
-                                "slices = { ... } }, got " +
+                                "slices = { ... }, check = true or false (optional) }, got " +
                                 item.describe());
               continue;
             }
@@ -281,6 +283,7 @@ void railSlices(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
             }
             dynamics::ExtraRailSpec rail;
             rail.name = name->string;
+            rail.check = check != nullptr && check->boolean;
             rail.loc = item.loc;
             if (oneRailSlices(r, host, *slices, at + ".slices", rail.slices, p.slice_lists))
               rails.push_back(std::move(rail));

@@ -285,7 +285,8 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
               "further rails per side (elastic contact only), each with its own slices and "
               "present from its first slice to its last: { right = { { name = \"nose\", slices "
               "= { { s = 10, rail = \"nose.txt\", dz = -0.01 }, ... } } } }; at most 3 per "
-              "side; their normal forces are written per rail (docs/sliced_rails.md)"),
+              "side; their normal forces are written per rail; check = true makes one a check "
+              "rail, met by the back of the wheel's flange (docs/sliced_rails.md)"),
         typed("wheelsets", ValueType::Table, "-",
               "wheelsets with wheels of their own (worn, measured, re-profiled), by the "
               "wheelset's name: { ws2 = { wheel_right = \"worn.txt\" }, ws3 = { wheel = "
