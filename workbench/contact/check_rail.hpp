@@ -1,9 +1,9 @@
 #pragma once
 // Contact of a check rail with the back of a wheel's flange (docs/sliced_rails.md, "Check
 // rails"). A check rail runs beside a running rail on the track-centre side of it and holds the
-// wheelset sideways by the back of the other... of this wheel's flange: its face meets the flat
-// back face of the wheel (a disc at the flange-back distance from the tape circle) or the rounded
-// edge between that face and the flange tip. The wheel profile, a function of the lateral
+// wheelset sideways by the back of that wheel's flange: its face meets the flat back face of the
+// wheel (a disc at the flange-back distance from the tape circle) or the rounded edge between
+// that face and the flange tip. The wheel profile, a function of the lateral
 // coordinate, cannot hold that vertical face; the contact is searched laterally instead:
 //
 // - The wheel's back, as a function of the distance rho from the axle: s_back(rho) = s_face (the
@@ -17,11 +17,13 @@
 //   the lateral coordinate in the wheelset frame. d is linear in x over the flat face (its slope
 //   the wheelset's yaw relative to the rail): its largest value is at the face's edge, or beyond
 //   it on the rounded edge; the rounded part is sampled (kBackSamples in rho).
-// - The deepest (point, x) over the check rail's samples is the contact: one patch, its normal
-//   the wheel back's (the axle direction on the flat face), its penetration along that normal the
-//   approach. The flat face is flat in every direction: the relative curvatures are the check
-//   rail head's transverse curvature and 0 along the track (the normal problem's floor,
-//   ElasticNormalSpec::min_curvature, applies).
+// - The deepest line over the check rail's samples (refined by golden section) is the contact:
+//   one patch, its normal the wheel back's (the axle direction on the flat face), its deepest
+//   penetration along that normal the approach. On the flat face the patch sits at the centroid
+//   of the penetration along the chord (linear from the deepest edge), continuous in the yaw:
+//   the chord's middle without yaw, nearer the edge as the yaw grows. The flat face is flat in
+//   every direction: the relative curvatures are the check rail head's transverse curvature and 0
+//   along the track (the normal problem's floor, ElasticNormalSpec::min_curvature, applies).
 #include "workbench/contact/elastic_search.hpp"
 #include "workbench/profiles/profile.hpp"
 
