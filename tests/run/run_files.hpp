@@ -18,6 +18,18 @@
 
 namespace rb::test {
 
+// The mean of v over the samples of the last second of t (steady states of the run tests).
+inline double lastSecondMean(const std::vector<double>& t, const std::vector<double>& v) {
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= t.back() - 1.0) {
+      sum += v[i];
+      ++n;
+    }
+  return sum / n;
+}
+
 // A scenario of the source tree compiled with `sets`.
 inline run::Model compiled(const std::string& scenario, std::vector<std::string> sets = {}) {
   run::CompileOptions o;

@@ -22,16 +22,7 @@ struct Steady {
   std::vector<double> y, outer_Y, check_N;  // per wheelset, mean over the last second
 };
 
-double lastSecondMean(const std::vector<double>& t, const std::vector<double>& v) {
-  double sum = 0.0;
-  int n = 0;
-  for (std::size_t i = 0; i < t.size(); ++i)
-    if (t[i] >= t.back() - 1.0) {
-      sum += v[i];
-      ++n;
-    }
-  return sum / n;
-}
+using rb::test::lastSecondMean;
 
 Steady run(const std::string& scene, const std::vector<std::string>& overrides,
            const std::string& name, bool check) {

@@ -21,16 +21,7 @@ namespace {
 const std::string kScene = "tests/run/data/worn_wheels_tangent.lua";
 const std::string kBogieScene = "tests/run/data/worn_bogie_tangent.lua";
 
-double lastSecondMean(const std::vector<double>& t, const std::vector<double>& v) {
-  double sum = 0.0;
-  int n = 0;
-  for (std::size_t i = 0; i < t.size(); ++i)
-    if (t[i] >= t.back() - 1.0) {
-      sum += v[i];
-      ++n;
-    }
-  return sum / n;
-}
+using rb::test::lastSecondMean;
 
 // The lateral displacement [m] where delta_r(y) of the rigid contact of wheelset w changes sign,
 // scanning from the centre toward the right flange in 1 um steps (linear between the two
