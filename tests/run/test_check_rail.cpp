@@ -19,7 +19,8 @@
 namespace {
 
 struct Steady {
-  std::vector<double> y, outer_Y, check_N;  // per wheelset, mean over the last second
+  std::vector<double> y, outer_Y, check_N;   // per wheelset, mean over the last second
+  std::vector<double> first_contact, start;  // the run's answer [m] (NaN: none), the first s
 };
 
 using rb::test::lastSecondMean;
@@ -36,9 +37,16 @@ Steady run(const std::string& scene, const std::vector<std::string>& overrides,
     const std::string w = ws;
     s.y.push_back(lastSecondMean(t, *r.dataset("/bodies/" + w + "/y")));
     s.outer_Y.push_back(lastSecondMean(t, *r.dataset("/contact/" + w + "/right/Y")));
-    if (check)
+    if (check) {
       s.check_N.push_back(
           lastSecondMean(t, *r.dataset("/contact/" + w + "/left/rails/check/normal_force")));
+      // A check rail's answer is where it first touched, not where it outcarried the running
+      // rail.
+      const std::string rails = "/contact/" + w + "/left/rails";
+      EXPECT_FALSE(r.number(rails, "transfer_s_check").has_value());
+      s.first_contact.push_back(r.number(rails, "first_contact_s_check").value_or(std::nan("")));
+      s.start.push_back(r.dataset("/bodies/" + w + "/s")->front());
+    }
   }
   return s;
 }
@@ -77,6 +85,10 @@ TEST(CheckRail, ACheckRailTakesTheGuidingForceOffTheOuterFlange) {
   // The trailing wheelsets run toward the inner rail: they do not reach the check rail.
   EXPECT_EQ(with.check_N[1], 0.0);
   EXPECT_EQ(with.check_N[3], 0.0);
+  EXPECT_TRUE(std::isnan(with.first_contact[1]));
+  // The leading ones touch it where the curve's transition has moved them 3.5 mm out.
+  EXPECT_GT(with.first_contact[0], with.start[0] + 1.0);
+  EXPECT_GT(with.first_contact[2], with.start[2] + 1.0);
 
   // A check rail 100 mm further inside (never reached) changes nothing.
   const Steady far = run(kCheck,

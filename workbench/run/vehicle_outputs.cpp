@@ -245,6 +245,10 @@ VehicleOutputs::VehicleOutputs(const Model& m, const RunVehicle& v, vehicle::Veh
   if (v.contact) {
     rails_ = {railNames(*v.contact, 0).size(), railNames(*v.contact, 1).size()};
     track_ = v.contact->railSupport();
+    if (const auto* e = v.contact->elastic.get())
+      for (std::size_t side = 0; side < 2; ++side)
+        for (std::size_t r = 0; r < e->extra_check[side].size(); ++r)
+          answers_.check[side][r + 1] = e->extra_check[side][r] != 0;
   }
 }
 
@@ -301,12 +305,14 @@ void VehicleOutputs::writeRailAnswers(io::ResultFile& f, std::vector<std::string
     std::string line = "  " + ws + " " + side + ":";
     for (std::size_t r = 0; r < names.size(); ++r) {
       line += (r > 0 ? "; " : " ") + names[r] + ":";
+      const bool check = answers_.check[wh.side][r];
       if (r > 0) {
         if (std::isfinite(wh.transfer_s[r])) {
-          f.attr(group, "transfer_s_" + names[r], wh.transfer_s[r]);
-          line += " from s = " + formatNumber(wh.transfer_s[r], 5) + " m,";
+          f.attr(group, (check ? "first_contact_s_" : "transfer_s_") + names[r], wh.transfer_s[r]);
+          line += (check ? " touched from s = " : " from s = ") +
+                  formatNumber(wh.transfer_s[r], 5) + " m,";
         } else {
-          line += " never carried more than " + names[0] + ",";
+          line += check ? " never touched," : " never carried more than " + names[0] + ",";
         }
       }
       f.attr(group, "peak_normal_force_" + names[r], wh.peak[r]);
@@ -344,6 +350,10 @@ void RailAnswers::update(const std::vector<dynamics::WheelOutput>& w, const std:
         wh.peak_s[r] = si;
       }
       if (r == 0) continue;
+      if (check[wh.side][r]) {
+        if (std::isnan(wh.transfer_s[r]) && n > 0.0) wh.transfer_s[r] = si;
+        continue;
+      }
       const double diff = o.rail[0].normal - n;
       // The first sample where the further rail carries more than the running rail.
       if (std::isnan(wh.transfer_s[r]) && wh.last_diff[r] >= 0.0 && diff < 0.0) {

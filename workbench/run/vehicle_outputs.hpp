@@ -33,12 +33,17 @@ struct RailAnswers {
   static constexpr std::size_t kRails = 1 + dynamics::kMaxExtraRails;
   struct Wheel {
     std::size_t wheelset = 0, side = 0;  // index into ContactModel::wheelsets; 0 left, 1 right
+    // transfer_s: where the rail first carried more than the running rail (a check rail: where
+    // it first touched the wheel).
     std::array<double, kRails> transfer_s{}, peak{}, peak_s{};
     // The running rail's minus this rail's force at the last sample (NaN before the first).
     std::array<double, kRails> last_diff{};
     double last_s = 0.0;
   };
   std::vector<Wheel> wheels;
+  // [side][rail]: a check rail (ElasticContactModel::extra_check, the running rail first): its
+  // transfer_s is where it first touches the wheel, not where it outcarries the running rail.
+  std::array<std::array<bool, kRails>, 2> check{};
   void update(const std::vector<dynamics::WheelOutput>& w, const std::vector<double>& s,
               const std::array<std::size_t, 2>& rails);
 };
