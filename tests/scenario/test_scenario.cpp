@@ -182,6 +182,18 @@ TEST(ScenarioOverrides, SetValuesAndReportBadOnes) {
             "integrated)");
 }
 
+// A key that holds a file or profile name takes the text as given: "60e1" is the built-in rail,
+// not the number 600 (the schema's String keys, and keys the scenario gave text).
+TEST(ScenarioOverrides, NamesThatReadAsNumbersStayNames) {
+  auto spec = loadScenario("tests/run/data/worn_wheels_tangent.lua",
+                           opts({"profiles.rail=60e1", "profiles.wheel_right=s1002"}));
+  EXPECT_EQ(spec.profiles.rail, "60e1");
+  EXPECT_EQ(spec.profiles.wheel_right, "s1002");
+  // A number key still reads numbers.
+  spec = loadScenario("tests/run/data/worn_wheels_tangent.lua", opts({"profiles.r0=46e-2"}));
+  EXPECT_DOUBLE_EQ(spec.profiles.r0, 0.46);
+}
+
 TEST(ScenarioGood, UserPsdFunctionTableLoopsAndRequire) {
   auto spec = loadScenario("tests/scenario/good/user_psd.lua", opts());
   const auto& irr = spec.track.irregularities;

@@ -117,6 +117,28 @@ Node* namedItem(Node& list, const std::string& listPath, const std::string& name
 }
 
 // Walks tokens[from..] from `node` and sets the last one to `value`; the problem otherwise.
+// The value of an override as text, without reading it as a number.
+Node textValue(const std::string& text, const SourceLoc& loc) {
+  Node n = parseOverrideValue(text, loc);
+  if (n.type == Node::Type::String) return n;
+  n.type = Node::Type::String;
+  n.string = text;
+  return n;
+}
+
+// Whether key t of the table at `path` holds text (a file or profile name): the schema says so,
+// or the scenario gave it text. "--set profiles.rail=60e1" is then the rail's name, not the
+// number 600.
+bool holdsText(const Node& table, const std::string& path, const std::string& t) {
+  if (const Node* v = table.field(t); v != nullptr && v->type == Node::Type::String) return true;
+  for (const auto& b : schema())
+    if (b.name == path) {
+      const KeySpec* k = b.key(t);
+      return k != nullptr && k->type == ValueType::String;
+    }
+  return false;
+}
+
 std::optional<std::string> setPath(Node* node, const std::vector<std::string>& tokens,
                                    std::size_t from, const std::string& value,
                                    const SourceLoc& loc) {
@@ -146,7 +168,8 @@ std::optional<std::string> setPath(Node* node, const std::vector<std::string>& t
       }
       node = item;
     } else if (last) {
-      node->setField(t, parseOverrideValue(value, loc));
+      node->setField(t, holdsText(*node, prefix(tokens, i), t) ? textValue(value, loc)
+                                                               : parseOverrideValue(value, loc));
       return std::nullopt;
     } else {
       Node* next = node->field(t);
