@@ -9,20 +9,29 @@ namespace rb::contact {
 
 using profiles::ProfilePoint;
 
-FlangeBack::FlangeBack(const profiles::Profile& wheel, double s_face) : s_face_(s_face) {
-  // The branch from the profile's first point (the back) to the flange tip (its largest radius on
-  // the flange side of the tape circle), radius increasing.
+FlangeBack::FlangeBack(const profiles::Profile& wheel, double s_face) {
+  // The branch from the profile's first point (the back) to the flange tip, its largest radius on
+  // the flange side of the tape circle, radius increasing: a measured profile's wiggles (a sample
+  // no higher than the one before) are passed over, not taken for the tip.
   constexpr double kStep = 0.05e-3;
-  double rho_prev = -1.0;
-  for (double s = wheel.sMin(); s <= std::min(0.0, wheel.sMax()); s += kStep) {
+  const double end = std::min(0.0, wheel.sMax());
+  double s_tip = wheel.sMin(), h_tip = -1.0;
+  for (double s = wheel.sMin(); s <= end; s += kStep)
+    if (const double h = wheel.at(s).h; h > h_tip) {
+      h_tip = h;
+      s_tip = s;
+    }
+  for (double s = wheel.sMin(); s <= s_tip; s += kStep) {
     const double h = wheel.at(s).h;
-    if (h <= rho_prev) break;  // past the tip
+    if (!rho_.empty() && h <= rho_.back()) continue;
     rho_.push_back(h);
     s_.push_back(s);
-    rho_prev = h;
   }
   rho_face_ = rho_.empty() ? 0.0 : rho_.front();
   rho_tip_ = rho_.empty() ? 0.0 : rho_.back();
+  // The flat face at the flange-back distance, or where the profile itself begins if it reaches
+  // farther back: s_back(rho) >= s_face everywhere (the search's bound relies on it).
+  s_face_ = s_.empty() ? s_face : std::min(s_face, s_.front());
 }
 
 double FlangeBack::sBack(double rho, double* slope) const {
@@ -100,7 +109,11 @@ class CheckRailLines {
                                      r_[1][2] * dy + r_[2][2] * dz};
     const double B = a_[0] * b[0] + a_[2] * b[2], C = b[0] * b[0] + b[2] * b[2];
     const double base = sigma_ * b[1] - pair_.wheel_lw;  // sigma L(0) - Lw
-    if (base + std::abs(g_) * back_.rhoTip() / std::sqrt(A_) - back_.sFace() <= bound) return o;
+    // The line's points within the tip's radius lie at |x| <= x_max; none: no contact.
+    const double disc = B * B - A_ * (C - back_.rhoTip() * back_.rhoTip());
+    if (!(disc >= 0.0) || !(A_ > 0.0)) return o;
+    const double x_max = (std::abs(B) + std::sqrt(disc)) / A_;
+    if (base + std::abs(g_) * x_max - back_.sFace() <= bound) return o;
     const auto consider = [&](double x, double d) {
       if (!(d > o.d)) return;
       o.flat = false;
@@ -222,8 +235,9 @@ void searchCheckRail(const ElasticContactSearch& rail, const FlangeBack& back,
     const double len = top.x_hi - top.x_lo;
     const double wet = g == 0.0 ? len : std::min(len, top.d / std::abs(g));
     const double ag = std::abs(g);
-    const double u = (0.5 * top.d * wet * wet - ag * wet * wet * wet / 3.0) /
-                     (top.d * wet - 0.5 * ag * wet * wet);
+    const double u = wet > 0.0 ? (0.5 * top.d * wet * wet - ag * wet * wet * wet / 3.0) /
+                                     (top.d * wet - 0.5 * ag * wet * wet)
+                               : 0.0;
     top.x = g > 0.0 ? top.x_hi - u : top.x_lo + u;
     const std::array<double, 3> a = lines.direction();
     for (std::size_t i = 0; i < 3; ++i) top.X[i] = top.x * a[i] + top.b[i];
@@ -237,8 +251,8 @@ void searchCheckRail(const ElasticContactSearch& rail, const FlangeBack& back,
   const double sb_w = back.sBack(rho, &slope);
   const double root = std::sqrt(1.0 + slope * slope);
   // Inward normal of the wheel's back (the force on the wheel): sigma e_y - slope e_rho.
-  const std::array<double, 3> nw = {-slope * bx[0] / rho / root, sigma / root,
-                                    -slope * bx[2] / rho / root};
+  const double er = rho > 0.0 ? slope / (rho * root) : 0.0;  // slope e_rho / root, per X
+  const std::array<double, 3> nw = {-er * bx[0], sigma / root, -er * bx[2]};
   const auto turn = [&](std::size_t i, const std::array<double, 3>& v) {
     return r[i][0] * v[0] + r[i][1] * v[1] + r[i][2] * v[2];
   };

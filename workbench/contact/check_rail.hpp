@@ -34,7 +34,8 @@ class FlangeBack {
  public:
   FlangeBack() = default;
   // `wheel` drawn as a left wheel; s_face the lateral parameter of the flat back face (the
-  // positioning's flange-back distance: -70 mm for S1002 and every EN 13715 wheel).
+  // positioning's flange-back distance: -70 mm for S1002 and every EN 13715 wheel), or the
+  // profile's first point where that lies farther back.
   FlangeBack(const profiles::Profile& wheel, double s_face);
   double sFace() const { return s_face_; }
   double rhoFace() const { return rho_face_; }

@@ -12,6 +12,7 @@
 #include <functional>
 #include <limits>
 #include <numbers>
+#include <set>
 
 #include "workbench/profiles/positioning.hpp"
 #include "workbench/profiles/profile_io.hpp"
@@ -699,7 +700,9 @@ void compileOwnWheels(const ProfilesSpec& p, const ContactSpec& c, const vehicle
   for (int b : m.wheelsets) names.push_back(v.bodies[static_cast<std::size_t>(b)].name);
   std::vector<bool> given(names.size(), false);
   std::map<std::array<std::string, 2>, std::shared_ptr<const ContactModel>> pairs;
-  std::map<const ContactModel*, std::vector<std::string>> users;
+  std::set<std::array<std::string, 2>> failed;  // reported once
+  // The wheelsets of each own model, in the order of their first wheelset.
+  std::vector<std::pair<const ContactModel*, std::vector<std::string>>> users;
   for (const WheelsetProfilesSpec& e : p.wheelsets) {
     const auto it = std::find(names.begin(), names.end(), e.wheelset);
     if (it == names.end()) {
@@ -718,7 +721,7 @@ void compileOwnWheels(const ProfilesSpec& p, const ContactSpec& c, const vehicle
       return !own.empty() ? own : !e.wheel.empty() ? e.wheel : m.wheel_sources[side];
     };
     const std::array<std::string, 2> pair = {pick(e.wheel_left, 0), pick(e.wheel_right, 1)};
-    if (pair == m.wheel_sources) continue;
+    if (pair == m.wheel_sources || failed.count(pair) != 0) continue;
     auto& model = pairs[pair];
     if (!model) {
       ProfilesSpec q = p;
@@ -732,12 +735,18 @@ void compileOwnWheels(const ProfilesSpec& p, const ContactSpec& c, const vehicle
         d.add(e.loc, "profiles.wheelsets." + e.wheelset + ": these wheels give no contact model");
         d.add(err);
         pairs.erase(pair);
+        failed.insert(pair);
         continue;
       }
     }
     m.own_wheels.resize(names.size());
     m.own_wheels[w] = model;
-    users[model.get()].push_back(e.wheelset);
+    const auto user = std::find_if(users.begin(), users.end(),
+                                   [&](const auto& u) { return u.first == model.get(); });
+    if (user == users.end())
+      users.push_back({model.get(), {e.wheelset}});
+    else
+      user->second.push_back(e.wheelset);
   }
   d.throwIfAny();
   const std::vector<std::string> vehicle_warnings = m.warnings;

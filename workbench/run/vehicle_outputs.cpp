@@ -127,6 +127,12 @@ void addContactChannels(const Model& m, const RunVehicle& rv, io::ResultFile& f,
              std::filesystem::path(own.wheel_sources[side]).filename().string());
       f.attr(group, std::string("centred_radius_") + name, own.centred_radius[side]);
     }
+    if (const auto* e = own.elastic.get()) {
+      // What follows from the wheelset's own wheels (the /contact attributes are the vehicle's).
+      f.attr(group, "elastic_flange_height_m", e->flange_height);
+      f.attr(group, "derailment_lift_m", e->derailment_lift);
+      f.attr(group, "elastic_static_approach_m", e->static_approach);
+    }
   }
   for (int w : cm.wheelsets)
     for (const char* side : {"left", "right"}) {

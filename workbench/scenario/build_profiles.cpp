@@ -109,9 +109,18 @@ bool sliceFile(Reader& r, LuaHost& host, const Node& v, const std::string& what,
     dynamics::RailSliceSpec sl = base;
     sl.s = s0->number + e.u_fc;
     const SourceLoc at{path, e.line};
-    if (sl.s < 0.0) {
+    sl.loc = at;  // a slice's problems (its profile, its place) at its line of the slices-file
+    if (!std::isfinite(sl.s) || sl.s < 0.0) {
       r.error(*s0, what + ": the slice at " + at.str() + " is at s = " + formatNumber(sl.s) +
-                       " m, before the track's start (raise " + what + ".s)");
+                       " m, before the track's start or not a position (raise " + what +
+                       ".s, or check U_OFFSET and U_SCALE)");
+      return false;
+    }
+    if (!out.empty() && !(sl.s > out.back().s)) {
+      r.error(*s0, what + ": the slice at " + at.str() + " lands at s = " + formatNumber(sl.s) +
+                       " m, not after the one before it (" + formatNumber(out.back().s) +
+                       " m): the slices-file's positions are too close for s = " +
+                       formatNumber(s0->number) + " m");
       return false;
     }
     try {
@@ -233,6 +242,39 @@ void eachSide(Reader& r, const Node& v, const std::string& key, const std::strin
   }
 }
 
+// One further rail { name = ..., slices = ..., check = ... } of a side, appended to `rails`
+// when well formed.
+void extraRail(Reader& r, LuaHost& host, const Node& item, const std::string& at,
+               std::vector<dynamics::ExtraRailSpec>& rails,
+               std::vector<dynamics::SliceListSpec>& lists) {
+  const Node* name = item.type == Node::Type::Table ? item.field("name") : nullptr;
+  const Node* slices = item.type == Node::Type::Table ? item.field("slices") : nullptr;
+  const Node* check = item.type == Node::Type::Table ? item.field("check") : nullptr;
+  if (!name || !slices || item.fields.size() != (check ? 3U : 2U) || !item.items.empty() ||
+      (check != nullptr && check->type != Node::Type::Bool) || name->type != Node::Type::String ||
+      !dynamics::validRailName(name->string)) {
+    r.error(item, at +
+                      " must be { name = \"nose\" (1-32 letters, digits or '_'), "
+                      "slices = { ... }, check = true or false (optional) }, got " +
+                      item.describe());
+    return;
+  }
+  const bool twice =
+      name->string == "rail" || std::any_of(rails.begin(), rails.end(),
+                                            [&](const auto& o) { return o.name == name->string; });
+  if (twice) {
+    r.error(*name, at + ".name '" + name->string +
+                       "' is taken (\"rail\" is the running rail's, the others must differ)");
+    return;
+  }
+  dynamics::ExtraRailSpec rail;
+  rail.name = name->string;
+  rail.check = check != nullptr && check->boolean;
+  rail.loc = item.loc;
+  if (oneRailSlices(r, host, *slices, at + ".slices", rail.slices, lists))
+    rails.push_back(std::move(rail));
+}
+
 void railSlices(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
   if (const Node* v = r.value("rail_slices"))
     eachSide(r, *v, "rail_slices",
@@ -257,37 +299,9 @@ void railSlices(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
             return;
           }
           std::vector<dynamics::ExtraRailSpec> rails;
-          for (std::size_t i = 0; i < list.items.size(); ++i) {
-            const Node& item = list.items[i];
-            const std::string at = what + "[" + std::to_string(i + 1) + "]";
-            const Node* name = item.type == Node::Type::Table ? item.field("name") : nullptr;
-            const Node* slices = item.type == Node::Type::Table ? item.field("slices") : nullptr;
-            const Node* check = item.type == Node::Type::Table ? item.field("check") : nullptr;
-            if (!name || !slices || item.fields.size() != (check ? 3U : 2U) ||
-                !item.items.empty() || (check != nullptr && check->type != Node::Type::Bool) ||
-                name->type != Node::Type::String || !dynamics::validRailName(name->string)) {
-              r.error(item, at +
-                                " must be { name = \"nose\" (1-32 letters, digits or '_'), "
-                                "slices = { ... }, check = true or false (optional) }, got " +
-                                item.describe());
-              continue;
-            }
-            const bool twice = name->string == "rail" ||
-                               std::any_of(rails.begin(), rails.end(),
-                                           [&](const auto& o) { return o.name == name->string; });
-            if (twice) {
-              r.error(*name, at + ".name '" + name->string +
-                                 "' is taken (\"rail\" is the running rail's, the others must "
-                                 "differ)");
-              continue;
-            }
-            dynamics::ExtraRailSpec rail;
-            rail.name = name->string;
-            rail.check = check != nullptr && check->boolean;
-            rail.loc = item.loc;
-            if (oneRailSlices(r, host, *slices, at + ".slices", rail.slices, p.slice_lists))
-              rails.push_back(std::move(rail));
-          }
+          for (std::size_t i = 0; i < list.items.size(); ++i)
+            extraRail(r, host, list.items[i], what + "[" + std::to_string(i + 1) + "]", rails,
+                      p.slice_lists);
           p.extra_rails[side] = std::move(rails);
         });
 }

@@ -176,6 +176,13 @@ void buildTrain(const Node& n, LuaHost& host, ScenarioSpec& spec, Diagnostics& d
   const Node* connections = r.value("connections");
   const Node* list = r.value("vehicles");
   if (list == nullptr) return;
+  // Wheelsets with wheels of their own belong to one vehicle: the scenario's profiles{} is every
+  // train vehicle's that has none of its own, and would give every wagon's ws1 those wheels.
+  if (!spec.profiles.wheelsets.empty())
+    d.add(spec.profiles.wheelsets.front().loc,
+          "profiles.wheelsets with a train: give a vehicle's wheelsets their own wheels in that "
+          "vehicle's own profiles{} (train.vehicles[k].profiles), not in the scenario's, which "
+          "every vehicle without its own takes");
   if (list->type != Node::Type::Table || !list->fields.empty() || list->items.size() < 2 ||
       list->items.size() > kMaxTrainVehicles) {
     r.error(*list, "vehicles must be a list of 2 to " + std::to_string(kMaxTrainVehicles) +

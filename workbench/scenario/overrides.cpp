@@ -116,7 +116,6 @@ Node* namedItem(Node& list, const std::string& listPath, const std::string& name
   return count == 1 ? found : nullptr;
 }
 
-// Walks tokens[from..] from `node` and sets the last one to `value`; the problem otherwise.
 // The value of an override as text, without reading it as a number.
 Node textValue(const std::string& text, const SourceLoc& loc) {
   Node n = parseOverrideValue(text, loc);
@@ -131,14 +130,19 @@ Node textValue(const std::string& text, const SourceLoc& loc) {
 // number 600.
 bool holdsText(const Node& table, const std::string& path, const std::string& t) {
   if (const Node* v = table.field(t); v != nullptr && v->type == Node::Type::String) return true;
-  for (const auto& b : schema())
-    if (b.name == path) {
-      const KeySpec* k = b.key(t);
-      return k != nullptr && k->type == ValueType::String;
-    }
+  // The block by its whole path ("profiles") or by its last name (a train vehicle's own
+  // "train.vehicles.2.profiles").
+  const std::string last = path.substr(path.find_last_of('.') + 1);
+  for (const std::string& name : {path, last})
+    for (const auto& b : schema())
+      if (b.name == name) {
+        const KeySpec* k = b.key(t);
+        return k != nullptr && k->type == ValueType::String;
+      }
   return false;
 }
 
+// Walks tokens[from..] from `node` and sets the last one to `value`; the problem otherwise.
 std::optional<std::string> setPath(Node* node, const std::vector<std::string>& tokens,
                                    std::size_t from, const std::string& value,
                                    const SourceLoc& loc) {
