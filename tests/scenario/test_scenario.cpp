@@ -192,6 +192,11 @@ TEST(ScenarioOverrides, NamesThatReadAsNumbersStayNames) {
   // A number key still reads numbers.
   spec = loadScenario("tests/run/data/worn_wheels_tangent.lua", opts({"profiles.r0=46e-2"}));
   EXPECT_DOUBLE_EQ(spec.profiles.r0, 0.46);
+  // A train vehicle's own profiles{}: its block by name.
+  spec = loadScenario("scenarios/train/three_wagons.lua",
+                      opts({"train.vehicles[3].profiles.rail=60e1"}));
+  ASSERT_EQ(spec.train.size(), 3U);
+  EXPECT_EQ(spec.train[2].profiles.rail, "60e1");
 }
 
 TEST(ScenarioGood, UserPsdFunctionTableLoopsAndRequire) {
