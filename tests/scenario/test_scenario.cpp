@@ -453,8 +453,8 @@ TEST(ScenarioHostile, RequireAcceptsOnlyPlainNamesInsideTheAllowedFolders) {
     EXPECT_NE(e.find(f + ":1: require \"" + name + "\": "), std::string::npos) << e;
     EXPECT_NE(e.find("leads outside the folders modules may come from"), std::string::npos) << e;
   }
-  for (std::string name : {std::string(".etc.passwd"), std::string("a..b"), std::string("1a"),
-                           std::string(5000, 'a')}) {
+  for (const std::string& name : {std::string(".etc.passwd"), std::string("a..b"),
+                                  std::string("1a"), std::string(5000, 'a')}) {
     std::string f = t.write("n.lua", "require '" + name + "'\n");
     std::string e = errorsOf(f);
     EXPECT_EQ(e.rfind(f + ":1: require", 0), 0u) << e;
