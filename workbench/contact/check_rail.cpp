@@ -72,9 +72,7 @@ struct OnLine {
 class CheckRailLines {
  public:
   CheckRailLines(const ElasticContactSearch& rail, const FlangeBack& back, const ElasticPose& pose)
-      : pair_(rail.pair()), back_(back), pose_(pose) {
-    next_ = pair_.rail_next.get();
-    blend_ = next_ ? pose.blend : 0.0;
+      : rail_(rail), pair_(rail.pair()), back_(back), pose_(pose) {
     sigma_ = pair_.side == Side::Left ? 1.0 : -1.0;
     cb_ = std::cos(pair_.beta);
     sb_ = sigma_ * std::sin(pair_.beta);
@@ -89,13 +87,7 @@ class CheckRailLines {
   double slope() const { return g_; }
   const std::array<double, 3>& direction() const { return a_; }
   const std::array<std::array<double, 3>, 3>& rotation() const { return r_; }
-  ProfilePoint railAt(double s) const {
-    const ProfilePoint p = pair_.rail->at(s);
-    if (!next_) return p;
-    const ProfilePoint q = next_->at(s);
-    return {(1.0 - blend_) * p.h + blend_ * q.h, (1.0 - blend_) * p.dh + blend_ * q.dh,
-            (1.0 - blend_) * p.d2h + blend_ * q.d2h};
-  }
+  ProfilePoint railAt(double s) const { return rail_.railAt(s, pose_.blend); }
 
   // The deepest point of the line of rail point s: X(x) = x a + b in the wheelset frame. Over
   // the flat face d is linear in x (slope g): its edge on the side g points to, or the line's
@@ -148,11 +140,11 @@ class CheckRailLines {
   }
 
  private:
+  const ElasticContactSearch& rail_;
   const WheelRailPair& pair_;
   const FlangeBack& back_;
   const ElasticPose& pose_;
-  const profiles::Profile* next_ = nullptr;
-  double blend_ = 0.0, sigma_ = 1.0, cb_ = 1.0, sb_ = 0.0, oy_ = 0.0, oz_ = 0.0;
+  double sigma_ = 1.0, cb_ = 1.0, sb_ = 0.0, oy_ = 0.0, oz_ = 0.0;
   std::array<std::array<double, 3>, 3> r_{};
   std::array<double, 3> a_{};
   double A_ = 1.0, g_ = 0.0;

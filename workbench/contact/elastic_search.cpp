@@ -234,15 +234,19 @@ double ElasticContactSearch::RangeMax::operator()(std::size_t a, std::size_t b) 
   return std::max(q[a], q[b - (std::size_t{1} << l)]);
 }
 
-profiles::ProfilePoint ElasticContactSearch::railAt(const PoseTrig& t, double u) const {
+profiles::ProfilePoint ElasticContactSearch::railAt(double u, double blend) const {
   profiles::ProfilePoint a = pair_.rail->at(u);
   if (!pair_.rail_next) return a;
   // a + b (next - a): exactly a where the two slices are the same profile.
   const profiles::ProfilePoint n = pair_.rail_next->at(u);
-  a.h += t.blend * (n.h - a.h);
-  a.dh += t.blend * (n.dh - a.dh);
-  a.d2h += t.blend * (n.d2h - a.d2h);
+  a.h += blend * (n.h - a.h);
+  a.dh += blend * (n.dh - a.dh);
+  a.d2h += blend * (n.d2h - a.d2h);
   return a;
+}
+
+profiles::ProfilePoint ElasticContactSearch::railAt(const PoseTrig& t, double u) const {
+  return railAt(u, t.blend);
 }
 
 ElasticContactSearch::LocusPoint ElasticContactSearch::locus(const ElasticPose& pose,

@@ -236,6 +236,9 @@ class ElasticContactSearch {
   // constructed model, shared by its copies.
   std::uint64_t id() const { return id_; }
   double sigma() const { return sigma_; }
+  // The rail profile at u: WheelRailPair::rail, blended with rail_next by `blend` (ignored without
+  // rail_next), exactly the rail where the two slices are the same profile.
+  profiles::ProfilePoint railAt(double u, double blend) const;
 
   // Every penetrating local minimum of the wheel-rail gap at this pose (see header comment).
   // `seed` (optional): patches of an earlier search whose (s_w, s_r) are tried as extra starting

@@ -119,9 +119,7 @@ void searchSlopedRail(const ElasticContactSearch& search, const ElasticPose& pos
   }
   const bool tilted = slope.y_s != 0.0 || slope.z_s != 0.0 || rise0 != 0.0;
   if (tilted) {
-    const double h0 = blended ? pair.rail->at(u0).h +
-                                    pose.blend * (pair.rail_next->at(u0).h - pair.rail->at(u0).h)
-                              : 0.0;
+    const double h0 = blended ? search.railAt(u0, pose.blend).h : 0.0;
     searchInRailFrame(search, pose, slope.y_s - sb * rise0, slope.z_s + cb * rise0,
                       oy + cb * u0 - sb * h0, oz + sb * u0 + cb * h0, out, first);
   } else {
