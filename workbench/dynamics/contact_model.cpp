@@ -12,7 +12,6 @@
 #include <functional>
 #include <limits>
 #include <numbers>
-#include <set>
 
 #include "workbench/profiles/positioning.hpp"
 #include "workbench/profiles/profile_io.hpp"
@@ -689,18 +688,40 @@ ContactModel compilePair(const ProfilesSpec& p, const ContactSpec& c,
   return m;
 }
 
+// The warnings of the wheelsets' own models (each with the wheelsets it serves, in the order of
+// their first wheelset) that the vehicle's model does not give already: the vehicle's too, with
+// the wheelsets they concern.
+void noteOwnWheelWarnings(
+    const std::vector<std::pair<const ContactModel*, std::vector<std::string>>>& users,
+    ContactModel& m) {
+  const std::vector<std::string> vehicle_warnings = m.warnings;
+  const std::vector<std::string> vehicle_gauge = m.gauge_warnings;
+  for (const auto& [model, ws] : users) {
+    std::string who;
+    for (const std::string& n : ws) who += (who.empty() ? "" : ", ") + n;
+    const auto note = [&](const std::vector<std::string>& from, std::vector<std::string>& into,
+                          const std::vector<std::string>& vehicle) {
+      for (const std::string& w : from)
+        if (std::find(vehicle.begin(), vehicle.end(), w) == vehicle.end())
+          into.push_back(w + " (wheelset " + who + ", on its own wheels)");
+    };
+    note(model->warnings, m.warnings, vehicle_warnings);
+    note(model->gauge_warnings, m.gauge_warnings, vehicle_gauge);
+  }
+}
+
 // profiles.wheelsets: the model of each wheelset with wheels of its own (ContactModel::own_wheels).
 // Each entry's profiles fall back to the vehicle's; a pair equal to the vehicle's needs no model
-// of its own, and equal pairs share one. The warnings of a wheelset's model that the vehicle's
-// model does not give already are the vehicle's too, with the wheelsets they concern.
+// of its own, and equal pairs share one; their warnings join the vehicle's
+// (noteOwnWheelWarnings).
 void compileOwnWheels(const ProfilesSpec& p, const ContactSpec& c, const vehicle::VehicleModel& v,
                       const track::TrackModel& track, TableCache* cache, ContactModel& m) {
   Diagnostics d;
   std::vector<std::string> names;
   for (int b : m.wheelsets) names.push_back(v.bodies[static_cast<std::size_t>(b)].name);
   std::vector<bool> given(names.size(), false);
+  // The model of each pair; null for a pair that failed (reported once, at its first wheelset).
   std::map<std::array<std::string, 2>, std::shared_ptr<const ContactModel>> pairs;
-  std::set<std::array<std::string, 2>> failed;  // reported once
   // The wheelsets of each own model, in the order of their first wheelset.
   std::vector<std::pair<const ContactModel*, std::vector<std::string>>> users;
   for (const WheelsetProfilesSpec& e : p.wheelsets) {
@@ -721,9 +742,10 @@ void compileOwnWheels(const ProfilesSpec& p, const ContactSpec& c, const vehicle
       return !own.empty() ? own : !e.wheel.empty() ? e.wheel : m.wheel_sources[side];
     };
     const std::array<std::string, 2> pair = {pick(e.wheel_left, 0), pick(e.wheel_right, 1)};
-    if (pair == m.wheel_sources || failed.count(pair) != 0) continue;
-    auto& model = pairs[pair];
-    if (!model) {
+    if (pair == m.wheel_sources) continue;
+    const auto [at, fresh] = pairs.try_emplace(pair);
+    std::shared_ptr<const ContactModel>& model = at->second;
+    if (fresh) {
       ProfilesSpec q = p;
       q.wheelsets.clear();
       q.wheel_left = pair[0];
@@ -734,11 +756,9 @@ void compileOwnWheels(const ProfilesSpec& p, const ContactSpec& c, const vehicle
       } catch (const InputError& err) {
         d.add(e.loc, "profiles.wheelsets." + e.wheelset + ": these wheels give no contact model");
         d.add(err);
-        pairs.erase(pair);
-        failed.insert(pair);
-        continue;
       }
     }
+    if (!model) continue;
     m.own_wheels.resize(names.size());
     m.own_wheels[w] = model;
     const auto user = std::find_if(users.begin(), users.end(),
@@ -749,20 +769,7 @@ void compileOwnWheels(const ProfilesSpec& p, const ContactSpec& c, const vehicle
       user->second.push_back(e.wheelset);
   }
   d.throwIfAny();
-  const std::vector<std::string> vehicle_warnings = m.warnings;
-  const std::vector<std::string> vehicle_gauge = m.gauge_warnings;
-  for (const auto& [model, ws] : users) {
-    std::string who;
-    for (const std::string& n : ws) who += (who.empty() ? "" : ", ") + n;
-    const auto note = [&](const std::vector<std::string>& from, std::vector<std::string>& into,
-                          const std::vector<std::string>& vehicle) {
-      for (const std::string& w : from)
-        if (std::find(vehicle.begin(), vehicle.end(), w) == vehicle.end())
-          into.push_back(w + " (wheelset " + who + ", on its own wheels)");
-    };
-    note(model->warnings, m.warnings, vehicle_warnings);
-    note(model->gauge_warnings, m.gauge_warnings, vehicle_gauge);
-  }
+  noteOwnWheelWarnings(users, m);
 }
 
 }  // namespace
