@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include "workbench/core/strings.hpp"
 #include "workbench/profiles/slice_list.hpp"
@@ -10,22 +11,31 @@
 namespace rb::scenario {
 namespace {
 
-// A built-in profile name, or the resolved path of a profile file below the scenario.
+// `text` as a profile: the built-in one's name, or the resolved path of a profile file below the
+// scenario; nullopt when it is neither, with the error (`what`) at `at` and, for a near miss of
+// the built-in name ("60E1", "S1002"), that name as the likely intent.
+std::optional<std::string> profileName(Reader& r, const Node& at, const std::string& what,
+                                       const std::string& text, const std::string& builtin,
+                                       LuaHost& host) {
+  if (text == builtin) return builtin;
+  try {
+    return host.resolveDataFile(text, at.loc);
+  } catch (const InputError& e) {
+    const std::string hint = closestMatch(text, {builtin});
+    r.error(at, what + ": " + e.diagnostics().front().message +
+                    (hint.empty() ? "" : " (did you mean the built-in profile '" + hint + "'?)"));
+    return std::nullopt;
+  }
+}
+
+// The profile of key `key` of the profiles{} block `n` (profileName); the built-in one when the
+// key is not given or is not a profile.
 std::string profileSource(Reader& r, const Node& n, const std::string& key,
                           const std::string& builtin, LuaHost& host) {
-  std::string v = r.string(key);
-  if (v.empty() || v == builtin) return builtin;
-  try {
-    return host.resolveDataFile(v, n.loc);
-  } catch (const InputError& e) {
-    // A near miss of the built-in name ("60E1", "S1002") is the likely intent, not a file.
-    const std::string hint = closestMatch(v, {builtin});
-    const Node* at = r.value(key);
-    r.error(at != nullptr ? *at : n,
-            key + ": " + e.diagnostics().front().message +
-                (hint.empty() ? "" : " (did you mean the built-in profile '" + hint + "'?)"));
-    return builtin;
-  }
+  const std::string v = r.string(key);
+  if (v.empty()) return builtin;
+  const Node* at = r.value(key);
+  return profileName(r, at != nullptr ? *at : n, key, v, builtin, host).value_or(builtin);
 }
 
 // profiles.rail_slices = { left = { { s = 0, rail = "60e1", dy = 0, dz = 0 }, ... }, right = ... }
@@ -320,6 +330,7 @@ void wheelsetProfiles(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
     return;
   }
   const std::vector<std::string> keys = {"wheel", "wheel_left", "wheel_right"};
+  const std::string builtin_wheel = dynamics::ProfilesSpec{}.wheel;
   for (const auto& [name, entry] : v->fields) {
     const std::string at = "wheelsets." + name;
     if (entry.type != Node::Type::Table || !entry.items.empty() || entry.fields.empty()) {
@@ -351,19 +362,11 @@ void wheelsetProfiles(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
                                std::pair{"wheel_right", &w.wheel_right}}) {
       const Node* f = entry.field(key);
       if (!f) continue;
-      if (f->string == "s1002") {
-        *target = "s1002";
-        continue;
-      }
-      try {
-        *target = host.resolveDataFile(f->string, f->loc);
-      } catch (const InputError& e) {
-        const std::string hint = closestMatch(f->string, {"s1002"});
-        r.error(*f,
-                at + "." + key + ": " + e.diagnostics().front().message +
-                    (hint.empty() ? "" : " (did you mean the built-in profile '" + hint + "'?)"));
+      const auto source = profileName(r, *f, at + "." + key, f->string, builtin_wheel, host);
+      if (source)
+        *target = *source;
+      else
         ok = false;
-      }
     }
     if (ok) p.wheelsets.push_back(std::move(w));
   }
