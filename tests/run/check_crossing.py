@@ -11,7 +11,7 @@ import sys
 
 import h5py
 import numpy as np
-from rails_figure import rails_figure_problem
+from rails_figure import verdict
 
 TP = 60.0  # [m] the crossing's theoretical point (the scene)
 
@@ -59,14 +59,7 @@ def main(path):
                 problems.append(f"{ws}: not settled on the nose 2 m after it")
             lines.append(f"{ws}: nose from x = {x:.3f} m ({width:.1f} mm), dip {dip * 1e3:.2f} mm, "
                          f"peak {peak / 1e3:.0f} kN")
-    figure = rails_figure_problem(path, "crossing_figures")
-    if figure:
-        problems.append(figure)
-    for p in problems:
-        print("FAIL:", p)
-    if not problems:
-        print("ok:", "; ".join(lines))
-    return 1 if problems else 0
+    return verdict(path, "crossing_figures", problems, "; ".join(lines))
 
 
 if __name__ == "__main__":

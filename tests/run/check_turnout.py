@@ -10,7 +10,7 @@ import sys
 
 import h5py
 import numpy as np
-from rails_figure import rails_figure_problem
+from rails_figure import verdict
 
 TOE = 60.0
 LEFT_RADIUS = 190 + 1.435 / 2
@@ -46,15 +46,9 @@ def main(path):
         if not (np.all(np.abs(y - 0.724) < 3e-3)):
             problems.append(f"blade contact position {y.min():.4f} .. {y.max():.4f} m, expected "
                             "the blade's gauge corner near 0.724 m")
-    figure = rails_figure_problem(path, "turnout_figures")
-    if figure:
-        problems.append(figure)
-    for p in problems:
-        print("FAIL:", p)
-    if not problems:
-        print(f"ok: blade from x = {first:.2f} m ({width(first):.1f} mm), stock rail until "
-              f"x = {last:.2f} m ({width(last):.1f} mm)")
-    return 1 if problems else 0
+    return verdict(path, "turnout_figures", problems,
+                   f"blade from x = {first:.2f} m ({width(first):.1f} mm), stock rail until "
+                   f"x = {last:.2f} m ({width(last):.1f} mm)")
 
 
 if __name__ == "__main__":

@@ -1,5 +1,5 @@
 """What the turnout scenes' checks share (check_turnout.py, check_crossing.py): the run's rails
-figure drawn by `plots/rbplot run`."""
+figure drawn by `plots/rbplot run`, and the verdict they print."""
 import os
 import subprocess
 
@@ -15,3 +15,16 @@ def rails_figure_problem(path: str, folder: str) -> str:
     if r.returncode != 0 or not os.path.exists(os.path.join(out, f"{stem}_rails.png")):
         return f"no rails figure: {r.stdout[-300:]} {r.stderr[-300:]}"
     return ""
+
+
+def verdict(path: str, folder: str, problems: list, ok: str) -> int:
+    """The check's exit code: every problem (and a missing rails figure, drawn into `folder`)
+    printed as FAIL, or `ok` when there is none."""
+    figure = rails_figure_problem(path, folder)
+    if figure:
+        problems.append(figure)
+    for p in problems:
+        print("FAIL:", p)
+    if not problems:
+        print("ok:", ok)
+    return 1 if problems else 0
