@@ -108,6 +108,45 @@ std::string buildId(const std::string& program) {
   return "build:" + hex16(h.value());
 }
 
+namespace {
+
+// A data file by content (its path may differ between machines with the same inputs).
+void hashDataFile(Hasher& h, const std::string& role, const std::string& path) {
+  std::string why;
+  auto bytes = readRegularFile(path, why);
+  h.field("data " + role, bytes ? *bytes : "unreadable: " + why);
+}
+
+// Every profile file one vehicle runs on, once (`hashed` holds the paths already in the key): its
+// wheels and rails, each wheel side's own, the rails along the track and the wheelsets' own
+// wheels (a file edited between two runs of a study is a new case).
+void hashProfileFiles(Hasher& h, std::set<std::string>& hashed, const std::string& prefix,
+                      const dynamics::ProfilesSpec& p) {
+  auto once = [&](const std::string& role, const std::string& path, const char* builtin) {
+    if (!path.empty() && path != builtin && hashed.insert(path).second)
+      hashDataFile(h, prefix + role, path);
+  };
+  once("wheel", p.wheel, "s1002");
+  once("rail", p.rail, "60e1");
+  once("wheel_left", p.wheel_left, "s1002");
+  once("wheel_right", p.wheel_right, "s1002");
+  // CONTACT slices-files (their slice positions; the slice files are hashed below).
+  for (const dynamics::SliceListSpec& l : p.slice_lists) once("slice_list", l.path, "");
+  for (const dynamics::WheelsetProfilesSpec& w : p.wheelsets)
+    for (const std::string* path : {&w.wheel, &w.wheel_left, &w.wheel_right})
+      once("wheelset_wheel", *path, "s1002");
+  // Rails along the track: every slice file of the running rails and of the further rails.
+  auto slices = [&](const std::vector<dynamics::RailSliceSpec>& list) {
+    for (const dynamics::RailSliceSpec& sl : list) once("rail_slice", sl.rail, "60e1");
+  };
+  for (std::size_t side = 0; side < 2; ++side) {
+    slices(p.rail_slices[side]);
+    for (const dynamics::ExtraRailSpec& r : p.extra_rails[side]) slices(r.slices);
+  }
+}
+
+}  // namespace
+
 std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string& build_id,
                           const std::string& output) {
   Hasher h;
@@ -119,48 +158,14 @@ std::string caseInputHash(const scenario::ScenarioSpec& spec, const std::string&
   h.field("scenario", spec.text);
   for (const auto& [path, text] : spec.modules) h.field("module " + path, text);
   for (const auto& ov : spec.overrides) h.field("set", ov);
-  // Data files by content (their paths may differ between machines with the same inputs).
-  auto data = [&](const std::string& role, const std::string& path) {
-    std::string why;
-    auto bytes = readRegularFile(path, why);
-    h.field("data " + role, bytes ? *bytes : "unreadable: " + why);
-  };
-  // Every profile file a vehicle runs on, once: the leading vehicle's (the scenario's profiles),
-  // each wheel side's own, and those of the train's other vehicles (a file edited between two
-  // runs of a study is a new case).
+  // The leading vehicle's profiles (the scenario's), then those of the train's other vehicles.
   std::set<std::string> hashed;
-  auto profileFiles = [&](const std::string& prefix, const dynamics::ProfilesSpec& p) {
-    for (const auto& [role, path, builtin] :
-         {std::tuple{"wheel", &p.wheel, "s1002"}, std::tuple{"rail", &p.rail, "60e1"},
-          std::tuple{"wheel_left", &p.wheel_left, "s1002"},
-          std::tuple{"wheel_right", &p.wheel_right, "s1002"}})
-      if (!path->empty() && *path != builtin && hashed.insert(*path).second)
-        data(prefix + role, *path);
-    // Rails along the track: every slice file of the running rails and of the further rails.
-    auto slices = [&](const std::vector<dynamics::RailSliceSpec>& list) {
-      for (const dynamics::RailSliceSpec& sl : list)
-        if (sl.rail != "60e1" && hashed.insert(sl.rail).second)
-          data(prefix + "rail_slice", sl.rail);
-    };
-    // CONTACT slices-files (their slice positions; the slice files are hashed below).
-    for (const dynamics::SliceListSpec& l : p.slice_lists)
-      if (hashed.insert(l.path).second) data(prefix + "slice_list", l.path);
-    // Wheelsets on wheels of their own.
-    for (const dynamics::WheelsetProfilesSpec& w : p.wheelsets)
-      for (const std::string* path : {&w.wheel, &w.wheel_left, &w.wheel_right})
-        if (!path->empty() && *path != "s1002" && hashed.insert(*path).second)
-          data(prefix + "wheelset_wheel", *path);
-    for (std::size_t side = 0; side < 2; ++side) {
-      slices(p.rail_slices[side]);
-      for (const dynamics::ExtraRailSpec& r : p.extra_rails[side]) slices(r.slices);
-    }
-  };
-  profileFiles("", spec.profiles);
+  hashProfileFiles(h, hashed, "", spec.profiles);
   for (std::size_t k = 1; k < spec.train.size(); ++k)
     if (spec.train[k].has_profiles)
-      profileFiles("train[" + std::to_string(k + 1) + "] ", spec.train[k].profiles);
+      hashProfileFiles(h, hashed, "train[" + std::to_string(k + 1) + "] ", spec.train[k].profiles);
   if (spec.track.irregularities.source == track::IrregularitySource::Csv)
-    data("irregularities", spec.track.irregularities.csv_path);
+    hashDataFile(h, "irregularities", spec.track.irregularities.csv_path);
   return hex16(h.value());
 }
 
