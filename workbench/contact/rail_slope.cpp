@@ -128,12 +128,65 @@ void searchSlopedRail(const ElasticContactSearch& search, const ElasticPose& pos
   if (out.count == 0) return;
   // Second search: pivot on the deepest patch's rail point (patches are sorted deepest first),
   // carried back to X = 0 along the rail, with the blend's slope there.
-  const ElasticPatchGeometry& g = out.patch[0];
-  const double r = rise(g.s_r);
+  const int count = out.count;
+  std::array<double, kMaxElasticPatches> s_r{}, x{}, y{}, z{};
+  for (int k = 0; k < count; ++k) {
+    const ElasticPatchGeometry& g = out.patch[static_cast<std::size_t>(k)];
+    s_r[static_cast<std::size_t>(k)] = g.s_r;
+    x[static_cast<std::size_t>(k)] = g.x;
+    y[static_cast<std::size_t>(k)] = g.y;
+    z[static_cast<std::size_t>(k)] = g.z;
+  }
+  const double r = rise(s_r[0]);
   if (!tilted && r == 0.0) return;
-  const double t_y = slope.y_s - sb * r, t_z = slope.z_s + cb * r;
-  const double py = g.y - g.x * t_y, pz = g.z - g.x * t_z;
-  searchInRailFrame(search, pose, t_y, t_z, py, pz, out, second);
+  auto pivotSearch = [&](std::size_t k, double rk, ElasticWheelGeometry& into,
+                         ElasticSearchWorkspace& ws) {
+    const double t_y = slope.y_s - sb * rk, t_z = slope.z_s + cb * rk;
+    searchInRailFrame(search, pose, t_y, t_z, y[k] - x[k] * t_y, z[k] - x[k] * t_z, into, ws);
+  };
+  pivotSearch(0, r, out, second);
+  // A further patch on a part of the rail that rises otherwise (a blended slice with two heads: a
+  // wing rail falling away beside a rising crossing nose) is searched about its own rail point with
+  // its own slope: with the deepest patch's slope its contact would sit r dp behind or ahead of
+  // where it is and its gap be off by about r dp^2 / 2 (dp the difference of the slopes). The
+  // patch of that search nearest to its rail point replaces the one of the second search.
+  constexpr double kSamePatch = 3.0e-3;  // [m] of rail profile parameter
+  auto nearest = [&](const ElasticWheelGeometry& g, double u) {
+    int best = -1;
+    for (int j = 0; j < g.count; ++j) {
+      const double d = std::abs(g.patch[static_cast<std::size_t>(j)].s_r - u);
+      if (d < kSamePatch &&
+          (best < 0 || d < std::abs(g.patch[static_cast<std::size_t>(best)].s_r - u)))
+        best = j;
+    }
+    return best;
+  };
+  bool replaced = false;
+  for (std::size_t k = 1; k < static_cast<std::size_t>(count); ++k) {
+    const double rk = rise(s_r[k]);
+    if (rk == r) continue;
+    ElasticWheelGeometry own;
+    ElasticSearchWorkspace ws;
+    pivotSearch(k, rk, own, ws);
+    out.newton_iterations += own.newton_iterations;
+    const int from = nearest(own, s_r[k]);
+    int to = nearest(out, s_r[k]);
+    if (from < 0) {  // no longer in contact about its own point
+      if (to >= 0) {
+        out.patch[static_cast<std::size_t>(to)] =
+            out.patch[static_cast<std::size_t>(out.count - 1)];
+        --out.count;
+      }
+    } else {
+      if (to < 0 && out.count < kMaxElasticPatches) to = out.count++;
+      if (to >= 0)
+        out.patch[static_cast<std::size_t>(to)] = own.patch[static_cast<std::size_t>(from)];
+    }
+    replaced = true;
+  }
+  if (replaced)
+    std::sort(out.patch.begin(), out.patch.begin() + out.count,
+              [](const auto& p, const auto& q) { return p.approach > q.approach; });
 }
 
 }  // namespace rb::contact

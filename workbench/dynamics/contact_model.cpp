@@ -39,7 +39,10 @@ std::shared_ptr<const profiles::Profile> loadProfile(const std::string& source,
     }
     profiles::ProfileReadOptions opt;
     if (wheel) opt.r0 = r0;
-    if (slice != nullptr) opt.mirrorZ = slice->z_down;
+    if (slice != nullptr) {
+      opt.mirrorZ = slice->z_down;
+      opt.maxSlope = slice->max_slope;
+    }
     const profiles::LengthUnit unit = slice != nullptr && slice->metres
                                           ? profiles::LengthUnit::Metre
                                           : profiles::LengthUnit::Millimetre;
@@ -389,7 +392,8 @@ std::shared_ptr<const contact::SlicedRailSearch> slicedRail(
   Diagnostics d;
   std::vector<contact::RailSlice> slices;
   for (const RailSliceSpec& sl : spec) {
-    auto& left = loaded[sl.rail + (sl.metres ? "|m" : "|mm") + (sl.z_down ? "|down" : "|up")];
+    auto& left = loaded[sl.rail + (sl.metres ? "|m" : "|mm") + (sl.z_down ? "|down" : "|up") + "|" +
+                        formatNumber(sl.max_slope)];
     if (!left)
       left = loadProfile(sl.rail, profiles::ProfileKind::Rail, p.r0, sl.loc, d, "rail_slices", &sl);
     if (!left) continue;

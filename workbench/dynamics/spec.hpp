@@ -26,6 +26,10 @@ struct RailSliceSpec {
   // z down, as CONTACT's canonical profiles; SIMPACK files say both themselves).
   bool metres = false;
   bool z_down = false;
+  // [-] the profile reader keeps the longest run of points with |dz/dy| <= max_slope
+  // (profile_io.hpp); a slice holding two heads (a wing rail and a crossing nose with the
+  // flangeway between them) needs the steepest flank's slope
+  double max_slope = 10.0;
   SourceLoc loc;
 };
 

@@ -457,6 +457,48 @@ std::vector<std::size_t> ascendingOrder(const ProfilePoints& p) {
   return order;
 }
 
+// A rail's cut keeps its head and drops what lies beyond a near-vertical flank: the flank's lower
+// part, a floor, the web. Where the points beyond a cut first go down and then rise again by more
+// than kRiseBeyondCut to within kWheelReach of the kept top, they are a second head (a wing rail
+// beside a crossing nose, a check rail) or a step that a wheel's tread or flange can reach, and
+// keeping one side of them would be a different rail: refused, at the highest such point.
+constexpr double kRiseBeyondCut = 1.0e-3;  // [m]
+constexpr double kWheelReach = 40.0e-3;    // [m] a flange's height (28 mm on S1002) with margin
+void checkNothingReachableCut(const ProfilePoints& p, const std::vector<std::size_t>& order,
+                              std::size_t begin, std::size_t len, double maxSlope) {
+  const std::size_t n = order.size();
+  double top = p.z[order[begin]];
+  for (std::size_t k = begin; k < begin + len; ++k) top = std::max(top, p.z[order[k]]);
+  std::size_t worst = n;
+  double rise = 0.0;
+  // Walk outward from one end of the kept run (step -1 or +1 through the ascending order).
+  auto walk = [&](std::size_t from, bool left) {
+    double lowest = p.z[order[from]];
+    for (std::size_t k = from; left ? k-- > 0 : ++k < n;) {
+      const std::size_t i = order[k];
+      lowest = std::min(lowest, p.z[i]);
+      const double up = p.z[i] - lowest;
+      if (up > kRiseBeyondCut && p.z[i] > top - kWheelReach &&
+          (worst == n || p.z[i] > p.z[worst])) {
+        worst = i;
+        rise = up;
+      }
+    }
+  };
+  walk(begin, true);
+  walk(begin + len - 1, false);
+  if (worst == n) return;
+  throw InputError(
+      SourceLoc{p.file, p.line[worst]},
+      "the profile is kept from y = " + formatNumber(p.y[order[begin]]) + " to " +
+          formatNumber(p.y[order[begin + len - 1]]) +
+          " m (the longest run with |dz/dy| <= " + formatNumber(maxSlope) +
+          "), but beyond a steeper flank it rises again by " + formatNumber(rise * 1e3) +
+          " mm to a height the wheel reaches (y = " + formatNumber(p.y[worst]) +
+          " m): a second rail head or a step would be cut away (give "
+          "the slice a larger max_slope to keep every point, or cut the file to one head)");
+}
+
 }  // namespace
 
 Profile profileFromPoints(const ProfilePoints& p, const ProfileReadOptions& opt, std::string name) {
@@ -490,6 +532,7 @@ Profile profileFromPoints(const ProfilePoints& p, const ProfileReadOptions& opt,
                          " consecutive points with |dz/dy| <= " + formatNumber(opt.maxSlope) +
                          "; at least " + std::to_string(kMinPoints) + " are needed");
   }
+  if (!wheel) checkNothingReachableCut(p, order, bestBegin, bestLen, opt.maxSlope);
   std::vector<double> s, h, w;
   std::vector<int> lines;
   const double ca = std::cos(opt.rotate), sa = std::sin(opt.rotate);

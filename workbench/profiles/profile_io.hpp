@@ -22,9 +22,11 @@
 //
 // Processing (profileFromPoints): checks (below), then the longest run of consecutive points whose
 // chord slopes |dz/dy| stay <= maxSlope is kept (the profile must be a function of s: near-vertical
-// flanks and the flange back are cut), optional rotation/shift, then a Reinsch smoothing spline
-// through the points (smoothing length, 0 = natural interpolating spline), resampled on a uniform
-// grid of step ds aligned on multiples of ds inside the kept points.
+// flanks and the flange back are cut; a rail whose points beyond a cut go down and rise again by
+// more than 1 mm to within 40 mm of its top, a second head or a step, is refused), optional
+// rotation/shift, then a Reinsch smoothing spline through the points (smoothing length, 0 = natural
+// interpolating spline), resampled on a uniform grid of step ds aligned on multiples of ds inside
+// the kept points.
 //
 // Errors: bad files throw rb::InputError whose diagnostic is "file:line: message", the line being
 // the offending one: non-numeric data, fewer than 10 points, y not strictly monotone or two points

@@ -43,19 +43,37 @@ std::string profileSource(Reader& r, const Node& n, const std::string& key,
 constexpr std::size_t kMaxRailSlices = 2000;  // per rail: a turnout needs tens
 constexpr double kMaxRailOffset = 0.5;        // [m] |dy|, |dz| of a slice
 
+constexpr double kMinMaxSlope = 1.0, kMaxMaxSlope = 100.0;  // [-] a slice's max_slope
+
+// A slice's optional max_slope (RailSliceSpec::max_slope); false when given and not a slope.
+bool sliceMaxSlope(Reader& r, const Node& v, const std::string& what, double& out) {
+  const Node* m = v.field("max_slope");
+  if (!m) return true;
+  if (m->type != Node::Type::Number || !(m->number >= kMinMaxSlope && m->number <= kMaxMaxSlope)) {
+    r.error(*m, what + ".max_slope must be a slope |dz/dy| from " + formatNumber(kMinMaxSlope) +
+                    " to " + formatNumber(kMaxMaxSlope) +
+                    " (the profile keeps its longest run of points no steeper), got " +
+                    m->describe());
+    return false;
+  }
+  out = m->number;
+  return true;
+}
+
 // A CONTACT slices-file for one rail: { slcs = "file.slcs", s = <m>, units = "mm" | "m",
-// z = "down" | "up", dy = <m>, dz = <m> }. The slices are at s + u_fc (u_fc of the file, in m),
-// each moved by dy, dz; plain-text slice files are read in `units` with z `z` (CONTACT's
-// canonical form: mm, z down), SIMPACK ones as their headers say.
+// z = "down" | "up", dy = <m>, dz = <m>, max_slope = <-> }. The slices are at s + u_fc (u_fc of the
+// file, in m), each moved by dy, dz; plain-text slice files are read in `units` with z `z`
+// (CONTACT's canonical form: mm, z down), SIMPACK ones as their headers say.
 bool sliceFile(Reader& r, LuaHost& host, const Node& v, const std::string& what,
                std::vector<dynamics::RailSliceSpec>& out,
                std::vector<dynamics::SliceListSpec>& lists) {
   const std::string form =
       "{ slcs = \"file.slcs\", s = <m> (track position of the file's u = 0), units = \"mm\" "
-      "or \"m\", z = \"down\" or \"up\", dy = <m>, dz = <m> }";
+      "or \"m\", z = \"down\" or \"up\", dy = <m>, dz = <m>, max_slope = <|dz/dy|> }";
   bool ok = true;
   for (const auto& [key, value] : v.fields)
-    if (key != "slcs" && key != "s" && key != "units" && key != "z" && key != "dy" && key != "dz") {
+    if (key != "slcs" && key != "s" && key != "units" && key != "z" && key != "dy" && key != "dz" &&
+        key != "max_slope") {
       r.error(value, what + ": unknown key '" + key + "' in " + form);
       ok = false;
     }
@@ -88,6 +106,7 @@ bool sliceFile(Reader& r, LuaHost& host, const Node& v, const std::string& what,
   bool up = false;
   choice("z", "down", "up", up);
   base.z_down = !up;
+  ok = sliceMaxSlope(r, v, what, base.max_slope) && ok;
   for (auto [key, target] : {std::pair{"dy", &base.dy}, std::pair{"dz", &base.dz}}) {
     const Node* o = v.field(key);
     if (!o) continue;
@@ -151,7 +170,8 @@ bool sliceFile(Reader& r, LuaHost& host, const Node& v, const std::string& what,
 bool sliceList(Reader& r, LuaHost& host, const Node& list, const std::string& what,
                std::vector<dynamics::RailSliceSpec>& out) {
   const std::string form =
-      "{ s = <m>, rail = \"60e1\" or a rail profile file, dy = <m>, dz = <m> }";
+      "{ s = <m>, rail = \"60e1\" or a rail profile file, dy = <m>, dz = <m>, max_slope = "
+      "<|dz/dy|> }";
   if (list.type != Node::Type::Table || !list.fields.empty() || list.items.empty()) {
     r.error(list, what + " must be a non-empty list of slices " + form +
                       " or a CONTACT slices-file { slcs = \"file.slcs\", s = <m> }, got " +
@@ -173,9 +193,11 @@ bool sliceList(Reader& r, LuaHost& host, const Node& list, const std::string& wh
     bool known = table;
     if (table)
       for (const auto& [key, value] : item.fields)
-        known = known && (key == "s" || key == "rail" || key == "dy" || key == "dz");
+        known = known &&
+                (key == "s" || key == "rail" || key == "dy" || key == "dz" || key == "max_slope");
     if (!s || !rail || !known) {
-      r.error(item, at + " must be " + form + " (dy, dz optional), got " + item.describe());
+      r.error(item,
+              at + " must be " + form + " (dy, dz, max_slope optional), got " + item.describe());
       ok = false;
       continue;
     }
@@ -199,6 +221,10 @@ bool sliceList(Reader& r, LuaHost& host, const Node& list, const std::string& wh
     dynamics::RailSliceSpec sl;
     sl.s = s->number;
     sl.loc = item.loc;
+    if (!sliceMaxSlope(r, item, at, sl.max_slope)) {
+      ok = false;
+      continue;
+    }
     for (auto [key, target] : {std::pair{"dy", &sl.dy}, std::pair{"dz", &sl.dz}}) {
       const Node* o = item.field(key);
       if (!o) continue;

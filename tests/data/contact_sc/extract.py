@@ -10,7 +10,9 @@ this script:
 It prints the geometry check (translation fits and residuals) to stdout.
 
 Our own code; only numbers are taken from the CONTACT files. Needs python3 + numpy.
-Usage: /usr/bin/python3 extract.py [path/to/CONTACT/bare/repo]
+Usage: /usr/bin/python3 extract.py [path/to/CONTACT/bare/repo [uk_crossing]]
+With `uk_crossing` it instead copies the S&C benchmark's UK crossing (uk_crossing.slcs and its
+slice files, unmodified) and writes uk_crossing_reference.csv from CONTACT's mbench_brute case.
 """
 import os
 import re
@@ -446,5 +448,64 @@ def extract_reference():
         print(dict(zip(cols, r)))
 
 
+# ---------------------------------------------------------------------------------------------
+# part 4: the S&C benchmark's UK crossing (56E1, 1:9.25) and CONTACT's wheel over it (mbench_brute)
+
+UK_COLS = ['icase', 's_ws_mm', 'y_ws_mm', 'z_ws_mm', 'fx_tr_N', 'fy_tr_N', 'fz_tr_N', 'npatch', 'patch',
+           'xcp_tr_mm', 'deltcp_tr_rad', 'ycp_r_mm', 'zcp_r_mm', 'fn_N', 'fx_N', 'fs_N', 'approach_mm',
+           'pmax_MPa', 'ncon']
+
+
+def copy_uk_crossing():
+    """uk_crossing.slcs and the 148 slice files it lists, unmodified, under uk_crossing/."""
+    slcs = show('testbank/profiles/uk_crossing.slcs')
+    os.makedirs(os.path.join(OUT, 'uk_crossing'), exist_ok=True)
+    with open(os.path.join(OUT, 'uk_crossing.slcs'), 'w') as f:
+        f.write(slcs)
+    names = re.findall(r"'(uk_crossing/[^']+)'", slcs)
+    for n in names:
+        with open(os.path.join(OUT, n), 'w') as f:
+            f.write(show('testbank/profiles/' + n))
+    print(f'uk_crossing.slcs: {len(names)} slice files copied')
+
+
+def extract_uk_crossing():
+    """One row per case and patch of mbench_brute.ref_out (the case's prescribed FZ in the .inp)."""
+    txt = show('testbank/examples_s+c/mbench_brute.ref_out')
+    out = []
+    blocks = re.split(r'^ Case +(\d+)\s*$', txt, flags=re.M)
+    for icase, body in zip(blocks[1::2], blocks[2::2]):
+        head = body.split('----- DATA FOR CONTACT PATCH')[0].splitlines()
+        g = {}
+        for h, v in table_pairs(head):
+            for a, b in zip(h, v):
+                g.setdefault(a, b)
+        patches = re.split(r'^ ----- DATA FOR CONTACT PATCH +(\d+) -----\s*$', body, flags=re.M)
+        npatch = len(patches[1::2])
+        for ip, pb in zip(patches[1::2], patches[2::2]):
+            p = {}
+            for h, v in table_pairs(pb.splitlines()):
+                for a, b in zip(h, v):
+                    p.setdefault(a, b)
+            out.append([icase, g['S_WS'], g['Y_WS'], g['Z_WS'], g['FX(TR)'], g['FY(TR)'], g['FZ(TR)'],
+                        str(npatch), ip, p['XCP(TR)'], p['DELTCP(TR)'], p['YCP(R)'], p['ZCP(R)'], p['FN'],
+                        p['FX'], p['FS'], p['APPROACH'], p['PMAX'], p['NCON']])
+    with open(os.path.join(OUT, 'uk_crossing_reference.csv'), 'w') as f:
+        f.write('# CONTACT on the S&C benchmark UK crossing (56E1-R245-1:9.25): eve70a/CONTACT\n')
+        f.write(f'# testbank/examples_s+c/mbench_brute.ref_out, commit {COMMIT}, Apache-2.0. Right wheel\n')
+        f.write('# (MBench_S1002_v3.prw, FBDIST 1360, FBPOS -70, r0 460 mm) at S_WS = 239 mm over\n')
+        f.write('# uk_crossing.slcs (RAILY0 750 mm, no cant), FZ = 10 kN prescribed, Y_WS swept; brute-force\n')
+        f.write('# planar contact, grid 0.2 x 0.2 mm, f = 0.3, VS 2000 mm/s, VPITCH -4.3481181 rad/s.\n')
+        f.write('# One row per case and patch; CONTACT conventions: y to the RIGHT (field side), z DOWN, mm.\n')
+        f.write(','.join(UK_COLS) + '\n')
+        for r in out:
+            f.write(','.join(r) + '\n')
+    print(f'uk_crossing_reference.csv: {len(out)} rows')
+
+
 if __name__ == '__main__':
-    main()
+    if len(sys.argv) > 2 and sys.argv[2] == 'uk_crossing':
+        copy_uk_crossing()
+        extract_uk_crossing()
+    else:
+        main()
