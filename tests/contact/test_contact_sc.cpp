@@ -231,12 +231,14 @@ TEST(ContactSC, CrossingNoseWingRailAndBothAgainstContact) {
 namespace {
 
 // ---------------------------------------------------------------------------------------------
-// The S&C benchmark's UK crossing (56E1, 1:9.25; tests/data/contact_sc/README.md) read through its
+// The S&C benchmark's UK crossing (56E1, 1:9.25; profiles/uk_crossing.slcs, tests/data/contact_sc/
+// README.md) read through its
 // slices-file as a scenario reads it (metres, z down), every slice whole: wing rail, flangeway and
 // nose in one profile, kept by max_slope 40 (the gauge face of the wing rail is steeper than 10).
 
 std::shared_ptr<const SlicedRailSearch> ukCrossing(double s_lo, double s_hi) {
-  const rb::profiles::SliceList list = rb::profiles::readSliceList(dataFile("uk_crossing.slcs"));
+  const std::string profiles = std::string(RB_SOURCE_DIR) + "/profiles/";
+  const rb::profiles::SliceList list = rb::profiles::readSliceList(profiles + "uk_crossing.slcs");
   rb::profiles::ProfileReadOptions o;
   o.mirrorZ = true;
   o.maxSlope = 40.0;
@@ -246,7 +248,7 @@ std::shared_ptr<const SlicedRailSearch> ukCrossing(double s_lo, double s_hi) {
     slices.push_back(RailSlice{
         e.u_fc,
         std::make_shared<const Profile>(
-            rb::profiles::readTextProfile(dataFile(e.file), rb::profiles::ProfileKind::Rail,
+            rb::profiles::readTextProfile(profiles + e.file, rb::profiles::ProfileKind::Rail,
                                           rb::profiles::LengthUnit::Metre, o)
                 .mirrored()),
         0.0, 0.0});

@@ -52,4 +52,38 @@ TEST(SliceFiles, ASlicesFileIsItsSlicesListedOneByOne) {
   EXPECT_TRUE(warned);
 }
 
+// The S&C benchmark's UK crossing (profiles/uk_crossing.slcs: 148 slices, wing rail, flangeway
+// and nose in one profile) as a scenario reads it: with max_slope = 40 every slice keeps every
+// point, so the wheel finds the nose and the wing rail in one profile (the contact itself is
+// compared with CONTACT in tests/contact/test_contact_sc.cpp); with the default 10 the cut that
+// would keep the nose and drop the wing rail is refused at the slice file's line.
+TEST(SliceFiles, TheUkCrossingKeepsBothHeadsWithMaxSlope) {
+  const rb::run::Model m = rb::test::compiled("tests/run/data/uk_crossing_through.lua", {});
+  const auto& right = m.lead().contact->elastic->sliced[1];
+  ASSERT_TRUE(right);
+  const auto& sl = right->slices();
+  ASSERT_EQ(sl.size(), 148U);
+  EXPECT_NEAR(sl.front().s, 80.0 - 75.0, 1e-12);
+  EXPECT_NEAR(sl.back().s, 80.0 + 50.0, 1e-12);
+  // Slice 70 (u = 0.22871 m): the nose's gauge face (y = -42 mm, 42 mm below the top of the
+  // slices' frame, right rail: mirrored) to the wing rail's field-side end (y = 102.6 mm).
+  const rb::profiles::Profile& p = *sl[69].rail;
+  EXPECT_NEAR(sl[69].s, 80.22871, 1e-9);
+  EXPECT_NEAR(p.sMin(), -0.1026, 0.5e-3);
+  EXPECT_NEAR(p.sMax(), 0.0420, 0.5e-3);
+  EXPECT_NEAR(p.at(28.2e-3).h, -3.42e-3, 0.1e-3);  // the nose's top, 3.4 mm below the frame
+  EXPECT_NEAR(p.at(-40.0e-3).h, 1.52e-3, 0.1e-3);  // the wing rail's, 1.5 mm above it
+  EXPECT_LT(p.at(0.0).h, -40e-3);                  // the flangeway between them
+  std::string without;
+  try {
+    (void)rb::test::compiled("tests/run/data/uk_crossing_through.lua",
+                             {"profiles.rail_slices.right.max_slope=10"});
+  } catch (const rb::InputError& e) {
+    without = e.what();
+  }
+  EXPECT_NE(without.find("Crossing_"), std::string::npos) << without;
+  EXPECT_NE(without.find("a second rail head or a step would be cut away"), std::string::npos)
+      << without;
+}
+
 }  // namespace

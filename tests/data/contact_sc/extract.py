@@ -23,6 +23,7 @@ import numpy as np
 
 REPO = sys.argv[1] if len(sys.argv) > 1 else '/work/.mirror/eve70a+CONTACT/repo'
 OUT = os.path.dirname(os.path.abspath(__file__))
+PROFILES = os.path.join(OUT, '..', '..', '..', 'profiles')  # the UK crossing's rails, for scenarios
 MAX_SLOPE = 1.0  # parts are cut where |dz/dy| first exceeds this on the way down the flanks
 
 
@@ -457,16 +458,50 @@ UK_COLS = ['icase', 's_ws_mm', 'y_ws_mm', 'z_ws_mm', 'fx_tr_N', 'fy_tr_N', 'fz_t
 
 
 def copy_uk_crossing():
-    """uk_crossing.slcs and the 148 slice files it lists, unmodified, under uk_crossing/."""
+    """uk_crossing.slcs and the 148 slice files it lists, unmodified, to profiles/ (and uk_crossing/)."""
     slcs = show('testbank/profiles/uk_crossing.slcs')
-    os.makedirs(os.path.join(OUT, 'uk_crossing'), exist_ok=True)
-    with open(os.path.join(OUT, 'uk_crossing.slcs'), 'w') as f:
+    os.makedirs(os.path.join(PROFILES, 'uk_crossing'), exist_ok=True)
+    with open(os.path.join(PROFILES, 'uk_crossing.slcs'), 'w') as f:
         f.write(slcs)
     names = re.findall(r"'(uk_crossing/[^']+)'", slcs)
     for n in names:
-        with open(os.path.join(OUT, n), 'w') as f:
+        with open(os.path.join(PROFILES, n), 'w') as f:
             f.write(show('testbank/profiles/' + n))
     print(f'uk_crossing.slcs: {len(names)} slice files copied')
+    # The rail opposite the crossing and its check rail: CONTACT has their slices and positions
+    # (SectionPosition*.txt) but no slices-file; ours lists them in the same form.
+    for part, slcs_name, title in (
+            ('OppositeStockRail', 'uk_opposite_stock_rail.slcs', 'stock rail opposite the crossing'),
+            ('CheckRail_Thr', 'uk_check_rail.slcs', 'check rail beside that stock rail')):
+        pos_file = f'uk_crossing/SectionPosition{part}.txt'
+        pos = show('testbank/profiles/' + pos_file)
+        with open(os.path.join(PROFILES, pos_file), 'w') as f:
+            f.write(pos)
+        rows = [ln.split() for ln in pos.splitlines() if ln.strip()]
+        with open(os.path.join(PROFILES, slcs_name), 'w') as f:
+            f.write(f"% railbench's slices-file for the {title} of the S&C benchmark's UK crossing:\n")
+            f.write(f"% the slices and positions of CONTACT's testbank/profiles/{pos_file}\n")
+            f.write(f"% (eve70a/CONTACT commit {COMMIT}, Apache-2.0), written by extract.py.\n\n")
+            f.write('   0.000    1000.0   U_OFFSET [usr], S_SCALE [mm/usr],  usr = m\n')
+            f.write(f'   {len(rows):3d}             NSLC\n')
+            f.write('     0    0    0   NFEAT, NKINK, NACCEL\n')
+            f.write('     1             U_INTPOL (1=intpol, 2=approx)\n\n')
+            for k, u in rows:
+                name = f'uk_crossing/{part}_{k}.txt'
+                with open(os.path.join(PROFILES, name), 'w') as g:
+                    g.write(show('testbank/profiles/' + name))
+                f.write(f" {float(u):10.5f}   '{name}'\n")
+        print(f'{slcs_name}: {len(rows)} slices')
+    # The stock rail as profiles.rail (the positioning's and the centred start's rail) reads it:
+    # plain text in mm, z up (OppositeStockRail_1.txt converted; all six slices are the same).
+    src = 'uk_crossing/OppositeStockRail_1.txt'
+    with open(os.path.join(PROFILES, 'uk_crossing', 'stock_rail_56e1_mm.txt'), 'w') as f:
+        f.write(f"# The 56E1 stock rail of the S&C benchmark's UK crossing: CONTACT's testbank/profiles/{src}\n")
+        f.write(f'# (eve70a/CONTACT commit {COMMIT}, Apache-2.0) converted by extract.py to y z in mm, z UP.\n')
+        for ln in show('testbank/profiles/' + src).splitlines():
+            if ln.strip():
+                y, z = (float(v) for v in ln.split()[:2])
+                f.write(f'{y * 1000:.6f} {-z * 1000:.6f}\n')
 
 
 def extract_uk_crossing():
