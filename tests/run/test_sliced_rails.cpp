@@ -97,6 +97,26 @@ TEST(SlicedRails, OneLoweredRailRollsTheWheelsets) {
   }
 }
 
+// Rails of slices that stand lower than profiles.rail from the start (the centred height and roll
+// the start begins from are profiles.rail's): the wheelsets start on them, lowered and rolled by
+// their clearance, at the static equilibrium over them. Without that, the equilibrium began with
+// the wheels 3 mm in the air, with no contact stiffness, and its Newton steps left the rails (the
+// start was refused as a derailment).
+TEST(SlicedRails, WheelsetsStartOnRailsLowerThanProfilesRail) {
+  const Wheelsets plain = read(run("plain").path);
+  const Wheelsets both = read(run("start_lowered").path);
+  const Wheelsets left = read(run("start_lowered_left").path);
+  const double drop = kLowered * std::cos(kBeta);
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_NEAR(both.z[k].front() - plain.z[k].front(), -drop, 1e-5) << "ws" << k + 1;
+    EXPECT_NEAR(both.roll[k].front() - plain.roll[k].front(), 0.0, 1e-7) << "ws" << k + 1;
+    EXPECT_NEAR(left.z[k].front() - plain.z[k].front(), -0.5 * drop, 0.03 * 0.5 * drop)
+        << "ws" << k + 1;
+    EXPECT_NEAR(left.roll[k].front() - plain.roll[k].front(), -drop / 1.5, 0.03 * drop / 1.5)
+        << "ws" << k + 1;
+  }
+}
+
 TEST(SlicedRails, TheLoadMovesToTheHigherOfTwoRails) {
   // A second rail of the same profile on the right (profiles.extra_rails) rises from 2 mm below
   // while the running rail drops by 2 mm, over s = 60 .. 100 m: the two are level at s = 80 m,

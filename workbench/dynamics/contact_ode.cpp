@@ -20,6 +20,41 @@ using internal::StageInput;
 using internal::Vec7;
 using internal::WheelsetWork;
 
+namespace {
+
+// Elastic contact over running rails of slices: the start's height and roll are the centred
+// wheelset's on profiles.rail. Where the slice under a wheel at the start stands lower than that
+// (the centred wheel clears it by more than the static approach the start sinks it by), the wheel
+// would start in the air, with no contact stiffness for the static equilibrium's Newton steps: the
+// wheelset is lowered and rolled so that each wheel comes down by its own clearance d, its height
+// by -(d_l + d_r) / 2 and its roll by -(d_l - d_r) / (2 Lw). A few passes, as the clearance is
+// measured along the rail's normal. Rails that meet the centred wheels are left as they are.
+void lowerOntoSlices(const ContactModel& c, double s, double& dz, double& dphi) {
+  const ElasticContactModel& e = *c.elastic;
+  const double lw = c.geometry.wheel_lw;
+  for (int pass = 0; pass < 4; ++pass) {
+    double d[2] = {0.0, 0.0};
+    for (std::size_t side = 0; side < 2; ++side) {
+      if (!e.sliced[side]) continue;
+      const contact::SlicedRailSearch::Place at = e.sliced[side]->at(s);
+      if (at.search == nullptr) continue;
+      const double sigma = contact::kSideSign[side];
+      contact::ElasticPose pose{-sigma * at.dy, c.centred_z + dz - at.dz, c.centred_phi + dphi,
+                                0.0};
+      pose.blend = at.blend;
+      contact::ElasticWheelGeometry g;
+      contact::ElasticSearchWorkspace ws;
+      at.search->search(pose, g, ws);
+      if (g.count == 0 && g.min_gap > e.static_approach) d[side] = g.min_gap;
+    }
+    if (d[0] == 0.0 && d[1] == 0.0) return;
+    dz -= 0.5 * (d[0] + d[1]);
+    dphi -= (d[0] - d[1]) / (2.0 * lw);
+  }
+}
+
+}  // namespace
+
 vehicle::VehicleLayout contactLayout(const vehicle::VehicleModel& m, WheelsetSpin spin,
                                      ContactMethod method, bool rail_masses) {
   const bool prescribed = spin == WheelsetSpin::Prescribed;
@@ -216,9 +251,12 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
     // contact stiffness to work with).
     if (l.wheelsetVertical()) {
       const double height = m.bodies[l.wheelset(w)].height;
+      double dz = 0.0, dphi = 0.0;
+      lowerOntoSlices(c, m.bodyS(static_cast<int>(l.wheelset(w)), t0), dz, dphi);
       y[l.wsPosition(w, 3)] =
-          c.centred_z - height - c.elastic->static_approach + 0.5 * (rail.z_l + rail.z_r);
-      y[l.wsPosition(w, 4)] = c.centred_phi + (rail.z_l - rail.z_r) / (2.0 * c.geometry.rail_lr);
+          c.centred_z + dz - height - c.elastic->static_approach + 0.5 * (rail.z_l + rail.z_r);
+      y[l.wsPosition(w, 4)] =
+          c.centred_phi + dphi + (rail.z_l - rail.z_r) / (2.0 * c.geometry.rail_lr);
       unknowns.push_back(l.wsPosition(w, 3));
       unknowns.push_back(l.wsPosition(w, 4));
     }

@@ -45,10 +45,23 @@ constexpr double kMaxRailOffset = 0.5;        // [m] |dy|, |dz| of a slice
 
 constexpr double kMinMaxSlope = 1.0, kMaxMaxSlope = 100.0;  // [-] a slice's max_slope
 
-// A slice's optional max_slope (RailSliceSpec::max_slope); false when given and not a slope.
-bool sliceMaxSlope(Reader& r, const Node& v, const std::string& what, double& out) {
+// A slice's optional offsets dy, dz and max_slope (RailSliceSpec); false when one is given and
+// not a number in its range.
+bool sliceOptions(Reader& r, const Node& v, const std::string& what, dynamics::RailSliceSpec& sl) {
+  bool ok = true;
+  for (auto [key, target] : {std::pair{"dy", &sl.dy}, std::pair{"dz", &sl.dz}}) {
+    const Node* o = v.field(key);
+    if (!o) continue;
+    if (o->type != Node::Type::Number || !(std::abs(o->number) <= kMaxRailOffset)) {
+      r.error(*o, what + "." + key + " must be an offset of at most " +
+                      formatNumber(kMaxRailOffset) + " m, got " + o->describe());
+      ok = false;
+      continue;
+    }
+    *target = o->number;
+  }
   const Node* m = v.field("max_slope");
-  if (!m) return true;
+  if (!m) return ok;
   if (m->type != Node::Type::Number || !(m->number >= kMinMaxSlope && m->number <= kMaxMaxSlope)) {
     r.error(*m, what + ".max_slope must be a slope |dz/dy| from " + formatNumber(kMinMaxSlope) +
                     " to " + formatNumber(kMaxMaxSlope) +
@@ -56,8 +69,8 @@ bool sliceMaxSlope(Reader& r, const Node& v, const std::string& what, double& ou
                     m->describe());
     return false;
   }
-  out = m->number;
-  return true;
+  sl.max_slope = m->number;
+  return ok;
 }
 
 // A CONTACT slices-file for one rail: { slcs = "file.slcs", s = <m>, units = "mm" | "m",
@@ -106,18 +119,7 @@ bool sliceFile(Reader& r, LuaHost& host, const Node& v, const std::string& what,
   bool up = false;
   choice("z", "down", "up", up);
   base.z_down = !up;
-  ok = sliceMaxSlope(r, v, what, base.max_slope) && ok;
-  for (auto [key, target] : {std::pair{"dy", &base.dy}, std::pair{"dz", &base.dz}}) {
-    const Node* o = v.field(key);
-    if (!o) continue;
-    if (o->type != Node::Type::Number || !(std::abs(o->number) <= kMaxRailOffset)) {
-      r.error(*o, what + "." + key + " must be an offset of at most " +
-                      formatNumber(kMaxRailOffset) + " m, got " + o->describe());
-      ok = false;
-      continue;
-    }
-    *target = o->number;
-  }
+  ok = sliceOptions(r, v, what, base) && ok;
   if (!ok) return false;
   std::string path;
   profiles::SliceList list;
@@ -221,20 +223,9 @@ bool sliceList(Reader& r, LuaHost& host, const Node& list, const std::string& wh
     dynamics::RailSliceSpec sl;
     sl.s = s->number;
     sl.loc = item.loc;
-    if (!sliceMaxSlope(r, item, at, sl.max_slope)) {
+    if (!sliceOptions(r, item, at, sl)) {
       ok = false;
       continue;
-    }
-    for (auto [key, target] : {std::pair{"dy", &sl.dy}, std::pair{"dz", &sl.dz}}) {
-      const Node* o = item.field(key);
-      if (!o) continue;
-      if (o->type != Node::Type::Number || !(std::abs(o->number) <= kMaxRailOffset)) {
-        r.error(*o, at + "." + key + " must be an offset of at most " +
-                        formatNumber(kMaxRailOffset) + " m, got " + o->describe());
-        ok = false;
-        continue;
-      }
-      *target = o->number;
     }
     if (rail->string == "60e1") {
       sl.rail = "60e1";
