@@ -364,6 +364,26 @@ def table_pairs(lines):
     return out
 
 
+def table_values(lines):
+    """Every label of the label/number line pairs in lines with its first value."""
+    d = {}
+    for h, v in table_pairs(lines):
+        for a, b in zip(h, v):
+            d.setdefault(a, b)
+    return d
+
+
+def ref_out_cases(txt):
+    """(case number, its text, its header values, [(patch number, patch text, patch values)]) for
+    every case of a .ref_out."""
+    blocks = re.split(r'^ Case +(\d+)\s*$', txt, flags=re.M)
+    for icase, body in zip(blocks[1::2], blocks[2::2]):
+        g = table_values(body.split('----- DATA FOR CONTACT PATCH')[0].splitlines())
+        parts = re.split(r'^ ----- DATA FOR CONTACT PATCH +(\d+) -----\s*$', body, flags=re.M)
+        yield icase, body, g, [(ip, pb, table_values(pb.splitlines()))
+                               for ip, pb in zip(parts[1::2], parts[2::2])]
+
+
 def grid_extent(lines):
     """Rows (s) and columns (x) of the printed contact grid containing contact cells, and the cell count."""
     i = next(k for k, ln in enumerate(lines) if 'FORM OF THE CONTACT' in ln)
@@ -410,23 +430,11 @@ def extract_reference():
         method = {2: 'locus', 5: 'brute'}.get(d_digit, '?')
         slcs = re.search(r"'([^']+\.slcs)'", inp).group(1).split('/')[-1]
         txt = show(f'testbank/examples_s+c/{c}.ref_out')
-        blocks = re.split(r'^ Case +(\d+)\s*$', txt, flags=re.M)
-        for icase, body in zip(blocks[1::2], blocks[2::2]):
-            lines = body.splitlines()
-            head = body.split('----- DATA FOR CONTACT PATCH')[0].splitlines()
-            g = {}
-            for h, v in table_pairs(head):
-                for a, b in zip(h, v):
-                    g.setdefault(a, b)
+        for icase, body, g, patches in ref_out_cases(txt):
             # TOTAL FORCES ON RAIL: FX(TR) ... FZ(WS)
             assert d_digit == int(re.search(r'DISCNS +(\d)', body).group(1))
-            patches = re.split(r'^ ----- DATA FOR CONTACT PATCH +(\d+) -----\s*$', body, flags=re.M)
-            npatch = len(patches[1::2])
-            for ip, pb in zip(patches[1::2], patches[2::2]):
-                p = {}
-                for h, v in table_pairs(pb.splitlines()):
-                    for a, b in zip(h, v):
-                        p.setdefault(a, b)
+            npatch = len(patches)
+            for ip, pb, p in patches:
                 nrow, ncol, ncells, _ = grid_extent(pb.splitlines())
                 assert ncells == int(p['NCON']), (c, ncells, p['NCON'])
                 dx, ds = float(g['DX']), float(g['DS'])
@@ -508,20 +516,9 @@ def extract_uk_crossing():
     """One row per case and patch of mbench_brute.ref_out (the case's prescribed FZ in the .inp)."""
     txt = show('testbank/examples_s+c/mbench_brute.ref_out')
     out = []
-    blocks = re.split(r'^ Case +(\d+)\s*$', txt, flags=re.M)
-    for icase, body in zip(blocks[1::2], blocks[2::2]):
-        head = body.split('----- DATA FOR CONTACT PATCH')[0].splitlines()
-        g = {}
-        for h, v in table_pairs(head):
-            for a, b in zip(h, v):
-                g.setdefault(a, b)
-        patches = re.split(r'^ ----- DATA FOR CONTACT PATCH +(\d+) -----\s*$', body, flags=re.M)
-        npatch = len(patches[1::2])
-        for ip, pb in zip(patches[1::2], patches[2::2]):
-            p = {}
-            for h, v in table_pairs(pb.splitlines()):
-                for a, b in zip(h, v):
-                    p.setdefault(a, b)
+    for icase, _, g, patches in ref_out_cases(txt):
+        npatch = len(patches)
+        for ip, _, p in patches:
             out.append([icase, g['S_WS'], g['Y_WS'], g['Z_WS'], g['FX(TR)'], g['FY(TR)'], g['FZ(TR)'],
                         str(npatch), ip, p['XCP(TR)'], p['DELTCP(TR)'], p['YCP(R)'], p['ZCP(R)'], p['FN'],
                         p['FX'], p['FS'], p['APPROACH'], p['PMAX'], p['NCON']])
