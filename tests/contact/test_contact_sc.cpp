@@ -118,7 +118,8 @@ Ours contactAt(const std::vector<std::shared_ptr<const SlicedRailSearch>>& rails
     pose.blend = at.blend;
     const RailSlope slope = flat ? RailSlope{} : RailSlope{sigma * at.dy_ds, at.dz_ds, at.blend_ds};
     ElasticWheelGeometry g;
-    ElasticSearchWorkspace w1, w2;
+    ElasticSearchWorkspace w1;
+    SlopedSearchWorkspace w2;
     searchSlopedRail(*at.search, pose, slope, g, w1, w2);
     for (int k = 0; k < g.count; ++k) {
       const ElasticPatchGeometry& p = g.patch[static_cast<std::size_t>(k)];
@@ -269,7 +270,8 @@ std::vector<UkPatch> ukPatches(const SlicedRailSearch& rail, double s, double y_
   pose.blend = at.blend;
   const RailSlope slope{sigma * at.dy_ds, at.dz_ds, at.blend_ds};
   ElasticWheelGeometry g;
-  ElasticSearchWorkspace w1, w2;
+  ElasticSearchWorkspace w1;
+  SlopedSearchWorkspace w2;
   searchSlopedRail(*at.search, pose, slope, g, w1, w2);
   std::vector<UkPatch> out;
   for (int k = 0; k < g.count; ++k) {

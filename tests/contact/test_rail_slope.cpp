@@ -128,7 +128,8 @@ double deepestPenetration(const ElasticContactSearch& s, const ElasticPose& p, c
 ElasticPose poseAt(const ElasticPose& p0, const RailSlope& sl, double delta) {
   ElasticPose p = p0;
   ElasticWheelGeometry g;
-  ElasticSearchWorkspace a, b;
+  ElasticSearchWorkspace a;
+  SlopedSearchWorkspace b;
   double lo = p0.z - 0.01, hi = p0.z + 0.01;
   for (int i = 0; i < 80; ++i) {
     p.z = 0.5 * (lo + hi);
@@ -139,7 +140,8 @@ ElasticPose poseAt(const ElasticPose& p0, const RailSlope& sl, double delta) {
 }
 
 TEST(RailSlope, WithoutSlopeItIsThePlainSearch) {
-  ElasticSearchWorkspace a, b, c;
+  ElasticSearchWorkspace a, c;
+  SlopedSearchWorkspace b;
   ElasticWheelGeometry g1, g2;
   const ElasticPose p{-0.002, 0.46, 0.001, 0.004};
   searchSlopedRail(search(), p, RailSlope{}, g1, a, b);
@@ -153,7 +155,8 @@ TEST(RailSlope, WithoutSlopeItIsThePlainSearch) {
     EXPECT_EQ(std::bit_cast<std::uint64_t>(x.x), std::bit_cast<std::uint64_t>(y.x));
     EXPECT_EQ(x.n_x, 0.0);
   }
-  EXPECT_EQ(b.searches, 0u);
+  EXPECT_EQ(b.second.searches, 0u);
+  EXPECT_EQ(b.further.searches, 0u);
 }
 
 // Rails rising at 1:10 (a crossing nose), moving sideways at 1:10 (a wing rail), both, with the
@@ -180,7 +183,8 @@ TEST(RailSlope, SearchEqualsTheBruteForceGapOfTheSlopedRail) {
     const double delta = 50e-6;
     const ElasticPose p = poseAt(k.pose, k.slope, delta);
     ElasticWheelGeometry g;
-    ElasticSearchWorkspace a, b;
+    ElasticSearchWorkspace a;
+    SlopedSearchWorkspace b;
     searchSlopedRail(s, p, k.slope, g, a, b);
     ASSERT_GE(g.count, 1);
     const ElasticPatchGeometry& c = g.patch[0];
@@ -230,7 +234,8 @@ TEST(RailSlope, ABlendedRiseIsTheSameRiseAsAnOffsetSlope) {
     const RailSlope offset{0.0, 0.1, 0.0};
     const ElasticPose p = poseAt(p0, offset, 50e-6);
     ElasticWheelGeometry a, b;
-    ElasticSearchWorkspace w1, w2, w3, w4;
+    ElasticSearchWorkspace w1, w3;
+    SlopedSearchWorkspace w2, w4;
     searchSlopedRail(search(), p, offset, a, w1, w2);
     searchSlopedRail(sb, p, RailSlope{0.0, 0.0, 1.0 / 0.01}, b, w3, w4);
     ASSERT_GE(a.count, 1);

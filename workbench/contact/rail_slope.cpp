@@ -99,7 +99,7 @@ void searchInRailFrame(const ElasticContactSearch& search, const ElasticPose& po
 
 void searchSlopedRail(const ElasticContactSearch& search, const ElasticPose& pose,
                       const RailSlope& slope, ElasticWheelGeometry& out,
-                      ElasticSearchWorkspace& first, ElasticSearchWorkspace& second) {
+                      ElasticSearchWorkspace& first, SlopedSearchWorkspace& sloped) {
   const WheelRailPair& pair = search.pair();
   const double sigma = search.sigma();
   const double sb = sigma * std::sin(pair.beta), cb = std::cos(pair.beta);
@@ -112,9 +112,7 @@ void searchSlopedRail(const ElasticContactSearch& search, const ElasticPose& pos
   // First search: pivot on the rail below the wheel's tape circle, with the blend's slope there.
   double u0 = 0.0, rise0 = 0.0;
   if (blended) {
-    const double lo = std::max(pair.rail->sMin(), pair.rail_next->sMin());
-    const double hi = std::min(pair.rail->sMax(), pair.rail_next->sMax());
-    u0 = std::clamp(cb * (pose.y + sigma * pair.wheel_lw - oy), lo, hi);
+    u0 = std::clamp(cb * (pose.y + sigma * pair.wheel_lw - oy), search.railMin(), search.railMax());
     rise0 = rise(u0);
   }
   const bool tilted = slope.y_s != 0.0 || slope.z_s != 0.0 || rise0 != 0.0;
@@ -144,7 +142,7 @@ void searchSlopedRail(const ElasticContactSearch& search, const ElasticPose& pos
     const double t_y = slope.y_s - sb * rk, t_z = slope.z_s + cb * rk;
     searchInRailFrame(search, pose, t_y, t_z, y[k] - x[k] * t_y, z[k] - x[k] * t_z, into, ws);
   };
-  pivotSearch(0, r, out, second);
+  pivotSearch(0, r, out, sloped.second);
   // A further patch on a part of the rail that rises otherwise (a blended slice with two heads: a
   // wing rail falling away beside a rising crossing nose) is searched about its own rail point with
   // its own slope: with the deepest patch's slope its contact would sit r dp behind or ahead of
@@ -166,8 +164,7 @@ void searchSlopedRail(const ElasticContactSearch& search, const ElasticPose& pos
     const double rk = rise(s_r[k]);
     if (rk == r) continue;
     ElasticWheelGeometry own;
-    ElasticSearchWorkspace ws;
-    pivotSearch(k, rk, own, ws);
+    pivotSearch(k, rk, own, sloped.further);
     out.newton_iterations += own.newton_iterations;
     const int from = nearest(own, s_r[k]);
     int to = nearest(out, s_r[k]);

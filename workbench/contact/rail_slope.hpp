@@ -41,12 +41,19 @@ struct RailSlope {
   double blend_s = 0.0;         // [1/m]
 };
 
-// The search of `search` at `pose` over its rail with `slope` (see the header comment). `first` and
-// `second` are the two searches' workspaces (kept per wheel and rail, so that each one's
-// certificates and last-pose cache follow its own sequence of poses). out's patches are in the
-// track frame with n_x set; a rail without slope leaves `second` unused.
+// The workspaces of the searches after the first (kept per wheel and rail, so that each one's
+// certificates and last-pose cache follow its own sequence of poses): the search about the
+// deepest patch's rail point, and those about the further patches' own points.
+struct SlopedSearchWorkspace {
+  ElasticSearchWorkspace second;
+  ElasticSearchWorkspace further;
+};
+
+// The search of `search` at `pose` over its rail with `slope` (see the header comment). `first` is
+// the first search's workspace. out's patches are in the track frame with n_x set; a rail without
+// slope leaves `sloped` unused.
 void searchSlopedRail(const ElasticContactSearch& search, const ElasticPose& pose,
                       const RailSlope& slope, ElasticWheelGeometry& out,
-                      ElasticSearchWorkspace& first, ElasticSearchWorkspace& second);
+                      ElasticSearchWorkspace& first, SlopedSearchWorkspace& sloped);
 
 }  // namespace rb::contact

@@ -134,7 +134,7 @@ inline contact::ElasticPose railPose(const contact::SlicedRailSearch::Place& at,
 inline void searchRail(const contact::SlicedRailSearch::Place& at, const vehicle::Vector6d& q,
                        double height, const RailOffset& irr, double sigma,
                        contact::ElasticWheelGeometry& out, contact::ElasticSearchWorkspace& sw,
-                       contact::ElasticSearchWorkspace& sloped, RailOffset& rail) {
+                       contact::SlopedSearchWorkspace& sloped, RailOffset& rail) {
   const contact::ElasticPose pose = railPose(at, q, height, irr, sigma, rail);
   // The slices' slope along the track is in the search's geometry (rail_slope.hpp); the
   // irregularity's is not (its r p^2 / 2 is below a micrometre) and stays in the damping's rail

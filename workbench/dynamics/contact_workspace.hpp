@@ -12,6 +12,7 @@
 #include "workbench/contact/elastic_search.hpp"
 #include "workbench/contact/kec.hpp"
 #include "workbench/contact/lut.hpp"
+#include "workbench/contact/rail_slope.hpp"
 #include "workbench/creep/creepages.hpp"
 #include "workbench/creep/hertz.hpp"
 #include "workbench/dynamics/contact_model.hpp"
@@ -137,7 +138,7 @@ struct ElasticWheelWork {
   std::array<contact::ElasticSearchWorkspace, kMaxExtraRails> extra_search;
   // The second search over a rail that rises or moves sideways along the track (rail_slope.hpp),
   // per rail (0 the running rail).
-  std::array<contact::ElasticSearchWorkspace, 1 + kMaxExtraRails> sloped_search;
+  std::array<contact::SlopedSearchWorkspace, 1 + kMaxExtraRails> sloped_search;
   contact::ElasticWheelGeometry extra_geometry;
   std::array<int, contact::kMaxElasticPatches> patch_rail{};
   std::array<RailOffset, 1 + kMaxExtraRails> rail_offset{};
