@@ -188,14 +188,9 @@ void searchCheckRail(const ElasticContactSearch& rail, const FlangeBack& back,
   out.count = 0;
   out.truncated = false;
   out.newton_iterations = 0;
-  const WheelRailPair& pair = rail.pair();
   const CheckRailLines lines(rail, back, pose);
   const double sigma = lines.sigma();
-  double lo = pair.rail->sMin(), hi = pair.rail->sMax();
-  if (pair.rail_next) {
-    lo = std::max(lo, pair.rail_next->sMin());
-    hi = std::min(hi, pair.rail_next->sMax());
-  }
+  const double lo = rail.railMin(), hi = rail.railMax();
   // The rail's samples from its end nearest the wheel's back (its field side on the left, its
   // mirror on the right), so that the bound prunes the rest early; then a golden-section search
   // between the deepest one's neighbours: where the head's side falls steeply, one sample step is

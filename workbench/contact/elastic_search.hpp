@@ -239,6 +239,10 @@ class ElasticContactSearch {
   // The rail profile at u: WheelRailPair::rail, blended with rail_next by `blend` (ignored without
   // rail_next), exactly the rail where the two slices are the same profile.
   profiles::ProfilePoint railAt(double u, double blend) const;
+  // The rail profile parameters the search covers: the rail's, or the part that both slices of a
+  // blended rail cover.
+  double railMin() const { return rail_smin_; }
+  double railMax() const { return rail_smax_; }
 
   // Every penetrating local minimum of the wheel-rail gap at this pose (see header comment).
   // `seed` (optional): patches of an earlier search whose (s_w, s_r) are tried as extra starting
