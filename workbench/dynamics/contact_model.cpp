@@ -459,10 +459,8 @@ void checkRailClearances(const ProfilesSpec& p, const ContactModel& m,
       for (std::size_t k = 0; k < spec.slices.size(); ++k) {
         const contact::SlicedRailSearch::Place at = e.extra[side][r]->at(spec.slices[k].s);
         if (at.search == nullptr) continue;
-        const double sigma = contact::kSideSign[side];
-        const contact::ElasticPose centred{-sigma * at.dy, m.centred_z - at.dz, m.centred_phi, 0.0};
         contact::ElasticWheelGeometry g;
-        contact::searchCheckRail(*at.search, e.flange_back[side], centred, g);
+        contact::searchCheckRail(*at.search, e.flange_back[side], m.centredPoseOver(at, side), g);
         if (g.min_gap > 0.0) continue;
         d.add(spec.slices[k].loc,
               "profiles.extra_rails." + std::string(side == 0 ? "left" : "right") + "[" +

@@ -156,6 +156,15 @@ struct ContactModel {
   const ContactModel& forWheelset(std::size_t w) const {
     return w < own_wheels.size() && own_wheels[w] ? *own_wheels[w] : *this;
   }
+  // The centred wheelset (centred_z, centred_phi, no yaw, no irregularity) over the rail of side
+  // `side` at `at`: its pose relative to that rail's displaced profile origin, with its blend.
+  contact::ElasticPose centredPoseOver(const contact::SlicedRailSearch::Place& at,
+                                       std::size_t side) const {
+    contact::ElasticPose pose{-contact::kSideSign[side] * at.dy, centred_z - at.dz, centred_phi,
+                              0.0};
+    pose.blend = at.blend;
+    return pose;
+  }
 
   // Build statistics of the table in use (time, bytes, warnings, notes).
   const contact::TableBuildStats& tableStats() const;

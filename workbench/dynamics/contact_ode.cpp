@@ -38,10 +38,9 @@ void lowerOntoSlices(const ContactModel& c, double s, double& dz, double& dphi) 
       if (!e.sliced[side]) continue;
       const contact::SlicedRailSearch::Place at = e.sliced[side]->at(s);
       if (at.search == nullptr) continue;
-      const double sigma = contact::kSideSign[side];
-      contact::ElasticPose pose{-sigma * at.dy, c.centred_z + dz - at.dz, c.centred_phi + dphi,
-                                0.0};
-      pose.blend = at.blend;
+      contact::ElasticPose pose = c.centredPoseOver(at, side);
+      pose.z += dz;
+      pose.phi += dphi;
       contact::ElasticWheelGeometry g;
       contact::ElasticSearchWorkspace ws;
       at.search->search(pose, g, ws);
