@@ -270,17 +270,20 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
         num("lr", "m", 0, "explicit Lr, 0 = from gauge (paper Table 1: 0.7555)",
             dynamics::kLrRange),
         boolean("refined_tables", false, "use the refined LUT/KEC grids of paper Tables 9-10"),
-        typed("rail_slices", ValueType::Table, "-",
-              "a rail that changes along the track (elastic contact only): { left = { { s = 0, "
-              "rail = \"60e1\" }, { s = 12, rail = \"blade.txt\" }, ... }, right = { ... } }, "
-              "profile slices at strictly increasing track arc lengths s [m], each drawn as a "
-              "left rail like rail, blended linearly between slices at fixed lateral "
-              "coordinate; before the first and after the last slice the rail is that slice "
-              "(docs/sliced_rails.md); a slice may move its rail by dy (toward the field side) and "
-              "dz (up) [m], interpolated between slices; or, per side, a CONTACT slices-file { "
-              "slcs = "
-              "\"file.slcs\", s = <m> (track position of its u = 0), units = \"mm\" | \"m\", "
-              "z = \"down\" | \"up\" (its plain-text slices; default CONTACT's mm, z down) }"),
+        typed(
+            "rail_slices", ValueType::Table, "-",
+            "a rail that changes along the track (elastic contact only): { left = { { s = 0, "
+            "rail = \"60e1\" }, { s = 12, rail = \"blade.txt\" }, ... }, right = { ... } }, "
+            "profile slices at strictly increasing track arc lengths s [m], each drawn as a "
+            "left rail like rail, blended linearly between slices at fixed lateral "
+            "coordinate; before the first and after the last slice the rail is that slice "
+            "(docs/sliced_rails.md); a slice may move its rail by dy (toward the field side) and "
+            "dz (up) [m], interpolated between slices; or, per side, a CONTACT slices-file { "
+            "slcs = "
+            "\"file.slcs\", s = <m> (track position of its u = 0), units = \"mm\" | \"m\", "
+            "z = \"down\" | \"up\" (its plain-text slices; default CONTACT's mm, z down) }; either "
+            "form takes max_slope (1-100, default 10: each slice keeps its longest run of points "
+            "no steeper; 40 keeps a wing rail, flangeway and nose in one slice)"),
         typed("extra_rails", ValueType::Table, "-",
               "further rails per side (elastic contact only), each with its own slices and "
               "present from its first slice to its last: { right = { { name = \"nose\", slices "
