@@ -23,9 +23,11 @@
 // rail profile origin and finds the deepest patch; the second pivots at that patch's rail point
 // (carried back to X = 0 along t), where the projection is exact, and adds the slope of a blended
 // rail there: its surface at fixed profile parameter u rises by blend_s (h_next - h)(u) along the
-// rail frame's vertical per unit s (sliced_rail.hpp). The second search is the result. A rail
-// without slope (a prismatic rail, identical slices, no offsets' slope) is one plain search, bit
-// for bit.
+// rail frame's vertical per unit s (sliced_rail.hpp). The second search is the result, except
+// for a further patch of the first search whose rail rises otherwise (two heads in one blended
+// slice): it is searched again about its own rail point with its own slope, and that search's
+// patch nearest to it takes its place. A rail without slope (a prismatic rail, identical slices,
+// no offsets' slope) is one plain search, bit for bit.
 //
 // Not included: the irregularity's slope (below 1e-2; its r p^2 / 2 is below 0.05 mm at 1e-2 and
 // 0.2 um at the 1e-3 of measured track), which the dynamics keep in the normal damping.
