@@ -111,20 +111,53 @@ TEST(Kalker, MonotoneBetweenTablePoints) {
   }
 }
 
-TEST(Kalker, ClampedOutsideTable) {
+TEST(Kalker, OutsideTheTable) {
   EXPECT_TRUE(rb::creep::kalkerInTable(2.0, 0.28));
   EXPECT_FALSE(rb::creep::kalkerInTable(20.0, 0.28));
   EXPECT_FALSE(rb::creep::kalkerInTable(0.05, 0.28));
   EXPECT_FALSE(rb::creep::kalkerInTable(1.0, 0.6));
-  const auto at10 = kalkerCoefficients(10.0, 0.28);
-  const auto at20 = kalkerCoefficients(20.0, 0.28);
-  EXPECT_EQ(at10.c11, at20.c11);
-  EXPECT_EQ(at10.c23, at20.c23);
-  EXPECT_EQ(kalkerCoefficients(0.01, 0.28).c22, kalkerCoefficients(0.1, 0.28).c22);
+  // Poisson's ratio is clamped to the table's columns.
   EXPECT_EQ(kalkerCoefficients(1.0, 0.7).c11, kalkerCoefficients(1.0, 0.5).c11);
   EXPECT_EQ(kalkerCoefficients(1.0, -0.1).c11, kalkerCoefficients(1.0, 0.0).c11);
   EXPECT_THROW(kalkerCoefficients(0.0, 0.28), std::logic_error);
   EXPECT_THROW(kalkerCoefficients(std::nan(""), 0.28), std::logic_error);
+}
+
+// Beyond a/b = 10 (flange patches, a/b 15-25) and below 0.1 the coefficients follow Kalker's
+// asymptotes instead of the last row: continuous at the table's edge, growing like the asymptote
+// (C11, C22 ~ 1/(g ln(1/g)), C23 ~ g^-1.5 / ln(1/g) for g = b/a -> 0), and equal to it in the limit.
+TEST(Kalker, AsymptotesBeyondTheTable) {
+  for (double nu : {0.0, 0.25, 0.28, 0.5}) {
+    for (double edge : {10.0, 0.1}) {
+      SCOPED_TRACE("nu = " + std::to_string(nu) + ", edge a/b = " + std::to_string(edge));
+      const double out = edge > 1.0 ? 1.0 + 1e-9 : 1.0 - 1e-9;  // just outside the table
+      const KalkerCoefficients in = kalkerCoefficients(edge, nu);
+      const KalkerCoefficients just = kalkerCoefficients(edge * out, nu);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(get(just, k), get(in, k), 1e-6 * get(in, k));
+      EXPECT_EQ(just.c33, in.c33);  // C33 (UNVERIFIED) keeps the last row
+      // The asymptote itself is within 7 % of the table at its last row (CONTACT's linrol
+      // switches between them there).
+      const KalkerCoefficients asym = rb::creep::kalkerAsymptote(edge, nu);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(get(asym, k) / get(in, k), 1.0, 0.07);
+      // In the limit the coefficients are the asymptote's.
+      const double far = edge > 1.0 ? 1e4 : 1e-4;
+      const KalkerCoefficients lim = kalkerCoefficients(far, nu);
+      const KalkerCoefficients lim_asym = rb::creep::kalkerAsymptote(far, nu);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(get(lim, k) / get(lim_asym, k), 1.0, 1e-3);
+    }
+    // Flange patches: the coefficients grow past the table, C23 fastest.
+    const KalkerCoefficients at10 = kalkerCoefficients(10.0, nu);
+    const KalkerCoefficients at20 = kalkerCoefficients(20.0, nu);
+    EXPECT_GT(at20.c11, 1.3 * at10.c11);
+    EXPECT_GT(at20.c22, 1.3 * at10.c22);
+    EXPECT_GT(at20.c23, 2.0 * at10.c23);
+    double prev = 0.0;
+    for (double ab = 10.0; ab <= 40.0; ab += 0.5) {  // monotone across the edge
+      const double c23 = kalkerCoefficients(ab, nu).c23;
+      EXPECT_GT(c23, prev);
+      prev = c23;
+    }
+  }
 }
 
 }  // namespace

@@ -168,10 +168,27 @@ TEST(Polach, SpinCorrectionCondition) {
   const double es = 8.0 / 3.0 * cp.G * p.b * std::sqrt(p.a * p.b) * p.c23 * sy / (qmu * km);
   const double fys = 3.0 / 8.0 * p.a * qmu * km * es / ((1 + es * es) * (1 + es * es)) * phi / sy;
   EXPECT_NEAR(opp.fy - none.fy, -fys, 1e-9 * std::fabs(fys));
-  // Near saturation a same-sign spin LOWERS |F_y| in Polach's method: s_C grows, so F s_y / s_C
-  // shrinks, while F_yS fades out at large eps_s.
-  const CreepForce same = polachForce(cp, p, {0.0, sy, 0.5, 20.0});
-  EXPECT_GT(same.fy, none.fy);
+}
+
+// A patch that the creepage alone makes slide carries mu Q along (s_x, s_y) whatever the spin, as
+// in Kalker's exact theory (test_creep_exact.cpp): Polach's divisor s_C gave s / s_C of it, here
+// as little as 0.76 on a flank patch with spin of the sign of s_y (polach.hpp, "Saturation").
+TEST(Polach, SlidingPatchWithSpinCarriesMuQ) {
+  const CreepParams cp = params();
+  const ContactPatch tread = treadPatch();
+  const ContactPatch flank = patches()[3];
+  for (const ContactPatch& p : {tread, flank}) {
+    const double muq = cp.mu * p.Q;
+    for (double phi : {0.5, 2.0, -0.5, -2.0}) {
+      const double sx = 0.02, sy = 0.04;
+      const CreepForce f = polachForce(cp, p, {sx, sy, phi, 20.0});
+      SCOPED_TRACE("a/b = " + std::to_string(p.a / p.b) + ", phi = " + std::to_string(phi));
+      EXPECT_NEAR(std::hypot(f.fx, f.fy) / muq, 1.0, 0.01);
+      // Along -(s_x, s_y) within 3 degrees.
+      const double angle = std::atan2(f.fy, f.fx) - std::atan2(-sy, -sx);
+      EXPECT_LT(std::abs(angle), 3.0 * std::numbers::pi / 180.0);
+    }
+  }
 }
 
 TEST(Polach, SaturationForLargeCreepage) {

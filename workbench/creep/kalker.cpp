@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "workbench/core/error.hpp"
@@ -63,24 +64,14 @@ constexpr double kAgreaterB[10][12] = {
 
 constexpr double kNuStep = 0.25;  // nu columns 0, 0.25, 0.5
 
-}  // namespace
-
-bool kalkerInTable(double a_over_b, double nu) {
-  return a_over_b >= 0.1 && a_over_b <= 10.0 && nu >= 0.0 && nu <= 0.5;
-}
-
-KalkerCoefficients kalkerCoefficients(double a_over_b, double nu) {
-  RB_CHECK(a_over_b > 0.0 && std::isfinite(a_over_b),
-           "Kalker coefficients need a/b > 0, got " + std::to_string(a_over_b));
-  const bool a_less_b = a_over_b <= 1.0;
-  const auto& table = a_less_b ? kAlessB : kAgreaterB;
-  const double g = std::clamp(a_less_b ? a_over_b : 1.0 / a_over_b, 0.1, 1.0);
+// Linear interpolation in the table half at g in [0.1, 1] and nu in [0, 0.5].
+KalkerCoefficients tableCoefficients(const double (&table)[10][12], double g, double nu) {
   // Row interval on the grid g_i = 0.1 (i + 1), i = 0..9.
   const double tg = g * 10.0 - 1.0;  // in [0, 9]
   const int i = std::min(static_cast<int>(tg), 8);
   const double wg = tg - static_cast<double>(i);
   // Column interval in nu.
-  const double tn = std::clamp(nu, 0.0, 0.5) / kNuStep;  // in [0, 2]
+  const double tn = nu / kNuStep;  // in [0, 2]
   const int j = std::min(static_cast<int>(tn), 1);
   const double wn = tn - static_cast<double>(j);
   double c[4];
@@ -92,6 +83,59 @@ KalkerCoefficients kalkerCoefficients(double a_over_b, double nu) {
     c[k] = v0 + wg * (v1 - v0);
   }
   return {c[0], c[1], c[2], c[3]};
+}
+
+}  // namespace
+
+KalkerCoefficients kalkerAsymptote(double a_over_b, double nu) {
+  RB_CHECK(a_over_b > 0.0 && std::isfinite(a_over_b) && nu >= 0.0 && nu < 1.0,
+           "Kalker asymptotes need a/b > 0 and 0 <= nu < 1");
+  constexpr double kPi = std::numbers::pi;
+  KalkerCoefficients c;
+  if (a_over_b <= 1.0) {
+    // Narrow ellipse across the rolling direction (g = a/b -> 0).
+    const double g = a_over_b;
+    c.c11 = kPi * kPi / (4.0 * (1.0 - nu));
+    c.c22 = kPi * kPi / 4.0;
+    c.c23 = kPi * std::sqrt(g) / (3.0 * (1.0 - nu)) * (1.0 + nu * (std::log(16.0 / g) - 5.0));
+  } else {
+    // Long ellipse along the rolling direction (g = b/a -> 0), the flange's patches.
+    const double g = 1.0 / a_over_b;
+    const double L = std::log(16.0 / (g * g));
+    const double k = 3.0 - std::log(4.0);
+    const double l2 = (1.0 - nu) * L + 2.0 * nu;
+    c.c11 = 2.0 * kPi / ((L - 2.0 * nu) * g) * (1.0 + k / (L - 2.0 * nu));
+    c.c22 = 2.0 * kPi / g * (1.0 + (1.0 - nu) * k / l2) / l2;
+    c.c23 = 2.0 * kPi / (3.0 * std::pow(g, 1.5) * ((1.0 - nu) * L - 2.0 + 4.0 * nu));
+  }
+  return c;
+}
+
+bool kalkerInTable(double a_over_b, double nu) {
+  return a_over_b >= 0.1 && a_over_b <= 10.0 && nu >= 0.0 && nu <= 0.5;
+}
+
+KalkerCoefficients kalkerCoefficients(double a_over_b, double nu) {
+  RB_CHECK(a_over_b > 0.0 && std::isfinite(a_over_b),
+           "Kalker coefficients need a/b > 0, got " + std::to_string(a_over_b));
+  const bool a_less_b = a_over_b <= 1.0;
+  const auto& table = a_less_b ? kAlessB : kAgreaterB;
+  const double g = a_less_b ? a_over_b : 1.0 / a_over_b;
+  const double nuc = std::clamp(nu, 0.0, 0.5);
+  constexpr double kEdge = 0.1;  // the table's last row
+  KalkerCoefficients c = tableCoefficients(table, std::max(g, kEdge), nuc);
+  if (g >= kEdge) return c;
+  // Beyond the table: Kalker's asymptotes, scaled to meet the table at its last row (they differ
+  // there by up to 7 %, which the scale takes away linearly as g -> 0 where the asymptote is
+  // exact). C33 (UNVERIFIED, spin moment only) has no asymptote here and keeps the last row.
+  const double edge_ratio = a_less_b ? kEdge : 1.0 / kEdge;
+  const KalkerCoefficients at_edge = kalkerAsymptote(edge_ratio, nuc);
+  const KalkerCoefficients asym = kalkerAsymptote(a_over_b, nuc);
+  const double w = g / kEdge;  // 1 at the last row, 0 in the limit
+  c.c11 = asym.c11 * (1.0 + w * (c.c11 / at_edge.c11 - 1.0));
+  c.c22 = asym.c22 * (1.0 + w * (c.c22 / at_edge.c22 - 1.0));
+  c.c23 = asym.c23 * (1.0 + w * (c.c23 / at_edge.c23 - 1.0));
+  return c;
 }
 
 }  // namespace rb::creep

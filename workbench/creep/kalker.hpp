@@ -20,10 +20,11 @@
 // Interpolation: linear in g inside the half (as CONTACT's linrol) and linear in nu between the
 // columns nu = 0, 0.25, 0.5. (CONTACT interpolates 1/C quadratically in nu; at nu = 0.28 the two
 // differ by up to 1.7 % over the table, the largest for C23 at a/b = 0.1.)
-// Outside the table the inputs are CLAMPED: g < 0.1 (a/b < 0.1 or a/b > 10) uses the g = 0.1 row
-// and nu is clamped to [0, 0.5]. Clamping underestimates the coefficients of very elongated
-// ellipses (for a/b > 10 they grow roughly like 1/g, see the asymptotes in the table file): flange
-// contacts reach a/b ~ 15-20 (docs/creep.md).
+// Beyond the table (g < 0.1: a/b < 0.1 or a/b > 10; flange patches reach a/b ~ 15-25) C11, C22
+// and C23 come from Kalker's asymptotes for g -> 0 (kalkerAsymptote, the expressions of CONTACT's
+// linrol and of the table file), scaled so that they meet the table's last row (they differ there
+// by up to 7 %) with a scale that goes linearly to 1 as g -> 0: continuous in a/b, and exact in the
+// limit. C33 (UNVERIFIED) keeps the last row's value. nu is clamped to [0, 0.5].
 //
 // Allocation-free (the table is a constexpr array), ~10 ns.
 
@@ -40,7 +41,11 @@ struct KalkerCoefficients {
 // finite (always-on check).
 KalkerCoefficients kalkerCoefficients(double a_over_b, double nu);
 
-// True when (a_over_b, nu) lies inside the table (no clamping).
+// Kalker's asymptotic C11, C22, C23 of a very elongated ellipse (exact as g = min(a/b, b/a) -> 0;
+// c33 is left 0): a/b <= 1 uses the g = a/b branch, a/b > 1 the g = b/a branch. 0 <= nu < 1.
+KalkerCoefficients kalkerAsymptote(double a_over_b, double nu);
+
+// True when (a_over_b, nu) lies inside the table (no asymptote, no clamping).
 bool kalkerInTable(double a_over_b, double nu);
 
 }  // namespace rb::creep

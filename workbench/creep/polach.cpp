@@ -120,8 +120,18 @@ CreepForce polachForce(const CreepParams& p, const ContactPatch& patch, const Cr
   if (sn > 0.0) C = norm2(patch.c11 * (s.sx / sn), patch.c22 * (s.sy / sn));
   const double eps = kPi * p.G * a * b * C * sc / (4.0 * qmu);
   const double F = (2.0 * qmu / kPi) * (ratio(p.k_A * eps) + std::atan(p.k_S * eps));  // <= mu Q
-  double fx = -F * (s.sx / sc);
-  double fy = -F * (s.sy / sc);
+  // The creep part's direction is (s_x, s_y); its divisor goes from Polach's s_C while the patch
+  // adheres (the linear theory, with the spin in F_yS) to s = |(s_x, s_y)| as the creepage alone
+  // saturates the patch, so that full sliding carries F -> mu Q along (s_x, s_y) as in Kalker's
+  // exact theory (polach.hpp, "Saturation").
+  double divisor = sc;
+  if (sn < sc) {
+    const double eps_own = p.k_S * eps * (sn / sc);
+    const double adhesion = eps_own < 1e150 ? 1.0 / (1.0 + eps_own * eps_own) : 0.0;
+    divisor = sn + adhesion * (sc - sn);
+  }
+  double fx = -F * (s.sx / divisor);
+  double fy = -F * (s.sy / divisor);
 
   // Spin part.
   if (s.phi != 0.0) {

@@ -25,13 +25,16 @@ namespace rb::dynamics {
 enum class CreepModel { Polach, Kalker, Fastsim, ShenHedrickElkins, None };
 
 // Each law: kModel, kName, kHelp, kCreep (false: no tangential forces, the creep stages are not
-// compiled) and apply(model, patch, creepages, fx, fy, mz), forces and spin moment on the wheel
+// compiled), kSaturates (its resultant reaches mu N on a sliding patch as Kalker's exact theory's
+// does, tread to flank and with spin: tests/creep/test_creep_exact.cpp; false: check and run warn)
+// and apply(model, patch, creepages, fx, fy, mz), forces and spin moment on the wheel
 // (creep/creepages.hpp conventions). `model` is the ContactModel (its creep_params, fastsim).
 struct PolachLaw {
   static constexpr CreepModel kModel = CreepModel::Polach;
   static constexpr std::string_view kName = "polach";
   static constexpr std::string_view kHelp = "Polach's creep force law (the paper, section 2.5)";
   static constexpr bool kCreep = true;
+  static constexpr bool kSaturates = true;
   template <class Model>
   static void apply(const Model& m, const creep::ContactPatch& p, const creep::Creepages& c,
                     double& fx, double& fy, double& mz) {
@@ -45,8 +48,10 @@ struct PolachLaw {
 struct KalkerLaw {
   static constexpr CreepModel kModel = CreepModel::Kalker;
   static constexpr std::string_view kName = "kalker";
-  static constexpr std::string_view kHelp = "Kalker's linear theory";
+  static constexpr std::string_view kHelp =
+      "Kalker's linear theory (unbounded: exceeds mu N past the saturation creepage)";
   static constexpr bool kCreep = true;
+  static constexpr bool kSaturates = false;  // linear: unbounded
   template <class Model>
   static void apply(const Model& m, const creep::ContactPatch& p, const creep::Creepages& c,
                     double& fx, double& fy, double& mz) {
@@ -63,6 +68,7 @@ struct FastsimLaw {
   static constexpr std::string_view kHelp =
       "Kalker's FASTSIM (simplified theory, with spin moment; grid in contact.fastsim)";
   static constexpr bool kCreep = true;
+  static constexpr bool kSaturates = true;
   template <class Model>
   static void apply(const Model& m, const creep::ContactPatch& p, const creep::Creepages& c,
                     double& fx, double& fy, double& mz) {
@@ -80,6 +86,7 @@ struct ShenHedrickElkinsLaw {
       "Shen, Hedrick and Elkins (1983): Kalker's linear forces saturated by Johnson and "
       "Vermeulen's cubic";
   static constexpr bool kCreep = true;
+  static constexpr bool kSaturates = true;
   template <class Model>
   static void apply(const Model& m, const creep::ContactPatch& p, const creep::Creepages& c,
                     double& fx, double& fy, double& mz) {
@@ -95,6 +102,7 @@ struct NoCreep {
   static constexpr std::string_view kName = "none";
   static constexpr std::string_view kHelp = "no tangential forces";
   static constexpr bool kCreep = false;
+  static constexpr bool kSaturates = true;
   template <class Model>
   static void apply(const Model& /*m*/, const creep::ContactPatch& /*p*/,
                     const creep::Creepages& /*c*/, double& fx, double& fy, double& mz) {
@@ -122,5 +130,15 @@ constexpr bool distinctCreepModels(LawList<Laws...>) {
   return true;
 }
 static_assert(distinctCreepModels(CreepLaws{}), "two creep laws share a CreepModel value");
+
+template <class... Laws>
+constexpr bool creepLawSaturates(CreepModel model, LawList<Laws...>) {
+  return ((Laws::kModel == model && Laws::kSaturates) || ...);
+}
+
+// Whether the law's resultant saturates at mu N (kSaturates above).
+constexpr bool creepLawSaturates(CreepModel model) {
+  return creepLawSaturates(model, CreepLaws{});
+}
 
 }  // namespace rb::dynamics

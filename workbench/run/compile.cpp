@@ -8,6 +8,7 @@
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/contact_methods.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
+#include "workbench/dynamics/names.hpp"
 #include "workbench/integrators/registry.hpp"
 #include "workbench/run/vehicle_run.hpp"
 #include "workbench/track/psd.hpp"
@@ -440,6 +441,17 @@ void collectWarnings(Model& c) {
     // Printed by check and run, and recorded in the result's /stats/warnings.
     for (const auto& w : c.lead().contact->gauge_warnings) {
       c.warnings.push_back(irr.loc.str() + ": warning: " + w);
+      c.run_warnings.push_back(w);
+    }
+    // A law that does not saturate at mu N overstates every sliding patch (flange contact,
+    // curves, traction): its Y/Q and sum Y are not a safety answer (docs/creep.md).
+    if (!dynamics::creepLawSaturates(spec.contact.creep)) {
+      const std::string w = "contact.creep = '" +
+                            std::string(nameOf(spec.contact.creep)) +
+                            "' does not saturate at mu N: forces on sliding patches (flange, "
+                            "tight curves, traction) exceed the friction limit; use it for the "
+                            "linear range only";
+      c.warnings.push_back(spec.contact.loc.str() + ": warning: " + w);
       c.run_warnings.push_back(w);
     }
   }
