@@ -254,4 +254,18 @@ TEST(CreepExact, FlangePatchesWithSpin) {
   EXPECT_EQ(n, 11);
 }
 
+// CONTACT's spin example (tests/data/creep/contact_fastsim_example.txt: a = 8 mm, b = 4 mm,
+// FN = 82 kN, mu = 0.3, s_y = 6.25e-4 and phi = -0.625 1/m in our frame, phi a / s_y = 8, in the
+// transition): the exact theory's F_y = 1.494e4 N (0.607 mu N). Polach gives 0.590 mu N (-2.8 %;
+// with Polach's own divisor s_C and unweighted F_yS it gave 0.648, +6.6 %).
+TEST(CreepExact, SpinExampleInTheTransition) {
+  const ContactPatch c = rb::test::ellipse(8e-3, 4e-3, 8.2e4);
+  const auto f = rb::creep::polachForce(params(), c, {0.0, 6.25e-4, -0.625, 2.0});
+  const double exact = 1.494e4;
+  std::printf("Polach on CONTACT's spin example: F_y %.4f mu N against %.4f exact (%+.1f %%)\n",
+              f.fy / (kMu * c.Q), exact / (kMu * c.Q), 100.0 * (f.fy - exact) / exact);
+  EXPECT_NEAR(f.fy / exact, 1.0, 0.05);
+  EXPECT_NEAR(f.fx, 0.0, 1e-9 * exact);
+}
+
 }  // namespace

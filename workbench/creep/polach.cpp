@@ -125,9 +125,10 @@ CreepForce polachForce(const CreepParams& p, const ContactPatch& patch, const Cr
   // saturates the patch, so that full sliding carries F -> mu Q along (s_x, s_y) as in Kalker's
   // exact theory (polach.hpp, "Saturation").
   double divisor = sc;
+  double adhesion = 1.0;  // 1 while the creepage alone leaves the patch adhering, -> 0 sliding
   if (sn < sc) {
     const double eps_own = p.k_S * eps * (sn / sc);
-    const double adhesion = eps_own < 1e150 ? 1.0 / (1.0 + eps_own * eps_own) : 0.0;
+    adhesion = eps_own < 1e150 ? 1.0 / (1.0 + eps_own * eps_own) : 0.0;
     divisor = sn + adhesion * (sc - sn);
   }
   double fx = -F * (s.sx / divisor);
@@ -140,8 +141,10 @@ CreepForce polachForce(const CreepParams& p, const ContactPatch& patch, const Cr
         (8.0 / 3.0) * p.G * b * std::sqrt(a * b) * patch.c23 * std::fabs(syc) / (qmu * km);
     // eps_s / (1 + eps_s^2)^2, written to stay finite for any eps_s >= 0.
     const double shape = eps_s < 1e150 ? ratio(eps_s) / (1.0 + eps_s * eps_s) : 0.0;
+    // The spin's own share fades with the same weight: over a patch that the creepage makes
+    // slide, the spin's slip (-phi y, phi x) averages out (polach.hpp, "Saturation").
     const double fys = 0.375 * a * qmu * km * shape * (s.phi / sc);  // phi/sc <= 2/a
-    fy -= fys;
+    fy -= adhesion * fys;
   }
 
   // Cap the resultant at mu Q (only active at absurd creepages, see the header).
