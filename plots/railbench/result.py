@@ -249,11 +249,11 @@ class Result:
     def read_group(self, group: str) -> Dict[str, np.ndarray]:
         """All 1-D datasets directly under `group` (lazy reader for figures added later)."""
         import h5py
-        with h5py.File(self.path, "r") as f:
+        with open_h5(self.path, ResultFileError, "result file") as f:
             if group not in f:
                 raise ResultFileError(f"missing group {group}")
             g = f[group]
-            return {k: np.asarray(v[()], dtype=float) for k, v in g.items()
+            return {k: _read_ds(g, k, group) for k, v in g.items()
                     if isinstance(v, h5py.Dataset)}
 
 
@@ -292,7 +292,7 @@ def _read_series(group, where: str, schema: Schema) -> Dict[str, np.ndarray]:
     for k, d in group.items():
         if not isinstance(d, h5py.Dataset) or d.dtype.kind not in "fiub" or d.ndim > 1:
             continue
-        out[k] = _read_ds(group, k, where, schema.units.get(f"{where}/{k}"))
+        out[k] = _read_ds(group, k, where, schema.units.get(f"{where}/{k}"), finite=True)
     return out
 
 
@@ -303,7 +303,7 @@ def _load_dynamics(root, res: Result) -> None:
     ragged: List[str] = []
     n_t = None
     if "time" in root and isinstance(root["time"], h5py.Dataset):
-        res.time = _read_ds(root, "time", "", res.schema.units.get("/time"))
+        res.time = _read_ds(root, "time", "", res.schema.units.get("/time"), finite=True)
         n_t = res.time.size
     if "stats" in root:
         res.stats = _attrs(root["stats"])
