@@ -23,7 +23,7 @@ from typing import Dict, List, Optional, Tuple
 
 import numpy as np
 
-from .h5 import ResultFileError, _attrs, check_declared_size, open_h5
+from .h5 import ResultFileError, _attrs, _str, check_declared_size, open_h5
 from .layout import _bottom_legend, _num, _pair, _run_info, _set_distance_range
 from .style import A4_WIDTH_IN, FAIL_COLOR, RUN_COLORS, plt, report_style
 from .track_figs import _segment_legend_handles, _shade_segments
@@ -117,13 +117,19 @@ def _group_items(g):
                   key=lambda kv: _natural(kv[0]))
 
 
+def _ok_run(f) -> bool:
+    stats = f.get("stats")
+    return stats is not None and _str(stats.attrs.get("status", "")) == "ok"
+
+
 def _series(v) -> np.ndarray:
-    """A dataset of /assessment as float, its declared size checked against the file's and every
-    sample finite (ResultFileError naming its path otherwise): a NaN would be drawn as a gap in
-    a quantity that the figure presents as assessed."""
+    """A dataset of /assessment as float, its declared size checked against the file's, and in
+    the result of a run that finished ok every sample finite (ResultFileError naming its path
+    otherwise: such a run never writes a NaN, and one would be drawn as a gap in a quantity that
+    the figure presents as assessed)."""
     check_declared_size(v, v.name)
     a = np.asarray(v[()], dtype=float).reshape(-1)
-    if not np.all(np.isfinite(a)):
+    if not np.all(np.isfinite(a)) and _ok_run(v.file):
         k = int(np.flatnonzero(~np.isfinite(a))[0])
         raise ResultFileError(f"{v.file.filename}: {v.name} holds {a[k]} at sample {k} of "
                               f"{a.size}; a signal of a result must be finite")
