@@ -23,7 +23,7 @@ from typing import Dict, List, Optional, Tuple
 
 import numpy as np
 
-from .h5 import _attrs
+from .h5 import ResultFileError, _attrs, _str, check_declared_size, open_h5
 from .layout import _bottom_legend, _num, _pair, _run_info, _set_distance_range
 from .style import A4_WIDTH_IN, FAIL_COLOR, RUN_COLORS, plt, report_style
 from .track_figs import _segment_legend_handles, _shade_segments
@@ -117,13 +117,32 @@ def _group_items(g):
                   key=lambda kv: _natural(kv[0]))
 
 
+def _ok_run(f) -> bool:
+    stats = f.get("stats")
+    return stats is not None and _str(stats.attrs.get("status", "")) == "ok"
+
+
+def _series(v) -> np.ndarray:
+    """A dataset of /assessment as float, its declared size checked against the file's, and in
+    the result of a run that finished ok every sample finite (ResultFileError naming its path
+    otherwise: such a run never writes a NaN, and one would be drawn as a gap in a quantity that
+    the figure presents as assessed)."""
+    check_declared_size(v, v.name)
+    a = np.asarray(v[()], dtype=float).reshape(-1)
+    if not np.all(np.isfinite(a)) and _ok_run(v.file):
+        k = int(np.flatnonzero(~np.isfinite(a))[0])
+        raise ResultFileError(f"{v.file.filename}: {v.name} holds {a[k]} at sample {k} of "
+                              f"{a.size}; a signal of a result must be finite")
+    return a
+
+
 def _quantity(g) -> Quantity:
     import h5py
     data = {}
     for k, v in g.items():
         if isinstance(v, h5py.Dataset):
             try:
-                data[k] = np.asarray(v[()], dtype=float).reshape(-1)
+                data[k] = _series(v)
             except (TypeError, ValueError):
                 continue
     return Quantity(_attrs(g), data)
@@ -133,7 +152,7 @@ def _dataset(g, name: str) -> Optional[np.ndarray]:
     import h5py
     v = g.get(name)
     if isinstance(v, h5py.Dataset):
-        a = np.asarray(v[()], dtype=float).reshape(-1)
+        a = _series(v)
         return a if a.size else None
     return None
 
@@ -186,8 +205,7 @@ def _read(f) -> Optional[Assessment]:
 def read_assessment(path: str, prefix: str = "") -> Optional[Assessment]:
     """/assessment of the result file at `path` (of the vehicle at `prefix`, "/vehicles/<name>",
     in a run of several); None when the file has none."""
-    import h5py
-    with h5py.File(path, "r") as f:
+    with open_h5(path, ResultFileError, "result file") as f:
         return _read(f[prefix] if prefix else f)
 
 

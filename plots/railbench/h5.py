@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import os
+import stat
 import sys
 from typing import Dict, Optional
 
@@ -51,14 +52,46 @@ _UNIT_ALIASES = {
 }
 
 
-def _read_ds(group, name: str, where: str, units: Optional[str] = None) -> np.ndarray:
+# Deflate's largest compression ratio (zlib: 1032:1): a filtered dataset cannot expand to more
+# than this times the bytes its chunks occupy in the file.
+_MAX_INFLATE = 1032
+
+
+def check_declared_size(ds, where: str, error: type = None) -> None:
+    """Raises `error` (ResultFileError) when the dataset declares more data than its file can
+    hold (a forged size; reading it would allocate from the declared size), as the workbench's
+    reader does (workbench/io/result_reader.hpp)."""
+    error = error or ResultFileError
+    try:
+        limit = os.path.getsize(ds.file.filename)
+    except OSError:
+        return
+    file_bytes = limit
+    if ds.id.get_create_plist().get_nfilters() > 0:
+        limit += _MAX_INFLATE * ds.id.get_storage_size()
+    declared = int(ds.size or 0) * max(int(ds.dtype.itemsize), 1)
+    if declared > limit:
+        raise error(f"{ds.file.filename}: {where} declares {ds.size} values of "
+                    f"{ds.dtype.itemsize} bytes ({declared} bytes) in a file of {file_bytes} "
+                    "bytes: more than the file can hold")
+
+
+def _read_ds(group, name: str, where: str, units: Optional[str] = None,
+             finite: bool = False) -> np.ndarray:
+    """The dataset as float; with `finite`, every sample must be finite (a signal of a run's
+    result: one NaN would be drawn as a gap or spread through what is computed from it)."""
     if name not in group:
         raise ResultFileError(f"missing dataset {where}/{name}")
     ds = group[name]
+    check_declared_size(ds, f"{where}/{name}")
     try:
         a = np.asarray(ds[()], dtype=float).reshape(-1)
     except (TypeError, ValueError) as e:
         raise ResultFileError(f"dataset {where}/{name} is not numeric ({e})") from None
+    if finite and not np.all(np.isfinite(a)):
+        k = int(np.flatnonzero(~np.isfinite(a))[0])
+        raise ResultFileError(f"{ds.file.filename}: {where}/{name} holds {a[k]} at sample {k} of "
+                              f"{a.size}; a signal of a result must be finite")
     if units is not None and "units" in ds.attrs:
         got = _str(ds.attrs["units"]).strip()
         if got not in _UNIT_ALIASES.get(units, {units}):
@@ -76,8 +109,42 @@ def open_h5(path: str, error: type, what: str, hint: str = ""):
         raise error(f"no such file: {path}{hint}")
     if os.path.isdir(path):
         raise error(f"is a directory, not a {what}: {path}")
+    # A FIFO would block the open, a device is no result (workbench/io/result_reader.hpp).
+    mode = os.stat(path).st_mode
+    if not stat.S_ISREG(mode):
+        kind = "a FIFO" if stat.S_ISFIFO(mode) else (
+            "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else "not a regular file")
+        raise error(f"{path}: is {kind}, not a {what}")
     try:
-        return h5py.File(path, "r")
+        f = h5py.File(path, "r")
     except OSError as e:
         msg = str(e).splitlines()[0] if str(e) else type(e).__name__
         raise error(f"not a readable HDF5 file: {path} ({msg})") from None
+    leaving = _link_leaving_file(f)
+    if leaving:
+        f.close()
+        raise error(f"{path}: {leaving}; a result file is read only from itself (links to other "
+                    "files are refused, nothing is read through them)")
+    return f
+
+
+def _link_leaving_file(f) -> str:
+    """The first external or user-defined link of the open file, in words ("" when none): a soft
+    link names a path of the same file and stays inside once no external link exists."""
+    import h5py
+
+    found = []
+
+    def visit(name, info):
+        if info.type in (h5py.h5l.TYPE_HARD, h5py.h5l.TYPE_SOFT):
+            return None
+        path = "/" + name.decode("utf-8", "replace")
+        if info.type == h5py.h5l.TYPE_EXTERNAL:
+            link = f.get(path, getlink=True)
+            found.append(f"{path} is an external link to '{link.filename}:{link.path}'")
+        else:
+            found.append(f"{path} is a user-defined link")
+        return True  # stops the visit
+
+    f.id.links.visit(visit, info=True)
+    return found[0] if found else ""

@@ -249,11 +249,11 @@ class Result:
     def read_group(self, group: str) -> Dict[str, np.ndarray]:
         """All 1-D datasets directly under `group` (lazy reader for figures added later)."""
         import h5py
-        with h5py.File(self.path, "r") as f:
+        with open_h5(self.path, ResultFileError, "result file") as f:
             if group not in f:
                 raise ResultFileError(f"missing group {group}")
             g = f[group]
-            return {k: np.asarray(v[()], dtype=float) for k, v in g.items()
+            return {k: _read_ds(g, k, group) for k, v in g.items()
                     if isinstance(v, h5py.Dataset)}
 
 
@@ -284,15 +284,16 @@ def _names_attr(v) -> List[str]:
     return [x.strip() for x in items if x.strip()]
 
 
-def _read_series(group, where: str, schema: Schema) -> Dict[str, np.ndarray]:
+def _read_series(group, where: str, schema: Schema,
+                 finite: bool = False) -> Dict[str, np.ndarray]:
     """All 1-D numeric datasets directly under `group` (others are skipped silently), their
-    units checked against the file's /schema."""
+    units checked against the file's /schema; with `finite`, every sample finite."""
     import h5py
     out = {}
     for k, d in group.items():
         if not isinstance(d, h5py.Dataset) or d.dtype.kind not in "fiub" or d.ndim > 1:
             continue
-        out[k] = _read_ds(group, k, where, schema.units.get(f"{where}/{k}"))
+        out[k] = _read_ds(group, k, where, schema.units.get(f"{where}/{k}"), finite=finite)
     return out
 
 
@@ -302,11 +303,15 @@ def _load_dynamics(root, res: Result) -> None:
     import h5py
     ragged: List[str] = []
     n_t = None
-    if "time" in root and isinstance(root["time"], h5py.Dataset):
-        res.time = _read_ds(root, "time", "", res.schema.units.get("/time"))
-        n_t = res.time.size
     if "stats" in root:
         res.stats = _attrs(root["stats"])
+    # A run that finished ok never writes a NaN (check-result counts one as a problem): one in its
+    # file is forged or damaged. A failed run's last outputs may be NaN where its evaluation
+    # failed, and are drawn as the gap they are.
+    finite = bool(res.stats) and res.stats.get("status") == "ok"
+    if "time" in root and isinstance(root["time"], h5py.Dataset):
+        res.time = _read_ds(root, "time", "", res.schema.units.get("/time"), finite=finite)
+        n_t = res.time.size
     pre = res.prefix
     f = root[pre] if pre else root
 
@@ -326,7 +331,7 @@ def _load_dynamics(root, res: Result) -> None:
         for n in order:
             bg = g[n]
             kind = _str(bg.attrs["kind"]).strip().lower() if "kind" in bg.attrs else _guess_kind(n)
-            data = _read_series(bg, f"{pre}/bodies/{n}", res.schema)
+            data = _read_series(bg, f"{pre}/bodies/{n}", res.schema, finite)
             note_len(f"{pre}/bodies/{n}", data)
             res.bodies[n] = Body(name=n, kind=kind, data=data)
         if res.bodies and not any("s" in b.data for b in res.bodies.values()):
@@ -345,9 +350,9 @@ def _load_dynamics(root, res: Result) -> None:
             for side in ("left", "right"):
                 if side in wg and isinstance(wg[side], h5py.Group):
                     sides[side] = _read_series(wg[side], f"{pre}/contact/{w}/{side}",
-                                               res.schema)
+                                               res.schema, finite)
                     note_len(f"{pre}/contact/{w}/{side}", sides[side])
-            data = _read_series(wg, f"{pre}/contact/{w}", res.schema)
+            data = _read_series(wg, f"{pre}/contact/{w}", res.schema, finite)
             note_len(f"{pre}/contact/{w}", data)
             cws[w] = WheelsetContact(name=w, sides=sides, data=data)
         res.contact = Contact(attrs=_attrs(g), wheelsets=cws)
@@ -355,7 +360,7 @@ def _load_dynamics(root, res: Result) -> None:
     if "elements" in f and isinstance(f["elements"], h5py.Group):
         for k, v in f["elements"].items():
             if isinstance(v, h5py.Group):
-                res.elements[k] = _read_series(v, f"{pre}/elements/{k}", res.schema)
+                res.elements[k] = _read_series(v, f"{pre}/elements/{k}", res.schema, finite)
                 res.element_units[k] = {d: _str(v[d].attrs["units"]).strip()
                                         for d in res.elements[k] if "units" in v[d].attrs}
                 note_len(f"{pre}/elements/{k}", res.elements[k])

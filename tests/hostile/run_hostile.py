@@ -13,6 +13,9 @@ import sys
 import tempfile
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import forge_result  # noqa: E402  (beside this driver)
+
 SANITIZER_MARKS = ("AddressSanitizer", "LeakSanitizer", "UndefinedBehaviorSanitizer",
                    "runtime error:", "ThreadSanitizer")
 DIRECTIVE = re.compile(r"^--\s*hostile:\s*(.*)$")
@@ -21,7 +24,7 @@ DIRECTIVE = re.compile(r"^--\s*hostile:\s*(.*)$")
 def parse_case(path):
     """Directives of one case: dict of lists, from its leading comment lines."""
     d = {"args": [], "exit": [], "expect": [], "reject": [], "timeout": [], "symlink": [],
-         "fifo": [], "env": [], "skip_root": []}
+         "fifo": [], "env": [], "skip_root": [], "forge": [], "unchanged": []}
     for line in path.read_text(errors="replace").splitlines():
         if not line.startswith("--"):
             break
@@ -59,6 +62,14 @@ def run_case(case, binary, root, outside, default_timeout):
                 text = text.replace(k, v)
             return text
 
+        for kind in d["forge"]:
+            forge_result.forge(kind, work)
+        # The files that must be byte for byte the same after the run (a file outside the work
+        # folder that a forged link names).
+        before = {}
+        for spec in d["unchanged"]:
+            target = work / expand(spec)
+            before[spec] = target.read_bytes() if target.exists() else None
         for spec in d["symlink"]:
             link, _, target = expand(spec).partition(":")
             (work / link).parent.mkdir(parents=True, exist_ok=True)
@@ -100,6 +111,10 @@ def run_case(case, binary, root, outside, default_timeout):
         for frag in d["reject"]:
             if expand(frag) in out:
                 fails.append(f"unwanted in output: {expand(frag)!r}")
+        for spec, data in before.items():
+            target = work / expand(spec)
+            if (target.read_bytes() if target.exists() else None) != data:
+                fails.append(f"{spec} changed: the command wrote outside its work folder")
         if fails:
             tail = "\n".join(out.strip().splitlines()[-12:])
             fails.append("command: " + " ".join(shlex.quote(a) for a in args) + "\n" + tail)

@@ -29,18 +29,35 @@ bool hasPatchOutputs(const io::ResultReader& f) {
   return false;
 }
 
+// One parameter the file's assessment applied (an attribute of /assessment), into `value` when
+// present: finite (finiteNumber throws BadResult otherwise) and in the range of its scenario key,
+// as --set requires of the same key; a value out of range is a problem in `errors`.
+void fileParameter(const io::ResultReader& f, const std::string& key, double& value,
+                   std::vector<Diagnostic>& errors) {
+  const auto v = f.finiteNumber("/assessment", key);
+  if (!v) return;
+  const scenario::KeySpec* k = scenario::block("run.assessment").key(key);
+  if (const auto problem = k ? scenario::rangeProblem(*k, *v) : std::nullopt) {
+    errors.push_back(
+        {SourceLoc{f.path(), 0}, "assess: /assessment@" + key + " must be " + *problem});
+    return;
+  }
+  value = *v;
+}
+
 // The parameters the file's assessment applied, and its groups (safety and wear from the outputs
 // when it has none).
-assessment::AssessmentSpec specOfFile(const io::ResultReader& f) {
+assessment::AssessmentSpec specOfFile(const io::ResultReader& f, std::vector<Diagnostic>& errors) {
   assessment::AssessmentSpec s;
   const std::string A = "/assessment";
-  s.alpha = f.number(A, "alpha").value_or(s.alpha);
-  s.flange_angle = f.number(A, "flange_angle").value_or(s.flange_angle);
-  s.mu = f.number(A, "mu").value_or(s.mu);
-  s.yq_limit = f.number(A, "yq_limit").value_or(s.yq_limit);
-  s.instability_frequency = f.number(A, "instability_frequency").value_or(0.0);
-  s.comfort_limit = f.number(A, "comfort_limit").value_or(s.comfort_limit);
-  s.sample_every = f.number(A, "sample_every").value_or(s.sample_every);
+  fileParameter(f, "alpha", s.alpha, errors);
+  fileParameter(f, "flange_angle", s.flange_angle, errors);
+  fileParameter(f, "mu", s.mu, errors);
+  fileParameter(f, "yq_limit", s.yq_limit, errors);
+  s.instability_frequency = 0.0;
+  fileParameter(f, "instability_frequency", s.instability_frequency, errors);
+  fileParameter(f, "comfort_limit", s.comfort_limit, errors);
+  fileParameter(f, "sample_every", s.sample_every, errors);
   if (f.has(A + "/time")) {
     s.safety = f.has(A + "/safety");
     s.stability = f.has(A + "/stability");
@@ -140,12 +157,16 @@ int assessFile(const AssessOptions& o) {
   {
     const io::ResultReader f(o.file);
     if (!f.ok()) throw InputError(kCli, "assess: '" + o.file + "' is not an HDF5 result file");
-    spec = specOfFile(f);
     std::vector<Diagnostic> errors;
+    spec = specOfFile(f, errors);
     for (const auto& s : o.overrides) applyOverride(s, spec, errors);
     if (!errors.empty()) throw InputError(std::move(errors));
     if (!spec.any()) throw InputError(kCli, "assess: " + nothingToAssess(f, o.file));
-    contact_mu = f.number("/contact", "mu").value_or(spec.mu);
+    contact_mu = f.finiteNumber("/contact", "mu").value_or(spec.mu);
+    if (const scenario::KeySpec* k = scenario::block("contact").key("mu"); k && f.has("/contact"))
+      if (const auto problem =
+              f.number("/contact", "mu") ? scenario::rangeProblem(*k, contact_mu) : std::nullopt)
+        throw InputError(SourceLoc{o.file, 0}, "assess: /contact@mu must be " + *problem);
     signals = run::signalsFromFile(f, spec, missing);
     const bool patch = std::any_of(missing.begin(), missing.end(), [](const std::string& m) {
       return m.find("/patch") != std::string::npos;

@@ -7,6 +7,7 @@
 //   failed (their results are complete); 5: a stress outcome differs from its --expect file.
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -18,8 +19,10 @@
 #include "workbench/app/scenario_command.hpp"
 #include "workbench/app/tables.hpp"
 #include "workbench/core/error.hpp"
+#include "workbench/core/strings.hpp"
 #include "workbench/effects/effects.hpp"
 #include "workbench/io/result_file.hpp"
+#include "workbench/io/result_reader.hpp"
 #include "workbench/precision/precision.hpp"
 #include "workbench/scenario/override_check.hpp"
 #include "workbench/scenario/schema.hpp"
@@ -129,8 +132,8 @@ int workbench(int argc, char** argv) {
   checkResult->add_option("file", checkFile, "result file (.h5)")->required();
   checkResult->add_option("--exit-code", checkExit, "the run's exit code: 0 (ok) or 2 (failed)")
       ->check(CLI::IsMember({0, 2}));
-  checkResult->add_option("--t-end", checkEnd, "the run's end time [s] (0: unknown)")
-      ->check(CLI::NonNegativeNumber);
+  // Checked after parsing (finite and >= 0): CLI11's NonNegativeNumber lets NaN through.
+  checkResult->add_option("--t-end", checkEnd, "the run's end time [s] (0: unknown)");
   checkResult
       ->add_option("--bound", checkBounds,
                    "change a plausibility bound: NAME=VALUE, NAME (default) one of " +
@@ -189,6 +192,10 @@ int workbench(int argc, char** argv) {
     }
     if (*assess) return rb::app::assessFile(ao);
     if (*checkResult) {
+      if (!std::isfinite(checkEnd) || checkEnd < 0.0)
+        throw rb::InputError({"<command line>", 0},
+                             "--t-end " + rb::formatNumber(checkEnd) +
+                                 ": the end time must be a finite number >= 0 [s]");
       std::error_code ec;
       if (!fs::is_regular_file(checkFile, ec))
         throw rb::InputError({checkFile, 0}, "no such result file");
@@ -237,6 +244,11 @@ int workbench(int argc, char** argv) {
     return rb::app::runScenario(ro);
   } catch (const rb::InputError& e) {
     printInputError(e);
+    return 1;
+  } catch (const rb::io::BadResult& e) {
+    // A forged or damaged result file (or a track store it names) refused by its reader: bad
+    // input, and nothing was written.
+    std::cerr << "error: " << e.what() << "\n1 problem found; nothing was run.\n";
     return 1;
   } catch (const rb::io::WriteError& e) {
     // An environment problem (disk full, no permission): the run's result could not be written,

@@ -1,6 +1,7 @@
 #include "workbench/io/result_file.hpp"
 
 #include "workbench/io/hdf5_init.hpp"
+#include "workbench/io/result_reader.hpp"
 
 #include <fcntl.h>
 #include <hdf5.h>
@@ -156,6 +157,15 @@ ResultFile::ResultFile(std::string path, UpdateExisting) : path_(std::move(path)
   if (file_ < 0) {
     std::remove(tmp_.c_str());
     throw WriteError("HDF5: cannot open the copy of '" + path_ + "' for writing");
+  }
+  // The copy opened for writing opens any file an external link names for writing too: an
+  // update (remove, create) through such a link would change that other file. Checked on the
+  // copy itself, whatever a reader saw of `path` before.
+  try {
+    detail::requireSelfContained(file_, path_);
+  } catch (...) {
+    discard();
+    throw;
   }
 }
 

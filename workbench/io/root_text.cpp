@@ -3,30 +3,17 @@
 #include <hdf5.h>
 
 #include "workbench/core/files.hpp"
+#include "workbench/io/result_reader.hpp"
 
 namespace rb::io {
 
 std::optional<std::string> readRootText(const std::string& path, const std::string& name) {
   // HDF5 would block opening a FIFO: only regular files are looked at.
   if (!isRegularFile(path)) return std::nullopt;
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (f < 0) return std::nullopt;
-  std::optional<std::string> out;
-  if (H5Aexists(f, name.c_str()) > 0) {
-    hid_t a = H5Aopen(f, name.c_str(), H5P_DEFAULT);
-    if (a >= 0) {
-      hid_t t = H5Aget_type(a);
-      if (t >= 0 && H5Tget_class(t) == H5T_STRING && H5Tis_variable_str(t) == 0) {
-        std::string s(H5Tget_size(t), '\0');
-        if (!s.empty() && H5Aread(a, t, s.data()) >= 0) out = s.substr(0, s.find('\0'));
-      }
-      if (t >= 0) H5Tclose(t);
-      H5Aclose(a);
-    }
-  }
-  H5Fclose(f);
-  return out;
+  // The reader of every result file (result_reader.hpp): one text, never more than it holds.
+  const ResultReader r(path);
+  if (!r.ok()) return std::nullopt;
+  return r.text("/", name);
 }
 
 bool writeRootText(const std::string& path, const std::string& name, const std::string& value) {

@@ -17,10 +17,11 @@ std::string fmt(double v) {
   return s;
 }
 
-// A dataset of n values, or a sentence in `missing`.
+// A dataset of n values, or a sentence in `missing`. Every sample must be finite (samples()
+// throws BadResult naming the path): one NaN would make every quantity computed from it NaN.
 std::vector<double> series(const io::ResultReader& f, const std::string& path, std::size_t n,
                            std::vector<std::string>& missing) {
-  auto d = f.dataset(path);
+  auto d = f.samples(path);
   if (!d) {
     missing.push_back("no dataset " + path);
     return std::vector<double>(n, 0.0);
@@ -66,11 +67,11 @@ void readWheel(const io::ResultReader& f, const std::string& safety_base,
 // The arc length of a body's first output minus the leading body's (0 when the file lacks them):
 // the s_offset of a wheel written before the assessment kept it.
 double offsetOf(const io::ResultReader& f, const std::string& body) {
-  auto own = f.dataset("/bodies/" + body + "/s");
+  auto own = f.samples("/bodies/" + body + "/s");
   if (!own || own->empty()) return 0.0;
   double lead = own->front();
   for (const auto& b : f.members("/bodies")) {
-    auto s = f.dataset("/bodies/" + b + "/s");
+    auto s = f.samples("/bodies/" + b + "/s");
     if (s && !s->empty()) lead = std::max(lead, s->front());
   }
   return own->front() - lead;
@@ -93,13 +94,14 @@ std::vector<assessment::TrackSection> sectionsWritten(const io::ResultReader& f)
     t.zone = parse<assessment::TestZone>(f.text(g, "zone").value_or(""))
                  .value_or(assessment::TestZone::None);
     const double nan = std::nan("");
-    t.from = f.number(g, "from").value_or(-std::numeric_limits<double>::infinity());
-    t.to = f.number(g, "to").value_or(std::numeric_limits<double>::infinity());
-    t.radius = f.number(g, "radius")
+    t.from = f.finiteNumber(g, "from").value_or(-std::numeric_limits<double>::infinity());
+    t.to = f.finiteNumber(g, "to").value_or(std::numeric_limits<double>::infinity());
+    t.radius = f.finiteNumber(g, "radius")
                    .value_or(t.kind == assessment::SectionKind::Tangent
                                  ? std::numeric_limits<double>::infinity()
                                  : nan);
-    t.cant = f.number(g, "cant").value_or(t.kind == assessment::SectionKind::Tangent ? 0.0 : nan);
+    t.cant =
+        f.finiteNumber(g, "cant").value_or(t.kind == assessment::SectionKind::Tangent ? 0.0 : nan);
     out.push_back(std::move(t));
   }
   return out;
@@ -109,15 +111,20 @@ std::vector<assessment::TrackSection> sectionsWritten(const io::ResultReader& f)
 void fromAssessment(const io::ResultReader& f, const assessment::AssessmentSpec& spec,
                     AssessmentSignals& s, std::vector<std::string>& missing) {
   const std::string A = "/assessment";
-  s.time = f.dataset(A + "/time").value_or(std::vector<double>{});
+  s.time = f.samples(A + "/time").value_or(std::vector<double>{});
   const std::size_t n = s.time.size();
   s.distance = series(f, A + "/distance", n, missing);
-  s.dt = f.number(A, "sample_every").value_or(n > 1 ? s.time[1] - s.time[0] : 0.0);
+  s.dt = f.finiteNumber(A, "sample_every").value_or(n > 1 ? s.time[1] - s.time[0] : 0.0);
+  // Every window and filter of the assessment is sized in samples from dt.
+  if (!(s.dt > 0.0))
+    missing.push_back("no sample interval: " + A + "@sample_every and the first step of " + A +
+                      "/time are not > 0");
   if (spec.safety || spec.wear) s.wheels = wheelsOf(f);
   for (auto& w : s.wheels) {
     const std::string wheel = "/" + w.wheelset + "/" + w.side;
-    w.q0 = f.number(A + "/safety" + wheel, "q0").value_or(std::nan(""));
-    w.s_offset = f.number(A + "/safety" + wheel, "s_offset").value_or(offsetOf(f, w.wheelset));
+    w.q0 = f.finiteNumber(A + "/safety" + wheel, "q0").value_or(std::nan(""));
+    w.s_offset =
+        f.finiteNumber(A + "/safety" + wheel, "s_offset").value_or(offsetOf(f, w.wheelset));
     if (spec.safety && !std::isfinite(w.q0)) missing.push_back("no q0 on " + A + "/safety" + wheel);
     readWheel(f, A + "/safety" + wheel, A + "/wear" + wheel, spec, n, w, missing);
   }
@@ -128,8 +135,8 @@ void fromAssessment(const io::ResultReader& f, const assessment::AssessmentSpec&
       BogiePointSignals b;
       b.bogie = bogie;
       b.wheelset = ws;
-      b.bogie_mass = f.number(g, "bogie_mass").value_or(0.0);
-      b.s_offset = f.number(g, "s_offset").value_or(offsetOf(f, ws));
+      b.bogie_mass = f.finiteNumber(g, "bogie_mass").value_or(0.0);
+      b.s_offset = f.finiteNumber(g, "s_offset").value_or(offsetOf(f, ws));
       b.ay = series(f, g + "/acceleration", n, missing);
       s.bogies.push_back(std::move(b));
     }
@@ -143,8 +150,9 @@ void fromAssessment(const io::ResultReader& f, const assessment::AssessmentSpec&
                       "/stability (run with run.assessment.stability = true)");
   for (const auto& p : spec.comfort ? f.members(A + "/comfort") : std::vector<std::string>{}) {
     const std::string g = A + "/comfort/" + p;
-    s.floor.push_back({p, f.number(g, "x_offset").value_or(0.0), series(f, g + "/a_x", n, missing),
-                       series(f, g + "/a_y", n, missing), series(f, g + "/a_z", n, missing)});
+    s.floor.push_back({p, f.finiteNumber(g, "x_offset").value_or(0.0),
+                       series(f, g + "/a_x", n, missing), series(f, g + "/a_y", n, missing),
+                       series(f, g + "/a_z", n, missing)});
   }
   if (spec.comfort && s.floor.empty())
     missing.push_back("comfort: no floor accelerations in " + A +
@@ -156,7 +164,7 @@ std::vector<double> leadingDistance(const io::ResultReader& f, std::size_t n,
                                     std::vector<std::string>& missing) {
   std::vector<double> best;
   for (const auto& b : f.members("/bodies")) {
-    auto s = f.dataset("/bodies/" + b + "/s");
+    auto s = f.samples("/bodies/" + b + "/s");
     if (s && s->size() == n && !s->empty() && (best.empty() || s->front() > best.front()))
       best = std::move(*s);
   }
@@ -167,13 +175,14 @@ std::vector<double> leadingDistance(const io::ResultReader& f, std::size_t n,
 // From the run's outputs (safety and wear only): /time, /contact, /bodies/<leading>/s.
 void fromOutputs(const io::ResultReader& f, const assessment::AssessmentSpec& spec,
                  AssessmentSignals& s, std::vector<std::string>& missing) {
-  s.time = f.dataset("/time").value_or(std::vector<double>{});
+  s.time = f.samples("/time").value_or(std::vector<double>{});
   const std::size_t n = s.time.size();
   if (n < 2) {
     missing.push_back("no /time series");
     return;
   }
   s.dt = s.time[2 < n ? 2 : 1] - s.time[1];
+  if (!(s.dt > 0.0)) missing.push_back("/time does not increase: no output interval");
   if (s.dt > kMaxFileSampleInterval * (1 + 1e-9))
     missing.push_back("the output interval " + fmt(s.dt) + " s is too coarse for the assessment " +
                       "(at most " + fmt(kMaxFileSampleInterval) +

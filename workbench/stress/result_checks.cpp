@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 
 #include "workbench/core/error.hpp"
@@ -39,6 +40,9 @@ double number(const io::ResultReader& f, const char* name) {
 double interpClamped(const std::vector<double>& xs, const std::vector<double>& ys, double x) {
   const std::size_t n = std::min(xs.size(), ys.size());
   if (n == 0) return 0.0;
+  // A NaN position (a forged or diverged file; nonFinite() reports it) is below no sample: the
+  // search below would end past the last one.
+  if (std::isnan(x)) return kNaN;
   if (x <= xs[0]) return ys[0];
   if (x >= xs[n - 1]) return ys[n - 1];
   const auto it = std::upper_bound(xs.begin(), xs.begin() + static_cast<std::ptrdiff_t>(n), x);
@@ -78,7 +82,16 @@ RailCentre railCentre(const io::ResultReader& f, const std::string& path,
     return out;
   }
   const fs::path store = fs::path(path).parent_path() / *stored;
-  const io::ResultReader sf(store.string());
+  const auto openStore = [&] {
+    try {
+      return std::make_unique<io::ResultReader>(store.string());
+    } catch (const io::BadResult& e) {
+      throw io::BadResult(path +
+                          ": the track store its /track@stored_in names is refused: " + e.what());
+    }
+  };
+  const auto storeFile = openStore();
+  const io::ResultReader& sf = *storeFile;
   const std::string want = f.text("/track", "track_hash").value_or("");
   const std::string got = sf.ok() ? sf.text("/track", "track_hash").value_or("") : "";
   if (!sf.ok() || want.empty() || got != want) {

@@ -92,6 +92,16 @@ Signal readSignal(const io::ResultReader& r, const std::string& path, const std:
     s.why = "no " + along + " axis with the " + std::to_string(y->size()) + " samples of " + path;
     return s;
   }
+  // A NaN or infinite sample (of a forged or diverged file) would make the statistic
+  // meaningless: the metric is not computed, and its reason names the dataset.
+  if (auto why = r.nonFiniteSample(path, *y)) {
+    s.why = *why;
+    return s;
+  }
+  if (auto why = r.nonFiniteSample(along + " axis of " + path, *x)) {
+    s.why = *why;
+    return s;
+  }
   s.x = std::move(*x);
   s.y = std::move(*y);
   return s;

@@ -1,0 +1,149 @@
+"""Forged result files for the hostile corpus (directive `forge=KIND`, README.md): each KIND writes
+`result.h5` (and what else it needs) into the case's work folder with h5py, so the corpus holds
+the recipe, not a binary file. The base is the smallest result `assess` and `check-result`
+accept: 2 s of one wheelset at 20 m/s sampled every 2.5 ms, /stats of an ok run."""
+import os
+
+import numpy as np
+
+DT = 2.5e-3  # [s] at most assess's 5 ms output interval
+N = 801  # 2 s
+SPEED = 20.0  # [m/s]
+Q0 = 50e3  # [N] static wheel load
+
+
+def _signals():
+    t = np.arange(N) * DT
+    rng = np.random.default_rng(47)
+    q = Q0 + 1e3 * rng.standard_normal(N)
+    y = 2e3 * np.sin(2 * np.pi * 1.5 * t)
+    return t, y, q
+
+
+def _base(f):
+    """A complete run of one wheelset: /time, /bodies/ws1, /contact/ws1/{left,right}, /stats."""
+    t, y, q = _signals()
+    f.attrs["content"] = "railbench result (forged by tests/hostile/forge_result.py)"
+    f["time"] = t
+    f["bodies/ws1/s"] = SPEED * t
+    f["bodies/ws1/y"] = 1e-3 * np.sin(2 * np.pi * 1.5 * t)
+    for side, sign in (("left", 1.0), ("right", -1.0)):
+        g = f.create_group(f"contact/ws1/{side}")
+        g["Y"] = sign * y
+        g["Q"] = q
+        g["y_track"] = sign * y
+        g["normal_force"] = q
+    _track(f, t)
+    s = f.create_group("stats")
+    s.attrs["status"] = np.bytes_("ok")
+    s.attrs["message"] = np.bytes_("")
+    s.attrs["t_reached"] = t[-1]
+    s.attrs["cpu_time_s"] = 0.1
+    return t
+
+
+def _track(f, t):
+    """A straight /track under the run (centreline and one tangent segment), as rbplot reads it."""
+    s = np.linspace(0.0, SPEED * t[-1] + 10.0, 11)
+    zero = np.zeros_like(s)
+    cl = f.create_group("track/centreline")
+    for k, v in (("s", s), ("x", s), ("y", zero), ("z", zero), ("heading", zero),
+                 ("slope", zero), ("cant_angle", zero), ("curvature", zero), ("cant", zero)):
+        cl[k] = v
+    sg = f.create_group("track/segments")
+    for k, v in (("start", 0.0), ("length", s[-1]), ("kind", 0.0), ("radius", 0.0),
+                 ("side", 0.0), ("cant", 0.0)):
+        sg[k] = np.array([v])
+
+
+def _assessment(f, t):
+    """/assessment as a run's assessment writes it (safety only), so assess recomputes from it."""
+    _, y, q = _signals()
+    a = f.create_group("assessment")
+    a.attrs["sample_every"] = DT
+    a["time"] = t
+    a["distance"] = SPEED * t
+    for side, sign in (("left", 1.0), ("right", -1.0)):
+        g = a.create_group(f"safety/ws1/{side}")
+        g.attrs["q0"] = Q0
+        g.attrs["s_offset"] = 0.0
+        g["Y"] = sign * y
+        g["Q"] = q
+        g["y_track"] = sign * y
+
+
+def external_schema(work):
+    """/schema is an external link to a file outside the work folder (`../victim.h5`), whose
+    /schema/assessment a writer through the link would replace."""
+    with h5py().File(os.path.join(work, "..", "victim.h5"), "w") as v:
+        v["schema/assessment/path"] = np.array([b"/victim/data"])
+        v.attrs["owner"] = np.bytes_("not railbench")
+    with h5py().File(os.path.join(work, "result.h5"), "w") as f:
+        _base(f)
+        f["schema"] = h5py().ExternalLink("../victim.h5", "/schema")
+
+
+def fifo_store(work):
+    """/track@stored_in names a FIFO in the track store folder: opening it would block."""
+    with h5py().File(os.path.join(work, "result.h5"), "w") as f:
+        _base(f)
+        del f["track/centreline"], f["track/segments"]
+        f["track"].attrs["stored_in"] = np.bytes_("tracks/0123456789abcdef.h5")
+        f["track"].attrs["track_hash"] = np.bytes_("0123456789abcdef")
+    os.mkdir(os.path.join(work, "tracks"))
+    os.mkfifo(os.path.join(work, "tracks", "0123456789abcdef.h5"))
+
+
+def huge_declared(work):
+    """/contact/ws1/left/Q declares 1e11 samples (800 GB) in a file of a few kB: HDF5 allocates
+    nothing until it is written, a reader that allocates from the declared size runs out."""
+    with h5py().File(os.path.join(work, "result.h5"), "w") as f:
+        _base(f)
+        del f["contact/ws1/left/Q"]
+        f.create_dataset("contact/ws1/left/Q", shape=(10**11,), dtype="f8")
+
+
+def nan_assessment(work):
+    """One NaN sample in /assessment/safety/ws1/left/Y of an otherwise valid assessment."""
+    with h5py().File(os.path.join(work, "result.h5"), "w") as f:
+        t = _base(f)
+        _assessment(f, t)
+        y = f["assessment/safety/ws1/left/Y"]
+        y[400] = np.nan
+
+
+def array_attribute(work):
+    """/stats@t_reached holds 4096 values where readers read one: a reader that reads it into one
+    double writes 32 kB over its stack."""
+    with h5py().File(os.path.join(work, "result.h5"), "w") as f:
+        _base(f)
+        f["stats"].attrs["t_reached"] = np.full(4096, 2.0)
+
+
+def nan_signal(work):
+    """One NaN sample in /bodies/ws1/y of a run's outputs."""
+    with h5py().File(os.path.join(work, "result.h5"), "w") as f:
+        _base(f)
+        f["bodies/ws1/y"][100] = np.nan
+
+
+def plain(work):
+    """The base alone (for the command-line options' cases)."""
+    with h5py().File(os.path.join(work, "result.h5"), "w") as f:
+        _base(f)
+
+
+def h5py():
+    import h5py as mod  # only the cases that forge files need it
+
+    return mod
+
+
+KINDS = {k: v for k, v in globals().items()
+         if callable(v) and not k.startswith("_") and k != "h5py"}
+
+
+def forge(kind, work):
+    if kind not in KINDS:
+        raise ValueError(f"unknown forge kind '{kind}' (one of {', '.join(sorted(KINDS))})")
+    KINDS[kind](str(work))
