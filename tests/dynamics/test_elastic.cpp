@@ -138,12 +138,13 @@ struct Climb {
 };
 
 // Flange climb: a loaded wheelset (59 kN per wheel) at 10 m/s, held at the angle of attack psi
-// toward the left rail, pushed to the left by a force growing at 80 kN/s. The left flange takes
-// the load (two-point contact: tread and flange at 70 deg), the wheel's Y/Q rises until the tread
-// unloads and the wheel climbs; the maximum of the climbing wheel's Y/Q (after the first 0.3 s,
-// the flange's first impact) against Nadal's limit for the largest contact angle it reached.
-Climb climb(double psi) {
-  const double speed = 10.0, rate = 80e3;
+// toward the left rail, pushed to the left by a force growing at `rate` [N/s]. The left flange
+// takes the load (two-point contact: tread and flange at 70 deg), the wheel's Y/Q rises until the
+// tread unloads and the wheel climbs; the maximum of the climbing wheel's Y/Q (after the flange's
+// first contact has settled, t > t_settle) against Nadal's limit for the largest contact angle
+// it reached.
+Climb climb(double psi, double rate, double t_end, double t_settle) {
+  const double speed = 10.0;
   const Compiled c = compileSpecs(tangentTrack(200), loadedWheelset(speed, 100e3), elasticSpec());
   dynamics::ContactVehicleOde ode(*c.vehicle, *c.contact, *c.track);
   Eigen::VectorXd y0 = ode.initialState(0.0);
@@ -153,13 +154,13 @@ Climb climb(double psi) {
   Climb out;
   std::vector<dynamics::WheelOutput> wo(2);
   std::vector<double> times;
-  for (int k = 1; k <= 800; ++k) times.push_back(0.005 * k);
+  for (int k = 1; 0.005 * k <= t_end + 1e-9; ++k) times.push_back(0.005 * k);
   out.result =
       integ::integrate(push, *integrator, 0.0, y0, times, [&](double t, const Eigen::VectorXd& y) {
         if (ode.wheelOutputs(t, y.data(), wo) != 0) return true;
         const dynamics::WheelOutput& left = wo[0];
         if (left.patch[1].active) out.gamma_max = std::max(out.gamma_max, left.patch[1].gamma);
-        if (t > 0.3 && left.force.Q > 0.0 && left.y_over_q > out.max_yq) {
+        if (t > t_settle && left.force.Q > 0.0 && left.y_over_q > out.max_yq) {
           out.max_yq = left.y_over_q;
           out.t_max = t;
         }
@@ -167,30 +168,36 @@ Climb climb(double psi) {
       });
   out.nadal = nadal(out.gamma_max, c.spec.contact.mu);
   std::printf(
-      "[ climb    ] angle of attack %.0f mrad: max Y/Q %.3f at t = %.3f s (F = %.1f kN); "
-      "gamma_max %.1f deg, Nadal %.3f (ratio %.3f)\n  %s\n",
-      psi * 1e3, out.max_yq, out.t_max, rate * out.t_max / 1e3, out.gamma_max * 180 / M_PI,
-      out.nadal, out.max_yq / out.nadal, out.result.message.c_str());
+      "[ climb    ] angle of attack %.0f mrad, push %.0f kN/s: max Y/Q %.3f at t = %.3f s (F = "
+      "%.1f kN); gamma_max %.1f deg, Nadal %.3f (ratio %.3f)\n  %s\n",
+      psi * 1e3, rate / 1e3, out.max_yq, out.t_max, rate * out.t_max / 1e3,
+      out.gamma_max * 180 / M_PI, out.nadal, out.max_yq / out.nadal, out.result.message.c_str());
   return out;
 }
 
-// Nadal's limit assumes the flange's lateral creep force saturated at mu N against the climb; the
-// longitudinal and spin creepages of the real flange contact take part of mu N, so a wheel climbs
-// at a Y/Q above Nadal's, approaching it as the angle of attack (the lateral creepage) grows (Wu &
-// Elkins, Vehicle System Dynamics 31 (1999); Wilson, Shu & Kramp, AAR report, 2004). Measured:
-// ratio 1.37 at 10 mrad, 1.17 at 30 mrad. Every climb ends in a derailment of the left wheel.
+// Nadal's limit is the Y/Q at which a flange contact whose lateral creep force is saturated at
+// mu N against the climb is in equilibrium. Pushed slowly (10 kN/s: the push grows by 1 % of the
+// climbing Y in 0.1 s), the wheelset climbs at a sustained Y/Q within 5 % of Nadal's at 30 mrad,
+// where the flange's lateral creepage dominates. At 10 mrad the flange contact's longitudinal
+// creepage (the flange's larger rolling radius) takes a larger part of mu N, so less of it
+// opposes the climb and a higher Y/Q is needed (the trend of Wu & Elkins, Vehicle System
+// Dynamics 31 (1999)): measured 1.045 at 10 mrad and 1.006 at 30 mrad (mu = 0.2364, 70.2 deg:
+// Nadal 1.533). With Polach's own divisor s_C the flange's sliding patch carried only 0.76-0.86 of
+// mu N and the ratios were 1.37 and 1.17 (80 kN/s). Every climb ends in a derailment of the left
+// wheel.
 TEST(Elastic, FlangeClimbApproachesNadalAndDerails) {
-  const Climb at10 = climb(0.010);
-  const Climb at30 = climb(0.030);
+  const Climb at10 = climb(0.010, 10e3, 16.0, 0.5);
+  const Climb at30 = climb(0.030, 10e3, 16.0, 0.5);
   for (const Climb* c : {&at10, &at30}) {
     EXPECT_FALSE(c->result.ok);
     EXPECT_NE(c->result.message.find("derailment"), std::string::npos) << c->result.message;
     EXPECT_NE(c->result.message.find("left wheel rose"), std::string::npos) << c->result.message;
     EXPECT_GT(c->gamma_max, 65.0 * M_PI / 180);
-    EXPECT_GT(c->max_yq, c->nadal);
   }
+  EXPECT_NEAR(at30.max_yq / at30.nadal, 1.0, 0.05);
   EXPECT_GT(at10.max_yq, at30.max_yq);
-  EXPECT_LT(at30.max_yq / at30.nadal, 1.25);
+  EXPECT_GT(at10.max_yq / at10.nadal, 1.0);
+  EXPECT_LT(at10.max_yq / at10.nadal, 1.10);
 }
 
 // Wheel lift is physics: a wheelset dropped from 1 mm above its contact height falls, lands and
