@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -98,4 +101,28 @@ TEST(ExternalForceRun, StudyMetricsMayNameItsSignals) {
                 .find("no external force signal 'deflection'"),
             std::string::npos)
       << rb::run::signalProblem(m.spec, "/elements/push/deflection");
+}
+
+TEST(ExternalForceRun, ATrainWithALongitudinalMotionWarnsThatTheForceIsNotInIt) {
+  // The braking rake (train.longitudinal) with a force on the leading wagon's car body.
+  std::ifstream in(std::string(RB_SOURCE_DIR) + "/tests/run/data/train_braking_rake.lua");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string from = "vehicle = wagon { speed = 20, start = 80 }";
+  ASSERT_NE(text.find(from), std::string::npos);
+  text.replace(text.find(from), from.size(),
+               "vehicle = (function() local v = wagon { speed = 20, start = 80 }\n"
+               "  v.elements[#v.elements + 1] = external_force { name = \"wind\", body = \"car\",\n"
+               "    direction = { 0, 1, 0 }, value = 1e3 }\n"
+               "  return v end)()");
+  const auto path = std::filesystem::temp_directory_path() / "rb_external_force_train.lua";
+  std::ofstream(path) << text;
+  const rb::run::Model m = rb::test::compiled(path.string());
+  bool warned = false;
+  for (const auto& w : m.warnings)
+    warned =
+        warned || w.find(
+                      "warning: element 'wind' (external_force): its component along "
+                      "the track is not in the vehicle's longitudinal motion") != std::string::npos;
+  EXPECT_TRUE(warned);
+  EXPECT_EQ(m.vehicles.front().vehicle.external_forces.size(), 1u);
 }
