@@ -138,7 +138,8 @@ void BM_Vehicle(benchmark::State& st) {
   for (auto _ : st) {
     ws.q = b.q[k];
     ws.qd = b.qd[k];
-    for (int r = 0; r < 2; ++r) vehicle::evaluate(s.model.lead().vehicle, b.series[k].data(), ws);
+    for (int r = 0; r < 2; ++r)
+      vehicle::evaluate(s.model.lead().vehicle, 0.0, b.series[k].data(), ws);
     benchmark::DoNotOptimize(ws.force.data());
     k = (k + 1) % b.q.size();
     n += 2;

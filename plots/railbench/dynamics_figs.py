@@ -104,6 +104,15 @@ _ELEMENT_UNITS = {"m": (1e3, "mm"), "rad": (1e3, "mrad"), "N": (1e-3, "kN"),
 MAX_ELEMENTS = 12
 
 
+# An external force (external_force{}) has no deflection: its cell in the deflection row draws its
+# components in the frame it was given.
+_COMPONENTS = ("force_x", "force_y", "force_z")
+
+
+def _external(d) -> bool:
+    return all(k in d for k in _COMPONENTS)
+
+
 def _element_names(result: Result) -> List[str]:
     return [n for n, d in result.elements.items()
             if any(k in d and d[k].size for k in ("deflection", "force"))]
@@ -111,7 +120,8 @@ def _element_names(result: Result) -> List[str]:
 
 def fig_elements(result: Result, max_items: int = MAX_ELEMENTS):
     """Deflection and force of the suspension elements the run wrote (run.output.elements)
-    versus time; the first `max_items` elements in file order, the others named in the title."""
+    versus time, and of every external force its components and value; the first `max_items`
+    elements in file order, the others named in the title."""
     names = _element_names(result)
     shown = names[:max_items]
     notes = []
@@ -120,12 +130,18 @@ def fig_elements(result: Result, max_items: int = MAX_ELEMENTS):
     quantities = ("deflection", "force")
 
     def unit(n, q):
+        if q == "deflection" and _external(result.elements[n]):
+            q = _COMPONENTS[0]
         u = result.element_units.get(n, {}).get(q, "")
         return _ELEMENT_UNITS.get(u, (1.0, u or "?"))
 
     row_units = [{unit(n, q)[1] for n in shown} for q in quantities]
+    external = [_external(result.elements[n]) for n in shown]
+    names = list(quantities)
+    if any(external):
+        names[0] = "force components" if all(external) else "deflection or\nforce components"
     labels = [f"{q}\n[{next(iter(us))}]" if len(us) == 1 else q
-              for q, us in zip(quantities, row_units)]
+              for q, us in zip(names, row_units)]
     with report_style():
         fig, cells, ncol = _grid(len(shown), 2, row_h=1.45, extra_h=0.9)
         # share y only between elements of the same units
@@ -141,7 +157,21 @@ def fig_elements(result: Result, max_items: int = MAX_ELEMENTS):
                 ax.axhline(0, color="k", lw=0.4, zorder=0.6)
                 scale, u = unit(n, key)
                 v = d.get(key)
-                if v is None or not v.size:
+                if key == "deflection" and _external(d):
+                    x = result.time if result.time is not None else \
+                        np.arange(d[_COMPONENTS[0]].size, dtype=float)
+                    for c, comp in enumerate(_COMPONENTS):
+                        xc, vc = _pair(x, d[comp] * scale)
+                        ax.plot(xc, vc, color=RUN_COLORS[c % len(RUN_COLORS)], lw=0.8, zorder=3,
+                                gid="data", label=comp[-1])
+                        fin = xc[np.isfinite(xc)]
+                        if fin.size:
+                            xmin, xmax = min(xmin, fin.min()), max(xmax, fin.max())
+                    ax.legend(fontsize=6, loc="center right", handlelength=1.2)
+                    if len(row_units[q]) > 1:
+                        ax.text(0.99, 0.95, f"[{u}]", transform=ax.transAxes, ha="right",
+                                va="top", fontsize=6.5, color="#333333")
+                elif v is None or not v.size:
                     ax.text(0.5, 0.5, "not in this result", transform=ax.transAxes,
                             ha="center", va="center", fontsize=7, color="#777777")
                 else:

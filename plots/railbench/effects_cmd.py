@@ -78,7 +78,9 @@ def _patches(g) -> bool:
 
 # A vehicle's outputs are checked in every vehicle of a train: an effect is on when any has it.
 VEHICLE_CHECKS = {
-    "element_outputs": lambda g: "elements" in g and len(g["elements"]) > 0,
+    # A suspension element's group has a deflection; an external force's (always written) not.
+    "element_outputs": lambda g: "elements" in g and any(
+        isinstance(e, h5py.Group) and "deflection" in e for e in g["elements"].values()),
     "patches": _patches,
     "body_accelerations": lambda g: _any_dataset(g, "bodies", "ax"),
     "assessment": lambda g: "assessment" in g and len(g["assessment"]) > 0,

@@ -544,8 +544,13 @@ TEST(ScenarioSchema, ChoicesComeFromTheNameTables) {
   expectTableIsSchemaChoice<rb::integ::JacobianMode>("solver", "jacobian");
   EXPECT_EQ(rb::scenario::block("track").key("segments")->kinds,
             rb::namesOf<rb::track::SegmentKind>());
-  EXPECT_EQ(rb::scenario::block("vehicle").key("elements")->kinds,
-            rb::namesOf<rb::vehicle::ElementKind>());
+  expectTableIsSchemaChoice<rb::vehicle::ForceFrame>("external_force", "frame");
+  expectTableIsSchemaChoice<rb::suspension::ForceLawKind>("external_force", "law");
+  expectTableIsSchemaChoice<rb::suspension::ForceAbscissa>("external_force", "over");
+  // The suspension elements, then the external force (not an ElementKind: vehicle/names.hpp).
+  std::vector<std::string> elements = rb::namesOf<rb::vehicle::ElementKind>();
+  elements.emplace_back(rb::vehicle::kExternalForceKind);
+  EXPECT_EQ(rb::scenario::block("vehicle").key("elements")->kinds, elements);
   // The spectra of the table are the ones the track module parses.
   for (const auto& e : rb::track::kSpectrumNames)
     EXPECT_EQ(rb::track::parseSpectrum(e.name), e.value) << e.name;
@@ -708,4 +713,37 @@ TEST(ScenarioContact, FastsimCreepLawAndGrid) {
   EXPECT_EQ(errorsOf(f, opts({"contact.fastsim.elements=16"})),
             "<command line>: contact: fastsim applies to creep = \"fastsim\" only (creep = "
             "\"polach\")");
+}
+
+TEST(ScenarioExternalForce, TheLuaElementBecomesItsSpec) {
+  // tests/run/data/external_force_tangent.lua: the wagon's 50 suspension elements and one
+  // external_force{} in vehicle.elements, a ramp at 5 kN/s from 0.5 s to 10 kN.
+  const std::string scene = "tests/run/data/external_force_tangent.lua";
+  const rb::scenario::ScenarioSpec s = loadScenario(scene, opts());
+  EXPECT_EQ(s.vehicle.elements.size(), 50u);
+  ASSERT_EQ(s.vehicle.external_forces.size(), 1u);
+  const rb::vehicle::ExternalForceSpec& f = s.vehicle.external_forces[0];
+  EXPECT_EQ(f.name, "push");
+  EXPECT_EQ(f.body, "car");
+  EXPECT_EQ(f.point, Eigen::Vector3d(0.0, 0.0, -0.9725));
+  EXPECT_EQ(f.frame, rb::vehicle::ForceFrame::Track);
+  EXPECT_EQ(f.direction, Eigen::Vector3d(0.0, 1.0, 0.0));
+  EXPECT_EQ(f.law.kind, rb::suspension::ForceLawKind::Ramp);
+  EXPECT_EQ(f.law.value, 10e3);
+  EXPECT_EQ(f.law.initial, 0.0);
+  EXPECT_EQ(f.law.start, 0.5);
+  EXPECT_EQ(f.law.duration, 2.0);  // |value - initial| / rate
+  EXPECT_TRUE(std::isinf(f.law.hold));
+  EXPECT_EQ(f.loc.line, 14);
+  // Its keys by name from the command line, as any element's.
+  const auto set =
+      loadScenario(scene, opts({"vehicle.elements.push.value=5e3", "vehicle.elements.push.hold=1.5",
+                                "vehicle.elements.push.frame=body"}))
+          .vehicle.external_forces[0];
+  EXPECT_EQ(set.law.duration, 1.0);
+  EXPECT_EQ(set.law.hold, 1.5);
+  EXPECT_EQ(set.frame, rb::vehicle::ForceFrame::Body);
+  EXPECT_EQ(errorsOf(scene, opts({"vehicle.elements.push.duration=2"})),
+            "<command line>: vehicle.elements[51] (external_force): give rate or duration, not "
+            "both");
 }

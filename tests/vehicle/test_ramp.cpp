@@ -122,7 +122,7 @@ TEST(SpeedRamp, ZeroAccelerationIsBitIdentical) {
     EXPECT_EQ(ws.q[b][kS], model.start + model.bodies[b].x + model.speed * t);
     EXPECT_EQ(ws.qd[b][kS], model.speed);
   }
-  rb::vehicle::evaluate(model, y.data() + ode.layout().series(0), ws);
+  rb::vehicle::evaluate(model, t, y.data() + ode.layout().series(0), ws);
   const auto& l = ode.layout();
   for (int k = 0; k < l.n_free; ++k) {
     const auto b = static_cast<std::size_t>(l.free_bodies[static_cast<std::size_t>(k)]);

@@ -110,7 +110,7 @@ TEST(SharedPointPairs, SharedMotionEqualsThePerElementMotionAndTheGlobalPoints) 
   std::vector<double> series_f;
   for (int trial = 0; trial < 5; ++trial) {
     randomState(m, rng, ws, series_f);
-    evaluate(m, series_f.data(), ws);
+    evaluate(m, 0.0, series_f.data(), ws);
     for (const ElementId& id : m.elements()) {
       if (id.kind == ElementKind::BendingSpring) continue;
       const ElementGeometry& g = m.element(id);
@@ -141,7 +141,7 @@ TEST(SharedPointPairs, ForceAssemblyEqualsTheGeneralForm) {
   std::vector<double> series_f;
   for (int trial = 0; trial < 5; ++trial) {
     randomState(m, rng, ws, series_f);
-    evaluate(m, series_f.data(), ws);
+    evaluate(m, 0.0, series_f.data(), ws);
     const std::size_t n = m.bodies.size();
     std::vector<Eigen::Vector3d> F(n, Eigen::Vector3d::Zero()), M(n, Eigen::Vector3d::Zero());
     const auto add = [&](const ElementGeometry& g, const ElementValue& v) {

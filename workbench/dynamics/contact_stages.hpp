@@ -84,7 +84,8 @@ int solveConstraints(const ContactModels& models, const StageInput& in, ContactW
 inline void evaluateVehicleForces(const ContactModels& models, const StageInput& in,
                                   ContactWorkspace& work) {
   const vehicle::VehicleLayout& l = models.layout;
-  vehicle::evaluate(models.vehicle, l.n_series > 0 ? in.y + l.series(0) : nullptr, work.bodies);
+  vehicle::evaluate(models.vehicle, in.t, l.n_series > 0 ? in.y + l.series(0) : nullptr,
+                    work.bodies);
 }
 
 // 4. Car bodies and bogies: M_pp pddot = Q_p - M_ps a (s imposed, sddot = a), as the guided model.

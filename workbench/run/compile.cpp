@@ -349,6 +349,12 @@ void compileTrain(Model& c, Diagnostics& d) {
                        "\"free\"); give traction_at = \"vehicle\" to apply it as a force");
     c.longitudinal.traction.push_back(e.traction);
     c.longitudinal.resistance.push_back(e.resistance);
+    // The longitudinal equation sums traction, resistance, slope and connections only.
+    for (const auto& f : rv.vehicle.external_forces)
+      c.warnings.push_back(f.loc.str() + ": warning: element '" + f.name +
+                           "' (external_force): its component along the track is not in the "
+                           "vehicle's longitudinal motion (train.longitudinal), only in its "
+                           "bodies' other coordinates; give a load along the track as traction");
   }
 }
 
@@ -373,18 +379,21 @@ void checkVehicleRun(Model& c, Diagnostics& d) {
   const auto& spec = c.spec;
   // An element named in run.output.elements is written for every vehicle that has one of that
   // name (in a train, vehicles of the same file share their names); a name no vehicle has is an
-  // error.
+  // error. External forces are written anyway: naming one asks for nothing more.
   for (const auto& name : spec.run.output_elements) {
     bool found = false;
-    for (auto& rv : c.vehicles)
+    for (auto& rv : c.vehicles) {
       if (auto id = rv.vehicle.findElement(name)) {
         rv.output_elements.push_back(*id);
         found = true;
       }
+      found = found || rv.vehicle.findExternalForce(name) >= 0;
+    }
     if (found) continue;
     const vehicle::VehicleModel& v = c.lead().vehicle;
     std::vector<std::string> names;
     for (auto id : v.elements()) names.push_back(v.elementName(id));
+    for (const auto& e : v.external_forces) names.push_back(e.name);
     std::string hint = closestMatch(name, names);
     d.add(spec.run.loc, "run.output.elements: no element named '" + name + "'" +
                             (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));

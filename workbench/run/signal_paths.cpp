@@ -77,6 +77,12 @@ std::string elementSignalProblem(const scenario::ScenarioSpec& spec,
                                  const std::vector<std::string>& p) {
   const auto& out = spec.run.output_elements;
   if (p.size() != 3) return "an element's signal is /elements/<name>/deflection or force";
+  // An external force is written whether named or not, with its value and components.
+  const auto& forces = spec.vehicle.external_forces;
+  if (std::any_of(forces.begin(), forces.end(), [&](const auto& e) { return e.name == p[1]; })) {
+    const std::vector<std::string> q = {"force", "force_x", "force_y", "force_z"};
+    return among(p[2], q) ? std::string() : notAmong("external force signal", p[2], q);
+  }
   if (!among(p[1], out))
     return "element '" + p[1] + "' is not written: name it in run.output.elements" +
            (out.empty() ? "" : " (written: " + join(out, ", ") + ")");

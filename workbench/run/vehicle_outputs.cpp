@@ -7,6 +7,7 @@
 
 #include "workbench/dynamics/names.hpp"
 #include "workbench/run/channels.hpp"
+#include "workbench/suspension/external_force.hpp"
 #include "workbench/vehicle/names.hpp"
 
 namespace rb::run {
@@ -106,6 +107,23 @@ void addVehicleChannels(const Model& m, const RunVehicle& rv, io::ResultFile& f,
     outputs.push_back(
         {base + "force", bending ? "N m" : "N",
          "force of the element (" + std::string(vehicle::elementKindName(id.kind)) + ")", ""});
+  }
+  // Every external force is written: it is an input of the run, and its history is what its
+  // result is read against.
+  for (const auto& e : v.external_forces) {
+    const std::string group = root + "/elements/" + e.name;
+    const std::string frame(nameOf(e.frame));
+    f.attr(group, "kind", std::string(vehicle::kExternalForceKind));
+    f.attr(group, "body", v.bodies[static_cast<std::size_t>(e.body)].name);
+    f.attr(group, "frame", frame);
+    f.attr(group, "law", std::string(nameOf(e.law.kind)));
+    outputs.push_back({group + "/force", "N",
+                       "value F of the external force along its direction (external_force)", ""});
+    for (const char* axis : {"x", "y", "z"})
+      outputs.push_back({group + "/force_" + axis, "N",
+                         std::string(axis) + " component of the external force in the " + frame +
+                             " frame (external_force)",
+                         ""});
   }
 }
 
@@ -226,6 +244,17 @@ void sampleElements(StateOutputs& state, std::span<const vehicle::ElementId> ids
   }
 }
 
+// The external forces at time t with the bodies at q (F, then its components in its frame).
+void sampleExternalForces(const vehicle::VehicleModel& v, double t,
+                          const std::vector<vehicle::Vector6d>& q, double*& out) {
+  for (const auto& e : v.external_forces) {
+    const double f =
+        suspension::forceAt(e.law, t, q[static_cast<std::size_t>(e.body)][vehicle::kS]);
+    *out++ = f;
+    for (int k = 0; k < 3; ++k) *out++ = f * e.direction[k];
+  }
+}
+
 }  // namespace
 
 void CreepageMaximum::update(const dynamics::WheelOutput& w, double t_now) {
@@ -276,11 +305,13 @@ double* VehicleOutputs::sample(double t, const double* y, double* out) {
   }
   if (contact_ == nullptr) {
     sampleElements(state_, v_.output_elements, values_, out);
+    sampleExternalForces(v_.vehicle, t, q_, out);
     return out;
   }
   // The wheel outputs first: their evaluation also gives the element values.
   const bool wheels = state_.wheels();
   sampleElements(state_, v_.output_elements, values_, out);
+  sampleExternalForces(v_.vehicle, t, q_, out);
   const bool patches = m_.spec.run.output_patches;
   if (!wheels) {
     const std::size_t n =

@@ -2,6 +2,8 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <initializer_list>
+#include <limits>
 #include <string_view>
 
 #include "workbench/core/strings.hpp"
@@ -47,6 +49,84 @@ vehicle::ElementSpec buildElement(const Node& e, const std::string& path, Diagno
   if (bs.key("preload")) el.preload = er.number("preload");
   if (bs.key("table")) er.pairList("table", el.table_d, el.table_f);
   return el;
+}
+
+// Refuses each of `keys` that is given: it belongs to another law than the element's (a rate
+// given to a constant force would otherwise be ignored in silence).
+void refuseKeys(Reader& r, std::initializer_list<const char*> keys, suspension::ForceLawKind law,
+                const char* belongs) {
+  for (const char* k : keys)
+    if (r.has(k))
+      r.error(*r.value(k), std::string(k) + " applies to " + belongs + " (law is \"" +
+                               std::string(nameOf(law)) + "\")");
+}
+
+// The law of an external force: its kind and the keys of that kind; the values are checked when
+// the vehicle is compiled (suspension::checkForceLaw, with the table's line).
+void buildForceLaw(Reader& r, const Node& e, vehicle::ExternalForceSpec& f) {
+  using suspension::ForceLawKind;
+  suspension::ForceLaw& law = f.law;
+  law.kind = r.choiceOf<ForceLawKind>("law");
+  // A misspelt law is reported by the reader; the keys of the law it falls back to would only
+  // add errors about keys that are right for the law meant.
+  if (const Node* given = r.value("law"); given != nullptr && !(given->type == Node::Type::String &&
+                                                                parse<ForceLawKind>(given->string)))
+    return;
+  const std::string law_name(nameOf(law.kind));
+  if (law.kind != ForceLawKind::Ramp)
+    refuseKeys(r, {"initial", "start", "rate", "duration", "hold"}, law.kind,
+               "law = \"ramp\" only");
+  if (law.kind != ForceLawKind::Table)
+    refuseKeys(r, {"over", "table"}, law.kind, "law = \"table\" only");
+  if (law.kind == ForceLawKind::Table) {
+    refuseKeys(r, {"value"}, law.kind, "law = \"constant\" or \"ramp\" (a table gives F)");
+    law.over = r.choiceOf<suspension::ForceAbscissa>("over");
+    if (!r.has("table")) {
+      r.error(e,
+              "law = \"table\" needs table = {{t, F}, ...} (or {{s, F}, ...} with over = "
+              "\"distance\")");
+      return;
+    }
+    f.table_loc = r.value("table")->loc;
+    r.pairList("table", law.at, law.force);
+    return;
+  }
+  if (!r.has("value")) r.error(e, "law = \"" + law_name + "\" needs value [N]");
+  law.value = r.number("value");
+  if (law.kind != ForceLawKind::Ramp) return;
+  law.initial = r.number("initial");
+  law.start = r.number("start");
+  law.hold = r.has("hold") ? r.number("hold") : std::numeric_limits<double>::infinity();
+  const bool rate = r.has("rate"), duration = r.has("duration");
+  if (rate && duration)
+    r.error(*r.value("duration"), "give rate or duration, not both");
+  else if (!rate && !duration)
+    r.error(e, "law = \"ramp\" needs rate [N/s] or duration [s]");
+  if (duration) {
+    law.duration = r.number("duration");
+  } else if (rate) {
+    const double per_second = r.number("rate");
+    // A rate outside its range is reported; the duration then stays valid for the other checks.
+    law.duration = per_second > 0.0 && std::isfinite(per_second)
+                       ? std::abs(law.value - law.initial) / per_second
+                       : 1.0;
+  }
+}
+
+// external_force{}: a force on a body from outside the vehicle (vehicle::ExternalForceSpec).
+vehicle::ExternalForceSpec buildExternalForce(const Node& e, const std::string& path,
+                                              Diagnostics& d) {
+  Reader r(e, block(vehicle::kExternalForceKind), path, d);
+  vehicle::ExternalForceSpec f;
+  f.loc = e.loc;
+  f.name = r.string("name");
+  f.body = r.string("body");
+  r.vec3("at", f.point);
+  f.frame = r.choiceOf<vehicle::ForceFrame>("frame");
+  if (r.vec3("direction", f.direction) && !(f.direction.norm() > 0.0))
+    r.error(*r.value("direction"), "direction must be a vector of length > 0, e.g. {0, 1, 0}");
+  buildForceLaw(r, e, f);
+  return f;
 }
 
 // Keys of vehicle.initial.<body>: the coordinate names from y (vehicle::kY = 1) to yaw, and their
@@ -201,9 +281,13 @@ void buildVehicle(const Node& n, vehicle::VehicleSpec& v, Diagnostics& d) {
   buildGroups(r, n);
   if (!r.has("elements")) return;
   auto elements = r.blockList("elements");
-  for (std::size_t i = 0; i < elements.size(); ++i)
-    v.elements.push_back(
-        buildElement(*elements[i], "vehicle.elements[" + std::to_string(i + 1) + "]", d));
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const std::string path = "vehicle.elements[" + std::to_string(i + 1) + "]";
+    if (elements[i]->kind == vehicle::kExternalForceKind)
+      v.external_forces.push_back(buildExternalForce(*elements[i], path, d));
+    else
+      v.elements.push_back(buildElement(*elements[i], path, d));
+  }
 }
 
 }  // namespace rb::scenario

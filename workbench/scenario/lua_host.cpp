@@ -38,6 +38,7 @@ const std::vector<std::string>& nestedConstructors() {
     std::vector<std::string> n = namesOf<track::SegmentKind>();
     for (const char* other : {"psd", "measured", "body"}) n.emplace_back(other);
     for (auto& e : namesOf<vehicle::ElementKind>()) n.push_back(std::move(e));
+    n.emplace_back(vehicle::kExternalForceKind);
     return n;
   }();
   return names;

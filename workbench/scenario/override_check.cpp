@@ -49,8 +49,8 @@ std::map<std::string, std::vector<std::string>> assignmentsByBase(const StudySpe
 
 // The keys of a schema block a sweep varies: all but the ones that name and place the item.
 std::vector<std::string> settableKeys(const std::string& kind) {
-  static const std::vector<std::string> kFixed = {"name",    "kind",  "from",     "to",
-                                                  "at_from", "at_to", "direction"};
+  static const std::vector<std::string> kFixed = {"name",  "kind",      "from", "to", "at_from",
+                                                  "at_to", "direction", "body", "at", "frame"};
   std::vector<std::string> out;
   for (const auto& b : schema())
     if (b.name == kind)

@@ -27,6 +27,19 @@ void checkWheelsetContact(const vehicle::VehicleSpec& v, bool has_contact, bool 
             "the track kinematically (no wheel/rail forces)");
 }
 
+// A guided wheelset follows the track kinematically: an external force on it would do nothing.
+void checkGuidedForces(const vehicle::VehicleSpec& v, bool guided, Diagnostics& d) {
+  if (!guided) return;
+  for (const auto& f : v.external_forces)
+    for (const auto& b : v.bodies)
+      if (b.name == f.body && b.kind == vehicle::BodyKind::Wheelset)
+        d.add(f.loc, "element '" + f.name + "' (" + vehicle::kExternalForceKind + "): wheelset '" +
+                         f.body +
+                         "' follows the track kinematically with contact { method = \"guided\" "
+                         "}, so a force on it does nothing: choose a contact method, or apply "
+                         "the force to the body its suspension hangs from");
+}
+
 }  // namespace
 
 ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
@@ -102,9 +115,14 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   // A block left unchecked still exists: no error about it being absent.
   spec.has_vehicle = spec.has_vehicle || unchecked("vehicle") || unchecked("train");
   spec.has_contact = spec.has_contact || unchecked("contact");
-  if (spec.train.empty() && spec.has_vehicle)
+  if (spec.train.empty() && spec.has_vehicle) {
     checkWheelsetContact(spec.vehicle, spec.has_contact, spec.guided, d);
-  for (const auto& e : spec.train) checkWheelsetContact(e.vehicle, e.has_contact, e.guided, d);
+    checkGuidedForces(spec.vehicle, spec.guided, d);
+  }
+  for (const auto& e : spec.train) {
+    checkWheelsetContact(e.vehicle, e.has_contact, e.guided, d);
+    checkGuidedForces(e.vehicle, e.guided, d);
+  }
   if (spec.guided && spec.has_profiles)
     d.add(spec.profiles.loc,
           "profiles{} has no effect with contact { method = \"guided\" } (no wheel/rail "

@@ -14,6 +14,7 @@
 #include "workbench/integrators/registry.hpp"
 #include "workbench/profiles/nominal.hpp"
 #include "workbench/scenario/effect_names.hpp"
+#include "workbench/suspension/external_force.hpp"
 #include "workbench/track/names.hpp"
 #include "workbench/train/longitudinal.hpp"
 #include "workbench/vehicle/names.hpp"
@@ -48,6 +49,12 @@ KeySpec num(std::string name, std::string unit, double def, std::string help, co
 
 KeySpec required(KeySpec k) {
   k.required = true;
+  k.def.clear();
+  return k;
+}
+
+// A key that is absent unless given (its default would read as a value: a ramp's rate, a hold).
+KeySpec withoutDefault(KeySpec k) {
   k.def.clear();
   return k;
 }
@@ -427,6 +434,61 @@ constexpr InitialCoordinate kInitialCoordinates[] = {
     {"pitch", "rad", "pitch angle theta (a wheelset: spin angle)", kPi, 50.0},
     {"yaw", "rad", "yaw angle psi", 0.1, 5.0}};
 
+// The constructors of vehicle.elements: the suspension elements, then the external force.
+std::vector<std::string> elementConstructors() {
+  std::vector<std::string> out = namesOf<vehicle::ElementKind>();
+  out.emplace_back(vehicle::kExternalForceKind);
+  return out;
+}
+
+// external_force{}: a force on a body from outside the vehicle model (vehicle::ExternalForceSpec,
+// suspension/external_force.hpp).
+BlockSpec externalForceBlock() {
+  using suspension::ForceAbscissa;
+  using suspension::ForceLawKind;
+  return {
+      vehicle::kExternalForceKind,
+      "A force on one body from outside the vehicle model (a wind gust, a wheel-climb rig's "
+      "lateral push, the coupler load of a vehicle that is not simulated): F(t) or F(s) along a "
+      "direction of the body's track frame or of the body, applied at a point of the body, so "
+      "that its moment about the centre of mass acts too. Written to /elements/NAME/force and "
+      "force_x, force_y, force_z (docs/vehicle.md, External forces).",
+      {typed("name", ValueType::String, "-", "element name (for outputs)", true),
+       typed("body", ValueType::String, "-", "the body the force acts on", true),
+       typed("at", ValueType::Vec3, "m",
+             "point of application in the body's frame (a wheelset: its axle-box frame), "
+             "relative to the centre of mass; default the centre of mass"),
+       enumChoice("frame", vehicle::ForceFrame::Track, "the frame direction is fixed in"),
+       typed("direction", ValueType::Vec3, "-",
+             "direction of the force in `frame`, e.g. {0, 1, 0} (to the left); normalised, so "
+             "only its direction counts",
+             true),
+       enumChoice("law", ForceLawKind::Constant, "how the force's value F changes"),
+       withoutDefault(num(
+           "value", "N", 0,
+           "F along direction (constant), or the value the ramp goes to (ramp); required by both",
+           suspension::kForceValueRange)),
+       num("initial", "N", 0, "ramp: F before start and after the ramp back",
+           suspension::kForceValueRange),
+       num("start", "s", 0, "ramp: time at which F leaves initial", suspension::kForceStartRange),
+       withoutDefault(num("rate", "N/s", 0,
+                          "ramp: rate of change |dF/dt| (give rate or duration, not both)",
+                          suspension::kForceRateRange)),
+       withoutDefault(num("duration", "s", 0,
+                          "ramp: time from initial to value (give rate or duration)",
+                          suspension::kForceDurationRange)),
+       withoutDefault(
+           num("hold", "s", 0,
+               "ramp: time at value before F ramps back to initial over the same time; absent: F "
+               "stays at value to the end of the run",
+               suspension::kForceHoldRange)),
+       enumChoice("over", ForceAbscissa::Time, "table: the abscissa of the table"),
+       typed("table", ValueType::PairList, "s or m, N",
+             "table: {{t, F}, ...} (over = \"time\") or {{s, F}, ...} (over = \"distance\"), "
+             "abscissae strictly increasing, linear between points, the end values beyond the "
+             "ends")}};
+}
+
 void addVehicleBlocks(std::vector<BlockSpec>& s) {
   // Vehicle: bodies in track-frame coordinates and suspension elements (Appendix A).
   s.push_back(
@@ -451,9 +513,10 @@ void addVehicleBlocks(std::vector<BlockSpec>& s) {
         required(blockKey("bodies", ValueType::BlockList, {"body"},
                           "rigid bodies; --set vehicle.bodies.NAME.KEY sets a key of the body "
                           "named NAME (or by list position, vehicle.bodies[2].KEY)")),
-        blockKey("elements", ValueType::BlockList, namesOf<vehicle::ElementKind>(),
-                 "suspension elements; --set vehicle.elements.NAME.KEY sets a key of the element "
-                 "named NAME (or by list position, vehicle.elements[5].KEY)"),
+        blockKey("elements", ValueType::BlockList, elementConstructors(),
+                 "suspension elements and external forces; --set vehicle.elements.NAME.KEY sets "
+                 "a key of the element named NAME (or by list position, "
+                 "vehicle.elements[5].KEY)"),
         typed("groups", ValueType::Table, "-",
               "named sets of suspension elements for --set: { GROUP = { \"prim_x_*\", "
               "\"sec_y_bogie1_l\", ... }, ... }, element names or globs ('*' = any characters); "
@@ -532,6 +595,7 @@ void addVehicleBlocks(std::vector<BlockSpec>& s) {
                elementKeys({typed(
                    "table", ValueType::PairList, "m, N",
                    "{{d, F}, ...} with d increasing, e.g. {{0.025, 0}, {0.030, 600}}", true)})});
+  s.push_back(externalForceBlock());
 }
 
 void addStudyBlock(std::vector<BlockSpec>& s) {

@@ -1,5 +1,6 @@
 #include "workbench/vehicle/dynamics.hpp"
 
+#include "workbench/suspension/external_force.hpp"
 #include "workbench/suspension/laws.hpp"
 
 namespace rb::vehicle {
@@ -138,7 +139,7 @@ Workspace makeWorkspace(const VehicleModel& m) {
   return ws;
 }
 
-void evaluate(const VehicleModel& m, const double* series_f, Workspace& ws) {
+void evaluate(const VehicleModel& m, double t, const double* series_f, Workspace& ws) {
   // Bodies: kinematics, mass matrix, quadratic-velocity inertia forces, gravity. With
   // Lv = [c_s, e_y, e_z, 0] (c_s = e_x + w x rbar) and Lw = [wb, 0, 0, G] the products
   // M = m Lv^T Lv + Lw^T J Lw and Q = Lv^T f_lin + Lw^T f_rot are written out by blocks (the
@@ -230,6 +231,16 @@ void evaluate(const VehicleModel& m, const double* series_f, Workspace& ws) {
     const BodyKinematics& k = ws.kin[static_cast<std::size_t>(a.body)];
     addPointForce(k, k.attach.A * a.u, k.tf.A.transpose() * a.force,
                   ws.force[static_cast<std::size_t>(a.body)]);
+  }
+  // External forces: F(t, s) along a direction of the body's track frame or of the body, at a
+  // point of the body, so that its moment about the CoM acts too (addPointForce).
+  for (const ExternalForce& e : m.external_forces) {
+    const auto b = static_cast<std::size_t>(e.body);
+    const BodyKinematics& k = ws.kin[b];
+    const double f = suspension::forceAt(e.law, t, ws.q[b][kS]);
+    const Eigen::Vector3d along =
+        e.frame == ForceFrame::Body ? Eigen::Vector3d(k.attach.A * e.direction) : e.direction;
+    addPointForce(k, k.attach.A * e.u, f * along, ws.force[b]);
   }
   // Moments: on the angles through the body frame's angular-velocity map, omega (track comps)
   // = Abar G alpha_dot, so Q_alpha = (Abar G)^T M (the spin of a wheelset included).

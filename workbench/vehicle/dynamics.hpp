@@ -2,10 +2,10 @@
 // Dynamics of the vehicle in full track-frame coordinates (Model -> Workspace): for given
 // coordinates q_i, rates qd_i of EVERY body (6 each: s, y, z, phi, theta, psi) and the series
 // damper forces, evaluate() computes for each body the 6x6 mass matrix M_i and the generalised
-// force vector Q_i = Q_applied (gravity, suspension elements, Eq. 29) + Q_v (quadratic-velocity
-// inertia forces, Newton-Euler), so that M_i qddot_i = Q_i + (constraint reactions). Each body's
-// inertia couples only its own coordinates (block-diagonal M; each body has its own track frame).
-// The series damper force rates f_dot (Appendix A ODE) are computed too.
+// force vector Q_i = Q_applied (gravity, suspension elements, Eq. 29, external forces) + Q_v
+// (quadratic-velocity inertia forces, Newton-Euler), so that M_i qddot_i = Q_i + (constraint
+// reactions). Each body's inertia couples only its own coordinates (block-diagonal M; each body has
+// its own track frame). The series damper force rates f_dot (Appendix A ODE) are computed too.
 //
 // The ODE adapters (guided.hpp, later the contact models) decide which coordinates are
 // prescribed and which are free. evaluate() is allocation-free.
@@ -113,9 +113,10 @@ inline ForwardMotion forwardMotion(const VehicleModel& m, const Workspace& ws, d
 // ws.point_motion[g.point_pair] (tests; bending springs included).
 PointPairMotion pointPairMotion(const ElementGeometry& g, const Workspace& ws);
 
-// Evaluates everything at ws.q, ws.qd and the series damper forces series_f (one per series
-// damper; may be null if there are none).
-void evaluate(const VehicleModel& model, const double* series_f, Workspace& ws);
+// Evaluates everything at time t, ws.q, ws.qd and the series damper forces series_f (one per
+// series damper; may be null if there are none). t enters only through the laws of the external
+// forces (VehicleModel::external_forces).
+void evaluate(const VehicleModel& model, double t, const double* series_f, Workspace& ws);
 
 struct Energy {
   double kinetic = 0.0;  // [J] sum of m v^2 / 2 + omega^T J omega / 2

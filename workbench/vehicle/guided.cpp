@@ -46,7 +46,7 @@ int guidedRhs(const VehicleModel& m, const VehicleLayout& l, double t, const dou
   for (int k = 0; k < l.n_free; ++k)
     if (!(std::abs(y[l.position(k, kPitch - 1)]) < kPitchLimit)) return 1;
   if (clock) clock->mark(Stage::Coordinates);
-  evaluate(m, l.n_series > 0 ? y + l.series(0) : nullptr, ws);
+  evaluate(m, t, l.n_series > 0 ? y + l.series(0) : nullptr, ws);
   if (clock) clock->mark(Stage::VehicleForces);
   const double acceleration = forwardMotion(m, ws, t).acceleration;
   for (int k = 0; k < l.n_free; ++k) {
@@ -148,7 +148,7 @@ int GuidedVehicleOde::bodyAccelerations(double t, const double* y, std::span<Vec
 int GuidedVehicleOde::elementOutputs(double t, const double* y, std::span<const ElementId> ids,
                                      std::span<ElementValue> out) {
   guidedCoordinates(*model_, layout_, t, y, ws_);
-  evaluate(*model_, layout_.n_series > 0 ? y + layout_.series(0) : nullptr, ws_);
+  evaluate(*model_, t, layout_.n_series > 0 ? y + layout_.series(0) : nullptr, ws_);
   for (std::size_t i = 0; i < ids.size() && i < out.size(); ++i) out[i] = ws_.value(ids[i]);
   return 0;
 }
@@ -172,7 +172,7 @@ BodyOutput GuidedVehicleOde::bodyOutput(double t, const double* y, int body) {
 Energy GuidedVehicleOde::energy(double t, const double* y) {
   guidedCoordinates(*model_, layout_, t, y, ws_);
   const double* f = layout_.n_series > 0 ? y + layout_.series(0) : nullptr;
-  evaluate(*model_, f, ws_);
+  evaluate(*model_, t, f, ws_);
   return vehicle::energy(*model_, f, ws_);
 }
 

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "workbench/core/strings.hpp"
+#include "workbench/vehicle/names.hpp"
 
 namespace rb::vehicle {
 
@@ -152,6 +153,42 @@ void validateElement(const VehicleSpec& spec, const ElementSpec& e,
   }
 }
 
+// A point of application farther than this from the body's centre of mass is not on the body
+// (the longest rail vehicles are about 30 m): a typing error, whose moment would dwarf the rest.
+constexpr double kMaxApplicationDistance = 100.0;  // [m]
+
+// One external force: name, body, point, direction, law.
+void validateExternalForce(const VehicleSpec& spec, const ExternalForceSpec& e,
+                           const std::map<std::string, int>& bodies,
+                           std::map<std::string, SourceLoc>& names, Diagnostics& diags) {
+  const std::string what = "element '" + e.name + "' (" + kExternalForceKind + ")";
+  if (e.name.empty())
+    diags.add(e.loc, std::string("element (") + kExternalForceKind + "): empty name");
+  else if (!names.emplace(e.name, e.loc).second)
+    diags.add(e.loc, what + ": duplicate element name (also " + names[e.name].str() + ")");
+  const auto b = bodies.find(e.body);
+  if (b == bodies.end()) {
+    std::vector<std::string> known;
+    for (const BodySpec& body : spec.bodies) known.push_back(body.name);
+    const std::string hint = closestMatch(e.body, known);
+    diags.add(e.loc, what + ": unknown body '" + e.body + "' in 'body'" +
+                         (hint.empty() ? " (bodies: " + join(known, ", ") + ")"
+                                       : " (did you mean '" + hint + "'?)"));
+  } else if (spec.bodies[static_cast<std::size_t>(b->second)].kind == BodyKind::Frame) {
+    diags.add(e.loc, what + ": body '" + e.body +
+                         "' is a frame, whose motion is prescribed: a force on it does nothing");
+  }
+  if (!finite3(e.point) || !(e.point.cwiseAbs().maxCoeff() <= kMaxApplicationDistance))
+    diags.add(e.loc, what + ": the point 'at' must lie within " +
+                         formatNumber(kMaxApplicationDistance) +
+                         " m of the body's centre of mass in every axis");
+  if (!finite3(e.direction) || !(e.direction.norm() > 0.0))
+    diags.add(e.loc, what + ": direction must be a vector of length > 0, e.g. {0, 1, 0}");
+  for (const std::string& m : suspension::checkForceLaw(e.law))
+    diags.add(e.table_loc.line > 0 && m.rfind("table", 0) == 0 ? e.table_loc : e.loc,
+              what + ": " + m);
+}
+
 // The bodies: names (unique; body_list lists them), masses, inertias, positions.
 void validateBodies(const VehicleSpec& spec, std::map<std::string, int>& bodies,
                     std::string& body_list, Diagnostics& diags) {
@@ -211,6 +248,8 @@ void validateVehicle(const VehicleSpec& spec, Diagnostics& diags) {
   std::map<std::string, SourceLoc> names;
   for (const ElementSpec& e : spec.elements)
     validateElement(spec, e, bodies, body_list, names, diags);
+  for (const ExternalForceSpec& e : spec.external_forces)
+    validateExternalForce(spec, e, bodies, names, diags);
 }
 
 VehicleModel compileVehicle(const VehicleSpec& spec, const track::TrackModel& track) {
@@ -280,6 +319,10 @@ VehicleModel compileVehicle(const VehicleSpec& spec, const track::TrackModel& tr
   if (!m.shear_springs.empty()) m.element_kinds.emplace_back("shear_spring");
   if (!m.bending_springs.empty()) m.element_kinds.emplace_back("bending_spring");
   if (!m.bumpstops.empty()) m.element_kinds.emplace_back("bumpstop");
+  for (const ExternalForceSpec& e : spec.external_forces)
+    m.external_forces.push_back(
+        {e.name, e.loc, m.findBody(e.body), e.point, e.frame, e.direction.normalized(), e.law});
+  if (!m.external_forces.empty()) m.element_kinds.emplace_back(kExternalForceKind);
   return m;
 }
 
@@ -322,6 +365,12 @@ const ElementGeometry& VehicleModel::element(ElementId id) const {
       return bumpstops.at(i).g;
   }
   RB_CHECK(false, "unknown element kind");
+}
+
+int VehicleModel::findExternalForce(std::string_view n) const {
+  for (std::size_t i = 0; i < external_forces.size(); ++i)
+    if (external_forces[i].name == n) return static_cast<int>(i);
+  return -1;
 }
 
 std::optional<ElementId> VehicleModel::findElement(std::string_view n) const {

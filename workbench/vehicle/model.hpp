@@ -18,6 +18,9 @@
 //   shear_spring, bending_spring: direction x, y or z (a shear spring acts across its axis, a
 //     bending spring about an axis);
 //   bumpstop: a valid table (suspension::BumpstopLaw::check), direction x, y, z or axial.
+// - external forces: a name unique among all elements; an existing body that is not a frame (a
+//   frame's motion is prescribed: a force on it would do nothing); a point within 100 m of the
+//   body's centre of mass; a direction of length > 0; a valid law (suspension::checkForceLaw).
 #include <Eigen/Dense>
 #include <array>
 #include <optional>
@@ -97,6 +100,18 @@ struct BumpstopElement {
   suspension::BumpstopLaw law;
 };
 
+// A force on one body from outside the vehicle (ExternalForceSpec): F(t, s) along `direction`
+// at the point u.
+struct ExternalForce {
+  std::string name;
+  SourceLoc loc;
+  int body = 0;
+  Eigen::Vector3d u = Eigen::Vector3d::Zero();  // [m] attachment frame, relative to the CoM
+  ForceFrame frame = ForceFrame::Track;
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitY();  // unit vector in `frame`
+  suspension::ForceLaw law;
+};
+
 // Handle of one element: its kind and its index in that kind's vector.
 struct ElementId {
   ElementKind kind = ElementKind::SpringDamper;
@@ -121,7 +136,11 @@ struct VehicleModel {
   std::vector<ShearSpringElement> shear_springs;
   std::vector<BendingSpringElement> bending_springs;
   std::vector<BumpstopElement> bumpstops;
-  std::vector<std::string> element_kinds;  // Lua names of the kinds present, in enum order
+  // Forces from outside the vehicle (external_force{}): not suspension elements (no ElementId),
+  // applied by evaluate() after them.
+  std::vector<ExternalForce> external_forces;
+  // Lua names of the kinds present, in enum order, then "external_force" when there is one.
+  std::vector<std::string> element_kinds;
   // The distinct (master, other) body pairs of the elements: the relative placement of their
   // track frames (A_ij, R_ij of Eq. 28) is computed once per pair and evaluation (the wagon's 48
   // elements join 6 pairs).
@@ -134,6 +153,7 @@ struct VehicleModel {
 
   int findBody(std::string_view name) const;  // -1 if unknown
   std::optional<ElementId> findElement(std::string_view name) const;
+  int findExternalForce(std::string_view name) const;  // index into external_forces, -1 if none
   const ElementGeometry& element(ElementId id) const;
   std::string elementName(ElementId id) const { return element(id).name; }
   int elementCount() const;

@@ -31,6 +31,19 @@ constexpr const auto& nameTable(ElementKind /*tag*/) {
   return kElementKindNames;
 }
 
+// The constructor of an external force (ExternalForceSpec). Not an ElementKind: it joins no two
+// bodies and has no deformation; it is listed in vehicle.elements beside the suspension elements.
+inline constexpr const char* kExternalForceKind = "external_force";
+
+inline constexpr std::array<NameEntry<ForceFrame>, 2> kForceFrameNames = {{
+    {ForceFrame::Track, "track",
+     "the body's track frame: x along the track, y lateral (left +), z up from the track plane"},
+    {ForceFrame::Body, "body", "the body's own frame (a wheelset: its axle-box frame)"},
+}};
+constexpr const auto& nameTable(ForceFrame /*tag*/) {
+  return kForceFrameNames;
+}
+
 inline constexpr std::array<NameEntry<Direction>, 4> kDirectionNames = {{
     {Direction::Axial, "axial", "along the line between the points (Eq. 30)"},
     {Direction::X, "x",

@@ -9,6 +9,7 @@
 #include "workbench/assessment/spec.hpp"
 #include "workbench/core/error.hpp"
 #include "workbench/profiles/nominal.hpp"
+#include "workbench/suspension/external_force.hpp"
 
 namespace rb::vehicle {
 
@@ -63,6 +64,29 @@ struct ElementSpec {
   SourceLoc loc;
 };
 
+// The frame the direction of an external force is fixed in: the body's track frame (x along the
+// track, y lateral to the left, z up from the track plane, cant included), which follows the body
+// along the track but not its own motion on the suspension, or the body itself (a wheelset: its
+// axle-box frame, which does not spin).
+enum class ForceFrame { Track, Body };
+
+// A force on one body from outside the vehicle model: a wind gust, the lateral push of a
+// wheel-climb rig, the coupler load of a vehicle that is not simulated. Its value F(t) or F(s)
+// (suspension::ForceLaw) acts along `direction` at `point`, so it also exerts its moment about
+// the centre of mass. Lua: external_force{} in vehicle.elements (docs/vehicle.md).
+struct ExternalForceSpec {
+  std::string name;  // unique among the vehicle's elements
+  std::string body;  // the body it acts on
+  // [m] point of application in the body's attachment frame (a wheelset: the axle-box frame),
+  // relative to its centre of mass
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  ForceFrame frame = ForceFrame::Track;
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitY();  // in `frame`; any length > 0
+  suspension::ForceLaw law;
+  SourceLoc loc;
+  SourceLoc table_loc;  // where the law's table is written (its problems are reported there)
+};
+
 // Names of the body coordinates, indexed by vehicle::Coord (kinematics.hpp: kS .. kYaw): the
 // datasets /bodies/<body>/<name> of a result and the keys of vehicle.initial.<body>.
 inline constexpr std::array<const char*, 6> kCoordNames = {"s", "y", "z", "roll", "pitch", "yaw"};
@@ -85,7 +109,8 @@ struct VehicleSpec {
   std::string name;
   std::vector<BodySpec> bodies;
   std::vector<ElementSpec> elements;
-  double speed = 0.0;         // [m/s] forward velocity V0 at t = 0
+  std::vector<ExternalForceSpec> external_forces;  // external_force{} of vehicle.elements
+  double speed = 0.0;                              // [m/s] forward velocity V0 at t = 0
   double acceleration = 0.0;  // [m/s^2] constant longitudinal acceleration a: V(t) = V0 + a t
   double wheel_radius = profiles::kNominalWheelRadius;  // [m] nominal rolling radius r0 (wheelsets)
   double start = 0.0;  // [m] arc length of the vehicle reference point at t = 0
