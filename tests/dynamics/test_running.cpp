@@ -2,9 +2,12 @@
 // against LUT on case 1, flange contact, recoverable failures, creep "none", normal-force coupling.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
+#include <utility>
 
 #include "dyn_fixtures.hpp"
 #include "workbench/contact/derived.hpp"
@@ -287,6 +290,103 @@ TEST(Running, LaggedAndConsistentNormalForces) {
   for (int k = 0; k < 30; ++k) ASSERT_EQ(lag.rhs(0.1, y.data(), d2.data()), 0);
   EXPECT_NEAR(d2[lag.layout().wsRate(0, 0)], d3[lag.layout().wsRate(0, 0)], 1e-6);
   EXPECT_GT(std::abs(d1[lag.layout().wsRate(0, 0)] - d3[lag.layout().wsRate(0, 0)]), 1e-6);
+}
+
+// The LUT next to a contact-point jump (issue 46 section 3, docs/contact_dynamics.md section 3.1):
+// the lateral force the rails are reported to exert on a wheelset is the one the equations of
+// motion apply. A free wheelset (its weight W only) at rest laterally on tangent track: m yddot is
+// the sum of the wheels' reported lateral forces (no other lateral force acts; the centre of mass
+// is the body's reference point, so M_y couples no other coordinate). Swept through the cells of
+// the tread/tread (|y| = 0.23 mm) and tread/root (|y| = 4.99 mm) jumps of S1002/60E1, their
+// neighbours and a cell without a jump. In a jump cell the two branch patches carry the
+// constraint reaction exactly (1e-6 W; before the fix the interpolated point on neither branch
+// made the reported force differ from the applied one by kN); elsewhere the one tread point per
+// wheel matches the vertical and roll components only, and the lateral one agrees to the table's
+// interpolation accuracy (measured up to 1.1 N = 6e-5 W, at the first nodes of the root branch).
+TEST(Running, LutReportedLateralForceIsTheAppliedOneAtContactPointJumps) {
+  dynamics::ContactSpec cs;
+  cs.method = dynamics::ContactMethod::Lut;
+  const Compiled c = compileSpecs(tangentTrack(100), freeWheelset(10), cs);
+  dynamics::ContactVehicleOde ode(*c.vehicle, *c.contact, *c.track);
+  const Eigen::VectorXd y0 = ode.initialState(0.0);
+  const double m = c.vehicle->bodies[0].mass, W = m * 9.81;
+  std::vector<dynamics::WheelOutput> wo(2);
+  std::vector<vehicle::Vector6d> qdd(1);
+  double worst_split = 0.0, worst_single = 0.0;
+  int splits = 0;
+  for (const double side : {1.0, -1.0}) {
+    for (const auto& [from, to] :
+         {std::pair{0.15e-3, 0.35e-3}, std::pair{4.85e-3, 5.15e-3}, std::pair{2.0e-3, 2.2e-3}}) {
+      for (double a = from; a <= to + 1e-12; a += 0.0125e-3) {
+        Eigen::VectorXd y = y0;
+        y[ode.layout().wsPosition(0, 0)] = side * a;
+        ASSERT_EQ(ode.wheelOutputs(0.0, y.data(), wo), 0) << ode.lastError();
+        ASSERT_EQ(ode.bodyAccelerations(0.0, y.data(), qdd), 0) << ode.lastError();
+        const double reported = wo[0].force_y + wo[1].force_y;
+        const double applied = m * qdd[0][vehicle::kY];
+        bool split = false;
+        for (const auto& o : wo) split = split || (o.patch[1].active && !o.patch[1].on_flange);
+        splits += split ? 1 : 0;
+        double& worst = split ? worst_split : worst_single;
+        worst = std::max(worst, std::abs(reported - applied));
+        EXPECT_NEAR(reported, applied, (split ? 1e-6 : 1e-4) * W)
+            << "y = " << side * a * 1e3 << " mm";
+      }
+    }
+  }
+  std::printf(
+      "[ lut jump ] free wheelset: max |reported - applied| lateral force %.3g N in jump "
+      "cells (%d states), %.3g N elsewhere\n",
+      worst_split, splits, worst_single);
+  EXPECT_GE(splits, 30);  // the four jump cells were met (8 states in each)
+}
+
+// Steady curving next to the tread/root jump (issue 46 section 3): a wheelset held in yaw only
+// (tests/dynamics/data/lut_jump_common.lua) settles next to the jump of its outer wheel's contact
+// point at R = 300 m and on the tread at R = 1000 m. In steady curving without cant the rails'
+// lateral forces on it sum to m V^2 / R. Asserted for both methods at both radii: the mean over
+// the steady part within 2 % of m V^2 / R (measured after the fix: KEC 604.34 N, LUT 604.34 N
+// against 604.33 N at R = 300 m; before it the LUT reported 6583.5 N), LUT and KEC within 2 % of
+// each other, and the reported sum steady (standard deviation below 0.5 % of m V^2 / R).
+// At R = 1000 m the LUT's -0.1 % is the interpolation accuracy of its one tread point per wheel
+// (see the test above).
+TEST(Running, LutWheelForcesNextToTheTreadRootJump) {
+  for (const double R : {300.0, 1000.0}) {
+    double mean_of[2] = {0.0, 0.0};
+    for (const char* method : {"kec", "lut"}) {
+      const std::string file =
+          "tests/dynamics/data/lut_jump_r" + std::to_string(std::lround(R)) + "_" + method + ".lua";
+      const Compiled c = compileScenario(file);
+      dynamics::ContactVehicleOde ode(*c.vehicle, *c.contact, *c.track);
+      const Trace tr = run(ode, c.spec.solver, 15.0, 0.01);
+      ASSERT_TRUE(tr.result.ok) << file << ": " << tr.result.message;
+      const std::size_t ws = 1;  // body 0 is the frame
+      const double m = c.vehicle->bodies[ws].mass, V = c.vehicle->speed;
+      const double target = m * V * V / R;
+      std::vector<dynamics::WheelOutput> wo(2);
+      double sum = 0.0, sum2 = 0.0, ymean = 0.0;
+      int n = 0;
+      for (std::size_t k = 0; k < tr.t.size(); ++k) {
+        if (tr.t[k] < 10.0) continue;  // in the curve from t = 5 s, settled by t = 8 s
+        ASSERT_EQ(ode.wheelOutputs(tr.t[k], tr.y[k].data(), wo), 0) << ode.lastError();
+        const double f = wo[0].force_y + wo[1].force_y;
+        sum += f;
+        sum2 += f * f;
+        ymean += tr.q[k][ws][vehicle::kY];
+        ++n;
+      }
+      const double mean = sum / n, sd = std::sqrt(std::max(0.0, sum2 / n - mean * mean));
+      ymean /= n;
+      mean_of[std::string(method) == "lut" ? 1 : 0] = mean;
+      std::printf(
+          "[ lut jump ] R = %.0f m, %s: y = %.4f mm, sum of lateral rail forces %.2f N "
+          "(std %.3g N), m V^2 / R = %.2f N (%+.3f %%)\n",
+          R, method, ymean * 1e3, mean, sd, target, 100.0 * (mean / target - 1.0));
+      EXPECT_NEAR(mean, target, 0.02 * target) << file;
+      EXPECT_LT(sd, 0.005 * target) << file;
+    }
+    EXPECT_NEAR(mean_of[1], mean_of[0], 0.02 * mean_of[0]) << "R = " << R << " m: LUT vs KEC";
+  }
 }
 
 }  // namespace

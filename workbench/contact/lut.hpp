@@ -113,6 +113,17 @@ struct LutSample {
   bool inside = true;  // false: (y, xi_g) outside the grid, values extrapolated from the end cells
 };
 
+// The tread contact point of one wheel on each side of a contact-point jump (treadBranches): in a
+// table cell whose corner nodes put that wheel's contact point on different branches of Eq. (12)
+// (a tread/root or tread/tread jump between them), the interpolant of the cell blends two
+// different contact points into one that is on neither branch. value[0] is the branch nearer the
+// centred wheelset (fewer jumps from y = 0), value[1] the other; each is interpolated from the
+// nodes of its own branch (extrapolated into the cell from the neighbouring cell of that branch).
+struct LutTreadBranches {
+  bool split = false;  // the cell holds a jump of this wheel's contact point
+  std::array<std::array<double, kTreadQuantities>, 2> value{};
+};
+
 // One channel with first and second derivatives.
 struct LutValue {
   double v = 0.0, dy = 0.0, dxi = 0.0, dyy = 0.0, dyxi = 0.0, dxixi = 0.0;
@@ -148,6 +159,16 @@ class LutTable {
   LutValue evalChannel(std::size_t channel, double y, double xi_g) const;
   // z and phi only (the LUT constraints of Eq. 17), with first and second derivatives.
   void evalZPhi(double y, double xi_g, LutValue& z, LutValue& phi) const;
+  // The tread contact points of wheel `side` on both branches of a contact-point jump in the cell
+  // of (y, xi_g) (LutTreadBranches); out.split = false (value untouched) in a cell without one.
+  // Allocation-free.
+  void treadBranches(double y, double xi_g, Side side, LutTreadBranches& out) const;
+  // Branch of Eq. (12) the contact point of wheel `side` is on at a node: the signed count of that
+  // wheel's contact-point jumps (|delta s_w| > the config's jump_threshold) between the centre
+  // node and this one along its gauge line (+ toward +y).
+  int branch(std::size_t iy, std::size_t ig, Side side) const {
+    return branch_[(ig * ny_ + iy) * 2 + (side == Side::Left ? 0 : 1)];
+  }
 
   // Stored node value (the solved geometry, no interpolation) and flags.
   double node(std::size_t channel, std::size_t iy, std::size_t ig) const {
@@ -173,6 +194,10 @@ class LutTable {
   template <bool kDerivatives>
   void evalRangeLinear(const Cell& c, LutSample& out, std::size_t first, std::size_t last) const;
   LutValue channelAtLinear(std::size_t channel, const Cell& c) const;
+  // treadBranches: channel `ch` of wheel k (0 left, 1 right) on its branch b, along gauge line jj
+  // at the cell's y (false: no node of the cell on that line is on branch b).
+  bool branchLineValue(std::size_t ch, std::size_t k, const Cell& c, std::size_t jj, int b,
+                       double& v) const;
 
   GridSpec y_, g_;
   std::size_t ny_ = 0, ng_ = 0;
@@ -180,6 +205,8 @@ class LutTable {
   // Node data: ((ig * ny + iy) * kLutChannels + c) * 4 + {f, f_y, f_xi, f_yxi}.
   std::vector<double> data_;
   std::vector<std::uint8_t> flags_;
+  std::vector<std::int8_t> branch_;  // [(ig * ny + iy) * 2 + side], see branch()
+  double jump_threshold_ = 1.0e-3;   // [m] the config's: branches closer than this are one
   std::vector<LutJump> jumps_;
   std::vector<TwoPointContact> two_point_;
   std::array<bool, 2> has_flange_{false, false};

@@ -227,6 +227,31 @@ void detectJumps(const GaugeLine& gl, std::size_t i0, double xi, double jump_thr
   }
 }
 
+// Branch labels of the line (LutTable::branch): per side, 0 at the centre node i0, and one more
+// (+y) or less (-y) past every jump of that side's contact point, |delta s_w| > jump_threshold,
+// between two solved neighbours. A change of contact mode alone (interior/edge, s_w continuous)
+// and a global-search restart do not change the branch; an unsolved node carries the neighbour's
+// values it was copied from, and its label.
+void assignBranches(const GaugeLine& gl, std::size_t i0, double jump_threshold,
+                    std::int8_t* labels) {
+  const std::size_t ny = gl.line.size();
+  const auto jumped = [&](std::size_t a, std::size_t b, std::size_t k) {
+    return gl.solved[a] && gl.solved[b] &&
+           std::abs(gl.line[b].tread.s[2 * k] - gl.line[a].tread.s[2 * k]) > jump_threshold;
+  };
+  for (std::size_t k = 0; k < 2; ++k) {
+    labels[i0 * 2 + k] = 0;
+    for (std::size_t iy = i0 + 1; iy < ny; ++iy) {
+      const int l = labels[(iy - 1) * 2 + k] + (jumped(iy - 1, iy, k) ? 1 : 0);
+      labels[iy * 2 + k] = static_cast<std::int8_t>(std::min(l, 127));
+    }
+    for (std::size_t iy = i0; iy-- > 0;) {
+      const int l = labels[(iy + 1) * 2 + k] - (jumped(iy + 1, iy, k) ? 1 : 0);
+      labels[iy * 2 + k] = static_cast<std::int8_t>(std::max(l, -127));
+    }
+  }
+}
+
 // Interior flange indentation of a node on `side` (Eq. 15), or -1 when there is none or it is not
 // a separate point (within jump_threshold of the tread contact).
 double interiorIndentation(const NodeSolution& ns, Side side, double jump_threshold) {
@@ -381,6 +406,8 @@ LutTable buildLut(const ContactGeometryConfig& config) {
   // Raw node values vals[(ig * ny + iy) * C + c].
   std::vector<double> vals(ny * ng * kLutChannels, 0.0);
   tab.flags_.assign(ny * ng, 0);
+  tab.branch_.assign(ny * ng * 2, 0);
+  tab.jump_threshold_ = config.jump_threshold;
   std::vector<std::vector<bool>> breaks(ng, std::vector<bool>(ny, false));
   const std::size_t i0 = centreNode(config.lut_y);
 
@@ -400,12 +427,13 @@ LutTable buildLut(const ContactGeometryConfig& config) {
     }
     copyUnsolvedNodes(gl.solved, i0, config.lut_y, xi, line_vals, st);
     detectJumps(gl, i0, xi, config.jump_threshold, breaks[ig], tab.jumps_);
+    assignBranches(gl, i0, config.jump_threshold, &tab.branch_[ig * ny * 2]);
     findTwoPointContacts(solver, gl, i0, config.lut_y, xi, config.jump_threshold, tab.two_point_);
   }
 
   const std::vector<double> fy = slopesAlongY(vals, breaks, config.lut_y, ng);
   tab.data_ = hermiteNodeData(vals, fy, ny, config.lut_gauge, ng);
-  st.bytes = tab.data_.size() * sizeof(double) + tab.flags_.size() +
+  st.bytes = tab.data_.size() * sizeof(double) + tab.flags_.size() + tab.branch_.size() +
              tab.jumps_.size() * sizeof(LutJump) + tab.two_point_.size() * sizeof(TwoPointContact);
   st.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return tab;

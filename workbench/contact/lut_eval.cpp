@@ -4,8 +4,10 @@
 #include "workbench/contact/lut.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace rb::contact {
 namespace {
@@ -282,6 +284,75 @@ void LutTable::evalZPhi(double y, double xi_g, LutValue& z, LutValue& phi) const
   const Cell c = locate(y, xi_g);  // one cell lookup for both channels
   z = channelAt(kLutZ, c);
   phi = channelAt(kLutPhi, c);
+}
+
+// ---- Contact-point branches (treadBranches) ----------------------------------------------------
+//
+// Where a wheel's contact point jumps between two y nodes (Eq. 12 changes branch: the S1002 tread
+// to its flange root at |y| = 4.99 mm, tread to tread at 0.23 mm, docs/contact_geometry.md), the
+// real contact point is on one branch on each side of the jump and on both at the jump (two-point
+// contact). The interpolant of the cell blends the two nodes' points into one on neither branch
+// (s_w, contact angle, radius halfway between tread and root): a contact patch there is not a
+// contact of the profiles. Here each branch is interpolated from its own nodes alone: within the
+// line where both nodes of the cell are on it, otherwise by extending the neighbouring cell of
+// that branch into this one (the Hermite cubic, or the linear segment, of that cell at t - 1 or
+// t + 1; the node's value when the branch has a single node there). Along xi_g the branch's values
+// on the two gauge lines are blended linearly (the modified Akima slopes of the stored data mix the
+// branches where the jump moves with the gauge).
+
+bool LutTable::branchLineValue(std::size_t ch, std::size_t k, const Cell& c, std::size_t jj, int b,
+                               double& v) const {
+  const auto on = [&](std::size_t iy) { return branch_[(jj * ny_ + iy) * 2 + k] == b; };
+  const auto node = [&](std::size_t iy) {
+    return &data_[((jj * ny_ + iy) * kLutChannels + ch) * 4];
+  };
+  // The interpolant of line jj on the y interval [i0, i0 + 1] at unit coordinate t.
+  const auto interval = [&](std::size_t i0, double t) {
+    const double *p0 = node(i0), *p1 = node(i0 + 1);
+    if (interp_ == TableInterpolation::Linear) return (1.0 - t) * p0[0] + t * p1[0];
+    const Basis by(t);
+    return by.A[0] * p0[0] + by.A[1] * p1[0] + hy_ * (by.C[0] * p0[1] + by.C[1] * p1[1]);
+  };
+  const std::size_t i = c.i;
+  const bool lo = on(i), hi = on(i + 1);
+  if (lo && hi) {
+    v = interval(i, c.t);
+  } else if (hi) {
+    v = i + 2 < ny_ && on(i + 2) ? interval(i + 1, c.t - 1.0) : node(i + 1)[0];
+  } else if (lo) {
+    v = i >= 1 && on(i - 1) ? interval(i - 1, c.t + 1.0) : node(i)[0];
+  }
+  return lo || hi;
+}
+
+void LutTable::treadBranches(double y, double xi_g, Side side, LutTreadBranches& out) const {
+  out.split = false;
+  if (branch_.empty()) return;
+  const Cell c = locate(y, xi_g);
+  const std::size_t k = side == Side::Left ? 0 : 1;
+  const bool two_lines = ng_ >= 2 && c.u > 0.0;  // the second gauge line carries weight
+  // The branches of the corners that carry weight: the first one and the first other one.
+  std::array<int, 2> b{branch(c.i, c.j, side), 0};
+  bool mixed = false;
+  for (std::size_t n = 1; n < (two_lines ? 4U : 2U) && !mixed; ++n) {
+    const int l = branch(c.i + n % 2, c.j + n / 2, side);
+    mixed = l != b[0];
+    b[1] = l;
+  }
+  if (!mixed) return;
+  if (std::abs(b[1]) < std::abs(b[0])) std::swap(b[0], b[1]);  // nearer the centre first
+  for (std::size_t r = 0; r < 2; ++r) {
+    for (std::size_t q = 0; q < kTreadQuantities; ++q) {
+      const std::size_t ch = lutChannel(side, static_cast<TreadQuantity>(q));
+      double v0 = 0.0, v1 = 0.0;
+      const bool a0 = branchLineValue(ch, k, c, c.j, b[r], v0);
+      const bool a1 = two_lines && branchLineValue(ch, k, c, c.j + 1, b[r], v1);
+      out.value[r][q] = a0 && a1 ? (1.0 - c.u) * v0 + c.u * v1 : (a0 ? v0 : v1);
+    }
+  }
+  // Labels that differ by a jump elsewhere on the other gauge line can name one point: no split.
+  constexpr auto kSw = static_cast<std::size_t>(TreadQuantity::Sw);
+  out.split = std::abs(out.value[0][kSw] - out.value[1][kSw]) > jump_threshold_;
 }
 
 }  // namespace rb::contact

@@ -302,6 +302,8 @@ class TableIo {
     w.flag(t.has_flange_[1]);
     w.vec(t.data_);
     w.vec(t.flags_);
+    w.vec(t.branch_);
+    w.f64(t.jump_threshold_);
     w.u64(t.jumps_.size());
     for (const LutJump& j : t.jumps_) {
       w.f64(j.xi_g);
@@ -339,6 +341,8 @@ class TableIo {
     t.has_flange_[1] = r.flag();
     t.data_ = r.vec<double>();
     t.flags_ = r.vec<std::uint8_t>();
+    t.branch_ = r.vec<std::int8_t>();
+    t.jump_threshold_ = r.f64();
     const std::size_t nj = r.count(6 * sizeof(std::uint64_t));
     for (std::size_t i = 0; i < nj && r.ok(); ++i) {
       LutJump j;
@@ -367,7 +371,7 @@ class TableIo {
     // Consistency of the sizes the evaluation relies on.
     const std::size_t nodes = t.ny_ * t.ng_;
     if (t.ny_ < 2 || t.ng_ < 1 || t.ny_ != t.y_.count() || t.ng_ != t.g_.count() ||
-        t.flags_.size() != nodes || nodes / t.ng_ != t.ny_ ||
+        t.flags_.size() != nodes || t.branch_.size() != 2 * nodes || nodes / t.ng_ != t.ny_ ||
         t.data_.size() / (kLutChannels * 4) != nodes || t.data_.size() % (kLutChannels * 4) != 0 ||
         !(t.hy_ > 0.0) || !(t.hg_ > 0.0)) {
       return std::nullopt;

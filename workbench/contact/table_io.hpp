@@ -59,8 +59,9 @@ namespace rb::contact {
 // are then rebuilt, never reused. It is also part of a study case's input hash
 // (workbench/study/runner.cpp).
 inline constexpr std::uint64_t kTableAlgorithmVersion = 1;
-// Layout of the cache file (see above); bumped when the layout changes.
-inline constexpr std::uint64_t kTableFormatVersion = 2;
+// Layout of the cache file (see above); bumped when the layout changes (3: the LUT's per-node
+// contact-point branches and jump threshold, LutTable::branch).
+inline constexpr std::uint64_t kTableFormatVersion = 3;
 
 enum class TableKind { Lut, Kec };
 

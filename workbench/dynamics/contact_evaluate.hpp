@@ -28,7 +28,8 @@ double wheelLiftOf(const ContactModel& c, const WheelsetWork& ww, const vehicle:
                    int side);
 
 // Wheel lift: the constraint normal force of a wheel (KEC: both patches, which share the wheel's
-// lambda, Eq. 26; LUT: the tread patch, the Hertz flange force being applied) below the threshold
+// lambda, Eq. 26; LUT: the tread patch, or the two next to a contact-point jump, the Hertz flange
+// force being applied) below the threshold
 // means the constraint pulls the wheel onto the rail, which no wheel/rail pair can do. The state
 // is refused as recoverable: an adaptive method retries a smaller step, so an overshooting trial
 // step is not taken for a lift, while a real lift stops the run here. Output evaluations only
@@ -38,11 +39,12 @@ template <ContactMethod kMethod>
 [[gnu::always_inline]] inline int checkWheelLift(const ContactModels& models, const StageInput& in,
                                                  const WheelsetWork& ww, ContactWorkspace& work,
                                                  bool& lift) {
-  constexpr int kConstraintPatches = kMethod == ContactMethod::Kec ? 2 : 1;
   for (int s = 0; s < 2; ++s) {
+    // LUT: slot 1 is a constraint patch when the wheel's tread force is split over a jump.
+    const int constraint_patches = kMethod == ContactMethod::Kec || ww.lut_split[s] ? 2 : 1;
     double qn = 0.0;
     bool any = false;
-    for (int p = 0; p < kConstraintPatches; ++p) {
+    for (int p = 0; p < constraint_patches; ++p) {
       const Patch& patch = ww.patch[s][p];
       if (!patch.active) continue;
       any = true;

@@ -211,24 +211,49 @@ void kecWheelPatches(const ContactModel& c, const WheelsetFrame& wf, double V, i
 
 // ---- LUT ---------------------------------------------------------------------------------------
 
-// The tread patch of one wheel from the LUT (Eq. 17-18).
+// A tread patch of one wheel from the LUT (Eq. 17-18) in slot `slot`: tread = the wheel's
+// kTreadQuantities tread values (TreadQuantity order) from the table's interpolant, or from one
+// branch of a contact-point jump (LutTreadBranches).
 template <class Law>
-void lutTreadPatch(const ContactModel& c, const WheelsetFrame& wf, double V, int side,
-                   WheelsetWork& ww) {
+void lutTreadPatch(const ContactModel& c, const WheelsetFrame& wf, double V, int side, int slot,
+                   const double* tread, WheelsetWork& ww) {
   using contact::TreadQuantity;
-  const contact::Side sd = sideOf(side);
   const double sigma = contact::kSideSign[side];
-  const auto tread = [&](TreadQuantity q) { return treadValue(ww.lut, sd, q); };
-  const double gamma = tread(TreadQuantity::Gamma);
-  const PatchGeometry g{tread(TreadQuantity::Sw),
-                        tread(TreadQuantity::Sr),
+  const auto value = [tread](TreadQuantity q) { return tread[static_cast<std::size_t>(q)]; };
+  const double gamma = value(TreadQuantity::Gamma);
+  const PatchGeometry g{value(TreadQuantity::Sw),
+                        value(TreadQuantity::Sr),
                         gamma,
-                        tread(TreadQuantity::Radius),
-                        tread(TreadQuantity::KwTrans),
-                        tread(TreadQuantity::KwLong),
-                        tread(TreadQuantity::KrTrans),
+                        value(TreadQuantity::Radius),
+                        value(TreadQuantity::KwTrans),
+                        value(TreadQuantity::KwLong),
+                        value(TreadQuantity::KrTrans),
                         rotX(ww.cos_irr, ww.sin_irr, -sigma * std::sin(gamma), std::cos(gamma))};
-  setupPatch<Law>(ww.patch[side][0], g, sigma, c, wf, V);
+  setupPatch<Law>(ww.patch[side][slot], g, sigma, c, wf, V);
+}
+
+// The tread patches of one wheel. Away from a contact-point jump, the one tread contact of the
+// interpolated table. In a table cell that holds a jump of this wheel's contact point, the
+// interpolant's point is on neither branch of Eq. (12) (LutTable::treadBranches): the wheel then
+// has a tread patch on each branch, slot 0 the one nearer the centred wheelset and slot 1 the
+// other, whose normal forces lutNormalMap splits so that together they are the constraint
+// reaction -C_q^T lambda (Eq. 19), as the KEC splits its band (Eq. 26). Slot 1 is the Hertz
+// flange's when the flange indents (lutFlangePatch, called first): the wheel keeps the one
+// interpolated point then.
+template <class Law>
+void lutTreadPatches(const ContactModel& c, const WheelsetFrame& wf, double V, int side,
+                     WheelsetWork& ww) {
+  const contact::LutTreadBranches& br = ww.lut_branches[side];
+  const bool split = br.split && !ww.patch[side][1].active;
+  ww.lut_split[side] = split;
+  if (!split) {
+    const double* tread =
+        &ww.lut.value[contact::lutChannel(sideOf(side), contact::TreadQuantity::Sw)];
+    lutTreadPatch<Law>(c, wf, V, side, 0, tread, ww);
+    return;
+  }
+  lutTreadPatch<Law>(c, wf, V, side, 0, br.value[0].data(), ww);
+  lutTreadPatch<Law>(c, wf, V, side, 1, br.value[1].data(), ww);
 }
 
 // The Hertz flange contact of one wheel (Eq. 20-21) when its indentation is positive: the applied
@@ -286,8 +311,8 @@ int contactPatches(const ContactModels& models, const StageInput& in, WheelsetWo
     for (int side = 0; side < 2; ++side) kecWheelPatches<Law>(c, wf, in.speed, side, ww);
   } else {
     for (int side = 0; side < 2; ++side) {
-      lutTreadPatch<Law>(c, wf, in.speed, side, ww);
       lutFlangePatch<Law>(c, wf, in.speed, side, ww);
+      lutTreadPatches<Law>(c, wf, in.speed, side, ww);
     }
     if (const int rc = lutNormalMap(models, in, ww, work); rc != 0) return rc;
   }

@@ -1,5 +1,6 @@
 #include "workbench/dynamics/contact_stages.hpp"
 
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -140,6 +141,7 @@ int lutConstraints(const ContactModels& models, const StageInput& in, WheelsetWo
   contact::LutValue zv, pv;
   lut.evalZPhi(ybar, xi.g, zv, pv);
   readTreadsAndFlangeIndentations(lut, ybar, xi.g, ww.lut);
+  for (int s = 0; s < 2; ++s) lut.treadBranches(ybar, xi.g, sideOf(s), ww.lut_branches[s]);
   ww.lut_ybar = ybar;
   ww.lut_xig = xi.g;
   if (!zv.inside || !ww.lut.inside) {
@@ -272,14 +274,61 @@ int freeBodyAccelerations(const ContactModels& models, const StageInput& in, dou
   return 0;
 }
 
+namespace {
+
+// lutNormalMap with a wheel whose tread force is split over the two branches of a contact-point
+// jump (lutTreadPatches): three or four tread patches share the reaction. Their unit normal
+// forces' (y, z, roll) components A must reproduce those of N lambda for every lambda, A Q =
+// N_yzphi, the y row included (the two-patch map of lutNormalMap cannot hold it: there the
+// interpolated constraint slope and the points' normals disagree, and the lateral force the rails
+// were reported to exert was not the one applied). Three patches: the unique solution; four (both
+// wheels split): the least-norm one. False when A is singular.
+bool lutBranchNormalMap(WheelsetWork& ww) {
+  std::array<Patch*, 4> p{};
+  int k = 0;
+  for (int s = 0; s < 2; ++s) {
+    p[static_cast<std::size_t>(k++)] = &ww.patch[s][0];
+    if (ww.lut_split[s]) p[static_cast<std::size_t>(k++)] = &ww.patch[s][1];
+  }
+  const Eigen::Matrix<double, 3, 2> rhs = ww.N.topRows<3>();
+  if (k == 3) {
+    Eigen::Matrix3d A;
+    for (int m = 0; m < 3; ++m) A.col(m) = p[static_cast<std::size_t>(m)]->gn.head<3>();
+    const double det = A.determinant();
+    if (!(std::abs(det) > 1e-12)) return false;
+    const Eigen::Matrix<double, 3, 2> Q = A.inverse() * rhs;
+    for (int m = 0; m < 3; ++m) p[static_cast<std::size_t>(m)]->ql = Q.row(m).transpose();
+    return true;
+  }
+  Eigen::Matrix<double, 3, 4> A;
+  for (int m = 0; m < 4; ++m) A.col(m) = p[static_cast<std::size_t>(m)]->gn.head<3>();
+  const Eigen::Matrix3d AAt = A * A.transpose();
+  const double det = AAt.determinant();
+  if (!(std::abs(det) > 1e-24)) return false;
+  const Eigen::Matrix<double, 4, 2> Q = A.transpose() * (AAt.inverse() * rhs);
+  for (int m = 0; m < 4; ++m) p[static_cast<std::size_t>(m)]->ql = Q.row(m).transpose();
+  return true;
+}
+
+}  // namespace
+
 int lutNormalMap(const ContactModels& models, const StageInput& in, WheelsetWork& ww,
                  ContactWorkspace& work) {
+  ww.N = -ww.G.transpose();
+  if (ww.lut_split[0] || ww.lut_split[1]) {
+    if (lutBranchNormalMap(ww)) return 0;
+    work.fail(ContactFailure::Singular, models.vehicle.bodies[ww.body].name,
+              "wheelset '" + models.vehicle.bodies[ww.body].name +
+                  "': the tread normal directions on both sides of a contact-point jump do not "
+                  "span lateral, vertical and roll at t = " +
+                  std::to_string(in.t) + " s");
+    return 1;
+  }
   Eigen::Matrix2d A;
   for (int s = 0; s < 2; ++s) {
     A(0, s) = ww.patch[s][0].gn(1);  // z component of the unit normal force
     A(1, s) = ww.patch[s][0].gn(2);  // roll component
   }
-  ww.N = -ww.G.transpose();
   const double det = A.determinant();
   if (!(std::abs(det) > 1e-12)) {
     work.fail(ContactFailure::Singular, models.vehicle.bodies[ww.body].name,

@@ -169,7 +169,12 @@ struct WheelsetWork {
   // LUT: rates of the table entry (y - xi_a, xi_g) (Eq. 18) and of the table's z and phi.
   double ybar_dot = 0.0, xig_dot = 0.0, zbar_dot = 0.0, phibar_dot = 0.0;
   double lut_ybar = 0.0, lut_xig = 0.0;  // the LUT entry of `lut`
-  DescribedPoint described[2][2];        // [side][0 A, 1 B]
+  // LUT, per wheel: its tread contact point on both sides of a contact-point jump in the table
+  // cell of the entry (LutTable::treadBranches), and whether the wheel's constraint normal force
+  // is split between them (tread patches in slots 0 and 1; lutNormalMap).
+  contact::LutTreadBranches lut_branches[2];
+  bool lut_split[2] = {false, false};
+  DescribedPoint described[2][2];  // [side][0 A, 1 B]
   // Acceleration-level constraints G qddot = gamma on z and phi.
   Eigen::Matrix<double, 2, 5> G = Eigen::Matrix<double, 2, 5>::Zero();
   Eigen::Vector2d gamma = Eigen::Vector2d::Zero();
