@@ -25,7 +25,10 @@ namespace rb::dynamics {
 // a prescribed (1) spin (vehicle/layout.hpp); kTable: it builds a contact table (profiles.
 // refined_tables applies); kCoupling: its creep forces are coupled to constraint normal forces
 // (contact.normal_forces applies); kFlangeContact: the effect label of its flange contact;
-// kPatchRole: what output patch 0 and 1 are; kPatches: the /contact@patches description.
+// kPatchRole: what output patch 0 and 1 are; kPatches: the /contact@patches description;
+// kBandMonitor: its two-point contact is a regularised band (Eq. 26) whose lateral force can
+// oscillate by itself in steady flanging, so a run watches its wheels for that (run/band_
+// oscillation.hpp).
 struct KecMethod {
   static constexpr ContactMethod kMethod = ContactMethod::Kec;
   static constexpr std::string_view kName = "kec";
@@ -41,6 +44,7 @@ struct KecMethod {
       "KEC: patch0 = the contact point, or inside a regularised tread-flange band point A "
       "(field-side end, weight 1 - w); patch1 = point B (flange-side end, weight w), active only "
       "inside the band (Eq. 26)";
+  static constexpr bool kBandMonitor = true;
 };
 
 struct LutMethod {
@@ -57,6 +61,7 @@ struct LutMethod {
   static constexpr std::string_view kPatches =
       "LUT: patch0 = the tread contact (Eq. 17); patch1 = the Hertz flange contact (Eq. 20-21), "
       "active while the flange indentation is positive";
+  static constexpr bool kBandMonitor = false;
 };
 
 struct ElasticMethod {
@@ -77,6 +82,7 @@ struct ElasticMethod {
       "elastic: every penetrating minimum of the wheel-rail gap is a patch (contact_count per "
       "wheel); patch0 = the tread patch with the largest normal force, patch1 = the flange patch "
       "with the largest normal force; the wheel's totals sum every patch";
+  static constexpr bool kBandMonitor = false;
 };
 
 template <class... Methods>
@@ -95,6 +101,7 @@ struct ContactMethodInfo {
   std::string_view flange_contact;
   std::array<std::string_view, 2> patch_role{};
   std::string_view patches;
+  bool band_monitor = false;
 };
 
 template <class... Methods>
@@ -102,7 +109,8 @@ constexpr std::array<ContactMethodInfo, sizeof...(Methods)> contactMethodInfos(
     MethodList<Methods...>) {
   return {
       {{Methods::kMethod, Methods::kName, Methods::kWheelsetDof, Methods::kTable,
-        Methods::kCoupling, Methods::kFlangeContact, Methods::kPatchRole, Methods::kPatches}...}};
+        Methods::kCoupling, Methods::kFlangeContact, Methods::kPatchRole, Methods::kPatches,
+        Methods::kBandMonitor}...}};
 }
 inline constexpr auto kContactMethodInfos = contactMethodInfos(ContactMethods{});
 

@@ -284,6 +284,8 @@ VehicleOutputs::VehicleOutputs(const Model& m, const RunVehicle& v, vehicle::Veh
       for (std::size_t side = 0; side < 2; ++side)
         for (std::size_t r = 0; r < e->extra_check[side].size(); ++r)
           answers_.check[side][r + 1] = e->extra_check[side][r] != 0;
+    if (dynamics::methodInfo(v.contact->method).band_monitor)
+      band_.resize(2 * v.contact->wheelsets.size());
   }
 }
 
@@ -327,6 +329,10 @@ double* VehicleOutputs::sample(double t, const double* y, double* out) {
       ws_s_.push_back(q_[static_cast<std::size_t>(b)][vehicle::kS]);
     answers_.update(state_.wheelOutputs(), ws_s_, rails_);
   }
+  for (std::size_t i = 0; i < band_.size() && i < state_.wheelOutputs().size(); ++i) {
+    const dynamics::WheelOutput& w = state_.wheelOutputs()[i];
+    band_[i].add(t, w.force.Y, w.regime == 1);
+  }
   return sampleWheels(state_.wheelOutputs(), t, out, creepage_, patches, rails_, track_);
 }
 
@@ -360,6 +366,18 @@ void VehicleOutputs::writeRailAnswers(io::ResultFile& f, std::vector<std::string
       }
     }
     lines.push_back(line);
+  }
+}
+
+void VehicleOutputs::bandOscillationWarnings(std::vector<std::string>& warnings) const {
+  if (contact_ == nullptr) return;
+  const dynamics::ContactModel& cm = contact_->contact();
+  for (std::size_t i = 0; i < band_.size(); ++i) {
+    const BandOscillation& b = band_[i].result();
+    if (!b.found) continue;
+    const std::string ws =
+        v_.vehicle.bodies[static_cast<std::size_t>(cm.wheelsets[i / 2])].name;
+    warnings.push_back(bandOscillationWarning(ws + (i % 2 == 0 ? " left" : " right") + " wheel", b));
   }
 }
 

@@ -11,6 +11,7 @@
 
 #include "workbench/dynamics/contact_ode.hpp"
 #include "workbench/io/result_file.hpp"
+#include "workbench/run/band_oscillation.hpp"
 #include "workbench/run/compile.hpp"
 #include "workbench/run/simulate.hpp"
 #include "workbench/run/state_outputs.hpp"
@@ -68,6 +69,9 @@ class VehicleOutputs {
   // (transfer_s_<rail>, peak_normal_force_<rail>, peak_normal_force_s_<rail>; none for a
   // transfer that did not happen) and one summary line per wheel into `lines`.
   void writeRailAnswers(io::ResultFile& f, std::vector<std::string>& lines) const;
+  // After the run: a warning per wheel whose band oscillated by itself (band_oscillation.hpp;
+  // methods with ContactMethodInfo::band_monitor only).
+  void bandOscillationWarnings(std::vector<std::string>& warnings) const;
 
  private:
   const Model& m_;
@@ -84,6 +88,7 @@ class VehicleOutputs {
   bool track_ = false;  // the track under the rail: its channels per wheel
   RailAnswers answers_;
   std::vector<double> ws_s_;  // s of each wheelset at the output time
+  std::vector<BandOscillationMonitor> band_;  // per wheel; empty: not watched
 };
 
 }  // namespace rb::run

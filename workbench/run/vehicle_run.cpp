@@ -242,6 +242,11 @@ void writeContactCounters(const Model& m, const std::vector<RunPart>& parts, io:
   writeContactStats(m, cs, creepage, f, out);
   const bool several = parts.size() > 1;
   for (const auto& p : parts) {
+    std::vector<std::string> band;
+    p.outputs->bandOscillationWarnings(band);
+    for (auto& w : band) out.warnings.push_back(several ? p.v->name + ": " + w : std::move(w));
+  }
+  for (const auto& p : parts) {
     std::vector<std::string> lines;
     p.outputs->writeRailAnswers(f, lines);
     if (lines.empty()) continue;
