@@ -117,21 +117,11 @@ void buildAssessment(const Node& n, assessment::AssessmentSpec& a, Diagnostics& 
   a.sample_every = r.number("sample_every");
   a.floor_positions = floorPositions(r);
   a.alpha = r.number("alpha");
-  if (r.has("alpha") && a.alpha <= 0)
-    r.error(*r.value("alpha"),
-            "alpha must be in (0, 1] (omit it to take it from vehicle.category), got " +
-                formatNumber(a.alpha));
   a.sections = sections(r);
   a.flange_angle = r.number("flange_angle");
   a.mu = r.number("mu");
-  if (r.has("mu") && a.mu <= 0)
-    r.error(*r.value("mu"), "mu must be > 0 (omit it to use contact.mu)");
   a.yq_limit = r.number("yq_limit");
   a.instability_frequency = r.number("instability_frequency");
-  if (r.has("instability_frequency") && a.instability_frequency <= 2.0)
-    r.error(*r.value("instability_frequency"),
-            "instability_frequency must be > 2 Hz (the band-pass is f0 +- 2 Hz), got " +
-                formatNumber(a.instability_frequency));
   a.comfort_limit = r.number("comfort_limit");
 }
 
