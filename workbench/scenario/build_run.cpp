@@ -115,6 +115,7 @@ void buildAssessment(const Node& n, assessment::AssessmentSpec& a, Diagnostics& 
   a.comfort = r.boolean("comfort");
   a.wear = r.boolean("wear");
   a.sample_every = r.number("sample_every");
+  if (const Node* every = r.value("sample_every")) a.sample_every_loc = every->loc;
   a.floor_positions = floorPositions(r);
   a.alpha = r.number("alpha");
   a.sections = sections(r);
@@ -137,6 +138,7 @@ void buildRun(const Node& n, RunSpec& run, Diagnostics& d) {
   if (const Node* out = r.blockValue("output")) {
     Reader o(*out, block("run.output"), "run.output", d);
     run.output_every = o.number("every");
+    if (const Node* every = o.value("every")) run.output_every_loc = every->loc;
     if (o.has("elements")) run.output_elements = o.names("elements");
     run.body_accelerations = o.boolean("body_accelerations");
     run.max_output_samples = o.number("max_samples");
