@@ -45,6 +45,14 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   spec.modules = host.modules();
   Diagnostics d;
   for (const auto& m : host.missingModules()) d.add(m.loc, m.message);
+  // A text with a NUL byte is refused before any block reads it: its builders would open the file
+  // named by the text up to the NUL and report that file's problems instead.
+  Diagnostics nul;
+  reportNulBytes(root, "", nul);
+  if (!nul.empty()) {
+    for (const auto& m : nul.items()) d.add(m.loc, m.message);
+    d.throwIfAny();
+  }
   const auto& incomplete = host.incompleteBlocks();
   auto unchecked = [&](const char* kind) {
     return std::find(incomplete.begin(), incomplete.end(), kind) != incomplete.end();

@@ -623,6 +623,8 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
   LuaHost host(ho);
   Node top = host.runFile(path);
   Diagnostics d;
+  reportNulBytes(top, "", d);  // before a base or a metric's text is used (node.hpp)
+  d.throwIfAny();
   StudySpec st;
   st.file = path;
   const Node* n = top.field("study");
