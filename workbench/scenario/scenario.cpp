@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "workbench/dynamics/names.hpp"
+#include "workbench/dynamics/rails_along_track.hpp"
 #include "workbench/scenario/build.hpp"
 #include "workbench/scenario/lua_host.hpp"
 #include "workbench/scenario/overrides.hpp"
@@ -25,6 +27,21 @@ void checkWheelsetContact(const vehicle::VehicleSpec& v, bool has_contact, bool 
             " and no contact{} block: give contact { method = \"kec\" } (or \"lut\") for "
             "wheel/rail contact, or contact { method = \"guided\" } for wheelsets that follow "
             "the track kinematically (no wheel/rail forces)");
+}
+
+// Rails that change along the track need the elastic method (the constraint methods' tables hold
+// one rail profile). Checked when the scenario is read, so that every command, and every analysis
+// that tries another contact method on the scene (precision --methods), is refused before a run;
+// dynamics::compileContactModel says the same to callers without a scenario.
+void checkRailsAlongTrack(const dynamics::ProfilesSpec& p, const dynamics::ContactSpec& c,
+                          bool has_contact, Diagnostics& d) {
+  if (!has_contact || c.method == dynamics::ContactMethod::Elastic || !dynamics::railsAlongTrack(p))
+    return;
+  d.add(p.loc,
+        std::string("profiles.rail_slices / extra_rails: a rail that changes along the track "
+                    "needs contact.method = \"elastic\" (the ") +
+            std::string(nameOf(c.method)) +
+            " method's tables hold one rail profile for the whole track)");
 }
 
 }  // namespace
@@ -113,6 +130,8 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   if (spec.train.empty() && spec.has_vehicle)
     checkWheelsetContact(spec.vehicle, spec.has_contact, spec.guided, d);
   for (const auto& e : spec.train) checkWheelsetContact(e.vehicle, e.has_contact, e.guided, d);
+  if (spec.train.empty()) checkRailsAlongTrack(spec.profiles, spec.contact, spec.has_contact, d);
+  for (const auto& e : spec.train) checkRailsAlongTrack(e.profiles, e.contact, e.has_contact, d);
   if (spec.guided && spec.has_profiles)
     d.add(spec.profiles.loc,
           "profiles{} has no effect with contact { method = \"guided\" } (no wheel/rail "
