@@ -3,7 +3,8 @@
 -- and the two anti-roll bars of the benchmark data [MB] (50 elements).
 -- Usage:  local wagon = require "vehicles.manchester_wagon1"
 --         vehicle (wagon { speed = 20 })
--- Options (defaults: the full model): speed [m/s] = 20, start [m] = 0,
+-- Options (defaults: the full model): speed [m/s] = 20, start [m] = 0, acceleration [m/s^2]
+--   (vehicle.acceleration, default 0),
 --   bumpstops = false        leaves out the two lateral bump stops (2 elements fewer)
 --   anti_roll_bar = false    leaves out the two anti-roll bars: the paper's Table 4 alone (48
 --                            elements with the bump stops)
@@ -27,6 +28,15 @@
 -- the lower one ("to"), so a positive vertical deflection is compression.
 return function(opts)
   opts = opts or {}
+  -- An option this file does not take would be dropped silently (a misspelt speed, a prescribed
+  -- acceleration): refused at the line that gives it (level 2: the caller's).
+  local known = { speed = true, start = true, acceleration = true, bumpstops = true, anti_roll_bar = true, series_dampers = true, primary_longitudinal_stiffness = true }
+  for k in pairs(opts) do
+    if not known[k] then
+      error("vehicles.manchester_wagon1: unknown option '" .. tostring(k) .. "' (options: "
+            .. "speed, start, acceleration, bumpstops, anti_roll_bar, series_dampers, primary_longitudinal_stiffness)", 2)
+    end
+  end
   local with_bumpstops = opts.bumpstops ~= false
   local with_series = opts.series_dampers ~= false
   local with_anti_roll = opts.anti_roll_bar ~= false
@@ -192,6 +202,7 @@ return function(opts)
     -- suspension, as Iwnicki 1998 describes it; the paper itself was not at hand).
     category = "passenger",
     start = opts.start or 0,
+    acceleration = opts.acceleration,  -- nil: the engine's default 0 (no speed ramp)
     bodies = bodies,
     elements = elements,
     groups = groups,

@@ -11,7 +11,7 @@
 -- the single wheelset at -8.83 mm on R = 500 m, where its Table 6 puts the wagon's leading
 -- wheelsets (-8.83 mm): the single wheelset behaves as a leading wheelset, in flange contact.
 -- Options: speed [m/s] = 10, start [m] = 0 (the frame centre's start position; the wheelset is
---   1.28 m ahead of it),
+--   1.28 m ahead of it), acceleration [m/s^2] (vehicle.acceleration, default 0),
 --   frame = "bogie" (default, above) | "centred": the frame on the centreline at the wheelset
 --           itself (a wheelset in the middle of a bogie, held by the primary suspension without
 --           the frame's yaw against the curve), kept as a variant:
@@ -22,6 +22,15 @@
 -- Vehicle System Dynamics 30, 1998).
 return function(opts)
   opts = opts or {}
+  -- An option this file does not take would be dropped silently (a misspelt speed, a prescribed
+  -- acceleration): refused at the line that gives it (level 2: the caller's).
+  local known = { speed = true, start = true, acceleration = true, frame = true }
+  for k in pairs(opts) do
+    if not known[k] then
+      error("vehicles.single_wheelset: unknown option '" .. tostring(k) .. "' (options: "
+            .. "speed, start, acceleration, frame)", 2)
+    end
+  end
   local frame = opts.frame or "bogie"
   assert(frame == "bogie" or frame == "centred",
          "single_wheelset: frame must be \"bogie\" or \"centred\", got " .. tostring(frame))
@@ -63,6 +72,7 @@ return function(opts)
     speed = opts.speed or 10,  -- [m/s] paper case 1: V = 10 m/s
     wheel_radius = r0,
     start = opts.start or 0,
+    acceleration = opts.acceleration,  -- nil: the engine's default 0 (no speed ramp)
     bodies = {
       -- The frame's mass plays no role (its motion is prescribed); 1 kg satisfies the schema.
       body { name = "frame", kind = "frame", mass = 1, inertia = { 1, 1, 1 }, x = 0,

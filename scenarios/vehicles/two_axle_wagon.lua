@@ -7,9 +7,19 @@
 -- mode's, Wickens, "Fundamentals of rail vehicle dynamics", 2003, ch. 6), well below their
 -- wheelset hunting speed: the stability commands must report it (docs/stability.md).
 -- Usage:  vehicle ((require "vehicles.two_axle_wagon") { speed = 10 })
--- Options: speed [m/s] = 10, start [m] = 0.
+-- Options: speed [m/s] = 10, start [m] = 0, acceleration [m/s^2] (vehicle.acceleration,
+-- default 0).
 return function(opts)
   opts = opts or {}
+  -- An option this file does not take would be dropped silently (a misspelt speed, a prescribed
+  -- acceleration): refused at the line that gives it (level 2: the caller's).
+  local known = { speed = true, start = true, acceleration = true }
+  for k in pairs(opts) do
+    if not known[k] then
+      error("vehicles.two_axle_wagon: unknown option '" .. tostring(k) .. "' (options: "
+            .. "speed, start, acceleration)", 2)
+    end
+  end
   local h_car = 1.5    -- [m] car body CoM height above rail
   local r0 = 0.46      -- [m] nominal wheel radius (axle height)
   local a_axle = 4.5   -- [m] semi-wheelbase (wheelbase 9 m)
@@ -43,6 +53,7 @@ return function(opts)
     speed = opts.speed or 10,
     wheel_radius = r0,
     start = opts.start or 0,
+    acceleration = opts.acceleration,  -- nil: the engine's default 0 (no speed ramp)
     bodies = bodies,
     elements = elements,
     groups = { primary_longitudinal = { "prim_x_*" }, primary_lateral = { "prim_y_*" },

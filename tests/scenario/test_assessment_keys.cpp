@@ -53,8 +53,8 @@ TEST(AssessmentKeys, BadKeysAndValuesWithFileLine) {
         p + ":3: run.assessment: comfort must be true or false, got",
         p + ":4: run.assessment: sample_every", p + ":4: run.assessment: alpha",
         p + ":5: run.assessment: floor_positions[2] must be a finite number",
-        p + ":5: run.assessment: mu must be > 0",
-        p + ":6: run.assessment: instability_frequency must be > 2 Hz"})
+        p + ":5: run.assessment: mu must be in (0, 2] or -1",
+        p + ":6: run.assessment: instability_frequency must be in (2, 50] Hz or 0"})
     EXPECT_NE(e.find(want), std::string::npos) << "missing: " << want << "\nin:\n" << e;
 }
 

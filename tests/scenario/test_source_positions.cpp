@@ -100,7 +100,8 @@ TEST(SourcePositions, ProblemsAtTheKeysLine) {
                                       "    },\n"                                              // 11
                                       "  },\n"                                                // 12
                                       "}\n");
-  EXPECT_NE(errors.find("keys.lua:7: run.assessment: alpha must be <= 1"), std::string::npos)
+  EXPECT_NE(errors.find("keys.lua:7: run.assessment: alpha must be in (0, 1] or -1"),
+            std::string::npos)
       << errors;
   EXPECT_NE(errors.find("keys.lua:10: run.assessment: sections[2]"), std::string::npos) << errors;
 }
@@ -115,6 +116,7 @@ TEST(SourcePositions, TableBuiltInCodeKeepsTheBlockLine) {
                                       "  assessment = a,\n"
                                       "}\n");
   // `assessment = a` is written at line 6; the key set in code has no line of its own.
-  EXPECT_NE(errors.find("code.lua:6: run.assessment: alpha must be <= 1"), std::string::npos)
+  EXPECT_NE(errors.find("code.lua:6: run.assessment: alpha must be in (0, 1] or -1"),
+            std::string::npos)
       << errors;
 }

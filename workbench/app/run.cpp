@@ -112,9 +112,15 @@ void checkTrackStore(const std::string& dir) {
       throw InputError(cli,
                        "--track-store: cannot create the folder '" + dir + "': " + ec.message());
   }
-  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+  // access() answers for the permission bits only (root passes it on /proc or a read-only
+  // mount): a file made and removed again is the test the track file will meet.
+  std::string probe = (fs::path(dir) / ".railbench_probe_XXXXXX").string();
+  const int fd = ::mkstemp(probe.data());
+  if (fd < 0)
     throw InputError(
         cli, "--track-store: the folder '" + dir + "' is not writable: " + std::strerror(errno));
+  ::close(fd);
+  ::unlink(probe.c_str());
 }
 
 }  // namespace

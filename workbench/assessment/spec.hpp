@@ -45,6 +45,7 @@ struct AssessmentSpec {
   bool comfort = false;    // EN 12299 N_MV and continuous comfort, Sperling's Wz
   bool wear = false;       // T gamma and frictional power per wheel and patch
   double sample_every = kDefaultSampleEvery;  // [s]
+  SourceLoc sample_every_loc;  // where sample_every was given; empty when it is the default
   // Floor points along the car body, x offsets from its centre of mass [m]; empty: over the two
   // bogie centres and mid-car (front, centre, rear).
   std::vector<double> floor_positions;

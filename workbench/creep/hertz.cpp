@@ -104,7 +104,9 @@ HertzContact hertz(const Material& mat, const RelativeCurvatures& k, double N) {
 
 HertzContact hertz(const Material& mat, const RelativeCurvatures& k, const HertzShape& shape,
                    double N) {
-  RB_CHECK(mat.E > 0.0 && mat.nu > -1.0 && mat.nu < 0.5, "invalid material");
+  // nu = 0.5 (incompressible) is inside the schema's range and Kalker's table; E* and G stay
+  // finite up to it.
+  RB_CHECK(mat.E > 0.0 && mat.nu > -1.0 && mat.nu <= 0.5, "invalid material");
   HertzContact c;
   c.shape = shape;
   c.k_hertz = hertzStiffness(mat, k, c.shape);

@@ -56,7 +56,9 @@ PatchConstants patchConstants(const Material& mat, const RelativeCurvatures& k,
                               const HertzShape& shape) {
   // The semi-axes of hertz() (same expressions, bit-identical) without its Hertz stiffness and
   // approach, which the creep laws do not use (a cbrt and a sqrt less per patch evaluation).
-  RB_CHECK(mat.E > 0.0 && mat.nu > -1.0 && mat.nu < 0.5, "invalid material");
+  // nu = 0.5 (incompressible) is inside the schema's range and Kalker's table; E* and G stay
+  // finite up to it.
+  RB_CHECK(mat.E > 0.0 && mat.nu > -1.0 && mat.nu <= 0.5, "invalid material");
   PatchConstants pc;
   pc.c = kalkerCoefficients(shape.aOverB(), mat.nu);
   pc.denom = 4.0 * contactModulus(mat) * (k.A + k.B);

@@ -173,6 +173,13 @@ void addModels(Plan& p, const PrecisionOptions& o, const scenario::ScenarioSpec&
     std::string upper = m == "kec" ? "KEC" : (m == "lut" ? "LUT" : "elastic");
     std::vector<std::string> ov = {"contact.method=" + m};
     if (const std::string why = refusal(p, o, ov); !why.empty()) {
+      // A method the command line names is an option the scene cannot use: refused before
+      // anything runs. A default comparison method is left out with a note.
+      const bool asked = m == o.model_reference || !o.methods.empty();
+      if (asked)
+        throw InputError(kCommandLine,
+                         std::string(m == o.model_reference ? "--model-reference " : "--methods ") +
+                             m + ": the scenario refuses contact.method=" + m + ": " + why);
       p.notes.push_back(
           {upper, "", "left out: the scenario refuses contact.method=" + m + ": " + why});
       continue;

@@ -77,6 +77,14 @@ double endTime(const Model& c) {
 // straight extension of its start (TrackGeometry::at), which is exact when the track starts with
 // a tangent without gradient: the rear bodies of a vehicle whose reference point starts at s = 0
 // stand there (the paper's validation runs); before any other first segment it is an error.
+// Where vehicle k of the run is given and how a message names it: the vehicle{} block, or its
+// entry of train.vehicles (a train's problem belongs to the vehicle that has it).
+std::pair<SourceLoc, std::string> vehicleAt(const Model& c, std::size_t k) {
+  if (c.spec.train.empty() || k >= c.spec.train.size()) return {c.spec.vehicle.loc, "vehicle"};
+  return {c.spec.train[k].loc,
+          "train.vehicles[" + std::to_string(k + 1) + "] '" + c.vehicles[k].name + "'"};
+}
+
 void checkTrackRange(const Model& c, Diagnostics& d) {
   const auto& v = c.lead().vehicle;
   const double length = c.track->geometry().length();
@@ -87,12 +95,29 @@ void checkTrackRange(const Model& c, Diagnostics& d) {
   const auto& segs = c.spec.track.segments;
   const bool straight_start = !segs.empty() && segs.front().kind == track::SegmentKind::Tangent &&
                               segs.front().gradient == 0.0 && segs.front().cant == 0.0;
-  if (rear < -tol && !straight_start)
-    d.add(c.spec.vehicle.loc,
-          "vehicle: the rearmost body starts at s = " + formatNumber(rear) +
-              " m, before the start of the track (s = 0), which does not start with a level "
-              "tangent; give vehicle.start >= " +
-              formatNumber(v.start - rear) + " m");
+  if (rear < -tol && !straight_start) {
+    // The vehicle that stands furthest back (a train's last one, as a rule) is the one to move.
+    std::size_t last = 0;
+    for (std::size_t k = 0; k < c.vehicles.size(); ++k)
+      if (c.vehicles[k].vehicle.start + c.vehicles[k].trailingX() <
+          c.vehicles[last].vehicle.start + c.vehicles[last].trailingX())
+        last = k;
+    const RunVehicle& rv = c.vehicles[last];
+    const auto [loc, who] = vehicleAt(c, last);
+    d.add(loc, who + ": the rearmost body starts at s = " + formatNumber(rear) +
+                   " m, before the start of the track (s = 0), which does not start with a level "
+                   "tangent; give " +
+                   (c.spec.train.empty() ? "vehicle.start" : "its vehicle.start") +
+                   " >= " + formatNumber(rv.vehicle.start - rear) + " m");
+  }
+  // A start at or beyond the track's end is the vehicle's problem, not the run's length.
+  if (lead0 >= length - tol) {
+    const auto [loc, who] = vehicleAt(c, 0);
+    d.add(loc, who + ": the leading body starts at s = " + formatNumber(lead0) +
+                   " m, at or beyond the end of the track at " + formatNumber(length) +
+                   " m; give vehicle.start < " + formatNumber(v.start + length - lead0) + " m");
+    return;
+  }
   if (!(c.t_end > 0)) {
     d.add(c.spec.run.loc,
           "run: nothing to simulate: the leading body starts at s = " + formatNumber(lead0) +
@@ -115,11 +140,11 @@ void checkOutputs(const Model& c, Diagnostics& d) {
   const auto& run = c.spec.run;
   const double n = std::ceil(c.t_end / run.output_every - 1e-9);
   if (n > run.max_output_samples) {
-    d.add(run.loc, "run.output.every: " + formatNumber(run.output_every) + " s over " +
-                       formatNumber(c.t_end) + " s gives " + formatNumber(n) +
-                       " output times, more than run.output.max_samples = " +
-                       formatNumber(run.max_output_samples) +
-                       " (raise it if the memory and disk are there)");
+    d.add(
+        run.output_every_loc.file.empty() ? run.loc : run.output_every_loc,
+        "run.output.every: " + formatNumber(run.output_every) + " s over " + formatNumber(c.t_end) +
+            " s gives " + formatNumber(n) + " output times, more than run.output.max_samples = " +
+            formatNumber(run.max_output_samples) + " (raise it if the memory and disk are there)");
     return;
   }
   try {
@@ -455,8 +480,7 @@ void collectWarnings(Model& c) {
     // A law that does not saturate at mu N overstates every sliding patch (flange contact,
     // curves, traction): its Y/Q and sum Y are not a safety answer (docs/creep.md).
     if (!dynamics::creepLawSaturates(spec.contact.creep)) {
-      const std::string w = "contact.creep = '" +
-                            std::string(nameOf(spec.contact.creep)) +
+      const std::string w = "contact.creep = '" + std::string(nameOf(spec.contact.creep)) +
                             "' does not saturate at mu N: forces on sliding patches (flange, "
                             "tight curves, traction) exceed the friction limit; use it for the "
                             "linear range only";

@@ -363,12 +363,22 @@ constexpr double kFloorOverhang = 5.0;  // [m]
 void checkSampling(const Model& m) {
   const auto& a = m.spec.run.assessment;
   Diagnostics d;
+  const SourceLoc& at = a.sample_every_loc.file.empty() ? a.loc : a.sample_every_loc;
+  // A fixed step samples at most once per step: an interval asked for below it would silently
+  // become the step. The default (no key given) keeps that rounding, with its note at the run.
+  const auto integ = integ::makeIntegrator(m.solver);
+  if (!a.sample_every_loc.file.empty() && integ->isFixedStep() &&
+      a.sample_every < m.solver.step * (1.0 - 1e-6))
+    d.add(at, "run.assessment: sample_every " + formatNumber(a.sample_every) + " s is below the " +
+                  std::string(integ->name()) + " step " + formatNumber(m.solver.step) +
+                  " s (a fixed step samples at most once per step); give sample_every >= " +
+                  formatNumber(m.solver.step) + " s or a smaller solver.step");
   const double n = std::ceil(m.t_end / sampleInterval(m, a.sample_every) - 1e-9);
   if (n > m.spec.run.max_output_samples)
-    d.add(a.loc, "run.assessment.sample_every: " + formatNumber(a.sample_every) + " s over " +
-                     formatNumber(m.t_end) + " s gives " + formatNumber(n) +
-                     " samples, more than run.output.max_samples = " +
-                     formatNumber(m.spec.run.max_output_samples));
+    d.add(at, "run.assessment.sample_every: " + formatNumber(a.sample_every) + " s over " +
+                  formatNumber(m.t_end) + " s gives " + formatNumber(n) +
+                  " samples, more than run.output.max_samples = " +
+                  formatNumber(m.spec.run.max_output_samples));
   double lo = 0.0, hi = 0.0;
   const vehicle::VehicleModel& v = m.lead().vehicle;
   const auto cars = bodiesOfKind(v, vehicle::BodyKind::CarBody);

@@ -74,7 +74,9 @@ void readRailSupport(const Node& n, std::vector<dynamics::RailSupportPoint>& out
 bool buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
   Reader r(n, block("contact"), "contact", d);
   c.loc = n.loc;
-  if (r.choice("method") == kGuidedContact) {
+  // Read once: every reading of a bad value reports it.
+  const std::string method = r.choice("method");
+  if (method == kGuidedContact) {
     // Guided wheelsets have no wheel/rail contact: every other key would be silently unused.
     for (const auto& [k, v] : n.fields)
       if (k != "method")
@@ -82,7 +84,7 @@ bool buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
                        "\" (the wheelsets follow the track kinematically, no wheel/rail forces)");
     return true;
   }
-  c.method = r.choiceOf<dynamics::ContactMethod>("method");
+  c.method = parse<dynamics::ContactMethod>(method).value_or(dynamics::ContactMethod{});
   c.kec_dhat = r.number("dhat");
   c.kec_dbar = r.number("dbar");
   c.flange_stiffness = r.number("flange_stiffness");
@@ -111,11 +113,6 @@ bool buildContact(const Node& n, dynamics::ContactSpec& c, Diagnostics& d) {
     c.elastic.min_curvature_ratio = o.number("min_curvature_ratio");
     if (const Node* rs = o.blockValue("rail_support"))
       readRailSupport(*rs, c.elastic.rail_support, d);
-    if (const double lift = c.elastic.derailment_lift;
-        lift >= 0.0 && !dynamics::kDerailmentLiftRange.contains(lift))
-      o.error(*e->field("derailment_lift"), "derailment_lift must be in " +
-                                                dynamics::kDerailmentLiftRange.text() +
-                                                " m, or -1 for half the wheel's flange height");
     if (c.method != dynamics::ContactMethod::Elastic)
       r.error(*n.field("elastic"), "elastic applies to method = \"elastic\" only (method = \"" +
                                        std::string(nameOf(c.method)) + "\")");

@@ -371,6 +371,13 @@ void wheelsetProfiles(Reader& r, LuaHost& host, dynamics::ProfilesSpec& p) {
         ok = false;
       }
     }
+    // wheel is both wheels: with wheel_left or wheel_right as well, one side has two profiles
+    // and one of them would be silently unused.
+    if (ok && entry.field("wheel") != nullptr &&
+        (entry.field("wheel_left") != nullptr || entry.field("wheel_right") != nullptr)) {
+      r.error(entry, at + ": give wheel (both wheels) or wheel_left / wheel_right, not both");
+      ok = false;
+    }
     if (!ok) continue;
     dynamics::WheelsetProfilesSpec w;
     w.wheelset = name;

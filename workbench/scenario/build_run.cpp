@@ -115,23 +115,14 @@ void buildAssessment(const Node& n, assessment::AssessmentSpec& a, Diagnostics& 
   a.comfort = r.boolean("comfort");
   a.wear = r.boolean("wear");
   a.sample_every = r.number("sample_every");
+  if (const Node* every = r.value("sample_every")) a.sample_every_loc = every->loc;
   a.floor_positions = floorPositions(r);
   a.alpha = r.number("alpha");
-  if (r.has("alpha") && a.alpha <= 0)
-    r.error(*r.value("alpha"),
-            "alpha must be in (0, 1] (omit it to take it from vehicle.category), got " +
-                formatNumber(a.alpha));
   a.sections = sections(r);
   a.flange_angle = r.number("flange_angle");
   a.mu = r.number("mu");
-  if (r.has("mu") && a.mu <= 0)
-    r.error(*r.value("mu"), "mu must be > 0 (omit it to use contact.mu)");
   a.yq_limit = r.number("yq_limit");
   a.instability_frequency = r.number("instability_frequency");
-  if (r.has("instability_frequency") && a.instability_frequency <= 2.0)
-    r.error(*r.value("instability_frequency"),
-            "instability_frequency must be > 2 Hz (the band-pass is f0 +- 2 Hz), got " +
-                formatNumber(a.instability_frequency));
   a.comfort_limit = r.number("comfort_limit");
 }
 
@@ -147,6 +138,7 @@ void buildRun(const Node& n, RunSpec& run, Diagnostics& d) {
   if (const Node* out = r.blockValue("output")) {
     Reader o(*out, block("run.output"), "run.output", d);
     run.output_every = o.number("every");
+    if (const Node* every = o.value("every")) run.output_every_loc = every->loc;
     if (o.has("elements")) run.output_elements = o.names("elements");
     run.body_accelerations = o.boolean("body_accelerations");
     run.max_output_samples = o.number("max_samples");

@@ -78,4 +78,30 @@ std::string Node::describe() const {
   return os.str();
 }
 
+std::string showNul(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text)
+    if (c == '\0')
+      out += "\\0";
+    else
+      out += c;
+  return out;
+}
+
+void reportNulBytes(const Node& n, const std::string& path, Diagnostics& d) {
+  const auto has = [](const std::string& s) { return s.find('\0') != std::string::npos; };
+  const std::string here = path.empty() ? "scenario" : path;
+  if (n.type == Node::Type::String && has(n.string))
+    d.add(n.loc, here + " must not hold a NUL byte (\\0), got \"" + showNul(n.string) + "\"");
+  for (const auto& [key, value] : n.fields) {
+    const std::string sub = path.empty() ? key : path + "." + key;
+    if (has(key))
+      d.add(value.loc, here + ": the key \"" + showNul(key) + "\" must not hold a NUL byte (\\0)");
+    reportNulBytes(value, showNul(sub), d);
+  }
+  for (std::size_t i = 0; i < n.items.size(); ++i)
+    reportNulBytes(n.items[i], here + "[" + std::to_string(i + 1) + "]", d);
+}
+
 }  // namespace rb::scenario

@@ -35,4 +35,12 @@ struct Node {
   std::string describe() const;  // "number 3", "string \"abc\"", "table", ...
 };
 
+// Every text of the tree (string values and keys) that holds a NUL byte, as "path must not hold
+// a NUL byte" at its file:line. A C library call cuts a name at its first NUL, so "a.txt\0b"
+// would open a.txt: a file the scenario does not name. `path` names `n` ("" for the root).
+void reportNulBytes(const Node& n, const std::string& path, Diagnostics& d);
+
+// `text` with each NUL byte written as \0, for messages (a raw NUL would cut them too).
+std::string showNul(const std::string& text);
+
 }  // namespace rb::scenario

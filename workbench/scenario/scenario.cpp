@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "workbench/dynamics/names.hpp"
+#include "workbench/dynamics/rails_along_track.hpp"
 #include "workbench/scenario/build.hpp"
 #include "workbench/scenario/lua_host.hpp"
 #include "workbench/scenario/overrides.hpp"
@@ -40,6 +42,21 @@ void checkGuidedForces(const vehicle::VehicleSpec& v, bool guided, Diagnostics& 
                          "the force to the body its suspension hangs from");
 }
 
+// Rails that change along the track need the elastic method (the constraint methods' tables hold
+// one rail profile). Checked when the scenario is read, so that every command, and every analysis
+// that tries another contact method on the scene (precision --methods), is refused before a run;
+// dynamics::compileContactModel says the same to callers without a scenario.
+void checkRailsAlongTrack(const dynamics::ProfilesSpec& p, const dynamics::ContactSpec& c,
+                          bool has_contact, Diagnostics& d) {
+  if (!has_contact || c.method == dynamics::ContactMethod::Elastic || !dynamics::railsAlongTrack(p))
+    return;
+  d.add(p.loc,
+        std::string("profiles.rail_slices / extra_rails: a rail that changes along the track "
+                    "needs contact.method = \"elastic\" (the ") +
+            std::string(nameOf(c.method)) +
+            " method's tables hold one rail profile for the whole track)");
+}
+
 }  // namespace
 
 ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
@@ -58,6 +75,14 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
   spec.modules = host.modules();
   Diagnostics d;
   for (const auto& m : host.missingModules()) d.add(m.loc, m.message);
+  // A text with a NUL byte is refused before any block reads it: its builders would open the file
+  // named by the text up to the NUL and report that file's problems instead.
+  Diagnostics nul;
+  reportNulBytes(root, "", nul);
+  if (!nul.empty()) {
+    for (const auto& m : nul.items()) d.add(m.loc, m.message);
+    d.throwIfAny();
+  }
   const auto& incomplete = host.incompleteBlocks();
   auto unchecked = [&](const char* kind) {
     return std::find(incomplete.begin(), incomplete.end(), kind) != incomplete.end();
@@ -123,6 +148,8 @@ ScenarioSpec loadScenario(const std::string& path, const LoadOptions& options) {
     checkWheelsetContact(e.vehicle, e.has_contact, e.guided, d);
     checkGuidedForces(e.vehicle, e.guided, d);
   }
+  if (spec.train.empty()) checkRailsAlongTrack(spec.profiles, spec.contact, spec.has_contact, d);
+  for (const auto& e : spec.train) checkRailsAlongTrack(e.profiles, e.contact, e.has_contact, d);
   if (spec.guided && spec.has_profiles)
     d.add(spec.profiles.loc,
           "profiles{} has no effect with contact { method = \"guided\" } (no wheel/rail "

@@ -19,6 +19,7 @@ struct RunSpec {
   double distance = 0.0;                     // [m] 0 = to the end of the track
   double duration = 0.0;                     // [s] 0 = distance / speed
   double output_every = 0.01;                // [s]
+  SourceLoc output_every_loc;                // where every was given (a --set: the command line)
   std::vector<std::string> output_elements;  // element names (checked against the vehicle)
   bool body_accelerations = false;
   double max_output_samples = 1e7;        // refuse runs with more output times (memory, disk)

@@ -1,5 +1,6 @@
 #include "workbench/scenario/schema.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -7,6 +8,7 @@
 #include "workbench/assessment/spec.hpp"
 #include "workbench/contact/interpolation.hpp"
 #include "workbench/core/names.hpp"
+#include "workbench/core/range.hpp"
 #include "workbench/core/strings.hpp"
 #include "workbench/dynamics/limits.hpp"
 #include "workbench/dynamics/names.hpp"
@@ -44,6 +46,12 @@ KeySpec num(std::string name, std::string unit, double def, std::string help, co
   KeySpec k =
       num(std::move(name), std::move(unit), def, std::move(help), r.min, r.max, r.min_exclusive);
   k.max_exclusive = r.max_exclusive;
+  return k;
+}
+
+// A key whose valid set is its range and the value `x`, a stand-in for "the default".
+KeySpec sentinel(KeySpec k, double x) {
+  k.sentinels.push_back(x);
   return k;
 }
 
@@ -354,10 +362,12 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
             "wheel sampling step of the contact search's scan (patches narrower than about two "
             "steps can be missed)",
             dynamics::kElasticSampleStepRange),
-        num("derailment_lift", "m", elastic.derailment_lift,
-            "a wheel whose tape circle rises more than this above its centred height over its "
-            "rail has derailed: the run stops (exit 2); -1 = half the wheel's flange height",
-            Range{-1.0, dynamics::kDerailmentLiftRange.max}),
+        sentinel(num("derailment_lift", "m", elastic.derailment_lift,
+                     "a wheel whose tape circle rises more than this above its centred height "
+                     "over its rail has derailed: the run stops (exit 2); -1 = half the wheel's "
+                     "flange height",
+                     dynamics::kDerailmentLiftRange),
+                 -1.0),
         num("min_curvature_ratio", "-", elastic.min_curvature_ratio,
             "the lateral relative curvature of a patch is floored smoothly at this times its "
             "rolling curvature (near-conformal contact, docs/elastic_contact.md)",
@@ -711,12 +721,13 @@ void addAssessmentBlock(std::vector<BlockSpec>& s) {
         typed("floor_positions", ValueType::Table, "m",
               "floor points of the car body, x offsets from its centre of mass {x1, x2, ...}; "
               "default: over the two bogie centres and mid-car (front, centre, rear)"),
-        num("alpha", "-", -1,
-            "track shift factor of Prud'homme's limit alpha (10 kN + 2 Q0 / 3): 1.0 for "
-            "locomotives and passenger vehicles, 0.85 for freight wagons (EN 14363); default "
-            "(-1): from vehicle.category (1.0 assumed, and said in the summary, when the vehicle "
-            "states no category)",
-            -1, 1),
+        sentinel(num("alpha", "-", -1,
+                     "track shift factor of Prud'homme's limit alpha (10 kN + 2 Q0 / 3): 1.0 for "
+                     "locomotives and passenger vehicles, 0.85 for freight wagons (EN 14363); "
+                     "default (-1): from vehicle.category (1.0 assumed, and said in the summary, "
+                     "when the vehicle states no category)",
+                     0, 1, true),
+                 -1),
         typed("sections", ValueType::Table, "-",
               "track sections assessed on their own (EN 14363 evaluates per section): a list "
               "{ { name = \"curve\", from = 120, to = 480 }, ... } of arc-length ranges [m]; "
@@ -725,14 +736,17 @@ void addAssessmentBlock(std::vector<BlockSpec>& s) {
         num("flange_angle", "rad", assessment::kS1002FlangeAngle,
             "flange angle of Nadal's flange-climbing limit (default: S1002, about 70 deg)", 0,
             1.5707963267948966, true),
-        num("mu", "-", -1, "friction coefficient of Nadal's limit; default (-1): contact.mu", -1,
-            2),
+        sentinel(num("mu", "-", -1,
+                     "friction coefficient of Nadal's limit; default (-1): contact.mu", 0, 2, true),
+                 -1),
         num("yq_limit", "-", 0.8,
             "limit of the derailment quotient (Y/Q)_2m (EN 14363, R >= 250 m)", 0, 10, true),
-        num("instability_frequency", "Hz", 0,
-            "centre f0 of the f0 +- 2 Hz band-pass of the stability criterion; 0 = the peak of "
-            "the bogie-frame lateral acceleration spectrum between 3 and 9 Hz",
-            0, 50),
+        sentinel(num("instability_frequency", "Hz", 0,
+                     "centre f0 of the f0 +- 2 Hz band-pass of the stability criterion (above 2 "
+                     "Hz, the band's half width); 0 = the peak of the bogie-frame lateral "
+                     "acceleration spectrum between 3 and 9 Hz",
+                     2, 50, true),
+                 0),
         num("comfort_limit", "-", 2,
             "target of N_MV (EN 12299 sets none; 2 is the upper bound of \"comfortable\")", 0, kInf,
             true)}});
@@ -997,16 +1011,43 @@ const char* typeText(ValueType t) {
 }
 }  // namespace
 
+namespace {
+// `x` as a message shows it: 6 digits, or every digit where 6 would make it read as the bound
+// ("must be <= 0.1 m, got 0.1" for 0.1000001).
+std::string shown(double x, double bound) {
+  return formatNumber(x) == formatNumber(bound) ? formatNumberExact(x) : formatNumber(x);
+}
+}  // namespace
+
 std::optional<std::string> rangeProblem(const KeySpec& k, double x) {
   const std::string u = (k.unit.empty() || k.unit == "-") ? "" : " " + k.unit;
   if (!std::isfinite(x)) return "finite, got " + formatNumber(x);
+  if (std::find(k.sentinels.begin(), k.sentinels.end(), x) != k.sentinels.end())
+    return std::nullopt;
+  if (!k.sentinels.empty()) {
+    // "in [0.001, 0.1] m or -1": the interval alone would hide the sentinel.
+    Range r{k.min, k.max, k.min_exclusive, k.max_exclusive};
+    if (r.contains(x)) return std::nullopt;
+    std::string alternatives;
+    for (const double s : k.sentinels) alternatives += " or " + formatNumber(s);
+    return "in " + r.text() + u + alternatives + ", got " + formatNumber(x);
+  }
   if (k.min_exclusive ? !(x > k.min) : !(x >= k.min))
     return std::string(k.min_exclusive ? "> " : ">= ") + formatNumber(k.min) + u + ", got " +
-           formatNumber(x);
+           shown(x, k.min);
   if (k.max_exclusive ? !(x < k.max) : !(x <= k.max))
     return std::string(k.max_exclusive ? "< " : "<= ") + formatNumber(k.max) + u + ", got " +
-           formatNumber(x);
+           shown(x, k.max);
   return std::nullopt;
+}
+
+std::string rangeText(const KeySpec& k) {
+  const bool numeric = k.type == ValueType::Number || k.type == ValueType::Integer;
+  if (!numeric || (k.min == -kInf && k.max == kInf)) return {};
+  std::string out = std::string(k.min_exclusive ? "(" : "[") + formatNumber(k.min) + ", " +
+                    formatNumber(k.max) + (k.max < kInf && !k.max_exclusive ? "]" : ")");
+  for (const double s : k.sentinels) out += " or " + formatNumber(s);
+  return out;
 }
 
 namespace {
@@ -1020,10 +1061,7 @@ void writeKey(std::ostream& os, const KeySpec& k) {
     os << " required";
   else if (!k.def.empty())
     os << " default " << k.def;
-  const bool numeric = k.type == ValueType::Number || k.type == ValueType::Integer;
-  if (numeric && (k.min > -kInf || k.max < kInf))
-    os << ", range " << (k.min_exclusive ? "(" : "[") << formatNumber(k.min) << ", "
-       << formatNumber(k.max) << (k.max < kInf && !k.max_exclusive ? "]" : ")");
+  if (const std::string range = rangeText(k); !range.empty()) os << ", range " << range;
   os << "\n      " << k.help << "\n";
   if (!k.choices.empty()) os << "      one of: " << join(k.choices, " ") << "\n";
   for (std::size_t i = 0; i < k.choice_help.size() && i < k.choices.size(); ++i)

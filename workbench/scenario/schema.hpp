@@ -40,6 +40,10 @@ struct KeySpec {
   bool min_exclusive = false;  // min < value rather than min <= value
   bool max_exclusive = false;  // value < max rather than value <= max
   bool required = false;
+  // Values accepted outside [min, max]: a number that means "the default" rather than a
+  // quantity (derailment_lift = -1). The valid set is the interval and these, so check, help
+  // and the conformance test read them from here.
+  std::vector<double> sentinels;
   std::vector<std::string> choices;      // Choice, StringList
   std::vector<std::string> choice_help;  // one line per choice (empty: none), from its name table
   std::vector<std::string> kinds;        // constructors allowed for Block, BlockList
@@ -59,8 +63,12 @@ const std::vector<BlockSpec>& schema();
 const BlockSpec& block(const std::string& name);  // throws std::logic_error if unknown
 
 // What is wrong with `x` as a value of the number key `k` ("finite, got inf", ">= 0 m, got -1",
-// "< 1, got 1"), nullopt when it lies in the key's range: the one range check of the scenario.
+// "< 1, got 1", "in [0.001, 0.1] m or -1, got -0.5"), nullopt when it lies in the key's range or
+// is one of its sentinels: the one range check of the scenario.
 std::optional<std::string> rangeProblem(const KeySpec& k, double x);
+// The key's valid set as help prints it: "[0, 0.5]", "(0, inf)", "[0.001, 0.1] or -1"; empty
+// for a key without bounds.
+std::string rangeText(const KeySpec& k);
 
 // Reference text of every block and key (workbench help scenario).
 std::string referenceText();

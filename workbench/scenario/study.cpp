@@ -173,8 +173,9 @@ void checkStudyKeys(const Node& top, const Node& n, Diagnostics& d, const ErrorF
     if (k != "study") d.add(v.loc, k + " block in a study file: put it in the base scenario");
 }
 
-// A whole-number key of study{} in its schema range; the schema's default if absent or wrong.
-int wholeNumber(const Node& n, const char* key, const ErrorFn& err) {
+// A whole-number key of study{} in its schema range; the schema's default if absent or wrong
+// (reported at the key's own line).
+int wholeNumber(const Node& n, const char* key, Diagnostics& d) {
   const KeySpec& k = *block("study").key(key);
   const int def = static_cast<int>(k.num_default);
   const Node* v = n.field(key);
@@ -182,8 +183,9 @@ int wholeNumber(const Node& n, const char* key, const ErrorFn& err) {
   // Range first: converting a double beyond int's range is undefined.
   if (v->type != Node::Type::Number || !(v->number >= k.min && v->number <= k.max) ||
       v->number != std::floor(v->number)) {
-    err(std::string(key) + " must be a whole number in [" + formatNumber(k.min, 17) + ", " +
-        formatNumber(k.max, 17) + "]");
+    d.add(v->loc, "study: " + std::string(key) + " must be a whole number in [" +
+                      formatNumber(k.min, 17) + ", " + formatNumber(k.max, 17) + "], got " +
+                      v->describe());
     return def;
   }
   return static_cast<int>(v->number);
@@ -623,6 +625,8 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
   LuaHost host(ho);
   Node top = host.runFile(path);
   Diagnostics d;
+  reportNulBytes(top, "", d);  // before a base or a metric's text is used (node.hpp)
+  d.throwIfAny();
   StudySpec st;
   st.file = path;
   const Node* n = top.field("study");
@@ -639,9 +643,9 @@ StudySpec loadStudy(const std::string& path, const std::string& root) {
     if (st.base.empty())
       err("base scenario '" + base->string + "' not found (relative to the study file)");
   }
-  st.repeats = wholeNumber(*n, "repeats", err);
-  st.jobs = wholeNumber(*n, "jobs", err);
-  st.max_cases = wholeNumber(*n, "max_cases", err);
+  st.repeats = wholeNumber(*n, "repeats", d);
+  st.jobs = wholeNumber(*n, "jobs", d);
+  st.max_cases = wholeNumber(*n, "max_cases", d);
   st.output = "compact";
   if (const Node* out = n->field("output")) {
     if (out->type != Node::Type::String || (out->string != "compact" && out->string != "full"))

@@ -1,5 +1,5 @@
 -- hostile: args="study {case} --out st"
--- hostile: expect="study_case_bad_keys.lua:9: run.assessment: alpha must be <= 1, got 5"
+-- hostile: expect="study_case_bad_keys.lua:9: run.assessment: alpha must be in (0, 1] or -1, got 5"
 -- hostile: expect="study_case_bad_keys.lua:10: vehicle.elements[2] (spring_damper): unknown key 'nosuchkey'"
 -- hostile: expect="study_case_bad_keys.lua:11: vehicle: initial: no body named 'nosuch'"
 -- hostile: expect="nothing was run"

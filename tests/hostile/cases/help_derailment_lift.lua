@@ -1,0 +1,3 @@
+-- hostile: args="help scenario {case}" exit=0 expect="derailment_lift (number, m) default -1, range [0.001, 0.1] or -1" reject="range [-1, 0.1]"
+-- help prints the range check enforces: [0.001, 0.1] m or the sentinel -1, not [-1, 0.1].
+-- (help scenario reads no file: the case is only its argument.)
