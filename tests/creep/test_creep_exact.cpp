@@ -25,8 +25,8 @@
 namespace {
 
 using rb::creep::ContactPatch;
-using rb::creep::CreepParams;
 using rb::creep::Creepages;
+using rb::creep::CreepParams;
 
 constexpr double kMu = 0.3;  // CONTACT's FSTAT = FKIN
 constexpr double kG = 82e9;  // CONTACT's GG [Pa]
@@ -62,8 +62,7 @@ std::vector<std::vector<std::string>> csvRows(const std::string& rel) {
 
 std::vector<Row> referenceRows() {
   std::map<std::pair<std::string, int>, std::pair<double, double>> extents;
-  for (const auto& c :
-       csvRows("tests/data/contact_benchmark/mbench_a22_contact_reference.csv")) {
+  for (const auto& c : csvRows("tests/data/contact_benchmark/mbench_a22_contact_reference.csv")) {
     extents[{c[0], std::stoi(c[1])}] = {std::stod(c[14]), std::stod(c[15])};
   }
   std::vector<Row> rows;
@@ -174,9 +173,10 @@ void writeTable(const std::vector<Row>& rows) {
   const std::string path = std::string(RB_BINARY_DIR) + "/creep_exact_mbench_a22.md";
   std::FILE* f = std::fopen(path.c_str(), "w");
   if (!f) return;
-  std::fprintf(f,
-               "| wheel | case | a/b | phi a / s | lin / 3 mu N | exact | polach | fastsim | "
-               "fastsim elliptic | shen_hedrick_elkins |\n|---|---|---|---|---|---|---|---|---|---|\n");
+  std::fprintf(
+      f,
+      "| wheel | case | a/b | phi a / s | lin / 3 mu N | exact | polach | fastsim | "
+      "fastsim elliptic | shen_hedrick_elkins |\n|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Row& r : rows) {
     const ContactPatch p = patchOf(r);
     std::fprintf(f, "| %s | %d%s | %.2f | %+.2f | %.2f | %.3f |", r.wheel.c_str(), r.case_no,
@@ -230,8 +230,7 @@ TEST(CreepExact, SaturatedPatchesCarryMuN) {
     // force turns 3.2-3.7 degrees from CONTACT's (the simplified theory's spin coupling).
     for (const Law* law : {&kLaws[1], &kLaws[2]}) {
       const Compared c = compare(*law, r);
-      EXPECT_NEAR(c.ratio, exact, linearOverFullSliding(r) >= 4.0 / 3.0 ? 0.02 : 0.04)
-          << law->name;
+      EXPECT_NEAR(c.ratio, exact, linearOverFullSliding(r) >= 4.0 / 3.0 ? 0.02 : 0.04) << law->name;
       EXPECT_LT(std::abs(c.angle), 4.0) << law->name;
     }
   }

@@ -125,7 +125,8 @@ TEST(Kalker, OutsideTheTable) {
 
 // Beyond a/b = 10 (flange patches, a/b 15-25) and below 0.1 the coefficients follow Kalker's
 // asymptotes instead of the last row: continuous at the table's edge, growing like the asymptote
-// (C11, C22 ~ 1/(g ln(1/g)), C23 ~ g^-1.5 / ln(1/g) for g = b/a -> 0), and equal to it in the limit.
+// (C11, C22 ~ 1/(g ln(1/g)), C23 ~ g^-1.5 / ln(1/g) for g = b/a -> 0), and equal to it in the
+// limit.
 TEST(Kalker, AsymptotesBeyondTheTable) {
   for (double nu : {0.0, 0.25, 0.28, 0.5}) {
     for (double edge : {10.0, 0.1}) {

@@ -40,13 +40,13 @@ TEST(BandOscillation, ASelfOscillationInTheBandIsFound) {
 }
 
 TEST(BandOscillation, OutsideTheBandSlowOrSmallIsNot) {
-  EXPECT_FALSE(watch(0.002, 20e3, 8e3, 30.0, false).found);    // not in the band
-  EXPECT_FALSE(watch(0.002, 20e3, 20e3, 3.0, true).found);     // the vehicle's own motion
-  EXPECT_FALSE(watch(0.002, 20e3, 1.5e3, 30.0, true).found);   // below 3 kN rms
+  EXPECT_FALSE(watch(0.002, 20e3, 8e3, 30.0, false).found);            // not in the band
+  EXPECT_FALSE(watch(0.002, 20e3, 20e3, 3.0, true).found);             // the vehicle's own motion
+  EXPECT_FALSE(watch(0.002, 20e3, 1.5e3, 30.0, true).found);           // below 3 kN rms
   const BandOscillation coarse = watch(0.020, 20e3, 8e3, 30.0, true);  // cannot be resolved
   EXPECT_FALSE(coarse.watched);
   EXPECT_FALSE(coarse.found);
-  EXPECT_FALSE(watch(0.002, 20e3, 0.0, 30.0, true).found);     // constant
+  EXPECT_FALSE(watch(0.002, 20e3, 0.0, 30.0, true).found);  // constant
 }
 
 // The trial curve (R = 300 m, 100 mm cant, 20.9 m/s) on smooth track: the KEC's leading outer

@@ -10,14 +10,6 @@
 namespace rb {
 namespace {
 
-std::string kindOf(mode_t m) {
-  if (S_ISDIR(m)) return "a folder";
-  if (S_ISFIFO(m)) return "a FIFO";
-  if (S_ISCHR(m) || S_ISBLK(m)) return "a device";
-  if (S_ISSOCK(m)) return "a socket";
-  return "not a regular file";
-}
-
 std::string mib(std::size_t bytes) {
   return std::to_string(bytes >> 20) + " MiB";
 }
@@ -37,7 +29,7 @@ std::optional<std::string> readRegularFile(const std::string& path, std::string&
     return std::nullopt;
   }
   if (!S_ISREG(st.st_mode)) {
-    why = "not a regular file (" + kindOf(st.st_mode) + ")";
+    why = "not a regular file (" + fileKindName(st.st_mode) + ")";
     return std::nullopt;
   }
   // O_NONBLOCK: should the path be replaced by a FIFO between stat and open, open does not block;
@@ -75,6 +67,14 @@ std::optional<std::string> readRegularFile(const std::string& path, std::string&
   }
   ::close(fd);
   return out;
+}
+
+std::string fileKindName(mode_t m) {
+  if (S_ISDIR(m)) return "a folder";
+  if (S_ISFIFO(m)) return "a FIFO";
+  if (S_ISCHR(m) || S_ISBLK(m)) return "a device";
+  if (S_ISSOCK(m)) return "a socket";
+  return "not a regular file";
 }
 
 }  // namespace rb

@@ -107,10 +107,9 @@ struct ContactMethodInfo {
 template <class... Methods>
 constexpr std::array<ContactMethodInfo, sizeof...(Methods)> contactMethodInfos(
     MethodList<Methods...>) {
-  return {
-      {{Methods::kMethod, Methods::kName, Methods::kWheelsetDof, Methods::kTable,
-        Methods::kCoupling, Methods::kFlangeContact, Methods::kPatchRole, Methods::kPatches,
-        Methods::kBandMonitor}...}};
+  return {{{Methods::kMethod, Methods::kName, Methods::kWheelsetDof, Methods::kTable,
+            Methods::kCoupling, Methods::kFlangeContact, Methods::kPatchRole, Methods::kPatches,
+            Methods::kBandMonitor}...}};
 }
 inline constexpr auto kContactMethodInfos = contactMethodInfos(ContactMethods{});
 

@@ -1,5 +1,6 @@
 #include "workbench/io/result_file.hpp"
 
+#include "workbench/io/hdf5_handle.hpp"
 #include "workbench/io/hdf5_init.hpp"
 #include "workbench/io/result_reader.hpp"
 
@@ -25,24 +26,6 @@ constexpr hsize_t kChunk = kSeriesChunk;
 // chunks; a study case's series have a few).
 constexpr unsigned kCompactDeflate = 4;
 constexpr unsigned kCompactIstoreK = 2;
-
-// Owns one HDF5 identifier and closes it with the matching H5*close on scope exit.
-class Handle {
- public:
-  using Closer = herr_t (*)(hid_t);
-  Handle(hid_t id, Closer close) : id_(id), close_(close) {}
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const { return id_; }
-  bool ok() const { return id_ >= 0; }
-
- private:
-  hid_t id_;
-  Closer close_;
-};
 
 // The name of this machine: temporaries carry it, so only the machine that made one judges
 // whether its process is gone (a study folder may be shared by the nodes of a cluster).

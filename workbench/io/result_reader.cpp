@@ -10,6 +10,7 @@
 #include <functional>
 
 #include "workbench/core/files.hpp"
+#include "workbench/io/hdf5_handle.hpp"
 #include "workbench/io/hdf5_init.hpp"
 
 namespace rb::io {
@@ -20,14 +21,6 @@ namespace {
 constexpr double kMaxInflate = 1032.0;
 // Longest external link value whose target is quoted in a refusal.
 constexpr std::size_t kMaxQuotedLink = 1024;
-
-std::string kindOf(mode_t m) {
-  if (S_ISDIR(m)) return "a folder";
-  if (S_ISFIFO(m)) return "a FIFO";
-  if (S_ISCHR(m) || S_ISBLK(m)) return "a device";
-  if (S_ISSOCK(m)) return "a socket";
-  return "not a regular file";
-}
 
 std::string bytesText(double b) {
   const char* units[] = {"bytes", "kB", "MB", "GB", "TB", "PB", "EB"};
@@ -40,24 +33,6 @@ std::string bytesText(double b) {
   std::snprintf(buf, sizeof buf, u == 0 ? "%.0f %s" : "%.3g %s", b, units[u]);
   return buf;
 }
-
-// Owns one HDF5 identifier and closes it with the matching H5*close on scope exit.
-class Handle {
- public:
-  using Closer = herr_t (*)(hid_t);
-  Handle(hid_t id, Closer close) : id_(id), close_(close) {}
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const { return id_; }
-  bool ok() const { return id_ >= 0; }
-
- private:
-  hid_t id_;
-  Closer close_;
-};
 
 // "" when `points` elements of `type` fit in `limit` bytes, else why not (what `where` declares).
 std::string oversized(const std::string& where, hssize_t points, hid_t type, double limit,
@@ -209,7 +184,7 @@ ResultReader::ResultReader(const std::string& path) : path_(path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) return;  // absent: the caller says what is missing
   if (!S_ISREG(st.st_mode))
-    throw BadResult(path + ": is " + kindOf(st.st_mode) + ", not a result file");
+    throw BadResult(path + ": is " + fileKindName(st.st_mode) + ", not a result file");
   // O_NONBLOCK: should the path become a FIFO after the stat, the open does not block, and the
   // fstat refuses it. HDF5 then opens this very file by its descriptor's name, not what the path
   // may name by then.
@@ -217,7 +192,7 @@ ResultReader::ResultReader(const std::string& path) : path_(path) {
   if (fd < 0) return;  // unreadable (permissions): not a file that can be read
   if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
     ::close(fd);
-    throw BadResult(path + ": is " + kindOf(st.st_mode) + ", not a result file");
+    throw BadResult(path + ": is " + fileKindName(st.st_mode) + ", not a result file");
   }
   bytes_ = static_cast<std::uint64_t>(st.st_size);
   const std::string byFd = "/proc/self/fd/" + std::to_string(fd);

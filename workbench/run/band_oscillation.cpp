@@ -60,8 +60,9 @@ void BandOscillationMonitor::closeWindow(double t_end) {
 std::string bandOscillationWarning(const std::string& wheel, const BandOscillation& b) {
   return wheel + ": the KEC's tread/flange band oscillates by itself at about " +
          formatNumber(b.frequency, 3) + " Hz (lateral force " + formatNumber(b.rms * 1e-3, 3) +
-         " kN rms above 15 Hz) in " + std::to_string(b.windows) + " windows of 0.5 s between t = " +
-         formatNumber(b.t_first, 4) + " and " + formatNumber(b.t_last, 4) +
+         " kN rms above 15 Hz) in " + std::to_string(b.windows) +
+         " windows of 0.5 s between t = " + formatNumber(b.t_first, 4) + " and " +
+         formatNumber(b.t_last, 4) +
          " s; an artefact of the band's regularisation (Eq. 26) that the LUT and elastic methods "
          "do not show: compare its Y and Y/Q with contact.method = \"lut\" or \"elastic\" "
          "(docs/three_way.md)";

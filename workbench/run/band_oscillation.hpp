@@ -16,13 +16,13 @@
 namespace rb::run {
 
 struct BandOscillation {
-  bool watched = false;     // the output interval resolved it (<= 10 ms) at least once
-  bool found = false;       // some window met every condition
-  double frequency = 0.0;   // [Hz] from the zero crossings of the strongest window
-  double rms = 0.0;         // [N] the rms of Y above 15 Hz in the strongest window
-  double t_first = 0.0;     // [s] start of the first window found
-  double t_last = 0.0;      // [s] end of the last window found
-  int windows = 0;          // windows found
+  bool watched = false;    // the output interval resolved it (<= 10 ms) at least once
+  bool found = false;      // some window met every condition
+  double frequency = 0.0;  // [Hz] from the zero crossings of the strongest window
+  double rms = 0.0;        // [N] the rms of Y above 15 Hz in the strongest window
+  double t_first = 0.0;    // [s] start of the first window found
+  double t_last = 0.0;     // [s] end of the last window found
+  int windows = 0;         // windows found
 };
 
 class BandOscillationMonitor {

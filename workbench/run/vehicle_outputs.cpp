@@ -375,9 +375,9 @@ void VehicleOutputs::bandOscillationWarnings(std::vector<std::string>& warnings)
   for (std::size_t i = 0; i < band_.size(); ++i) {
     const BandOscillation& b = band_[i].result();
     if (!b.found) continue;
-    const std::string ws =
-        v_.vehicle.bodies[static_cast<std::size_t>(cm.wheelsets[i / 2])].name;
-    warnings.push_back(bandOscillationWarning(ws + (i % 2 == 0 ? " left" : " right") + " wheel", b));
+    const std::string ws = v_.vehicle.bodies[static_cast<std::size_t>(cm.wheelsets[i / 2])].name;
+    warnings.push_back(
+        bandOscillationWarning(ws + (i % 2 == 0 ? " left" : " right") + " wheel", b));
   }
 }
 

@@ -87,7 +87,7 @@ class VehicleOutputs {
   std::array<std::size_t, 2> rails_{};
   bool track_ = false;  // the track under the rail: its channels per wheel
   RailAnswers answers_;
-  std::vector<double> ws_s_;  // s of each wheelset at the output time
+  std::vector<double> ws_s_;                  // s of each wheelset at the output time
   std::vector<BandOscillationMonitor> band_;  // per wheel; empty: not watched
 };
 
