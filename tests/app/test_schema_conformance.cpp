@@ -140,6 +140,11 @@ std::map<std::string, Scene> scenes() {
                         {{"damping", "1e4"}, {"series_stiffness", "1e7"}}};
   s["shear_spring"] = {element("shear_spring"), {{"stiffness", "1e5"}}};
   s["bending_spring"] = {element("bending_spring"), {{"stiffness", "1e5"}}};
+  // A ramp without rate or duration is refused at the block's line, not at a swept key's.
+  s["external_force"] = {
+      withVehicle("v.elements[#v.elements + 1] = external_force { name = "
+                  "\"swept\", body = \"frame\", direction = { 0, 1, 0 },\n@F@ }\n"),
+      {{"law", "\"ramp\""}, {"value", "1e3"}}};
   s["train"] = {withTrain("{ " + kConnection + ", " + kBuffers + ", " + kDrawGear + " }"), {}};
   s["train.connection"] = {
       withTrain("{ front = \"a\", rear = \"b\", " + kBuffers + ", " + kDrawGear + ",\n@F@ }"),

@@ -158,7 +158,8 @@ TEST(Polach, SpinCorrectionCondition) {
     EXPECT_LT(rel(opp.fy - none.fy, cp.G * c3 * p.c23 * 1e-4), 1e-3);
   }
   // Opposite sign with |s_y + phi a| <= |s_y|: s_yC = s_y, so the creep part equals the spin-free
-  // force and the difference is exactly the spin term F_yS evaluated at s_yC = s_y.
+  // force and the difference is exactly the spin term F_yS evaluated at s_yC = s_y, times the
+  // adhesion weight w = 1 / (1 + eps^2) (polach.hpp, "Saturation"; eps of s_y alone here).
   const double sy = 2e-3, phi = -0.5;
   ASSERT_LT(std::fabs(sy + phi * p.a), std::fabs(sy));
   const CreepForce none = polachForce(cp, p, {0.0, sy, 0.0, 20.0});
@@ -167,7 +168,9 @@ TEST(Polach, SpinCorrectionCondition) {
   const double qmu = p.Q * cp.mu;
   const double es = 8.0 / 3.0 * cp.G * p.b * std::sqrt(p.a * p.b) * p.c23 * sy / (qmu * km);
   const double fys = 3.0 / 8.0 * p.a * qmu * km * es / ((1 + es * es) * (1 + es * es)) * phi / sy;
-  EXPECT_NEAR(opp.fy - none.fy, -fys, 1e-9 * std::fabs(fys));
+  const double eps = kPi * cp.G * p.a * p.b * p.c22 * sy / (4.0 * qmu);
+  const double w = 1.0 / (1.0 + eps * eps);
+  EXPECT_NEAR(opp.fy - none.fy, -w * fys, 1e-9 * std::fabs(fys));
 }
 
 // A patch that the creepage alone makes slide carries mu Q along (s_x, s_y) whatever the spin, as

@@ -2,6 +2,8 @@
 // calls (as tests/vehicle/test_alloc.cpp). The replacement pairs malloc/free on purpose.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "tests/common/allocation_counter.hpp"
 
 #include "dyn_fixtures.hpp"
@@ -50,7 +52,10 @@ TEST(Allocation, RhsAndOutputsAllocateNothing) {
         dynamics::ContactVehicleOde ode(*c.vehicle, *c.contact, *c.track);
         Eigen::VectorXd y = ode.initialState(0.0);
         const auto& l = ode.layout();
-        y[l.wsPosition(0, 0)] = -7.0e-3;
+        // Kalker's linear law does not saturate: at 7 mm (ws1 on its flank, a/b ~ 20) the
+        // consistent coupling's fixed point of its unbounded forces does not exist; 3 mm keeps ws1
+        // in flange contact on the root.
+        y[l.wsPosition(0, 0)] = std::string(creep) == "kalker" ? -3.0e-3 : -7.0e-3;
         y[l.wsPosition(1, 0)] = 0.5e-3;
         y[l.wsPosition(2, 0)] = 3e-3;
         y[l.wsRate(3, 0)] = 0.05;

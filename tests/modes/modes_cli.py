@@ -4,6 +4,7 @@ are exit 1 with the option named, nothing written; on the two-axle wagon every u
 named at every speed and the linear critical speed is the lowest speed with any unstable mode."""
 import argparse
 import os
+import re
 import subprocess
 import sys
 
@@ -117,8 +118,12 @@ def two_axle_wagon(wb, out, failures):
           "two-axle wagon: the unstable car-body modes are not listed per speed", failures)
     check("first unstable mode: car body" in so,
           "two-axle wagon: the linear critical speed does not name the car-body mode", failures)
-    check("hunting modes (wheelset/bogie hunting) unstable from: 40.6" in so,
-          "two-axle wagon: the hunting modes' own critical speed is not printed", failures)
+    # 40.6 m/s when it was first measured, 40.55 since Polach's saturation with spin: within the
+    # finite-difference step's own uncertainty, which the command prints (0.42 m/s here).
+    hunt = re.search(r"hunting modes \(wheelset/bogie hunting\) unstable from: ([0-9.]+)", so)
+    check(hunt is not None and abs(float(hunt.group(1)) - 40.6) < 0.4,
+          "two-axle wagon: the hunting modes' own critical speed is not printed near 40.6 m/s",
+          failures)
     with h5py.File(os.path.join(d, "modes.h5"), "r") as f:
         g = f["modes"]
         vc = g.attrs.get("critical_speed_value", 0.0)

@@ -126,13 +126,11 @@ CreepForce polachForce(const CreepParams& p, const ContactPatch& patch, const Cr
   // adheres (the linear theory, with the spin in F_yS) to s = |(s_x, s_y)| as the creepage alone
   // saturates the patch, so that full sliding carries F -> mu Q along (s_x, s_y) as in Kalker's
   // exact theory (polach.hpp, "Saturation").
-  double divisor = sc;
-  double adhesion = 1.0;  // 1 while the creepage alone leaves the patch adhering, -> 0 sliding
-  if (sn < sc) {
-    const double eps_own = p.k_S * eps * (sn / sc);
-    adhesion = eps_own < 1e150 ? 1.0 / (1.0 + eps_own * eps_own) : 0.0;
-    divisor = sn + adhesion * (sc - sn);
-  }
+  // The weight is continuous where s_yC switches between s_y and s_y + phi a (s_C = s there).
+  const double eps_own = p.k_S * eps * (sn / sc);
+  // 1 while the creepage alone leaves the patch adhering, -> 0 as it makes it slide.
+  const double adhesion = eps_own < 1e150 ? 1.0 / (1.0 + eps_own * eps_own) : 0.0;
+  const double divisor = sn + adhesion * (sc - sn);
   double fx = -F * (s.sx / divisor);
   double fy = -F * (s.sy / divisor);
 
