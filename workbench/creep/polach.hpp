@@ -33,9 +33,10 @@
 // While the patch adheres w = 1 - O(eps_own^2), so the linear theory (Kalker's C11, C22 and C23
 // at vanishing creepage) is Polach's exactly; at full sliding w -> 0, D -> s and |F| -> mu Q along
 // (s_x, s_y); pure spin (s = 0) keeps w = 1. w weights F_yS whichever sign the spin has, so the
-// force is continuous where s_yC switches (s_C = s there, and D = s_C). The resultant stays below mu Q without the cap over
-// the test sweep. The weight is a choice of ours, not fitted to the reference: it is the simplest
-// one with those two limits, and its effect in the transition is measured in docs/creep.md.
+// force is continuous where s_yC switches (s_C = s there, and D = s_C). The resultant stays
+// below mu Q without the cap over the test sweep. The weight is a choice of ours, not fitted to
+// the reference: it is the simplest one with those two limits, and its effect in the transition
+// is measured in docs/creep.md.
 //
 // Signs: creepages as in creepages.hpp (wheel relative to rail); the forces act on the wheel and
 // oppose the creepage; the rail receives the opposite forces. Positive spin phi gives a NEGATIVE
