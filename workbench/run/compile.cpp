@@ -72,11 +72,6 @@ double endTime(const Model& c) {
   return t;
 }
 
-// Every body must stay on the track for the whole run: beyond the end the geometry would be
-// extrapolated, which no result may silently rest on. Before s = 0 the track continues as the
-// straight extension of its start (TrackGeometry::at), which is exact when the track starts with
-// a tangent without gradient: the rear bodies of a vehicle whose reference point starts at s = 0
-// stand there (the paper's validation runs); before any other first segment it is an error.
 // Where vehicle k of the run is given and how a message names it: the vehicle{} block, or its
 // entry of train.vehicles (a train's problem belongs to the vehicle that has it).
 std::pair<SourceLoc, std::string> vehicleAt(const Model& c, std::size_t k) {
@@ -85,6 +80,11 @@ std::pair<SourceLoc, std::string> vehicleAt(const Model& c, std::size_t k) {
           "train.vehicles[" + std::to_string(k + 1) + "] '" + c.vehicles[k].name + "'"};
 }
 
+// Every body must stay on the track for the whole run: beyond the end the geometry would be
+// extrapolated, which no result may silently rest on. Before s = 0 the track continues as the
+// straight extension of its start (TrackGeometry::at), which is exact when the track starts with
+// a tangent without gradient: the rear bodies of a vehicle whose reference point starts at s = 0
+// stand there (the paper's validation runs); before any other first segment it is an error.
 void checkTrackRange(const Model& c, Diagnostics& d) {
   const auto& v = c.lead().vehicle;
   const double length = c.track->geometry().length();
