@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "workbench/core/error.hpp"
 #include "workbench/dynamics/contact_ode.hpp"
 #include "workbench/integrators/integrator.hpp"
 #include "workbench/integrators/registry.hpp"
@@ -68,4 +69,60 @@ TEST(InitialState, KecWagonOnTheRoughCurveRunsWithoutWheelLift) {
   const auto res = rb::integ::integrate(ode, *integ, 0.0, y0, {0.1, 0.2},
                                         [](double, const Eigen::VectorXd&) { return true; });
   EXPECT_TRUE(res.ok) << res.message;
+}
+
+namespace {
+
+rb::run::CompileOptions twoAxleTwist() {
+  rb::run::CompileOptions o;
+  o.scenario = "tests/run/data/two_axle_twist.lua";
+  o.root = RB_SOURCE_DIR;
+  return o;
+}
+
+}  // namespace
+
+// Regression: the equilibrium iteration's trial states unloaded a wheel of the rear wagon (the
+// start's first iterate has the suspension unloaded), and a constraint-method evaluation refused
+// that as a wheel lift at t = 0 (-1.03 kN) although the equilibrium loads every wheel with about
+// 100 kN: a twist of 1 mm per metre changes a wheel load of a wagon on 1.2 MN/m axleboxes by a few
+// kilonewtons (k g / 4 for a twist g of the four wheels), not by 100.
+TEST(InitialState, LoadedWagonsOnTwistedRailsStartInTheirEquilibrium) {
+  const rb::run::Model m = rb::run::compile(twoAxleTwist());
+  ASSERT_EQ(m.vehicles.size(), 2u);
+  for (const rb::run::RunVehicle& v : m.vehicles) {
+    rb::dynamics::ContactVehicleOde ode(v.vehicle, *v.contact, *m.track);
+    const Eigen::VectorXd y0 = ode.initialState(0.0);
+    const auto& layout = ode.layout();
+    std::vector<rb::dynamics::WheelOutput> wheels(2 * static_cast<std::size_t>(layout.n_ws));
+    ASSERT_EQ(ode.wheelOutputs(0.0, y0.data(), wheels), 0);
+    // Static wheel load (38 t + 2 x 1.4 t) g / 4 = 100.1 kN; the twist moves it by < 15 %.
+    double total = 0.0;
+    for (std::size_t i = 0; i < wheels.size(); ++i) {
+      EXPECT_NEAR(wheels[i].normal, 100.1e3, 15e3) << v.name << " wheel " << i;
+      total += wheels[i].force_z;
+    }
+    // The wheels carry the whole weight (the start is an equilibrium, not a fall).
+    EXPECT_NEAR(std::abs(total), (38000.0 + 2 * 1400.0) * 9.81, 0.01 * 40800.0 * 9.81) << v.name;
+  }
+}
+
+// A lift that the equilibrium itself has (a rigid suspension on the same twist) is refused at the
+// train entry that places the vehicle, with the rails' irregularities under its wheelsets.
+TEST(InitialState, ALiftInTheEquilibriumNamesTheEntryAndTheRails) {
+  rb::run::CompileOptions o = twoAxleTwist();
+  for (const int element : {1, 4, 7, 10})  // prim_z of the rear wagon
+    o.overrides.push_back("train.vehicles[2].vehicle.elements[" + std::to_string(element) +
+                          "].stiffness=1.2e9");
+  try {
+    (void)rb::run::compile(o);
+    FAIL() << "a rigid wagon on these rails lifts a wheel in its equilibrium";
+  } catch (const rb::InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.diagnostics().size(), 1u) << what;
+    EXPECT_NE(what.find("two_axle_twist.lua:21: train.vehicles[2] 'rear'"), std::string::npos)
+        << what;
+    EXPECT_NE(what.find("wheel lift in the static equilibrium"), std::string::npos) << what;
+    EXPECT_NE(what.find("ws1 at s = 108.5 m: -1.30211 / -0.541376 mm"), std::string::npos) << what;
+  }
 }

@@ -33,7 +33,8 @@ double wheelLiftOf(const ContactModel& c, const WheelsetWork& ww, const vehicle:
 // means the constraint pulls the wheel onto the rail, which no wheel/rail pair can do. The state
 // is refused as recoverable: an adaptive method retries a smaller step, so an overshooting trial
 // step is not taken for a lift, while a real lift stops the run here. Output evaluations only
-// report it (lift = true).
+// report it (lift = true); initial-state evaluations record it (ContactWorkspace::init_lifts), the
+// equilibrium's trial states being no states of the run.
 // Always inlined, as wheelPointForce (contact_patches.hpp): independent of the number of laws.
 template <ContactMethod kMethod>
 [[gnu::always_inline]] inline int checkWheelLift(const ContactModels& models, const StageInput& in,
@@ -51,6 +52,10 @@ template <ContactMethod kMethod>
       qn += patch.normalAt(ww.lambda);
     }
     if (!any || qn >= models.contact.min_normal_force) continue;
+    if (in.mode == EvalMode::Init) {
+      work.init_lifts.emplace_back(2 * static_cast<int>(&ww - work.wheelsets.data()) + s, qn);
+      continue;
+    }
     lift = true;
     if (in.mode != EvalMode::Output) return refuseWheelLift(models, in, ww, s, qn, work);
   }
@@ -145,6 +150,7 @@ int ContactVehicleOde::evaluateT(double t, const double* y, double* ydot, intern
   using vehicle::Stage;
   ContactWorkspace& work = *work_;
   ++work.stats.evaluations;
+  work.init_lifts.clear();
   // Only the integrator's evaluations are timed: outputs belong to the observer's share.
   vehicle::StageClock* clock = mode == EvalMode::Rhs && stages_.start() ? &stages_ : nullptr;
   const ContactModels models{*model_, *contact_, layout_, irr_};

@@ -212,6 +212,32 @@ int ContactVehicleOde::setCoordinates(double t, const double* y) {
 
 // ---- Initial state -----------------------------------------------------------------------------
 
+// What unloads a wheel in the static equilibrium: the lifted wheel and its normal force, and the
+// rails' vertical irregularity under every wheelset (the design cant is followed by the
+// suspension's equilibrium; a twist of the irregular rails over the wheelbase is what a stiff
+// suspension cannot follow).
+namespace {
+std::string equilibriumLift(const vehicle::VehicleModel& m, const vehicle::VehicleLayout& layout,
+                            const ContactModel& contact, const track::Irregularities* irr,
+                            const ContactWorkspace& work, double t0) {
+  const auto& [wheel, normal] = work.init_lifts.front();
+  const int w = wheel / 2;
+  std::ostringstream os;
+  os << "wheel lift in the static equilibrium: wheelset '" << m.bodies[layout.wheelset(w)].name
+     << "', " << (wheel % 2 == 0 ? "left" : "right") << " wheel: constraint normal force "
+     << normal / 1e3 << " kN < contact.min_normal_force = " << contact.min_normal_force / 1e3
+     << " kN; the rails under the wheelsets at the start (vertical irregularity left / right):";
+  for (int k = 0; k < layout.n_ws; ++k) {
+    const double s = m.bodyS(static_cast<int>(layout.wheelset(k)), t0);
+    const track::IrregularityPoint p = irr != nullptr ? irr->at(s) : track::IrregularityPoint{};
+    os << (k == 0 ? " " : ", ") << m.bodies[layout.wheelset(k)].name << " at s = " << s
+       << " m: " << p.z_l * 1e3 << " / " << p.z_r * 1e3 << " mm";
+  }
+  os << "; a start elsewhere on the track, or softer primary suspension, may not unload it";
+  return os.str();
+}
+}  // namespace
+
 Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
   const vehicle::VehicleLayout& l = layout_;
   const vehicle::VehicleModel& m = *model_;
@@ -310,6 +336,9 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
   // Normal forces at t0 (consistent), the memory of the Lagged coupling for the first step.
   for (WheelsetWork& ww : work.wheelsets) ww.memory.forget();
   if (evaluate(t0, y.data(), yd.data(), EvalMode::Init) != 0) fail(work.error);
+  // A wheel unloaded in the equilibrium itself (not only in a trial state of the iteration) is
+  // real: the rails under the wheelsets twist the vehicle more than its suspension can follow.
+  if (!work.init_lifts.empty()) fail(equilibriumLift(m, l, *contact_, irr_, work, t0));
   return y;
 }
 

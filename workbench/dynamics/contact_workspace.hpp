@@ -208,6 +208,10 @@ struct ContactWorkspace {
   double next_t = 0.0;
   std::vector<double> next_y, next_ydot;
   ContactStats stats;
+  // Initial-state evaluations do not refuse a negative constraint normal force (the equilibrium
+  // iteration's trial states may unload a wheel that the equilibrium loads): they record the
+  // wheels [2w + side] that had one, and their forces [N], for the check of the equilibrium.
+  std::vector<std::pair<int, double>> init_lifts;
   std::string error;                              // why the last evaluation failed
   ContactFailure failure = ContactFailure::None;  // the same as a code
   std::string failure_body;                       // the body it concerns

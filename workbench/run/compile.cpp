@@ -740,7 +740,16 @@ Model compile(const CompileOptions& o) {
     const std::unique_ptr<train::TrainOde> ode = makeRunOde(c);
     Eigen::VectorXd y0(ode->size());
     for (int k = 0; k < ode->vehicles(); ++k) {
-      Eigen::VectorXd yk = ode->vehicle(k).initialState(0.0);
+      Eigen::VectorXd yk;
+      try {
+        yk = ode->vehicle(k).initialState(0.0);
+      } catch (const InputError& e) {
+        // The vehicle's own file names its type, which several entries may share: the entry
+        // that places it (its start, hence the track under it) is where it is fixed.
+        const auto [loc, who] = vehicleAt(c, static_cast<std::size_t>(k));
+        for (const Diagnostic& g : e.diagnostics()) d.add(loc, who + ": " + g.message);
+        continue;
+      }
       checkInitialState(c.vehicles[static_cast<std::size_t>(k)].initial, ode->vehicle(k), yk, d);
       y0.segment(ode->offset(k), yk.size()) = yk;
     }
