@@ -12,6 +12,7 @@
 #include "workbench/integrators/integrator.hpp"
 #include "workbench/integrators/registry.hpp"
 #include "workbench/run/compile.hpp"
+#include "workbench/run/start_state.hpp"
 
 namespace {
 
@@ -125,4 +126,42 @@ TEST(InitialState, ALiftInTheEquilibriumNamesTheEntryAndTheRails) {
     EXPECT_NE(what.find("wheel lift in the static equilibrium"), std::string::npos) << what;
     EXPECT_NE(what.find("ws1 at s = 108.5 m: -1.30211 / -0.541376 mm"), std::string::npos) << what;
   }
+}
+
+// Regression: a lateral offset of vehicle.initial was added to the elastic-contact equilibrium
+// with the wheelset's height and roll of the centred position: ws1 moved by -3 mm started with
+// 318 kN on its right wheel and its left wheel in the air (static 54.5 kN). The offset is now
+// held and the rest of the equilibrium settles around it (run::startWithInitialConditions).
+TEST(InitialState, ElasticWheelsetKickedSidewaysStartsOnBothTreads) {
+  rb::run::CompileOptions o;
+  o.scenario = "scenarios/validation/case3_elastic.lua";
+  o.root = RB_SOURCE_DIR;
+  o.overrides = {"run.duration=0.05", "vehicle.initial.ws1.y=-0.004"};
+  const rb::run::Model m = rb::run::compile(o);
+  rb::dynamics::ContactVehicleOde ode(m.lead().vehicle, *m.lead().contact, *m.track);
+  const Eigen::VectorXd equilibrium = ode.initialState(0.0);
+  Eigen::VectorXd y0 = equilibrium;
+  rb::run::startWithInitialConditions(ode, m.lead().initial, y0);
+  const auto& layout = ode.layout();
+  EXPECT_DOUBLE_EQ(y0[layout.wsPosition(0, 0)], equilibrium[layout.wsPosition(0, 0)] - 0.004);
+  std::vector<rb::dynamics::WheelOutput> wheels(2 * static_cast<std::size_t>(layout.n_ws));
+  double largest = 0.0, smallest = 1e9;
+  const auto record = [&](double t, const Eigen::VectorXd& y) {
+    if (ode.wheelOutputs(t, y.data(), wheels) != 0) return false;
+    for (const auto& w : wheels) {
+      largest = std::max(largest, w.normal);
+      smallest = std::min(smallest, w.normal);
+    }
+    return true;
+  };
+  ASSERT_TRUE(record(0.0, y0));
+  // Measured: 52.2 and 57.1 kN on ws1 at t = 0, 48.3 to 57.1 kN over the first 0.1 s.
+  EXPECT_GT(smallest, 40e3);
+  EXPECT_LT(largest, 70e3);
+  auto integ = rb::integ::makeIntegrator(m.solver);
+  const auto res =
+      rb::integ::integrate(ode, *integ, 0.0, y0, {0.01, 0.02, 0.03, 0.04, 0.05}, record);
+  ASSERT_TRUE(res.ok) << res.message;
+  EXPECT_GT(smallest, 40e3);
+  EXPECT_LT(largest, 70e3);
 }

@@ -233,7 +233,8 @@ std::string equilibriumLift(const vehicle::VehicleModel& m, const vehicle::Vehic
     os << (k == 0 ? " " : ", ") << m.bodies[layout.wheelset(k)].name << " at s = " << s
        << " m: " << p.z_l * 1e3 << " / " << p.z_r * 1e3 << " mm";
   }
-  os << "; a start elsewhere on the track, or softer primary suspension, may not unload it";
+  os << "; a start elsewhere on the track, softer primary suspension or smaller vehicle.initial "
+        "offsets may not unload it";
   return os.str();
 }
 }  // namespace
@@ -299,6 +300,28 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
       }
     }
   }
+  equilibrium_unknowns_ = unknowns;
+  solveEquilibrium(t0, y, unknowns);
+  return y;
+}
+
+void ContactVehicleOde::settle(double t0, Eigen::VectorXd& y, std::span<const int> held) {
+  RB_CHECK(y.size() == layout_.size, "settle needs a state of this vehicle");
+  std::vector<int> unknowns;
+  for (const int i : equilibrium_unknowns_)
+    if (std::find(held.begin(), held.end(), i) == held.end()) unknowns.push_back(i);
+  solveEquilibrium(t0, y, unknowns);
+}
+
+void ContactVehicleOde::solveEquilibrium(double t0, Eigen::VectorXd& y,
+                                         const std::vector<int>& unknowns) {
+  const vehicle::VehicleLayout& l = layout_;
+  const vehicle::VehicleModel& m = *model_;
+  ContactWorkspace& work = *work_;
+  for (WheelsetWork& ww : work.wheelsets) {
+    ww.memory.forget();
+    ww.kec_warm = false;
+  }
   Eigen::VectorXd yd(l.size);
   const auto fail = [&](const std::string& why) {
     throw InputError(m.loc, "vehicle '" + m.name + "': initial state: " + why);
@@ -339,7 +362,6 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
   // A wheel unloaded in the equilibrium itself (not only in a trial state of the iteration) is
   // real: the rails under the wheelsets twist the vehicle more than its suspension can follow.
   if (!work.init_lifts.empty()) fail(equilibriumLift(m, l, *contact_, irr_, work, t0));
-  return y;
 }
 
 // ---- Outputs -----------------------------------------------------------------------------------

@@ -211,6 +211,12 @@ class ContactVehicleOde final : public vehicle::VehicleOde {
   // normal forces (consistent solve) used by the Lagged coupling at the first step, so the normal
   // forces at t0 are the static wheel loads. Throws rb::InputError when no equilibrium is found.
   Eigen::VectorXd initialState(double t0) override;
+  // The static equilibrium again from y (after initialState at the same t0), with the positions
+  // `held` (state indices: offsets of vehicle.initial) kept where y has them: every other
+  // coordinate initialState solves settles around them (on elastic contact a wheelset pushed
+  // sideways rises or sinks on its profiles instead of starting in the rail or above it). Throws
+  // rb::InputError as initialState.
+  void settle(double t0, Eigen::VectorXd& y, std::span<const int> held);
 
   // Outputs at (t, y), evaluated on demand; they do not change what the integration sees (the
   // Lagged normal-force memory is kept). Return 0, or the rhs error code.
@@ -261,12 +267,16 @@ class ContactVehicleOde final : public vehicle::VehicleOde {
   using EvalFn = int (ContactVehicleOde::*)(double, const double*, double*, internal::EvalMode);
   // The elastic method's evaluation for a creep law (contact_ode_elastic.cpp).
   static EvalFn elasticEvaluation(CreepModel creep);
+  // The static equilibrium of the coordinates `unknowns` (state indices) at t0 from y, then the
+  // consistent normal forces there and the check that no wheel lifts.
+  void solveEquilibrium(double t0, Eigen::VectorXd& y, const std::vector<int>& unknowns);
 
   const ContactModel* contact_;
   const track::Irregularities* irr_ = nullptr;
   std::unique_ptr<internal::ContactWorkspace> work_;
   EvalFn eval_ = nullptr;
   bool share_outputs_ = false;
+  std::vector<int> equilibrium_unknowns_;  // what initialState solved (settle solves them again)
 };
 
 }  // namespace rb::dynamics

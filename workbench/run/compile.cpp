@@ -10,6 +10,7 @@
 #include "workbench/dynamics/contact_ode.hpp"
 #include "workbench/dynamics/names.hpp"
 #include "workbench/integrators/registry.hpp"
+#include "workbench/run/start_state.hpp"
 #include "workbench/run/vehicle_run.hpp"
 #include "workbench/track/psd.hpp"
 #include "workbench/vehicle/guided.hpp"
@@ -611,10 +612,18 @@ void checkInitialState(const std::vector<vehicle::InitialCondition>& initial,
   vehicle::checkInitialConditions(ode, initial, d);
   if (!d.empty()) return;
   const Eigen::VectorXd equilibrium = y0;
-  vehicle::applyInitialConditions(ode, initial, y0);
   if (auto* contact = dynamic_cast<dynamics::ContactVehicleOde*>(&ode)) {
-    checkFlangeway(initial, *contact, equilibrium, y0, d);
+    Eigen::VectorXd offset = y0;
+    vehicle::applyInitialConditions(ode, initial, offset);
+    checkFlangeway(initial, *contact, equilibrium, offset, d);
     if (!d.empty()) return;
+  }
+  try {
+    startWithInitialConditions(ode, initial, y0);
+  } catch (const InputError& e) {
+    for (const Diagnostic& g : e.diagnostics())
+      d.add(initial.front().loc, "vehicle.initial: the start these offsets give: " + g.message);
+    return;
   }
   Eigen::VectorXd ydot(y0.size());
   if (ode.rhs(0.0, y0.data(), ydot.data()) == 0 && ydot.allFinite()) return;

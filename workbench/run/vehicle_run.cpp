@@ -12,6 +12,7 @@
 #include "workbench/io/initial_output.hpp"
 #include "workbench/run/channels.hpp"
 #include "workbench/run/simulate.hpp"
+#include "workbench/run/start_state.hpp"
 #include "workbench/run/vehicle_outputs.hpp"
 #include "workbench/vehicle/initial_conditions.hpp"
 
@@ -113,7 +114,7 @@ Eigen::VectorXd startState(const std::vector<RunPart>& parts, int size, io::Resu
     Eigen::VectorXd y = p.ode->initialState(0.0);
     if (!p.v->initial.empty()) {
       const Eigen::VectorXd equilibrium = y;
-      vehicle::applyInitialConditions(*p.ode, p.v->initial, y);
+      startWithInitialConditions(*p.ode, p.v->initial, y);
       const auto rows =
           writeInitialConditions(*p.ode, p.v->initial, equilibrium, y, p.v->prefix(), f);
       schema.insert(schema.end(), rows.begin(), rows.end());
