@@ -342,14 +342,25 @@ TEST(InitialConditionsRun, KickedWheelsetStartsThereDecaysAndIsRecorded) {
   const std::vector<double> eq = series(out, "/initial_conditions/equilibrium");
   const std::vector<double> st = series(out, "/initial_conditions/state");
   ASSERT_EQ(eq.size(), st.size());
-  // Exactly one component differs: ws1.y, by the kick.
-  int changed = 0;
-  for (std::size_t i = 0; i < st.size(); ++i)
-    if (st[i] != eq[i]) {
-      ++changed;
+  // ws1.y differs by the kick, held exactly; the rest of the equilibrium settles around it (the
+  // bogie and car body follow the wheelset on the primary and secondary lateral springs by a
+  // fraction of the kick), and no rate moves.
+  const auto names = r.strings("/initial_conditions/state_names");
+  ASSERT_TRUE(names);
+  ASSERT_EQ(names->size(), st.size());
+  int kicked = 0;
+  for (std::size_t i = 0; i < st.size(); ++i) {
+    const std::string& name = (*names)[i];
+    if (name == "ws1.y") {
+      ++kicked;
       EXPECT_NEAR(st[i] - eq[i], 3e-3, 1e-15);
+    } else if (name.find("_dot") != std::string::npos) {
+      EXPECT_EQ(st[i], eq[i]) << name;
+    } else {
+      EXPECT_LT(std::abs(st[i] - eq[i]), 3e-3) << name;
     }
-  EXPECT_EQ(changed, 1);
+  }
+  EXPECT_EQ(kicked, 1);
 }
 
 TEST(InitialConditionsRun, GuidedCarBodyKickStartsThere) {

@@ -34,6 +34,11 @@ void startWithInitialConditions(vehicle::VehicleOde& ode,
     // In steps of at most 0.25 mm (or mrad): a wheelset moved by millimetres at once has one
     // wheel in its rail and the other in the air, where the equilibrium's Newton iteration on the
     // elastic approaches has no stiffness to work with; a small step keeps every tread patch.
+    // Offsets of zero hold nothing: the start stays the equilibrium, bit for bit.
+    if (held.empty()) {
+      vehicle::applyInitialConditions(ode, rates, y);
+      return;
+    }
     const int steps = std::clamp(static_cast<int>(std::ceil(largest / kSettleStep)), 1, 200);
     const Eigen::VectorXd target = y;
     y = equilibrium;
