@@ -127,6 +127,31 @@ def nan_signal(work):
         f["bodies/ws1/y"][100] = np.nan
 
 
+def short_assessment(work):
+    """An /assessment of 3 samples (7.5 ms): no assessment window fits, and a quantity computed
+    over an empty window would be NaN."""
+    with h5py().File(os.path.join(work, "result.h5"), "w") as f:
+        t = _base(f)
+        _assessment(f, t)
+        for name in list(f["assessment"].keys()):
+            del f["assessment"][name]
+        _assessment_of(f["assessment"], t[:3])
+
+
+def _assessment_of(a, t):
+    n = len(t)
+    _, y, q = _signals()
+    a["time"] = t
+    a["distance"] = SPEED * t
+    for side, sign in (("left", 1.0), ("right", -1.0)):
+        g = a.create_group(f"safety/ws1/{side}")
+        g.attrs["q0"] = Q0
+        g.attrs["s_offset"] = 0.0
+        g["Y"] = sign * y[:n]
+        g["Q"] = q[:n]
+        g["y_track"] = sign * y[:n]
+
+
 def plain(work):
     """The base alone (for the command-line options' cases)."""
     with h5py().File(os.path.join(work, "result.h5"), "w") as f:
