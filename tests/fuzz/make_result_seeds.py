@@ -95,6 +95,11 @@ SEEDS = {
     "assessment": bytes([0]) + base() + assessment(),
     "assessment_all": bytes([0]) + base(flags=2) + assessment(flags=2 | 4 | 16 | 32),
     "assessment_short": bytes([0]) + base() + assessment(n=3),
+    "assessment_one": bytes([0]) + base(n_code=0, flags=2) + assessment(n=1, flags=2 | 4 | 16 | 32),
+    "assessment_two": bytes([0]) + base(n_code=0, flags=2) + assessment(n=2, flags=2 | 4 | 16 | 32),
+    "assessment_half_second": bytes([0]) + base(n_code=50, flags=2) +
+    assessment(n=200, flags=2 | 4 | 8 | 16 | 32),
+    "outputs_two": bytes([0]) + base(n_code=0, flags=2) + dataset("/time", n=2, gen=1, scale=9),
     "assessment_tangent": bytes([0]) + base() + assessment(flags=4 | 8),
     "nan_assessment": bytes([0]) + base() + assessment() +
     delete("/assessment/safety/ws1/left/Y") +
