@@ -427,6 +427,7 @@ EntryPoint entryPoint(const std::string& harness) {
   if (harness == "tables") return &tables;
   if (harness == "study") return &study;
   if (harness == "metric") return &metric;
+  if (harness == "result") return &resultFiles;
   return nullptr;
 }
 

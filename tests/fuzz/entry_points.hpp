@@ -48,8 +48,18 @@ void study(std::string_view data);
 // that fails is reported by its `why`, as the study summary does; no exception but InputError.
 void metric(std::string_view data);
 
+// Forged result files (result_files.cpp; README.md has the grammar): the input is decoded into
+// HDF5 files (the result, a reference, a track store it may name, a victim outside its folder)
+// of groups, datasets of declared sizes and types, attributes, soft, external and hard links and
+// non-finite samples, then read by check-result, the readers of /stats, /metrics and the track
+// store, the comparison of runs, a study summary's metrics and assess. Beyond InputError and
+// io::BadResult (exit 1) a finding is also: assess writing a non-finite value, changing the
+// victim or (when it fails) the result, a metric value without a reason that is not finite, a
+// NaN error of two runs, an HDF5 object left open.
+void resultFiles(std::string_view data);
+
 // The entry point of a harness by its name ("scenario", "profile", "csv", "tables", "study",
-// "metric"); nullptr if there is none.
+// "metric", "result"); nullptr if there is none.
 using EntryPoint = void (*)(std::string_view);
 EntryPoint entryPoint(const std::string& harness);
 

@@ -2,7 +2,7 @@
 # Builds the libFuzzer harnesses in build-fuzz/ (clang-14, ASan + UBSan) and fuzzes each in turn.
 #   tests/fuzz/run.sh [--seconds N | --total N] [--build DIR] [HARNESS...] [-- libFuzzer options]
 # --seconds N: N seconds per harness (default 60); --total N: N seconds shared by the harnesses.
-# HARNESS: scenario, profile, csv, tables, study, metric (default: all). Exit status non-zero when
+# HARNESS: scenario, profile, csv, tables, study, metric, result (default: all). Exit status non-zero when
 # a harness finds a crash, leak, timeout or out-of-memory; its input is left in
 # BUILD/tests/fuzz/work/HARNESS/.
 set -euo pipefail
@@ -20,7 +20,7 @@ while [[ $# -gt 0 ]]; do
     *) harnesses+=("$1"); shift ;;
   esac
 done
-[[ ${#harnesses[@]} -gt 0 ]] || harnesses=(scenario profile csv tables study metric)
+[[ ${#harnesses[@]} -gt 0 ]] || harnesses=(scenario profile csv tables study metric result)
 if [[ $total -gt 0 ]]; then seconds=$(( total / ${#harnesses[@]} )); fi
 
 cc=${CC:-clang-14} cxx=${CXX:-clang++-14}

@@ -62,7 +62,8 @@ TEST(TableSeeds, Load) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Fuzz, Replay,
-                         testing::Values("scenario", "profile", "csv", "tables", "study", "metric"),
+                         testing::Values("scenario", "profile", "csv", "tables", "study", "metric",
+                                         "result"),
                          [](const testing::TestParamInfo<std::string>& p) { return p.param; });
 
 }  // namespace

@@ -127,6 +127,55 @@ def nan_signal(work):
         f["bodies/ws1/y"][100] = np.nan
 
 
+def short_assessment(work):
+    """An /assessment of 3 samples (7.5 ms): no assessment window fits, and a quantity computed
+    over an empty window would be NaN."""
+    with h5py().File(os.path.join(work, "result.h5"), "w") as f:
+        t = _base(f)
+        _assessment(f, t)
+        for name in list(f["assessment"].keys()):
+            del f["assessment"][name]
+        _assessment_of(f["assessment"], t[:3])
+
+
+def _assessment_of(a, t):
+    n = len(t)
+    _, y, q = _signals()
+    a["time"] = t
+    a["distance"] = SPEED * t
+    for side, sign in (("left", 1.0), ("right", -1.0)):
+        g = a.create_group(f"safety/ws1/{side}")
+        g.attrs["q0"] = Q0
+        g.attrs["s_offset"] = 0.0
+        g["Y"] = sign * y[:n]
+        g["Q"] = q[:n]
+        g["y_track"] = sign * y[:n]
+
+
+def comfort_sample_every(work):
+    """/assessment of 7 s sampled every 5 ms with floor accelerations, but @sample_every says
+    2.5 ms: by its times the run holds a 5 s block of EN 12299, by its samples at the stated
+    interval (3.5 s) none."""
+    with h5py().File(os.path.join(work, "result.h5"), "w") as f:
+        _base(f)
+        t = np.arange(1400) * 5e-3
+        a = f.create_group("assessment")
+        _assessment_of(a, t[:N])
+        del a["time"], a["distance"]
+        a["time"] = t
+        a["distance"] = SPEED * t
+        for side in ("left", "right"):
+            for k in ("Y", "Q", "y_track"):
+                v = a[f"safety/ws1/{side}/{k}"][()]
+                del a[f"safety/ws1/{side}/{k}"]
+                a[f"safety/ws1/{side}/{k}"] = np.resize(v, t.size)
+        a.attrs["sample_every"] = 2.5e-3
+        g = a.create_group("comfort/p1")
+        g.attrs["x_offset"] = 0.0
+        for k in ("a_x", "a_y", "a_z"):
+            g[k] = 0.1 * np.sin(2 * np.pi * 1.0 * t)
+
+
 def plain(work):
     """The base alone (for the command-line options' cases)."""
     with h5py().File(os.path.join(work, "result.h5"), "w") as f:

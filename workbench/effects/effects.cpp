@@ -124,6 +124,17 @@ int runEffects(const EffectsOptions& options) {
     throw InputError({o.scenario, 0},
                      "the scenario has no vehicle{} block: nothing is simulated, "
                      "no effect to measure");
+  // Q and Fy are wheel/rail forces: a guided vehicle has none, and every change would read as
+  // nothing (the table's column empty, in unit "-").
+  if (!scene.has_contact) {
+    Diagnostics d;
+    for (const auto& q : commaList(o.quantities))
+      if (q == "Q" || q == "Fy")
+        d.add(kCli, "--quantities: '" + q +
+                        "' is a wheel/rail contact quantity, but the scenario's vehicle has no "
+                        "contact (guided); use y or yaw");
+    d.throwIfAny();
+  }
   std::vector<std::string> common = o.overrides;
   std::vector<study::OptionOverride> lengths;
   if (auto len = lengthOverride(scene, o.duration, o.distance); !len.empty()) {

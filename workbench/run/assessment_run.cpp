@@ -311,8 +311,16 @@ void assessStability(const AssessmentSignals& sig, const assessment::AssessmentS
 
 void assessComfort(const AssessmentSignals& sig, const assessment::AssessmentSpec& spec,
                    AssessmentResult& r) {
+  // The blocks are counted in samples at the sample interval, as meanComfort counts them: a
+  // file whose /assessment@sample_every disagrees with its time axis (a forged or damaged one)
+  // must not pass this test on its times and then have no block.
   const double duration = sig.time.back() - sig.time.front();
-  if (duration < a12::kBlockDuration) {
+  const double block = std::round(a12::kBlockDuration / sig.dt);
+  const bool noBlock =
+      std::any_of(sig.floor.begin(), sig.floor.end(), [&](const FloorPointSignals& p) {
+        return static_cast<double>(std::min({p.ax.size(), p.ay.size(), p.az.size()})) < block;
+      });
+  if (duration < a12::kBlockDuration || noBlock) {
     r.notes.push_back("comfort: the run is shorter than one 5 s block of EN 12299; not assessed");
     r.spec.comfort = false;
     return;

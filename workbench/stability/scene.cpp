@@ -108,13 +108,35 @@ std::string sceneText(const std::string& path, const std::string& module,
   return s.str();
 }
 
+// A scenario that loads with `overrides` but not with --contact's method refuses the option
+// (e.g. KEC or LUT on rails that change along the track): the option is named, as precision
+// names its --methods, rather than the scenario line the override became.
+void refuseContactOption(const InputError& e, const std::string& path, const std::string& contact,
+                         const std::vector<std::string>& overrides, const std::string& root) {
+  if (contact.empty()) return;
+  scenario::LoadOptions lo;
+  lo.root = root;
+  lo.overrides = overrides;
+  try {
+    (void)scenario::loadScenario(path, lo);
+  } catch (const InputError&) {
+    return;  // the scenario's own problem, reported as it is
+  }
+  throw InputError(
+      {"<command line>", 0},
+      "--contact " + contact + ": the scenario refuses contact.method=" + contact + ": " +
+          (e.diagnostics().empty() ? std::string(e.what()) : e.diagnostics().front().str()));
+}
+
 }  // namespace
 
 StabilityScene loadStabilityScene(const std::string& path, const std::string& contact,
                                   const std::vector<std::string>& overrides,
                                   const std::string& root, const std::string& out) {
-  if (!contact.empty() && contact != "kec" && contact != "lut")
-    throw InputError({"--contact", 0}, "--contact must be kec or lut, got '" + contact + "'");
+  // The methods of the help text: the elastic method linearises as the table methods do.
+  if (!contact.empty() && contact != "kec" && contact != "lut" && contact != "elastic")
+    throw InputError({"--contact", 0},
+                     "--contact must be kec, lut or elastic, got '" + contact + "'");
   StabilityScene scene;
   scene.file = path;
   scene.overrides = overrides;
@@ -130,8 +152,10 @@ StabilityScene loadStabilityScene(const std::string& path, const std::string& co
   } catch (const InputError& e) {
     // Overrides (--set solver.method=bdf) add complaints of their own about a file without
     // blocks: whether the file is a vehicle file is decided on the file alone.
-    if (!looksLikeVehicleFile(e) && !(scene.overrides.size() > 0 && isVehicleFile(path, root)))
+    if (!looksLikeVehicleFile(e) && !(scene.overrides.size() > 0 && isVehicleFile(path, root))) {
+      refuseContactOption(e, path, contact, overrides, root);
       throw;
+    }
   }
   if (loaded) return scene;
   // A vehicle file: write the scene around it.

@@ -135,6 +135,11 @@ sm::Value assessmentMetric(const io::ResultReader& r, const MetricSpec& m) {
   if (!v)
     return sm::Value::fail("no number " + attr + " on " + object +
                            " (not assessed in this run: see /assessment notes)");
+  // A forged or damaged file may hold NaN or an infinity there: no value, the reason instead
+  // (the summary would print it as a number).
+  if (!std::isfinite(*v))
+    return sm::Value::fail(object + "@" + attr + " is " + (std::isnan(*v) ? "NaN" : "infinite") +
+                           " in the result (not a number that can be compared)");
   sm::Value out;
   out.value = *v;
   return out;
@@ -263,13 +268,30 @@ bool storeCaseMetrics(const scenario::StudySpec& st, const scenario::StudyCase& 
   }
 }
 
+namespace {
+
+// Whether the stored /metrics can stand for the metrics of `st`: the same names in the study's
+// order, each a finite value without a reason or NaN with one (what caseMetrics stores). The
+// block is read from a result file, which may be forged or damaged: anything else is computed
+// afresh rather than printed in the summary.
+bool storedUsable(const io::MetricsBlock& b, const scenario::StudySpec& st) {
+  if (b.hash != metricsHash(st) || b.values.size() != st.metrics.size()) return false;
+  for (std::size_t k = 0; k < b.values.size(); ++k) {
+    const io::MetricRecord& m = b.values[k];
+    if (m.name != st.metrics[k].name ||
+        !(m.why.empty() ? std::isfinite(m.value) : std::isnan(m.value)))
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 std::vector<io::MetricRecord> summaryMetrics(MetricContext& ctx, const scenario::StudyCase& c,
                                              const std::string& h5,
                                              const std::string& referenceH5) {
   const auto stored = io::readMetrics(h5);
-  if (!stored || stored->hash != metricsHash(ctx.st) ||
-      stored->values.size() != ctx.st.metrics.size())
-    return caseMetrics(ctx, c, h5, referenceH5);
+  if (!stored || !storedUsable(*stored, ctx.st)) return caseMetrics(ctx, c, h5, referenceH5);
   std::vector<io::MetricRecord> out = stored->values;
   for (std::size_t k = 0; k < ctx.st.metrics.size(); ++k)
     if (ctx.st.metrics[k].kind == "error") {
