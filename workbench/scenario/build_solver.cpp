@@ -32,8 +32,8 @@ void buildSolver(const Node& n, integ::SolverSpec& s, Diagnostics& d) {
   s.rtol = r.number("rtol");
   s.atol = r.number("atol");
   s.max_step = r.number("max_step");
-  s.max_order = static_cast<int>(r.number("max_order"));
-  s.max_steps = static_cast<long>(r.number("max_steps"));
+  s.max_order = toInteger<int>(r.number("max_order"));
+  s.max_steps = toInteger<long>(r.number("max_steps"));
   s.jacobian = r.choice("jacobian");
   s.stiff = r.choiceOf<integ::StiffTreatment>("stiff");
   s.accept_unstable_step = r.boolean("accept_unstable_step");

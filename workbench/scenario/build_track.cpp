@@ -110,8 +110,8 @@ void buildIrregularities(const Node& n, const std::string& path, LuaHost& host,
   Reader r(n, block("psd"), path, d);
   out.source = track::IrregularitySource::Psd;
   out.spectrum = r.choice("spectrum");
-  out.seed = static_cast<std::uint64_t>(r.number("seed"));
-  out.components = static_cast<int>(r.number("components"));
+  out.seed = toInteger<std::uint64_t>(r.number("seed"));
+  out.components = toInteger<int>(r.number("components"));
   out.step = r.number("step");
   out.scale = r.number("scale");
   out.fade_in = r.number("fade_in");

@@ -3,6 +3,7 @@
 // (schema.hpp): every value is checked against the key's type, range and choices, and every
 // problem is added to the Diagnostics as file:line: block: message, so a scenario reports all of
 // its problems at once. Unknown keys are reported when the Reader is made.
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,17 @@
 #include "workbench/scenario/schema.hpp"
 
 namespace rb::scenario {
+
+// x as the integer type T when it is finite and inside T's range, else T{}: a key's value outside
+// its range is reported by Reader::number and never used, but converting it first would be
+// undefined behaviour (a seed of -1 to std::uint64_t).
+template <class T>
+T toInteger(double x) {
+  if (!(x >= static_cast<double>(std::numeric_limits<T>::min()) &&
+        x < static_cast<double>(std::numeric_limits<T>::max())))
+    return T{};
+  return static_cast<T>(x);
+}
 
 class Reader {
  public:
