@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -14,6 +15,7 @@
 
 #include "workbench/dynamics/contact_model.hpp"
 #include "workbench/dynamics/names.hpp"
+#include "workbench/dynamics/wheel_measures.hpp"
 #include "workbench/io/result_file.hpp"
 #include "workbench/run/compile.hpp"
 #include "workbench/run/run_stats.hpp"
@@ -123,11 +125,32 @@ void checkTrackStore(const std::string& dir) {
   ::unlink(probe.c_str());
 }
 
+// The notes on the wheels read from files (their EN 15313 flange measures), once per line over
+// the vehicles and their wheelsets' own wheels; on stderr with the warnings, so that the run's
+// stdout keeps its lines.
+void printProfileNotes(const run::Model& m) {
+  std::vector<std::string> printed;
+  auto print = [&](const dynamics::ContactModel& cm) {
+    for (const std::string& n : dynamics::wheelMeasureNotes(cm)) {
+      if (std::find(printed.begin(), printed.end(), n) != printed.end()) continue;
+      printed.push_back(n);
+      std::cerr << n << "\n";
+    }
+  };
+  for (const run::RunVehicle& rv : m.vehicles) {
+    if (!rv.contact) continue;
+    print(*rv.contact);
+    for (const auto& own : rv.contact->own_wheels)
+      if (own) print(*own);
+  }
+}
+
 }  // namespace
 
 void checkScenario(const RunOptions& options) {
   run::Model m = run::compile(compileOptions(options));
   for (const auto& w : m.warnings) std::cerr << w << "\n";
+  printProfileNotes(m);
 }
 
 std::unique_ptr<io::ResultFile> openResultFile(const std::string& out, bool compact) {
@@ -151,6 +174,7 @@ int runScenario(const RunOptions& options) {
   // not start never touches an earlier result.
   run::Model c = run::compile(compileOptions(options));
   for (const auto& w : c.warnings) std::cerr << w << "\n";
+  printProfileNotes(c);
   // Output only: the model, its integration and every written signal are those of a full run.
   if (options.compact) c.spec.run.output_patches = false;
   const unsigned period = stagePeriod(options);

@@ -74,6 +74,16 @@ WheelDimensions wheelDimensions(const Profile& wheel, double flangeBackDistance,
   return d;
 }
 
+std::optional<WheelDimensions> measureWheel(const Profile& wheel, double flangeBackDistance,
+                                            double tapeCircleS) {
+  // The preconditions of wheelDimensions; with them the face crossings exist (h is continuous
+  // from the tape circle, below both heights, to the tip, above both).
+  if (!wheel.inside(tapeCircleS)) return std::nullopt;
+  const double tip = wheel.at(maxPoint(wheel)).h - wheel.at(tapeCircleS).h;
+  if (!(tip > kSdHeight + kQrBelowTip)) return std::nullopt;
+  return wheelDimensions(wheel, flangeBackDistance, tapeCircleS);
+}
+
 double flangeHeight(const Profile& wheel, double tapeCircleS) {
   return wheelDimensions(wheel, 0.070, tapeCircleS).flangeHeight;
 }

@@ -11,6 +11,8 @@
 //   2 mm below the flange tip (S1002: 10.8 mm).
 // Rail: head width between the two points where the head side reaches the side slope (60E1: the
 // 1:20 side, 72 mm).
+#include <optional>
+
 #include "workbench/profiles/profile.hpp"
 
 namespace rb::profiles {
@@ -30,6 +32,10 @@ inline constexpr double kQrBelowTip = 0.002;  // [m] qR upper point 2 mm below t
 // tapeCircleS: profile parameter of the tape circle (0 for the built-in profiles).
 WheelDimensions wheelDimensions(const Profile& wheel, double flangeBackDistance = 0.070,
                                 double tapeCircleS = 0.0);
+// The same for a profile that may have no flange, or not reach the tape circle (a file read from
+// the user): nullopt instead of an internal error.
+std::optional<WheelDimensions> measureWheel(const Profile& wheel, double flangeBackDistance = 0.070,
+                                            double tapeCircleS = 0.0);
 double flangeHeight(const Profile& wheel, double tapeCircleS = 0.0);
 double flangeThickness(const Profile& wheel, double flangeBackDistance = 0.070,
                        double tapeCircleS = 0.0);

@@ -123,6 +123,7 @@ class FileDiagnostics {
     }
   }
   void throwIfAny() const { diags_.throwIfAny(); }
+  bool empty() const { return diags_.empty(); }
 
  private:
   Diagnostics diags_;
@@ -405,6 +406,395 @@ ProfilePoints parseTextPoints(std::string_view fileText, const std::string& path
 
 namespace {
 
+// MiniProf files (Greenwood Engineering's profile instrument; .whl wheels, .ban rails, .mpt
+// several profiles or profile parts). No published specification was available; the layout was
+// learnt from the example files of the CONTACT test bank (eve70a/CONTACT d431cdb, testbank/
+// profiles/*.whl, *.ban, SNX00500.mpt, examples/MBench_UIC60_v3.ban) and from CONTACT's reader
+// (matlab/read_miniprof.m, Apache-2.0), which was read, not copied:
+// - "Old" files (a line "MINIPROF ..." among the first three): free-text header lines, among them
+//   "Sd Sh qR" followed by "(Sd/Sh/qR)"; the points follow the first empty line.
+// - Keyword files (.whl, .ban): "Key=Value" header lines (ColumnDef, XYPoints, Sd, Sh, qR, ...),
+//   then the points, with or without an empty line between.
+// - .mpt files: "[FileInfo]", "[Profile<N>Info]" (keywords) and "[Profile<N>Points]" sections.
+// - `"`, `%` and `!` start a comment; MiniProf and CONTACT mark dropped points with a leading `"`
+//   (counted by XYPoints, so they count for the truncation check).
+// - Coordinates are in millimetres (no file states a unit; the coordinate plausibility check
+//   refuses metres).
+enum class MiniprofLayout { Old, Keyword, Multi };
+
+bool asciiIEquals(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c + 32) : c; };
+    if (lower(a[i]) != lower(b[i])) return false;
+  }
+  return true;
+}
+
+// All tokens numeric: their values; otherwise an empty vector.
+std::vector<double> numbers(std::string_view text) {
+  std::vector<double> v;
+  for (const std::string_view t : tokens(text)) {
+    double x = 0.0;
+    if (!parseNumber(t, x)) return {};
+    v.push_back(x);
+  }
+  return v;
+}
+
+class MiniprofReader {
+ public:
+  MiniprofReader(std::string path, ProfileKind kind) : path_(std::move(path)), kind_(kind) {}
+
+  void line(std::string_view raw, int ln) {
+    const SourceLoc loc{path_, ln};
+    if (raw.find('\0') != std::string_view::npos) {
+      diags_.add(loc, "NUL byte in the file: a MiniProf profile is text");
+      diags_.throwIfAny();
+    }
+    if (ln <= 3 && raw.find("MINIPROF") != std::string_view::npos) layout_ = MiniprofLayout::Old;
+    const std::string_view whole = trim(raw);
+    if (ln == 1 && whole == "[FileInfo]") layout_ = MiniprofLayout::Multi;
+    if (whole.empty()) {
+      if (layout_ == MiniprofLayout::Old) afterBlank_ = true;
+      return;
+    }
+    const std::size_t cut = whole.find_first_of("\"%!");
+    const std::string_view text = trim(whole.substr(0, std::min(cut, whole.size())));
+    if (text.empty()) {
+      // A commented-out point in the data: XYPoints counts it.
+      if (inData() && whole.front() == '"' && !numbers(whole.substr(1)).empty()) ++commented_;
+      return;
+    }
+    if (layout_ == MiniprofLayout::Multi && text.front() == '[' && text.back() == ']') {
+      section(text, loc);
+      return;
+    }
+    if (const auto eq = text.find('='); eq != std::string_view::npos) {
+      if (!y_.empty() && layout_ != MiniprofLayout::Multi) {
+        diags_.add(loc, "a header line after the profile points");
+        return;
+      }
+      keyword(trim(text.substr(0, eq)), trim(text.substr(eq + 1)), loc);
+      return;
+    }
+    std::vector<double> v = numbers(text);
+    if (!inData() || (layout_ == MiniprofLayout::Keyword && v.empty() && y_.empty())) {
+      headerText(text, v, loc);
+      return;
+    }
+    point(text, v, loc);
+  }
+
+  bool full() const { return diags_.full(); }
+
+  ProfilePoints finish(int lastLine, ProfileFileInfo* info) {
+    const SourceLoc end{path_, lastLine};
+    if (columnsLine_ != 0 && (xCol_ < 0 || yCol_ < 0)) {
+      diags_.add(SourceLoc{path_, columnsLine_},
+                 "ColumnDef names no X and Y column: the profile's coordinates are unknown");
+    }
+    if (y_.empty() && diags_.empty()) {
+      diags_.add(end,
+                 "no profile points: the header is not followed by data (the file is cut "
+                 "short?)");
+    } else if (y_.size() < kMinPoints && diags_.empty()) {
+      diags_.add(end, "only " + std::to_string(y_.size()) + " profile points; at least " +
+                          std::to_string(kMinPoints) + " are needed");
+    }
+    if (declared_ >= 0 && diags_.empty() &&
+        static_cast<long long>(y_.size()) + static_cast<long long>(commented_) != declared_) {
+      diags_.add(end, "XYPoints = " + std::to_string(declared_) + " (line " +
+                          std::to_string(declaredLine_) + ") but the file holds " +
+                          std::to_string(y_.size() + commented_) +
+                          " point lines: the file is truncated or was edited");
+    }
+    diags_.throwIfAny();
+    ProfilePoints pts;
+    pts.file = path_;
+    pts.kind = kind_;
+    pts.unitsHint = "MiniProf files are in millimetres";
+    pts.endLine = lastLine;
+    orient(pts);
+    pts.line = lines_;
+    if (info != nullptr) {
+      info->format = "MiniProf";
+      if (sd_ && sh_ && qr_) {
+        info->hasHeaderDimensions = true;
+        info->headerSd = *sd_ * 1e-3;
+        info->headerSh = *sh_ * 1e-3;
+        info->headerQr = *qr_ * 1e-3;
+        info->headerDimensionsLine = dimLine_;
+      }
+    }
+    return pts;
+  }
+
+ private:
+  bool inData() const {
+    switch (layout_) {
+      case MiniprofLayout::Old:
+        return afterBlank_;
+      case MiniprofLayout::Multi:
+        return inPoints_;
+      case MiniprofLayout::Keyword:
+        return true;
+    }
+    return true;
+  }
+
+  void section(std::string_view name, const SourceLoc& loc) {
+    inPoints_ = name.starts_with("[Profile") && name.ends_with("Points]");
+    if (!inPoints_) return;
+    if (++profiles_ > 1) {
+      diags_.add(loc, "a second profile in the file (" + std::string(name) +
+                          "): railbench reads one profile per file; keep the one wanted");
+      diags_.throwIfAny();
+    }
+  }
+
+  void keyword(std::string_view key, std::string_view value, const SourceLoc& loc) {
+    auto num = [&](std::optional<double>& out) {
+      if (value.empty()) return;  // a keyword the instrument left empty
+      double v = 0.0;
+      if (!parseNumber(value, v)) {
+        diags_.add(
+            loc, "non-numeric value for " + std::string(key) + ": \"" + std::string(value) + "\"");
+        return;
+      }
+      out = v;
+      dimLine_ = loc.line;
+    };
+    if (asciiIEquals(key, "ColumnDef")) {
+      columnsLine_ = loc.line;
+      columns_ = 0;
+      xCol_ = yCol_ = -1;
+      std::size_t b = 0;
+      while (b <= value.size()) {
+        const std::size_t e = std::min(value.find(',', b), value.size());
+        const std::string_view c = trim(value.substr(b, e - b));
+        if (c == "X") xCol_ = columns_;
+        if (c == "Y") yCol_ = columns_;
+        ++columns_;
+        b = e + 1;
+      }
+    } else if (asciiIEquals(key, "XYPoints")) {
+      double v = 0.0;
+      if (!parseNumber(value, v) || v < 0.0 || v > static_cast<double>(kMaxProfilePoints) ||
+          v != std::floor(v)) {
+        diags_.add(loc, "XYPoints must be a point count up to " +
+                            std::to_string(kMaxProfilePoints) + ", got \"" + std::string(value) +
+                            "\"");
+        return;
+      }
+      declared_ = static_cast<long long>(v);
+      declaredLine_ = loc.line;
+    } else if (asciiIEquals(key, "Sd")) {
+      num(sd_);
+    } else if (asciiIEquals(key, "Sh")) {
+      num(sh_);
+    } else if (asciiIEquals(key, "qR")) {
+      num(qr_);
+    } else if (asciiIEquals(key, "WheelDiameterTaperline")) {
+      // The instrument's tape line, from the flange back. railbench's wheel frame has it at 70 mm
+      // (EN 13715); another tape line would shift the wheel against profiles.back_to_back.
+      std::optional<double> tape;
+      num(tape);
+      if (tape && std::abs(*tape - kTapeX) > 1e-9) {
+        diags_.add(loc, "the tape line is " + formatNumber(*tape) +
+                            " mm from the flange back; railbench reads wheels whose tape circle "
+                            "is 70 mm from it (EN 13715)");
+      }
+    }
+  }
+
+  // Header text; old files give "Sd Sh qR" before "(Sd/Sh/qR)", on the same line or the one
+  // before it.
+  void headerText(std::string_view text, const std::vector<double>& v, const SourceLoc& loc) {
+    if (!v.empty()) {
+      lastNumbers_ = v;
+      lastNumbersLine_ = loc.line;
+      return;
+    }
+    const auto mark = text.find("(Sd/Sh/qR)");
+    if (mark == std::string_view::npos) return;
+    std::vector<double> d = numbers(trim(text.substr(0, mark)));
+    int at = loc.line;
+    if (d.empty() && lastNumbersLine_ == loc.line - 1) {
+      d = lastNumbers_;
+      at = lastNumbersLine_;
+    }
+    if (d.size() == 3) {
+      sd_ = d[0];
+      sh_ = d[1];
+      qr_ = d[2];
+      dimLine_ = at;
+    }
+  }
+
+  void point(std::string_view text, const std::vector<double>& v, const SourceLoc& loc) {
+    if (v.empty()) {
+      diags_.add(loc, "non-numeric profile data \"" + std::string(text) + "\"");
+      return;
+    }
+    const std::size_t need = columnsLine_ != 0 ? static_cast<std::size_t>(columns_) : 2;
+    if (columnsLine_ != 0 ? v.size() != need : v.size() < need) {
+      diags_.add(loc,
+                 "expected " + std::to_string(need) + " values" +
+                     (columnsLine_ != 0 ? " (ColumnDef, line " + std::to_string(columnsLine_) + ")"
+                                        : std::string(" (X Y)")) +
+                     ", got " + std::to_string(v.size()));
+      return;
+    }
+    if (y_.size() == kMaxProfilePoints) {
+      diags_.add(loc, tooManyPoints());
+      diags_.throwIfAny();
+    }
+    const int xi = columnsLine_ != 0 ? std::max(xCol_, 0) : 0;
+    const int yi = columnsLine_ != 0 ? std::max(yCol_, 0) : 1;
+    x_.push_back(v[static_cast<std::size_t>(xi)]);
+    y_.push_back(v[static_cast<std::size_t>(yi)]);
+    lines_.push_back(loc.line);
+  }
+
+  // Which way is up is not written in the files (the benchmark rail MBench_UIC60_v3.ban has Y
+  // down, the measured ones Y up), so it is read from the shape: a wheel's flange tip and a rail's
+  // head are the highest part of the profile, above both of its ends (the flange back and the
+  // outer face, the two flanks). Y up: the largest Y lies more than 1 mm above both ends; Y down:
+  // the smallest lies more than 1 mm below both.
+  void orient(ProfilePoints& pts) {
+    trimFoldedEnds();
+    const std::size_t n = x_.size();
+    std::size_t lo = 0, hi = 0, top = 0, bottom = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+      if (x_[i] < x_[lo]) lo = i;
+      if (x_[i] > x_[hi]) hi = i;
+      if (y_[i] > y_[top]) top = i;
+      if (y_[i] < y_[bottom]) bottom = i;
+    }
+    constexpr double kRise = 1.0;  // [mm]
+    double extent = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      extent = std::max({extent, std::abs(x_[i]), std::abs(y_[i])});
+    double sign = 0.0;
+    if (extent < 1.0) {
+      // A wheel's shift by 70 mm would hide this from the unit check of profileFromPoints.
+      throw InputError(SourceLoc{path_, lines_.front()},
+                       "all coordinates are below 1 mm: the data seem to be in metres (MiniProf "
+                       "files are in millimetres)");
+    }
+    if (y_[top] > std::max(y_[lo], y_[hi]) + kRise) {
+      sign = 1.0;
+    } else if (y_[bottom] < std::min(y_[lo], y_[hi]) - kRise) {
+      sign = -1.0;
+      top = bottom;
+    } else {
+      throw InputError(SourceLoc{path_, lines_[top]},
+                       "cannot tell which way is up: no point lies 1 mm above (or below) both "
+                       "ends of the profile, as a wheel's flange or a rail's head does");
+    }
+    const bool wheel = kind_ == ProfileKind::Wheel;
+    if (wheel && !(x_[top] < kTapeX)) {
+      throw InputError(SourceLoc{path_, lines_[top]},
+                       "the flange tip lies at X = " + formatNumber(x_[top]) +
+                           " mm, not between the flange back (X = 0) and the tape circle (X = "
+                           "70 mm): a MiniProf wheel's X runs from the back of the flange");
+    }
+    // Wheel: s from the tape circle, toward the field side as the left wheel's (the files measure
+    // X from the flange back toward the outer face), z the radius increase. Rail: X grows toward
+    // the gauge side, so the left rail's s (field side positive) is -X. Evidence: CONTACT's
+    // MBench_UIC60_v3.ban is its MBench_UIC60_v3.prr (gauge side at y < 0) with X = -y, and the
+    // measured avg_HR.BAN reaches down the gauge face (to Y = -25 mm, for the gauge point 14 mm
+    // below the top) at its X > 0 end and only 1.5 mm down on the other.
+    const double x0 = wheel ? kTapeX : 0.0;
+    const double sx = wheel ? 1.0 : -1.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      pts.y.push_back(sx * (x_[i] - x0) * 1e-3);
+      pts.z.push_back(sign * y_[i] * 1e-3);
+    }
+  }
+
+  // A measured profile's near-vertical parts (a wheel's flange back and outer face, a rail's
+  // flanks) may fold back in X: the instrument's points there stall or step backwards
+  // (avg_wheel.whl repeats X = 139.70 mm down its outer face). Such steps are allowed where the
+  // profile is steep (|dY| > 10 |dX|, the default slope cut of profileFromPoints, which would drop
+  // these points anyway), and the points are cut to the longest run along which X advances. A
+  // step backwards where the profile is flatter (a tread, a rail head, a flange tip measured with
+  // a glitch) is refused at that step: cutting there would drop part of the running surface.
+  void trimFoldedEnds() {
+    const std::size_t n = x_.size();
+    const double dir = x_[n - 1] > x_[0] ? 1.0 : -1.0;
+    constexpr double kSteep = 10.0;
+    for (std::size_t i = 1; i < n; ++i) {
+      const double dx = x_[i] - x_[i - 1];
+      if (dir * dx > 0.0 || dx == 0.0 || std::abs(y_[i] - y_[i - 1]) > kSteep * std::abs(dx))
+        continue;
+      throw InputError(SourceLoc{path_, lines_[i]},
+                       "profile X values must advance: X = " + formatNumber(x_[i]) +
+                           " mm follows X = " + formatNumber(x_[i - 1]) +
+                           " mm where the profile is not steep (steps backwards are cut away "
+                           "only on near-vertical flanks)");
+    }
+    std::size_t best = 0, len = 1, start = 0;
+    for (std::size_t i = 1; i < n; ++i) {
+      if (!(dir * (x_[i] - x_[i - 1]) > 0.0)) start = i;
+      if (i - start + 1 > len) {
+        len = i - start + 1;
+        best = start;
+      }
+    }
+    const auto keep = [&](auto& v) {
+      v.erase(v.begin() + static_cast<std::ptrdiff_t>(best + len), v.end());
+      v.erase(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(best));
+    };
+    keep(x_);
+    keep(y_);
+    keep(lines_);
+  }
+
+  static constexpr double kTapeX = 70.0;  // [mm] EN 13715 tape circle from the flange back
+
+  std::string path_;
+  ProfileKind kind_;
+  FileDiagnostics diags_;
+  MiniprofLayout layout_ = MiniprofLayout::Keyword;
+  bool afterBlank_ = false, inPoints_ = false;
+  int profiles_ = 0, columns_ = 0, xCol_ = -1, yCol_ = -1, columnsLine_ = 0;
+  long long declared_ = -1;
+  int declaredLine_ = 0, dimLine_ = 0, lastNumbersLine_ = 0;
+  std::size_t commented_ = 0;
+  std::vector<double> lastNumbers_;
+  std::optional<double> sd_, sh_, qr_;
+  std::vector<double> x_, y_;
+  std::vector<int> lines_;
+};
+
+}  // namespace
+
+ProfilePoints parseMiniprofPoints(std::string_view fileText, const std::string& path,
+                                  ProfileKind kind, ProfileFileInfo* info) {
+  Lines lines(fileText);
+  MiniprofReader rd(path, kind);
+  std::string_view raw;
+  while (!rd.full() && lines.next(raw)) rd.line(raw, lines.count());
+  return rd.finish(std::max(lines.count(), 1), info);
+}
+
+ProfilePoints readMiniprofPoints(const std::string& path, ProfileKind kind, ProfileFileInfo* info) {
+  return parseMiniprofPoints(readProfileText(path), path, kind, info);
+}
+
+ProfileFormat profileFormat(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = c >= 'A' && c <= 'Z' ? static_cast<char>(c + 32) : c;
+  if (ext == ".prw" || ext == ".prr") return ProfileFormat::Simpack;
+  if (ext == ".whl" || ext == ".ban" || ext == ".mpt") return ProfileFormat::Miniprof;
+  if (ext == ".whe" || ext == ".rai") return ProfileFormat::Vampire;
+  return ProfileFormat::Text;
+}
+
+namespace {
+
 // Plausibility of the length unit (coordinates in metres, |v| <= 1 m, extent >= 1 mm) and of the
 // wheel radii r0 + z.
 void checkCoordinates(const ProfilePoints& p, const ProfileReadOptions& opt) {
@@ -609,17 +999,47 @@ Profile readTextProfile(const std::string& path, ProfileKind kind, LengthUnit un
 }
 
 Profile readProfileFile(const std::string& path, ProfileKind kind, LengthUnit units,
-                        const ProfileReadOptions& options) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".prw" || ext == ".prr") {
-    const ProfilePoints pts = readSimpackPoints(path);
-    if (pts.kind != kind) {
-      throw InputError(SourceLoc{path, pts.kindLine}, std::string("the file holds a ") +
-                                                          kindName(pts.kind) + " profile, a " +
-                                                          kindName(kind) + " profile is expected");
+                        const ProfileReadOptions& options, ProfileFileInfo* info) {
+  switch (profileFormat(path)) {
+    case ProfileFormat::Simpack: {
+      const ProfilePoints pts = readSimpackPoints(path);
+      if (pts.kind != kind) {
+        throw InputError(SourceLoc{path, pts.kindLine},
+                         std::string("the file holds a ") + kindName(pts.kind) + " profile, a " +
+                             kindName(kind) + " profile is expected");
+      }
+      if (info != nullptr) info->format = "SIMPACK";
+      return simpackProfile(pts, options);
     }
-    return simpackProfile(pts, options);
+    case ProfileFormat::Miniprof: {
+      // .whl holds a wheel and .ban a rail (the instrument's two modes); .mpt either.
+      const std::string ext = std::filesystem::path(path).extension().string();
+      const bool whl = ext.size() == 4 && (ext[1] == 'w' || ext[1] == 'W');
+      const bool ban = ext.size() == 4 && (ext[1] == 'b' || ext[1] == 'B');
+      if ((whl && kind != ProfileKind::Wheel) || (ban && kind != ProfileKind::Rail)) {
+        throw InputError(SourceLoc{path, 1}, std::string("a MiniProf ") + ext + " file holds a " +
+                                                 (whl ? "wheel" : "rail") + " profile, a " +
+                                                 kindName(kind) + " profile is expected");
+      }
+      const ProfilePoints pts = readMiniprofPoints(path, kind, info);
+      if (kind == ProfileKind::Wheel && !(options.r0 > 0.0)) {
+        throw InputError(SourceLoc{path, 1},
+                         "a MiniProf wheel profile gives the radius increase: the tape-circle "
+                         "radius r0 is needed");
+      }
+      return profileFromPoints(pts, options, stem(path));
+    }
+    case ProfileFormat::Vampire:
+      // No public VAMPIRE profile file or format description was found to verify a reader
+      // against (docs/profiles.md), so none is guessed.
+      throw InputError(SourceLoc{path, 1},
+                       "VAMPIRE profile files (.whe, .rai) are not read: no public example or "
+                       "format description was available to verify a reader; convert the profile "
+                       "to two-column text (y z in mm)");
+    case ProfileFormat::Text:
+      break;
   }
+  if (info != nullptr) info->format = "text";
   return readTextProfile(path, kind, units, options);
 }
 

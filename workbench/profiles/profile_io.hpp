@@ -28,6 +28,17 @@
 // interpolating spline), resampled on a uniform grid of step ds aligned on multiples of ds inside
 // the kept points.
 //
+// - MiniProf (Greenwood Engineering) .whl (wheel), .ban (rail), .mpt (sections; one profile per
+//   file is read): keyword or free-text header lines, a ColumnDef naming the columns (X lateral,
+//   Y vertical, further columns ignored), the data rows; `"`, `%` and `!` start a comment. X and Y
+//   are in millimetres. A wheel's X runs from the back of the flange, its tape circle at X = 70 mm
+//   (s = X - 70 mm), Y is the radius increase (h = r0 + Y). A rail's X grows toward the gauge
+//   side: the left rail's s is -X. Which way Y points is read from the shape (flange tip, rail
+//   head above both ends). Steps backwards in X are cut on steep flanks, refused elsewhere.
+//   XYPoints, when given, must match the point lines (a truncated file is refused); the header's
+//   Sd, Sh, qR (keywords, or an old file's "(Sd/Sh/qR)" line) are returned in ProfileFileInfo.
+// - VAMPIRE .whe / .rai are refused with a message: no public example or description to verify.
+//
 // Errors: bad files throw rb::InputError whose diagnostic is "file:line: message", the line being
 // the offending one: non-numeric data, fewer than 10 points, y not strictly monotone or two points
 // closer than 1 nm, implausible units (a coordinate > 1 m, or all coordinates < 1 mm), a wheel
@@ -82,6 +93,19 @@ struct ProfilePoints {
   std::string unitsHint;  // how to fix the length unit, for the messages
 };
 
+// What a file says about itself beyond its points.
+struct ProfileFileInfo {
+  std::string format;  // "SIMPACK", "MiniProf", "text"
+  // MiniProf wheels: the flange measures the instrument's software wrote into the header [m].
+  bool hasHeaderDimensions = false;
+  double headerSd = 0.0, headerSh = 0.0, headerQr = 0.0;
+  int headerDimensionsLine = 0;
+};
+
+enum class ProfileFormat { Simpack, Miniprof, Vampire, Text };
+// By the file's extension (case-insensitive).
+ProfileFormat profileFormat(const std::string& path);
+
 ProfilePoints readSimpackPoints(const std::string& path);
 ProfilePoints readTextPoints(const std::string& path, ProfileKind kind, LengthUnit units);
 // The same from the file's text already in memory; `path` names it in messages (and, for SIMPACK,
@@ -89,6 +113,12 @@ ProfilePoints readTextPoints(const std::string& path, ProfileKind kind, LengthUn
 ProfilePoints parseSimpackPoints(std::string_view text, const std::string& path);
 ProfilePoints parseTextPoints(std::string_view text, const std::string& path, ProfileKind kind,
                               LengthUnit units);
+// MiniProf: the points of the file's one profile, oriented and in SI (see above); `info`, if given,
+// receives the header's Sd, Sh, qR.
+ProfilePoints readMiniprofPoints(const std::string& path, ProfileKind kind,
+                                 ProfileFileInfo* info = nullptr);
+ProfilePoints parseMiniprofPoints(std::string_view text, const std::string& path, ProfileKind kind,
+                                  ProfileFileInfo* info = nullptr);
 
 // Checks, trims, smooths and resamples (see above).
 Profile profileFromPoints(const ProfilePoints& points, const ProfileReadOptions& options,
@@ -98,8 +128,10 @@ Profile profileFromPoints(const ProfilePoints& points, const ProfileReadOptions&
 Profile readSimpackProfile(const std::string& path, const ProfileReadOptions& options = {});
 Profile readTextProfile(const std::string& path, ProfileKind kind, LengthUnit units,
                         const ProfileReadOptions& options = {});
-// By extension: .prw / .prr -> SIMPACK (its type must equal `kind`), anything else -> text.
+// By extension (profileFormat): .prw / .prr -> SIMPACK (its type must equal `kind`), .whl / .ban /
+// .mpt -> MiniProf (.whl a wheel, .ban a rail), .whe / .rai refused, anything else -> text.
+// `info`, if given, receives what the file says about itself.
 Profile readProfileFile(const std::string& path, ProfileKind kind, LengthUnit units,
-                        const ProfileReadOptions& options = {});
+                        const ProfileReadOptions& options = {}, ProfileFileInfo* info = nullptr);
 
 }  // namespace rb::profiles

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "workbench/dynamics/names.hpp"
+#include "workbench/dynamics/wheel_measures.hpp"
 #include "workbench/run/channels.hpp"
 #include "workbench/suspension/external_force.hpp"
 #include "workbench/vehicle/names.hpp"
@@ -139,11 +140,23 @@ void addContactChannels(const Model& m, const RunVehicle& rv, io::ResultFile& f,
     // rolling radii.
     const dynamics::ContactModel& own = cm.forWheelset(k);
     const std::string group = contact + "/" + v.bodies[cm.wheelsets[k]].name;
+    const std::array<dynamics::WheelMeasures, 2> measures = dynamics::wheelMeasures(own);
     for (std::size_t side = 0; side < 2; ++side) {
       const char* name = side == 0 ? "left" : "right";
       f.attr(group, std::string("wheel_profile_") + name,
              std::filesystem::path(own.wheel_sources[side]).filename().string());
       f.attr(group, std::string("centred_radius_") + name, own.centred_radius[side]);
+      // EN 15313 flange measures of the wheel, and a MiniProf file's own (docs/profiles.md).
+      const dynamics::WheelMeasures& w = measures[side];
+      const std::pair<const char*, double> values[] = {{"Sd", w.sd},
+                                                       {"Sh", w.sh},
+                                                       {"qR", w.qr},
+                                                       {"header_Sd", w.header_sd},
+                                                       {"header_Sh", w.header_sh},
+                                                       {"header_qR", w.header_qr}};
+      for (const auto& [key, value] : values)
+        if (!std::isnan(value))
+          f.attr(group, std::string("wheel_") + key + "_" + name + "_m", value);
     }
     if (const auto* e = own.elastic.get()) {
       // What follows from the wheelset's own wheels (the /contact attributes are the vehicle's).

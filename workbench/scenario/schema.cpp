@@ -262,14 +262,16 @@ void addContactBlocks(std::vector<BlockSpec>& s) {
        "wheel (EN 13715) and 60E1 rail (EN 13674-1); the paper's LB-140-Area rail has no public "
        "geometry, so 60E1 at 1:40 is the default (docs/profiles.md).",
        {typed("wheel", ValueType::String, "-",
-              "\"s1002\" or a wheel profile file (.prw or two-column text) below the scenario"),
+              "\"s1002\" or a wheel profile file (SIMPACK .prw, MiniProf .whl / .mpt or two-column "
+              "text) below the scenario"),
         typed("wheel_left", ValueType::String, "-",
               "the left wheels' own profile (default: wheel), drawn as a left wheel like wheel"),
         typed("wheel_right", ValueType::String, "-",
               "the right wheels' own profile (default: wheel), drawn as a left wheel like wheel "
               "and mirrored (a wheelset with two different wheels: docs/profiles.md)"),
         typed("rail", ValueType::String, "-",
-              "\"60e1\" or a rail profile file (.prr or two-column text) below the scenario"),
+              "\"60e1\" or a rail profile file (SIMPACK .prr, MiniProf .ban / .mpt or two-column "
+              "text) below the scenario"),
         num("back_to_back", "m", 1.36, "back-to-back distance B (Lw = B/2 + 70 mm for S1002)",
             dynamics::kBackToBackRange),
         num("gauge", "m", track::kStandardGauge,

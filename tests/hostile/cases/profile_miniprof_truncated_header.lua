@@ -1,0 +1,8 @@
+-- hostile: expect="profile_miniprof_truncated_header.lua:8: profiles.wheel: cannot use"
+-- hostile: expect='w.whl:4: no profile points'
+-- A malformed MiniProf wheel (truncated header): an input error at the file's line, never a crash.
+local wagon = require "vehicles.manchester_wagon1"
+track { segments = { tangent { length = 300 } } }
+contact { method = "kec" }
+vehicle (wagon { speed = 20, start = 20 })
+profiles { wheel = "w.whl" }
