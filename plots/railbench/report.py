@@ -1,6 +1,9 @@
-"""The report of one run: one self-contained HTML page (`rbplot report RESULT.h5 [--out FILE]`).
+"""The report of one run or study: one self-contained HTML page
+(`rbplot report RESULT.h5 [--out FILE]`, `rbplot report STUDY_DIR`).
 
-    run_report(path, dpi=REPORT_DPI) -> str      the page's HTML
+    run_report(path, dpi=REPORT_DPI) -> str      the page of a result file
+    study_report(outdir, dpi=REPORT_DPI) -> str  the page of a study folder (its cases, the
+                                                 tables and figures of `rbplot study`)
     main(argv)                                   the command (exit 0, or 1 with one error line)
 
 The page holds, from the result file alone (docs/report.md):
@@ -25,7 +28,6 @@ from __future__ import annotations
 import base64
 import datetime
 import html
-import math
 import os
 import tempfile
 from typing import Dict, Iterable, List, Optional, Sequence, Tuple
@@ -57,7 +59,7 @@ CSP = ("default-src 'none'; img-src data:; style-src 'unsafe-inline'; base-uri '
 
 STYLE = """
 body { font-family: "DejaVu Sans", Arial, sans-serif; font-size: 14px; color: #222;
-       max-width: 1100px; margin: 1.5em auto; padding: 0 1em; line-height: 1.4; }
+       max-width: 1200px; margin: 1.5em auto; padding: 0 1em; line-height: 1.4; }
 h1 { font-size: 1.5em; margin-bottom: 0.2em; } h2 { font-size: 1.25em; margin-top: 1.6em;
      border-bottom: 1px solid #bbb; } h3 { font-size: 1.05em; margin-top: 1.2em; }
 .meta { color: #555; font-size: 0.9em; }
@@ -74,6 +76,7 @@ pre { background: #f6f6f6; border: 1px solid #ddd; padding: 0.6em; overflow-x: a
 figure { margin: 1em 0 2em 0; } figure img { max-width: 100%; border: 1px solid #ddd; }
 figcaption { color: #444; font-size: 0.9em; }
 nav ul { columns: 2; }
+.wide { overflow-x: auto; }
 """
 
 
@@ -229,8 +232,8 @@ def _section_cell(attrs: Dict[str, object], key: str, scale: float, digits: int)
     head = f'<span class="bad">{value}</span>' if ok is False else value
     sub = []
     if lim is not None:
-        sub.append(f"limit {lim * scale:.{digits}f}, margin {(lim - v) * scale:.{digits}f}"
-                   + (" EXCEEDED" if ok is False else ""))
+        sub.append(f"limit {lim * scale:.{digits}f}")
+        sub.append(f"margin {(lim - v) * scale:.{digits}f}" + (" EXCEEDED" if ok is False else ""))
     where = _where_at(_text(attrs.get(key + "_where", "")), _num(attrs.get(key + "_at_s")))
     if where:
         sub.append(where)
@@ -262,7 +265,7 @@ def _sections_table(a: Assessment) -> str:
             notes.append(f"<li><b>{esc(sec.name)}</b>: {esc(note)}</li>")
     heads = ["section", "kind", "test zone", "R [m]", "cant [mm]", "s [m]", "run [m]"]
     heads += [label + (f" [{unit}]" if unit else "") for _, label, _, _, unit in SECTION_QUANTITIES]
-    out = _table(heads, rows, "en14363-sections", ids)
+    out = '<div class="wide">' + _table(heads, rows, "en14363-sections", ids) + "</div>"
     if notes:
         out += "<p>Notes per section:</p><ul>" + "".join(notes) + "</ul>"
     return out
@@ -458,11 +461,106 @@ def run_report(path: str, dpi: int = REPORT_DPI) -> str:
         *[_assessment_part(a, heading, anchor) for heading, anchor, a in parts],
         figures,
     ]
+    return _page(f"railbench report: {name}", body)
+
+
+# ---- a study's page ----------------------------------------------------------------------------
+
+STUDY_TABLE_ROWS = 500     # rows of a CSV shown on the page (the rest: the CSV file itself)
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+MAX_PNG_BYTES = 20 << 20
+
+
+def _csv_table(path: str, table_id: str) -> str:
+    from .common import read_csv
+    rows = read_csv(path)
+    if not rows:
+        return f'<p id="{esc(table_id)}">{esc(os.path.basename(path))}: no rows</p>'
+    cols: List[str] = []
+    for r in rows:
+        cols += [k for k in r if k not in cols and k is not None]
+    shown = rows[:STUDY_TABLE_ROWS]
+    body = [[esc(r.get(c) if isinstance(r.get(c), str) else "") for c in cols] for r in shown]
+    more = (f"<p>{len(rows) - len(shown)} more rows in {esc(os.path.basename(path))}.</p>"
+            if len(rows) > len(shown) else "")
+    return _table(cols, body, table_id) + more
+
+
+def _folder_files(outdir: str, ext: str) -> List[str]:
+    """Regular files (no links) of the folder with this extension, sorted."""
+    out = []
+    for name in sorted(os.listdir(outdir)):
+        p = os.path.join(outdir, name)
+        if name.endswith(ext) and not os.path.islink(p) and os.path.isfile(p):
+            out.append(p)
+    return out
+
+
+def study_report(outdir: str, dpi: int = REPORT_DPI) -> str:
+    """The page of a study folder (`workbench study`): its cases (summary_cases.csv), the failed
+    runs, every table (study_*.csv) and figure (*.png) `rbplot study` wrote there (drawn first,
+    as `rbplot study` does, when the folder has none)."""
+    from .study import make_study_outputs
+    from .study_data import StudyError
+    if not os.path.isfile(os.path.join(outdir, "summary_cases.csv")):
+        raise StudyError(f"{outdir}: no summary_cases.csv (not a study folder)")
+    if not any(os.path.basename(p).startswith("study_") for p in _folder_files(outdir, ".png")):
+        make_study_outputs(outdir, dpi=dpi)
+    name = os.path.basename(os.path.normpath(outdir))
+    from .common import read_csv
+    cases = read_csv(os.path.join(outdir, "summary_cases.csv"))
+    status: Dict[str, int] = {}
+    for c in cases:
+        st = (c.get("status") or "?") if isinstance(c.get("status"), str) else "?"
+        status[st] = status.get(st, 0) + 1
+    counts = ", ".join(f"{n} {esc(k)}" for k, n in sorted(status.items()))
+    bad = any(k != "ok" for k in status)
+    body = [f"<h1>Study report: {esc(name)}</h1>",
+            f'<p class="meta">{esc(os.path.abspath(outdir))} · report written '
+            f"{esc(datetime.datetime.now().astimezone().strftime('%Y-%m-%d %H:%M %Z'))} by "
+            "<code>rbplot report</code></p>",
+            f'<section id="cases"><h2>Cases</h2><p class="{"caveat" if bad else "status-ok"}" '
+            f'id="status">{len(cases)} cases: {counts}</p>',
+            _csv_table(os.path.join(outdir, "summary_cases.csv"), "study-cases"), "</section>"]
+    prov = os.path.join(outdir, "provenance.json")
+    if os.path.isfile(prov) and not os.path.islink(prov):
+        with open(prov, encoding="utf-8", errors="replace") as f:
+            body.append('<section id="provenance"><h2>Provenance</h2>'
+                        f'<pre id="provenance-json">{esc(f.read(1 << 20))}</pre></section>')
+    tables = [p for p in _folder_files(outdir, ".csv")
+              if os.path.basename(p).startswith("study_")]
+    if tables:
+        body.append('<section id="tables"><h2>Tables</h2>')
+        for k, p in enumerate(tables):
+            body.append(f"<h3>{esc(os.path.basename(p))}</h3>" +
+                        _csv_table(p, f"table-{k + 1}"))
+        body.append("</section>")
+    body.append('<section id="figures"><h2>Figures</h2>')
+    n = 0
+    for p in _folder_files(outdir, ".png"):
+        if os.path.getsize(p) > MAX_PNG_BYTES:
+            continue
+        with open(p, "rb") as f:
+            data = f.read()
+        if not data.startswith(PNG_MAGIC):
+            continue
+        n += 1
+        label = os.path.basename(p)
+        body.append(f'<figure id="fig-{n}" data-figure="{esc(label)}"><img src="data:image/png;'
+                    f'base64,{base64.b64encode(data).decode("ascii")}" alt="{esc(label)}">'
+                    f"<figcaption>Figure {n}: {esc(label)}</figcaption></figure>")
+    if not n:
+        body.append("<p>The folder holds no figure.</p>")
+    body.append("</section>")
+    return _page(f"railbench study report: {name}", body)
+
+
+def _page(title: str, body: List[str]) -> str:
     return ("<!DOCTYPE html>\n"
             '<html lang="en"><head><meta charset="utf-8">\n'
             f'<meta http-equiv="Content-Security-Policy" content="{CSP}">\n'
             '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
-            f"<title>railbench report: {esc(name)}</title>\n"
+            f"<title>{esc(title)}</title>\n"
             f"<style>{STYLE}</style></head>\n<body>\n" + "\n".join(body) +
             "\n</body></html>\n")
 
@@ -471,16 +569,20 @@ def main(argv=None) -> int:
     ap = parser("report", "One self-contained HTML page of a run: the scene, status and "
                           "warnings, the assessment (EN 14363 per section, comfort, stability) "
                           "and every figure, embedded.")
-    ap.add_argument("input", metavar="FILE", help="result file (.h5) written by `workbench run`")
+    ap.add_argument("input", metavar="FILE",
+                    help="result file (.h5) written by `workbench run`, or a study folder")
     ap.add_argument("--out", default=None,
-                    help="the page to write (default: <FILE without .h5>_report.html)")
+                    help="the page to write (default: <FILE without .h5>_report.html; for a "
+                         "study folder DIR/report.html)")
     ap.add_argument("--dpi", type=int, default=REPORT_DPI,
                     help=f"resolution of the figures (default {REPORT_DPI})")
     args = ap.parse_args(argv)
-    out = args.out or os.path.splitext(args.input)[0] + "_report.html"
+    study = os.path.isdir(args.input)
+    out = args.out or (os.path.join(args.input, "report.html") if study else
+                       os.path.splitext(args.input)[0] + "_report.html")
 
     def write() -> int:
-        page = run_report(args.input, args.dpi)
+        page = study_report(args.input, args.dpi) if study else run_report(args.input, args.dpi)
         tmp = out + ".tmp"
         with open(tmp, "w", encoding="utf-8") as f:
             f.write(page)
@@ -488,4 +590,5 @@ def main(argv=None) -> int:
         print(out)
         return 0
 
-    return guarded("report", write, (ResultFileError,))
+    from .study_data import StudyError
+    return guarded("report", write, (ResultFileError, StudyError))

@@ -88,7 +88,7 @@ def test_report_escapes_markup(work):
     assert {e.tag for e in page.elements} <= {
         "html", "head", "meta", "title", "style", "body", "h1", "h2", "h3", "p", "b", "i", "br",
         "code", "nav", "ul", "li", "a", "section", "table", "thead", "tbody", "tr", "th", "td",
-        "span", "pre", "details", "summary", "figure", "img", "figcaption"}
+        "span", "div", "pre", "details", "summary", "figure", "img", "figcaption"}
     text = page.tags("body")[0].text
     for s in (forge_result.INJECT, forge_result.INJECT_ATTR, forge_result.INJECT_NAME,
               '<iframe src="http://example.invalid/"></iframe>'):
