@@ -203,7 +203,7 @@ def _where_at(where: str, at: Optional[float]) -> str:
     return ", ".join(parts)
 
 
-def _summary_table(a: Assessment) -> str:
+def _summary_table(a: Assessment, sfx: str = "") -> str:
     rows = []
     for it in summary_items(a.summary):
         q = it.quantity
@@ -217,7 +217,7 @@ def _summary_table(a: Assessment) -> str:
     if not rows:
         return "<p>/assessment/summary holds no quantity.</p>"
     return _table(["quantity", "unit", "value", "limit", "margin", "", "where"], rows,
-                  "assessment-summary")
+                  "assessment-summary" + sfx)
 
 
 def _section_cell(attrs: Dict[str, object], key: str, scale: float, digits: int) -> str:
@@ -241,9 +241,9 @@ def _section_cell(attrs: Dict[str, object], key: str, scale: float, digits: int)
             "</td>")
 
 
-def _sections_table(a: Assessment) -> str:
+def _sections_table(a: Assessment, sfx: str = "") -> str:
     if not a.sections:
-        return ('<p id="en14363-sections">The file has no /assessment/sections (a result '
+        return (f'<p id="en14363-sections{sfx}">The file has no /assessment/sections (a result '
                 "written before the assessment was made per section): the summary above is "
                 "the whole run.</p>")
     rows, ids, notes = [], [], []
@@ -265,13 +265,13 @@ def _sections_table(a: Assessment) -> str:
             notes.append(f"<li><b>{esc(sec.name)}</b>: {esc(note)}</li>")
     heads = ["section", "kind", "test zone", "R [m]", "cant [mm]", "s [m]", "run [m]"]
     heads += [label + (f" [{unit}]" if unit else "") for _, label, _, _, unit in SECTION_QUANTITIES]
-    out = '<div class="wide">' + _table(heads, rows, "en14363-sections", ids) + "</div>"
+    out = '<div class="wide">' + _table(heads, rows, "en14363-sections" + sfx, ids) + "</div>"
     if notes:
         out += "<p>Notes per section:</p><ul>" + "".join(notes) + "</ul>"
     return out
 
 
-def _comfort_table(a: Assessment) -> str:
+def _comfort_table(a: Assessment, sfx: str = "") -> str:
     if not a.comfort:
         return ""
     rows, indicative = [], []
@@ -294,18 +294,18 @@ def _comfort_table(a: Assessment) -> str:
     out = ["<h3>Ride comfort (EN 12299, Sperling)</h3>",
            _table(["floor position", "x offset [m]", "N_MV", "target", "margin", "",
                    "5 s blocks", "Wz lateral", "Wz vertical", "a_x95 [m/s²]", "a_y95 [m/s²]",
-                   "a_z95 [m/s²]"], rows, "comfort")]
+                   "a_z95 [m/s²]"], rows, "comfort" + sfx)]
     caveats = ["N_MV and Wz are checked against comfort targets (run.assessment.comfort_limit; "
                "Wz 2.5), not normative limits."]
     if indicative:
         caveats.append("Mean comfort from fewer than the 60 blocks of 5 s EN 12299 asks for "
                        f"(blocks: {', '.join(indicative)}) is indicative: its verdict is not "
                        "the standard's.")
-    out.append('<p class="caveat" id="comfort-caveats">' + "<br>".join(caveats) + "</p>")
+    out.append(f'<p class="caveat" id="comfort-caveats{sfx}">' + "<br>".join(caveats) + "</p>")
     return "\n".join(out)
 
 
-def _stability_table(a: Assessment) -> str:
+def _stability_table(a: Assessment, sfx: str = "") -> str:
     if not a.stability:
         return ""
     rows = []
@@ -324,8 +324,8 @@ def _stability_table(a: Assessment) -> str:
     return "\n".join([
         "<h3>Running stability (EN 14363 simplified method)</h3>",
         _table(["bogie", "over", "max sliding rms [m/s²]", "limit [m/s²]", "margin", "",
-                "at s [m]", "f0 [Hz]", "bogie mass [t]"], rows, "stability"),
-        '<p class="caveat" id="stability-caveats">The bogie-frame lateral acceleration above '
+                "at s [m]", "f0 [Hz]", "bogie mass [t]"], rows, "stability" + sfx),
+        f'<p class="caveat" id="stability-caveats{sfx}">The bogie-frame lateral acceleration above '
         "each wheelset, band-pass filtered to f0 ± 2 Hz, its 100 m sliding rms against "
         "(12 − m+/5)/2; the filter type is an assumption (docs/assessment.md), and a run "
         "shorter than 100 m is not assessed.</p>"])
@@ -341,6 +341,9 @@ def _lines_block(title: str, text: str, block_id: str, open_: bool = False) -> s
 
 
 def _assessment_part(a: Optional[Assessment], heading: str, anchor: str) -> str:
+    """One assessment's section; the ids of its parts end in the anchor's number (a vehicle of a
+    train: "assessment-2" gives "en14363-sections-2"), none for the run's only one."""
+    sfx = anchor[len("assessment"):]
     out = [f'<section id="{esc(anchor)}"><h2>{esc(heading)}</h2>']
     if a is None:
         out.append("<p>The file has no /assessment: the scene asked for none "
@@ -351,7 +354,7 @@ def _assessment_part(a: Optional[Assessment], heading: str, anchor: str) -> str:
     if items:
         cls, txt = (("status-failed", "EXCEEDED: " + ", ".join(exceeded)) if exceeded else
                     ("status-ok", "every assessed limit kept"))
-        out.append(f'<p class="{cls}" id="verdict">{esc(txt)}</p>')
+        out.append(f'<p class="{cls}" id="verdict{sfx}">{esc(txt)}</p>')
     params = []
     for key, label in (("category", "vehicle category"), ("alpha", "alpha"),
                        ("yq_limit", "(Y/Q) limit"), ("mu", "mu"),
@@ -363,25 +366,26 @@ def _assessment_part(a: Optional[Assessment], heading: str, anchor: str) -> str:
             v = a.attrs[key]
             params.append(f"{esc(label)} {esc(_text(v) if _num(v) is None else f'{_num(v):.4g}')}")
     if params:
-        out.append('<p class="meta" id="assessment-parameters">' + " · ".join(params) + "</p>")
+        out.append(f'<p class="meta" id="assessment-parameters{sfx}">' + " · ".join(params) +
+                   "</p>")
     out.append("<h3>Summary (the worst of the run)</h3>")
-    out.append(_summary_table(a))
+    out.append(_summary_table(a, sfx))
     out.append("<h3>EN 14363 per track section</h3>")
     out.append("<p>Each quantity is that of the section's worst wheel (ΣY: wheelset), with its "
                "limit, the margin (limit − value) and where it occurs: the wheel and the "
                "distance s, in that wheel's own arc length, at which the 2 m window holding it "
                "ends. <i>run</i> is the length of the section the leading wheelset ran; Y_qst "
                "and Q_qst are assessed in curves (and given sections) only.</p>")
-    out.append(_sections_table(a))
-    out.append(_comfort_table(a))
-    out.append(_stability_table(a))
+    out.append(_sections_table(a, sfx))
+    out.append(_comfort_table(a, sfx))
+    out.append(_stability_table(a, sfx))
     std = _text(a.attrs.get("standards", "")).strip()
     if std:
         out.append(f'<p class="meta">standards: {esc(std)}</p>')
     out.append(_lines_block("Notes of the assessment", _text(a.attrs.get("notes", "")),
-                            "assessment-notes", open_=True))
+                            "assessment-notes" + sfx, open_=True))
     out.append(_lines_block("Assumptions", _text(a.attrs.get("assumptions", "")),
-                            "assessment-assumptions"))
+                            "assessment-assumptions" + sfx))
     out.append("</section>")
     return "\n".join(p for p in out if p)
 

@@ -11,8 +11,11 @@ temporary folder, kept when a test fails (or with RB_KEEP_TMP=1)."""
 import contextlib
 import io
 import os
+import subprocess
 import sys
 import tempfile
+
+import pytest
 
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -201,3 +204,36 @@ def test_study_report(tmp_path):
         hc.png_of(fig.find_all("img")[0])
     assert "<script>alert(1)</script>" in p.tags("body")[0].text
     assert p.tags("script") == []
+
+
+@pytest.mark.parametrize("name,scene,sets,want", [
+    # Two wagons in a train{}: an assessment part per vehicle, the ids of each its own.
+    ("train", "tests/run/data/train_two_wagons.lua", ["run.duration=0.3"], 0),
+    # A failed run (exit 2): FAILED and its failure record, its figures.
+    ("fail", "tests/plots/contact_short.lua",
+     ["solver.method=rk4", "solver.step=0.01", "run.output.every=0.01",
+      "solver.accept_unstable_step=true"], 2),
+])
+def test_train_and_failed_run(name, scene, sets, want):
+    result, out = os.path.join(TMP, f"{name}.h5"), os.path.join(TMP, f"{name}.html")
+    cmd = [hc.workbench(), "run", scene, "--out", result, "--quiet"]
+    for s in sets:
+        cmd += ["--set", s]
+    r = subprocess.run(cmd, cwd=ROOT, env=dict(os.environ, RAILBENCH_ROOT=ROOT),
+                       capture_output=True, text=True, timeout=300, stdin=subprocess.DEVNULL)
+    assert r.returncode == want, r.stdout + r.stderr
+    hc.rbplot_report(result, out)
+    with open(out, encoding="utf-8") as f:
+        p = hc.Page(f.read())
+    assert p.problems == [] and hc.foreign_references(p) == []
+    assert p.tags("figure") and all(hc.png_of(fig.find_all("img")[0])
+                                    for fig in p.tags("figure"))
+    if name == "train":
+        assert [h.text for h in p.tags("h2")][2:4] == ["Assessment of vehicle front",
+                                                       "Assessment of vehicle rear"]
+        assert "en14363-sections-1" in p.by_id and "en14363-sections-2" in p.by_id
+        labels = [fig.attrs["data-figure"] for fig in p.tags("figure")]
+        assert "assessment (front)" in labels and "assessment (rear)" in labels
+    else:
+        assert "FAILED" in p.by_id["status"].text
+        assert "failure_kind" in p.by_id["failure"].text
