@@ -1,6 +1,7 @@
 """The command line of the railbench plots:  plots/rbplot COMMAND [ARGS ...]
 
     run FILE.h5 [--outdir DIR] [--dpi N]     figures of a run (railbench/run.py)
+    report FILE.h5 [--out FILE.html]         one self-contained HTML page of a run (report.py)
     tables FILE.h5 [--outdir DIR] [--dpi N]  figures of a contact-tables file (tables.py)
     study DIR [--dpi N]                      figures and CSVs of a study folder (study.py)
     compare-runs A.h5 B.h5 [...]             overlaid vehicle results, steady state (compare.py)
@@ -24,6 +25,7 @@ import sys
 # command -> module of this package with main(argv) -> exit status
 COMMANDS = {
     "run": "run",
+    "report": "report",
     "tables": "tables",
     "study": "study",
     "compare-runs": "compare",

@@ -176,6 +176,52 @@ def comfort_sample_every(work):
             g[k] = 0.1 * np.sin(2 * np.pi * 1.0 * t)
 
 
+INJECT = '<script>alert("rb")</script>'
+INJECT_ATTR = '"><img src=x onerror=alert(1)>'  # breaks out of a quoted attribute
+INJECT_NAME = "<img src=x onerror=alert(2)>"  # an HDF5 name holds no '/': no closing tag
+
+
+def html_injection(work):
+    """Markup in every string a report shows (`rbplot report`, plots/railbench/report.py): the
+    scenario text and file, the overrides, a warning, the failure message, an assessment's
+    `where`, notes and a section named like an element: a report that does not escape them runs
+    a script or loads an image from elsewhere."""
+    with h5py().File(os.path.join(work, "result.h5"), "w") as f:
+        t = _base(f)
+        f.attrs["scenario_text"] = np.bytes_(f"-- {INJECT}\nrun {{ duration = 2 }}\n")
+        f.attrs["scenario_file"] = np.bytes_(f"scene{INJECT_ATTR}.lua")
+        f.attrs["scenario_modules"] = np.bytes_(f"-- file: lib{INJECT_ATTR}.lua\n{INJECT}\n")
+        f.attrs["overrides"] = np.bytes_('<iframe src="http://example.invalid/"></iframe>')
+        f.attrs["created"] = np.bytes_(INJECT_ATTR)
+        s = f["stats"]
+        s.attrs["status"] = np.bytes_("failed")
+        s.attrs["message"] = np.bytes_(f"solver gave up {INJECT}")
+        s.attrs["failure_reason"] = np.bytes_(INJECT_ATTR)
+        s.attrs["warnings"] = np.bytes_(f"first warning {INJECT}\n<b>second</b> {INJECT_ATTR}")
+        a = f.create_group("assessment")
+        _assessment_of(a, t)
+        a.attrs["notes"] = np.bytes_(INJECT)
+        a.attrs["assumptions"] = np.bytes_(INJECT_ATTR)
+        a.attrs["category"] = np.bytes_(INJECT)
+        sm = a.create_group("summary")
+        sm.attrs["y_over_q"] = 0.3
+        sm.attrs["y_over_q_limit"] = 0.8
+        sm.attrs["y_over_q_ok"] = 1
+        sm.attrs["y_over_q_where"] = np.bytes_(f"ws1 left {INJECT}")
+        sec = a.create_group("sections")
+        sec.attrs["names"] = np.bytes_(INJECT_NAME)
+        g = sec.create_group(INJECT_NAME)
+        g.attrs["kind"] = np.bytes_(INJECT)
+        g.attrs["zone"] = np.bytes_(INJECT_ATTR)
+        g.attrs["from"] = 0.0
+        g.attrs["to"] = 40.0
+        g.attrs["y_over_q"] = 0.3
+        g.attrs["y_over_q_limit"] = 0.8
+        g.attrs["y_over_q_ok"] = 1
+        g.attrs["y_over_q_where"] = np.bytes_(INJECT_ATTR)
+        g.attrs["notes"] = np.bytes_(INJECT)
+
+
 def plain(work):
     """The base alone (for the command-line options' cases)."""
     with h5py().File(os.path.join(work, "result.h5"), "w") as f:
