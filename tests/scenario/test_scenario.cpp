@@ -74,7 +74,9 @@ TEST(ScenarioErrors, MissingFile) {
   EXPECT_EQ(errorsOf(kBad + "missing_file.lua"),
             kBad +
                 "missing_file.lua:3: track.irregularities (measured): file: file 'nowhere.csv' not "
-                "found (looked in the scenario's folder and the project root)");
+                "found (looked in " +
+                kBad + "nowhere.csv (the scene's folder), " + RB_SOURCE_DIR +
+                "/nowhere.csv (the data directory))");
 }
 
 TEST(ScenarioErrors, ConflictingOptions) {
@@ -284,10 +286,9 @@ TEST(ScenarioContact, ProfilesAndContactBlocks) {
 TEST(ScenarioContact, ConflictsAndMissingProfileFile) {
   const std::string f = kBad + "contact_conflicts.lua";
   EXPECT_EQ(errorsOf(f),
-            f +
-                ":2: profiles: rail: file 'missing.prr' not found (looked in the scenario's folder "
-                "and the project root)\n" +
-                f +
+            f + ":2: profiles: rail: file 'missing.prr' not found (looked in " + kBad +
+                "missing.prr (the scene's folder), " + RB_SOURCE_DIR +
+                "/missing.prr (the data directory))\n" + f +
                 ":2: profiles: give either lr or gauge, not both (lr overrides the positioning)\n" +
                 f +
                 ":2: profiles: rail position and inclination come from profiles{}; remove "
@@ -465,6 +466,100 @@ TEST(ScenarioHostile, RequireAcceptsOnlyPlainNamesInsideTheAllowedFolders) {
   t.write("b.lua", "return require 'a'\n");
   std::string cyc = t.write("cyc.lua", "require 'a'\n");
   EXPECT_NE(errorsOf(cyc).find("require cycle: a -> b -> a"), std::string::npos) << errorsOf(cyc);
+}
+
+// A user's scene in a folder outside the checkout requires the shipped turnout library (whose
+// 36 rail slices it names as slices/head_wNN.txt, relative to scenarios/turnout/), a shipped
+// vehicle and the validation set-up: every file resolves beside the library that names it.
+TEST(ScenarioDataFiles, ShippedLibrariesCarryTheirOwnFilesIntoAUsersFolder) {
+  TempDir t("user_turnout");
+  const std::string f =
+      t.write("crossing.lua",
+              "local c = require 'validation.common'\n"
+              "local wagon = require 'vehicles.manchester_wagon1'\n"
+              "local turnout = require 'turnout.lib'\n"
+              "local wing, nose = turnout.crossing_rails(60, 200)\n"
+              "local stock, blade = turnout.switch_rails(10, 40)\n"
+              "track { segments = { tangent { length = 200 } }, step = 0.25 }\n"
+              "profiles { wheel = 's1002', rail = '60e1', back_to_back = 1.360, gauge = 1.435,\n"
+              "  r0 = 0.46, inclination = 0.025, rail_slices = { right = wing, left = stock },\n"
+              "  extra_rails = { right = { nose }, left = { blade } } }\n"
+              "contact { method = 'elastic', creep = 'polach', mu = 0.2364 }\n"
+              "vehicle (wagon { speed = 20, start = 30 })\n"
+              "c.abm(20, 1e-4)\n"
+              "run { distance = 1 }\n");
+  const auto spec = loadScenario(f, opts());
+  const fs::path slices = fs::canonical(fs::path(RB_SOURCE_DIR) / "scenarios/turnout/slices");
+  ASSERT_FALSE(spec.profiles.rail_slices[1].empty());
+  for (const auto& sl : spec.profiles.rail_slices[1])
+    EXPECT_EQ(fs::path(sl.rail).parent_path(), slices) << sl.rail;
+  ASSERT_FALSE(spec.profiles.extra_rails[0].empty());
+  for (const auto& sl : spec.profiles.extra_rails[0].front().slices)
+    EXPECT_EQ(fs::path(sl.rail).parent_path(), slices) << sl.rail;
+}
+
+// Order of the places: beside the library whose text wrote the name (a constructor's table), then
+// the scene's folder, then beside each library (a name in a library's plain table), then the data
+// directory; two libraries with different files of the name are an error, not a guess.
+TEST(ScenarioDataFiles, ALibrarysOwnFolderComesFirstAndAmbiguityIsAnError) {
+  TempDir t("library_data");
+  const std::string csv = "s [m], vertical [mm]\n0, 0\n100, 0\n200, 0\n300, 0\n400, 0\n500, 0\n";
+  t.write("data.csv", csv);
+  t.write("lib/data.csv", csv);
+  t.write("lib/track.lua", "return measured { file = 'data.csv', unit = 'mm' }\n");
+  const std::string own =
+      t.write("own.lua",
+              "track { segments = { tangent { length = 300 } }, irregularities = require "
+              "'lib.track' }\n");
+  EXPECT_EQ(loadScenario(own, opts()).track.irregularities.csv_path,
+            fs::canonical(t.path / "lib/data.csv").string());
+
+  // A plain table's name carries the scene's location: the scene's folder first, then the
+  // libraries'.
+  t.write("a/wheel.lua", "return { wheel = 'w.txt' }\n");
+  t.write("a/w.txt", "0 0\n1 1\n");
+  const std::string plain =
+      t.write("plain.lua", kTrack + "local a = require 'a.wheel'\nprofiles { wheel = a.wheel }\n");
+  EXPECT_EQ(loadScenario(plain, opts()).profiles.wheel, fs::canonical(t.path / "a/w.txt").string());
+  t.write("b/wheel.lua", "return { wheel = 'w.txt' }\n");
+  t.write("b/w.txt", "0 0\n2 2\n");
+  const std::string two =
+      t.write("two.lua", kTrack +
+                             "local a = require 'a.wheel'\nlocal b = require 'b.wheel'\n"
+                             "profiles { wheel = a.wheel }\n");
+  std::string e = errorsOf(two);
+  EXPECT_NE(e.find(two + ":4: profiles: wheel: file 'w.txt' is in the folder of "),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("the scene does not show which library named it"), std::string::npos) << e;
+  t.write("w.txt", "0 0\n3 3\n");  // the scene's own file settles it
+  EXPECT_EQ(loadScenario(two, opts()).profiles.wheel, fs::canonical(t.path / "w.txt").string());
+}
+
+// A name not found says where it was looked for and names the shipped file of that name.
+TEST(ScenarioDataFiles, NotFoundListsThePlacesAndSuggestsTheShippedFile) {
+  TempDir t("not_found_hint");
+  t.write("lib/x.lua", "return 1\n");
+  const std::string f = t.write("worn.lua", kTrack +
+                                                "local x = require 'lib.x'\n"
+                                                "profiles { wheel = 's1002_worn_0.3mm.txt' }\n");
+  const std::string e = errorsOf(f);
+  EXPECT_NE(e.find(f + ":3: profiles: wheel: file 's1002_worn_0.3mm.txt' not found (looked in " +
+                   (t.path / "s1002_worn_0.3mm.txt").string() + " (the scene's folder), " +
+                   (t.path / "lib/s1002_worn_0.3mm.txt").string() + " (the folder of "),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find(std::string(RB_SOURCE_DIR) + "/s1002_worn_0.3mm.txt (the data directory))"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("; did you mean 'profiles/s1002_worn_0.3mm.txt' (shipped in the data "
+                   "directory)?"),
+            std::string::npos)
+      << e;
+  // The suggestion resolves.
+  const std::string fixed =
+      t.write("fixed.lua", kTrack + "profiles { wheel = 'profiles/s1002_worn_0.3mm.txt' }\n");
+  EXPECT_EQ(errorsOf(fixed).find("not found"), std::string::npos) << errorsOf(fixed);
 }
 
 TEST(ScenarioOverrides, BadListPositionsAreCommandLineErrors) {

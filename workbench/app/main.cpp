@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "railbench/commit.hpp"
 #include "railbench/version.hpp"
 #include "workbench/app/assess.hpp"
 #include "workbench/app/run.hpp"
@@ -34,8 +35,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The data directory holding scenarios/, profiles/ and plots/: RAILBENCH_ROOT when set; else,
+// for an installed program (<prefix>/bin/railbench), <prefix>/share/railbench found from the
+// program's own path, so a user's scene in any folder needs no set-up; else the checkout the
+// program was built from (a build tree has no share/railbench beside its program).
 std::string defaultRoot() {
   if (const char* env = std::getenv("RAILBENCH_ROOT")) return env;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path data = exe.parent_path().parent_path() / "share" / "railbench";
+    if (fs::is_directory(data / "scenarios", ec)) return data.string();
+  }
   return RB_SOURCE_DIR;
 }
 
@@ -47,7 +58,8 @@ void printInputError(const rb::InputError& e) {
 
 int workbench(int argc, char** argv) {
   CLI::App app{"railbench workbench: scripted railway vehicle dynamics"};
-  app.set_version_flag("--version", std::string("railbench ") + rb::kVersion);
+  app.set_version_flag("--version",
+                       std::string("railbench ") + rb::kVersion + " (commit " + rb::kCommit + ")");
   app.require_subcommand(1);
   std::string root = defaultRoot();
   app.add_option("--root", root, "project root holding scenarios/ and profiles/")

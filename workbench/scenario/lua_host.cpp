@@ -126,6 +126,9 @@ struct LuaHost::Impl {
   bool collectMissing = false;                               // HostOptions::collect_missing_modules
   bool moduleMissing = false;              // set by findModule: the error is "not found"
   std::vector<Diagnostic> missingModules;  // collected requires of modules not found
+  // The canonical folder of each required file, by its path as shown (the file of a SourceLoc):
+  // where the data files a library names are looked for first (LuaHost::resolveDataFile).
+  std::vector<std::pair<std::string, std::string>> moduleFolders;
 
   static Impl* from(lua_State* L) { return *static_cast<Impl**>(lua_getextraspace(L)); }
 
@@ -333,7 +336,7 @@ struct LuaHost::Impl {
 
   // Finds and reads the module file; false with the error pushed.
   bool findModule(lua_State* state, const std::string& name, const SourceLoc& loc,
-                  std::string& shown, std::string& text) {
+                  std::string& shown, std::string& text, std::string& folder) {
     std::string rel = name;
     for (char& c : rel)
       if (c == '.') c = '/';
@@ -360,6 +363,7 @@ struct LuaHost::Impl {
         return false;
       }
       text = std::move(*content);
+      folder = real.parent_path().string();
       return true;
     }
     const std::string hint = closestMatch(name, siblingModules(name));
@@ -409,11 +413,12 @@ struct LuaHost::Impl {
                " nested require calls");
       return false;
     }
-    std::string shown, text;
-    if (!self->findModule(L, name, loc, shown, text)) return false;
+    std::string shown, text, folder;
+    if (!self->findModule(L, name, loc, shown, text, folder)) return false;
     std::string chunk = "@" + shown;
     if (luaL_loadbufferx(L, text.data(), text.size(), chunk.c_str(), "t") != LUA_OK) return false;
     self->modules.push_back({shown, std::move(text)});  // provenance: every file the run read
+    self->moduleFolders.emplace_back(shown, std::move(folder));
     return true;
   }
   static bool requireLoad(lua_State* L, std::string& name) {
@@ -1041,18 +1046,75 @@ Node LuaHost::runFile(const std::string& path) {
   return root;
 }
 
-std::string LuaHost::resolveDataFile(const std::string& name, const SourceLoc& loc) const {
-  std::vector<fs::path> candidates;
-  fs::path p(name);
-  if (p.is_absolute()) {
-    candidates.push_back(p);
-  } else {
-    candidates.push_back(fs::path(scenarioDir_) / p);
-    if (!options_.root.empty()) candidates.push_back(fs::path(options_.root) / p);
+namespace {
+
+// Where a data file is looked for, in order (LuaHost::resolveDataFile).
+struct DataPlace {
+  fs::path dir;
+  std::string what;      // for messages: "the folder of scenarios/turnout/lib.lua"
+  bool library = false;  // one of the required libraries' folders (the third kind of place)
+  // Shown in full in messages (the data directory: relative to the working folder, often the
+  // checkout, its candidates would read as the scene's).
+  bool full = false;
+};
+
+// Files of the data directory named `filename`, relative to it (at most 3, sorted): the shipped
+// file a user most likely meant by a name that was not found. Only profiles/ and scenarios/ are
+// walked, at most kMaxWalk entries, symlinked folders not followed.
+std::vector<std::string> shippedFilesNamed(const std::string& root, const fs::path& filename) {
+  constexpr int kMaxWalk = 20000;
+  std::vector<std::string> out;
+  if (root.empty() || filename.empty() || filename == "." || filename == "..") return out;
+  int seen = 0;
+  for (const char* sub : {"profiles", "scenarios"}) {
+    std::error_code ec;
+    fs::recursive_directory_iterator it(fs::path(root) / sub, ec), end;
+    for (; !ec && it != end && seen < kMaxWalk; it.increment(ec), ++seen) {
+      if (it->path().filename() != filename) continue;
+      std::error_code fe;
+      if (!it->is_regular_file(fe)) continue;
+      out.push_back(it->path().lexically_relative(root).generic_string());
+    }
   }
+  std::sort(out.begin(), out.end());
+  if (out.size() > 3) out.resize(3);
+  return out;
+}
+
+}  // namespace
+
+std::string LuaHost::resolveDataFile(const std::string& name, const SourceLoc& loc) const {
+  // A file named inside a library resolves beside that library first, so a library carries its
+  // own data wherever the scene that requires it lives; then the scene's folder; then, for a name
+  // that reached the tree in a plain table (whose text shows no constructor, so its location is
+  // the scene's and not the library's), beside each library the scene required; then the data
+  // directory. Every candidate must lie below a read root, whichever place found it.
+  std::vector<DataPlace> places;
+  const fs::path p(name);
+  if (p.is_absolute()) {
+    places.push_back({fs::path(), "as given"});
+  } else {
+    const auto& mods = impl_->moduleFolders;
+    const auto own =
+        std::find_if(mods.begin(), mods.end(), [&](const auto& m) { return m.first == loc.file; });
+    if (own != mods.end()) places.push_back({own->second, "the folder of " + own->first});
+    places.push_back({scenarioDir_, "the scene's folder"});
+    for (const auto& [shown, folder] : mods)
+      places.push_back({folder, "the folder of " + shown, true});
+    if (!options_.root.empty())
+      places.push_back({options_.root, "the data directory", false, true});
+  }
+  std::string found;       // the real path of the first candidate that exists
+  std::string foundWhere;  // beside which library, when found in the library group
+  std::vector<std::string> looked;
+  std::set<std::string> dirs;
   // Error-code forms throughout: a name the file system refuses (too long, bad characters) is
   // the user's input problem, not an exception.
-  for (const auto& c : candidates) {
+  for (const auto& place : places) {
+    if (!found.empty() && !place.library) break;  // the libraries' folders came before this
+    const fs::path c = place.dir.empty() ? p : place.dir / p;
+    if (!place.dir.empty() && !dirs.insert(place.dir.lexically_normal().string()).second) continue;
+    looked.push_back((place.full ? c.string() : displayPath(c)) + " (" + place.what + ")");
     std::error_code ec;
     if (!fs::exists(c, ec)) continue;
     bool allowed = false;
@@ -1060,12 +1122,30 @@ std::string LuaHost::resolveDataFile(const std::string& name, const SourceLoc& l
     if (!allowed)
       throw InputError(loc, "file '" + name + "' is outside the folders a scenario may read (" +
                                 "its own folder, scenarios/, profiles/)");
-    fs::path real = fs::weakly_canonical(c, ec);
+    const fs::path real = fs::weakly_canonical(c, ec);
     if (ec) continue;
-    return real.string();
+    if (found.empty()) {
+      if (!place.library) return real.string();
+      found = real.string();
+      foundWhere = place.what;
+    } else if (place.library && real.string() != found) {
+      // Two libraries hold different files of this name and the text does not show whose name it
+      // is: refusing beats reading the wrong one.
+      throw InputError(loc, "file '" + name + "' is in " + foundWhere + " and in " + place.what +
+                                ", and the scene does not show which library named it; give its "
+                                "path from the scene's folder or the data directory");
+    }
   }
-  throw InputError(
-      loc, "file '" + name + "' not found (looked in the scenario's folder and the project root)");
+  if (!found.empty()) return found;
+  std::string msg = "file '" + name + "' not found (looked in " + join(looked, ", ") + ")";
+  const std::vector<std::string> shipped = shippedFilesNamed(options_.root, p.filename());
+  if (!shipped.empty()) {
+    msg += "; did you mean '" + shipped.front() + "' (shipped in the data directory";
+    if (shipped.size() > 1)
+      msg += "; also '" + join({shipped.begin() + 1, shipped.end()}, "', '") + "'";
+    msg += ")?";
+  }
+  throw InputError(loc, msg);
 }
 
 }  // namespace rb::scenario

@@ -5,6 +5,8 @@
 // Sandbox: base, string, table, math and utf8 libraries only; no io, os, debug, load, dofile or
 // loadfile. `require "a.b"` accepts plain dotted names only and reads a/b.lua below the scenario's
 // folder or <root>/scenarios; the real path (symlinks resolved) must stay inside those folders.
+// Data files (profiles, slices, irregularity CSVs) are read below the scenario's folder,
+// <root>/scenarios and <root>/profiles only (resolveDataFile).
 //
 // Guard: an instruction budget, a wall-clock budget and a memory budget turn endless loops and
 // runaway tables into errors instead of hangs. They are checked from a count hook that scripts
@@ -87,8 +89,12 @@ class LuaHost {
 
   // Folders below which the scenario may read files (its own folder, scenarios/, profiles/).
   const std::vector<std::string>& readRoots() const { return roots_; }
-  // Resolves a file name used inside the scenario (relative to the scenario's folder, then to the
-  // project root) and checks it lies below a read root. Throws InputError at `loc`.
+  // Resolves a file name used inside the scenario and checks it lies below a read root. A relative
+  // name is looked for beside the library whose text wrote it (`loc.file` a required file), then
+  // in the scene's folder, then beside each required library (a name built in a library's plain
+  // table carries the scene's location; two libraries holding different files of the name is an
+  // error), then in the data directory (the root). Throws InputError at `loc`; a name not found
+  // lists where it was looked for and the shipped file of that file name, if there is one.
   std::string resolveDataFile(const std::string& name, const SourceLoc& loc) const;
 
   // Internal, used by the C callbacks.
