@@ -21,7 +21,7 @@ install(DIRECTORY scenarios/ DESTINATION ${RB_DATA_DIR}/scenarios PATTERN "__pyc
 install(DIRECTORY plots/railbench DESTINATION ${RB_DATA_DIR}/plots PATTERN "__pycache__" EXCLUDE)
 install(PROGRAMS plots/rbplot DESTINATION ${RB_DATA_DIR}/plots)
 install(FILES plots/pyproject.toml DESTINATION ${RB_DATA_DIR}/plots)
-install(FILES README.md docs/install.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(FILES README.md LICENSE NOTICE docs/install.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 
 # cpack -G DEB (from the build folder): railbench_<version>_<arch>.deb for Debian 12. The shared
 # libraries the program links are found by dpkg-shlibdeps (package dpkg-dev); the Python
