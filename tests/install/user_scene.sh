@@ -2,7 +2,8 @@
 # The installed program as a user meets it (issue 50, docs/install.md): `cmake --install` into a
 # scratch prefix, then, from an empty folder outside the checkout and without RAILBENCH_ROOT, a
 # scene of the user's own that requires a shipped vehicle and the turnout library (whose rail
-# slices resolve beside the library, in the installed data directory) is checked and run briefly.
+# slices resolve beside the library, in the installed data directory) is checked, run briefly and
+# reported (rbplot report from the installed plots package).
 #   user_scene.sh CMAKE BUILD_DIR
 set -eu
 cmake=$1
@@ -53,6 +54,14 @@ LUA
 "$bin/railbench" check turnout.lua || fail "railbench check turnout.lua failed"
 "$bin/railbench" run turnout.lua --out result.h5 --quiet || fail "railbench run turnout.lua failed"
 [ -s result.h5 ] || fail "no result.h5"
+# The run's report from the installed plots package: one page with the run's table and figures.
+"$data/plots/rbplot" report result.h5 --out report.html >report.log 2>&1 ||
+  { cat report.log >&2; fail "rbplot report failed"; }
+grep -q "<table" report.html || fail "the report has no table"
+grep -q "data:image/png;base64," report.html || fail "the report has no embedded figure"
+for f in LICENSE NOTICE; do
+  [ -f "$tmp/prefix/share/doc/railbench/$f" ] || fail "not installed: share/doc/railbench/$f"
+done
 
 # A file not found names the installed data directory among the places looked in and suggests
 # the shipped file of that name.
