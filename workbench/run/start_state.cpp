@@ -35,17 +35,15 @@ void startWithInitialConditions(vehicle::VehicleOde& ode,
     // wheel in its rail and the other in the air, where the equilibrium's Newton iteration on the
     // elastic approaches has no stiffness to work with; a small step keeps every tread patch.
     // Offsets of zero hold nothing: the start stays the equilibrium, bit for bit.
-    if (held.empty()) {
-      vehicle::applyInitialConditions(ode, rates, y);
-      return;
-    }
-    const int steps = std::clamp(static_cast<int>(std::ceil(largest / kSettleStep)), 1, 200);
-    const Eigen::VectorXd target = y;
-    y = equilibrium;
-    for (int k = 1; k <= steps; ++k) {
-      const double f = static_cast<double>(k) / steps;
-      for (const int i : held) y[i] = equilibrium[i] + f * (target[i] - equilibrium[i]);
-      contact->settle(0.0, y, held);
+    if (!held.empty()) {
+      const int steps = std::clamp(static_cast<int>(std::ceil(largest / kSettleStep)), 1, 200);
+      const Eigen::VectorXd target = y;
+      y = equilibrium;
+      for (int k = 1; k <= steps; ++k) {
+        const double f = static_cast<double>(k) / steps;
+        for (const int i : held) y[i] = equilibrium[i] + f * (target[i] - equilibrium[i]);
+        contact->settle(0.0, y, held);
+      }
     }
   }
   vehicle::applyInitialConditions(ode, rates, y);
