@@ -247,10 +247,6 @@ Eigen::VectorXd ContactVehicleOde::initialState(double t0) {
   if (l.spinFree())
     for (int w = 0; w < l.n_ws; ++w)
       y[l.wsRate(w, 1)] = m.speedAt(t0) / work.wheelset(w).contact->centredRadius();
-  for (WheelsetWork& ww : work.wheelsets) {
-    ww.memory.forget();
-    ww.kec_warm = false;
-  }
   // The static equilibrium below solves the car bodies and bogies and, on elastic contact, the
   // wheelsets' height and roll.
   std::vector<int> unknowns;
